@@ -1,0 +1,1 @@
+#include "faconcodec.h"

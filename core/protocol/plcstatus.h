@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace Fatek {
+
+// STATUS1 of commands 40 and 53.
+struct PlcStatus
+{
+    bool running = false;
+    bool batteryLow = false;
+    bool ladderChecksumError = false;
+    bool memoryPack = false; // ROM pack (FBs) / memory card (M series)
+    bool watchdogError = false;
+    bool idSet = false;
+    bool emergencyStop = false;
+
+    static PlcStatus fromStatus1(std::uint8_t status1);
+    std::uint8_t toStatus1() const;
+    bool operator==(const PlcStatus &) const = default;
+};
+
+// Answer of 53 (detail status), decoded leniently: public clients expect 21, 28 or 64 status
+// bytes, so any length is accepted and only what is present is decoded. The raw bytes are kept.
+struct DetailStatus
+{
+    std::vector<std::uint8_t> raw;
+    PlcStatus status;                          // STATUS1
+    std::optional<std::uint8_t> mainUnitType;  // STATUS2: 0 MA/MU, 1 MC
+    std::optional<std::uint8_t> ioPointsCode;  // STATUS3: 1 = 20 points, 2 = 28, 3 = 40 ...
+    std::optional<std::uint8_t> osVersion;     // STATUS4: 0x31 = V3.1
+    std::optional<std::uint16_t> ladderSize;   // STATUS5..6, words
+    std::optional<std::uint16_t> discreteInputs, discreteOutputs, analogInputs, analogOutputs;
+    std::optional<std::uint16_t> mRelays, sRelays, lRelays, rRegisters, dRegisters, timers, counters;
+
+    static DetailStatus decode(std::span<const std::uint8_t> statusBytes);
+    // "FBs-MC, 28 points, OS V3.1, program 13184 words" as far as known.
+    std::string summary() const;
+};
+
+} // namespace Fatek

@@ -1,0 +1,475 @@
+#include "request.h"
+
+#include <cstdio>
+
+namespace Fatek {
+
+std::string_view protocolName(Protocol protocol)
+{
+    return protocol == Protocol::Facon ? "FACON" : "binary";
+}
+
+bool isKnownCommand(std::uint8_t code)
+{
+    switch (code) {
+    case 0x40: case 0x41: case 0x42: case 0x43: case 0x44: case 0x45: case 0x46:
+    case 0x47: case 0x48: case 0x49: case 0x4E: case 0x4F: case 0x50: case 0x53:
+        return true;
+    default:
+        return false;
+    }
+}
+
+std::string_view commandName(Command command)
+{
+    switch (command) {
+    case Command::BriefStatus: return "read brief status";
+    case Command::RunStop: return "RUN/STOP control";
+    case Command::DiscreteControl: return "single discrete control";
+    case Command::ReadEnableFlags: return "read enable/disable flags";
+    case Command::ReadDiscretes: return "read consecutive discretes";
+    case Command::WriteDiscretes: return "write consecutive discretes";
+    case Command::ReadRegisters: return "read consecutive registers";
+    case Command::WriteRegisters: return "write consecutive registers";
+    case Command::MixedRead: return "mixed read";
+    case Command::MixedWrite: return "mixed write";
+    case Command::Loopback: return "loopback test";
+    case Command::ReadProgram: return "read program page";
+    case Command::WriteProgram: return "write program page";
+    case Command::DetailStatus: return "read detail status";
+    }
+    return "unknown command";
+}
+
+bool isWriteCommand(Command command)
+{
+    switch (command) {
+    case Command::RunStop:
+    case Command::DiscreteControl:
+    case Command::WriteDiscretes:
+    case Command::WriteRegisters:
+    case Command::MixedWrite:
+    case Command::WriteProgram:
+        return true;
+    default:
+        return false;
+    }
+}
+
+std::string_view discreteOpName(DiscreteOp op)
+{
+    switch (op) {
+    case DiscreteOp::Disable: return "disable";
+    case DiscreteOp::Enable: return "enable";
+    case DiscreteOp::Set: return "set";
+    case DiscreteOp::Reset: return "reset";
+    }
+    return "unknown operation";
+}
+
+// ---- factories -------------------------------------------------------------------------------
+
+namespace {
+Request make(std::uint8_t station, Command command)
+{
+    Request r;
+    r.station = station;
+    r.command = command;
+    return r;
+}
+} // namespace
+
+Request Request::briefStatus(std::uint8_t station) { return make(station, Command::BriefStatus); }
+Request Request::detailStatus(std::uint8_t station) { return make(station, Command::DetailStatus); }
+
+Request Request::runStop(std::uint8_t station, bool runIt)
+{
+    Request r = make(station, Command::RunStop);
+    r.run = runIt;
+    return r;
+}
+
+Request Request::discreteControl(std::uint8_t station, DiscreteOp operation, Address discrete)
+{
+    Request r = make(station, Command::DiscreteControl);
+    r.op = operation;
+    r.start = discrete;
+    return r;
+}
+
+Request Request::readEnableFlags(std::uint8_t station, Address first, std::uint32_t n)
+{
+    Request r = make(station, Command::ReadEnableFlags);
+    r.start = first;
+    r.count = n;
+    return r;
+}
+
+Request Request::readDiscretes(std::uint8_t station, Address first, std::uint32_t n)
+{
+    Request r = make(station, Command::ReadDiscretes);
+    r.start = first;
+    r.count = n;
+    return r;
+}
+
+Request Request::writeDiscretes(std::uint8_t station, Address first, std::vector<std::uint32_t> v)
+{
+    Request r = make(station, Command::WriteDiscretes);
+    r.start = first;
+    r.count = static_cast<std::uint32_t>(v.size());
+    r.values = std::move(v);
+    return r;
+}
+
+Request Request::readRegisters(std::uint8_t station, Address first, std::uint32_t n)
+{
+    Request r = make(station, Command::ReadRegisters);
+    r.start = first;
+    r.count = n;
+    return r;
+}
+
+Request Request::writeRegisters(std::uint8_t station, Address first, std::vector<std::uint32_t> v)
+{
+    Request r = make(station, Command::WriteRegisters);
+    r.start = first;
+    r.count = static_cast<std::uint32_t>(v.size());
+    r.values = std::move(v);
+    return r;
+}
+
+Request Request::mixedRead(std::uint8_t station, std::vector<Address> list)
+{
+    Request r = make(station, Command::MixedRead);
+    r.count = static_cast<std::uint32_t>(list.size());
+    r.addresses = std::move(list);
+    return r;
+}
+
+Request Request::mixedWrite(std::uint8_t station, std::vector<Address> list, std::vector<std::uint32_t> v)
+{
+    Request r = make(station, Command::MixedWrite);
+    r.count = static_cast<std::uint32_t>(list.size());
+    r.addresses = std::move(list);
+    r.values = std::move(v);
+    return r;
+}
+
+Request Request::loopback(std::uint8_t station, Bytes testData)
+{
+    Request r = make(station, Command::Loopback);
+    r.data = std::move(testData);
+    return r;
+}
+
+Request Request::readProgram(std::uint8_t station, std::uint16_t pageNumber)
+{
+    Request r = make(station, Command::ReadProgram);
+    r.page = pageNumber;
+    return r;
+}
+
+Request Request::writeProgram(std::uint8_t station, std::uint16_t pageNumber, std::vector<std::uint32_t> words)
+{
+    Request r = make(station, Command::WriteProgram);
+    r.page = pageNumber;
+    r.values = std::move(words);
+    return r;
+}
+
+std::uint32_t Request::expectedValueCount() const
+{
+    switch (command) {
+    case Command::ReadEnableFlags:
+    case Command::ReadDiscretes:
+    case Command::ReadRegisters:
+        return count;
+    case Command::MixedRead:
+        return static_cast<std::uint32_t>(addresses.size());
+    case Command::ReadProgram:
+        return Limits::programPageWords;
+    default:
+        return 0;
+    }
+}
+
+// ---- text ------------------------------------------------------------------------------------
+
+namespace {
+
+std::string span(const Address &first, std::uint32_t n)
+{
+    if (n <= 1)
+        return first.toString();
+    return first.toString() + ".." + first.advanced(n - 1).toString();
+}
+
+std::string valueText(const Address &a, std::uint32_t v)
+{
+    if (isDiscrete(a.type))
+        return std::to_string(v);
+    char buf[16];
+    std::snprintf(buf, sizeof buf, isDoubleWord(a.type) ? "0x%08X" : "0x%04X", v);
+    return buf;
+}
+
+} // namespace
+
+std::string Request::target() const
+{
+    switch (command) {
+    case Command::DiscreteControl:
+        return start.toString();
+    case Command::ReadEnableFlags:
+    case Command::ReadDiscretes:
+    case Command::ReadRegisters:
+        return span(start, count);
+    case Command::WriteDiscretes:
+    case Command::WriteRegisters:
+        return span(start, static_cast<std::uint32_t>(values.size()));
+    case Command::MixedRead:
+    case Command::MixedWrite: {
+        std::string s;
+        for (const Address &a : addresses) {
+            if (!s.empty())
+                s += ", ";
+            s += a.toString();
+        }
+        return s;
+    }
+    case Command::ReadProgram:
+    case Command::WriteProgram:
+        return "program page " + std::to_string(page);
+    default:
+        return {};
+    }
+}
+
+std::string Request::describe() const
+{
+    std::string s;
+    switch (command) {
+    case Command::BriefStatus: s = "read status"; break;
+    case Command::DetailStatus: s = "read detail status"; break;
+    case Command::RunStop: s = run ? "RUN" : "STOP"; break;
+    case Command::DiscreteControl:
+        s = std::string(discreteOpName(op)) + " " + start.toString();
+        break;
+    case Command::ReadEnableFlags: s = "read disable flags " + target(); break;
+    case Command::ReadDiscretes:
+    case Command::ReadRegisters:
+    case Command::MixedRead:
+        s = "read " + target();
+        break;
+    case Command::WriteDiscretes:
+    case Command::WriteRegisters: {
+        s = "write " + target() + " =";
+        for (std::size_t i = 0; i < values.size() && i < 8; ++i)
+            s += " " + valueText(start, values[i]);
+        if (values.size() > 8)
+            s += " ...";
+        break;
+    }
+    case Command::MixedWrite: {
+        s = "write";
+        for (std::size_t i = 0; i < addresses.size(); ++i) {
+            s += i ? ", " : " ";
+            s += addresses[i].toString() + "=" + (i < values.size() ? valueText(addresses[i], values[i]) : "?");
+        }
+        break;
+    }
+    case Command::Loopback: s = "loopback " + std::to_string(data.size()) + " bytes"; break;
+    case Command::ReadProgram: s = "read " + target(); break;
+    case Command::WriteProgram: s = "write " + target(); break;
+    }
+    if (station == Limits::broadcastStation)
+        return s + " (broadcast)";
+    return s + " (station " + std::to_string(station) + ")";
+}
+
+// ---- validation ------------------------------------------------------------------------------
+
+namespace {
+
+ProtocolError invalid(std::string message)
+{
+    return makeError(ErrorKind::InvalidRequest, std::move(message));
+}
+
+ProtocolError limit(std::string message)
+{
+    return makeError(ErrorKind::LimitExceeded, std::move(message));
+}
+
+Status checkProtocolSupport(const Address &a, Protocol protocol)
+{
+    if (protocol == Protocol::Facon && a.info().faconDigits == 0) {
+        return makeError(ErrorKind::Unsupported,
+                         a.toString() + ": " + std::string(a.info().symbol)
+                             + " elements are not available in the FACON protocol (binary protocol only).");
+    }
+    return Ok{};
+}
+
+Status checkValue(const Address &a, std::uint32_t v)
+{
+    if (isDiscrete(a.type) && v > 1) {
+        return invalid("Value " + std::to_string(v) + " for " + a.toString()
+                       + ": a discrete takes 0 (OFF) or 1 (ON).");
+    }
+    if (a.width() == ElementWidth::Word && v > 0xFFFF) {
+        return invalid("Value " + std::to_string(v) + " for " + a.toString()
+                       + " does not fit a 16-bit register (0..65535).");
+    }
+    return Ok{};
+}
+
+Status checkDiscreteSpan(const Request &r, std::uint32_t n, Protocol protocol)
+{
+    if (!isDiscrete(r.start.type)) {
+        return invalid(std::string(commandName(r.command)) + " needs a discrete (X Y M S T C), not "
+                       + r.start.toString() + ".");
+    }
+    if (n < 1 || n > Limits::maxDiscretes) {
+        return limit(std::string(commandName(r.command)) + ": " + std::to_string(n)
+                     + " points requested; one request carries 1 to 256 points.");
+    }
+    if (Status s = checkProtocolSupport(r.start, protocol); !s)
+        return s;
+    return validateSpan(r.start, n);
+}
+
+Status checkRegisterSpan(const Request &r, std::uint32_t n, Protocol protocol)
+{
+    if (!isRegister(r.start.type)) {
+        return invalid(std::string(commandName(r.command)) + " needs a register (R, D, WY, DR, ...), not "
+                       + r.start.toString() + "; use discretes commands for single points.");
+    }
+    const std::uint32_t maxElements = Limits::maxRegisterWords / static_cast<std::uint32_t>(r.start.words());
+    if (n < 1 || n > maxElements) {
+        return limit(std::string(commandName(r.command)) + ": " + std::to_string(n) + " "
+                     + (isDoubleWord(r.start.type) ? "32-bit" : "16-bit")
+                     + " registers requested; one request carries 1 to " + std::to_string(maxElements)
+                     + (isDoubleWord(r.start.type) ? " (32-bit registers count as two words)." : "."));
+    }
+    if (Status s = checkProtocolSupport(r.start, protocol); !s)
+        return s;
+    return validateSpan(r.start, n);
+}
+
+Status checkMixed(const Request &r, std::uint32_t maxWords, Protocol protocol)
+{
+    if (r.addresses.empty())
+        return limit(std::string(commandName(r.command)) + ": no element given.");
+    if (r.addresses.size() > 255) {
+        return limit(std::string(commandName(r.command)) + ": " + std::to_string(r.addresses.size())
+                     + " elements; at most " + std::to_string(maxWords) + " words fit in one request.");
+    }
+    std::uint32_t words = 0;
+    for (const Address &a : r.addresses) {
+        if (Status s = checkProtocolSupport(a, protocol); !s)
+            return s;
+        if (Status s = validateAddress(a); !s)
+            return s;
+        words += static_cast<std::uint32_t>(a.words());
+    }
+    if (words > maxWords) {
+        return limit(std::string(commandName(r.command)) + ": " + std::to_string(words)
+                     + " words requested; at most " + std::to_string(maxWords)
+                     + " fit in one request (a discrete or 16-bit element counts 1, a 32-bit element 2).");
+    }
+    return Ok{};
+}
+
+} // namespace
+
+Status validateRequest(const Request &r, Protocol protocol)
+{
+    if (r.station > Limits::maxStation) {
+        return invalid("Station " + std::to_string(r.station) + " is not valid: stations are 1 to 254 (0 = broadcast).");
+    }
+    switch (r.command) {
+    case Command::BriefStatus:
+    case Command::DetailStatus:
+    case Command::RunStop:
+        return Ok{};
+    case Command::DiscreteControl:
+        if (r.op < DiscreteOp::Disable || r.op > DiscreteOp::Reset)
+            return invalid("Unknown discrete operation " + std::to_string(static_cast<int>(r.op)) + ".");
+        return checkDiscreteSpan(r, 1, protocol);
+    case Command::ReadEnableFlags:
+    case Command::ReadDiscretes:
+        return checkDiscreteSpan(r, r.count, protocol);
+    case Command::WriteDiscretes: {
+        const auto n = static_cast<std::uint32_t>(r.values.size());
+        if (Status s = checkDiscreteSpan(r, n, protocol); !s)
+            return s;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (Status s = checkValue(r.start.advanced(i), r.values[i]); !s)
+                return s;
+        }
+        return Ok{};
+    }
+    case Command::ReadRegisters:
+        return checkRegisterSpan(r, r.count, protocol);
+    case Command::WriteRegisters: {
+        const auto n = static_cast<std::uint32_t>(r.values.size());
+        if (Status s = checkRegisterSpan(r, n, protocol); !s)
+            return s;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (Status s = checkValue(r.start.advanced(i), r.values[i]); !s)
+                return s;
+        }
+        return Ok{};
+    }
+    case Command::MixedRead:
+        return checkMixed(r, Limits::maxMixedReadWords, protocol);
+    case Command::MixedWrite: {
+        if (r.values.size() != r.addresses.size()) {
+            return invalid("Mixed write: " + std::to_string(r.addresses.size()) + " addresses but "
+                           + std::to_string(r.values.size()) + " values.");
+        }
+        if (Status s = checkMixed(r, Limits::maxMixedWriteWords, protocol); !s)
+            return s;
+        for (std::size_t i = 0; i < r.addresses.size(); ++i) {
+            if (Status s = checkValue(r.addresses[i], r.values[i]); !s)
+                return s;
+        }
+        return Ok{};
+    }
+    case Command::Loopback:
+        if (r.data.size() > Limits::maxLoopback) {
+            return limit("Loopback test data is " + std::to_string(r.data.size())
+                         + " bytes; at most 256 fit in one request.");
+        }
+        if (protocol == Protocol::Facon) {
+            for (std::uint8_t b : r.data) {
+                if (b < 0x20 || b > 0x7E)
+                    return invalid("FACON loopback data must be printable ASCII characters.");
+            }
+        }
+        return Ok{};
+    case Command::ReadProgram:
+    case Command::WriteProgram:
+        if (protocol != Protocol::Facon) {
+            return makeError(ErrorKind::Unsupported,
+                             "Program pages (4F/50) exist only in the FACON protocol.");
+        }
+        if (r.command == Command::WriteProgram) {
+            if (r.values.size() != Limits::programPageWords) {
+                return invalid("A program page holds exactly 64 words; " + std::to_string(r.values.size())
+                               + " given.");
+            }
+            for (std::uint32_t w : r.values) {
+                if (w > 0xFFFF)
+                    return invalid("Program words are 16-bit (0..65535).");
+            }
+        }
+        return Ok{};
+    }
+    return makeError(ErrorKind::Unsupported,
+                     "Unknown command code " + std::to_string(static_cast<int>(r.command)) + ".");
+}
+
+} // namespace Fatek

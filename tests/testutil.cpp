@@ -1,0 +1,71 @@
+#include "testutil.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QStringList>
+
+namespace TestUtil {
+
+QList<Vector> loadVectors(const QString &protocol)
+{
+    QFile file(QStringLiteral(FATEK_TEST_DATA "/vectors.json"));
+    if (!file.open(QIODevice::ReadOnly))
+        qFatal("cannot open %s", qPrintable(file.fileName()));
+    const QJsonArray array = QJsonDocument::fromJson(file.readAll()).object().value(protocol).toArray();
+    QList<Vector> out;
+    for (const QJsonValue &v : array) {
+        const QJsonObject o = v.toObject();
+        const bool binary = protocol == QLatin1String("binary");
+        Vector vec;
+        vec.what = o.value(QLatin1String("what")).toString();
+        const QString q = o.value(QLatin1String("query")).toString();
+        const QString r = o.value(QLatin1String("response")).toString();
+        vec.query = binary ? fromHex(q) : fromFacon(q);
+        vec.response = binary ? fromHex(r) : fromFacon(r);
+        out.append(vec);
+    }
+    if (out.isEmpty())
+        qFatal("no %s vectors in %s", qPrintable(protocol), qPrintable(file.fileName()));
+    return out;
+}
+
+Fatek::Bytes fromHex(const QString &hex)
+{
+    const QByteArray raw = QByteArray::fromHex(hex.toLatin1());
+    return Fatek::Bytes(raw.begin(), raw.end());
+}
+
+Fatek::Bytes fromFacon(const QString &text)
+{
+    QString s = text;
+    s.replace(QLatin1String("<STX>"), QString(QChar(0x02)));
+    s.replace(QLatin1String("<ETX>"), QString(QChar(0x03)));
+    const QByteArray raw = s.toLatin1();
+    return Fatek::Bytes(raw.begin(), raw.end());
+}
+
+QString toHex(std::span<const std::uint8_t> bytes)
+{
+    QByteArray raw(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
+    return QString::fromLatin1(raw.toHex(' ').toUpper());
+}
+
+QString toFacon(std::span<const std::uint8_t> bytes)
+{
+    QString s;
+    for (std::uint8_t b : bytes) {
+        if (b == 0x02)
+            s += QLatin1String("<STX>");
+        else if (b == 0x03)
+            s += QLatin1String("<ETX>");
+        else if (b < 0x20 || b > 0x7E)
+            s += QStringLiteral("<%1>").arg(b, 2, 16, QLatin1Char('0'));
+        else
+            s += QChar(b);
+    }
+    return s;
+}
+
+} // namespace TestUtil
