@@ -21,9 +21,15 @@ public:
     std::size_t maxFrameSize() const override;
 
 private:
+    void scan(std::vector<DeframedItem> &out);
+    void dropHeaderByte();
+    // Drops `count` bytes from the front as garbage.
+    void consume(std::size_t count);
+
     Direction m_expect;
     Bytes m_buffer; // empty, or starts with the expected header
     std::size_t m_discarded = 0;
+    std::size_t m_reported = 0; // front bytes already delivered in a rejected item, being rescanned
 };
 
 } // namespace Fatek

@@ -1,0 +1,89 @@
+#pragma once
+
+#include "linksettings.h"
+#include "request.h"
+#include "sessionresult.h"
+#include "sessionstatistics.h"
+#include "sessiontypes.h"
+#include "trafficlog.h"
+#include "watchvalue.h"
+
+#include <QObject>
+#include <QThread>
+
+#include <atomic>
+#include <memory>
+
+namespace Fatek {
+
+class SessionWorker;
+struct SessionShared;
+
+// One link (one transport, one protocol) serving one or several stations. The Session object
+// lives in the caller's thread; the I/O runs on a worker QThread it owns. Every public function
+// is thread-safe and returns at once; each submitted request gets exactly one finished() with its id.
+class Session : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit Session(const LinkSettings &settings, QObject *parent = nullptr);
+    // Stops the worker thread; pending requests are dropped without a signal.
+    ~Session() override;
+
+    LinkSettings settings() const { return m_settings; }
+
+    // Connects (and keeps reconnecting with backoff if the settings say so).
+    void open();
+    // Disconnects; queued and running requests finish with ErrorKind::Cancelled.
+    void close();
+
+    // Queues a request; returns its id (never 0). Requests submitted while the link is down
+    // (and not connecting) finish at once with ErrorKind::LinkError.
+    quint64 submit(const Request &request, Priority priority = Priority::User,
+                   RequestOptions options = {});
+    // Raw console: sends `bytes` as typed (or wrapped in the protocol's framing and checksum when
+    // addFraming is set) and returns whatever comes back within the timeout.
+    quint64 sendRaw(const QByteArray &bytes, bool addFraming, RequestOptions options = {});
+    // Drops a queued request (finished() with Cancelled); a request already on the wire completes.
+    void cancel(quint64 id);
+
+    // Operator mode: write commands and raw frames are refused (ErrorKind::ReadOnly) before the wire.
+    void setReadOnly(bool readOnly);
+    bool isReadOnly() const;
+
+    // The protocol in use; with auto-detect, whether it is known yet.
+    Protocol protocol() const;
+    bool isProtocolKnown() const;
+    LinkState linkState() const;
+
+    // Latest counters (updated as requests finish).
+    SessionStatistics statistics() const;
+    void resetStatistics();
+
+    TrafficLog *trafficLog() const { return m_log; }
+
+    // Polling: replaces the watch list (re-plans); an empty list stops polling.
+    void setWatchList(const QList<WatchEntry> &entries);
+
+Q_SIGNALS:
+    void finished(quint64 id, const Fatek::SessionResult &result);
+    void linkStateChanged(Fatek::LinkState state, const QString &reason);
+    // At most 4 times a second.
+    void statisticsChanged(const Fatek::SessionStatistics &statistics);
+    void protocolDetected(Fatek::Protocol protocol);
+    // One batch per completed poll cycle.
+    void values(const QList<Fatek::WatchValue> &values);
+
+private:
+    LinkSettings m_settings;
+    std::shared_ptr<SessionShared> m_shared;
+    TrafficLog *m_log;
+    QThread m_thread;
+    SessionWorker *m_worker;
+    std::atomic<quint64> m_nextId{1};
+};
+
+void registerSessionMetaTypes();
+
+} // namespace Fatek

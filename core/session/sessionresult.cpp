@@ -1,0 +1,26 @@
+#include "sessionresult.h"
+
+namespace Fatek {
+
+SessionResult::SessionResult(Result<Response> result, QByteArray rawAnswer, bool raw)
+    : m_result(std::move(result))
+    , m_rawAnswer(std::move(rawAnswer))
+    , m_raw(raw)
+{}
+
+SessionResult SessionResult::fromError(ProtocolError error, QByteArray rawAnswer, bool raw)
+{
+    return SessionResult(Result<Response>(std::move(error)), std::move(rawAnswer), raw);
+}
+
+SessionResult SessionResult::fromRaw(QByteArray rawAnswer)
+{
+    return SessionResult(Result<Response>(Response{}), std::move(rawAnswer), true);
+}
+
+QString SessionResult::errorText() const
+{
+    return m_result.ok() ? QString() : QString::fromStdString(m_result.error().message);
+}
+
+} // namespace Fatek

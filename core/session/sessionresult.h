@@ -1,0 +1,47 @@
+#pragma once
+
+#include "response.h"
+#include "result.h"
+
+#include <QByteArray>
+#include <QMetaType>
+#include <QString>
+
+namespace Fatek {
+
+// The one answer a submitted request gets: a decoded Response or a typed error; for raw frames
+// the bytes that came back (raw results carry no Response).
+class SessionResult
+{
+public:
+    SessionResult() = default; // for the meta-type system: a Cancelled error
+    SessionResult(Result<Response> result, QByteArray rawAnswer = {}, bool raw = false);
+
+    static SessionResult fromError(ProtocolError error, QByteArray rawAnswer = {}, bool raw = false);
+    static SessionResult fromRaw(QByteArray rawAnswer);
+
+    bool ok() const { return m_result.ok(); }
+    bool isRaw() const { return m_raw; }
+    const Result<Response> &result() const { return m_result; }
+    // Valid only when ok() and not raw.
+    const Response &response() const { return m_result.value(); }
+    const ProtocolError &error() const { return m_result.error(); }
+    ErrorKind errorKind() const { return m_result.error().kind; }
+    // The error sentence, or empty.
+    QString errorText() const;
+    // Bytes of the answer frame(s); for raw sends everything received within the timeout.
+    QByteArray rawAnswer() const { return m_rawAnswer; }
+    // Attempts on the wire (0 when refused before sending).
+    int attempts() const { return m_attempts; }
+    void setAttempts(int attempts) { m_attempts = attempts; }
+
+private:
+    Result<Response> m_result = ProtocolError{ErrorKind::Cancelled, "not executed", 0};
+    QByteArray m_rawAnswer;
+    bool m_raw = false;
+    int m_attempts = 0;
+};
+
+} // namespace Fatek
+
+Q_DECLARE_METATYPE(Fatek::SessionResult)

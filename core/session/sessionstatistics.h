@@ -1,0 +1,53 @@
+#pragma once
+
+#include <QList>
+#include <QMap>
+#include <QMetaType>
+
+#include <cstdint>
+#include <vector>
+
+namespace Fatek {
+
+// Counters of one station (or of the whole session). Every query attempt on the wire counts.
+struct StationStatistics
+{
+    quint64 requests = 0;       // requests finished (each counted once, however many attempts)
+    quint64 answers = 0;        // valid answer frames received (PLC errors included)
+    quint64 timeouts = 0;       // attempts that got no complete answer in time
+    quint64 checksumErrors = 0; // answer frames rejected for a bad LRC/CRC
+    quint64 plcErrors = 0;      // answers carrying a non-zero PLC error code
+    quint64 retries = 0;        // attempts beyond the first
+    quint64 bytesOut = 0;
+    quint64 bytesIn = 0;
+    double rttLastMs = 0;  // query written -> answer complete, last good answer
+    double rttMeanMs = 0;  // over every answer since the last reset
+    double rttP50Ms = 0;   // over the last rttWindow answers
+    double rttP99Ms = 0;
+
+    static constexpr int rttWindow = 1024;
+
+    // Adds a round-trip sample and updates last/mean/percentiles.
+    void addRoundTrip(double ms);
+
+    bool operator==(const StationStatistics &other) const;
+
+private:
+    std::vector<double> m_window; // ring of the last rttWindow samples
+    std::size_t m_next = 0;
+    quint64 m_rttCount = 0;
+};
+
+// Totals of a session plus the same counters per station number.
+struct SessionStatistics
+{
+    StationStatistics total;
+    QMap<quint8, StationStatistics> stations;
+    quint64 pollCycles = 0;   // poll cycles completed
+    double lastCycleMs = 0;   // duration of the last poll cycle
+    quint64 bytesDiscarded = 0; // stale or unexpected bytes thrown away
+};
+
+} // namespace Fatek
+
+Q_DECLARE_METATYPE(Fatek::SessionStatistics)

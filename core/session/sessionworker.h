@@ -1,0 +1,143 @@
+#pragma once
+
+#include "codec.h"
+#include "deframer.h"
+#include "linksettings.h"
+#include "poller.h"
+#include "sessionresult.h"
+#include "sessionstatistics.h"
+#include "sessiontypes.h"
+
+#include <QElapsedTimer>
+#include <QMutex>
+#include <QObject>
+#include <QTimer>
+
+#include <atomic>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace Fatek {
+
+class TrafficLog;
+class Transport;
+
+// State shared between the Session front and its worker (read by any thread).
+struct SessionShared
+{
+    std::atomic<bool> readOnly{false};
+    std::atomic<int> linkState{static_cast<int>(LinkState::Closed)};
+    std::atomic<int> protocol{-1}; // Protocol value, -1 while auto-detect has not decided
+    mutable QMutex mutex;
+    SessionStatistics statistics; // under mutex
+};
+
+// One queued request of the worker.
+struct SessionJob
+{
+    quint64 id = 0; // 0: internal (poller, protocol probe), answered through `done`
+    bool raw = false;
+    Request request;
+    QByteArray rawBytes;
+    bool addFraming = false;
+    Priority priority = Priority::User;
+    RequestOptions options;
+    std::optional<Protocol> probe; // protocol auto-detect probe in this protocol
+    std::function<void(const SessionResult &)> done;
+    int attempts = 0;
+};
+
+// The session's engine, living on its worker thread: one query on the wire at a time, priority
+// queues, retries, timeouts, reconnects, statistics and the traffic log. Only the Session calls
+// it, through queued invocations.
+class SessionWorker : public QObject
+{
+    Q_OBJECT
+
+public:
+    SessionWorker(const LinkSettings &settings, std::shared_ptr<SessionShared> shared, TrafficLog *log);
+    ~SessionWorker() override;
+
+    void open();
+    void close();
+    void enqueue(SessionJob job);
+    void cancel(quint64 id);
+    void resetStatistics();
+    void setWatchList(const QList<WatchEntry> &entries);
+
+Q_SIGNALS:
+    void finished(quint64 id, const Fatek::SessionResult &result);
+    void linkStateChanged(Fatek::LinkState state, const QString &reason);
+    void statisticsChanged(const Fatek::SessionStatistics &statistics);
+    void protocolDetected(Fatek::Protocol protocol);
+    void values(const QList<Fatek::WatchValue> &values);
+
+private:
+    std::deque<SessionJob> &queueFor(Priority priority);
+    bool takeNext(SessionJob &job);
+    void schedulePump();
+    void pump();
+    bool prepare(SessionJob &job); // false: job finished or deferred
+    void proceed();
+    void startAttempt();
+    void onBytes(const QByteArray &bytes);
+    void onRawBytes(const QByteArray &bytes);
+    void onTimeout();
+    void retryOrFail(ProtocolError error);
+    void finishCurrent(SessionResult result);
+    void deliver(SessionJob &job, SessionResult result);
+    void failAll(ErrorKind kind, const QString &reason, bool includePolls);
+
+    void onOpened();
+    void onDisconnected(const QString &reason);
+    void setState(LinkState state, const QString &reason);
+    void startConnect();
+    void setProtocol(Protocol protocol);
+    const Codec *codec() const;
+    int timeoutFor(const SessionJob &job) const;
+    int retriesFor(const SessionJob &job) const;
+    quint8 stationOf(const SessionJob &job) const;
+    void countForStation(quint8 station, const std::function<void(StationStatistics &)> &update);
+    void statisticsChangedInternally();
+    void publishStatistics();
+    QString summarize(const QByteArray &frame) const;
+
+    LinkSettings m_settings;
+    std::shared_ptr<SessionShared> m_shared;
+    TrafficLog *m_log;
+    Transport *m_transport = nullptr;
+    std::unique_ptr<Codec> m_faconCodec;
+    std::unique_ptr<Codec> m_binaryCodec;
+    std::unique_ptr<Deframer> m_faconDeframer;
+    std::unique_ptr<Deframer> m_binaryDeframer;
+    std::optional<Protocol> m_protocol;
+
+    std::deque<SessionJob> m_userQueue;
+    std::deque<SessionJob> m_backgroundQueue;
+    std::deque<SessionJob> m_pollQueue;
+    std::optional<SessionJob> m_current;
+    QByteArray m_sentFrame;
+    QByteArray m_answer;       // bytes of the current attempt's answer
+    bool m_pumpScheduled = false;
+
+    LinkState m_state = LinkState::Closed;
+    bool m_wantOpen = false;
+    int m_backoffMs = 0;
+    // Children, so that moveToThread() takes them along.
+    QTimer m_timeoutTimer{this};
+    QTimer m_silenceTimer{this};
+    QTimer m_reconnectTimer{this};
+    QTimer m_statsTimer{this};
+    QElapsedTimer m_lastActivity; // last byte on the line (serial inter-frame silence)
+    QElapsedTimer m_roundTrip;
+
+    SessionStatistics m_statistics;
+    bool m_statsDirty = false;  // statisticsChanged() due
+    bool m_sharedStale = false; // SessionShared::statistics behind
+
+    Poller *m_poller = nullptr;
+};
+
+} // namespace Fatek

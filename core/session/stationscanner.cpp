@@ -1,0 +1,93 @@
+#include "stationscanner.h"
+
+#include "session.h"
+
+#include <algorithm>
+
+namespace Fatek {
+
+StationScanner::StationScanner(Session *session, QObject *parent)
+    : QObject(parent)
+    , m_session(session)
+{
+    connect(m_session, &Session::finished, this, &StationScanner::onFinished);
+}
+
+StationScanner::~StationScanner()
+{
+    dropPending();
+}
+
+void StationScanner::start(int first, int last, int timeoutMs)
+{
+    cancel();
+    if (!m_session)
+        return;
+    first = std::clamp(first, 1, static_cast<int>(Limits::maxStation));
+    last = std::clamp(last, 1, static_cast<int>(Limits::maxStation));
+    if (last < first)
+        std::swap(first, last);
+    m_hits.clear();
+    m_total = last - first + 1;
+    m_done = 0;
+    RequestOptions options;
+    options.timeoutMs = std::max(1, timeoutMs);
+    options.retries = 0;
+    // All queued at once in the background queue: the session sends them one by one, and user
+    // actions still go first.
+    for (int station = first; station <= last; ++station) {
+        const auto s = static_cast<quint8>(station);
+        m_pending.insert(m_session->submit(Request::briefStatus(s), Priority::Background, options), s);
+    }
+    Q_EMIT progress(0, m_total);
+}
+
+void StationScanner::dropPending()
+{
+    if (m_session) {
+        for (auto it = m_pending.cbegin(); it != m_pending.cend(); ++it)
+            m_session->cancel(it.key());
+    }
+    // Late results of this scan are ignored from now on.
+    m_pending.clear();
+}
+
+void StationScanner::cancel()
+{
+    if (m_pending.isEmpty())
+        return;
+    dropPending();
+    Q_EMIT finished(m_hits);
+}
+
+void StationScanner::onFinished(quint64 id, const SessionResult &result)
+{
+    auto it = m_pending.find(id);
+    if (it == m_pending.end())
+        return;
+    const quint8 station = it.value();
+    m_pending.erase(it);
+    ++m_done;
+    // A PLC error is an answer: something lives at that station.
+    const bool answered = result.ok() || result.errorKind() == ErrorKind::PlcError;
+    if (answered) {
+        Hit hit;
+        hit.station = station;
+        if (result.ok()) {
+            const Bytes &data = result.response().data;
+            hit.statusBytes = QByteArray(reinterpret_cast<const char *>(data.data()),
+                                         static_cast<qsizetype>(data.size()));
+            if (!data.empty())
+                hit.status = PlcStatus::fromStatus1(data.front());
+        }
+        const auto pos = std::lower_bound(m_hits.begin(), m_hits.end(), station,
+                                          [](const Hit &h, quint8 s) { return h.station < s; });
+        m_hits.insert(pos, hit);
+        Q_EMIT stationFound(hit);
+    }
+    Q_EMIT progress(m_done, m_total);
+    if (m_pending.isEmpty())
+        Q_EMIT finished(m_hits);
+}
+
+} // namespace Fatek

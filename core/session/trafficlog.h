@@ -1,0 +1,64 @@
+#pragma once
+
+#include <QByteArray>
+#include <QDateTime>
+#include <QList>
+#include <QMetaType>
+#include <QMutex>
+#include <QObject>
+#include <QString>
+
+#include <deque>
+
+namespace Fatek {
+
+// One line of the traffic log.
+struct TrafficEntry
+{
+    enum class Direction { Out, In, Event };
+
+    quint64 sequence = 0; // increasing from 1, never reused (survives clear())
+    QDateTime timestamp;
+    Direction direction = Direction::Event;
+    QByteArray bytes;     // raw frame (empty for events such as a timeout)
+    QString summary;      // decoded: "46 read registers, station 1, 3 x R12"
+    QString error;        // "bad checksum", "unexpected station 2", "timeout after 1000 ms"
+};
+
+// Every frame in and out of a session, bounded (oldest entries dropped). Written by the session's
+// worker thread, read by any thread: all access is under a mutex; entriesAdded() is emitted from
+// the writer's thread, so receivers in other threads get it queued.
+class TrafficLog : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit TrafficLog(int capacity = 10000, QObject *parent = nullptr);
+
+    int capacity() const;
+    void setCapacity(int capacity);
+
+    // Returns the entry's sequence number.
+    quint64 append(TrafficEntry::Direction direction, const QByteArray &bytes,
+                   const QString &summary, const QString &error = {});
+
+    // Entries with a sequence number above `after` still in the buffer (all with 0).
+    QList<TrafficEntry> entries(quint64 after = 0) const;
+    int size() const;
+    quint64 lastSequence() const;
+    void clear();
+
+Q_SIGNALS:
+    // New entries up to `lastSequence`; fetch them with entries(previous).
+    void entriesAdded(quint64 lastSequence);
+
+private:
+    mutable QMutex m_mutex;
+    std::deque<TrafficEntry> m_entries;
+    int m_capacity;
+    quint64 m_lastSequence = 0;
+};
+
+} // namespace Fatek
+
+Q_DECLARE_METATYPE(Fatek::TrafficEntry)

@@ -1,0 +1,158 @@
+#include "modelprofile.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace Fatek {
+
+namespace {
+
+std::optional<std::size_t> discreteIndex(ElementType t)
+{
+    switch (t) {
+    case ElementType::X: return 0;
+    case ElementType::Y: return 1;
+    case ElementType::M: return 2;
+    case ElementType::S: return 3;
+    case ElementType::T: return 4;
+    case ElementType::C: return 5;
+    default: return std::nullopt;
+    }
+}
+
+std::optional<std::size_t> registerIndex(ElementType t)
+{
+    switch (t) {
+    case ElementType::RT: return 0;
+    case ElementType::RC: return 1;
+    case ElementType::R: return 2;
+    case ElementType::D: return 3;
+    case ElementType::F: return 4;
+    default: return std::nullopt;
+    }
+}
+
+void putWord(Bytes &b, std::size_t statusNumber, std::uint32_t value)
+{
+    // STATUSn is b[n - 1]; counts are high byte first and saturate (R 0..65535 does not fit).
+    const auto v = static_cast<std::uint16_t>(std::min<std::uint32_t>(value, 0xFFFF));
+    b[statusNumber - 1] = static_cast<std::uint8_t>(v >> 8);
+    b[statusNumber] = static_cast<std::uint8_t>(v & 0xFF);
+}
+
+} // namespace
+
+std::uint32_t ModelProfile::size(ElementType plainType) const
+{
+    if (auto i = discreteIndex(plainType))
+        return discretes[*i];
+    if (auto i = registerIndex(plainType))
+        return registers[*i];
+    return 0;
+}
+
+bool ModelProfile::contains(const Address &start, std::uint32_t count) const
+{
+    if (count == 0)
+        return false;
+    const ElementInfo &info = start.info();
+    if (start.number % info.alignment != 0)
+        return false;
+    // Elements of a view occupy `step` numbers of the plain kind (WY0 = Y0..Y15, DR0 = R0..R1).
+    std::uint32_t plainSize = 0;
+    std::uint64_t span = count;
+    if (info.discrete) {
+        plainSize = size(*info.discrete);
+        span = std::uint64_t{count} * info.step;
+    } else if (info.word) {
+        plainSize = size(*info.word);
+        span = std::uint64_t{count} * info.step;
+    } else {
+        plainSize = size(start.type);
+    }
+    return std::uint64_t{start.number} + span <= plainSize;
+}
+
+std::uint16_t ModelProfile::programPages() const
+{
+    return static_cast<std::uint16_t>(1 + (programWords + Limits::programPageWords - 1) / Limits::programPageWords);
+}
+
+Bytes ModelProfile::detailStatus(std::uint8_t status1) const
+{
+    Bytes b(64, 0);
+    b[0] = status1;
+    b[1] = mainUnitType;
+    b[2] = ioPointsCode;
+    b[3] = osVersion;
+    putWord(b, 5, programWords);
+    putWord(b, 7, discretes[0]);
+    putWord(b, 9, discretes[1]);
+    putWord(b, 11, analogInputs);
+    putWord(b, 13, analogOutputs);
+    putWord(b, 15, discretes[2]);
+    putWord(b, 17, discretes[3]);
+    putWord(b, 19, 0); // L relays: not simulated
+    putWord(b, 21, registers[2]);
+    putWord(b, 23, registers[3]);
+    putWord(b, 25, discretes[4]);
+    putWord(b, 27, discretes[5]);
+    return b;
+}
+
+ModelProfile ModelProfile::fbs()
+{
+    ModelProfile p;
+    p.name = "fbs";
+    p.description = "FBs-28MC, OS V3.1, 13K program";
+    // X Y M S T C
+    p.discretes = {256, 256, 2002, 1000, 256, 256};
+    // RT RC R D F: FBs has no file registers in the protocols.
+    p.registers = {256, 256, 3840, 3000, 0};
+    p.status2 = 0x54; // 13K step program (FACON 40 table)
+    p.status3 = 0x00;
+    p.mainUnitType = 0x01;
+    p.ioPointsCode = 0x02;
+    p.osVersion = 0x31;
+    p.programWords = 13184;
+    p.analogInputs = 100;
+    p.analogOutputs = 100;
+    return p;
+}
+
+ModelProfile ModelProfile::mSeries()
+{
+    ModelProfile p;
+    p.name = "m";
+    p.description = "M-series, largest ranges of the reference";
+    p.discretes = {10000, 10000, 10000, 10000, 10000, 10000};
+    p.registers = {10000, 10000, 65536, 65536, 65536};
+    p.status2 = 0x00;
+    p.status3 = 0x00;
+    p.mainUnitType = 0x01;
+    p.ioPointsCode = 0x03;
+    p.osVersion = 0x31;
+    p.programWords = 16384;
+    p.analogInputs = 100;
+    p.analogOutputs = 100;
+    return p;
+}
+
+std::optional<ModelProfile> ModelProfile::byName(const std::string &name)
+{
+    std::string lower;
+    for (char c : name)
+        lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "fbs")
+        return fbs();
+    if (lower == "m")
+        return mSeries();
+    return std::nullopt;
+}
+
+std::vector<std::string> ModelProfile::names()
+{
+    return {"fbs", "m"};
+}
+
+} // namespace Fatek

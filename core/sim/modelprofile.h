@@ -1,0 +1,52 @@
+#pragma once
+
+#include "element.h"
+#include "request.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace Fatek {
+
+// What one simulated PLC model has: how many elements of each kind and the identity it reports
+// in its status bytes. Ranges start at 0; a model has no gaps.
+struct ModelProfile
+{
+    std::string name;        // "fbs", "m": what --profile accepts
+    std::string description; // "FBs-28MC, OS V3.1, 13K program"
+
+    // Points per discrete kind, indexed X Y M S T C.
+    std::array<std::uint32_t, 6> discretes{};
+    // Registers per kind, indexed RT RC R D F (0: the model has none).
+    std::array<std::uint32_t, 5> registers{};
+
+    std::uint8_t status2 = 0; // 40: program capacity / model code
+    std::uint8_t status3 = 0;
+    std::uint8_t mainUnitType = 1;  // 53 STATUS2: 1 = MC
+    std::uint8_t ioPointsCode = 2;  // 53 STATUS3: 2 = 28 points
+    std::uint8_t osVersion = 0x31;  // 53 STATUS4: V3.1
+    std::uint16_t programWords = 13184;
+    std::uint16_t analogInputs = 0;
+    std::uint16_t analogOutputs = 0;
+
+    // Number of elements of a plain kind (X..C, RT..F); 0 for views (W, DW, DR types).
+    std::uint32_t size(ElementType plainType) const;
+    // Whether `count` consecutive elements from `start` all exist on this model and the start is
+    // aligned (W/DW on a multiple of 8). DRn needs R(n+1) too.
+    bool contains(const Address &start, std::uint32_t count = 1) const;
+    // Program pages 4F/50 can address: page 0 (header) plus the program itself.
+    std::uint16_t programPages() const;
+
+    // 64 bytes of detail status (53) for the given STATUS1, layout of the FACON documentation.
+    Bytes detailStatus(std::uint8_t status1) const;
+
+    static ModelProfile fbs();
+    static ModelProfile mSeries();
+    static std::optional<ModelProfile> byName(const std::string &name);
+    static std::vector<std::string> names();
+};
+
+} // namespace Fatek

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <QMetaType>
+#include <QString>
+
+namespace Fatek {
+
+// Everything needed to open one link to one or several PLCs: the medium, its parameters, the
+// protocol spoken on it and the timing policy of the session that owns it. A plain value type.
+struct LinkSettings
+{
+    enum class Kind { Serial, Tcp, Udp };
+    enum class ProtocolChoice { Facon, Binary, Auto };
+    enum class Parity { None, Even, Odd };
+    enum class FlowControl { None, Hardware, Software };
+
+    Kind kind = Kind::Tcp;
+
+    // TCP / UDP
+    QString host = QStringLiteral("127.0.0.1");
+    quint16 port = 500;
+
+    // Serial line; FACON defaults 9600 7E1.
+    QString portName;
+    qint32 baudRate = 9600;
+    int dataBits = 7;
+    Parity parity = Parity::Even;
+    int stopBits = 1;
+    FlowControl flowControl = FlowControl::None;
+
+    ProtocolChoice protocol = ProtocolChoice::Facon;
+
+    // Session policy
+    int timeoutMs = 1000;        // per attempt, unless a request brings its own
+    int retries = 2;             // extra attempts after a timeout or checksum error
+    int interFrameMs = 5;        // serial only: line silence before a new query
+    int connectTimeoutMs = 3000; // TCP connect
+    bool autoReconnect = true;
+    int reconnectMinMs = 500;    // first reconnect delay, doubled after each failure ...
+    int reconnectMaxMs = 10000;  // ... up to this
+
+    static LinkSettings tcp(const QString &host, quint16 port = 500,
+                            ProtocolChoice protocol = ProtocolChoice::Facon);
+    static LinkSettings udp(const QString &host, quint16 port = 500,
+                            ProtocolChoice protocol = ProtocolChoice::Facon);
+    static LinkSettings serial(const QString &portName, qint32 baudRate = 9600,
+                               ProtocolChoice protocol = ProtocolChoice::Facon);
+
+    // "TCP 127.0.0.1:500, FACON", "UDP plc1:500, binary", "/dev/ttyUSB0 9600 7E1, auto-detect".
+    QString toString() const;
+    // Empty when usable, else one sentence saying what to fix.
+    QString validate() const;
+
+    bool operator==(const LinkSettings &) const = default;
+};
+
+QString protocolChoiceName(LinkSettings::ProtocolChoice choice);
+
+} // namespace Fatek
+
+Q_DECLARE_METATYPE(Fatek::LinkSettings)

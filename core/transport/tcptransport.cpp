@@ -1,0 +1,97 @@
+#include "tcptransport.h"
+
+#include <QNetworkProxy>
+#include <QTcpSocket>
+
+namespace Fatek {
+
+TcpTransport::TcpTransport(const LinkSettings &settings, QObject *parent)
+    : Transport(parent)
+    , m_settings(settings)
+{
+    m_connectTimer.setSingleShot(true);
+    connect(&m_connectTimer, &QTimer::timeout, this, [this] {
+        fail(QStringLiteral("no connection to %1 within %2 ms")
+                 .arg(describe())
+                 .arg(m_settings.connectTimeoutMs));
+    });
+}
+
+TcpTransport::~TcpTransport()
+{
+    close();
+}
+
+void TcpTransport::open()
+{
+    close();
+    m_socket = new QTcpSocket(this);
+    // PLCs sit on the plant network: never route them through a desktop proxy setting.
+    m_socket->setProxy(QNetworkProxy::NoProxy);
+    connect(m_socket, &QTcpSocket::connected, this, [this] {
+        m_connectTimer.stop();
+        m_open = true;
+        // Small queries: do not let Nagle hold them back.
+        m_socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+        Q_EMIT opened();
+    });
+    connect(m_socket, &QTcpSocket::readyRead, this, [this] {
+        const QByteArray bytes = m_socket->readAll();
+        if (!bytes.isEmpty())
+            Q_EMIT bytesReceived(bytes);
+    });
+    connect(m_socket, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError error) {
+        if (error == QAbstractSocket::RemoteHostClosedError)
+            fail(QStringLiteral("%1 closed the connection").arg(describe()));
+        else
+            fail(QStringLiteral("%1: %2").arg(describe(), m_socket->errorString()));
+    });
+    connect(m_socket, &QTcpSocket::disconnected, this, [this] {
+        fail(QStringLiteral("%1 closed the connection").arg(describe()));
+    });
+    m_connectTimer.start(m_settings.connectTimeoutMs);
+    m_socket->connectToHost(m_settings.host, m_settings.port);
+}
+
+void TcpTransport::fail(const QString &reason)
+{
+    if (!m_socket)
+        return; // already reported
+    close();
+    Q_EMIT disconnected(reason);
+}
+
+void TcpTransport::close()
+{
+    m_connectTimer.stop();
+    m_open = false;
+    if (QTcpSocket *socket = std::exchange(m_socket, nullptr)) {
+        socket->disconnect(this);
+        socket->abort();
+        socket->deleteLater();
+    }
+}
+
+bool TcpTransport::isOpen() const
+{
+    return m_open;
+}
+
+bool TcpTransport::write(const QByteArray &bytes)
+{
+    if (!m_open)
+        return false;
+    return m_socket->write(bytes) == bytes.size();
+}
+
+QByteArray TcpTransport::takePending()
+{
+    return m_socket ? m_socket->readAll() : QByteArray();
+}
+
+QString TcpTransport::describe() const
+{
+    return QStringLiteral("TCP %1:%2").arg(m_settings.host).arg(m_settings.port);
+}
+
+} // namespace Fatek

@@ -1,0 +1,1018 @@
+// Sessions against the in-process simulator over TCP, UDP and a socat pty pair, in both protocols.
+#include "binarycodec.h"
+#include "session.h"
+#include "simserver.h"
+#include "simulatedplc.h"
+#include "stationscanner.h"
+
+#include <QFile>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <memory>
+
+using namespace Fatek;
+
+namespace {
+
+Address addr(const char *text)
+{
+    return Address::parse(text).value();
+}
+
+Bytes bytes(const char *text)
+{
+    const std::string s(text);
+    return Bytes(s.begin(), s.end());
+}
+
+// Collects every finished() of a session, in arrival order.
+class Results : public QObject
+{
+public:
+    explicit Results(Session *session)
+    {
+        connect(session, &Session::finished, this, [this](quint64 id, const SessionResult &result) {
+            map.insert(id, result);
+            order.append(id);
+        });
+    }
+    bool waitFor(quint64 id, int ms = 10000)
+    {
+        QDeadlineTimer deadline(ms);
+        while (!map.contains(id) && !deadline.hasExpired())
+            QTest::qWait(2);
+        return map.contains(id);
+    }
+    QHash<quint64, SessionResult> map;
+    QList<quint64> order;
+};
+
+} // namespace
+
+// The session under test, so that a failed check can show its last traffic.
+static Session *g_session = nullptr;
+static void dumpLog()
+{
+    if (!g_session)
+        return;
+    const quint64 last = g_session->trafficLog()->lastSequence();
+    const auto entries = g_session->trafficLog()->entries(last > 8 ? last - 8 : 0);
+    for (const TrafficEntry &e : entries)
+        qDebug() << int(e.direction) << e.bytes << e.summary << e.error;
+}
+
+class TestSession : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void init();
+    void cleanup();
+
+    void everyCommand_data();
+    void everyCommand();
+    void largeAnswers_data();
+    void largeAnswers();
+    void refusedWhenNotOpen();
+    void invalidRequestNeverSent();
+    void timeoutAndRetries();
+    void damagedAnswersAreRetried();
+    void otherStationIgnored();
+    void broadcastGetsNoAnswer();
+    void userActionsGoFirst();
+    void readOnlyMode();
+    void rawFrames_data();
+    void rawFrames();
+    void autoDetect();
+    void autoDetectNobody();
+    void reconnectAfterSimulatorRestart();
+    void closeCancelsPending();
+    void statistics();
+    void trafficLogBounded();
+    void polling();
+    void pollingIsolatesBadAddress();
+    void pollingSeveralStations();
+    void pollingTrickyWatchList_data();
+    void pollingTrickyWatchList();
+    void lateAnswerDiscarded();
+    void stationScan();
+    void destroyWhileBusy();
+
+private:
+    // Opens the simulator endpoint for `transport` and fills `settings`; false (with QSKIP) if impossible.
+    bool makeLink(const QString &transport, LinkSettings::ProtocolChoice protocol, LinkSettings &settings);
+    std::unique_ptr<Session> openSession(const LinkSettings &settings);
+    SessionResult run(Session &session, Results &results, const Request &request,
+                      Priority priority = Priority::User);
+
+    std::unique_ptr<SimulatedPlc> m_plc;
+    std::unique_ptr<SimServer> m_server;
+    std::unique_ptr<QProcess> m_socat;
+    std::unique_ptr<QTemporaryDir> m_dir;
+};
+
+void TestSession::init()
+{
+    m_plc = std::make_unique<SimulatedPlc>(ModelProfile::fbs());
+    m_server = std::make_unique<SimServer>(m_plc.get());
+}
+
+void TestSession::cleanup()
+{
+    g_session = nullptr;
+    m_server.reset();
+    m_plc.reset();
+    if (m_socat) {
+        m_socat->terminate();
+        m_socat->waitForFinished(5000);
+        m_socat.reset();
+    }
+    m_dir.reset();
+}
+
+bool TestSession::makeLink(const QString &transport, LinkSettings::ProtocolChoice protocol,
+                           LinkSettings &settings)
+{
+    QString error;
+    if (transport == QLatin1String("tcp")) {
+        if (!m_server->listenTcp(0, &error))
+            qWarning() << error;
+        settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort(), protocol);
+    } else if (transport == QLatin1String("udp")) {
+        if (!m_server->listenUdp(0, &error))
+            qWarning() << error;
+        settings = LinkSettings::udp(QStringLiteral("127.0.0.1"), m_server->udpPort(), protocol);
+    } else {
+        const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
+        if (socat.isEmpty())
+            return false;
+        m_dir = std::make_unique<QTemporaryDir>();
+        const QString plcSide = m_dir->filePath(QStringLiteral("plc"));
+        const QString appSide = m_dir->filePath(QStringLiteral("app"));
+        m_socat = std::make_unique<QProcess>();
+        m_socat->start(socat, {QStringLiteral("pty,raw,echo=0,link=") + plcSide,
+                               QStringLiteral("pty,raw,echo=0,link=") + appSide});
+        if (!m_socat->waitForStarted(5000))
+            return false;
+        QDeadlineTimer deadline(5000);
+        while (!(QFile::exists(plcSide) && QFile::exists(appSide)) && !deadline.hasExpired())
+            QTest::qWait(10);
+        SerialSettings serial;
+        serial.portName = plcSide;
+        if (!m_server->openSerial(serial, &error)) {
+            qWarning() << error;
+            return false;
+        }
+        settings = LinkSettings::serial(appSide, 9600, protocol);
+        settings.interFrameMs = 2;
+    }
+    settings.timeoutMs = 1000;
+    settings.retries = 1;
+    return true;
+}
+
+std::unique_ptr<Session> TestSession::openSession(const LinkSettings &settings)
+{
+    auto session = std::make_unique<Session>(settings);
+    g_session = session.get();
+    QSignalSpy states(session.get(), &Session::linkStateChanged);
+    session->open();
+    QDeadlineTimer deadline(10000);
+    while (session->linkState() != LinkState::Connected && !deadline.hasExpired())
+        QTest::qWait(5);
+    return session;
+}
+
+SessionResult TestSession::run(Session &session, Results &results, const Request &request, Priority priority)
+{
+    const quint64 id = session.submit(request, priority);
+    if (!results.waitFor(id))
+        return SessionResult::fromError(makeError(ErrorKind::Timeout, "test: no finished() signal"));
+    return results.map.value(id);
+}
+
+// Evaluates `expr` once (QVERIFY2 evaluates its message even on success).
+#define CHECK_OK(expr) \
+    do { \
+        const SessionResult checked_ = (expr); \
+        if (!checked_.ok()) \
+            dumpLog(); \
+        QVERIFY2(checked_.ok(), qPrintable(checked_.errorText())); \
+    } while (false)
+
+void TestSession::everyCommand_data()
+{
+    QTest::addColumn<QString>("transport");
+    QTest::addColumn<int>("protocol");
+    for (const char *transport : {"tcp", "udp", "serial"}) {
+        QTest::addRow("%s facon", transport) << QString::fromLatin1(transport) << int(Protocol::Facon);
+        QTest::addRow("%s binary", transport) << QString::fromLatin1(transport) << int(Protocol::Binary);
+    }
+}
+
+void TestSession::everyCommand()
+{
+    QFETCH(QString, transport);
+    QFETCH(int, protocol);
+    const auto proto = static_cast<Protocol>(protocol);
+    LinkSettings settings;
+    if (!makeLink(transport, proto == Protocol::Facon ? LinkSettings::ProtocolChoice::Facon
+                                                      : LinkSettings::ProtocolChoice::Binary,
+                  settings))
+        QSKIP("socat is not available for a serial pty pair");
+    auto session = openSession(settings);
+    QCOMPARE(session->linkState(), LinkState::Connected);
+    QCOMPARE(session->protocol(), proto);
+    Results results(session.get());
+    m_plc->setRunning(false);
+
+    // 40 brief status
+    SessionResult r = run(*session, results, Request::briefStatus(1));
+    CHECK_OK(r);
+    QVERIFY(!r.response().data.empty());
+    QVERIFY(!PlcStatus::fromStatus1(r.response().data.front()).running);
+
+    // 41 RUN / STOP
+    CHECK_OK(run(*session, results, Request::runStop(1, true)));
+    QVERIFY(m_plc->isRunning());
+    r = run(*session, results, Request::briefStatus(1));
+    CHECK_OK(r);
+    QVERIFY(PlcStatus::fromStatus1(r.response().data.front()).running);
+    CHECK_OK(run(*session, results, Request::runStop(1, false)));
+    QVERIFY(!m_plc->isRunning());
+
+    // 42 single discrete control, 43 enable flags
+    CHECK_OK(run(*session, results, Request::discreteControl(1, DiscreteOp::Set, addr("Y5"))));
+    QCOMPARE(m_plc->value(addr("Y5")), std::optional<std::uint32_t>(1));
+    CHECK_OK(run(*session, results, Request::discreteControl(1, DiscreteOp::Disable, addr("M3"))));
+    r = run(*session, results, Request::readEnableFlags(1, addr("M0"), 8));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, (std::vector<std::uint32_t>{0, 0, 0, 1, 0, 0, 0, 0}));
+
+    // 45 / 44 discretes
+    CHECK_OK(run(*session, results, Request::writeDiscretes(1, addr("Y8"), {1, 0, 1, 1})));
+    r = run(*session, results, Request::readDiscretes(1, addr("Y8"), 4));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, (std::vector<std::uint32_t>{1, 0, 1, 1}));
+
+    // 47 / 46 registers, 16 and 32 bit
+    CHECK_OK(run(*session, results, Request::writeRegisters(1, addr("R10"), {1, 2, 65535})));
+    r = run(*session, results, Request::readRegisters(1, addr("R10"), 3));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, (std::vector<std::uint32_t>{1, 2, 65535}));
+    CHECK_OK(run(*session, results, Request::writeRegisters(1, addr("DR20"), {0x12345678})));
+    r = run(*session, results, Request::readRegisters(1, addr("DR20"), 1));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, (std::vector<std::uint32_t>{0x12345678}));
+
+    // 49 / 48 mixed
+    CHECK_OK(run(*session, results,
+                 Request::mixedWrite(1, {addr("R100"), addr("Y20"), addr("DR30")}, {7, 1, 100000})));
+    r = run(*session, results, Request::mixedRead(1, {addr("R100"), addr("Y20"), addr("DR30")}));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, (std::vector<std::uint32_t>{7, 1, 100000}));
+
+    // 4E loopback
+    r = run(*session, results, Request::loopback(1, bytes("ABC123")));
+    CHECK_OK(r);
+    QCOMPARE(r.response().data, bytes("ABC123"));
+
+    // 4F / 50 program pages: FACON only
+    std::vector<std::uint32_t> page(64);
+    for (std::size_t i = 0; i < page.size(); ++i)
+        page[i] = static_cast<std::uint32_t>(i * 3 + 1);
+    r = run(*session, results, Request::writeProgram(1, 1, page));
+    if (proto == Protocol::Facon) {
+        CHECK_OK(r);
+        r = run(*session, results, Request::readProgram(1, 1));
+        CHECK_OK(r);
+        QCOMPARE(r.response().values, page);
+    } else {
+        QVERIFY(!r.ok());
+        QCOMPARE(r.errorKind(), ErrorKind::Unsupported);
+        QCOMPARE(r.attempts(), 0); // refused before the wire
+    }
+
+    // 53 detail status
+    r = run(*session, results, Request::detailStatus(1));
+    CHECK_OK(r);
+    QVERIFY(!r.response().data.empty());
+
+    // A PLC error comes back typed, naming the address, and is not retried.
+    r = run(*session, results, Request::readRegisters(1, addr("R3900"), 1));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errorKind(), ErrorKind::PlcError);
+    QCOMPARE(r.error().plcCode, 0xA);
+    QVERIFY2(r.errorText().contains(QStringLiteral("R3900")), qPrintable(r.errorText()));
+    QCOMPARE(r.attempts(), 1);
+    QCOMPARE(session->statistics().total.plcErrors, quint64(1));
+}
+
+void TestSession::largeAnswers_data()
+{
+    QTest::addColumn<int>("protocol");
+    QTest::newRow("udp facon") << int(Protocol::Facon);
+    QTest::newRow("udp binary") << int(Protocol::Binary);
+}
+
+void TestSession::largeAnswers()
+{
+    QFETCH(int, protocol);
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("udp"),
+                     protocol == int(Protocol::Facon) ? LinkSettings::ProtocolChoice::Facon
+                                                      : LinkSettings::ProtocolChoice::Binary,
+                     settings));
+    auto session = openSession(settings);
+    Results results(session.get());
+
+    // 256 discretes, 64 registers, 32 DR, a 64-word mixed read, 256 bytes of loopback: the
+    // largest answers of each kind, each in one datagram.
+    for (std::uint32_t i = 0; i < 256; ++i)
+        m_plc->setValue({ElementType::M, i}, i % 3 == 0 ? 1 : 0);
+    SessionResult r = run(*session, results, Request::readDiscretes(1, addr("M0"), 256));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values.size(), std::size_t(256));
+    for (std::uint32_t i = 0; i < 256; ++i)
+        QCOMPARE(r.response().values[i], i % 3 == 0 ? 1u : 0u);
+
+    std::vector<std::uint32_t> words;
+    for (std::uint32_t i = 0; i < 64; ++i)
+        words.push_back(0xA000 + i);
+    CHECK_OK(run(*session, results, Request::writeRegisters(1, addr("R200"), words)));
+    r = run(*session, results, Request::readRegisters(1, addr("R200"), 64));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, words);
+
+    std::vector<std::uint32_t> doubles;
+    for (std::uint32_t i = 0; i < 32; ++i)
+        doubles.push_back(0x80000000u + i * 77777u);
+    CHECK_OK(run(*session, results, Request::writeRegisters(1, addr("DR400"), doubles)));
+    r = run(*session, results, Request::readRegisters(1, addr("DR400"), 32));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, doubles);
+
+    std::vector<Address> mixed;
+    for (std::uint32_t i = 0; i < 64; ++i)
+        mixed.push_back({ElementType::R, 200 + i});
+    r = run(*session, results, Request::mixedRead(1, mixed));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, words);
+
+    Bytes data;
+    for (int i = 0; i < 256; ++i)
+        data.push_back(static_cast<std::uint8_t>('A' + i % 26));
+    r = run(*session, results, Request::loopback(1, data));
+    CHECK_OK(r);
+    QCOMPARE(r.response().data, data);
+}
+
+void TestSession::refusedWhenNotOpen()
+{
+    Session session(LinkSettings::tcp(QStringLiteral("127.0.0.1"), 1));
+    Results results(&session);
+    const quint64 id = session.submit(Request::briefStatus(1));
+    QVERIFY(id != 0);
+    QVERIFY(results.waitFor(id));
+    QCOMPARE(results.map.value(id).errorKind(), ErrorKind::LinkError);
+    QVERIFY(results.map.value(id).errorText().contains(QStringLiteral("not open")));
+
+    // Unusable settings: open() stays closed and says why.
+    Session serial(LinkSettings::serial(QString()));
+    QSignalSpy states(&serial, &Session::linkStateChanged);
+    serial.open();
+    QVERIFY(states.wait(5000));
+    QCOMPARE(states.last().at(0).value<LinkState>(), LinkState::Closed);
+    QCOMPARE(states.last().at(1).toString(), QStringLiteral("Choose a serial port."));
+}
+
+void TestSession::invalidRequestNeverSent()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    auto session = openSession(settings);
+    Results results(session.get());
+    SessionResult r = run(*session, results, Request::readRegisters(1, addr("R0"), 65));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errorKind(), ErrorKind::LimitExceeded);
+    r = run(*session, results, Request::readRegisters(255, addr("R0"), 1));
+    QVERIFY(!r.ok());
+    QCOMPARE(session->statistics().total.bytesOut, quint64(0));
+    QCOMPARE(m_server->counters().frames, quint64(0));
+}
+
+void TestSession::timeoutAndRetries()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    settings.timeoutMs = 100;
+    settings.retries = 2;
+    FaultConfig faults;
+    faults.dropRate = 1.0;
+    m_server->setFaults(faults);
+    auto session = openSession(settings);
+    Results results(session.get());
+
+    SessionResult r = run(*session, results, Request::briefStatus(1));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errorKind(), ErrorKind::Timeout);
+    QCOMPARE(r.attempts(), 3);
+    QVERIFY2(r.errorText().contains(QStringLiteral("station 1")), qPrintable(r.errorText()));
+    SessionStatistics stats = session->statistics();
+    QCOMPARE(stats.total.timeouts, quint64(3));
+    QCOMPARE(stats.total.retries, quint64(2));
+    QCOMPARE(stats.total.requests, quint64(1));
+    QCOMPARE(stats.total.answers, quint64(0));
+    QCOMPARE(stats.stations.value(1).timeouts, quint64(3));
+    QCOMPARE(m_server->counters().frames, quint64(3));
+
+    // A per-request override: no retries.
+    RequestOptions once;
+    once.retries = 0;
+    const quint64 id = session->submit(Request::briefStatus(1), Priority::User, once);
+    QVERIFY(results.waitFor(id));
+    QCOMPARE(results.map.value(id).attempts(), 1);
+
+    // The PLC comes back: the session works without reconnecting.
+    m_server->setFaults(FaultConfig());
+    CHECK_OK(run(*session, results, Request::briefStatus(1)));
+}
+
+void TestSession::damagedAnswersAreRetried()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Binary, settings));
+    settings.timeoutMs = 150;
+    settings.retries = 10;
+    FaultConfig faults;
+    faults.corruptRate = 0.03;
+    faults.seed = 7;
+    m_server->setFaults(faults);
+    m_plc->setValue(addr("R7"), 4242);
+    auto session = openSession(settings);
+    Results results(session.get());
+    for (int i = 0; i < 30; ++i) {
+        const SessionResult r = run(*session, results, Request::readRegisters(1, addr("R7"), 1));
+        CHECK_OK(r);
+        QCOMPARE(r.response().values.front(), 4242u);
+    }
+    const SessionStatistics stats = session->statistics();
+    QVERIFY(stats.total.retries > 0);
+    QVERIFY(stats.total.checksumErrors + stats.total.timeouts > 0);
+    // Every damaged answer shows up in the traffic log with its reason.
+    int flagged = 0;
+    for (const TrafficEntry &entry : session->trafficLog()->entries())
+        flagged += entry.error.isEmpty() ? 0 : 1;
+    QVERIFY(flagged > 0);
+}
+
+void TestSession::otherStationIgnored()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    settings.timeoutMs = 150;
+    settings.retries = 0;
+    FaultConfig faults;
+    faults.wrongStationRate = 1.0;
+    m_server->setFaults(faults);
+    auto session = openSession(settings);
+    Results results(session.get());
+    SessionResult r = run(*session, results, Request::briefStatus(1));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errorKind(), ErrorKind::Timeout);
+    bool logged = false;
+    for (const TrafficEntry &entry : session->trafficLog()->entries()) {
+        if (entry.direction == TrafficEntry::Direction::In && entry.error.contains(QStringLiteral("station")))
+            logged = true;
+    }
+    QVERIFY(logged);
+}
+
+void TestSession::broadcastGetsNoAnswer()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("udp"), LinkSettings::ProtocolChoice::Facon, settings));
+    auto session = openSession(settings);
+    Results results(session.get());
+    CHECK_OK(run(*session, results, Request::writeRegisters(0, addr("R50"), {321})));
+    QTRY_COMPARE_WITH_TIMEOUT(m_plc->value(addr("R50")), std::optional<std::uint32_t>(321), 5000);
+    QCOMPARE(session->statistics().total.timeouts, quint64(0));
+}
+
+void TestSession::userActionsGoFirst()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    FaultConfig faults;
+    faults.latencyMs = 10;
+    m_server->setFaults(faults);
+    auto session = openSession(settings);
+    Results results(session.get());
+    QList<quint64> polls;
+    for (int i = 0; i < 15; ++i)
+        polls.append(session->submit(Request::readRegisters(1, addr("R0"), 4), Priority::Poll));
+    const quint64 background = session->submit(Request::briefStatus(1), Priority::Background);
+    const quint64 user = session->submit(Request::writeRegisters(1, addr("R60"), {5}), Priority::User);
+    QVERIFY(results.waitFor(polls.last()));
+    QVERIFY(results.map.value(user).ok());
+    const auto position = [&results](quint64 id) { return results.order.indexOf(id); };
+    // At most the poll already on the wire goes before the user's write.
+    QVERIFY2(position(user) <= 1, qPrintable(QString::number(position(user))));
+    QVERIFY(position(user) < position(background));
+    QVERIFY(position(background) < position(polls.last()));
+}
+
+void TestSession::readOnlyMode()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    m_plc->setRunning(false);
+    auto session = openSession(settings);
+    Results results(session.get());
+    session->setReadOnly(true);
+    QVERIFY(session->isReadOnly());
+
+    const QList<Request> writes = {
+        Request::runStop(1, true),
+        Request::discreteControl(1, DiscreteOp::Set, addr("Y0")),
+        Request::writeDiscretes(1, addr("Y0"), {1}),
+        Request::writeRegisters(1, addr("R0"), {9}),
+        Request::mixedWrite(1, {addr("R1")}, {9}),
+        Request::writeProgram(1, 0, std::vector<std::uint32_t>(64, 0)),
+    };
+    for (const Request &write : writes) {
+        const SessionResult r = run(*session, results, write);
+        QVERIFY(!r.ok());
+        QCOMPARE(r.errorKind(), ErrorKind::ReadOnly);
+        QVERIFY2(r.errorText().contains(QStringLiteral("Read-only")), qPrintable(r.errorText()));
+    }
+    const quint64 raw = session->sendRaw("0141 1", true);
+    QVERIFY(results.waitFor(raw));
+    QCOMPARE(results.map.value(raw).errorKind(), ErrorKind::ReadOnly);
+
+    // Nothing reached the wire ...
+    QCOMPARE(session->statistics().total.bytesOut, quint64(0));
+    QCOMPARE(m_server->counters().frames, quint64(0));
+    for (const TrafficEntry &entry : session->trafficLog()->entries())
+        QVERIFY(entry.direction != TrafficEntry::Direction::Out);
+    QVERIFY(!m_plc->isRunning());
+    // ... but reads still work, and leaving the mode allows writes again.
+    CHECK_OK(run(*session, results, Request::readRegisters(1, addr("R0"), 1)));
+    session->setReadOnly(false);
+    CHECK_OK(run(*session, results, Request::writeRegisters(1, addr("R0"), {9})));
+    QCOMPARE(m_plc->value(addr("R0")), std::optional<std::uint32_t>(9));
+}
+
+void TestSession::rawFrames_data()
+{
+    QTest::addColumn<int>("protocol");
+    QTest::newRow("facon") << int(Protocol::Facon);
+    QTest::newRow("binary") << int(Protocol::Binary);
+}
+
+void TestSession::rawFrames()
+{
+    QFETCH(int, protocol);
+    const bool facon = protocol == int(Protocol::Facon);
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"),
+                     facon ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Binary,
+                     settings));
+    settings.timeoutMs = 300;
+    auto session = openSession(settings);
+    Results results(session.get());
+
+    // Body only, framing and checksum added by the session.
+    const QByteArray body = facon ? QByteArray("0140") : QByteArray("\x01\x40", 2);
+    quint64 id = session->sendRaw(body, true);
+    QVERIFY(results.waitFor(id));
+    SessionResult r = results.map.value(id);
+    CHECK_OK(r);
+    QVERIFY(r.isRaw());
+    if (facon)
+        QVERIFY2(r.rawAnswer().startsWith("\x02" "0140"), r.rawAnswer().toHex(' ').constData());
+    else
+        QVERIFY2(r.rawAnswer().startsWith(QByteArray("\x52\x10", 2)), r.rawAnswer().toHex(' ').constData());
+
+    // A complete frame as typed.
+    const QByteArray frame = facon ? QByteArray("\x02" "0140C7\x03")
+                                   : QByteArray::fromHex("51 10 00 02 01 40 A1 84 55 AA");
+    id = session->sendRaw(frame, false);
+    QVERIFY(results.waitFor(id));
+    r = results.map.value(id);
+    CHECK_OK(r);
+    QVERIFY(!r.rawAnswer().isEmpty());
+
+    // Something the PLC ignores (bad checksum): the timeout says nothing came back.
+    const QByteArray broken = facon ? QByteArray("\x02" "0140FF\x03") : QByteArray::fromHex("51 10 00 02 01 40 00 00 55 AA");
+    id = session->sendRaw(broken, false);
+    QVERIFY(results.waitFor(id));
+    r = results.map.value(id);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errorKind(), ErrorKind::Timeout);
+}
+
+void TestSession::autoDetect()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Auto, settings));
+    auto session = openSession(settings);
+    QVERIFY(!session->isProtocolKnown());
+    QSignalSpy detected(session.get(), &Session::protocolDetected);
+    Results results(session.get());
+    m_plc->setValue(addr("R3"), 77);
+    SessionResult r = run(*session, results, Request::readRegisters(1, addr("R3"), 1));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values.front(), 77u);
+    QVERIFY(session->isProtocolKnown());
+    QCOMPARE(session->protocol(), Protocol::Facon); // the simulator speaks both; FACON is probed first
+    QTRY_COMPARE_WITH_TIMEOUT(detected.count(), 1, 5000);
+    // Remembered: the next request probes nothing.
+    const quint64 before = m_server->counters().frames;
+    CHECK_OK(run(*session, results, Request::readRegisters(1, addr("R3"), 1)));
+    QCOMPARE(m_server->counters().frames, before + 1);
+}
+
+void TestSession::autoDetectNobody()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("udp"), LinkSettings::ProtocolChoice::Auto, settings));
+    settings.timeoutMs = 100;
+    m_server->setStation(9); // nobody answers station 1
+    auto session = openSession(settings);
+    Results results(session.get());
+    const SessionResult r = run(*session, results, Request::briefStatus(1));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errorKind(), ErrorKind::Timeout);
+    QVERIFY2(r.errorText().contains(QStringLiteral("neither in FACON nor in binary")), qPrintable(r.errorText()));
+    QVERIFY(!session->isProtocolKnown());
+}
+
+void TestSession::reconnectAfterSimulatorRestart()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Binary, settings));
+    settings.reconnectMinMs = 50;
+    settings.reconnectMaxMs = 200;
+    const quint16 port = m_server->tcpPort();
+    auto session = openSession(settings);
+    QList<LinkState> states;
+    QStringList reasons;
+    connect(session.get(), &Session::linkStateChanged, this, [&](LinkState state, const QString &reason) {
+        states.append(state);
+        reasons.append(reason);
+    });
+    Results results(session.get());
+    CHECK_OK(run(*session, results, Request::briefStatus(1)));
+
+    m_server->close(); // the simulator goes away
+    QTRY_VERIFY_WITH_TIMEOUT(states.contains(LinkState::Reconnecting), 5000);
+    QVERIFY(states.contains(LinkState::Lost));
+    QVERIFY(!reasons.at(states.indexOf(LinkState::Lost)).isEmpty());
+    // While down, requests fail at once with a link error.
+    QTRY_VERIFY_WITH_TIMEOUT(session->linkState() == LinkState::Reconnecting, 5000);
+    SessionResult r = run(*session, results, Request::briefStatus(1));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errorKind(), ErrorKind::LinkError);
+
+    QString error;
+    QVERIFY2(m_server->listenTcp(port, &error), qPrintable(error)); // ... and comes back
+    QTRY_VERIFY_WITH_TIMEOUT(session->linkState() == LinkState::Connected, 10000);
+    CHECK_OK(run(*session, results, Request::briefStatus(1)));
+}
+
+void TestSession::closeCancelsPending()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    FaultConfig faults;
+    faults.latencyMs = 50;
+    m_server->setFaults(faults);
+    auto session = openSession(settings);
+    Results results(session.get());
+    QList<quint64> ids;
+    for (int i = 0; i < 5; ++i)
+        ids.append(session->submit(Request::briefStatus(1)));
+    session->close();
+    for (quint64 id : ids) {
+        QVERIFY(results.waitFor(id));
+        QCOMPARE(results.map.value(id).errorKind(), ErrorKind::Cancelled);
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(session->linkState(), LinkState::Closed, 5000);
+    QCOMPARE(results.map.size(), 5); // exactly one result each
+}
+
+void TestSession::statistics()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("udp"), LinkSettings::ProtocolChoice::Binary, settings));
+    auto session = openSession(settings);
+    QSignalSpy changed(session.get(), &Session::statisticsChanged);
+    Results results(session.get());
+    for (int i = 0; i < 10; ++i)
+        CHECK_OK(run(*session, results, Request::readRegisters(1, addr("R0"), 2)));
+    const SessionStatistics stats = session->statistics();
+    QCOMPARE(stats.total.requests, quint64(10));
+    QCOMPARE(stats.total.answers, quint64(10));
+    QCOMPARE(stats.total.timeouts, quint64(0));
+    QCOMPARE(stats.total.retries, quint64(0));
+    const BinaryCodec codec;
+    const Request read = Request::readRegisters(1, addr("R0"), 2);
+    Response response;
+    response.station = 1;
+    response.command = read.command;
+    response.values = {0, 0};
+    const std::size_t query = codec.encodeRequest(read).value().size();
+    const std::size_t answer = codec.encodeResponse(read, response).size();
+    QCOMPARE(stats.total.bytesOut, quint64(10 * query));
+    QCOMPARE(stats.total.bytesIn, quint64(10 * answer));
+    QCOMPARE(stats.stations.value(1).requests, quint64(10));
+    QVERIFY(stats.total.rttMeanMs > 0);
+    QVERIFY(stats.total.rttP50Ms <= stats.total.rttP99Ms);
+    QVERIFY(changed.count() > 0 || changed.wait(2000));
+    session->resetStatistics();
+    QTRY_COMPARE_WITH_TIMEOUT(session->statistics().total.requests, quint64(0), 5000);
+}
+
+void TestSession::trafficLogBounded()
+{
+    TrafficLog log(10);
+    QSignalSpy added(&log, &TrafficLog::entriesAdded);
+    for (int i = 0; i < 25; ++i)
+        log.append(TrafficEntry::Direction::Out, QByteArray::number(i), QStringLiteral("frame %1").arg(i));
+    QCOMPARE(log.size(), 10);
+    QCOMPARE(added.count(), 25);
+    QCOMPARE(log.lastSequence(), quint64(25));
+    const QList<TrafficEntry> all = log.entries();
+    QCOMPARE(all.size(), 10);
+    QCOMPARE(all.first().sequence, quint64(16));
+    QCOMPARE(all.last().bytes, QByteArray("24"));
+    const QList<TrafficEntry> since = log.entries(22);
+    QCOMPARE(since.size(), 3);
+    QCOMPARE(since.first().summary, QStringLiteral("frame 22"));
+    QVERIFY(log.entries(25).isEmpty());
+    log.clear();
+    QCOMPARE(log.size(), 0);
+
+    // A session logs both directions with decoded summaries.
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    auto session = openSession(settings);
+    Results results(session.get());
+    CHECK_OK(run(*session, results, Request::readRegisters(1, addr("R12"), 3)));
+    const QList<TrafficEntry> entries = session->trafficLog()->entries();
+    QCOMPARE(entries.size(), 2);
+    QCOMPARE(entries.at(0).direction, TrafficEntry::Direction::Out);
+    QCOMPARE(entries.at(1).direction, TrafficEntry::Direction::In);
+    QVERIFY(entries.at(0).bytes.startsWith("\x02" "0146"));
+    QVERIFY(!entries.at(0).summary.isEmpty());
+    QVERIFY(entries.at(1).error.isEmpty());
+}
+
+void TestSession::polling()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    m_plc->setValue(addr("R0"), 11);
+    m_plc->setValue(addr("R1"), 22);
+    m_plc->setValue(addr("DR10"), 123456);
+    m_plc->setValue(addr("Y3"), 1);
+    auto session = openSession(settings);
+    QList<QList<WatchValue>> batches;
+    connect(session.get(), &Session::values, this, [&batches](const QList<WatchValue> &v) { batches.append(v); });
+    session->setWatchList({{1, 1, addr("R0"), 50}, {2, 1, addr("R1"), 50}, {3, 1, addr("DR10"), 50},
+                           {4, 1, addr("Y3"), 50}, {5, 1, addr("R0"), 50}});
+    QTRY_VERIFY_WITH_TIMEOUT(!batches.isEmpty(), 5000);
+    QList<WatchValue> first = batches.first();
+    QCOMPARE(first.size(), 5); // one batch per cycle, every item
+    QHash<quint64, quint32> seen;
+    for (const WatchValue &v : first) {
+        QCOMPARE(v.quality, ValueQuality::Good);
+        QVERIFY(v.timestamp.isValid());
+        seen.insert(v.itemId, v.value);
+    }
+    QCOMPARE(seen.value(1), 11u);
+    QCOMPARE(seen.value(2), 22u);
+    QCOMPARE(seen.value(3), 123456u);
+    QCOMPARE(seen.value(4), 1u);
+    QCOMPARE(seen.value(5), 11u);
+
+    m_plc->setValue(addr("R1"), 99);
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(batches.last().cbegin(), batches.last().cend(),
+                                         [](const WatchValue &v) { return v.itemId == 2 && v.value == 99; }),
+                             5000);
+
+    // Re-plan on a new list; an empty list stops polling.
+    session->setWatchList({{7, 1, addr("R1"), 30}});
+    QTRY_VERIFY_WITH_TIMEOUT(batches.last().size() == 1 && batches.last().first().itemId == 7, 5000);
+    session->setWatchList({});
+    QTest::qWait(100);
+    const qsizetype count = batches.size();
+    QTest::qWait(200);
+    QCOMPARE(batches.size(), count);
+    QVERIFY(session->statistics().pollCycles > 0);
+}
+
+void TestSession::pollingIsolatesBadAddress()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("udp"), LinkSettings::ProtocolChoice::Binary, settings));
+    m_plc->setValue(addr("R0"), 5);
+    m_plc->setValue(addr("R3000"), 6);
+    m_plc->setValue(addr("M5"), 1);
+    m_plc->setValue(addr("DR100"), 70000);
+    auto session = openSession(settings);
+    QList<QList<WatchValue>> batches;
+    connect(session.get(), &Session::values, this, [&batches](const QList<WatchValue> &v) { batches.append(v); });
+    // D3500 does not exist on this model (D0..D2999): the PLC answers error A for any batch holding it.
+    session->setWatchList({{1, 1, addr("R0"), 50}, {2, 1, addr("D3500"), 50}, {3, 1, addr("R3000"), 50},
+                           {4, 1, addr("M5"), 50}, {5, 1, addr("DR100"), 50}});
+    QTRY_VERIFY_WITH_TIMEOUT(batches.size() >= 3, 10000);
+    for (const QList<WatchValue> &batch : std::as_const(batches)) {
+        QCOMPARE(batch.size(), 5);
+        for (const WatchValue &v : batch) {
+            if (v.itemId == 2) {
+                QCOMPARE(v.quality, ValueQuality::Error);
+                QVERIFY2(v.error.contains(QStringLiteral("illegal address")), qPrintable(v.error));
+            } else {
+                QCOMPARE(v.quality, ValueQuality::Good);
+            }
+        }
+    }
+    const QList<WatchValue> last = batches.last();
+    for (const WatchValue &v : last) {
+        if (v.itemId == 1) QCOMPARE(v.value, 5u);
+        if (v.itemId == 3) QCOMPARE(v.value, 6u);
+        if (v.itemId == 4) QCOMPARE(v.value, 1u);
+        if (v.itemId == 5) QCOMPARE(v.value, 70000u);
+    }
+}
+
+void TestSession::pollingSeveralStations()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    settings.timeoutMs = 80;
+    settings.retries = 0;
+    m_plc->setValue(addr("R0"), 17);
+    auto session = openSession(settings);
+    QList<QList<WatchValue>> batches;
+    connect(session.get(), &Session::values, this, [&batches](const QList<WatchValue> &v) { batches.append(v); });
+    // Station 2 is absent: its items go stale; station 1 keeps being served.
+    session->setWatchList({{1, 1, addr("R0"), 50}, {2, 2, addr("R0"), 50}, {3, 1, addr("R1"), 50},
+                           {4, 2, addr("R1"), 50}});
+    QTRY_VERIFY_WITH_TIMEOUT(batches.size() >= 2, 10000);
+    for (const WatchValue &v : batches.last()) {
+        if (v.itemId == 1 || v.itemId == 3) {
+            QCOMPARE(v.quality, ValueQuality::Good);
+        } else {
+            QCOMPARE(v.quality, ValueQuality::Stale);
+            QVERIFY2(v.error.contains(QStringLiteral("station 2")), qPrintable(v.error));
+        }
+    }
+    const SessionStatistics stats = session->statistics();
+    QVERIFY(stats.stations.value(1).answers > 0);
+    QCOMPARE(stats.stations.value(2).answers, quint64(0));
+    QVERIFY(stats.stations.value(2).timeouts > 0);
+}
+
+void TestSession::pollingTrickyWatchList_data()
+{
+    QTest::addColumn<int>("protocol");
+    QTest::newRow("facon") << int(Protocol::Facon);
+    QTest::newRow("binary") << int(Protocol::Binary);
+}
+
+void TestSession::pollingTrickyWatchList()
+{
+    // Gaps, spans beyond one request's limits, 16/32-bit and bit elements mixed, W views,
+    // duplicates and an element type the protocol may lack: every value must land on its item.
+    QFETCH(int, protocol);
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"),
+                     protocol == int(Protocol::Facon) ? LinkSettings::ProtocolChoice::Facon
+                                                      : LinkSettings::ProtocolChoice::Binary,
+                     settings));
+    QList<WatchEntry> watch;
+    QHash<quint64, quint32> expected;
+    quint64 id = 100;
+    const auto add = [&](const Address &address, quint32 value, bool write = true) {
+        if (write)
+            QVERIFY(m_plc->setValue(address, value));
+        watch.append({id, 1, address, 40});
+        expected.insert(id, value);
+        ++id;
+    };
+    for (std::uint32_t n = 0; n < 200; n += 3) // 67 registers over 200 words: more than one 46
+        add({ElementType::R, n}, 1000 + n);
+    for (std::uint32_t n = 0; n < 16; n += 2)  // 32-bit, aligned pairs
+        add({ElementType::DR, 300 + n}, 0x10000u * n + 7);
+    for (std::uint32_t n = 0; n < 600; n += 37) // bits over more than 256 points
+        add({ElementType::M, n}, n % 2);
+    add({ElementType::D, 10}, 55);
+    add({ElementType::D, 2000}, 66); // far away: mixed read or its own request
+    add({ElementType::Y, 3}, 1);
+    add({ElementType::WY, 0}, 0x0008, false); // Y3 seen through WY0
+    add({ElementType::R, 0}, 1000, false);     // duplicate of the first item
+    auto session = openSession(settings);
+    QList<QList<WatchValue>> batches;
+    connect(session.get(), &Session::values, this, [&batches](const QList<WatchValue> &v) { batches.append(v); });
+    session->setWatchList(watch);
+    QTRY_VERIFY_WITH_TIMEOUT(!batches.isEmpty(), 10000);
+    const QList<WatchValue> batch = batches.first();
+    QCOMPARE(batch.size(), watch.size());
+    for (const WatchValue &v : batch) {
+        QVERIFY2(v.quality == ValueQuality::Good, qPrintable(v.error));
+        QCOMPARE(v.value, expected.value(v.itemId));
+    }
+}
+
+void TestSession::lateAnswerDiscarded()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    settings.timeoutMs = 100;
+    settings.retries = 0;
+    FaultConfig slow;
+    slow.latencyMs = 300;
+    m_server->setFaults(slow);
+    m_plc->setValue(addr("R0"), 1);
+    auto session = openSession(settings);
+    Results results(session.get());
+    SessionResult r = run(*session, results, Request::readRegisters(1, addr("R0"), 1));
+    QCOMPARE(r.errorKind(), ErrorKind::Timeout);
+
+    // The PLC's late answer (R0 = 1) arrives after the timeout; it must never pass for the
+    // answer to the next, identical query.
+    m_server->setFaults(FaultConfig());
+    m_plc->setValue(addr("R0"), 2);
+    QTRY_VERIFY_WITH_TIMEOUT(session->statistics().bytesDiscarded > 0, 5000);
+    r = run(*session, results, Request::readRegisters(1, addr("R0"), 1));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values.front(), 2u);
+    bool logged = false;
+    for (const TrafficEntry &entry : session->trafficLog()->entries())
+        logged = logged || entry.error.contains(QStringLiteral("no query pending"));
+    QVERIFY(logged);
+}
+
+void TestSession::stationScan()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("udp"), LinkSettings::ProtocolChoice::Facon, settings));
+    m_server->setStation(3);
+    m_plc->setRunning(true);
+    auto session = openSession(settings);
+    StationScanner scanner(session.get());
+    QSignalSpy done(&scanner, &StationScanner::finished);
+    QSignalSpy progress(&scanner, &StationScanner::progress);
+    scanner.start(1, 6, 50);
+    QVERIFY(scanner.isRunning());
+    QVERIFY(done.wait(10000));
+    const QList<StationScanner::Hit> hits = scanner.hits();
+    QCOMPARE(hits.size(), 1);
+    QCOMPARE(hits.first().station, quint8(3));
+    QVERIFY(hits.first().status.running);
+    QCOMPARE(progress.last().at(0).toInt(), 6);
+    QVERIFY(!scanner.isRunning());
+
+    // A cancelled scan ends at once and leaves nothing queued behind.
+    Results results(session.get());
+    scanner.start(1, 254, 50);
+    scanner.cancel();
+    QCOMPARE(done.count(), 2);
+    QVERIFY(!scanner.isRunning());
+    CHECK_OK(run(*session, results, Request::briefStatus(3)));
+    QTest::qWait(100);
+    QVERIFY2(session->statistics().total.requests < 20,
+             qPrintable(QString::number(session->statistics().total.requests)));
+}
+
+void TestSession::destroyWhileBusy()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    FaultConfig faults;
+    faults.latencyMs = 20;
+    m_server->setFaults(faults);
+    auto session = openSession(settings);
+    Results results(session.get());
+    session->setWatchList({{1, 1, addr("R0"), 10}});
+    quint64 first = 0;
+    for (int i = 0; i < 50; ++i) {
+        const quint64 id = session->submit(Request::readRegisters(1, addr("R0"), 1));
+        if (i == 0)
+            first = id;
+    }
+    QVERIFY(results.waitFor(first));
+    session.reset(); // must return promptly, with requests queued and one on the wire
+    QVERIFY(!session);
+}
+
+QTEST_GUILESS_MAIN(TestSession)
+#include "tst_session.moc"
