@@ -121,7 +121,7 @@ bool SimServer::openSerial(const SerialSettings &settings, QString *error)
             [this, port] { handleBytes(m_serialConnection, port->readAll()); });
     connect(port, &QSerialPort::errorOccurred, this, [this, port](QSerialPort::SerialPortError e) {
         if (e != QSerialPort::NoError)
-            emit logLine(QStringLiteral("serial %1: %2").arg(port->portName(), port->errorString()));
+            Q_EMIT logLine(QStringLiteral("serial %1: %2").arg(port->portName(), port->errorString()));
     });
     return true;
 }
@@ -160,7 +160,7 @@ void SimServer::close()
         m_tcp = nullptr;
         if (m_tcpClients != 0) {
             m_tcpClients = 0;
-            emit clientCountChanged(0);
+            Q_EMIT clientCountChanged(0);
         }
     }
     if (m_udp) {
@@ -189,7 +189,7 @@ void SimServer::acceptTcp()
         connect(socket, &QTcpSocket::disconnected, this, [this, socket, peer] {
             --m_tcpClients;
             log(peer + QStringLiteral(" disconnected"));
-            emit clientCountChanged(m_tcpClients);
+            Q_EMIT clientCountChanged(m_tcpClients);
             socket->deleteLater();
         });
         if (m_faults.closeEverySeconds > 0) {
@@ -201,7 +201,7 @@ void SimServer::acceptTcp()
         }
         ++m_tcpClients;
         log(peer + QStringLiteral(" connected"));
-        emit clientCountChanged(m_tcpClients);
+        Q_EMIT clientCountChanged(m_tcpClients);
     }
 }
 
@@ -347,7 +347,7 @@ bool SimServer::chance(double rate)
 void SimServer::log(const QString &line)
 {
     if (m_verbose)
-        emit logLine(line);
+        Q_EMIT logLine(line);
 }
 
 } // namespace Fatek

@@ -79,7 +79,7 @@ public:
 
     Counters counters() const { return m_counters; }
 
-signals:
+Q_SIGNALS:
     void logLine(const QString &line);
     void clientCountChanged(int clients);
 
