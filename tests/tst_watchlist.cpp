@@ -20,10 +20,10 @@ QString errorText(const Result<T> &r)
     return r.ok() ? QString() : QString::fromStdString(r.error().message);
 }
 
-WatchEntry entry(const char *address, DisplayFormat format, quint8 station = 1, const QString &name = {},
+WatchItemSpec entry(const char *address, DisplayFormat format, quint8 station = 1, const QString &name = {},
                  const QString &comment = {}, bool swap = false)
 {
-    WatchEntry e;
+    WatchItemSpec e;
     e.address = addr(address);
     e.format = format;
     e.station = station;
@@ -374,7 +374,7 @@ void TestWatchList::validateEntry()
     QVERIFY(WatchList::validateEntry(entry("R65532", DisplayFormat::Double64)).ok());
     QVERIFY(!WatchList::validateEntry(entry("R65533", DisplayFormat::Double64)).ok());
     QVERIFY(WatchList::validateEntry(entry("X9999", DisplayFormat::Bit, 254)).ok());
-    WatchEntry e = entry("R1", DisplayFormat::Signed, 255);
+    WatchItemSpec e = entry("R1", DisplayFormat::Signed, 255);
     const Status s = WatchList::validateEntry(e);
     QVERIFY(!s.ok());
     QCOMPARE(QString::fromStdString(s.error().message),

@@ -107,13 +107,13 @@ Result<int> intMember(const QJsonObject &object, const QString &key, int fallbac
     return static_cast<int>(number);
 }
 
-Result<WatchEntry> entryFromJson(const QJsonValue &value)
+Result<WatchItemSpec> entryFromJson(const QJsonValue &value)
 {
     if (!value.isObject())
         return fileError(QStringLiteral("an item must be a JSON object"));
     const QJsonObject object = value.toObject();
 
-    WatchEntry entry;
+    WatchItemSpec entry;
     const QJsonValue address = object.value(QStringLiteral("address"));
     if (address.isUndefined())
         return fileError(QStringLiteral("the \"address\" is missing"));
@@ -349,7 +349,7 @@ Result<QList<Column>> headerColumns(const CsvRecord &record)
 
 } // namespace
 
-Status validateEntry(const WatchEntry &entry)
+Status validateEntry(const WatchItemSpec &entry)
 {
     if (entry.station == 0)
         return fileError(QStringLiteral("station 0 is broadcast (no PLC answers): use a station number 1..254"));
@@ -454,7 +454,7 @@ QByteArray save(const WatchListFile &file)
     QJsonArray tables;
     for (const WatchTableSpec &table : file.tables) {
         QJsonArray items;
-        for (const WatchEntry &entry : table.items) {
+        for (const WatchItemSpec &entry : table.items) {
             items.append(QJsonObject{
                 {QStringLiteral("address"), QString::fromStdString(entry.address.toString())},
                 {QStringLiteral("station"), entry.station},
@@ -498,7 +498,7 @@ Status saveToFile(const WatchListFile &file, const QString &path)
     return Ok{};
 }
 
-Result<QList<WatchEntry>> importCsv(const QByteArray &csv)
+Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
 {
     const auto records = splitCsv(decodeText(csv));
     if (!records)
@@ -525,7 +525,7 @@ Result<QList<WatchEntry>> importCsv(const QByteArray &csv)
         header = true;
     }
 
-    QList<WatchEntry> entries;
+    QList<WatchItemSpec> entries;
     for (qsizetype r = header ? 1 : 0; r < records->size(); ++r) {
         const CsvRecord &record = records->at(r);
         const QString place = linePlace(record.line);
@@ -584,7 +584,7 @@ Result<QList<WatchEntry>> importCsv(const QByteArray &csv)
         }
 
         for (qsizetype i = 0; i < addresses->size(); ++i) {
-            WatchEntry entry;
+            WatchItemSpec entry;
             entry.address = addresses->at(i);
             entry.station = station;
             entry.format = format ? *format : ValueFormat::defaultFormat(entry.address);

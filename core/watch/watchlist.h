@@ -10,8 +10,9 @@
 
 namespace Fatek {
 
-// One row of a watch table.
-struct WatchEntry
+// One row of a watch table. (Named apart from the session's WatchEntry, the poll entry: both live in
+// namespace Fatek and the GUI links and includes both.)
+struct WatchItemSpec
 {
     QString name;
     QString comment;
@@ -20,7 +21,7 @@ struct WatchEntry
     DisplayFormat format = DisplayFormat::Signed;
     bool swapWords = false;
 
-    bool operator==(const WatchEntry &) const = default;
+    bool operator==(const WatchItemSpec &) const = default;
 };
 
 // One watch table: its rows and how it is polled.
@@ -29,7 +30,7 @@ struct WatchTableSpec
     QString name;
     int intervalMs = 500;
     bool confirmWrites = true;
-    QList<WatchEntry> items;
+    QList<WatchItemSpec> items;
 
     bool operator==(const WatchTableSpec &) const = default;
 };
@@ -57,7 +58,7 @@ inline constexpr int MaxRangeItems = 1024;
 
 // Station 1..254 (0 is broadcast: no answer to watch), the address exists, the format applies to it and
 // every register it spans exists (R65535 as float would need R65536).
-Status validateEntry(const WatchEntry &entry);
+Status validateEntry(const WatchItemSpec &entry);
 // Every entry and table setting; errors start with "table N" / "table N, item M".
 Status validate(const WatchListFile &file);
 
@@ -78,7 +79,7 @@ Status saveToFile(const WatchListFile &file, const QString &path);
 // quoted ("a, b" and "say ""hi"""), blank lines and lines starting with # are skipped, "R100..R103" in the
 // address column gives four rows (names get [0], [1], ... suffixes). UTF-8 with or without BOM; text that is
 // not UTF-8 is read as Latin-1 (older spreadsheet exports).
-Result<QList<WatchEntry>> importCsv(const QByteArray &csv);
+Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv);
 
 // "R100..R163" -> R100..R163 (64), "WY0..WY32" -> WY0, WY16, WY32, "DR0..DR4" -> DR0, DR2, DR4,
 // "R100..163" (number only after ..) and "R100" alone (1). Rejects mixed types, backwards ranges, ends off the

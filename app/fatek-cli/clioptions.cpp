@@ -1,0 +1,571 @@
+#include "clioptions.h"
+
+#include "request.h"
+#include "watchlist.h"
+
+#include <QRegularExpression>
+
+namespace Fatek {
+
+namespace {
+
+using Kind = LinkSettings::Kind;
+
+bool parseInt(const QString &text, qint64 min, qint64 max, qint64 *out)
+{
+    bool ok = false;
+    const qint64 v = text.trimmed().toLongLong(&ok, 10);
+    if (!ok || v < min || v > max)
+        return false;
+    *out = v;
+    return true;
+}
+
+// "plc1:502", "plc1" (port 500), "[::1]:502".
+bool parseHostPort(const QString &text, QString *host, quint16 *port)
+{
+    QString h = text.trimmed();
+    QString p;
+    if (h.startsWith(QLatin1Char('['))) {
+        const qsizetype close = h.indexOf(QLatin1Char(']'));
+        if (close < 0)
+            return false;
+        const QString rest = h.mid(close + 1);
+        if (rest.startsWith(QLatin1Char(':')))
+            p = rest.mid(1);
+        else if (!rest.isEmpty())
+            return false;
+        h = h.mid(1, close - 1);
+    } else if (h.count(QLatin1Char(':')) == 1) {
+        p = h.section(QLatin1Char(':'), 1);
+        h = h.section(QLatin1Char(':'), 0, 0);
+    }
+    if (h.isEmpty())
+        return false;
+    *host = h;
+    *port = 500;
+    if (!p.isEmpty()) {
+        qint64 v = 0;
+        if (!parseInt(p, 1, 65535, &v))
+            return false;
+        *port = static_cast<quint16>(v);
+    }
+    return true;
+}
+
+Result<Address> parseAddress(const QString &text)
+{
+    return Address::parse(text.toStdString());
+}
+
+// One address, or a range "R0..R9" (monitor, read).
+Result<QList<Address>> parseAddressOrRange(const QString &text)
+{
+    if (text.contains(QLatin1String("..")))
+        return WatchList::expandRange(text);
+    auto a = parseAddress(text);
+    if (!a)
+        return a.error();
+    return QList<Address>{a.value()};
+}
+
+QString errorOf(const ProtocolError &e)
+{
+    return QString::fromStdString(e.message);
+}
+
+// Parses one command with its arguments into `s`; returns the usage error or nothing.
+QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, bool forceAscii,
+                  CliStep *result)
+{
+    CliStep &s = *result;
+    // The command.
+    QStringList positional = arguments;
+    s.name = positional.takeFirst().toLower();
+    const QString &cmd = s.name;
+    auto fail = [](const QString &message) { return message; };
+    auto argCount = [&](qsizetype min, qsizetype max) -> QString {
+        if (positional.size() < min)
+            return QStringLiteral("%1 needs more arguments (see --help).").arg(cmd);
+        if (max >= 0 && positional.size() > max)
+            return QStringLiteral("%1: unexpected argument \"%2\".").arg(cmd, positional.at(max));
+        return {};
+    };
+    auto countArg = [&](const QString &text, std::uint32_t max, std::uint32_t *out) -> QString {
+        qint64 c = 0;
+        if (!parseInt(text, 1, max, &c))
+            return QStringLiteral("%1: COUNT must be 1..%2, not \"%3\".").arg(cmd).arg(max).arg(text);
+        *out = static_cast<std::uint32_t>(c);
+        return {};
+    };
+    QString err;
+
+    if (cmd == QLatin1String("status") || cmd == QLatin1String("run") || cmd == QLatin1String("stop")) {
+        if (!(err = argCount(0, 0)).isEmpty())
+            return fail(err);
+        s.command = cmd == QLatin1String("status") ? CliCommand::ShowStatus
+                    : cmd == QLatin1String("run")  ? CliCommand::Run
+                                                   : CliCommand::Stop;
+    } else if (cmd == QLatin1String("read") || cmd == QLatin1String("forced")) {
+        if (!(err = argCount(1, cmd == QLatin1String("forced") ? 2 : -1)).isEmpty())
+            return fail(err);
+        s.command = cmd == QLatin1String("read") ? CliCommand::Read : CliCommand::Forced;
+        auto first = parseAddressOrRange(positional.at(0));
+        if (!first)
+            return fail(errorOf(first.error()));
+        s.addresses = first.value();
+        const bool range = s.addresses.size() > 1;
+        bool secondIsAddress = false;
+        if (positional.size() >= 2) {
+            bool isNumber = false;
+            positional.at(1).toLongLong(&isNumber);
+            secondIsAddress = !isNumber && s.command == CliCommand::Read;
+        }
+        if (secondIsAddress) {
+            // A mixed list (48): every further argument is an address or a range.
+            for (qsizetype i = 1; i < positional.size(); ++i) {
+                auto more = parseAddressOrRange(positional.at(i));
+                if (!more)
+                    return fail(errorOf(more.error()));
+                s.addresses += more.value();
+            }
+            s.mixed = true;
+            s.count = static_cast<std::uint32_t>(s.addresses.size());
+        } else {
+            if (positional.size() > 2)
+                return fail(QStringLiteral("%1: unexpected argument \"%2\".").arg(cmd, positional.at(2)));
+            if (s.command == CliCommand::Forced && !isDiscrete(s.addresses.first().type))
+                return fail(QStringLiteral("forced reads discretes (X Y M S T C), not %1.")
+                                .arg(QString::fromStdString(s.addresses.first().toString())));
+            if (positional.size() == 2) {
+                if (range)
+                    return fail(QStringLiteral("%1: give a range or a COUNT, not both.").arg(cmd));
+                const std::uint32_t max = isDiscrete(s.addresses.first().type) ? Limits::maxDiscretes
+                                                                                  : Limits::maxRegisterWords;
+                if (!(err = countArg(positional.at(1), max, &s.count)).isEmpty())
+                    return fail(err);
+            } else {
+                s.count = static_cast<std::uint32_t>(s.addresses.size());
+            }
+            s.addresses = {s.addresses.first()};
+            const Status span = validateSpan(s.addresses.first(), s.count);
+            if (!span)
+                return fail(errorOf(span.error()));
+        }
+    } else if (cmd == QLatin1String("write")) {
+        if (!(err = argCount(2, -1)).isEmpty())
+            return fail(err);
+        s.command = CliCommand::Write;
+        auto a = parseAddress(positional.at(0));
+        if (!a)
+            return fail(errorOf(a.error()));
+        s.addresses = {a.value()};
+        for (qsizetype i = 1; i < positional.size(); ++i) {
+            const auto value = parseValue(positional.at(i), a.value(), &err);
+            if (!value)
+                return fail(err);
+            s.values.push_back(*value);
+        }
+        s.count = static_cast<std::uint32_t>(s.values.size());
+        const Status span = validateSpan(a.value(), s.count);
+        if (!span)
+            return fail(errorOf(span.error()));
+    } else if (cmd == QLatin1String("set") || cmd == QLatin1String("reset") || cmd == QLatin1String("enable")
+               || cmd == QLatin1String("disable")) {
+        if (!(err = argCount(1, 1)).isEmpty())
+            return fail(err);
+        s.command = CliCommand::Control;
+        auto a = parseAddress(positional.at(0));
+        if (!a)
+            return fail(errorOf(a.error()));
+        if (!isDiscrete(a.value().type))
+            return fail(QStringLiteral("%1 works on discretes (X Y M S T C), not %2.")
+                            .arg(cmd, QString::fromStdString(a.value().toString())));
+        s.addresses = {a.value()};
+        const DiscreteOp op = cmd == QLatin1String("set")      ? DiscreteOp::Set
+                              : cmd == QLatin1String("reset")  ? DiscreteOp::Reset
+                              : cmd == QLatin1String("enable") ? DiscreteOp::Enable
+                                                               : DiscreteOp::Disable;
+        s.controlOp = static_cast<int>(op);
+    } else if (cmd == QLatin1String("loopback")) {
+        if (!(err = argCount(0, -1)).isEmpty())
+            return fail(err);
+        s.command = CliCommand::Loopback;
+        const QString text = positional.isEmpty() ? QStringLiteral("FATEK-CLI") : positional.join(QLatin1Char(' '));
+        s.loopbackData = text.toLatin1();
+        if (s.loopbackData.isEmpty() || static_cast<std::uint32_t>(s.loopbackData.size()) > Limits::maxLoopback)
+            return fail(QStringLiteral("loopback TEXT must be 1..%1 characters.").arg(Limits::maxLoopback));
+    } else if (cmd == QLatin1String("monitor")) {
+        if (!(err = argCount(1, -1)).isEmpty())
+            return fail(err);
+        s.command = CliCommand::Monitor;
+        for (const QString &text : positional) {
+            auto more = parseAddressOrRange(text);
+            if (!more)
+                return fail(errorOf(more.error()));
+            s.addresses += more.value();
+        }
+        if (s.addresses.size() > WatchList::MaxRangeItems)
+            return fail(QStringLiteral("monitor watches at most %1 elements.").arg(WatchList::MaxRangeItems));
+    } else if (cmd == QLatin1String("raw")) {
+        if (!(err = argCount(1, -1)).isEmpty())
+            return fail(err);
+        s.command = CliCommand::Raw;
+        if (forceHex && forceAscii)
+            return fail(QStringLiteral("raw: give --hex or --ascii, not both."));
+        s.rawBytes = parseRawText(positional.join(QLatin1Char(' ')), forceHex, forceAscii, &err);
+        if (!err.isEmpty())
+            return fail(err);
+        s.rawFrame = frameGiven;
+    } else if (cmd == QLatin1String("scan")) {
+        if (!(err = argCount(0, 1)).isEmpty())
+            return fail(err);
+        s.command = CliCommand::Scan;
+        if (!positional.isEmpty()) {
+            static const QRegularExpression range(QStringLiteral("^(\\d+)(?:\\.\\.(\\d+))?$"));
+            const auto m = range.match(positional.at(0).trimmed());
+            qint64 first = 0, last = 0;
+            if (!m.hasMatch() || !parseInt(m.captured(1), 1, Limits::maxStation, &first)
+                || !parseInt(m.captured(2).isEmpty() ? m.captured(1) : m.captured(2), 1, Limits::maxStation, &last)
+                || last < first)
+                return fail(QStringLiteral("scan takes a station range like 1..16 (1..254), not \"%1\".")
+                                .arg(positional.at(0)));
+            s.scanFirst = static_cast<int>(first);
+            s.scanLast = static_cast<int>(last);
+        }
+    } else {
+        return fail(QStringLiteral("Unknown command \"%1\" (see --help).").arg(cmd));
+    }
+    return {};
+}
+
+} // namespace
+
+QString usageText()
+{
+    return QStringLiteral(
+        "Usage: fatek-cli [LINK] [OPTIONS] COMMAND [ARGS]\n"
+        "\n"
+        "Link (exactly one):\n"
+        "  --tcp HOST[:PORT]        FATEK over TCP (port 500 if not given)\n"
+        "  --udp HOST[:PORT]        FATEK over UDP (port 500 if not given)\n"
+        "  --serial DEV             serial line, with --baud N (9600) --parity N|E|O (E) --data 7|8 (7) --stop 1|2 (1)\n"
+        "  --sim                    embedded simulator (FBs profile, demo ladder, RUN) on 127.0.0.1\n"
+        "\n"
+        "Options:\n"
+        "  --protocol facon|binary|auto   (auto for a real link, facon for --sim)\n"
+        "  --station N              station 1..254 (0 = broadcast, no answer) [1]\n"
+        "  --timeout MS             per attempt [1000]\n"
+        "  --retries N              extra attempts after a timeout [2]\n"
+        "  --read-only              operator mode: writes, RUN/STOP, forcing and raw frames are refused\n"
+        "  --json | --csv           output one JSON object per line / CSV instead of a table\n"
+        "  --help, --version\n"
+        "\n"
+        "Commands:\n"
+        "  status                   STATUS1 bits and the detail status (53)\n"
+        "  run | stop               switch the PLC to RUN / STOP\n"
+        "  read ADDR [COUNT]        consecutive elements (ADDR may be a range R0..R9)\n"
+        "  read ADDR ADDR...        a mixed list (48)\n"
+        "  write ADDR VALUE...      decimal, -decimal or 0x-hex; discretes 0/1/on/off; several = consecutive\n"
+        "  set|reset|enable|disable ADDR   discrete control (42)\n"
+        "  forced ADDR [COUNT]      which discretes are disabled (forced) (43)\n"
+        "  loopback [TEXT] [--count N]     round trips: min/mean/max, mismatches, timeouts\n"
+        "  monitor ADDR... [--interval MS] [--cycles N]   poll, one line per cycle (ADDR may be a range)\n"
+        "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" ASCII);\n"
+        "                           --frame adds the protocol's framing and checksum\n"
+        "  scan [FROM..TO]          which stations answer (default 1..254)\n"
+        "\n"
+        "Exit codes: 0 ok, 2 usage, 3 link failure (timeout, no connection), 4 PLC error, 5 refused by --read-only.\n");
+}
+
+std::optional<std::uint32_t> parseValue(const QString &rawText, const Address &address, QString *error)
+{
+    const QString text = rawText.trimmed();
+    const QString lower = text.toLower();
+    const QString name = QString::fromStdString(address.toString());
+    if (isDiscrete(address.type)) {
+        if (lower == QLatin1String("1") || lower == QLatin1String("on"))
+            return 1u;
+        if (lower == QLatin1String("0") || lower == QLatin1String("off"))
+            return 0u;
+        *error = QStringLiteral("%1 is a discrete: write 0, 1, on or off, not \"%2\".").arg(name, text);
+        return std::nullopt;
+    }
+    const bool wide = isDoubleWord(address.type);
+    const qint64 maxUnsigned = wide ? 0xFFFFFFFFLL : 0xFFFFLL;
+    const qint64 minSigned = wide ? -2147483648LL : -32768LL;
+    bool ok = false;
+    qint64 v = 0;
+    if (lower.startsWith(QLatin1String("0x"))) {
+        const qulonglong u = lower.mid(2).toULongLong(&ok, 16);
+        ok = ok && !lower.mid(2).isEmpty() && u <= static_cast<qulonglong>(maxUnsigned);
+        v = static_cast<qint64>(u);
+    } else {
+        v = text.toLongLong(&ok, 10);
+        ok = ok && v >= minSigned && v <= maxUnsigned;
+    }
+    if (!ok) {
+        *error = QStringLiteral("%1 is a %2-bit register: give a value %3..%4 or 0x-hex, not \"%5\".")
+                     .arg(name)
+                     .arg(wide ? 32 : 16)
+                     .arg(minSigned)
+                     .arg(maxUnsigned)
+                     .arg(text);
+        return std::nullopt;
+    }
+    // Negative values go out as two's complement of the element's width.
+    return static_cast<std::uint32_t>(static_cast<quint64>(v) & static_cast<quint64>(maxUnsigned));
+}
+
+QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error)
+{
+    QString t = text.trimmed();
+    bool hex = forceHex;
+    if (!forceAscii && !forceHex) {
+        static const QRegularExpression pairs(QStringLiteral("^[0-9A-Fa-f]{2}(\\s+[0-9A-Fa-f]{2})+$"));
+        if (pairs.match(t).hasMatch())
+            hex = true;
+        else if (t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
+                 || t.startsWith(QLatin1String("hex:"), Qt::CaseInsensitive)) {
+            hex = true;
+            t = t.mid(t.indexOf(QRegularExpression(QStringLiteral("[:xX]"))) + 1);
+        }
+    }
+    if (hex) {
+        QString digits = t;
+        digits.remove(QRegularExpression(QStringLiteral("\\s")));
+        static const QRegularExpression hexOnly(QStringLiteral("^([0-9A-Fa-f]{2})+$"));
+        if (!hexOnly.match(digits).hasMatch()) {
+            *error = QStringLiteral("\"%1\" is not hex bytes: write pairs of hex digits like \"01 40\".").arg(text);
+            return {};
+        }
+        return QByteArray::fromHex(digits.toLatin1());
+    }
+    for (const QChar c : t) {
+        if (c.unicode() < 0x20 || c.unicode() > 0x7E) {
+            *error = QStringLiteral("\"%1\" has characters that are not printable ASCII: send such bytes as hex.")
+                         .arg(text);
+            return {};
+        }
+    }
+    if (t.isEmpty())
+        *error = QStringLiteral("raw needs the bytes to send.");
+    return t.toLatin1();
+}
+
+CliParseResult parseCommandLine(const QStringList &arguments)
+{
+    CliOptions o;
+    QStringList positional;
+    QString tcp, udp, serial, protocol, baud, parity, data, stop;
+    bool linkCount = false;
+    int links = 0;
+    bool forceHex = false, forceAscii = false;
+    bool countGiven = false, intervalGiven = false, cyclesGiven = false, frameGiven = false;
+    QString countText, intervalText, cyclesText, stationText, timeoutText, retriesText;
+    auto fail = [](const QString &message) { return CliParseResult{std::nullopt, message}; };
+
+    const QStringList valued = {QStringLiteral("tcp"), QStringLiteral("udp"), QStringLiteral("serial"),
+                                QStringLiteral("baud"), QStringLiteral("parity"), QStringLiteral("data"),
+                                QStringLiteral("stop"), QStringLiteral("protocol"), QStringLiteral("station"),
+                                QStringLiteral("timeout"), QStringLiteral("retries"), QStringLiteral("count"),
+                                QStringLiteral("interval"), QStringLiteral("cycles")};
+    bool onlyPositional = false;
+    for (qsizetype i = 0; i < arguments.size(); ++i) {
+        const QString &arg = arguments.at(i);
+        if (onlyPositional || !arg.startsWith(QLatin1String("--"))) {
+            if (!onlyPositional && (arg == QLatin1String("-h")))
+                o.help = true;
+            else if (!onlyPositional && (arg == QLatin1String("-v")))
+                o.version = true;
+            else
+                positional << arg;
+            continue;
+        }
+        if (arg == QLatin1String("--then")) {
+            positional << QStringLiteral("\x01then");
+            continue;
+        }
+        if (arg == QLatin1String("--")) {
+            onlyPositional = true;
+            continue;
+        }
+        QString name = arg.mid(2);
+        QString value;
+        bool hasValue = false;
+        if (const qsizetype eq = name.indexOf(QLatin1Char('=')); eq >= 0) {
+            value = name.mid(eq + 1);
+            name = name.left(eq);
+            hasValue = true;
+        }
+        if (valued.contains(name)) {
+            if (!hasValue) {
+                if (i + 1 >= arguments.size())
+                    return fail(QStringLiteral("--%1 needs a value.").arg(name));
+                value = arguments.at(++i);
+            }
+            if (name == QLatin1String("tcp")) { tcp = value; ++links; }
+            else if (name == QLatin1String("udp")) { udp = value; ++links; }
+            else if (name == QLatin1String("serial")) { serial = value; ++links; }
+            else if (name == QLatin1String("baud")) baud = value;
+            else if (name == QLatin1String("parity")) parity = value;
+            else if (name == QLatin1String("data")) data = value;
+            else if (name == QLatin1String("stop")) stop = value;
+            else if (name == QLatin1String("protocol")) protocol = value;
+            else if (name == QLatin1String("station")) stationText = value;
+            else if (name == QLatin1String("timeout")) timeoutText = value;
+            else if (name == QLatin1String("retries")) retriesText = value;
+            else if (name == QLatin1String("count")) { countText = value; countGiven = true; }
+            else if (name == QLatin1String("interval")) { intervalText = value; intervalGiven = true; }
+            else if (name == QLatin1String("cycles")) { cyclesText = value; cyclesGiven = true; }
+            continue;
+        }
+        if (hasValue)
+            return fail(QStringLiteral("--%1 takes no value.").arg(name));
+        if (name == QLatin1String("help")) o.help = true;
+        else if (name == QLatin1String("version")) o.version = true;
+        else if (name == QLatin1String("sim")) { o.sim = true; linkCount = true; }
+        else if (name == QLatin1String("json")) o.format = OutputFormat::Json;
+        else if (name == QLatin1String("csv")) o.format = OutputFormat::Csv;
+        else if (name == QLatin1String("read-only")) o.readOnly = true;
+        else if (name == QLatin1String("frame")) frameGiven = true;
+        else if (name == QLatin1String("hex")) forceHex = true;
+        else if (name == QLatin1String("ascii")) forceAscii = true;
+        else
+            return fail(QStringLiteral("Unknown option --%1 (see --help).").arg(name));
+    }
+    if (o.help || o.version)
+        return {o, {}};
+
+    // The link.
+    if (links + (linkCount ? 1 : 0) == 0)
+        return fail(QStringLiteral("No link given: use --tcp HOST[:PORT], --udp HOST[:PORT], --serial DEV or --sim."));
+    if (links + (linkCount ? 1 : 0) > 1)
+        return fail(QStringLiteral("Give only one of --tcp, --udp, --serial and --sim."));
+    if (serial.isEmpty() && !(baud.isEmpty() && parity.isEmpty() && data.isEmpty() && stop.isEmpty()))
+        return fail(QStringLiteral("--baud, --parity, --data and --stop only apply to --serial."));
+    if (!tcp.isEmpty() || !udp.isEmpty()) {
+        QString host;
+        quint16 port = 500;
+        const QString &text = tcp.isEmpty() ? udp : tcp;
+        if (!parseHostPort(text, &host, &port))
+            return fail(QStringLiteral("--%1 needs HOST or HOST:PORT (port 1..65535), not \"%2\".")
+                            .arg(tcp.isEmpty() ? QStringLiteral("udp") : QStringLiteral("tcp"), text));
+        o.link = tcp.isEmpty() ? LinkSettings::udp(host, port) : LinkSettings::tcp(host, port);
+    } else if (!serial.isEmpty()) {
+        o.link = LinkSettings::serial(serial);
+        qint64 v = 0;
+        if (!baud.isEmpty()) {
+            if (!parseInt(baud, 50, 10000000, &v))
+                return fail(QStringLiteral("--baud needs a speed like 9600, not \"%1\".").arg(baud));
+            o.link.baudRate = static_cast<qint32>(v);
+        }
+        if (!parity.isEmpty()) {
+            const QString p = parity.toUpper();
+            if (p == QLatin1String("N") || p == QLatin1String("NONE")) o.link.parity = LinkSettings::Parity::None;
+            else if (p == QLatin1String("E") || p == QLatin1String("EVEN")) o.link.parity = LinkSettings::Parity::Even;
+            else if (p == QLatin1String("O") || p == QLatin1String("ODD")) o.link.parity = LinkSettings::Parity::Odd;
+            else
+                return fail(QStringLiteral("--parity takes N, E or O, not \"%1\".").arg(parity));
+        }
+        if (!data.isEmpty()) {
+            if (!parseInt(data, 7, 8, &v))
+                return fail(QStringLiteral("--data takes 7 or 8, not \"%1\".").arg(data));
+            o.link.dataBits = static_cast<int>(v);
+        }
+        if (!stop.isEmpty()) {
+            if (!parseInt(stop, 1, 2, &v))
+                return fail(QStringLiteral("--stop takes 1 or 2, not \"%1\".").arg(stop));
+            o.link.stopBits = static_cast<int>(v);
+        }
+    }
+    o.link.autoReconnect = false; // a script wants the failure, not a retry loop
+    o.link.protocol = o.sim ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Auto;
+    if (!protocol.isEmpty()) {
+        const QString p = protocol.toLower();
+        o.protocolGiven = true;
+        if (p == QLatin1String("facon")) o.link.protocol = LinkSettings::ProtocolChoice::Facon;
+        else if (p == QLatin1String("binary")) o.link.protocol = LinkSettings::ProtocolChoice::Binary;
+        else if (p == QLatin1String("auto")) o.link.protocol = LinkSettings::ProtocolChoice::Auto;
+        else
+            return fail(QStringLiteral("--protocol takes facon, binary or auto, not \"%1\".").arg(protocol));
+    }
+    qint64 v = 0;
+    if (!stationText.isEmpty()) {
+        if (!parseInt(stationText, 0, Limits::maxStation, &v))
+            return fail(QStringLiteral("--station takes 0..254, not \"%1\".").arg(stationText));
+        o.station = static_cast<std::uint8_t>(v);
+    }
+    if (!timeoutText.isEmpty()) {
+        if (!parseInt(timeoutText, 10, 60000, &v))
+            return fail(QStringLiteral("--timeout takes 10..60000 ms, not \"%1\".").arg(timeoutText));
+        o.link.timeoutMs = static_cast<int>(v);
+        o.timeoutGiven = true;
+    }
+    if (!retriesText.isEmpty()) {
+        if (!parseInt(retriesText, 0, 10, &v))
+            return fail(QStringLiteral("--retries takes 0..10, not \"%1\".").arg(retriesText));
+        o.link.retries = static_cast<int>(v);
+    }
+
+    // The commands, separated by --then.
+    if (positional.isEmpty())
+        return fail(QStringLiteral("No command given (status, run, stop, read, write, set, reset, enable, disable, "
+                                   "forced, loopback, monitor, raw, scan)."));
+    QList<QStringList> parts{QStringList{}};
+    for (const QString &p : positional) {
+        if (p == QLatin1String("\x01then"))
+            parts << QStringList{};
+        else
+            parts.last() << p;
+    }
+    QStringList names;
+    for (const QStringList &part : parts) {
+        if (part.isEmpty())
+            return fail(QStringLiteral("--then needs a command on both sides."));
+        names << part.first().toLower();
+    }
+    auto uses = [&](const char *name) { return names.contains(QLatin1String(name)); };
+    if (countGiven && !uses("loopback"))
+        return fail(QStringLiteral("--count only applies to loopback."));
+    if ((intervalGiven || cyclesGiven) && !uses("monitor"))
+        return fail(QStringLiteral("--interval and --cycles only apply to monitor."));
+    if ((frameGiven || forceHex || forceAscii) && !uses("raw"))
+        return fail(QStringLiteral("--frame, --hex and --ascii only apply to raw."));
+    if (countGiven) {
+        if (!parseInt(countText, 1, 100000, &v))
+            return fail(QStringLiteral("--count takes 1..100000, not \"%1\".").arg(countText));
+        o.loopbackCount = static_cast<int>(v);
+    }
+    if (intervalGiven) {
+        if (!parseInt(intervalText, WatchList::MinIntervalMs, WatchList::MaxIntervalMs, &v))
+            return fail(QStringLiteral("--interval takes %1..%2 ms, not \"%3\".")
+                            .arg(WatchList::MinIntervalMs)
+                            .arg(WatchList::MaxIntervalMs)
+                            .arg(intervalText));
+        o.intervalMs = static_cast<int>(v);
+    }
+    if (cyclesGiven) {
+        if (!parseInt(cyclesText, 1, 100000000, &v))
+            return fail(QStringLiteral("--cycles takes a positive number, not \"%1\".").arg(cyclesText));
+        o.cycles = static_cast<int>(v);
+    }
+    for (qsizetype n = 0; n < parts.size(); ++n) {
+        CliStep step;
+        const QString error = parseStep(parts.at(n), frameGiven, forceHex, forceAscii, &step);
+        if (!error.isEmpty())
+            return fail(error);
+        const bool answerNeeded = step.command == CliCommand::ShowStatus || step.command == CliCommand::Read
+                                  || step.command == CliCommand::Forced || step.command == CliCommand::Loopback
+                                  || step.command == CliCommand::Monitor;
+        if (o.station == Limits::broadcastStation && answerNeeded)
+            return fail(QStringLiteral("%1 needs an answer: station 0 is broadcast, PLCs do not answer it "
+                                       "(use --station 1..254).").arg(step.name));
+        if (step.command == CliCommand::Monitor && o.cycles == 0 && n + 1 < parts.size())
+            return fail(QStringLiteral("monitor before --then needs --cycles: it would never end."));
+        o.steps << step;
+    }
+    return {o, {}};
+}
+
+} // namespace Fatek

@@ -1,0 +1,769 @@
+#include "clirunner.h"
+
+#include "modelprofile.h"
+#include "plcstatus.h"
+#include "simserver.h"
+#include "simulatedplc.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QJsonArray>
+
+#include <algorithm>
+#include <cmath>
+
+namespace Fatek {
+
+namespace {
+
+QString hexBytes(const QByteArray &bytes)
+{
+    return QString::fromLatin1(bytes.toHex(' ').toUpper());
+}
+
+QString hexBytes(const Bytes &bytes)
+{
+    return hexBytes(QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size())));
+}
+
+// Printable view of an answer: control characters as <02>, <03> ...
+QString asciiView(const QByteArray &bytes)
+{
+    QString text;
+    for (const char c : bytes) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u <= 0x7E)
+            text += QLatin1Char(c);
+        else
+            text += QStringLiteral("<%1>").arg(u, 2, 16, QLatin1Char('0')).toUpper();
+    }
+    return text;
+}
+
+QString addressText(const Address &address)
+{
+    return QString::fromStdString(address.toString());
+}
+
+QString valueHex(std::uint32_t value, const Address &address)
+{
+    if (isDiscrete(address.type))
+        return {};
+    const int digits = isDoubleWord(address.type) ? 8 : 4;
+    return QStringLiteral("0x%1").arg(value, digits, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"),
+                                                                                            QLatin1String("0x"));
+}
+
+QString yesNo(bool b)
+{
+    return b ? QStringLiteral("yes") : QStringLiteral("no");
+}
+
+QString ms(double v)
+{
+    return QString::number(v, 'f', 2);
+}
+
+} // namespace
+
+CliRunner::CliRunner(const CliOptions &options, QObject *parent)
+    : QObject(parent)
+    , m_options(options)
+    , m_out(options.format)
+{
+    m_watchdog.setSingleShot(true);
+    connect(&m_watchdog, &QTimer::timeout, this, [this] {
+        m_out.error(QStringLiteral("No result within %1 s: the link stalled.").arg(m_watchdog.interval() / 1000.0),
+                    ExitCode::Link);
+        finish(ExitCode::Link);
+    });
+}
+
+CliRunner::~CliRunner()
+{
+    // The scanner cancels through the session: drop it first.
+    m_scanner.reset();
+    m_session.reset();
+}
+
+bool CliRunner::startSimulator(QString *error)
+{
+    m_plc = std::make_unique<SimulatedPlc>(ModelProfile::fbs());
+    m_plc->setRunning(true);
+    m_server = std::make_unique<SimServer>(m_plc.get());
+    m_server->setStation(m_options.station == 0 ? std::uint8_t{1} : m_options.station);
+    m_server->setBindAddress(QHostAddress(QHostAddress::LocalHost));
+    m_server->setDemoLadder(true);
+    if (!m_server->listenTcp(0, error))
+        return false;
+    const LinkSettings policy = m_options.link;
+    m_options.link = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort(), policy.protocol);
+    m_options.link.timeoutMs = policy.timeoutMs;
+    m_options.link.retries = policy.retries;
+    m_options.link.autoReconnect = false;
+    return true;
+}
+
+void CliRunner::start()
+{
+    registerSessionMetaTypes();
+    if (m_options.sim) {
+        QString error;
+        if (!startSimulator(&error)) {
+            m_out.error(QStringLiteral("The embedded simulator could not listen: %1").arg(error), ExitCode::Internal);
+            finish(ExitCode::Internal);
+            return;
+        }
+    }
+    if (const QString problem = m_options.link.validate(); !problem.isEmpty()) {
+        m_out.error(problem, ExitCode::Usage);
+        finish(ExitCode::Usage);
+        return;
+    }
+    m_session = std::make_unique<Session>(m_options.link);
+    m_session->setReadOnly(m_options.readOnly);
+    connect(m_session.get(), &Session::linkStateChanged, this, &CliRunner::onLinkState);
+    connect(m_session.get(), &Session::finished, this, &CliRunner::onFinished);
+    connect(m_session.get(), &Session::values, this, &CliRunner::onValues);
+    armWatchdog(m_options.link.connectTimeoutMs + 2000);
+    m_session->open();
+}
+
+void CliRunner::onLinkState(LinkState state, const QString &reason)
+{
+    if (m_done)
+        return;
+    if (state == LinkState::Connected) {
+        if (!m_dispatched) {
+            m_dispatched = true;
+            dispatch();
+        }
+        return;
+    }
+    if (state == LinkState::Lost || (state == LinkState::Closed && !m_dispatched)) {
+        // Requests in flight finish with LinkError and report it themselves; polling and a link
+        // that never came up have nobody else to tell.
+        if (!m_dispatched || m_monitoring || m_handlers.isEmpty()) {
+            m_out.error(QStringLiteral("No connection to %1: %2").arg(m_options.link.toString(), reason),
+                        ExitCode::Link);
+            finish(ExitCode::Link);
+        }
+    }
+}
+
+int CliRunner::requestBudgetMs() const
+{
+    // Every attempt may time out; an undetected protocol is probed in both protocols first.
+    const int attempts = m_options.link.retries + 1;
+    const bool probing = m_options.link.protocol == LinkSettings::ProtocolChoice::Auto
+                         && !m_session->isProtocolKnown();
+    return m_options.link.timeoutMs * attempts * (probing ? 3 : 1) + 3000;
+}
+
+void CliRunner::armWatchdog(int ms)
+{
+    m_watchdog.start(ms);
+}
+
+void CliRunner::submit(const Request &request, Handler handler)
+{
+    const quint64 id = m_session->submit(request);
+    m_handlers.insert(id, std::move(handler));
+    armWatchdog(requestBudgetMs());
+}
+
+void CliRunner::onFinished(quint64 id, const SessionResult &result)
+{
+    if (m_done)
+        return;
+    auto it = m_handlers.find(id);
+    if (it == m_handlers.end())
+        return; // the scanner's requests
+    Handler handler = std::move(it.value());
+    m_handlers.erase(it);
+    if (m_handlers.isEmpty())
+        m_watchdog.stop();
+    handler(result);
+}
+
+int CliRunner::exitCodeFor(ErrorKind kind)
+{
+    switch (kind) {
+    case ErrorKind::PlcError:
+        return ExitCode::Plc;
+    case ErrorKind::ReadOnly:
+        return ExitCode::ReadOnly;
+    case ErrorKind::InvalidAddress:
+    case ErrorKind::LimitExceeded:
+    case ErrorKind::InvalidRequest:
+    case ErrorKind::Unsupported:
+        return ExitCode::Usage;
+    default:
+        return ExitCode::Link;
+    }
+}
+
+void CliRunner::failWith(const SessionResult &result)
+{
+    const int code = exitCodeFor(result.errorKind());
+    QJsonObject extra;
+    extra.insert(QStringLiteral("kind"), QString::fromLatin1(errorKindName(result.errorKind()).data(),
+                                                             static_cast<qsizetype>(errorKindName(result.errorKind()).size())));
+    if (result.errorKind() == ErrorKind::PlcError)
+        extra.insert(QStringLiteral("plcError"), QString::number(result.error().plcCode, 16).toUpper());
+    QString text = result.errorText();
+    if (text.isEmpty())
+        text = QString::fromStdString(result.error().message);
+    m_out.error(text, code, extra);
+    finish(code);
+}
+
+void CliRunner::finish(int exitCode)
+{
+    if (m_done)
+        return;
+    m_done = true;
+    m_watchdog.stop();
+    if (m_scanner)
+        m_scanner->cancel();
+    if (m_session)
+        m_session->setWatchList({});
+    Q_EMIT done(exitCode);
+}
+
+QString CliRunner::stationText() const
+{
+    return QString::number(m_options.station);
+}
+
+const CliStep &CliRunner::step() const
+{
+    return m_options.steps.at(m_stepIndex);
+}
+
+void CliRunner::stepDone()
+{
+    if (m_done)
+        return;
+    if (m_stepIndex + 1 >= m_options.steps.size())
+        return finish(ExitCode::Ok);
+    ++m_stepIndex;
+    dispatch();
+}
+
+void CliRunner::dispatch()
+{
+    switch (step().command) {
+    case CliCommand::ShowStatus: runStatus(); break;
+    case CliCommand::Run: runRunStop(true); break;
+    case CliCommand::Stop: runRunStop(false); break;
+    case CliCommand::Read: runRead(); break;
+    case CliCommand::Write: runWrite(); break;
+    case CliCommand::Control: runControl(); break;
+    case CliCommand::Forced: runForced(); break;
+    case CliCommand::Loopback: runLoopback(); break;
+    case CliCommand::Monitor: runMonitor(); break;
+    case CliCommand::Raw: runRaw(); break;
+    case CliCommand::Scan: runScan(); break;
+    }
+}
+
+// --- status ------------------------------------------------------------------------------------
+
+void CliRunner::runStatus()
+{
+    submit(Request::briefStatus(m_options.station), [this](const SessionResult &brief) {
+        if (!brief.ok())
+            return failWith(brief);
+        const Bytes briefBytes = brief.response().data;
+        submit(Request::detailStatus(m_options.station), [this, briefBytes](const SessionResult &detail) {
+            if (!detail.ok() && exitCodeFor(detail.errorKind()) == ExitCode::Link)
+                return failWith(detail);
+            const std::uint8_t status1 = briefBytes.empty() ? 0 : briefBytes.front();
+            const PlcStatus s = PlcStatus::fromStatus1(status1);
+            OutputBlock block;
+            block.columns = {QStringLiteral("field"), QStringLiteral("value")};
+            block.tableHeader = false;
+            QJsonObject json;
+            auto add = [&](const QString &label, const QString &key, const QJsonValue &jsonValue, const QString &text) {
+                block.rows << QStringList{label, text};
+                json.insert(key, jsonValue);
+            };
+            auto flag = [&](const QString &label, const QString &key, bool value) {
+                add(label, key, value, yesNo(value));
+            };
+            const auto proto = protocolName(m_session->protocol());
+            add(QStringLiteral("station"), QStringLiteral("station"), m_options.station, stationText());
+            add(QStringLiteral("protocol"), QStringLiteral("protocol"),
+                QString::fromLatin1(proto.data(), static_cast<qsizetype>(proto.size())),
+                QString::fromLatin1(proto.data(), static_cast<qsizetype>(proto.size())));
+            add(QStringLiteral("mode"), QStringLiteral("mode"), s.running ? QStringLiteral("RUN") : QStringLiteral("STOP"),
+                s.running ? QStringLiteral("RUN") : QStringLiteral("STOP"));
+            add(QStringLiteral("STATUS1"), QStringLiteral("status1"), status1,
+                QStringLiteral("0x%1").arg(status1, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x")));
+            add(QStringLiteral("status bytes"), QStringLiteral("statusBytes"), hexBytes(briefBytes), hexBytes(briefBytes));
+            flag(QStringLiteral("running"), QStringLiteral("running"), s.running);
+            flag(QStringLiteral("battery low"), QStringLiteral("batteryLow"), s.batteryLow);
+            flag(QStringLiteral("ladder checksum error"), QStringLiteral("ladderChecksumError"), s.ladderChecksumError);
+            flag(QStringLiteral("memory pack"), QStringLiteral("memoryPack"), s.memoryPack);
+            flag(QStringLiteral("watchdog error"), QStringLiteral("watchdogError"), s.watchdogError);
+            flag(QStringLiteral("ID set"), QStringLiteral("idSet"), s.idSet);
+            flag(QStringLiteral("emergency stop"), QStringLiteral("emergencyStop"), s.emergencyStop);
+            if (detail.ok()) {
+                const DetailStatus d = DetailStatus::decode(detail.response().data);
+                QJsonObject dj;
+                block.rows << QStringList{QStringLiteral("detail"), QString::fromStdString(d.summary())};
+                dj.insert(QStringLiteral("summary"), QString::fromStdString(d.summary()));
+                dj.insert(QStringLiteral("raw"), hexBytes(d.raw));
+                auto opt8 = [&](const QString &label, const QString &key, const std::optional<std::uint8_t> &v) {
+                    if (!v)
+                        return;
+                    block.rows << QStringList{label, QString::number(*v)};
+                    dj.insert(key, *v);
+                };
+                auto opt16 = [&](const QString &label, const QString &key, const std::optional<std::uint16_t> &v) {
+                    if (!v)
+                        return;
+                    block.rows << QStringList{label, QString::number(*v)};
+                    dj.insert(key, *v);
+                };
+                opt8(QStringLiteral("main unit type"), QStringLiteral("mainUnitType"), d.mainUnitType);
+                opt8(QStringLiteral("I/O points code"), QStringLiteral("ioPointsCode"), d.ioPointsCode);
+                if (d.osVersion) {
+                    const QString os = QStringLiteral("V%1.%2").arg(*d.osVersion >> 4).arg(*d.osVersion & 0xF);
+                    block.rows << QStringList{QStringLiteral("OS version"), os};
+                    dj.insert(QStringLiteral("osVersion"), os);
+                }
+                opt16(QStringLiteral("program words"), QStringLiteral("ladderSize"), d.ladderSize);
+                opt16(QStringLiteral("X points"), QStringLiteral("discreteInputs"), d.discreteInputs);
+                opt16(QStringLiteral("Y points"), QStringLiteral("discreteOutputs"), d.discreteOutputs);
+                opt16(QStringLiteral("analog inputs"), QStringLiteral("analogInputs"), d.analogInputs);
+                opt16(QStringLiteral("analog outputs"), QStringLiteral("analogOutputs"), d.analogOutputs);
+                opt16(QStringLiteral("M relays"), QStringLiteral("mRelays"), d.mRelays);
+                opt16(QStringLiteral("S relays"), QStringLiteral("sRelays"), d.sRelays);
+                opt16(QStringLiteral("L relays"), QStringLiteral("lRelays"), d.lRelays);
+                opt16(QStringLiteral("R registers"), QStringLiteral("rRegisters"), d.rRegisters);
+                opt16(QStringLiteral("D registers"), QStringLiteral("dRegisters"), d.dRegisters);
+                opt16(QStringLiteral("timers"), QStringLiteral("timers"), d.timers);
+                opt16(QStringLiteral("counters"), QStringLiteral("counters"), d.counters);
+                json.insert(QStringLiteral("detail"), dj);
+            } else {
+                // Some PLCs refuse 53: the brief status still stands.
+                block.rows << QStringList{QStringLiteral("detail"),
+                                          QStringLiteral("unavailable (%1)").arg(detail.errorText())};
+                json.insert(QStringLiteral("detailError"), detail.errorText());
+            }
+            block.json << json;
+            m_out.print(block);
+            stepDone();
+        });
+    });
+}
+
+// --- run / stop ----------------------------------------------------------------------------------
+
+void CliRunner::runRunStop(bool run)
+{
+    submit(Request::runStop(m_options.station, run), [this, run](const SessionResult &r) {
+        if (!r.ok())
+            return failWith(r);
+        const QString mode = run ? QStringLiteral("RUN") : QStringLiteral("STOP");
+        OutputBlock block;
+        block.columns = {QStringLiteral("station"), QStringLiteral("command"), QStringLiteral("result")};
+        block.rows << QStringList{stationText(), mode, QStringLiteral("accepted")};
+        QJsonObject json;
+        json.insert(QStringLiteral("station"), m_options.station);
+        json.insert(QStringLiteral("command"), run ? QStringLiteral("run") : QStringLiteral("stop"));
+        json.insert(QStringLiteral("ok"), true);
+        block.json << json;
+        m_out.print(block);
+        stepDone();
+    });
+}
+
+// --- read / write ----------------------------------------------------------------------------------
+
+void CliRunner::runRead()
+{
+    const Address start = step().addresses.first();
+    Request request;
+    if (step().mixed)
+        request = Request::mixedRead(m_options.station,
+                                     std::vector<Address>(step().addresses.begin(), step().addresses.end()));
+    else if (isDiscrete(start.type))
+        request = Request::readDiscretes(m_options.station, start, step().count);
+    else
+        request = Request::readRegisters(m_options.station, start, step().count);
+    submit(request, [this, start](const SessionResult &r) {
+        if (!r.ok())
+            return failWith(r);
+        const std::vector<std::uint32_t> &values = r.response().values;
+        OutputBlock block;
+        // Discretes have no hex view worth a column.
+        const bool bitsOnly = !step().mixed && isDiscrete(start.type);
+        block.columns = {QStringLiteral("address"), QStringLiteral("value"), QStringLiteral("hex")};
+        if (bitsOnly)
+            block.columns.removeLast();
+        if (m_options.format == OutputFormat::Csv)
+            block.columns = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("value")};
+        QJsonArray all;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const Address a = step().mixed ? step().addresses.at(static_cast<qsizetype>(i))
+                                              : start.advanced(static_cast<std::uint32_t>(i));
+            const QString v = QString::number(values[i]);
+            if (m_options.format == OutputFormat::Csv)
+                block.rows << QStringList{stationText(), addressText(a), v};
+            else
+                block.rows << (bitsOnly ? QStringList{addressText(a), v} : QStringList{addressText(a), v, valueHex(values[i], a)});
+            all.append(static_cast<qint64>(values[i]));
+            if (step().mixed) {
+                QJsonObject json;
+                json.insert(QStringLiteral("address"), addressText(a));
+                json.insert(QStringLiteral("station"), m_options.station);
+                json.insert(QStringLiteral("values"), QJsonArray{static_cast<qint64>(values[i])});
+                block.json << json;
+            }
+        }
+        if (!step().mixed) {
+            QJsonObject json;
+            json.insert(QStringLiteral("address"), addressText(start));
+            json.insert(QStringLiteral("station"), m_options.station);
+            json.insert(QStringLiteral("values"), all);
+            block.json << json;
+        }
+        m_out.print(block);
+        stepDone();
+    });
+}
+
+void CliRunner::runWrite()
+{
+    const Address start = step().addresses.first();
+    const Request request = isDiscrete(start.type)
+                                ? Request::writeDiscretes(m_options.station, start, step().values)
+                                : Request::writeRegisters(m_options.station, start, step().values);
+    submit(request, [this, start](const SessionResult &r) {
+        if (!r.ok())
+            return failWith(r);
+        OutputBlock block;
+        block.columns = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("written")};
+        QJsonArray all;
+        for (std::size_t i = 0; i < step().values.size(); ++i) {
+            const Address a = start.advanced(static_cast<std::uint32_t>(i));
+            block.rows << QStringList{stationText(), addressText(a), QString::number(step().values[i])};
+            all.append(static_cast<qint64>(step().values[i]));
+        }
+        QJsonObject json;
+        json.insert(QStringLiteral("address"), addressText(start));
+        json.insert(QStringLiteral("station"), m_options.station);
+        json.insert(QStringLiteral("written"), all);
+        block.json << json;
+        m_out.print(block);
+        stepDone();
+    });
+}
+
+void CliRunner::runControl()
+{
+    const Address a = step().addresses.first();
+    const auto op = static_cast<DiscreteOp>(step().controlOp);
+    submit(Request::discreteControl(m_options.station, op, a), [this, a, op](const SessionResult &r) {
+        if (!r.ok())
+            return failWith(r);
+        const auto name = discreteOpName(op);
+        const QString action = QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
+        OutputBlock block;
+        block.columns = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("action")};
+        block.rows << QStringList{stationText(), addressText(a), action};
+        QJsonObject json;
+        json.insert(QStringLiteral("address"), addressText(a));
+        json.insert(QStringLiteral("station"), m_options.station);
+        json.insert(QStringLiteral("action"), action);
+        json.insert(QStringLiteral("ok"), true);
+        block.json << json;
+        m_out.print(block);
+        stepDone();
+    });
+}
+
+void CliRunner::runForced()
+{
+    const Address start = step().addresses.first();
+    submit(Request::readEnableFlags(m_options.station, start, step().count), [this, start](const SessionResult &r) {
+        if (!r.ok())
+            return failWith(r);
+        OutputBlock block;
+        block.columns = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("forced")};
+        QJsonArray all;
+        const auto &values = r.response().values;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const Address a = start.advanced(static_cast<std::uint32_t>(i));
+            block.rows << QStringList{stationText(), addressText(a),
+                                      m_options.format == OutputFormat::Table
+                                          ? (values[i] ? QStringLiteral("disabled (forced)") : QStringLiteral("enabled"))
+                                          : QString::number(values[i])};
+            all.append(static_cast<qint64>(values[i]));
+        }
+        QJsonObject json;
+        json.insert(QStringLiteral("address"), addressText(start));
+        json.insert(QStringLiteral("station"), m_options.station);
+        json.insert(QStringLiteral("forced"), all);
+        block.json << json;
+        m_out.print(block);
+        stepDone();
+    });
+}
+
+// --- loopback --------------------------------------------------------------------------------------
+
+void CliRunner::runLoopback()
+{
+    m_loopSent = m_loopOk = m_loopMismatches = m_loopTimeouts = 0;
+    m_loopRtts.clear();
+    m_loopLastError.clear();
+    loopbackNext();
+}
+
+void CliRunner::loopbackNext()
+{
+    if (m_loopSent >= m_options.loopbackCount) {
+        OutputBlock block;
+        block.columns = {QStringLiteral("field"), QStringLiteral("value")};
+        block.tableHeader = false;
+        double min = 0, max = 0, mean = 0;
+        if (!m_loopRtts.isEmpty()) {
+            min = *std::min_element(m_loopRtts.begin(), m_loopRtts.end());
+            max = *std::max_element(m_loopRtts.begin(), m_loopRtts.end());
+            for (double v : m_loopRtts)
+                mean += v;
+            mean /= static_cast<double>(m_loopRtts.size());
+        }
+        block.rows << QStringList{QStringLiteral("station"), stationText()}
+                   << QStringList{QStringLiteral("sent"), QString::number(m_loopSent)}
+                   << QStringList{QStringLiteral("ok"), QString::number(m_loopOk)}
+                   << QStringList{QStringLiteral("mismatches"), QString::number(m_loopMismatches)}
+                   << QStringList{QStringLiteral("timeouts"), QString::number(m_loopTimeouts)}
+                   << QStringList{QStringLiteral("min ms"), ms(min)}
+                   << QStringList{QStringLiteral("mean ms"), ms(mean)}
+                   << QStringList{QStringLiteral("max ms"), ms(max)};
+        QJsonObject json;
+        json.insert(QStringLiteral("station"), m_options.station);
+        json.insert(QStringLiteral("sent"), m_loopSent);
+        json.insert(QStringLiteral("ok"), m_loopOk);
+        json.insert(QStringLiteral("mismatches"), m_loopMismatches);
+        json.insert(QStringLiteral("timeouts"), m_loopTimeouts);
+        // Microsecond resolution is all a round trip measurement can claim.
+        auto rounded = [](double v) { return std::round(v * 1000.0) / 1000.0; };
+        json.insert(QStringLiteral("minMs"), rounded(min));
+        json.insert(QStringLiteral("meanMs"), rounded(mean));
+        json.insert(QStringLiteral("maxMs"), rounded(max));
+        block.json << json;
+        m_out.print(block);
+        if (m_loopOk == m_loopSent)
+            return stepDone();
+        m_out.note(QStringLiteral("%1 of %2 round trips failed%3")
+                       .arg(m_loopSent - m_loopOk)
+                       .arg(m_loopSent)
+                       .arg(m_loopLastError.isEmpty() ? QString() : QStringLiteral(" (last: %1)").arg(m_loopLastError)));
+        return finish(ExitCode::Link);
+    }
+    ++m_loopSent;
+    const Bytes data(step().loopbackData.begin(), step().loopbackData.end());
+    submit(Request::loopback(m_options.station, data), [this, data](const SessionResult &r) {
+        if (r.ok()) {
+            if (r.response().data == data) {
+                ++m_loopOk;
+                m_loopRtts << m_session->statistics().total.rttLastMs;
+            } else {
+                ++m_loopMismatches;
+                m_loopLastError = QStringLiteral("echo \"%1\" differs from what was sent")
+                                      .arg(QString::fromLatin1(reinterpret_cast<const char *>(r.response().data.data()),
+                                                               static_cast<qsizetype>(r.response().data.size())));
+            }
+        } else if (r.errorKind() == ErrorKind::Timeout) {
+            ++m_loopTimeouts;
+            m_loopLastError = r.errorText();
+        } else {
+            return failWith(r);
+        }
+        loopbackNext();
+    });
+}
+
+// --- monitor -----------------------------------------------------------------------------------------
+
+void CliRunner::runMonitor()
+{
+    m_cycle = 0;
+    m_staleCycles = 0;
+    m_monitorErrors = false;
+    m_monitoring = true;
+    QList<WatchEntry> entries;
+    QStringList columns{QStringLiteral("cycle"), QStringLiteral("time")};
+    QList<int> widths{5, 12};
+    for (qsizetype i = 0; i < step().addresses.size(); ++i) {
+        WatchEntry e;
+        e.id = static_cast<std::uint64_t>(i);
+        e.station = m_options.station;
+        e.address = step().addresses.at(i);
+        e.intervalMs = m_options.intervalMs;
+        entries << e;
+        columns << addressText(e.address);
+        widths << (isDoubleWord(e.address.type) ? 10 : isDiscrete(e.address.type) ? 1 : 5);
+    }
+    if (m_options.format == OutputFormat::Csv)
+        columns.insert(2, QStringLiteral("station"));
+    m_out.beginStream(columns, m_options.format == OutputFormat::Csv ? QList<int>{} : widths);
+    armWatchdog(m_options.intervalMs + requestBudgetMs() * (1 + static_cast<int>(entries.size()) / 16));
+    m_session->setWatchList(entries);
+}
+
+void CliRunner::onValues(const QList<WatchValue> &values)
+{
+    if (m_done || !m_monitoring || step().command != CliCommand::Monitor)
+        return;
+    ++m_cycle;
+    QList<const WatchValue *> byItem(step().addresses.size(), nullptr);
+    for (const WatchValue &v : values) {
+        if (v.itemId < static_cast<std::uint64_t>(byItem.size()))
+            byItem[static_cast<qsizetype>(v.itemId)] = &v;
+    }
+    const QDateTime now = QDateTime::currentDateTime();
+    QStringList cells{QString::number(m_cycle), now.toString(QStringLiteral("HH:mm:ss.zzz"))};
+    if (m_options.format == OutputFormat::Csv)
+        cells << stationText();
+    QJsonArray jsonValues, jsonAddresses;
+    bool anyGood = false;
+    QString staleReason;
+    for (qsizetype i = 0; i < byItem.size(); ++i) {
+        const WatchValue *v = byItem.at(i);
+        const QString name = addressText(step().addresses.at(i));
+        jsonAddresses.append(name);
+        if (v && v->quality == ValueQuality::Good) {
+            anyGood = true;
+            cells << QString::number(v->value);
+            jsonValues.append(static_cast<qint64>(v->value));
+            continue;
+        }
+        cells << (m_options.format == OutputFormat::Csv ? QString() : QStringLiteral("?"));
+        jsonValues.append(QJsonValue::Null);
+        const QString reason = v ? v->error : QStringLiteral("no value this cycle");
+        if (v && v->quality == ValueQuality::Error)
+            m_monitorErrors = true;
+        else
+            staleReason = reason;
+        if (!m_reported.contains(name + reason)) {
+            m_reported.insert(name + reason);
+            m_out.note(QStringLiteral("%1: %2").arg(name, reason));
+        }
+    }
+    QJsonObject json;
+    json.insert(QStringLiteral("cycle"), m_cycle);
+    json.insert(QStringLiteral("time"), now.toString(Qt::ISODateWithMs));
+    json.insert(QStringLiteral("station"), m_options.station);
+    json.insert(QStringLiteral("addresses"), jsonAddresses);
+    json.insert(QStringLiteral("values"), jsonValues);
+    m_out.streamRow(cells, json);
+
+    // Nothing read for three cycles in a row: the link is gone for practical purposes.
+    m_staleCycles = (!anyGood && !staleReason.isEmpty()) ? m_staleCycles + 1 : 0;
+    if (m_staleCycles >= 3) {
+        m_out.error(QStringLiteral("Nothing read for 3 cycles: %1").arg(staleReason), ExitCode::Link);
+        return finish(ExitCode::Link);
+    }
+    if (m_options.cycles > 0 && m_cycle >= m_options.cycles) {
+        if (m_monitorErrors)
+            m_out.note(QStringLiteral("Some elements were refused by the PLC (see above)."));
+        if (m_monitorErrors)
+            return finish(ExitCode::Plc);
+        m_session->setWatchList({});
+        m_monitoring = false;
+        return stepDone();
+    }
+    armWatchdog(m_options.intervalMs + requestBudgetMs() * (1 + static_cast<int>(step().addresses.size()) / 16));
+}
+
+// --- raw ------------------------------------------------------------------------------------------------
+
+void CliRunner::runRaw()
+{
+    auto send = [this] {
+        const quint64 before = m_session->trafficLog()->entries().isEmpty()
+                                   ? 0
+                                   : m_session->trafficLog()->entries().constLast().sequence;
+        const quint64 id = m_session->sendRaw(step().rawBytes, step().rawFrame);
+        armWatchdog(requestBudgetMs());
+        m_handlers.insert(id, [this, before](const SessionResult &r) {
+            if (!r.ok())
+                return failWith(r);
+            // What actually went out (with framing and checksum when --frame was given).
+            QByteArray sent = step().rawBytes;
+            for (const TrafficEntry &e : m_session->trafficLog()->entries(before)) {
+                if (e.direction == TrafficEntry::Direction::Out)
+                    sent = e.bytes;
+            }
+            OutputBlock block;
+            block.columns = {QStringLiteral("field"), QStringLiteral("value")};
+            block.tableHeader = false;
+            block.rows << QStringList{QStringLiteral("sent"), hexBytes(sent)}
+                       << QStringList{QStringLiteral("sent text"), asciiView(sent)}
+                       << QStringList{QStringLiteral("answer"), hexBytes(r.rawAnswer())}
+                       << QStringList{QStringLiteral("answer text"), asciiView(r.rawAnswer())};
+            QJsonObject json;
+            json.insert(QStringLiteral("sent"), hexBytes(sent));
+            json.insert(QStringLiteral("answer"), hexBytes(r.rawAnswer()));
+            json.insert(QStringLiteral("answerText"), asciiView(r.rawAnswer()));
+            block.json << json;
+            m_out.print(block);
+            stepDone();
+        });
+    };
+    if (step().rawFrame && !m_session->isProtocolKnown()) {
+        // The framing depends on the protocol: let a status query detect it first.
+        submit(Request::briefStatus(m_options.station), [this, send](const SessionResult &r) {
+            if (!r.ok())
+                return failWith(r);
+            send();
+        });
+        return;
+    }
+    send();
+}
+
+// --- scan -------------------------------------------------------------------------------------------------
+
+void CliRunner::runScan()
+{
+    m_scanner = std::make_unique<StationScanner>(m_session.get());
+    const int timeout = m_options.timeoutGiven ? m_options.link.timeoutMs : 100;
+    const int perStation = timeout * (m_options.link.protocol == LinkSettings::ProtocolChoice::Auto ? 2 : 1) + 1000;
+    connect(m_scanner.get(), &StationScanner::progress, this, [this, perStation](int, int) { armWatchdog(perStation + 2000); });
+    connect(m_scanner.get(), &StationScanner::finished, this, [this](const QList<StationScanner::Hit> &hits) {
+        if (m_done)
+            return;
+        OutputBlock block;
+        block.columns = {QStringLiteral("station"), QStringLiteral("mode"), QStringLiteral("status bytes")};
+        for (const StationScanner::Hit &hit : hits) {
+            const QString mode = hit.status.running ? QStringLiteral("RUN") : QStringLiteral("STOP");
+            block.rows << QStringList{QString::number(hit.station), mode, hexBytes(hit.statusBytes)};
+            QJsonObject json;
+            json.insert(QStringLiteral("station"), hit.station);
+            json.insert(QStringLiteral("mode"), mode);
+            json.insert(QStringLiteral("running"), hit.status.running);
+            json.insert(QStringLiteral("status1"), hit.status.toStatus1());
+            json.insert(QStringLiteral("statusBytes"), hexBytes(hit.statusBytes));
+            block.json << json;
+        }
+        if (hits.isEmpty()) {
+            m_out.error(QStringLiteral("No station answered in %1..%2.").arg(step().scanFirst).arg(step().scanLast),
+                        ExitCode::Link);
+            return finish(ExitCode::Link);
+        }
+        m_out.print(block);
+        stepDone();
+    });
+    armWatchdog(perStation + 2000);
+    m_scanner->start(step().scanFirst, step().scanLast, timeout);
+}
+
+} // namespace Fatek

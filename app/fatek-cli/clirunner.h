@@ -1,0 +1,103 @@
+#pragma once
+
+#include "clioptions.h"
+#include "clioutput.h"
+#include "request.h"
+#include "session.h"
+#include "stationscanner.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QObject>
+#include <QSet>
+#include <QTimer>
+
+#include <functional>
+#include <memory>
+
+namespace Fatek {
+
+class SimServer;
+class SimulatedPlc;
+
+// Runs one command: opens the link (or the embedded simulator), submits the command's requests to
+// a Session and reacts to its signals; done() carries the exit code. Never blocks: a watchdog
+// ends the program if the session stays silent longer than the request could possibly take.
+class CliRunner : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit CliRunner(const CliOptions &options, QObject *parent = nullptr);
+    ~CliRunner() override;
+
+    // Call once the event loop runs (done() may follow at once).
+    void start();
+
+Q_SIGNALS:
+    void done(int exitCode);
+
+private:
+    using Handler = std::function<void(const SessionResult &)>;
+
+    bool startSimulator(QString *error);
+    void onLinkState(LinkState state, const QString &reason);
+    void onFinished(quint64 id, const SessionResult &result);
+    void onValues(const QList<WatchValue> &values);
+    void dispatch();
+    const CliStep &step() const;
+    // The current command succeeded: run the next one or end with 0.
+    void stepDone();
+
+    void submit(const Request &request, Handler handler);
+    void armWatchdog(int ms);
+    int requestBudgetMs() const;
+    void finish(int exitCode);
+    // Reports a failed result (stderr / JSON) and ends with its exit code.
+    void failWith(const SessionResult &result);
+    static int exitCodeFor(ErrorKind kind);
+
+    void runStatus();
+    void runRunStop(bool run);
+    void runRead();
+    void runWrite();
+    void runControl();
+    void runForced();
+    void runLoopback();
+    void loopbackNext();
+    void runMonitor();
+    void runRaw();
+    void runScan();
+
+    QString stationText() const;
+
+    CliOptions m_options;
+    CliOutput m_out;
+    // Declaration order = reverse destruction order: the session goes first, then the simulator.
+    std::unique_ptr<SimulatedPlc> m_plc;
+    std::unique_ptr<SimServer> m_server;
+    std::unique_ptr<Session> m_session;
+    std::unique_ptr<StationScanner> m_scanner;
+    QHash<quint64, Handler> m_handlers;
+    QTimer m_watchdog;
+    qsizetype m_stepIndex = 0;
+    bool m_dispatched = false;
+    bool m_monitoring = false;
+    bool m_done = false;
+
+    // loopback
+    int m_loopSent = 0;
+    int m_loopOk = 0;
+    int m_loopMismatches = 0;
+    int m_loopTimeouts = 0;
+    QList<double> m_loopRtts;
+    QString m_loopLastError;
+
+    // monitor
+    int m_cycle = 0;
+    int m_staleCycles = 0;
+    bool m_monitorErrors = false;
+    QSet<QString> m_reported;
+};
+
+} // namespace Fatek

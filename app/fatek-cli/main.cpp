@@ -1,0 +1,44 @@
+#include "clioptions.h"
+#include "clirunner.h"
+
+#include <QCoreApplication>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTextStream>
+#include <QTimer>
+
+using namespace Fatek;
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("fatek-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
+
+    QStringList arguments = QCoreApplication::arguments();
+    arguments.removeFirst();
+    const CliParseResult parsed = parseCommandLine(arguments);
+    if (!parsed.options) {
+        QTextStream(stderr) << "fatek-cli: " << parsed.error << "\nTry 'fatek-cli --help'.\n";
+        if (arguments.contains(QLatin1String("--json"))) {
+            // Scripts parsing stdout get the error in their format too.
+            const QJsonObject error{{QStringLiteral("error"), parsed.error}, {QStringLiteral("code"), ExitCode::Usage}};
+            QTextStream(stdout) << QJsonDocument(error).toJson(QJsonDocument::Compact) << '\n';
+        }
+        return ExitCode::Usage;
+    }
+    if (parsed.options->help) {
+        QTextStream(stdout) << usageText();
+        return ExitCode::Ok;
+    }
+    if (parsed.options->version) {
+        QTextStream(stdout) << "fatek-cli " << QCoreApplication::applicationVersion() << '\n';
+        return ExitCode::Ok;
+    }
+
+    CliRunner runner(*parsed.options);
+    QObject::connect(&runner, &CliRunner::done, &app, [](int code) { QCoreApplication::exit(code); },
+                     Qt::QueuedConnection);
+    QTimer::singleShot(0, &runner, &CliRunner::start);
+    return app.exec();
+}

@@ -1,0 +1,581 @@
+// fatek-cli end to end: the built executable run with QProcess, against its embedded simulator (--sim)
+// and against the independent Python reference PLC (tests/reference/fatekref.py) over TCP and UDP in
+// both protocols.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTest>
+
+namespace {
+
+struct Run
+{
+    int code = -1;
+    QString out;
+    QString err;
+
+    QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
+    QJsonObject json(int line = 0) const
+    {
+        const QStringList l = lines();
+        if (line >= l.size())
+            return {};
+        return QJsonDocument::fromJson(l.at(line).toUtf8()).object();
+    }
+};
+
+Run runCli(const QStringList &arguments, int timeoutMs = 30000)
+{
+    QProcess p;
+    p.start(QStringLiteral(FATEK_CLI_PATH), arguments);
+    Run r;
+    if (!p.waitForStarted(10000))
+        return r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("fatek-cli did not end within %1 ms").arg(timeoutMs);
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QJsonArray ints(std::initializer_list<qint64> values)
+{
+    QJsonArray a;
+    for (qint64 v : values)
+        a.append(v);
+    return a;
+}
+
+QStringList sim(const QStringList &args)
+{
+    return QStringList{QStringLiteral("--sim")} + args;
+}
+
+} // namespace
+
+#define RUN_OK(r)                                                                                                      \
+    QVERIFY2((r).code == 0, qPrintable(QStringLiteral("exit %1: %2 %3").arg((r).code).arg((r).err, (r).out)))
+
+class TestCli : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+
+    void help();
+    void usageErrors_data();
+    void usageErrors();
+    void simStatus();
+    void simWriteReadRoundTrip();
+    void simDiscreteSetThenRead();
+    void simDisableForced();
+    void simLoopback();
+    void simMonitorThreeCycles();
+    void simMonitorTable();
+    void simRawFrame();
+    void simJsonShape();
+    void simCsvShape();
+    void simMixedRead();
+    void plcErrorExit4();
+    void linkFailureExit3();
+    void readOnlyExit5();
+
+    void reference_data();
+    void reference();
+    void referenceAutoDetect();
+    void referenceReadOnlyKeepsValue();
+
+private:
+    QStringList ref(const QString &medium, const QString &protocol) const;
+
+    QProcess m_ref;
+    quint16 m_refTcp = 0;
+    quint16 m_refUdp = 0;
+    QString m_refProblem;
+};
+
+void TestCli::initTestCase()
+{
+    const QString python = QStandardPaths::findExecutable(QStringLiteral("python3"));
+    if (python.isEmpty()) {
+        m_refProblem = QStringLiteral("python3 not found on PATH");
+        return;
+    }
+    m_ref.setProgram(python);
+    m_ref.setArguments({QStringLiteral(FATEK_REFERENCE_PY), QStringLiteral("serve"), QStringLiteral("--tcp"),
+                        QStringLiteral("0"), QStringLiteral("--udp"), QStringLiteral("0")});
+    m_ref.start();
+    if (!m_ref.waitForStarted(10000)) {
+        m_refProblem = QStringLiteral("the reference server did not start");
+        return;
+    }
+    static const QRegularExpression listening(QStringLiteral("listening (tcp|udp) (\\d+)"));
+    QByteArray seen;
+    while ((m_refTcp == 0 || m_refUdp == 0) && m_ref.waitForReadyRead(10000)) {
+        seen += m_ref.readAllStandardOutput();
+        for (const QString &line : QString::fromUtf8(seen).split(QLatin1Char('\n'))) {
+            const auto m = listening.match(line);
+            if (!m.hasMatch())
+                continue;
+            (m.captured(1) == QLatin1String("tcp") ? m_refTcp : m_refUdp) = static_cast<quint16>(m.captured(2).toUInt());
+        }
+    }
+    if (m_refTcp == 0 || m_refUdp == 0)
+        m_refProblem = QStringLiteral("the reference server did not say where it listens: ") + QString::fromUtf8(seen);
+}
+
+void TestCli::cleanupTestCase()
+{
+    if (m_ref.state() != QProcess::NotRunning) {
+        m_ref.kill();
+        m_ref.waitForFinished(5000);
+    }
+}
+
+QStringList TestCli::ref(const QString &medium, const QString &protocol) const
+{
+    const quint16 port = medium == QLatin1String("tcp") ? m_refTcp : m_refUdp;
+    return {QStringLiteral("--") + medium, QStringLiteral("127.0.0.1:%1").arg(port), QStringLiteral("--protocol"), protocol,
+            QStringLiteral("--json"), QStringLiteral("--timeout"), QStringLiteral("1000"), QStringLiteral("--retries"),
+            QStringLiteral("1")};
+}
+
+void TestCli::help()
+{
+    const Run r = runCli({QStringLiteral("--help")});
+    RUN_OK(r);
+    QVERIFY(r.out.contains(QLatin1String("Usage: fatek-cli")));
+    QVERIFY(r.out.contains(QLatin1String("monitor ADDR")));
+    const Run v = runCli({QStringLiteral("--version")});
+    RUN_OK(v);
+    QVERIFY(v.out.startsWith(QLatin1String("fatek-cli ")));
+}
+
+void TestCli::usageErrors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no link") << QStringList{QStringLiteral("status")} << QStringLiteral("No link given");
+    QTest::newRow("no command") << QStringList{QStringLiteral("--sim")} << QStringLiteral("No command");
+    QTest::newRow("unknown command") << sim({QStringLiteral("explode")}) << QStringLiteral("Unknown command");
+    QTest::newRow("unknown option") << sim({QStringLiteral("--frobnicate"), QStringLiteral("status")})
+                                    << QStringLiteral("Unknown option --frobnicate");
+    QTest::newRow("two links") << QStringList{QStringLiteral("--sim"), QStringLiteral("--tcp"),
+                                              QStringLiteral("127.0.0.1"), QStringLiteral("status")}
+                               << QStringLiteral("only one");
+    QTest::newRow("address out of range") << sim({QStringLiteral("read"), QStringLiteral("R70000")})
+                                          << QStringLiteral("R70000");
+    QTest::newRow("16-bit overflow") << sim({QStringLiteral("write"), QStringLiteral("R100"), QStringLiteral("70000")})
+                                     << QStringLiteral("16-bit");
+    QTest::newRow("discrete value") << sim({QStringLiteral("write"), QStringLiteral("Y0"), QStringLiteral("2")})
+                                    << QStringLiteral("0, 1, on or off");
+    QTest::newRow("count too big") << sim({QStringLiteral("read"), QStringLiteral("R0"), QStringLiteral("65")})
+                                   << QStringLiteral("1..64");
+    QTest::newRow("set on register") << sim({QStringLiteral("set"), QStringLiteral("R0")})
+                                     << QStringLiteral("discretes");
+    QTest::newRow("bad raw hex") << sim({QStringLiteral("raw"), QStringLiteral("--hex"), QStringLiteral("0G")})
+                                 << QStringLiteral("hex");
+    QTest::newRow("bad port") << QStringList{QStringLiteral("--tcp"), QStringLiteral("h:99999"), QStringLiteral("status")}
+                              << QStringLiteral("HOST:PORT");
+    QTest::newRow("read from broadcast")
+        << sim({QStringLiteral("--station"), QStringLiteral("0"), QStringLiteral("read"), QStringLiteral("R0")})
+        << QStringLiteral("broadcast");
+    QTest::newRow("endless monitor in a chain")
+        << sim({QStringLiteral("monitor"), QStringLiteral("R0"), QStringLiteral("--then"), QStringLiteral("status")})
+        << QStringLiteral("--cycles");
+    QTest::newRow("option of another command")
+        << sim({QStringLiteral("status"), QStringLiteral("--cycles"), QStringLiteral("3")}) << QStringLiteral("monitor");
+}
+
+void TestCli::usageErrors()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, message);
+    const Run r = runCli(args);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QVERIFY(r.out.isEmpty());
+
+    // With --json the error also comes on stdout as {"error":...,"code":2}.
+    const Run j = runCli(QStringList{QStringLiteral("--json")} + args);
+    QCOMPARE(j.code, 2);
+    QCOMPARE(j.json().value(QStringLiteral("code")).toInt(), 2);
+    QVERIFY(j.json().value(QStringLiteral("error")).toString().contains(message));
+}
+
+void TestCli::simStatus()
+{
+    const Run r = runCli(sim({QStringLiteral("status")}));
+    RUN_OK(r);
+    QVERIFY(r.out.contains(QRegularExpression(QStringLiteral("mode\\s+RUN"))));
+    QVERIFY(r.out.contains(QRegularExpression(QStringLiteral("battery low\\s+no"))));
+    QVERIFY(r.out.contains(QRegularExpression(QStringLiteral("OS version\\s+V3.1"))));
+
+    const Run j = runCli(sim({QStringLiteral("--json"), QStringLiteral("status")}));
+    RUN_OK(j);
+    const QJsonObject o = j.json();
+    QCOMPARE(o.value(QStringLiteral("running")).toBool(), true);
+    QCOMPARE(o.value(QStringLiteral("status1")).toInt(), 1);
+    QCOMPARE(o.value(QStringLiteral("protocol")).toString(), QStringLiteral("FACON"));
+    const QJsonObject d = o.value(QStringLiteral("detail")).toObject();
+    QCOMPARE(d.value(QStringLiteral("ladderSize")).toInt(), 13184);
+    QCOMPARE(d.value(QStringLiteral("osVersion")).toString(), QStringLiteral("V3.1"));
+}
+
+void TestCli::simWriteReadRoundTrip()
+{
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R100"),
+                              QStringLiteral("1234"), QStringLiteral("-2"), QStringLiteral("0xBEEF"),
+                              QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("R100"), QStringLiteral("3")}));
+    RUN_OK(r);
+    QCOMPARE(r.lines().size(), 2);
+    QCOMPARE(r.json(0).value(QStringLiteral("written")).toArray(), ints({1234, 65534, 48879}));
+    QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({1234, 65534, 48879}));
+
+    // Without the write the simulator starts from zero: the round trip really read what was written.
+    const Run fresh = runCli(sim({QStringLiteral("--json"), QStringLiteral("read"), QStringLiteral("R100"), QStringLiteral("3")}));
+    RUN_OK(fresh);
+    QCOMPARE(fresh.json().value(QStringLiteral("values")).toArray(), ints({0, 0, 0}));
+
+    const Run dr = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("DR200"),
+                               QStringLiteral("-100000"), QStringLiteral("--then"), QStringLiteral("read"),
+                               QStringLiteral("R200"), QStringLiteral("2")}));
+    RUN_OK(dr);
+    // -100000 = 0xFFFE7960: low word first in R200.
+    QCOMPARE(dr.json(1).value(QStringLiteral("values")).toArray(), ints({0x7960, 0xFFFE}));
+}
+
+void TestCli::simDiscreteSetThenRead()
+{
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("set"), QStringLiteral("M7"), QStringLiteral("--then"),
+                              QStringLiteral("read"), QStringLiteral("M6"), QStringLiteral("3"), QStringLiteral("--then"),
+                              QStringLiteral("write"), QStringLiteral("M6"), QStringLiteral("on"), QStringLiteral("off"),
+                              QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("M6..M8")}));
+    RUN_OK(r);
+    QCOMPARE(r.json(0).value(QStringLiteral("action")).toString(), QStringLiteral("set"));
+    QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({0, 1, 0}));
+    QCOMPARE(r.json(3).value(QStringLiteral("values")).toArray(), ints({1, 0, 0}));
+}
+
+void TestCli::simDisableForced()
+{
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("disable"), QStringLiteral("Y5"), QStringLiteral("--then"),
+                              QStringLiteral("forced"), QStringLiteral("Y4"), QStringLiteral("3"), QStringLiteral("--then"),
+                              QStringLiteral("enable"), QStringLiteral("Y5"), QStringLiteral("--then"),
+                              QStringLiteral("forced"), QStringLiteral("Y4"), QStringLiteral("3")}));
+    RUN_OK(r);
+    QCOMPARE(r.json(1).value(QStringLiteral("forced")).toArray(), ints({0, 1, 0}));
+    QCOMPARE(r.json(3).value(QStringLiteral("forced")).toArray(), ints({0, 0, 0}));
+}
+
+void TestCli::simLoopback()
+{
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("loopback"), QStringLiteral("HELLO"),
+                              QStringLiteral("--count"), QStringLiteral("5")}));
+    RUN_OK(r);
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("sent")).toInt(), 5);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 5);
+    QCOMPARE(o.value(QStringLiteral("mismatches")).toInt(), 0);
+    QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), 0);
+    QVERIFY(o.value(QStringLiteral("minMs")).toDouble() <= o.value(QStringLiteral("meanMs")).toDouble());
+    QVERIFY(o.value(QStringLiteral("meanMs")).toDouble() <= o.value(QStringLiteral("maxMs")).toDouble());
+}
+
+void TestCli::simMonitorThreeCycles()
+{
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("monitor"), QStringLiteral("R0..R1"),
+                              QStringLiteral("Y0"), QStringLiteral("--interval"), QStringLiteral("100"),
+                              QStringLiteral("--cycles"), QStringLiteral("3")}));
+    RUN_OK(r);
+    QCOMPARE(r.lines().size(), 3);
+    qint64 lastScans = -1;
+    for (int i = 0; i < 3; ++i) {
+        const QJsonObject o = r.json(i);
+        QCOMPARE(o.value(QStringLiteral("cycle")).toInt(), i + 1);
+        QCOMPARE(o.value(QStringLiteral("addresses")).toArray(),
+                 (QJsonArray{QStringLiteral("R0"), QStringLiteral("R1"), QStringLiteral("Y0")}));
+        const QJsonArray v = o.value(QStringLiteral("values")).toArray();
+        QCOMPARE(v.size(), 3);
+        QVERIFY(v.at(0).isDouble());
+        // The demo ladder counts scans in R0: it never goes back.
+        QVERIFY(v.at(0).toInteger() >= lastScans);
+        lastScans = v.at(0).toInteger();
+    }
+}
+
+void TestCli::simMonitorTable()
+{
+    // R50: outside what the demo ladder drives (R0, R1, DR10), so it stays 0.
+    const Run r = runCli(sim({QStringLiteral("monitor"), QStringLiteral("R50"), QStringLiteral("--interval"),
+                              QStringLiteral("50"), QStringLiteral("--cycles"), QStringLiteral("3")}));
+    RUN_OK(r);
+    const QStringList l = r.lines();
+    QCOMPARE(l.size(), 4);
+    QVERIFY(l.at(0).startsWith(QLatin1String("cycle")));
+    QVERIFY(l.at(0).endsWith(QLatin1String("R50")));
+    QVERIFY(l.at(3).startsWith(QLatin1String("3 ")));
+    QVERIFY(l.at(3).endsWith(QLatin1String(" 0")));
+}
+
+void TestCli::simRawFrame()
+{
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("raw"), QStringLiteral("--frame"), QStringLiteral("0140")}));
+    RUN_OK(r);
+    const QJsonObject o = r.json();
+    // STX "0140" LRC ETX: the LRC of 02 30 31 34 30 is C7.
+    QCOMPARE(o.value(QStringLiteral("sent")).toString(), QStringLiteral("02 30 31 34 30 43 37 03"));
+    // Station 01, command 40, error 0, STATUS1 01 (RUN).
+    QVERIFY2(o.value(QStringLiteral("answerText")).toString().startsWith(QLatin1String("<02>0140001")),
+             qPrintable(r.out));
+
+    // Unframed bytes reach the wire as typed; an incomplete frame gets no answer: a link failure.
+    const Run bare = runCli(sim({QStringLiteral("--timeout"), QStringLiteral("200"), QStringLiteral("raw"), QStringLiteral("0140")}));
+    QCOMPARE(bare.code, 3);
+    QVERIFY(bare.err.contains(QLatin1String("No answer")));
+}
+
+void TestCli::simJsonShape()
+{
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R12"), QStringLiteral("4261"),
+                              QStringLiteral("32708"), QStringLiteral("1"), QStringLiteral("--then"), QStringLiteral("read"),
+                              QStringLiteral("R12"), QStringLiteral("3")}));
+    RUN_OK(r);
+    QCOMPARE(r.lines().at(1), QStringLiteral("{\"address\":\"R12\",\"station\":1,\"values\":[4261,32708,1]}"));
+
+    const Run e = runCli(sim({QStringLiteral("--json"), QStringLiteral("read"), QStringLiteral("R5000")}));
+    QCOMPARE(e.code, 4);
+    const QJsonObject o = e.json();
+    QCOMPARE(o.value(QStringLiteral("code")).toInt(), 4);
+    QVERIFY(o.value(QStringLiteral("error")).toString().startsWith(QLatin1String("PLC error A")));
+    QCOMPARE(o.value(QStringLiteral("plcError")).toString(), QStringLiteral("A"));
+}
+
+void TestCli::simCsvShape()
+{
+    const Run r = runCli(sim({QStringLiteral("--csv"), QStringLiteral("write"), QStringLiteral("R12"), QStringLiteral("7"),
+                              QStringLiteral("8"), QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("R12"),
+                              QStringLiteral("2")}));
+    RUN_OK(r);
+    const QStringList l = r.lines();
+    QCOMPARE(l.size(), 6);
+    QCOMPARE(l.at(0), QStringLiteral("station,address,written"));
+    QCOMPARE(l.at(3), QStringLiteral("station,address,value"));
+    QCOMPARE(l.at(4), QStringLiteral("1,R12,7"));
+    QCOMPARE(l.at(5), QStringLiteral("1,R13,8"));
+
+    const Run m = runCli(sim({QStringLiteral("--csv"), QStringLiteral("monitor"), QStringLiteral("R20"), QStringLiteral("Y1"),
+                              QStringLiteral("--interval"), QStringLiteral("50"), QStringLiteral("--cycles"), QStringLiteral("2")}));
+    RUN_OK(m);
+    QCOMPARE(m.lines().size(), 3);
+    QCOMPARE(m.lines().at(0), QStringLiteral("cycle,time,station,R20,Y1"));
+    QVERIFY(m.lines().at(2).startsWith(QLatin1String("2,")));
+    QVERIFY(m.lines().at(2).endsWith(QLatin1String(",1,0,0")));
+}
+
+void TestCli::simMixedRead()
+{
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R30"), QStringLiteral("99"),
+                              QStringLiteral("--then"), QStringLiteral("set"), QStringLiteral("M3"), QStringLiteral("--then"),
+                              QStringLiteral("read"), QStringLiteral("R30"), QStringLiteral("M3"), QStringLiteral("M4")}));
+    RUN_OK(r);
+    QCOMPARE(r.lines().size(), 5);
+    QCOMPARE(r.json(2).value(QStringLiteral("address")).toString(), QStringLiteral("R30"));
+    QCOMPARE(r.json(2).value(QStringLiteral("values")).toArray(), ints({99}));
+    QCOMPARE(r.json(3).value(QStringLiteral("values")).toArray(), ints({1}));
+    QCOMPARE(r.json(4).value(QStringLiteral("values")).toArray(), ints({0}));
+}
+
+void TestCli::plcErrorExit4()
+{
+    // R70000 exists on no model: refused before sending (usage). R5000 exists on the largest model
+    // but not on the FBs profile: the simulator answers error A.
+    const Run before = runCli(sim({QStringLiteral("read"), QStringLiteral("R70000")}));
+    QCOMPARE(before.code, 2);
+    QVERIFY(before.err.contains(QLatin1String("R70000")));
+
+    const Run r = runCli(sim({QStringLiteral("read"), QStringLiteral("R5000")}));
+    QCOMPARE(r.code, 4);
+    QVERIFY2(r.err.contains(QLatin1String("PLC error A: illegal address R5000")), qPrintable(r.err));
+    QVERIFY(r.out.isEmpty());
+}
+
+void TestCli::linkFailureExit3()
+{
+    const Run r = runCli({QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:1"), QStringLiteral("status")});
+    QCOMPARE(r.code, 3);
+    QVERIFY2(r.err.contains(QLatin1String("No connection")), qPrintable(r.err));
+}
+
+void TestCli::readOnlyExit5()
+{
+    const Run w = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("write"), QStringLiteral("R100"), QStringLiteral("5")}));
+    QCOMPARE(w.code, 5);
+    QVERIFY(!w.err.isEmpty());
+    const Run s = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("set"), QStringLiteral("Y0")}));
+    QCOMPARE(s.code, 5);
+    // Reading stays allowed in operator mode.
+    const Run r = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("--json"), QStringLiteral("read"), QStringLiteral("R100")}));
+    RUN_OK(r);
+    QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({0}));
+}
+
+void TestCli::reference_data()
+{
+    QTest::addColumn<QString>("medium");
+    QTest::addColumn<QString>("protocol");
+    QTest::addColumn<int>("base"); // element numbers of this row: the reference PLC is shared by all rows
+    QTest::newRow("tcp facon") << QStringLiteral("tcp") << QStringLiteral("facon") << 1000;
+    QTest::newRow("tcp binary") << QStringLiteral("tcp") << QStringLiteral("binary") << 1100;
+    QTest::newRow("udp facon") << QStringLiteral("udp") << QStringLiteral("facon") << 1200;
+    QTest::newRow("udp binary") << QStringLiteral("udp") << QStringLiteral("binary") << 1300;
+}
+
+void TestCli::reference()
+{
+    if (!m_refProblem.isEmpty())
+        QSKIP(qPrintable(m_refProblem));
+    QFETCH(QString, medium);
+    QFETCH(QString, protocol);
+    QFETCH(int, base);
+    const QStringList link = ref(medium, protocol);
+    auto cli = [&](const QStringList &args) { return runCli(link + args); };
+    const QString R = QStringLiteral("R%1").arg(base);
+    const QString R1 = QStringLiteral("R%1").arg(base + 1);
+    const QString DR = QStringLiteral("DR%1").arg(base + 10);
+    const QString Y = QStringLiteral("Y%1").arg(base / 10); // Y100.. are discretes far from other rows
+    const QString M = QStringLiteral("M%1").arg(base);
+
+    // run / stop, checked through STATUS1.
+    Run r = cli({QStringLiteral("run"), QStringLiteral("--then"), QStringLiteral("status")});
+    RUN_OK(r);
+    QCOMPARE(r.json(0).value(QStringLiteral("ok")).toBool(), true);
+    QCOMPARE(r.json(1).value(QStringLiteral("running")).toBool(), true);
+    QCOMPARE(r.json(1).value(QStringLiteral("status1")).toInt() & 1, 1);
+    QCOMPARE(r.json(1).value(QStringLiteral("protocol")).toString(),
+             protocol == QLatin1String("facon") ? QStringLiteral("FACON") : QStringLiteral("binary"));
+    // The reference's 53 answer follows the FACON seed layout.
+    QCOMPARE(r.json(1).value(QStringLiteral("detail")).toObject().value(QStringLiteral("osVersion")).toString(),
+             QStringLiteral("V3.1"));
+    r = cli({QStringLiteral("stop"), QStringLiteral("--then"), QStringLiteral("status")});
+    RUN_OK(r);
+    QCOMPARE(r.json(1).value(QStringLiteral("running")).toBool(), false);
+
+    // Registers: consecutive write (47) and read back (46), 16 and 32 bit, negative and hex.
+    r = cli({QStringLiteral("write"), R, QStringLiteral("4261"), QStringLiteral("-1"), QStringLiteral("0x7FC4")});
+    RUN_OK(r);
+    r = cli({QStringLiteral("read"), R, QStringLiteral("3")});
+    RUN_OK(r);
+    QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({4261, 65535, 32708}));
+    r = cli({QStringLiteral("write"), DR, QStringLiteral("0x12345678"), QStringLiteral("--then"), QStringLiteral("read"),
+             DR, QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("R%1").arg(base + 10), QStringLiteral("2")});
+    RUN_OK(r);
+    QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({0x12345678}));
+    QCOMPARE(r.json(2).value(QStringLiteral("values")).toArray(), ints({0x5678, 0x1234}));
+
+    // Discretes: consecutive write (45) and read back (44).
+    r = cli({QStringLiteral("write"), Y, QStringLiteral("1"), QStringLiteral("off"), QStringLiteral("on"),
+             QStringLiteral("--then"), QStringLiteral("read"), Y, QStringLiteral("3")});
+    RUN_OK(r);
+    QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({1, 0, 1}));
+
+    // Discrete control (42) and forced flags (43).
+    r = cli({QStringLiteral("set"), M, QStringLiteral("--then"), QStringLiteral("read"), M});
+    RUN_OK(r);
+    QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({1}));
+    r = cli({QStringLiteral("reset"), M, QStringLiteral("--then"), QStringLiteral("read"), M});
+    RUN_OK(r);
+    QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({0}));
+    r = cli({QStringLiteral("disable"), M, QStringLiteral("--then"), QStringLiteral("forced"), M, QStringLiteral("2")});
+    RUN_OK(r);
+    QCOMPARE(r.json(1).value(QStringLiteral("forced")).toArray(), ints({1, 0}));
+    r = cli({QStringLiteral("enable"), M, QStringLiteral("--then"), QStringLiteral("forced"), M, QStringLiteral("2")});
+    RUN_OK(r);
+    QCOMPARE(r.json(1).value(QStringLiteral("forced")).toArray(), ints({0, 0}));
+
+    // Mixed read (48).
+    r = cli({QStringLiteral("read"), R, DR, Y});
+    RUN_OK(r);
+    QCOMPARE(r.lines().size(), 3);
+    QCOMPARE(r.json(0).value(QStringLiteral("values")).toArray(), ints({4261}));
+    QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({0x12345678}));
+    QCOMPARE(r.json(2).value(QStringLiteral("values")).toArray(), ints({1}));
+
+    // Loopback (4E).
+    r = cli({QStringLiteral("loopback"), QStringLiteral("ABC123"), QStringLiteral("--count"), QStringLiteral("3")});
+    RUN_OK(r);
+    QCOMPARE(r.json().value(QStringLiteral("ok")).toInt(), 3);
+    QCOMPARE(r.json().value(QStringLiteral("mismatches")).toInt(), 0);
+
+    // Monitor through the session's planned polling.
+    r = cli({QStringLiteral("monitor"), QStringLiteral("%1..%2").arg(R, R1), DR, QStringLiteral("--interval"),
+             QStringLiteral("50"), QStringLiteral("--cycles"), QStringLiteral("2")});
+    RUN_OK(r);
+    QCOMPARE(r.lines().size(), 2);
+    QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({4261, 65535, 0x12345678}));
+
+    // Raw frame with framing added by the session: brief status of station 1 in STOP.
+    if (protocol == QLatin1String("facon")) {
+        r = cli({QStringLiteral("raw"), QStringLiteral("--frame"), QStringLiteral("0140")});
+        RUN_OK(r);
+        QVERIFY2(r.json().value(QStringLiteral("answerText")).toString().startsWith(QLatin1String("<02>0140000")),
+                 qPrintable(r.out));
+    } else {
+        r = cli({QStringLiteral("raw"), QStringLiteral("--frame"), QStringLiteral("01 40")});
+        RUN_OK(r);
+        // Answer header 52, then station 01, command 40, error 00, STATUS1 00 (STOP).
+        const QString answer = r.json().value(QStringLiteral("answer")).toString();
+        QVERIFY2(answer.startsWith(QLatin1String("52 ")), qPrintable(answer));
+        QVERIFY2(answer.contains(QLatin1String(" 01 40 00 00")), qPrintable(answer));
+    }
+
+    // The reference has the largest model's ranges: a span past them is refused before sending.
+    r = cli({QStringLiteral("read"), QStringLiteral("R65535"), QStringLiteral("2")});
+    QCOMPARE(r.code, 2);
+
+    // Station scan (40 per station): only station 1 answers.
+    r = cli({QStringLiteral("scan"), QStringLiteral("1..2")});
+    RUN_OK(r);
+    QCOMPARE(r.lines().size(), 1);
+    QCOMPARE(r.json().value(QStringLiteral("station")).toInt(), 1);
+}
+
+void TestCli::referenceAutoDetect()
+{
+    if (!m_refProblem.isEmpty())
+        QSKIP(qPrintable(m_refProblem));
+    // Default protocol for a real link: auto-detect (FACON answers first on the reference).
+    const Run r = runCli({QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:%1").arg(m_refTcp), QStringLiteral("--json"),
+                          QStringLiteral("status")});
+    RUN_OK(r);
+    QCOMPARE(r.json().value(QStringLiteral("protocol")).toString(), QStringLiteral("FACON"));
+}
+
+void TestCli::referenceReadOnlyKeepsValue()
+{
+    if (!m_refProblem.isEmpty())
+        QSKIP(qPrintable(m_refProblem));
+    const QStringList link = ref(QStringLiteral("tcp"), QStringLiteral("facon"));
+    Run r = runCli(link + QStringList{QStringLiteral("write"), QStringLiteral("R2000"), QStringLiteral("11")});
+    RUN_OK(r);
+    r = runCli(link + QStringList{QStringLiteral("--read-only"), QStringLiteral("write"), QStringLiteral("R2000"),
+                                  QStringLiteral("99")});
+    QCOMPARE(r.code, 5);
+    QCOMPARE(r.json().value(QStringLiteral("code")).toInt(), 5);
+    r = runCli(link + QStringList{QStringLiteral("read"), QStringLiteral("R2000")});
+    RUN_OK(r);
+    QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({11}));
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"

@@ -1,0 +1,374 @@
+// RawConsole against the simulator: typed frames (ASCII and hex, with and without automatic framing)
+// get their decoded answers in the log; corrupted answers are error lines; filters, cap, save.
+#include "frametext.h"
+#include "rawconsole.h"
+#include "rawsendbar.h"
+#include "toolpalette.h"
+#include "trafficfilterproxy.h"
+#include "trafficlogmodel.h"
+#include "tst_tools_fixture.h"
+
+#include <QCheckBox>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Fatek;
+using ToolsTest::Rig;
+
+class TestToolsConsole : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void cleanup();
+
+    void frameText();
+    void parseErrors_data();
+    void parseErrors();
+    void modelCapsRows();
+    void errorColoursFollowThePalette();
+    void typedFaconFrameDecoded();
+    void typedBinaryFrameDecoded();
+    void wholeFrameWithoutFraming();
+    void corruptedAnswerIsErrorLine();
+    void writeFrameAsksFirst();
+    void filtersPauseClearSave();
+    void noConnection();
+
+private:
+    void open(LinkSettings::ProtocolChoice protocol = LinkSettings::ProtocolChoice::Facon);
+    // Rows of the model (not the filter) received after `after`.
+    int findRow(TrafficEntry::Direction direction, const QString &meaningPart, int after = 0) const;
+
+    Rig m_rig;
+    std::unique_ptr<RawConsole> m_console;
+};
+
+void TestToolsConsole::open(LinkSettings::ProtocolChoice protocol)
+{
+    m_rig = Rig();
+    QVERIFY(m_rig.start(protocol, 500, 0));
+    m_console = std::make_unique<RawConsole>();
+    m_console->setConfirmer(m_rig.confirmer());
+    m_console->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_console->resize(1000, 500);
+    m_console->show();
+}
+
+void TestToolsConsole::cleanup()
+{
+    m_console.reset();
+    m_rig.session.reset();
+    m_rig.server.reset();
+    m_rig.plc.reset();
+}
+
+int TestToolsConsole::findRow(TrafficEntry::Direction direction, const QString &meaningPart, int after) const
+{
+    TrafficLogModel *model = m_console->model();
+    for (int r = after; r < model->rowCount(); ++r) {
+        const TrafficEntry &e = model->entryAt(r);
+        if (e.direction == direction && e.summary.contains(meaningPart))
+            return r;
+    }
+    return -1;
+}
+
+void TestToolsConsole::frameText()
+{
+    const QByteArray frame("\x02" "0140C7\x03", 8);
+    QCOMPARE(FrameText::toAscii(frame), QStringLiteral("<STX>0140C7<ETX>"));
+    QCOMPARE(FrameText::toHex(frame), QStringLiteral("02 30 31 34 30 43 37 03"));
+    QCOMPARE(FrameText::toAscii(QByteArray("\x0d\xff", 2)), QStringLiteral("<CR><FF>"));
+    QCOMPARE(*FrameText::parseAscii(QStringLiteral("<STX>0140C7<ETX>")), frame);
+    QCOMPARE(*FrameText::parseAscii(QStringLiteral("<stx>01<0d>")), QByteArray("\x02" "01\x0d"));
+    QCOMPARE(*FrameText::parseAscii(QStringLiteral("a<b")), QByteArray("a<b"));
+    QCOMPARE(*FrameText::parseHex(QStringLiteral("01 46 03 52 00 0C")), QByteArray::fromHex("01460352000C"));
+    QCOMPARE(*FrameText::parseHex(QStringLiteral("0x01,0x46")), QByteArray::fromHex("0146"));
+    QCOMPARE(*FrameText::parseHex(QStringLiteral("014603")), QByteArray::fromHex("014603"));
+
+    const auto facon = FrameText::header(frame);
+    QVERIFY(facon);
+    QCOMPARE(facon->station, quint8(1));
+    QCOMPARE(facon->command, quint8(0x40));
+    const auto binary = FrameText::header(QByteArray::fromHex("51100002014 0A18455AA"));
+    QVERIFY(binary);
+    QCOMPARE(binary->station, quint8(1));
+    QCOMPARE(binary->command, quint8(0x40));
+    QVERIFY(!FrameText::header(QByteArray("hello")));
+    QVERIFY(!FrameText::header(QByteArray("\x02" "0", 2)));
+    const auto body = FrameText::bodyHeader(QByteArray("014603R00012"), true);
+    QVERIFY(body);
+    QCOMPARE(body->command, quint8(0x46));
+}
+
+void TestToolsConsole::parseErrors_data()
+{
+    QTest::addColumn<bool>("hex");
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("messagePart");
+    QTest::newRow("odd") << true << "01 4" << "Odd number";
+    QTest::newRow("not hex") << true << "01 G6" << "not a hex digit";
+    QTest::newRow("empty hex") << true << "  " << "Nothing to send";
+    QTest::newRow("non-ascii") << false << QStringLiteral("01\u00e940") << "printable ASCII";
+    QTest::newRow("empty ascii") << false << "" << "Nothing to send";
+}
+
+void TestToolsConsole::parseErrors()
+{
+    QFETCH(bool, hex);
+    QFETCH(QString, text);
+    QFETCH(QString, messagePart);
+    const Result<QByteArray> r = hex ? FrameText::parseHex(text) : FrameText::parseAscii(text);
+    QVERIFY(!r);
+    QVERIFY2(QString::fromStdString(r.error().message).contains(messagePart), r.error().message.c_str());
+}
+
+void TestToolsConsole::modelCapsRows()
+{
+    TrafficLogModel model;
+    model.setCapacity(10);
+    QList<TrafficEntry> batch;
+    for (int i = 1; i <= 7; ++i) {
+        TrafficEntry e;
+        e.sequence = static_cast<quint64>(i);
+        e.direction = TrafficEntry::Direction::Out;
+        batch << e;
+    }
+    model.append(batch);
+    QCOMPARE(model.rowCount(), 7);
+    for (TrafficEntry &e : batch)
+        e.sequence += 7;
+    model.append(batch);
+    QCOMPARE(model.rowCount(), 10);
+    QCOMPARE(model.entryAt(0).sequence, quint64(5));
+    QCOMPARE(model.entryAt(9).sequence, quint64(14));
+    QList<TrafficEntry> huge;
+    for (int i = 0; i < 25; ++i) {
+        TrafficEntry e;
+        e.sequence = static_cast<quint64>(100 + i);
+        huge << e;
+    }
+    model.append(huge);
+    QCOMPARE(model.rowCount(), 10);
+    QCOMPARE(model.entryAt(0).sequence, quint64(115));
+}
+
+void TestToolsConsole::errorColoursFollowThePalette()
+{
+    QPalette light;
+    light.setColor(QPalette::Text, Qt::black);
+    light.setColor(QPalette::Base, Qt::white);
+    QPalette dark;
+    dark.setColor(QPalette::Text, Qt::white);
+    dark.setColor(QPalette::Base, Qt::black);
+    const QColor onLight = ToolPalette::errorText(light);
+    const QColor onDark = ToolPalette::errorText(dark);
+    QVERIFY(onLight.lightnessF() < onDark.lightnessF());
+    QCOMPARE(onLight.hslHue(), 0);
+    // Row backgrounds stay close to Base so the text remains readable.
+    QVERIFY(ToolPalette::errorBackground(light).lightnessF() > 0.8);
+    QVERIFY(ToolPalette::errorBackground(dark).lightnessF() < 0.2);
+}
+
+void TestToolsConsole::typedFaconFrameDecoded()
+{
+    open();
+    m_rig.plc->setValue(ToolsTest::addr("R12"), 0x1234);
+    RawSendBar *bar = m_console->sendBar();
+    bar->setMode(RawSendBar::Mode::Ascii);
+    bar->setAddFraming(true);
+    bar->setText(QStringLiteral("014603R00012"));
+    bar->send();
+    QVERIFY(m_rig.questions.isEmpty()); // a read needs no confirmation
+    QTRY_COMPARE_WITH_TIMEOUT(bar->answersReceived(), 1, 10000);
+    QVERIFY2(bar->resultText().contains(QStringLiteral("Sent    <STX>014603R00012")), qPrintable(bar->resultText()));
+    QVERIFY2(bar->resultText().contains(QStringLiteral("1234")), qPrintable(bar->resultText()));
+    QVERIFY2(bar->resultText().contains(QStringLiteral("answer: OK")), qPrintable(bar->resultText()));
+    // The console shows the frame out and the decoded answer in.
+    QTRY_VERIFY_WITH_TIMEOUT(findRow(TrafficEntry::Direction::In, QStringLiteral("46")) >= 0, 10000);
+    const int out = findRow(TrafficEntry::Direction::Out, QStringLiteral("46"));
+    QVERIFY(out >= 0);
+    const int in = findRow(TrafficEntry::Direction::In, QStringLiteral("46"), out);
+    QVERIFY(in > out);
+    TrafficLogModel *model = m_console->model();
+    QVERIFY(model->index(out, TrafficLogModel::AsciiColumn).data().toString().startsWith(QStringLiteral("<STX>014603R00012")));
+    QVERIFY(model->index(in, TrafficLogModel::AsciiColumn).data().toString().contains(QStringLiteral("1234")));
+    QVERIFY(model->index(in, TrafficLogModel::ErrorColumn).data().toString().isEmpty());
+    QVERIFY(!model->index(in, 0).data(TrafficLogModel::IsErrorRole).toBool());
+    QCOMPARE(model->index(in, TrafficLogModel::StationColumn).data().toInt(), 1);
+}
+
+void TestToolsConsole::typedBinaryFrameDecoded()
+{
+    open(LinkSettings::ProtocolChoice::Binary);
+    m_rig.plc->setValue(ToolsTest::addr("R12"), 0xBEEF);
+    RawSendBar *bar = m_console->sendBar();
+    bar->setMode(RawSendBar::Mode::Hex);
+    bar->setAddFraming(true);
+    bar->setText(QStringLiteral("01 46 03 52 00 0C"));
+    bar->send();
+    QTRY_COMPARE_WITH_TIMEOUT(bar->answersReceived(), 1, 10000);
+    QVERIFY2(bar->resultText().contains(QStringLiteral("BE EF")), qPrintable(bar->resultText()));
+    QTRY_VERIFY_WITH_TIMEOUT(findRow(TrafficEntry::Direction::In, QStringLiteral("46")) >= 0, 10000);
+    const int in = findRow(TrafficEntry::Direction::In, QStringLiteral("46"));
+    QVERIFY(m_console->model()->index(in, TrafficLogModel::HexColumn).data().toString().startsWith(QStringLiteral("52 10")));
+}
+
+void TestToolsConsole::wholeFrameWithoutFraming()
+{
+    open();
+    RawSendBar *bar = m_console->sendBar();
+    bar->setMode(RawSendBar::Mode::Ascii);
+    bar->setAddFraming(false);
+    bar->setText(QStringLiteral("<STX>0140C7<ETX>"));
+    bar->send();
+    QTRY_COMPARE_WITH_TIMEOUT(bar->answersReceived(), 1, 10000);
+    QVERIFY(bar->lastAnswer().startsWith("\x02" "0140"));
+}
+
+void TestToolsConsole::corruptedAnswerIsErrorLine()
+{
+    open();
+    FaultConfig faults;
+    faults.corruptRate = 0.5;
+    faults.seed = 3;
+    m_rig.server->setFaults(faults);
+    RawSendBar *bar = m_console->sendBar();
+    bar->setMode(RawSendBar::Mode::Ascii);
+    bar->setAddFraming(true);
+    bar->setText(QStringLiteral("014603R00000"));
+    bar->send();
+    QTRY_VERIFY_WITH_TIMEOUT(!bar->isBusy(), 10000);
+    TrafficLogModel *model = m_console->model();
+    int errorRow = -1;
+    QTRY_VERIFY_WITH_TIMEOUT(([&] {
+                                 for (int r = 0; r < model->rowCount(); ++r) {
+                                     if (model->entryAt(r).direction != TrafficEntry::Direction::Out
+                                         && model->index(r, 0).data(TrafficLogModel::IsErrorRole).toBool()) {
+                                         errorRow = r;
+                                         return true;
+                                     }
+                                 }
+                                 return false;
+                             }()),
+                             10000);
+    QVERIFY(!model->index(errorRow, TrafficLogModel::ErrorColumn).data().toString().isEmpty());
+    // Highlighted with the palette-derived error colours.
+    const QPalette palette = m_console->palette();
+    QCOMPARE(model->index(errorRow, TrafficLogModel::MeaningColumn).data(Qt::ForegroundRole).value<QColor>(),
+             ToolPalette::errorText(palette));
+    QCOMPARE(model->index(errorRow, 0).data(Qt::BackgroundRole).value<QColor>(), ToolPalette::errorBackground(palette));
+    // "Errors only" keeps it and hides the sent frame.
+    auto *errorsOnly = m_console->findChild<QCheckBox *>(QStringLiteral("errorsOnly"));
+    QVERIFY(errorsOnly);
+    errorsOnly->setChecked(true);
+    QVERIFY(m_console->filter()->rowCount() >= 1);
+    for (int r = 0; r < m_console->filter()->rowCount(); ++r)
+        QVERIFY(m_console->filter()->index(r, 0).data(TrafficLogModel::IsErrorRole).toBool());
+}
+
+void TestToolsConsole::writeFrameAsksFirst()
+{
+    open();
+    RawSendBar *bar = m_console->sendBar();
+    bar->setMode(RawSendBar::Mode::Ascii);
+    bar->setAddFraming(true);
+    bar->setText(QStringLiteral("01410")); // STOP
+    m_rig.answer = false;
+    bar->send();
+    QCOMPARE(m_rig.questions.size(), 1);
+    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("station 1")), qPrintable(m_rig.questions.last()));
+    QVERIFY(m_rig.questions.last().contains(Rig::connectionName()));
+    QVERIFY(bar->resultText().contains(QStringLiteral("Cancelled")));
+    QTest::qWait(200);
+    QVERIFY(m_rig.plc->isRunning());
+
+    m_rig.answer = true;
+    bar->send();
+    QCOMPARE(m_rig.questions.size(), 2);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_rig.plc->isRunning(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!bar->isBusy(), 10000);
+    QVERIFY2(bar->resultText().contains(QStringLiteral("Answer  <STX>01410")), qPrintable(bar->resultText()));
+
+    // Operator mode: the session refuses raw frames; shown as an error.
+    m_rig.session->setReadOnly(true);
+    bar->setText(QStringLiteral("01411"));
+    bar->send();
+    QTRY_VERIFY_WITH_TIMEOUT(bar->resultText().contains(QStringLiteral("Failed")), 10000);
+    QVERIFY(!m_rig.plc->isRunning());
+}
+
+void TestToolsConsole::filtersPauseClearSave()
+{
+    open();
+    Request read = Request::readRegisters(1, ToolsTest::addr("R0"), 2);
+    QSignalSpy finished(m_rig.session.get(), &Session::finished);
+    m_rig.session->submit(read);
+    m_rig.session->submit(Request::briefStatus(1));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_console->model()->rowCount() >= 4, 10000);
+
+    TrafficFilterProxy *filter = m_console->filter();
+    filter->setDirection(TrafficEntry::Direction::Out);
+    QCOMPARE(filter->rowCount(), 2);
+    filter->setCommand(0x40);
+    QCOMPARE(filter->rowCount(), 1);
+    filter->setDirection(std::nullopt);
+    QCOMPARE(filter->rowCount(), 2);
+    filter->setStation(2);
+    QCOMPARE(filter->rowCount(), 0);
+    filter->setStation(std::nullopt);
+    filter->setCommand(std::nullopt);
+
+    // Pause: frames wait in the log and show up on resume.
+    m_console->setPaused(true);
+    const int before = m_console->model()->rowCount();
+    m_rig.session->submit(Request::briefStatus(1));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, 10000);
+    QTest::qWait(200);
+    QCOMPARE(m_console->model()->rowCount(), before);
+    m_console->setPaused(false);
+    QTRY_COMPARE_WITH_TIMEOUT(m_console->model()->rowCount(), before + 2, 10000);
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("traffic.tsv"));
+    QCOMPARE(m_console->saveToFile(path), QString());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), before + 2 + 1);
+    QVERIFY(lines.first().startsWith(QStringLiteral("Time\tDirection")));
+    QVERIFY(lines.at(1).contains(QStringLiteral("<STX>01460")));
+    QVERIFY(!m_console->saveToFile(dir.filePath(QStringLiteral("no/such/dir/x.tsv"))).isEmpty());
+
+    QCOMPARE(m_console->copyRows().split(QLatin1Char('\n')).size(), before + 2);
+    m_console->clear();
+    QCOMPARE(m_console->model()->rowCount(), 0);
+}
+
+void TestToolsConsole::noConnection()
+{
+    open();
+    m_console->setTarget(nullptr, 1, {});
+    QCOMPARE(m_console->model()->rowCount(), 0);
+    m_console->sendBar()->setText(QStringLiteral("0140"));
+    m_console->sendBar()->send();
+    QVERIFY(m_console->sendBar()->resultText().contains(QStringLiteral("No connection")));
+
+    // A session deleted under the console leaves it in "no connection" too.
+    m_console->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_rig.session->submit(Request::briefStatus(1));
+    QTRY_VERIFY_WITH_TIMEOUT(m_console->model()->rowCount() >= 2, 10000);
+    m_rig.session.reset();
+    m_console->sendBar()->send();
+    QVERIFY(m_console->sendBar()->resultText().contains(QStringLiteral("No connection")));
+    m_console->setTarget(nullptr, 2, {});
+    QCOMPARE(m_console->model()->rowCount(), 0);
+}
+
+QTEST_MAIN(TestToolsConsole)
+#include "tst_tools_console.moc"

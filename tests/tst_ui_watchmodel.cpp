@@ -1,0 +1,202 @@
+// The watch table model and the typed-input parsing, without a window or a PLC: values arrive as
+// the session would deliver them.
+#include "watchinput.h"
+#include "watchtablemodel.h"
+#include "writerequest.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace Fatek;
+
+class TestUiWatchModel : public QObject
+{
+    Q_OBJECT
+
+private:
+    static WatchItemSpec item(const char *address, DisplayFormat format, quint8 station = 1)
+    {
+        WatchItemSpec spec;
+        spec.address = *Address::parse(address);
+        spec.format = format;
+        spec.station = station;
+        return spec;
+    }
+    static WatchValue good(std::uint64_t id, std::uint32_t value)
+    {
+        WatchValue v;
+        v.itemId = id;
+        v.value = value;
+        v.quality = ValueQuality::Good;
+        v.timestamp = QDateTime::currentDateTimeUtc();
+        return v;
+    }
+
+private Q_SLOTS:
+    void parseAddressesAndRanges()
+    {
+        const auto list = WatchInput::parseAddresses(QStringLiteral("R100 X0..X3, DR10;Y0"));
+        QVERIFY(list.ok());
+        QCOMPARE(list->size(), 7);
+        QCOMPARE(QString::fromStdString(list->at(1).toString()), QStringLiteral("X0"));
+        QCOMPARE(QString::fromStdString(list->at(4).toString()), QStringLiteral("X3"));
+        QCOMPARE(QString::fromStdString(list->at(5).toString()), QStringLiteral("DR10"));
+    }
+
+    void badAddressNamesTheToken()
+    {
+        const auto list = WatchInput::parseAddresses(QStringLiteral("R100 Q7 R101"));
+        QVERIFY(!list.ok());
+        QVERIFY2(QString::fromStdString(list.error().message).contains(QStringLiteral("\"Q7\"")),
+                 list.error().message.c_str());
+        QVERIFY(!WatchInput::parseAddresses(QStringLiteral("   ")).ok());
+    }
+
+    void pastedCsvKeepsNames()
+    {
+        const auto rows = WatchInput::parsePasted(QStringLiteral("R100,Tank level\nR101,Pump speed\n"), 3);
+        QVERIFY2(rows.ok(), rows.ok() ? "" : rows.error().message.c_str());
+        QCOMPARE(rows->size(), 2);
+        QCOMPARE(rows->at(0).name, QStringLiteral("Tank level"));
+        QCOMPARE(rows->at(1).station, quint8(3));
+        const auto withFormat = WatchInput::parsePasted(QStringLiteral("R10\tfloat\tFlow\n"), 1);
+        QVERIFY2(withFormat.ok(), withFormat.ok() ? "" : withFormat.error().message.c_str());
+        QCOMPARE(withFormat->at(0).format, DisplayFormat::Float32);
+        QCOMPARE(withFormat->at(0).name, QStringLiteral("Flow"));
+        const auto positional = WatchInput::parsePasted(QStringLiteral("R10,4,hex,Speed"), 1);
+        QVERIFY(positional.ok());
+        QCOMPARE(positional->at(0).station, quint8(4));
+        QVERIFY(!WatchInput::parsePasted(QStringLiteral("R10,Flow\nQ9,Bad"), 1).ok());
+        const auto plain = WatchInput::parsePasted(QStringLiteral("R100, R101\nX0..X1"), 2);
+        QVERIFY(plain.ok());
+        QCOMPARE(plain->size(), 4);
+        QCOMPARE(plain->at(3).format, DisplayFormat::Bit);
+    }
+
+    void floatJoinsTwoRegisters()
+    {
+        WatchTableModel model;
+        model.addItems({item("R100", DisplayFormat::Float32)});
+        const QList<WatchEntry> entries = model.pollEntries(250);
+        QCOMPARE(entries.size(), 2);
+        QCOMPARE(QString::fromStdString(entries.at(1).address.toString()), QStringLiteral("R101"));
+        QCOMPARE(entries.at(0).intervalMs, 250);
+        QVERIFY(!model.hasValue(0));
+        // 1.5f = 0x3FC00000: high word in R101.
+        model.applyValues({good(entries.at(0).id, 0x0000), good(entries.at(1).id, 0x3FC0)});
+        QVERIFY(model.hasValue(0));
+        QCOMPARE(model.rawValue(0), std::uint64_t(0x3FC00000));
+        QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(), QStringLiteral("1.5"));
+    }
+
+    void doubleJoinsFourRegistersAndChangedValuesFlash()
+    {
+        WatchTableModel model;
+        model.addItems({item("R0", DisplayFormat::Double64)});
+        const QList<WatchEntry> entries = model.pollEntries(500);
+        QCOMPARE(entries.size(), 4);
+        // 1.0 = 0x3FF0000000000000: the highest word in R3.
+        model.applyValues({good(entries.at(0).id, 0), good(entries.at(1).id, 0), good(entries.at(2).id, 0),
+                           good(entries.at(3).id, 0x3FF0)});
+        QCOMPARE(model.valueText(0), QStringLiteral("1"));
+        const QModelIndex value = model.index(0, WatchTableModel::ValueColumn);
+        QVERIFY(value.data(Qt::BackgroundRole).isValid()); // a new value flashes ...
+        QTRY_VERIFY_WITH_TIMEOUT(!value.data(Qt::BackgroundRole).isValid(), 10000); // ... briefly
+        // The same value again does not flash.
+        model.applyValues({good(entries.at(3).id, 0x3FF0)});
+        QVERIFY(!value.data(Qt::BackgroundRole).isValid());
+        // Swapped words: the same registers read the other way round.
+        QVERIFY(model.setFormat(0, DisplayFormat::Double64, true).ok());
+        QCOMPARE(model.pollEntries(500).size(), 4);
+    }
+
+    void batchGivesCoalescedDataChanged()
+    {
+        WatchTableModel model;
+        model.addItems({item("R0", DisplayFormat::Signed), item("R1", DisplayFormat::Signed),
+                        item("R2", DisplayFormat::Signed), item("R5", DisplayFormat::Signed)});
+        const QList<WatchEntry> entries = model.pollEntries(500);
+        QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+        QSignalSpy reset(&model, &QAbstractItemModel::modelReset);
+        model.applyValues({good(entries.at(0).id, 1), good(entries.at(1).id, 2), good(entries.at(3).id, 4)});
+        QCOMPARE(reset.count(), 0);
+        QCOMPARE(changed.count(), 2); // rows 0..1, row 3
+        QCOMPARE(changed.at(0).at(0).toModelIndex().row(), 0);
+        QCOMPARE(changed.at(0).at(1).toModelIndex().row(), 1);
+        QCOMPARE(changed.at(1).at(0).toModelIndex().row(), 3);
+    }
+
+    void staleKeepsValueWithReason()
+    {
+        WatchTableModel model;
+        model.addItems({item("R7", DisplayFormat::Unsigned)});
+        const quint64 id = model.pollEntries(500).at(0).id;
+        model.applyValues({good(id, 42)});
+        WatchValue stale;
+        stale.itemId = id;
+        stale.value = 42;
+        stale.quality = ValueQuality::Stale;
+        stale.error = QStringLiteral("timeout after 1000 ms");
+        model.applyValues({stale});
+        QCOMPARE(model.quality(0), ValueQuality::Stale);
+        QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(), QStringLiteral("42"));
+        QVERIFY(model.data(model.index(0, WatchTableModel::QualityColumn), Qt::ToolTipRole)
+                    .toString()
+                    .contains(QStringLiteral("timeout after 1000 ms")));
+        QCOMPARE(model.data(model.index(0, WatchTableModel::QualityColumn)).toString(), QStringLiteral("stale"));
+    }
+
+    void typedValueBecomesWriteRequest()
+    {
+        WatchTableModel model;
+        model.addItems({item("R10", DisplayFormat::Hex), item("Y3", DisplayFormat::Bit)});
+        const QList<WatchEntry> entries = model.pollEntries(500);
+        model.applyValues({good(entries.at(0).id, 0), good(entries.at(1).id, 0)});
+        QSignalSpy writes(&model, &WatchTableModel::writeRequested);
+        QSignalSpy rejected(&model, &WatchTableModel::inputRejected);
+        QVERIFY(!model.setData(model.index(0, WatchTableModel::ValueColumn), QStringLiteral("1Ah")));
+        QCOMPARE(writes.count(), 1);
+        QCOMPARE(writes.at(0).at(1).toULongLong(), 0x1Aull);
+        model.setData(model.index(0, WatchTableModel::ValueColumn), QStringLiteral("0x10000"));
+        QCOMPARE(rejected.count(), 1);
+        QCOMPARE(writes.count(), 1);
+        model.setData(model.index(1, WatchTableModel::ValueColumn), Qt::Checked, Qt::CheckStateRole);
+        QCOMPARE(writes.count(), 2);
+        QCOMPARE(writes.at(1).at(0).toInt(), 1);
+        QCOMPARE(writes.at(1).at(1).toULongLong(), 1ull);
+    }
+
+    void formatChangeRepollsAndIsValidated()
+    {
+        WatchTableModel model;
+        model.addItems({item("R65535", DisplayFormat::Signed), item("X0", DisplayFormat::Bit)});
+        QSignalSpy rejected(&model, &WatchTableModel::inputRejected);
+        // R65535 as float would need R65536.
+        QVERIFY(!model.setFormat(0, DisplayFormat::Float32, false).ok());
+        QVERIFY(!model.availableFormats(1).contains(DisplayFormat::Float32));
+        QVERIFY(!model.setData(model.index(1, WatchTableModel::FormatColumn), QStringLiteral("float")));
+        QCOMPARE(rejected.count(), 1);
+        model.addItems({item("R0", DisplayFormat::Signed)});
+        QSignalSpy repoll(&model, &WatchTableModel::pollListChanged);
+        QVERIFY(model.setFormat(2, DisplayFormat::Double64, true).ok());
+        QCOMPARE(repoll.count(), 1);
+        QCOMPARE(model.pollEntries(500).size(), 1 + 1 + 4);
+    }
+
+    void writeRequestCoversEverySpannedRegister()
+    {
+        WatchItemSpec f = item("R20", DisplayFormat::Float32, 2);
+        const Request r = makeWriteRequest(f, 0x3FC00000);
+        QCOMPARE(r.command, Command::WriteRegisters);
+        QCOMPARE(r.station, std::uint8_t(2));
+        QCOMPARE(r.values, (std::vector<std::uint32_t>{0x0000, 0x3FC0}));
+        const Request d = makeWriteRequest(item("DR4", DisplayFormat::Unsigned), 99999);
+        QCOMPARE(d.values, (std::vector<std::uint32_t>{99999}));
+        const Request b = makeWriteRequest(item("Y1", DisplayFormat::Bit), 1);
+        QCOMPARE(b.command, Command::WriteDiscretes);
+        QCOMPARE(b.values, (std::vector<std::uint32_t>{1}));
+    }
+};
+
+QTEST_MAIN(TestUiWatchModel)
+#include "tst_ui_watchmodel.moc"

@@ -1,0 +1,229 @@
+#include "connectiondialog.h"
+
+#include "serialtransport.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+namespace Fatek {
+
+namespace {
+
+QComboBox *comboOf(const QList<QPair<QString, int>> &items, QWidget *parent)
+{
+    auto *combo = new QComboBox(parent);
+    for (const auto &item : items)
+        combo->addItem(item.first, item.second);
+    return combo;
+}
+
+void selectData(QComboBox *combo, int value)
+{
+    const int i = combo->findData(value);
+    if (i >= 0)
+        combo->setCurrentIndex(i);
+}
+
+} // namespace
+
+ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget *parent)
+    : QDialog(parent)
+    , m_recent(recent)
+{
+    setWindowTitle(tr("New Connection"));
+
+    m_recentCombo = new QComboBox(this);
+    m_recentCombo->addItem(tr("(new)"));
+    for (const SavedConnection &c : recent)
+        m_recentCombo->addItem(QStringLiteral("%1 — %2").arg(c.name, c.settings.toString()));
+    m_recentCombo->setEnabled(!recent.isEmpty());
+
+    m_name = new QLineEdit(this);
+    m_name->setPlaceholderText(tr("e.g. Pump station"));
+    m_kind = comboOf({{tr("Serial (RS-232 / RS-485)"), int(LinkSettings::Kind::Serial)},
+                      {tr("TCP"), int(LinkSettings::Kind::Tcp)},
+                      {tr("UDP"), int(LinkSettings::Kind::Udp)}}, this);
+
+    // Serial page
+    auto *serialPage = new QWidget(this);
+    auto *serialForm = new QFormLayout(serialPage);
+    serialForm->setContentsMargins(0, 0, 0, 0);
+    m_portName = new QComboBox(serialPage);
+    m_portName->setEditable(true);
+    auto *refresh = new QPushButton(tr("Refresh"), serialPage);
+    auto *portRow = new QHBoxLayout;
+    portRow->addWidget(m_portName, 1);
+    portRow->addWidget(refresh);
+    serialForm->addRow(tr("&Port:"), portRow);
+    m_baudRate = new QComboBox(serialPage);
+    m_baudRate->setEditable(true);
+    for (int baud : {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600})
+        m_baudRate->addItem(QString::number(baud), baud);
+    serialForm->addRow(tr("&Baud rate:"), m_baudRate);
+    m_dataBits = comboOf({{QStringLiteral("7"), 7}, {QStringLiteral("8"), 8}}, serialPage);
+    serialForm->addRow(tr("&Data bits:"), m_dataBits);
+    m_parity = comboOf({{tr("None"), int(LinkSettings::Parity::None)},
+                        {tr("Even"), int(LinkSettings::Parity::Even)},
+                        {tr("Odd"), int(LinkSettings::Parity::Odd)}}, serialPage);
+    serialForm->addRow(tr("Pa&rity:"), m_parity);
+    m_stopBits = comboOf({{QStringLiteral("1"), 1}, {QStringLiteral("2"), 2}}, serialPage);
+    serialForm->addRow(tr("&Stop bits:"), m_stopBits);
+    m_flowControl = comboOf({{tr("None"), int(LinkSettings::FlowControl::None)},
+                             {tr("Hardware (RTS/CTS)"), int(LinkSettings::FlowControl::Hardware)},
+                             {tr("Software (XON/XOFF)"), int(LinkSettings::FlowControl::Software)}},
+                            serialPage);
+    serialForm->addRow(tr("&Flow control:"), m_flowControl);
+
+    // Network page
+    auto *netPage = new QWidget(this);
+    auto *netForm = new QFormLayout(netPage);
+    netForm->setContentsMargins(0, 0, 0, 0);
+    m_host = new QLineEdit(netPage);
+    netForm->addRow(tr("&Host:"), m_host);
+    m_port = new QSpinBox(netPage);
+    m_port->setRange(1, 65535);
+    netForm->addRow(tr("P&ort:"), m_port);
+
+    m_pages = new QStackedWidget(this);
+    m_pages->addWidget(serialPage);
+    m_pages->addWidget(netPage);
+
+    m_protocol = comboOf({{tr("FACON (ASCII)"), int(LinkSettings::ProtocolChoice::Facon)},
+                          {tr("Binary"), int(LinkSettings::ProtocolChoice::Binary)},
+                          {tr("Auto-detect"), int(LinkSettings::ProtocolChoice::Auto)}}, this);
+    m_station = new QSpinBox(this);
+    m_station->setRange(1, 254);
+    m_timeout = new QSpinBox(this);
+    m_timeout->setRange(20, 60000);
+    m_timeout->setSingleStep(100);
+    m_timeout->setSuffix(tr(" ms"));
+    m_retries = new QSpinBox(this);
+    m_retries->setRange(0, 10);
+
+    auto *form = new QFormLayout;
+    form->addRow(tr("Re&cent:"), m_recentCombo);
+    form->addRow(tr("&Name:"), m_name);
+    form->addRow(tr("&Link:"), m_kind);
+    form->addRow(m_pages);
+    form->addRow(tr("Pro&tocol:"), m_protocol);
+    form->addRow(tr("S&tation:"), m_station);
+    form->addRow(tr("T&imeout:"), m_timeout);
+    form->addRow(tr("R&etries:"), m_retries);
+
+    m_error = new QLabel(this);
+    m_error->setWordWrap(true);
+    m_error->setVisible(false);
+    m_buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    m_buttons->button(QDialogButtonBox::Ok)->setText(tr("C&onnect"));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_error);
+    layout->addWidget(m_buttons);
+
+    connect(m_buttons, &QDialogButtonBox::accepted, this, &ConnectionDialog::accept);
+    connect(m_buttons, &QDialogButtonBox::rejected, this, &ConnectionDialog::reject);
+    connect(refresh, &QPushButton::clicked, this, &ConnectionDialog::refreshPorts);
+    connect(m_kind, &QComboBox::currentIndexChanged, this, &ConnectionDialog::updateKind);
+    connect(m_recentCombo, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (index > 0 && index <= m_recent.size())
+            setConnection(m_recent.at(index - 1));
+    });
+
+    refreshPorts();
+    SavedConnection defaults;
+    defaults.name = tr("PLC");
+    setConnection(defaults);
+}
+
+void ConnectionDialog::refreshPorts()
+{
+    const QString current = m_portName->currentText();
+    m_portName->clear();
+    for (const SerialPortEntry &port : SerialTransport::availablePorts()) {
+        QString label = port.systemPath;
+        if (!port.description.isEmpty())
+            label += QStringLiteral(" — ") + port.description;
+        m_portName->addItem(label, port.systemPath);
+    }
+    if (!current.isEmpty())
+        m_portName->setCurrentText(current);
+}
+
+void ConnectionDialog::updateKind()
+{
+    const auto kind = static_cast<LinkSettings::Kind>(m_kind->currentData().toInt());
+    m_pages->setCurrentIndex(kind == LinkSettings::Kind::Serial ? 0 : 1);
+}
+
+void ConnectionDialog::setConnection(const SavedConnection &c)
+{
+    const LinkSettings &s = c.settings;
+    m_name->setText(c.name);
+    selectData(m_kind, int(s.kind));
+    const int port = m_portName->findData(s.portName);
+    if (port >= 0)
+        m_portName->setCurrentIndex(port);
+    else
+        m_portName->setCurrentText(s.portName);
+    m_baudRate->setCurrentText(QString::number(s.baudRate));
+    selectData(m_dataBits, s.dataBits);
+    selectData(m_parity, int(s.parity));
+    selectData(m_stopBits, s.stopBits);
+    selectData(m_flowControl, int(s.flowControl));
+    m_host->setText(s.host);
+    m_port->setValue(s.port);
+    selectData(m_protocol, int(s.protocol));
+    m_station->setValue(c.station);
+    m_timeout->setValue(s.timeoutMs);
+    m_retries->setValue(s.retries);
+    updateKind();
+}
+
+SavedConnection ConnectionDialog::connection() const
+{
+    SavedConnection c;
+    LinkSettings &s = c.settings;
+    c.name = m_name->text().trimmed();
+    c.station = static_cast<quint8>(m_station->value());
+    s.kind = static_cast<LinkSettings::Kind>(m_kind->currentData().toInt());
+    // An item picked from the list carries the system path; typed text is taken as is.
+    const int portIndex = m_portName->findText(m_portName->currentText());
+    s.portName = portIndex >= 0 ? m_portName->itemData(portIndex).toString()
+                                : m_portName->currentText().trimmed();
+    s.baudRate = m_baudRate->currentText().toInt();
+    s.dataBits = m_dataBits->currentData().toInt();
+    s.parity = static_cast<LinkSettings::Parity>(m_parity->currentData().toInt());
+    s.stopBits = m_stopBits->currentData().toInt();
+    s.flowControl = static_cast<LinkSettings::FlowControl>(m_flowControl->currentData().toInt());
+    s.host = m_host->text().trimmed();
+    s.port = static_cast<quint16>(m_port->value());
+    s.protocol = static_cast<LinkSettings::ProtocolChoice>(m_protocol->currentData().toInt());
+    s.timeoutMs = m_timeout->value();
+    s.retries = m_retries->value();
+    return c;
+}
+
+void ConnectionDialog::accept()
+{
+    const SavedConnection c = connection();
+    QString problem = c.name.isEmpty() ? tr("Give the connection a name.") : c.settings.validate();
+    if (problem.isEmpty() && c.settings.kind == LinkSettings::Kind::Serial && c.settings.baudRate <= 0)
+        problem = tr("The baud rate must be a positive number.");
+    if (!problem.isEmpty()) {
+        m_error->setText(problem);
+        m_error->setVisible(true);
+        return;
+    }
+    QDialog::accept();
+}
+
+} // namespace Fatek

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "linksettingsio.h"
+
+#include <QDialog>
+
+class QComboBox;
+class QDialogButtonBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+class QStackedWidget;
+
+namespace Fatek {
+
+// Asks for a new connection: name, medium (serial with every line setting, TCP, UDP), protocol,
+// station, timeout and retries. Recent connections prefill it.
+class ConnectionDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    explicit ConnectionDialog(const QList<SavedConnection> &recent, QWidget *parent = nullptr);
+
+    SavedConnection connection() const;
+    void setConnection(const SavedConnection &connection);
+
+    void accept() override;
+
+private:
+    void refreshPorts();
+    void updateKind();
+
+    QList<SavedConnection> m_recent;
+    QComboBox *m_recentCombo;
+    QLineEdit *m_name;
+    QComboBox *m_kind;
+    QStackedWidget *m_pages;
+    QComboBox *m_portName;
+    QComboBox *m_baudRate;
+    QComboBox *m_dataBits;
+    QComboBox *m_parity;
+    QComboBox *m_stopBits;
+    QComboBox *m_flowControl;
+    QLineEdit *m_host;
+    QSpinBox *m_port;
+    QComboBox *m_protocol;
+    QSpinBox *m_station;
+    QSpinBox *m_timeout;
+    QSpinBox *m_retries;
+    QLabel *m_error;
+    QDialogButtonBox *m_buttons;
+};
+
+} // namespace Fatek

@@ -1,0 +1,133 @@
+#include "connectionlistmodel.h"
+
+#include "connectionmanager.h"
+
+namespace Fatek {
+
+ConnectionListModel::ConnectionListModel(ConnectionManager *manager, QObject *parent)
+    : QAbstractTableModel(parent)
+    , m_manager(manager)
+{
+    // The manager signals before/after; rows map 1:1 to manager->connections().
+    connect(manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
+        const int row = m_manager->indexOf(c);
+        beginInsertRows({}, row, row);
+        endInsertRows();
+    });
+    connect(manager, &ConnectionManager::connectionAboutToBeRemoved, this, [this](Connection *c) {
+        const int row = m_manager->indexOf(c);
+        beginRemoveRows({}, row, row);
+    });
+    connect(manager, &ConnectionManager::connectionRemoved, this, [this] { endRemoveRows(); });
+    connect(manager, &ConnectionManager::connectionChanged, this, [this](Connection *c) {
+        const int row = m_manager->indexOf(c);
+        if (row >= 0)
+            Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    });
+}
+
+int ConnectionListModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : static_cast<int>(m_manager->connections().size());
+}
+
+int ConnectionListModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+Connection *ConnectionListModel::connectionAt(int row) const
+{
+    return m_manager->connection(row);
+}
+
+QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
+{
+    const Connection *c = connectionAt(index.row());
+    if (!c)
+        return {};
+    const StationStatistics &t = c->statistics().total;
+    if (role == Qt::DisplayRole || role == Qt::EditRole) {
+        switch (index.column()) {
+        case NameColumn: return c->name();
+        case LinkColumn: return c->settings().toString();
+        case StationColumn: return c->station();
+        case StateColumn: return linkStateName(c->linkState());
+        case RateColumn: return QString::number(c->requestsPerSecond(), 'f', 1);
+        case ErrorsColumn: return QString::number(c->errorCount());
+        case RttColumn:
+            return t.answers ? QStringLiteral("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–");
+        default: return {};
+        }
+    }
+    if (role == Qt::ToolTipRole) {
+        switch (index.column()) {
+        case StateColumn:
+            return c->linkReason().isEmpty() ? linkStateName(c->linkState()) : c->linkReason();
+        case ErrorsColumn:
+            return tr("%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries")
+                .arg(t.timeouts).arg(t.checksumErrors).arg(t.plcErrors).arg(t.retries);
+        case RttColumn:
+            return tr("Round trip: last %1 ms, median %2 ms, 99%% %3 ms")
+                .arg(t.rttLastMs, 0, 'f', 1).arg(t.rttP50Ms, 0, 'f', 1).arg(t.rttP99Ms, 0, 'f', 1);
+        case StationColumn:
+            return tr("Station the tools act on; double-click to change");
+        default: {
+            // Per station: several PLCs on one RS-485 line share a connection.
+            QStringList lines{c->settings().toString()};
+            const SessionStatistics statistics = c->statistics();
+            for (auto it = statistics.stations.cbegin(); it != statistics.stations.cend(); ++it) {
+                const StationStatistics &s = it.value();
+                lines << tr("Station %1: %2 requests, %3 errors, RTT %4 ms")
+                             .arg(it.key())
+                             .arg(s.requests)
+                             .arg(s.timeouts + s.checksumErrors + s.plcErrors)
+                             .arg(s.rttMeanMs, 0, 'f', 1);
+            }
+            return lines.join(QLatin1Char('\n'));
+        }
+        }
+    }
+    if (role == Qt::TextAlignmentRole && index.column() >= StationColumn && index.column() != StateColumn)
+        return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+    return {};
+}
+
+QVariant ConnectionListModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case NameColumn: return tr("Name");
+    case LinkColumn: return tr("Link");
+    case StationColumn: return tr("Station");
+    case StateColumn: return tr("State");
+    case RateColumn: return tr("Req/s");
+    case ErrorsColumn: return tr("Errors");
+    case RttColumn: return tr("RTT");
+    default: return {};
+    }
+}
+
+Qt::ItemFlags ConnectionListModel::flags(const QModelIndex &index) const
+{
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (index.column() == StationColumn)
+        f |= Qt::ItemIsEditable;
+    return f;
+}
+
+bool ConnectionListModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    Connection *c = connectionAt(index.row());
+    if (!c || role != Qt::EditRole || index.column() != StationColumn)
+        return false;
+    bool ok = false;
+    const int station = value.toInt(&ok);
+    if (!ok || station < 0 || station > 254)
+        return false;
+    c->setStation(static_cast<quint8>(station));
+    return true;
+}
+
+} // namespace Fatek

@@ -1,0 +1,112 @@
+#include "connectionmanager.h"
+
+#include <QSettings>
+
+namespace Fatek {
+
+namespace {
+const QString recentKey = QStringLiteral("connections/recent");
+}
+
+ConnectionManager::ConnectionManager(QObject *parent)
+    : QObject(parent)
+{
+    registerSessionMetaTypes();
+}
+
+ConnectionManager::~ConnectionManager()
+{
+    // Sessions stop their threads in their destructors; do it before the QObject tree goes.
+    const QList<Connection *> all = m_connections;
+    m_connections.clear();
+    qDeleteAll(all);
+}
+
+int ConnectionManager::indexOf(const Connection *connection) const
+{
+    for (int i = 0; i < m_connections.size(); ++i) {
+        if (m_connections.at(i) == connection)
+            return i;
+    }
+    return -1;
+}
+
+Connection *ConnectionManager::find(const QString &name) const
+{
+    for (Connection *c : m_connections) {
+        if (c->name() == name)
+            return c;
+    }
+    return nullptr;
+}
+
+QString ConnectionManager::uniqueName(const QString &name) const
+{
+    const QString base = name.trimmed().isEmpty() ? QStringLiteral("PLC") : name.trimmed();
+    QString candidate = base;
+    for (int n = 2; find(candidate); ++n)
+        candidate = QStringLiteral("%1 (%2)").arg(base).arg(n);
+    return candidate;
+}
+
+Connection *ConnectionManager::open(const SavedConnection &saved)
+{
+    SavedConnection named = saved;
+    named.name = uniqueName(saved.name);
+    auto *connection = new Connection(named, this);
+    connection->session()->setReadOnly(m_readOnly);
+    connect(connection, &Connection::changed, this,
+            [this, connection] { Q_EMIT connectionChanged(connection); });
+    m_connections.append(connection);
+    // Open first: whoever reacts to connectionAdded (tools reading the PLC status) may submit at
+    // once, and requests wait while the link connects but fail on a closed one.
+    connection->open();
+    Q_EMIT connectionAdded(connection);
+    return connection;
+}
+
+void ConnectionManager::remove(Connection *connection)
+{
+    const int index = indexOf(connection);
+    if (index < 0)
+        return;
+    Q_EMIT connectionAboutToBeRemoved(connection);
+    m_connections.removeAt(index);
+    Q_EMIT connectionRemoved(connection);
+    delete connection;
+}
+
+void ConnectionManager::setReadOnly(bool readOnly)
+{
+    m_readOnly = readOnly;
+    for (Connection *c : std::as_const(m_connections))
+        c->session()->setReadOnly(readOnly);
+}
+
+QList<SavedConnection> ConnectionManager::recent() const
+{
+    QList<SavedConnection> list;
+    const QVariantList stored = QSettings().value(recentKey).toList();
+    for (const QVariant &v : stored) {
+        SavedConnection c = LinkSettingsIo::fromMap(v.toMap());
+        if (!c.name.isEmpty())
+            list.append(c);
+    }
+    return list;
+}
+
+void ConnectionManager::addRecent(const SavedConnection &saved)
+{
+    QList<SavedConnection> list = recent();
+    list.removeIf([&](const SavedConnection &c) { return c.name == saved.name; });
+    list.prepend(saved);
+    while (list.size() > maxRecent)
+        list.removeLast();
+    QVariantList stored;
+    for (const SavedConnection &c : std::as_const(list))
+        stored.append(LinkSettingsIo::toMap(c));
+    QSettings().setValue(recentKey, stored);
+    Q_EMIT recentChanged();
+}
+
+} // namespace Fatek

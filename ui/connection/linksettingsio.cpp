@@ -1,0 +1,68 @@
+#include "linksettingsio.h"
+
+namespace Fatek::LinkSettingsIo {
+
+namespace {
+
+template<typename E>
+int toInt(E value)
+{
+    return static_cast<int>(value);
+}
+
+template<typename E>
+E toEnum(const QVariant &value, E fallback, int count)
+{
+    bool ok = false;
+    const int v = value.toInt(&ok);
+    return (ok && v >= 0 && v < count) ? static_cast<E>(v) : fallback;
+}
+
+} // namespace
+
+QVariantMap toMap(const SavedConnection &c)
+{
+    const LinkSettings &s = c.settings;
+    QVariantMap m;
+    m[QStringLiteral("name")] = c.name;
+    m[QStringLiteral("station")] = c.station;
+    m[QStringLiteral("kind")] = toInt(s.kind);
+    m[QStringLiteral("host")] = s.host;
+    m[QStringLiteral("port")] = s.port;
+    m[QStringLiteral("portName")] = s.portName;
+    m[QStringLiteral("baudRate")] = s.baudRate;
+    m[QStringLiteral("dataBits")] = s.dataBits;
+    m[QStringLiteral("parity")] = toInt(s.parity);
+    m[QStringLiteral("stopBits")] = s.stopBits;
+    m[QStringLiteral("flowControl")] = toInt(s.flowControl);
+    m[QStringLiteral("protocol")] = toInt(s.protocol);
+    m[QStringLiteral("timeoutMs")] = s.timeoutMs;
+    m[QStringLiteral("retries")] = s.retries;
+    return m;
+}
+
+SavedConnection fromMap(const QVariantMap &m)
+{
+    SavedConnection c;
+    LinkSettings &s = c.settings;
+    c.name = m.value(QStringLiteral("name")).toString();
+    const int station = m.value(QStringLiteral("station"), 1).toInt();
+    c.station = static_cast<quint8>(station >= 0 && station <= 254 ? station : 1);
+    s.kind = toEnum(m.value(QStringLiteral("kind")), s.kind, 3);
+    s.host = m.value(QStringLiteral("host"), s.host).toString();
+    const int port = m.value(QStringLiteral("port"), s.port).toInt();
+    if (port > 0 && port <= 65535)
+        s.port = static_cast<quint16>(port);
+    s.portName = m.value(QStringLiteral("portName"), s.portName).toString();
+    s.baudRate = m.value(QStringLiteral("baudRate"), s.baudRate).toInt();
+    s.dataBits = m.value(QStringLiteral("dataBits"), s.dataBits).toInt();
+    s.parity = toEnum(m.value(QStringLiteral("parity")), s.parity, 3);
+    s.stopBits = m.value(QStringLiteral("stopBits"), s.stopBits).toInt();
+    s.flowControl = toEnum(m.value(QStringLiteral("flowControl")), s.flowControl, 3);
+    s.protocol = toEnum(m.value(QStringLiteral("protocol")), s.protocol, 3);
+    s.timeoutMs = m.value(QStringLiteral("timeoutMs"), s.timeoutMs).toInt();
+    s.retries = m.value(QStringLiteral("retries"), s.retries).toInt();
+    return c;
+}
+
+} // namespace Fatek::LinkSettingsIo

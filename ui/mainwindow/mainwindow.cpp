@@ -1,0 +1,565 @@
+#include "mainwindow.h"
+
+#include "connectiondialog.h"
+#include "connectionmanager.h"
+#include "connectionspanel.h"
+#include "demosimulator.h"
+#include "watchtablemodel.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFile>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QTableView>
+#include <QToolBar>
+
+#if defined(FATEK_HAVE_UITOOLS) && __has_include("plccontrolpanel.h") && __has_include("forcingpanel.h") \
+    && __has_include("loopbackdialog.h") && __has_include("rawconsole.h")
+#define FATEK_WITH_TOOLS 1
+#include "forcingpanel.h"
+#include "loopbackdialog.h"
+#include "plccontrolpanel.h"
+#include "rawconsole.h"
+#endif
+
+// Q_INIT_RESOURCE must be called from the global namespace.
+static void initStudioResources()
+{
+    Q_INIT_RESOURCE(studio);
+}
+
+namespace Fatek {
+
+namespace {
+const QString geometryKey = QStringLiteral("mainwindow/geometry");
+const QString stateKey = QStringLiteral("mainwindow/state");
+const QString directoryKey = QStringLiteral("preferences/lastDirectory");
+const QString lastListKey = QStringLiteral("preferences/lastWatchList");
+const QString reopenKey = QStringLiteral("preferences/reopenLastWatchList");
+} // namespace
+
+MainWindow::MainWindow(bool readOnly, QWidget *parent)
+    : QMainWindow(parent)
+    , m_readOnly(readOnly)
+    , m_manager(new ConnectionManager(this))
+{
+    initStudioResources();
+    setObjectName(QStringLiteral("mainWindow"));
+    setWindowIcon(QIcon(QStringLiteral(":/icons/fatek-studio.svg")));
+    setWindowTitle(readOnly ? tr("FATEK Studio — Operator mode (read-only)") : tr("FATEK Studio"));
+    m_manager->setReadOnly(readOnly);
+
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("watchTabs"));
+    m_tabs->setTabsClosable(true);
+    m_tabs->setMovable(true);
+    m_tabs->setDocumentMode(true);
+    setCentralWidget(m_tabs);
+    connect(m_tabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeWatchTable);
+    connect(m_tabs->tabBar(), &QTabBar::tabBarDoubleClicked, this, &MainWindow::renameWatchTable);
+
+    m_connectionsPanel = new ConnectionsPanel(m_manager, this);
+    auto *connectionsDock = new QDockWidget(tr("Connections"), this);
+    connectionsDock->setObjectName(QStringLiteral("connectionsDock"));
+    connectionsDock->setWidget(m_connectionsPanel);
+    addDockWidget(Qt::BottomDockWidgetArea, connectionsDock);
+
+    m_linkStatus = new QLabel(tr("No connection"), this);
+    m_linkStatus->setObjectName(QStringLiteral("linkStatus"));
+    statusBar()->addPermanentWidget(m_linkStatus);
+    if (readOnly) {
+        m_modeLabel = new QLabel(tr("Operator mode (read-only)"), this);
+        m_modeLabel->setObjectName(QStringLiteral("modeLabel"));
+        QFont bold = m_modeLabel->font();
+        bold.setBold(true);
+        m_modeLabel->setFont(bold);
+        // Highlight colours of the palette: visible in light and dark themes alike.
+        m_modeLabel->setAutoFillBackground(true);
+        m_modeLabel->setBackgroundRole(QPalette::Highlight);
+        m_modeLabel->setForegroundRole(QPalette::HighlightedText);
+        m_modeLabel->setContentsMargins(6, 0, 6, 0);
+        statusBar()->addPermanentWidget(m_modeLabel);
+    }
+
+    createActions();
+    createTools();
+    addWatchTable();
+
+    connect(m_connectionsPanel, &ConnectionsPanel::currentConnectionChanged, this, [this] {
+        updateLinkStatus();
+        updateToolTargets();
+    });
+    connect(m_manager, &ConnectionManager::connectionChanged, this, [this](Connection *c) {
+        if (c == currentConnection()) {
+            updateLinkStatus();
+            updateToolTargets(); // the station may have changed
+        }
+    });
+    connect(m_manager, &ConnectionManager::recentChanged, this, &MainWindow::rebuildRecentMenu);
+    connect(m_manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
+        connect(c, &Connection::linkStateChanged, this, [this, c](LinkState state, const QString &reason) {
+            showStatus(reason.isEmpty() ? tr("%1: %2").arg(c->name(), linkStateName(state))
+                                        : tr("%1: %2 (%3)").arg(c->name(), linkStateName(state), reason));
+        });
+    });
+
+    resize(1280, 800);
+    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("connectionsDock")))
+        resizeDocks({dock}, {150}, Qt::Vertical);
+    QSettings settings;
+    restoreGeometry(settings.value(geometryKey).toByteArray());
+    restoreState(settings.value(stateKey).toByteArray());
+}
+
+MainWindow::~MainWindow()
+{
+    // Tear down in dependency order: tools and tables hold sessions, the connections panel reads
+    // the manager, the manager owns the sessions.
+    disconnect(m_connectionsPanel, nullptr, this, nullptr);
+    disconnect(m_manager, nullptr, this, nullptr);
+    for (const auto &setTarget : std::as_const(m_toolTargets))
+        setTarget(nullptr, 1, QString());
+    while (m_tabs->count() > 0) {
+        QWidget *w = m_tabs->widget(0);
+        m_tabs->removeTab(0);
+        delete w;
+    }
+    delete m_connectionsPanel;
+    delete m_manager;
+}
+
+void MainWindow::createActions()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QToolBar *toolBar = addToolBar(tr("Main"));
+    toolBar->setObjectName(QStringLiteral("mainToolBar"));
+    toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+
+    auto *connectAction = file->addAction(QIcon(QStringLiteral(":/icons/connect.svg")), tr("&New Connection…"),
+                                          this, &MainWindow::newConnectionDialog);
+    connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+    m_recentMenu = file->addMenu(tr("&Recent Connections"));
+    rebuildRecentMenu();
+    auto *disconnectAction = file->addAction(QIcon(QStringLiteral(":/icons/disconnect.svg")),
+                                             tr("&Close Connection"), this,
+                                             &MainWindow::closeCurrentConnection);
+    disconnectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
+    file->addSeparator();
+    auto *newTable = file->addAction(QIcon(QStringLiteral(":/icons/table.svg")), tr("New &Watch Table"), this,
+                                     [this] { m_tabs->setCurrentWidget(addWatchTable()); });
+    newTable->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
+    auto *openAction = file->addAction(QIcon(QStringLiteral(":/icons/open.svg")), tr("&Open Watch List…"),
+                                       this, &MainWindow::openWatchListDialog);
+    openAction->setShortcut(QKeySequence::Open);
+    auto *saveAction = file->addAction(QIcon(QStringLiteral(":/icons/save.svg")), tr("&Save Watch List…"),
+                                       this, &MainWindow::saveWatchListDialog);
+    saveAction->setShortcut(QKeySequence::Save);
+    auto *importAction = file->addAction(tr("&Import CSV…"), this, &MainWindow::importCsvDialog);
+    importAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    auto *reopen = file->addAction(tr("Reopen Last Watch List at Start"));
+    reopen->setCheckable(true);
+    reopen->setChecked(QSettings().value(reopenKey, true).toBool());
+    connect(reopen, &QAction::toggled, this, [](bool on) { QSettings().setValue(reopenKey, on); });
+    file->addSeparator();
+    auto *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu *watch = menuBar()->addMenu(tr("&Watch"));
+    auto *focusAdd = watch->addAction(tr("&Add Items…"), this, [this] {
+        if (WatchTableWidget *t = currentWatchTable())
+            t->addressEdit()->setFocus();
+    });
+    focusAdd->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    auto *pause = watch->addAction(QIcon(QStringLiteral(":/icons/pause.svg")), tr("&Pause Table"), this, [this] {
+        if (WatchTableWidget *t = currentWatchTable())
+            t->setPaused(!t->isPaused());
+    });
+    pause->setShortcut(QKeySequence(Qt::Key_F8));
+    auto *closeTable = watch->addAction(tr("&Close Table"), this,
+                                        [this] { closeWatchTable(m_tabs->currentIndex()); });
+    closeTable->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F4));
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        m_viewMenu->addAction(dock->toggleViewAction());
+    m_viewMenu->addAction(toolBar->toggleViewAction());
+
+    m_toolsMenu = menuBar()->addMenu(tr("&Tools"));
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About FATEK Studio"), this, [this] {
+        QMessageBox::about(this, tr("About FATEK Studio"),
+                           tr("FATEK Studio %1\nCommissioning and monitoring tool for FATEK PLCs.")
+                               .arg(QApplication::applicationVersion()));
+    });
+
+    toolBar->addAction(connectAction);
+    toolBar->addAction(disconnectAction);
+    toolBar->addSeparator();
+    toolBar->addAction(newTable);
+    toolBar->addAction(openAction);
+    toolBar->addAction(saveAction);
+    toolBar->addAction(pause);
+}
+
+void MainWindow::createTools()
+{
+#ifdef FATEK_WITH_TOOLS
+    auto addDock = [this](auto *tool, const QString &title, const QString &name, Qt::DockWidgetArea area) {
+        auto *dock = new QDockWidget(title, this);
+        dock->setObjectName(name);
+        dock->setWidget(tool);
+        addDockWidget(area, dock);
+        m_toolsMenu->addAction(dock->toggleViewAction());
+        m_viewMenu->addAction(dock->toggleViewAction());
+        m_toolTargets.append([tool](Session *session, quint8 station, const QString &connection) {
+            tool->setTarget(session, station, connection);
+        });
+        return dock;
+    };
+    QDockWidget *control = addDock(new PlcControlPanel(this), tr("PLC Control"),
+                                   QStringLiteral("plcControlDock"), Qt::RightDockWidgetArea);
+    QDockWidget *forcing = addDock(new ForcingPanel(this), tr("Forcing"), QStringLiteral("forcingDock"),
+                                   Qt::RightDockWidgetArea);
+    QDockWidget *console = addDock(new RawConsole(this), tr("Raw Console"), QStringLiteral("rawConsoleDock"),
+                                   Qt::BottomDockWidgetArea);
+    control->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    forcing->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    console->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    tabifyDockWidget(control, forcing);
+    // The watch tables own the width: the side tools start hidden (Tools menu, shortcuts above);
+    // the console shares the bottom area with the connections as a tab. QSettings keeps what the
+    // user arranges after that.
+    control->hide();
+    forcing->hide();
+    if (auto *connectionsDock = findChild<QDockWidget *>(QStringLiteral("connectionsDock"))) {
+        tabifyDockWidget(connectionsDock, console);
+        connectionsDock->raise();
+    }
+    m_toolsMenu->addSeparator();
+    auto *loopback = m_toolsMenu->addAction(tr("&Loopback Test…"), this, [this] {
+        auto *dialog = new LoopbackDialog(this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        Connection *c = currentConnection();
+        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1), c ? c->name() : QString());
+        // Like the docks, an open dialog follows the current connection (and lets go of a closed one).
+        m_toolTargets.append([target = QPointer<LoopbackDialog>(dialog)](Session *session, quint8 station,
+                                                                          const QString &name) {
+            if (target)
+                target->setTarget(session, station, name);
+        });
+        dialog->show();
+    });
+    loopback->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
+#else
+    m_toolsMenu->addAction(tr("(commissioning tools not built)"))->setEnabled(false);
+#endif
+    updateToolTargets();
+}
+
+Connection *MainWindow::currentConnection() const
+{
+    return m_connectionsPanel->currentConnection();
+}
+
+Connection *MainWindow::openConnection(const SavedConnection &saved, bool remember)
+{
+    if (remember)
+        m_manager->addRecent(saved);
+    Connection *c = m_manager->open(saved);
+    showStatus(tr("Connecting to %1 (%2)…").arg(c->name(), c->settings().toString()));
+    return c;
+}
+
+void MainWindow::newConnectionDialog()
+{
+    ConnectionDialog dialog(m_manager->recent(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        openConnection(dialog.connection());
+}
+
+void MainWindow::closeCurrentConnection()
+{
+    if (Connection *c = currentConnection())
+        m_manager->remove(c);
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    const QList<SavedConnection> recent = m_manager->recent();
+    for (const SavedConnection &c : recent) {
+        m_recentMenu->addAction(QStringLiteral("%1 — %2").arg(c.name, c.settings.toString()), this,
+                                [this, c] { openConnection(c); });
+    }
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+WatchTableWidget *MainWindow::addWatchTable(const QString &name)
+{
+    auto *table = new WatchTableWidget(m_manager, m_tabs);
+    table->setName(name.isEmpty() ? tr("Watch %1").arg(++m_tableCounter) : name);
+    if (Connection *c = currentConnection())
+        table->setConnection(c);
+    if (m_confirm)
+        table->setConfirmHandler(m_confirm);
+    connect(table, &WatchTableWidget::statusMessage, this, &MainWindow::showStatus);
+    connect(table, &WatchTableWidget::nameChanged, this, [this, table](const QString &text) {
+        m_tabs->setTabText(m_tabs->indexOf(table), text);
+    });
+    m_tabs->addTab(table, QIcon(QStringLiteral(":/icons/table.svg")), table->name());
+    return table;
+}
+
+WatchTableWidget *MainWindow::currentWatchTable() const
+{
+    return qobject_cast<WatchTableWidget *>(m_tabs->currentWidget());
+}
+
+QList<WatchTableWidget *> MainWindow::watchTables() const
+{
+    QList<WatchTableWidget *> list;
+    for (int i = 0; i < m_tabs->count(); ++i) {
+        if (auto *t = qobject_cast<WatchTableWidget *>(m_tabs->widget(i)))
+            list.append(t);
+    }
+    return list;
+}
+
+void MainWindow::closeWatchTable(int index)
+{
+    QWidget *w = m_tabs->widget(index);
+    if (!w)
+        return;
+    m_tabs->removeTab(index);
+    w->deleteLater();
+}
+
+void MainWindow::renameWatchTable(int index)
+{
+    auto *table = qobject_cast<WatchTableWidget *>(m_tabs->widget(index));
+    if (!table)
+        return;
+    bool ok = false;
+    const QString name = QInputDialog::getText(this, tr("Rename Watch Table"), tr("Name:"), QLineEdit::Normal,
+                                               table->name(), &ok);
+    if (ok && !name.trimmed().isEmpty())
+        table->setName(name.trimmed());
+}
+
+Status MainWindow::saveWatchList(const QString &path) const
+{
+    WatchListFile file;
+    for (WatchTableWidget *t : watchTables())
+        file.tables.append(t->spec());
+    Status s = WatchList::saveToFile(file, path);
+    if (s)
+        QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
+    return s;
+}
+
+Status MainWindow::loadWatchList(const QString &path)
+{
+    const auto file = WatchList::loadFromFile(path);
+    if (!file)
+        return file.error();
+    while (m_tabs->count() > 0)
+        closeWatchTable(0);
+    for (const WatchTableSpec &spec : file->tables)
+        addWatchTable(spec.name)->setSpec(spec);
+    if (m_tabs->count() == 0)
+        addWatchTable();
+    QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
+    return Ok{};
+}
+
+bool MainWindow::restoreLastWatchList()
+{
+    QSettings settings;
+    const QString path = settings.value(lastListKey).toString();
+    if (!settings.value(reopenKey, true).toBool() || path.isEmpty() || !QFileInfo::exists(path))
+        return false;
+    if (const Status s = loadWatchList(path); !s) {
+        showStatus(tr("The last watch list %1 cannot be loaded: %2")
+                       .arg(QDir::toNativeSeparators(path), QString::fromStdString(s.error().message)));
+        return false;
+    }
+    showStatus(tr("Reopened %1.").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+Status MainWindow::importCsv(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return makeError(ErrorKind::InvalidRequest,
+                         tr("Cannot open %1: %2").arg(path, f.errorString()).toStdString());
+    const auto rows = WatchList::importCsv(f.readAll());
+    if (!rows)
+        return rows.error();
+    WatchTableWidget *table = currentWatchTable() ? currentWatchTable() : addWatchTable();
+    table->model()->addItems(*rows);
+    return Ok{};
+}
+
+void MainWindow::openWatchListDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Watch List"), lastDirectory(),
+                                                      tr("Watch lists (*.json);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    setLastDirectory(path);
+    if (const Status s = loadWatchList(path); !s) {
+        QMessageBox::warning(this, tr("Open Watch List"),
+                             tr("%1 cannot be loaded:\n%2")
+                                 .arg(QFileInfo(path).fileName(), QString::fromStdString(s.error().message)));
+        return;
+    }
+    showStatus(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
+}
+
+void MainWindow::saveWatchListDialog()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Watch List"), lastDirectory(),
+                                                tr("Watch lists (*.json)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    setLastDirectory(path);
+    if (const Status s = saveWatchList(path); !s) {
+        QMessageBox::warning(this, tr("Save Watch List"), QString::fromStdString(s.error().message));
+        return;
+    }
+    showStatus(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
+}
+
+void MainWindow::importCsvDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import CSV"), lastDirectory(),
+                                                      tr("CSV files (*.csv *.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    setLastDirectory(path);
+    if (const Status s = importCsv(path); !s) {
+        QMessageBox::warning(this, tr("Import CSV"),
+                             tr("%1 cannot be imported:\n%2")
+                                 .arg(QFileInfo(path).fileName(), QString::fromStdString(s.error().message)));
+        return;
+    }
+    showStatus(tr("Imported %1.").arg(QDir::toNativeSeparators(path)));
+}
+
+QString MainWindow::lastDirectory() const
+{
+    return QSettings().value(directoryKey).toString();
+}
+
+void MainWindow::setLastDirectory(const QString &path)
+{
+    QSettings().setValue(directoryKey, QFileInfo(path).absolutePath());
+}
+
+void MainWindow::startDemo()
+{
+    if (m_demo)
+        return;
+    m_demo = new DemoSimulator(this);
+    connect(m_demo, &DemoSimulator::failed, this, [this](const QString &reason) {
+        showStatus(tr("The demo simulator could not start: %1").arg(reason));
+    });
+    connect(m_demo, &DemoSimulator::ready, this, [this](quint16 port) {
+        SavedConnection saved;
+        saved.name = tr("Demo PLC");
+        saved.settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), port);
+        saved.station = 1;
+        // The port changes every run: not worth a recent entry.
+        Connection *c = openConnection(saved, false);
+        WatchTableWidget *table = currentWatchTable();
+        if (!table || table->model()->rowCount() > 0)
+            table = addWatchTable();
+        table->setConnection(c);
+        table->setSpec(DemoSimulator::demoTable(saved.station));
+        m_tabs->setCurrentWidget(table);
+        Q_EMIT demoReady();
+    });
+    m_demo->start();
+    showStatus(tr("Starting the demo simulator…"));
+}
+
+bool MainWindow::hasValues() const
+{
+    for (WatchTableWidget *t : watchTables()) {
+        const WatchTableModel *m = t->model();
+        for (int r = 0; r < m->rowCount(); ++r) {
+            if (m->hasValue(r))
+                return true;
+        }
+    }
+    return false;
+}
+
+void MainWindow::setConfirmHandler(ConfirmHandler handler)
+{
+    m_confirm = std::move(handler);
+    for (WatchTableWidget *t : watchTables())
+        t->setConfirmHandler(m_confirm);
+}
+
+void MainWindow::updateLinkStatus()
+{
+    const Connection *c = currentConnection();
+    if (!c) {
+        m_linkStatus->setText(tr("No connection"));
+        m_linkStatus->setToolTip({});
+        return;
+    }
+    const StationStatistics &t = c->statistics().total;
+    m_linkStatus->setText(tr("%1: %2 · %3 req/s · %4 errors · RTT %5 ms")
+                              .arg(c->name(), linkStateName(c->linkState()))
+                              .arg(c->requestsPerSecond(), 0, 'f', 1)
+                              .arg(c->errorCount())
+                              .arg(t.rttMeanMs, 0, 'f', 1));
+    m_linkStatus->setToolTip(c->linkReason().isEmpty() ? c->settings().toString()
+                                                       : c->settings().toString() + QLatin1Char('\n')
+                                                             + c->linkReason());
+}
+
+void MainWindow::updateToolTargets()
+{
+    Connection *c = currentConnection();
+    const quint8 station = c ? c->station() : quint8(1);
+    if (m_toolsInitialised && c == m_toolConnection && station == m_toolStation)
+        return;
+    m_toolsInitialised = true;
+    m_toolConnection = c;
+    m_toolStation = station;
+    for (const auto &setTarget : std::as_const(m_toolTargets))
+        setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1), c ? c->name() : QString());
+}
+
+void MainWindow::showStatus(const QString &text)
+{
+    statusBar()->showMessage(text, 10000);
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    QSettings settings;
+    settings.setValue(geometryKey, saveGeometry());
+    settings.setValue(stateKey, saveState());
+    QMainWindow::closeEvent(event);
+}
+
+} // namespace Fatek

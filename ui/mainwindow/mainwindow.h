@@ -1,0 +1,101 @@
+#pragma once
+
+#include "linksettingsio.h"
+#include "result.h"
+#include "watchtablewidget.h"
+
+#include <QMainWindow>
+#include <QPointer>
+
+class QLabel;
+class QMenu;
+class QTabWidget;
+
+namespace Fatek {
+
+class Connection;
+class ConnectionManager;
+class ConnectionsPanel;
+class DemoSimulator;
+class Session;
+
+// The main window composes: the connections panel, the watch table tabs, the tool docks, menus,
+// shortcuts and the status bar. Polling, parsing and formatting live in the parts it composes.
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+
+public:
+    explicit MainWindow(bool readOnly = false, QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    ConnectionManager *connections() const { return m_manager; }
+    Connection *currentConnection() const;
+    bool isReadOnly() const { return m_readOnly; }
+
+    // Opens a connection (and remembers it as recent unless `remember` is false).
+    Connection *openConnection(const SavedConnection &saved, bool remember = true);
+
+    WatchTableWidget *addWatchTable(const QString &name = {});
+    WatchTableWidget *currentWatchTable() const;
+    QList<WatchTableWidget *> watchTables() const;
+
+    // Watch list files (all tables); load replaces the tables only if the file is valid.
+    Status saveWatchList(const QString &path) const;
+    Status loadWatchList(const QString &path);
+    // CSV rows into the current table.
+    Status importCsv(const QString &path);
+    // Opens the watch list saved or opened last (when that preference is on); false if none.
+    bool restoreLastWatchList();
+
+    // Starts the embedded simulator and opens the demo table on it; demoReady() when connected.
+    void startDemo();
+    // Whether any table shows a value read from a PLC.
+    bool hasValues() const;
+
+    // Every table (present and future) asks this instead of showing a dialog (tests).
+    void setConfirmHandler(ConfirmHandler handler);
+
+Q_SIGNALS:
+    void demoReady();
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void createActions();
+    void createTools();
+    void newConnectionDialog();
+    void closeCurrentConnection();
+    void rebuildRecentMenu();
+    void closeWatchTable(int index);
+    void renameWatchTable(int index);
+    void openWatchListDialog();
+    void saveWatchListDialog();
+    void importCsvDialog();
+    void updateLinkStatus();
+    void updateToolTargets();
+    void showStatus(const QString &text);
+    QString lastDirectory() const;
+    void setLastDirectory(const QString &path);
+
+    bool m_readOnly;
+    ConnectionManager *m_manager;
+    ConnectionsPanel *m_connectionsPanel;
+    QTabWidget *m_tabs;
+    QLabel *m_linkStatus;
+    QLabel *m_modeLabel = nullptr;
+    QMenu *m_recentMenu = nullptr;
+    QMenu *m_viewMenu = nullptr;
+    QMenu *m_toolsMenu = nullptr;
+    DemoSimulator *m_demo = nullptr;
+    ConfirmHandler m_confirm;
+    // Commissioning tools follow the current connection and station.
+    QList<std::function<void(Session *, quint8, const QString &)>> m_toolTargets;
+    QPointer<Connection> m_toolConnection;
+    quint8 m_toolStation = 1;
+    bool m_toolsInitialised = false;
+    int m_tableCounter = 0;
+};
+
+} // namespace Fatek

@@ -1,0 +1,78 @@
+#include "discreterange.h"
+
+#include <QRegularExpression>
+
+namespace Fatek {
+
+QString DiscreteRange::toString() const
+{
+    const QString first = QString::fromStdString(start.toString());
+    if (count <= 1)
+        return first;
+    return QStringLiteral("%1-%2").arg(first).arg(last().number);
+}
+
+Result<DiscreteRange> DiscreteRange::parse(const QString &text)
+{
+    static const QRegularExpression pattern(
+        QStringLiteral(R"(^\s*([A-Za-z]+)\s*(\d+)\s*(?:(?:-|\.\.)\s*(?:([A-Za-z]+)\s*)?(\d+))?\s*$)"));
+    const QRegularExpressionMatch m = pattern.match(text);
+    if (!m.hasMatch()) {
+        return makeError(ErrorKind::InvalidAddress,
+                         "\u201c" + text.trimmed().toStdString()
+                             + "\u201d is not a range of discretes; write it like Y0-255 or M100.");
+    }
+    const auto type = elementTypeFromSymbol(m.captured(1).toStdString());
+    if (!type || !isDiscrete(*type)) {
+        return makeError(ErrorKind::InvalidAddress,
+                         "\u201c" + m.captured(1).toStdString()
+                             + "\u201d is not a discrete type; use X, Y, M, S, T or C.");
+    }
+    if (m.hasCaptured(3) && !m.captured(3).isEmpty()
+        && elementTypeFromSymbol(m.captured(3).toStdString()) != type) {
+        return makeError(ErrorKind::InvalidAddress,
+                         "A range must stay within one type: " + text.trimmed().toStdString());
+    }
+    bool ok = false;
+    const quint32 first = m.captured(2).toUInt(&ok);
+    if (!ok)
+        return makeError(ErrorKind::InvalidAddress, "Point number too large in " + text.trimmed().toStdString());
+    quint32 lastNumber = first;
+    if (m.hasCaptured(4) && !m.captured(4).isEmpty()) {
+        lastNumber = m.captured(4).toUInt(&ok);
+        if (!ok)
+            return makeError(ErrorKind::InvalidAddress, "Point number too large in " + text.trimmed().toStdString());
+    }
+    if (lastNumber < first) {
+        return makeError(ErrorKind::InvalidAddress,
+                         "The range " + text.trimmed().toStdString() + " ends before it starts.");
+    }
+    DiscreteRange range;
+    range.start = Address{*type, first};
+    range.count = lastNumber - first + 1;
+    if (const Status s = validateSpan(range.start, range.count); !s)
+        return s.error();
+    return range;
+}
+
+Result<QList<DiscreteRange>> DiscreteRange::parseList(const QString &text)
+{
+    // Split on separators, but keep "Y0 - 255" together by normalizing spaces around dashes first.
+    QString normalized = text;
+    normalized.replace(QRegularExpression(QStringLiteral(R"(\s*(-|\.\.)\s*)")), QStringLiteral("\\1"));
+    normalized.replace(QRegularExpression(QStringLiteral(R"(([A-Za-z])\s+(\d))")), QStringLiteral("\\1\\2"));
+    const QStringList parts = normalized.split(QRegularExpression(QStringLiteral(R"([\s,;]+)")),
+                                               Qt::SkipEmptyParts);
+    if (parts.isEmpty())
+        return makeError(ErrorKind::InvalidAddress, "No range given; write for example X0-255, Y0-255.");
+    QList<DiscreteRange> ranges;
+    for (const QString &part : parts) {
+        const Result<DiscreteRange> r = parse(part);
+        if (!r)
+            return r.error();
+        ranges << *r;
+    }
+    return ranges;
+}
+
+} // namespace Fatek

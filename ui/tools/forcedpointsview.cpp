@@ -1,0 +1,191 @@
+#include "forcedpointsview.h"
+
+#include "discretecontrolbatch.h"
+#include "discreterange.h"
+#include "requesttracker.h"
+#include "session.h"
+#include "toolpalette.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <memory>
+
+namespace Fatek {
+
+ForcedPointsView::ForcedPointsView(QWidget *parent)
+    : QWidget(parent)
+    , m_requests(new RequestTracker(this))
+{
+    auto *layout = new QVBoxLayout(this);
+    auto *row = new QHBoxLayout;
+    row->addWidget(new QLabel(tr("Ranges:"), this));
+    m_ranges = new QLineEdit(QStringLiteral("X0-255, Y0-255, M0-1023, S0-255, T0-255, C0-255"), this);
+    m_ranges->setObjectName(QStringLiteral("forcedRanges"));
+    m_ranges->setToolTip(tr("Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999"));
+    row->addWidget(m_ranges, 1);
+    m_scanButton = new QPushButton(tr("Scan"), this);
+    m_scanButton->setObjectName(QStringLiteral("scanButton"));
+    row->addWidget(m_scanButton);
+    layout->addLayout(row);
+
+    m_list = new QListWidget(this);
+    m_list->setObjectName(QStringLiteral("forcedList"));
+    layout->addWidget(m_list, 1);
+
+    auto *bottom = new QHBoxLayout;
+    m_message = new QLabel(this);
+    m_message->setObjectName(QStringLiteral("forcedMessage"));
+    m_message->setWordWrap(true);
+    bottom->addWidget(m_message, 1);
+    m_enableAllButton = new QPushButton(tr("Enable all"), this);
+    m_enableAllButton->setObjectName(QStringLiteral("enableAllButton"));
+    m_enableAllButton->setToolTip(tr("Give every listed point back to the ladder"));
+    bottom->addWidget(m_enableAllButton);
+    layout->addLayout(bottom);
+
+    connect(m_scanButton, &QPushButton::clicked, this, &ForcedPointsView::scan);
+    connect(m_ranges, &QLineEdit::returnPressed, this, &ForcedPointsView::scan);
+    connect(m_enableAllButton, &QPushButton::clicked, this, &ForcedPointsView::enableAll);
+    setTarget(nullptr, 1, {});
+}
+
+void ForcedPointsView::setTarget(Session *session, quint8 station, const QString &connectionName)
+{
+    m_session = session;
+    m_station = station;
+    m_connectionName = connectionName;
+    m_requests->setSession(session);
+    m_requests->forgetPending(); // answers meant for the previous target are ignored
+    ++m_generation;
+    m_scanning = m_enabling = false;
+    m_scans = 0;
+    m_prefix.clear();
+    m_prefixIsError = false;
+    m_forced.clear();
+    showList();
+    ToolPalette::showMessage(m_message, session ? tr("Press Scan to list the forced points.") : tr("No connection."),
+                             false);
+    updateEnabled();
+}
+
+void ForcedPointsView::setRanges(const QString &ranges)
+{
+    m_ranges->setText(ranges);
+}
+
+QString ForcedPointsView::messageText() const
+{
+    return m_message->text();
+}
+
+void ForcedPointsView::updateEnabled()
+{
+    const bool connected = !m_session.isNull();
+    m_scanButton->setEnabled(connected && !m_scanning && !m_enabling);
+    const bool writable = connected && !m_session->isReadOnly();
+    m_enableAllButton->setEnabled(writable && !m_scanning && !m_enabling && !m_forced.isEmpty());
+    m_enableAllButton->setToolTip(connected && !writable ? tr("Read-only (operator) mode: forcing is disabled.")
+                                                         : tr("Give every listed point back to the ladder"));
+}
+
+void ForcedPointsView::scan()
+{
+    if (!m_session || m_scanning || m_enabling)
+        return;
+    const Result<QList<DiscreteRange>> ranges = DiscreteRange::parseList(m_ranges->text());
+    if (!ranges) {
+        ToolPalette::showMessage(m_message, QString::fromStdString(ranges.error().message), true);
+        return;
+    }
+    // One 43 per 256 points.
+    QList<DiscreteRange> chunks;
+    for (const DiscreteRange &r : *ranges) {
+        for (quint32 done = 0; done < r.count; done += Limits::maxDiscretes)
+            chunks << DiscreteRange{r.start.advanced(done), std::min<quint32>(Limits::maxDiscretes, r.count - done)};
+    }
+    struct ScanState
+    {
+        qsizetype remaining;
+        QList<Address> forced;
+        QStringList errors;
+    };
+    auto state = std::make_shared<ScanState>(ScanState{chunks.size(), {}, {}});
+    const quint64 generation = ++m_generation;
+    m_scanning = true;
+    ToolPalette::showMessage(m_message, tr("Scanning %1 \u2026").arg(m_ranges->text()), false);
+    updateEnabled();
+    for (const DiscreteRange &chunk : chunks) {
+        m_requests->submit(Request::readEnableFlags(m_station, chunk.start, chunk.count),
+                           [this, state, chunk, generation](const SessionResult &result) {
+                               if (generation != m_generation)
+                                   return;
+                               if (!result.ok()) {
+                                   state->errors << QStringLiteral("%1: %2").arg(chunk.toString(), result.errorText());
+                               } else {
+                                   const auto &flags = result.response().values;
+                                   for (std::size_t i = 0; i < flags.size(); ++i) {
+                                       if (flags[i] != 0)
+                                           state->forced << chunk.start.advanced(static_cast<quint32>(i));
+                                   }
+                               }
+                               if (--state->remaining > 0)
+                                   return;
+                               m_scanning = false;
+                               ++m_scans;
+                               m_forced = state->forced;
+                               std::sort(m_forced.begin(), m_forced.end());
+                               showList();
+                               const QString text = !state->errors.isEmpty()
+                                   ? tr("Scan incomplete \u2014 %1").arg(state->errors.join(QStringLiteral("; ")))
+                                   : m_forced.isEmpty()
+                                   ? tr("No forced points in %1.").arg(m_ranges->text())
+                                   : (m_forced.size() == 1 ? tr("1 forced point: enable it before leaving the site.")
+                                                          : tr("%1 forced points: enable them before leaving the site.")
+                                                                .arg(m_forced.size()));
+                               // Keep the outcome of an Enable all visible in front of the new list.
+                               ToolPalette::showMessage(m_message, (m_prefix + QLatin1Char(' ') + text).trimmed(),
+                                                        m_prefixIsError || !state->errors.isEmpty());
+                               m_prefix.clear();
+                               m_prefixIsError = false;
+                               updateEnabled();
+                           });
+    }
+}
+
+void ForcedPointsView::enableAll()
+{
+    if (!m_session || m_forced.isEmpty() || m_enabling)
+        return;
+    const QString question = tr("%1 on %2?")
+                                 .arg(DiscreteControlBatch::describe(DiscreteOp::Enable, m_forced),
+                                      ToolConfirmation::target(m_station, m_connectionName));
+    if (!ToolConfirmation::ask(this, tr("Enable all forced points"), question, m_confirmer)) {
+        ToolPalette::showMessage(m_message, tr("Enable all cancelled; the points stay forced."), false);
+        return;
+    }
+    m_enabling = true;
+    updateEnabled();
+    DiscreteControlBatch::run(m_requests, m_station, DiscreteOp::Enable, m_forced,
+                              [this](const DiscreteControlBatch::Outcome &outcome) {
+                                  m_enabling = false;
+                                  m_prefix = DiscreteControlBatch::outcomeText(DiscreteOp::Enable, outcome);
+                                  m_prefixIsError = !outcome.errors.isEmpty();
+                                  Q_EMIT pointsChanged();
+                                  scan(); // show what is really left
+                              });
+}
+
+void ForcedPointsView::showList()
+{
+    m_list->clear();
+    for (const Address &a : std::as_const(m_forced))
+        m_list->addItem(QString::fromStdString(a.toString()));
+}
+
+} // namespace Fatek

@@ -1,0 +1,70 @@
+#pragma once
+
+#include "address.h"
+#include "toolconfirmation.h"
+
+#include <QPointer>
+#include <QWidget>
+
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+
+namespace Fatek {
+
+class RequestTracker;
+class Session;
+
+// Scans chosen ranges with 43 and lists every disabled (forced) point, with a confirmed
+// "Enable all" so nothing stays forced when the engineer leaves the site.
+class ForcedPointsView : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit ForcedPointsView(QWidget *parent = nullptr);
+
+    void setTarget(Session *session, quint8 station, const QString &connectionName);
+    void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
+    void setRanges(const QString &ranges);
+
+    QList<Address> forcedPoints() const { return m_forced; }
+    bool isScanning() const { return m_scanning; }
+    // Completed scans since the target was set (tests wait for the next one).
+    int scanCount() const { return m_scans; }
+    QString messageText() const;
+
+public Q_SLOTS:
+    void scan();
+    void enableAll();
+
+Q_SIGNALS:
+    // After an Enable all, so the discrete table can re-read.
+    void pointsChanged();
+
+private:
+    void showList();
+    void updateEnabled();
+
+    RequestTracker *m_requests;
+    QPointer<Session> m_session;
+    quint8 m_station = 1;
+    QString m_connectionName;
+    Confirmer m_confirmer;
+    QList<Address> m_forced;
+    bool m_scanning = false;
+    bool m_enabling = false;
+    int m_scans = 0;
+    QString m_prefix; // outcome of the last Enable all, shown with the next scan result
+    bool m_prefixIsError = false;
+    quint64 m_generation = 0; // answers of an older scan are ignored
+
+    QLineEdit *m_ranges;
+    QPushButton *m_scanButton;
+    QPushButton *m_enableAllButton;
+    QListWidget *m_list;
+    QLabel *m_message;
+};
+
+} // namespace Fatek

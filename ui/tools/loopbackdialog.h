@@ -1,0 +1,87 @@
+#pragma once
+
+#include "loopbackstats.h"
+#include "request.h"
+
+#include <QDialog>
+#include <QElapsedTimer>
+#include <QPointer>
+#include <QTimer>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPlainTextEdit;
+class QPushButton;
+class QSpinBox;
+
+namespace Fatek {
+
+class RequestTracker;
+class Session;
+class SessionResult;
+
+// Loopback test (4E) for checking a link and its cabling: sends test data a number of times at an
+// interval, keeps going after errors, and shows each run and the totals (outcomes, round trips).
+class LoopbackDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    enum class DataMode { Text, Hex, Pattern };
+
+    explicit LoopbackDialog(QWidget *parent = nullptr);
+
+    // session may be nullptr: the dialog shows "no connection" and cannot start.
+    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
+
+    void setDataMode(DataMode mode);
+    void setData(const QString &text);
+    void setPatternLength(int bytes);
+    void setRepeatCount(int runs);
+    void setIntervalMs(int ms);
+
+    bool isRunning() const { return m_running; }
+    const LoopbackStats &stats() const { return m_stats; }
+    QString messageText() const;
+    // "100 runs: 100 OK, 0 mismatch, … — round trip min … ms"
+    QString totalsText() const;
+
+public Q_SLOTS:
+    void start();
+    void stop();
+
+private:
+    // The test data as configured, or an error sentence.
+    Result<Bytes> testData() const;
+    void runNext();
+    void onAnswer(int run, const SessionResult &result, double rttMs);
+    void appendLine(const QString &line, bool error);
+    void finish(const QString &why);
+    void updateControls();
+
+    RequestTracker *m_requests;
+    QPointer<Session> m_session;
+    QMetaObject::Connection m_sessionGone;
+    quint8 m_station = 1;
+    QString m_connectionName;
+    bool m_running = false;
+    int m_run = 0;
+    Bytes m_data;
+    LoopbackStats m_stats;
+    QTimer m_intervalTimer;
+
+    QLabel *m_targetLabel;
+    QComboBox *m_mode;
+    QLineEdit *m_text;
+    QSpinBox *m_length;
+    QSpinBox *m_repeat;
+    QSpinBox *m_interval;
+    QPushButton *m_start;
+    QPushButton *m_stop;
+    QPlainTextEdit *m_runs;
+    QLabel *m_totals;
+    QLabel *m_message;
+};
+
+} // namespace Fatek

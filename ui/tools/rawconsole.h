@@ -1,0 +1,84 @@
+#pragma once
+
+#include "toolconfirmation.h"
+
+#include <QPointer>
+#include <QTimer>
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QTableView;
+
+namespace Fatek {
+
+class RawSendBar;
+class Session;
+class TrafficFilterProxy;
+class TrafficLogModel;
+
+// Live view of a session's traffic log (time, direction, hex, ASCII, meaning, errors highlighted)
+// with filters, pause, clear, copy and save, plus a line to send raw frames.
+class RawConsole : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit RawConsole(QWidget *parent = nullptr);
+
+    // session may be nullptr: the console shows "no connection" and disables sending.
+    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
+
+    // Test hook: answers the confirmation questions instead of a message box.
+    void setConfirmer(Confirmer confirmer);
+
+    TrafficLogModel *model() const { return m_model; }
+    TrafficFilterProxy *filter() const { return m_filter; }
+    QTableView *view() const { return m_view; }
+    RawSendBar *sendBar() const { return m_sendBar; }
+
+    void setPaused(bool paused);
+    bool isPaused() const;
+    // Writes every visible row (after filters) as tab-separated text; returns an error sentence or "".
+    QString saveToFile(const QString &path) const;
+    // The visible (or only the selected, if any) rows as text, also put on the clipboard.
+    QString copyRows() const;
+
+public Q_SLOTS:
+    void clear();
+
+protected:
+    // Theme changes recolour the table (its colours are derived from the palette).
+    void changeEvent(QEvent *event) override;
+
+private:
+    void fetch();
+    void save();
+    void applyFilters();
+    QString rowsText(bool selectedOnly) const;
+
+    QPointer<Session> m_session;
+    bool m_attached = false; // m_session was set (a QPointer also reads null once deleted)
+    quint8 m_station = 1;
+    QMetaObject::Connection m_sessionGone;
+    quint64 m_lastSequence = 0;
+    bool m_followTail = true;
+    QTimer m_fetchTimer;
+
+    TrafficLogModel *m_model;
+    TrafficFilterProxy *m_filter;
+    QLabel *m_targetLabel;
+    QComboBox *m_direction;
+    QSpinBox *m_stationFilter;
+    QComboBox *m_command;
+    QCheckBox *m_errorsOnly;
+    QPushButton *m_pause;
+    QTableView *m_view;
+    QLabel *m_status;
+    RawSendBar *m_sendBar;
+};
+
+} // namespace Fatek

@@ -1,0 +1,194 @@
+#include "rawsendbar.h"
+
+#include "binarycodec.h"
+#include "faconcodec.h"
+#include "frametext.h"
+#include "requesttracker.h"
+#include "session.h"
+#include "toolpalette.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFontDatabase>
+#include <QGridLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+
+namespace Fatek {
+
+namespace {
+
+std::vector<std::uint8_t> toBytes(const QByteArray &a)
+{
+    return {a.begin(), a.end()};
+}
+
+QByteArray fromBytes(const std::vector<std::uint8_t> &b)
+{
+    return QByteArray(reinterpret_cast<const char *>(b.data()), static_cast<qsizetype>(b.size()));
+}
+
+} // namespace
+
+RawSendBar::RawSendBar(QWidget *parent)
+    : QWidget(parent)
+    , m_requests(new RequestTracker(this))
+{
+    auto *layout = new QGridLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_mode = new QComboBox(this);
+    m_mode->setObjectName(QStringLiteral("sendMode"));
+    m_mode->addItem(tr("Hex"));
+    m_mode->addItem(tr("ASCII"));
+    m_input = new QLineEdit(this);
+    m_input->setObjectName(QStringLiteral("sendInput"));
+    m_input->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_framing = new QCheckBox(this);
+    m_framing->setObjectName(QStringLiteral("addFraming"));
+    m_framing->setChecked(true);
+    m_send = new QPushButton(tr("Send"), this);
+    m_send->setObjectName(QStringLiteral("sendButton"));
+    m_result = new QLabel(this);
+    m_result->setObjectName(QStringLiteral("sendResult"));
+    m_result->setWordWrap(true);
+    m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_result->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    layout->addWidget(m_mode, 0, 0);
+    layout->addWidget(m_input, 0, 1);
+    layout->addWidget(m_framing, 0, 2);
+    layout->addWidget(m_send, 0, 3);
+    layout->addWidget(m_result, 1, 0, 1, 4);
+    layout->setColumnStretch(1, 1);
+
+    connect(m_send, &QPushButton::clicked, this, &RawSendBar::send);
+    connect(m_input, &QLineEdit::returnPressed, this, &RawSendBar::send);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &RawSendBar::updateFramingLabel);
+    connect(m_framing, &QCheckBox::toggled, this, &RawSendBar::updateFramingLabel);
+    setTarget(nullptr, 1, {});
+}
+
+void RawSendBar::setTarget(Session *session, quint8 station, const QString &connectionName)
+{
+    if (m_session)
+        disconnect(m_session, nullptr, this, nullptr);
+    m_session = session;
+    m_station = station;
+    m_connectionName = connectionName;
+    m_requests->setSession(session);
+    m_requests->forgetPending();
+    m_busy = false;
+    if (session)
+        connect(session, &Session::protocolDetected, this, &RawSendBar::updateFramingLabel);
+    ToolPalette::showMessage(m_result, session ? QString() : tr("No connection."), false);
+    updateFramingLabel();
+    updateEnabled();
+}
+
+void RawSendBar::setMode(Mode mode)
+{
+    m_mode->setCurrentIndex(mode == Mode::Hex ? 0 : 1);
+}
+
+void RawSendBar::setText(const QString &text)
+{
+    m_input->setText(text);
+}
+
+void RawSendBar::setAddFraming(bool on)
+{
+    m_framing->setChecked(on);
+}
+
+QString RawSendBar::resultText() const
+{
+    return m_result->text();
+}
+
+bool RawSendBar::framingIsFacon() const
+{
+    if (!m_session)
+        return true;
+    if (m_session->isProtocolKnown())
+        return m_session->protocol() == Protocol::Facon;
+    return m_session->settings().protocol != LinkSettings::ProtocolChoice::Binary;
+}
+
+void RawSendBar::updateFramingLabel()
+{
+    const bool facon = framingIsFacon();
+    m_framing->setText(facon ? tr("Add STX, LRC, ETX (FACON)") : tr("Add header, length, CRC (binary)"));
+    const bool hex = m_mode->currentIndex() == 0;
+    if (m_framing->isChecked())
+        m_input->setPlaceholderText(facon ? (hex ? tr("body in hex, e.g. 30 31 34 30") : tr("body, e.g. 014603R00012"))
+                                          : (hex ? tr("payload, e.g. 01 46 03 52 00 0C") : tr("payload as ASCII")));
+    else
+        m_input->setPlaceholderText(hex ? tr("whole frame in hex, e.g. 02 30 31 34 30 43 37 03")
+                                        : tr("whole frame, e.g. <STX>0140C7<ETX>"));
+}
+
+void RawSendBar::updateEnabled()
+{
+    m_send->setEnabled(!m_session.isNull() && !m_busy);
+}
+
+void RawSendBar::send()
+{
+    if (!m_session || m_busy)
+        return;
+    const bool hex = m_mode->currentIndex() == 0;
+    const Result<QByteArray> typed = hex ? FrameText::parseHex(m_input->text()) : FrameText::parseAscii(m_input->text());
+    if (!typed) {
+        ToolPalette::showMessage(m_result, QString::fromStdString(typed.error().message), true);
+        return;
+    }
+    const bool framing = m_framing->isChecked();
+    const bool facon = framingIsFacon();
+    // What will go on the wire, to show it; the session does the same wrapping.
+    QByteArray frame = *typed;
+    if (framing) {
+        frame = facon ? fromBytes(FaconCodec().wrap(toBytes(*typed))) : fromBytes(BinaryCodec().wrap(toBytes(*typed)));
+    }
+    // A raw frame can do anything: ask unless it is clearly a command that only reads.
+    const auto header = FrameText::header(frame);
+    const bool harmless = header && isKnownCommand(header->command)
+                          && !isWriteCommand(static_cast<Command>(header->command));
+    if (!harmless) {
+        const QString what = header ? tr("command %1 to station %2").arg(header->command, 2, 16, QLatin1Char('0')).arg(header->station)
+                                    : tr("an unrecognized frame");
+        const QString question = tr("Send %1 (%2) on %3? It may change the PLC.")
+                                     .arg(what, FrameText::toAscii(frame),
+                                          ToolConfirmation::target(m_station, m_connectionName));
+        if (!ToolConfirmation::ask(this, tr("Send raw frame"), question, m_confirmer)) {
+            ToolPalette::showMessage(m_result, tr("Cancelled: nothing sent."), false);
+            return;
+        }
+    }
+    m_busy = true;
+    updateEnabled();
+    ToolPalette::showMessage(m_result, tr("Sent    %1\nwaiting for the answer \u2026").arg(FrameText::toAscii(frame)), false);
+    m_requests->sendRaw(*typed, framing, [this, frame](const SessionResult &r) { onAnswer(frame, r); });
+}
+
+void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
+{
+    m_busy = false;
+    updateEnabled();
+    const QString sentLine = tr("Sent    %1").arg(FrameText::toAscii(sent));
+    if (!result.ok()) {
+        ToolPalette::showMessage(m_result, tr("%1\nFailed  %2").arg(sentLine, result.errorText()), true);
+        return;
+    }
+    ++m_answers;
+    m_lastAnswer = result.rawAnswer();
+    const std::vector<std::uint8_t> answer = toBytes(m_lastAnswer);
+    const bool facon = !m_lastAnswer.isEmpty() && static_cast<quint8>(m_lastAnswer.at(0)) == FaconCodec::STX;
+    const QString meaning = facon ? QString::fromStdString(FaconCodec().summarize(answer))
+                                  : QString::fromStdString(BinaryCodec().summarize(answer));
+    ToolPalette::showMessage(m_result,
+                             tr("%1\nAnswer  %2\n        %3\nMeaning %4")
+                                 .arg(sentLine, FrameText::toAscii(m_lastAnswer), FrameText::toHex(m_lastAnswer), meaning),
+                             false);
+}
+
+} // namespace Fatek

@@ -1,0 +1,557 @@
+#include "watchtablemodel.h"
+
+#include <QFont>
+#include <QGuiApplication>
+#include <QIcon>
+#include <QPalette>
+
+#include <algorithm>
+#include <atomic>
+
+namespace Fatek {
+
+namespace {
+
+// Poll ids are unique across every table: tables sharing a connection share one session watch list.
+std::atomic<quint64> nextPollId{1};
+std::atomic<quint64> nextRowKey{1};
+
+int elementBits(const Address &address)
+{
+    if (isDiscrete(address.type))
+        return 1;
+    return isDoubleWord(address.type) ? 32 : 16;
+}
+
+QString qualityName(ValueQuality quality)
+{
+    switch (quality) {
+    case ValueQuality::Good: return WatchTableModel::tr("good");
+    case ValueQuality::Stale: return WatchTableModel::tr("stale");
+    case ValueQuality::Error: return WatchTableModel::tr("error");
+    }
+    return {};
+}
+
+} // namespace
+
+WatchTableModel::WatchTableModel(QObject *parent)
+    : QAbstractTableModel(parent)
+    , m_goodIcon(QStringLiteral(":/icons/good.svg"))
+    , m_staleIcon(QStringLiteral(":/icons/stale.svg"))
+    , m_errorIcon(QStringLiteral(":/icons/error.svg"))
+{
+    m_clock.start();
+    m_flashTimer.setInterval(100);
+    connect(&m_flashTimer, &QTimer::timeout, this, &WatchTableModel::expireFlashes);
+}
+
+int WatchTableModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : static_cast<int>(m_rows.size());
+}
+
+int WatchTableModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+void WatchTableModel::allocateIds(Row &row)
+{
+    const int count = std::max(1, ValueFormat::elementCount(row.spec.address, row.spec.format));
+    row.ids.clear();
+    row.parts.assign(static_cast<std::size_t>(count), Part{});
+    for (int i = 0; i < count; ++i)
+        row.ids.push_back(nextPollId++);
+}
+
+void WatchTableModel::rebuildIndex()
+{
+    m_index.clear();
+    for (int r = 0; r < m_rows.size(); ++r) {
+        const Row &row = m_rows.at(r);
+        for (std::size_t p = 0; p < row.ids.size(); ++p)
+            m_index.insert(row.ids[p], {r, static_cast<int>(p)});
+    }
+}
+
+void WatchTableModel::addItems(const QList<WatchItemSpec> &items)
+{
+    if (items.isEmpty())
+        return;
+    const int first = static_cast<int>(m_rows.size());
+    beginInsertRows({}, first, first + static_cast<int>(items.size()) - 1);
+    for (const WatchItemSpec &spec : items) {
+        Row row;
+        row.spec = spec;
+        row.key = nextRowKey++;
+        allocateIds(row);
+        m_rows.append(std::move(row));
+    }
+    rebuildIndex();
+    endInsertRows();
+    Q_EMIT pollListChanged();
+}
+
+void WatchTableModel::setItems(const QList<WatchItemSpec> &items)
+{
+    beginResetModel();
+    m_rows.clear();
+    m_index.clear();
+    endResetModel();
+    addItems(items);
+    if (items.isEmpty())
+        Q_EMIT pollListChanged();
+}
+
+QList<WatchItemSpec> WatchTableModel::items() const
+{
+    QList<WatchItemSpec> list;
+    list.reserve(m_rows.size());
+    for (const Row &row : m_rows)
+        list.append(row.spec);
+    return list;
+}
+
+bool WatchTableModel::removeRows(int row, int count, const QModelIndex &parent)
+{
+    if (parent.isValid() || row < 0 || count <= 0 || row + count > m_rows.size())
+        return false;
+    beginRemoveRows({}, row, row + count - 1);
+    m_rows.remove(row, count);
+    rebuildIndex();
+    endRemoveRows();
+    Q_EMIT pollListChanged();
+    return true;
+}
+
+int WatchTableModel::rowOfKey(quint64 key) const
+{
+    for (int r = 0; r < m_rows.size(); ++r) {
+        if (m_rows.at(r).key == key)
+            return r;
+    }
+    return -1;
+}
+
+QList<DisplayFormat> WatchTableModel::availableFormats(int row) const
+{
+    QList<DisplayFormat> list;
+    const Address address = m_rows.at(row).spec.address;
+    for (DisplayFormat f : ValueFormat::allFormats()) {
+        const int width = ValueFormat::valueWidth(address, f);
+        if (width > 0 && ValueFormat::isAvailable(f, width))
+            list.append(f);
+    }
+    return list;
+}
+
+Status WatchTableModel::setFormat(int row, DisplayFormat format, bool swapWords)
+{
+    WatchItemSpec spec = m_rows.at(row).spec;
+    spec.format = format;
+    spec.swapWords = swapWords;
+    if (Status s = WatchList::validateEntry(spec); !s)
+        return s;
+    Row &r = m_rows[row];
+    const bool spanChanged = ValueFormat::elementCount(r.spec.address, r.spec.format)
+                             != ValueFormat::elementCount(spec.address, format);
+    r.spec = spec;
+    if (spanChanged) {
+        allocateIds(r);
+        rebuildIndex();
+    }
+    Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    if (spanChanged)
+        Q_EMIT pollListChanged();
+    return Ok{};
+}
+
+int WatchTableModel::valueWidth(int row) const
+{
+    const WatchItemSpec &spec = m_rows.at(row).spec;
+    const int width = ValueFormat::valueWidth(spec.address, spec.format);
+    return width > 0 ? width : elementBits(spec.address);
+}
+
+bool WatchTableModel::received(const Row &row) const
+{
+    return std::all_of(row.parts.cbegin(), row.parts.cend(), [](const Part &p) { return p.received; });
+}
+
+bool WatchTableModel::hasValue(int row) const
+{
+    return received(m_rows.at(row));
+}
+
+std::uint64_t WatchTableModel::combine(const Row &row) const
+{
+    const int bits = elementBits(row.spec.address);
+    std::uint64_t raw = 0;
+    for (std::size_t i = 0; i < row.parts.size(); ++i)
+        raw |= static_cast<std::uint64_t>(row.parts[i].value) << (static_cast<int>(i) * bits);
+    return raw;
+}
+
+std::uint64_t WatchTableModel::rawValue(int row) const
+{
+    return combine(m_rows.at(row));
+}
+
+ValueQuality WatchTableModel::quality(int row) const
+{
+    ValueQuality worst = ValueQuality::Good;
+    for (const Part &p : m_rows.at(row).parts) {
+        if (p.quality == ValueQuality::Error)
+            return ValueQuality::Error;
+        if (p.quality == ValueQuality::Stale)
+            worst = ValueQuality::Stale;
+    }
+    return worst;
+}
+
+QString WatchTableModel::qualityReason(int row) const
+{
+    for (const Part &p : m_rows.at(row).parts) {
+        if (p.quality != ValueQuality::Good && !p.error.isEmpty())
+            return p.error;
+    }
+    return {};
+}
+
+QString WatchTableModel::valueText(int row) const
+{
+    const Row &r = m_rows.at(row);
+    if (!received(r))
+        return {};
+    return ValueFormat::format(combine(r), valueWidth(row), r.spec.format, r.spec.swapWords);
+}
+
+QList<WatchEntry> WatchTableModel::pollEntries(int intervalMs) const
+{
+    QList<WatchEntry> entries;
+    for (const Row &row : m_rows) {
+        for (std::size_t i = 0; i < row.ids.size(); ++i) {
+            WatchEntry e;
+            e.id = row.ids[i];
+            e.station = row.spec.station;
+            e.address = row.spec.address.advanced(static_cast<std::uint32_t>(i));
+            e.intervalMs = intervalMs;
+            entries.append(e);
+        }
+    }
+    return entries;
+}
+
+void WatchTableModel::applyValues(const QList<WatchValue> &values)
+{
+    std::vector<int> touched;
+    std::vector<int> flashed;
+    const qint64 now = m_clock.elapsed();
+    QHash<int, std::uint64_t> before;
+    for (const WatchValue &v : values) {
+        const auto it = m_index.constFind(v.itemId);
+        if (it == m_index.cend())
+            continue;
+        const int r = it->first;
+        Row &row = m_rows[r];
+        if (!before.contains(r))
+            before.insert(r, received(row) ? combine(row) : ~std::uint64_t(0));
+        Part &part = row.parts[static_cast<std::size_t>(it->second)];
+        part.quality = v.quality;
+        part.error = v.error;
+        if (v.quality == ValueQuality::Good) {
+            part.value = v.value;
+            part.timestamp = v.timestamp;
+            part.received = true;
+        }
+        touched.push_back(r);
+    }
+    for (auto it = before.cbegin(); it != before.cend(); ++it) {
+        Row &row = m_rows[it.key()];
+        if (received(row) && combine(row) != it.value()) {
+            row.flashUntil = now + flashMs;
+            flashed.push_back(it.key());
+        }
+    }
+    if (!flashed.empty() && !m_flashTimer.isActive())
+        m_flashTimer.start();
+    emitRowsChanged(std::move(touched), ValueColumn, UpdatedColumn);
+}
+
+void WatchTableModel::markAllStale(const QString &reason)
+{
+    std::vector<int> touched;
+    for (int r = 0; r < m_rows.size(); ++r) {
+        for (Part &p : m_rows[r].parts) {
+            p.quality = ValueQuality::Stale;
+            p.error = reason;
+        }
+        touched.push_back(r);
+    }
+    emitRowsChanged(std::move(touched), ValueColumn, UpdatedColumn);
+}
+
+void WatchTableModel::setWriteOutcome(int row, const QString &text)
+{
+    m_rows[row].writeOutcome = text;
+    Q_EMIT dataChanged(index(row, ValueColumn), index(row, ValueColumn), {Qt::ToolTipRole});
+}
+
+void WatchTableModel::emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn)
+{
+    // One dataChanged per run of consecutive rows: a 100-row table polled every 100 ms must not
+    // cost 100 signals per batch.
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    std::size_t i = 0;
+    while (i < rows.size()) {
+        std::size_t j = i;
+        while (j + 1 < rows.size() && rows[j + 1] == rows[j] + 1)
+            ++j;
+        Q_EMIT dataChanged(index(rows[i], firstColumn), index(rows[j], lastColumn));
+        i = j + 1;
+    }
+}
+
+void WatchTableModel::expireFlashes()
+{
+    const qint64 now = m_clock.elapsed();
+    std::vector<int> expired;
+    bool pending = false;
+    for (int r = 0; r < m_rows.size(); ++r) {
+        Row &row = m_rows[r];
+        if (row.flashUntil == 0)
+            continue;
+        if (row.flashUntil <= now) {
+            row.flashUntil = 0;
+            expired.push_back(r);
+        } else {
+            pending = true;
+        }
+    }
+    if (!pending)
+        m_flashTimer.stop();
+    emitRowsChanged(std::move(expired), ValueColumn, ValueColumn);
+}
+
+QVariant WatchTableModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const int r = index.row();
+    const Row &row = m_rows.at(r);
+    const WatchItemSpec &spec = row.spec;
+    const bool have = received(row);
+    const ValueQuality q = quality(r);
+    const bool discrete = isDiscrete(spec.address.type);
+
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (index.column()) {
+        case NameColumn: return spec.name;
+        case AddressColumn: return QString::fromStdString(spec.address.toString());
+        case StationColumn: return spec.station;
+        case ValueColumn: return have ? valueText(r) : QStringLiteral("…");
+        case FormatColumn:
+            return spec.swapWords ? tr("%1, words swapped").arg(ValueFormat::name(spec.format))
+                                  : ValueFormat::name(spec.format);
+        case QualityColumn:
+            return (!have && q != ValueQuality::Error) ? tr("waiting") : qualityName(q);
+        case UpdatedColumn: {
+            QDateTime latest;
+            for (const Part &p : row.parts) {
+                if (p.received && (!latest.isValid() || p.timestamp > latest))
+                    latest = p.timestamp;
+            }
+            return latest.isValid() ? latest.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz"))
+                                    : QString();
+        }
+        case CommentColumn: return spec.comment;
+        default: return {};
+        }
+    case Qt::EditRole:
+        switch (index.column()) {
+        case NameColumn: return spec.name;
+        case StationColumn: return spec.station;
+        case ValueColumn: return valueText(r);
+        case FormatColumn: return static_cast<int>(spec.format);
+        case CommentColumn: return spec.comment;
+        default: return data(index, Qt::DisplayRole);
+        }
+    case Qt::CheckStateRole:
+        if (index.column() == ValueColumn && discrete && have)
+            return (combine(row) & 1u) ? Qt::Checked : Qt::Unchecked;
+        return {};
+    case Qt::ToolTipRole: {
+        QStringList lines;
+        const QString reason = qualityReason(r);
+        if (index.column() == ValueColumn || index.column() == QualityColumn) {
+            if (q != ValueQuality::Good && !reason.isEmpty())
+                lines << tr("%1: %2").arg(qualityName(q), reason);
+            else if (!have)
+                lines << tr("No value yet");
+            if (!row.writeOutcome.isEmpty())
+                lines << row.writeOutcome;
+            if (index.column() == ValueColumn)
+                lines << (discrete ? tr("Click the box to toggle") : tr("Double-click or F2 to write"));
+        } else if (index.column() == AddressColumn) {
+            const int count = static_cast<int>(row.ids.size());
+            lines << (count > 1 ? tr("%1 .. %2 (%3 elements)")
+                                      .arg(QString::fromStdString(spec.address.toString()),
+                                           QString::fromStdString(
+                                               spec.address.advanced(static_cast<std::uint32_t>(count - 1))
+                                                   .toString()))
+                                      .arg(count)
+                                : QString::fromStdString(std::string(spec.address.info().name)));
+        }
+        return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
+    }
+    case Qt::DecorationRole:
+        if (index.column() == QualityColumn) {
+            if (q == ValueQuality::Error)
+                return m_errorIcon;
+            if (q == ValueQuality::Stale && have)
+                return m_staleIcon;
+            if (q == ValueQuality::Good && have)
+                return m_goodIcon;
+        }
+        return {};
+    case Qt::FontRole:
+        if ((index.column() == ValueColumn || index.column() == QualityColumn) && q != ValueQuality::Good) {
+            QFont font;
+            font.setItalic(true);
+            return font;
+        }
+        return {};
+    case Qt::ForegroundRole:
+        // Stale and failed values are greyed with the palette's own colour (light and dark themes).
+        if (index.column() == ValueColumn && q != ValueQuality::Good)
+            return QGuiApplication::palette().brush(QPalette::PlaceholderText);
+        return {};
+    case Qt::BackgroundRole:
+        if (index.column() == ValueColumn && row.flashUntil > m_clock.elapsed()) {
+            QColor flash = QGuiApplication::palette().color(QPalette::Highlight);
+            flash.setAlpha(90);
+            return flash;
+        }
+        return {};
+    case Qt::TextAlignmentRole:
+        if (index.column() == ValueColumn || index.column() == StationColumn)
+            return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+        return {};
+    default:
+        return {};
+    }
+}
+
+QVariant WatchTableModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case NameColumn: return tr("Name");
+    case AddressColumn: return tr("Address");
+    case StationColumn: return tr("Station");
+    case ValueColumn: return tr("Value");
+    case FormatColumn: return tr("Format");
+    case QualityColumn: return tr("Quality");
+    case UpdatedColumn: return tr("Last update");
+    case CommentColumn: return tr("Comment");
+    default: return {};
+    }
+}
+
+Qt::ItemFlags WatchTableModel::flags(const QModelIndex &index) const
+{
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (!index.isValid())
+        return f;
+    const bool discrete = isDiscrete(m_rows.at(index.row()).spec.address.type);
+    switch (index.column()) {
+    case NameColumn:
+    case StationColumn:
+    case FormatColumn:
+    case CommentColumn:
+        return f | Qt::ItemIsEditable;
+    case ValueColumn:
+        return discrete ? (f | Qt::ItemIsUserCheckable) : (f | Qt::ItemIsEditable);
+    default:
+        return f;
+    }
+}
+
+bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    if (!index.isValid())
+        return false;
+    const int r = index.row();
+    Row &row = m_rows[r];
+    if (index.column() == ValueColumn) {
+        if (role == Qt::CheckStateRole && isDiscrete(row.spec.address.type)) {
+            const bool on = value.toInt() == Qt::Checked;
+            Q_EMIT writeRequested(r, on ? 1u : 0u);
+            return false; // shown when the PLC reports it
+        }
+        if (role != Qt::EditRole)
+            return false;
+        const QString text = value.toString().trimmed();
+        if (text.isEmpty() || text == valueText(r))
+            return false;
+        const auto raw = ValueFormat::parse(text, valueWidth(r), row.spec.format, row.spec.swapWords);
+        if (!raw) {
+            Q_EMIT inputRejected(tr("%1: %2").arg(QString::fromStdString(row.spec.address.toString()),
+                                                  QString::fromStdString(raw.error().message)));
+            return false;
+        }
+        Q_EMIT writeRequested(r, *raw);
+        return false;
+    }
+    if (role != Qt::EditRole)
+        return false;
+    switch (index.column()) {
+    case NameColumn:
+        row.spec.name = value.toString();
+        break;
+    case CommentColumn:
+        row.spec.comment = value.toString();
+        break;
+    case StationColumn: {
+        bool ok = false;
+        const int station = value.toInt(&ok);
+        if (!ok || station < 1 || station > 254) {
+            Q_EMIT inputRejected(tr("Station must be a number from 1 to 254."));
+            return false;
+        }
+        row.spec.station = static_cast<quint8>(station);
+        Q_EMIT dataChanged(index, index);
+        Q_EMIT pollListChanged();
+        return true;
+    }
+    case FormatColumn: {
+        std::optional<DisplayFormat> format;
+        bool isInt = false;
+        const int asInt = value.toInt(&isInt);
+        if (isInt && value.typeId() != QMetaType::QString)
+            format = static_cast<DisplayFormat>(asInt);
+        else
+            format = ValueFormat::fromName(value.toString());
+        if (!format) {
+            Q_EMIT inputRejected(tr("Unknown format \"%1\".").arg(value.toString()));
+            return false;
+        }
+        const Status s = setFormat(r, *format, row.spec.swapWords);
+        if (!s) {
+            Q_EMIT inputRejected(QString::fromStdString(s.error().message));
+            return false;
+        }
+        return true;
+    }
+    default:
+        return false;
+    }
+    Q_EMIT dataChanged(index, index);
+    return true;
+}
+
+} // namespace Fatek

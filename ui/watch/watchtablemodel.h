@@ -1,0 +1,111 @@
+#pragma once
+
+#include "watchlist.h"
+#include "watchvalue.h"
+
+#include <QAbstractTableModel>
+#include <QElapsedTimer>
+#include <QHash>
+#include <QIcon>
+#include <QTimer>
+
+#include <vector>
+
+namespace Fatek {
+
+// Rows of one watch table: what to watch (WatchItemSpec) plus the latest value, its quality and
+// time. Every item spans one or more elements (a float over R100 is R100+R101); each element is a
+// poll entry with its own id, and the model joins them back into one raw value.
+// Values arrive in batches (applyValues); changed rows are reported with coalesced dataChanged.
+class WatchTableModel : public QAbstractTableModel
+{
+    Q_OBJECT
+
+public:
+    enum Column { NameColumn, AddressColumn, StationColumn, ValueColumn, FormatColumn,
+                  QualityColumn, UpdatedColumn, CommentColumn, ColumnCount };
+    // How long a changed value stays highlighted.
+    static constexpr int flashMs = 700;
+
+    explicit WatchTableModel(QObject *parent = nullptr);
+
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    // Value column: text typed in the row's format (or a check state for discretes) is parsed and
+    // becomes writeRequested(); the model itself changes only when the PLC reports the new value.
+    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
+    bool removeRows(int row, int count, const QModelIndex &parent = {}) override;
+
+    void addItems(const QList<WatchItemSpec> &items);
+    void setItems(const QList<WatchItemSpec> &items);
+    QList<WatchItemSpec> items() const;
+    WatchItemSpec item(int row) const { return m_rows.at(row).spec; }
+    // Changes the format (and word order); refused with a message when it does not fit the item.
+    Status setFormat(int row, DisplayFormat format, bool swapWords);
+    QList<DisplayFormat> availableFormats(int row) const;
+
+    // Bits of the row's value (1, 16, 32 or 64) and whether a value has arrived.
+    int valueWidth(int row) const;
+    bool hasValue(int row) const;
+    std::uint64_t rawValue(int row) const;
+    ValueQuality quality(int row) const;
+    QString qualityReason(int row) const;
+    QString valueText(int row) const;
+
+    // What the session polls for this table.
+    QList<WatchEntry> pollEntries(int intervalMs) const;
+    void applyValues(const QList<WatchValue> &values);
+    // No values are coming (no connection, paused): every row keeps its value, marked stale.
+    void markAllStale(const QString &reason);
+
+    // Stable handle of a row across inserts and removals (for writes that finish later).
+    quint64 rowKey(int row) const { return m_rows.at(row).key; }
+    int rowOfKey(quint64 key) const;
+    void setWriteOutcome(int row, const QString &text);
+
+Q_SIGNALS:
+    void writeRequested(int row, quint64 raw);
+    void inputRejected(const QString &message);
+    // The set of polled elements changed: hand pollEntries() to the session again.
+    void pollListChanged();
+
+private:
+    struct Part
+    {
+        std::uint32_t value = 0;
+        ValueQuality quality = ValueQuality::Stale;
+        QString error;
+        QDateTime timestamp;
+        bool received = false;
+    };
+    struct Row
+    {
+        WatchItemSpec spec;
+        quint64 key = 0;
+        std::vector<quint64> ids; // one poll id per element
+        std::vector<Part> parts;
+        QString writeOutcome;
+        qint64 flashUntil = 0;
+    };
+
+    void allocateIds(Row &row);
+    void rebuildIndex();
+    void emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn);
+    void expireFlashes();
+    bool received(const Row &row) const;
+    std::uint64_t combine(const Row &row) const;
+
+    QList<Row> m_rows;
+    QHash<quint64, std::pair<int, int>> m_index; // poll id -> row, part
+    QElapsedTimer m_clock;
+    QTimer m_flashTimer;
+    // Loaded once: a QIcon made per paint would parse its SVG every time.
+    QIcon m_goodIcon;
+    QIcon m_staleIcon;
+    QIcon m_errorIcon;
+};
+
+} // namespace Fatek

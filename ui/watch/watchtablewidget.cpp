@@ -1,0 +1,411 @@
+#include "watchtablewidget.h"
+
+#include "connectionmanager.h"
+#include "watchdelegate.h"
+#include "watchinput.h"
+#include "watchtablemodel.h"
+#include "writerequest.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QClipboard>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableView>
+#include <QToolButton>
+#include <QTime>
+#include <QVBoxLayout>
+
+namespace Fatek {
+
+WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
+    : QWidget(parent)
+    , m_manager(manager)
+    , m_name(tr("Watch"))
+    , m_model(new WatchTableModel(this))
+    , m_view(new QTableView(this))
+{
+    m_addEdit = new QLineEdit(this);
+    m_addEdit->setObjectName(QStringLiteral("addressEdit"));
+    m_addEdit->setPlaceholderText(tr("Add: R100, R100..R163, X0..X15 — Enter"));
+    m_addEdit->setClearButtonEnabled(true);
+    m_addEdit->setMinimumWidth(m_addEdit->fontMetrics().horizontalAdvance(QLatin1Char('M')) * 16);
+    auto *addButton = new QPushButton(tr("Add"), this);
+
+    m_connectionCombo = new QComboBox(this);
+    m_connectionCombo->setObjectName(QStringLiteral("connectionCombo"));
+    m_connectionCombo->setMinimumContentsLength(12);
+    m_connectionCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_connectionCombo->setToolTip(tr("Connection this table polls through"));
+
+    m_interval = new QSpinBox(this);
+    m_interval->setObjectName(QStringLiteral("intervalSpin"));
+    m_interval->setRange(WatchList::MinIntervalMs, WatchList::MaxIntervalMs);
+    m_interval->setSingleStep(100);
+    m_interval->setValue(500);
+    m_interval->setSuffix(tr(" ms"));
+    m_interval->setToolTip(tr("Poll interval of this table"));
+
+    m_pause = new QToolButton(this);
+    m_pause->setObjectName(QStringLiteral("pauseButton"));
+    m_pause->setCheckable(true);
+    m_pause->setIcon(QIcon(QStringLiteral(":/icons/pause.svg")));
+    m_pause->setText(tr("Pause"));
+    m_pause->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_pause->setToolTip(tr("Stop polling this table"));
+
+    m_confirmBox = new QCheckBox(tr("Confirm writes"), this);
+    m_confirmBox->setChecked(true);
+
+    auto *bar = new QHBoxLayout;
+    bar->addWidget(m_addEdit, 3);
+    bar->addWidget(addButton);
+    bar->addSpacing(12);
+    bar->addWidget(new QLabel(tr("Connection:"), this));
+    bar->addWidget(m_connectionCombo, 1);
+    bar->addWidget(new QLabel(tr("Every"), this));
+    bar->addWidget(m_interval);
+    bar->addWidget(m_pause);
+    bar->addWidget(m_confirmBox);
+
+    m_message = new QLabel(this);
+    m_message->setObjectName(QStringLiteral("messageLabel"));
+    m_message->setWordWrap(true);
+    m_message->setVisible(false);
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    m_view->setObjectName(QStringLiteral("watchView"));
+    m_view->setModel(m_model);
+    m_view->setItemDelegate(new WatchDelegate(m_view));
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                            | QAbstractItemView::AnyKeyPressed);
+    m_view->setAlternatingRowColors(true);
+    m_view->setWordWrap(false);
+    m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 8);
+    m_view->verticalHeader()->hide();
+    QHeaderView *header = m_view->horizontalHeader();
+    header->setStretchLastSection(true);
+    const int em = m_view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    const int widths[] = {14, 7, 5, 13, 9, 8, 9, 10};
+    for (int c = 0; c < WatchTableModel::ColumnCount; ++c)
+        header->resizeSection(c, widths[c] * em);
+    m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
+
+    auto *writeAction = new QAction(tr("&Write Value…"), m_view);
+    writeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
+    writeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_swapAction = new QAction(tr("&Swap Words"), m_view);
+    m_swapAction->setToolTip(tr("Low word first for 32- and 64-bit values (some HMIs store floats so)"));
+    auto *pasteAction = new QAction(tr("&Paste Items"), m_view);
+    pasteAction->setShortcut(QKeySequence::Paste);
+    pasteAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    auto *removeAction = new QAction(QIcon(QStringLiteral(":/icons/remove.svg")), tr("&Remove"), m_view);
+    removeAction->setShortcut(QKeySequence::Delete);
+    removeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_view->addActions({writeAction, m_swapAction, pasteAction, removeAction});
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(bar);
+    layout->addWidget(m_message);
+    layout->addWidget(m_view, 1);
+
+    connect(m_addEdit, &QLineEdit::returnPressed, this, [this] { addFromText(m_addEdit->text()); });
+    connect(addButton, &QPushButton::clicked, this, [this] { addFromText(m_addEdit->text()); });
+    connect(writeAction, &QAction::triggered, this, &WatchTableWidget::writeDialog);
+    connect(m_swapAction, &QAction::triggered, this, &WatchTableWidget::toggleSwapWords);
+    connect(pasteAction, &QAction::triggered, this,
+            [this] { addFromPaste(QApplication::clipboard()->text()); });
+    connect(removeAction, &QAction::triggered, this, &WatchTableWidget::removeSelected);
+    connect(m_model, &WatchTableModel::pollListChanged, this, &WatchTableWidget::pushPollList);
+    // Queued: the confirmation dialog must not open inside the editor's commit (a nested event
+    // loop while the view is closing its editor). The row is found again by its key.
+    connect(m_model, &WatchTableModel::writeRequested, this, [this](int row, quint64 raw) {
+        const quint64 key = m_model->rowKey(row);
+        QMetaObject::invokeMethod(this, [this, key, raw] {
+            const int current = m_model->rowOfKey(key);
+            if (current >= 0)
+                write(current, raw);
+        }, Qt::QueuedConnection);
+    });
+    connect(m_model, &WatchTableModel::inputRejected, this,
+            [this](const QString &text) { showMessage(text, true); });
+    connect(m_interval, &QSpinBox::valueChanged, this, &WatchTableWidget::pushPollList);
+    connect(m_pause, &QToolButton::toggled, this, [this](bool paused) {
+        pushPollList();
+        if (paused)
+            m_model->markAllStale(tr("polling paused"));
+    });
+    connect(m_connectionCombo, &QComboBox::activated, this, [this](int index) {
+        setConnection(m_manager->connection(index));
+    });
+    connect(manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
+        refreshConnections();
+        if (!m_connection)
+            setConnection(c);
+    });
+    connect(manager, &ConnectionManager::connectionAboutToBeRemoved, this, [this](Connection *c) {
+        if (c == m_connection)
+            setConnection(nullptr);
+    });
+    connect(manager, &ConnectionManager::connectionRemoved, this, &WatchTableWidget::refreshConnections);
+
+    refreshConnections();
+    if (!manager->connections().isEmpty())
+        setConnection(manager->connections().constFirst());
+}
+
+WatchTableWidget::~WatchTableWidget()
+{
+    if (m_connection)
+        m_connection->setPollEntries(this, {});
+}
+
+void WatchTableWidget::refreshConnections()
+{
+    m_connectionCombo->clear();
+    for (Connection *c : m_manager->connections())
+        m_connectionCombo->addItem(c->name());
+    m_connectionCombo->setCurrentIndex(m_manager->indexOf(m_connection));
+}
+
+void WatchTableWidget::setConnection(Connection *connection)
+{
+    if (connection == m_connection)
+        return;
+    if (m_connection) {
+        m_connection->setPollEntries(this, {});
+        disconnect(m_connection, nullptr, m_model, nullptr);
+        disconnect(m_connection->session(), nullptr, this, nullptr);
+    }
+    m_pendingWrites.clear();
+    m_connection = connection;
+    if (connection) {
+        // A paused table is frozen: a cycle already under way when it paused must not update it.
+        connect(connection, &Connection::values, m_model, [this](const QList<WatchValue> &values) {
+            if (!isPaused())
+                m_model->applyValues(values);
+        });
+        // The session stops polling while its link is down (no batches come): mark the rows here.
+        connect(connection, &Connection::linkStateChanged, m_model, [this](LinkState state, const QString &reason) {
+            if (state == LinkState::Connected || state == LinkState::Connecting)
+                return;
+            m_model->markAllStale(reason.isEmpty() ? tr("link %1").arg(linkStateName(state))
+                                                   : tr("link %1: %2").arg(linkStateName(state), reason));
+        });
+        connect(connection->session(), &Session::finished, this, &WatchTableWidget::onFinished);
+    } else {
+        m_model->markAllStale(tr("no connection"));
+    }
+    m_connectionCombo->setCurrentIndex(m_manager->indexOf(connection));
+    pushPollList();
+}
+
+void WatchTableWidget::pushPollList()
+{
+    if (!m_connection)
+        return;
+    m_connection->setPollEntries(this, isPaused() ? QList<WatchEntry>() : m_model->pollEntries(intervalMs()));
+}
+
+WatchTableSpec WatchTableWidget::spec() const
+{
+    WatchTableSpec spec;
+    spec.name = m_name;
+    spec.intervalMs = intervalMs();
+    spec.confirmWrites = confirmWrites();
+    spec.items = m_model->items();
+    return spec;
+}
+
+void WatchTableWidget::setSpec(const WatchTableSpec &spec)
+{
+    setName(spec.name);
+    const QSignalBlocker blocker(m_interval);
+    m_interval->setValue(spec.intervalMs);
+    setConfirmWrites(spec.confirmWrites);
+    m_model->setItems(spec.items);
+}
+
+void WatchTableWidget::setName(const QString &name)
+{
+    if (name == m_name)
+        return;
+    m_name = name;
+    Q_EMIT nameChanged(name);
+}
+
+int WatchTableWidget::intervalMs() const
+{
+    return m_interval->value();
+}
+
+void WatchTableWidget::setIntervalMs(int ms)
+{
+    m_interval->setValue(ms);
+}
+
+bool WatchTableWidget::isPaused() const
+{
+    return m_pause->isChecked();
+}
+
+void WatchTableWidget::setPaused(bool paused)
+{
+    m_pause->setChecked(paused);
+}
+
+bool WatchTableWidget::confirmWrites() const
+{
+    return m_confirmBox->isChecked();
+}
+
+void WatchTableWidget::setConfirmWrites(bool confirm)
+{
+    m_confirmBox->setChecked(confirm);
+}
+
+quint8 WatchTableWidget::defaultStation() const
+{
+    return m_connection ? std::max<quint8>(1, m_connection->station()) : quint8(1);
+}
+
+QString WatchTableWidget::message() const
+{
+    return m_message->text();
+}
+
+void WatchTableWidget::showMessage(const QString &text, bool error)
+{
+    m_message->setText(text);
+    m_message->setVisible(!text.isEmpty());
+    // The palette's own role for attention-worthy text keeps light and dark themes readable.
+    m_message->setForegroundRole(error ? QPalette::HighlightedText : QPalette::WindowText);
+    m_message->setBackgroundRole(error ? QPalette::Highlight : QPalette::Window);
+    m_message->setAutoFillBackground(error);
+    Q_EMIT statusMessage(text);
+}
+
+bool WatchTableWidget::addFromText(const QString &text)
+{
+    const auto addresses = WatchInput::parseAddresses(text);
+    if (!addresses) {
+        showMessage(QString::fromStdString(addresses.error().message), true);
+        return false;
+    }
+    QList<WatchItemSpec> items;
+    for (const Address &address : *addresses) {
+        WatchItemSpec item;
+        item.address = address;
+        item.station = defaultStation();
+        item.format = ValueFormat::defaultFormat(address);
+        items.append(item);
+    }
+    m_model->addItems(items);
+    m_addEdit->clear();
+    showMessage(tr("Added %n item(s).", nullptr, static_cast<int>(items.size())), false);
+    return true;
+}
+
+bool WatchTableWidget::addFromPaste(const QString &text)
+{
+    const auto items = WatchInput::parsePasted(text, defaultStation());
+    if (!items) {
+        showMessage(tr("Cannot paste: %1").arg(QString::fromStdString(items.error().message)), true);
+        return false;
+    }
+    m_model->addItems(*items);
+    showMessage(tr("Pasted %n item(s).", nullptr, static_cast<int>(items->size())), false);
+    return true;
+}
+
+void WatchTableWidget::write(int row, quint64 raw)
+{
+    const WatchItemSpec item = m_model->item(row);
+    const QString address = QString::fromStdString(item.address.toString());
+    const QString text = ValueFormat::format(raw, m_model->valueWidth(row), item.format, item.swapWords);
+    const QString what = tr("%1 (station %2) = %3").arg(address).arg(item.station).arg(text);
+    if (!m_connection) {
+        showMessage(tr("Cannot write %1: the table has no connection.").arg(what), true);
+        return;
+    }
+    // In operator mode the session refuses the write with its own message: no question first.
+    if (confirmWrites() && !m_connection->session()->isReadOnly()) {
+        const QString question = tr("Write %1 to the PLC on %2?").arg(what, m_connection->name());
+        const bool go = m_confirm ? m_confirm(this, question)
+                                  : QMessageBox::question(this, tr("Write Value"), question)
+                                        == QMessageBox::Yes;
+        if (!go) {
+            showMessage(tr("Write of %1 cancelled.").arg(what), false);
+            return;
+        }
+    }
+    const quint64 id = m_connection->session()->submit(makeWriteRequest(item, raw));
+    m_pendingWrites.insert(id, {m_model->rowKey(row), what});
+    showMessage(tr("Writing %1 …").arg(what), false);
+}
+
+void WatchTableWidget::onFinished(quint64 id, const SessionResult &result)
+{
+    const auto it = m_pendingWrites.constFind(id);
+    if (it == m_pendingWrites.cend())
+        return;
+    const PendingWrite pending = it.value();
+    m_pendingWrites.erase(it);
+    const QString outcome = result.ok() ? tr("Wrote %1.").arg(pending.what)
+                                        : tr("Write of %1 failed: %2").arg(pending.what, result.errorText());
+    const int row = m_model->rowOfKey(pending.rowKey);
+    if (row >= 0)
+        m_model->setWriteOutcome(row, QStringLiteral("%1 %2").arg(
+                                          QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
+    showMessage(outcome, !result.ok());
+}
+
+void WatchTableWidget::removeSelected()
+{
+    QList<int> rows;
+    for (const QModelIndex &index : m_view->selectionModel()->selectedRows())
+        rows.append(index.row());
+    std::sort(rows.begin(), rows.end(), std::greater<>());
+    for (int row : std::as_const(rows))
+        m_model->removeRows(row, 1);
+}
+
+void WatchTableWidget::writeDialog()
+{
+    const QModelIndex current = m_view->currentIndex();
+    if (!current.isValid())
+        return;
+    const int row = current.row();
+    const WatchItemSpec item = m_model->item(row);
+    bool ok = false;
+    const QString text = QInputDialog::getText(
+        this, tr("Write Value"),
+        tr("New value for %1 (%2; hex as 0x1A or 1Ah):")
+            .arg(QString::fromStdString(item.address.toString()), ValueFormat::name(item.format)),
+        QLineEdit::Normal, m_model->valueText(row), &ok);
+    if (ok)
+        m_model->setData(m_model->index(row, WatchTableModel::ValueColumn), text);
+}
+
+void WatchTableWidget::toggleSwapWords()
+{
+    for (const QModelIndex &index : m_view->selectionModel()->selectedRows()) {
+        const WatchItemSpec item = m_model->item(index.row());
+        const Status s = m_model->setFormat(index.row(), item.format, !item.swapWords);
+        if (!s)
+            showMessage(QString::fromStdString(s.error().message), true);
+    }
+}
+
+} // namespace Fatek

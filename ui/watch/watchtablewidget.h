@@ -1,0 +1,107 @@
+#pragma once
+
+#include "connection.h"
+#include "watchlist.h"
+
+#include <QHash>
+#include <QPointer>
+#include <QWidget>
+
+#include <functional>
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+class QTableView;
+class QToolButton;
+
+namespace Fatek {
+
+class Connection;
+class ConnectionManager;
+class SessionResult;
+class WatchTableModel;
+
+// Asks "write this?"; true = go. Tests put an automatic answer here.
+using ConfirmHandler = std::function<bool(QWidget *parent, const QString &question)>;
+
+// One watch table: an entry line to add items, the table, its poll settings (interval, pause,
+// confirmation) and the connection it polls through. It turns edits into writes on that
+// connection's session and shows their outcome; it does no I/O itself.
+class WatchTableWidget : public QWidget
+{
+    Q_OBJECT
+
+public:
+    WatchTableWidget(ConnectionManager *manager, QWidget *parent = nullptr);
+    ~WatchTableWidget() override;
+
+    WatchTableModel *model() const { return m_model; }
+    QTableView *view() const { return m_view; }
+    QLineEdit *addressEdit() const { return m_addEdit; }
+
+    Connection *connection() const { return m_connection; }
+    void setConnection(Connection *connection);
+
+    WatchTableSpec spec() const;
+    void setSpec(const WatchTableSpec &spec);
+    QString name() const { return m_name; }
+    void setName(const QString &name);
+
+    int intervalMs() const;
+    void setIntervalMs(int ms);
+    bool isPaused() const;
+    void setPaused(bool paused);
+    bool confirmWrites() const;
+    void setConfirmWrites(bool confirm);
+    void setConfirmHandler(ConfirmHandler handler) { m_confirm = std::move(handler); }
+
+    // Adds items from typed text (addresses, ranges); false with message() set on bad input.
+    bool addFromText(const QString &text);
+    // Adds items from pasted text (CSV rows or addresses).
+    bool addFromPaste(const QString &text);
+    // The last error or outcome shown under the entry line.
+    QString message() const;
+
+    // Starts a write of `raw` to `row` (after confirmation); the outcome comes in statusMessage().
+    void write(int row, quint64 raw);
+
+Q_SIGNALS:
+    void statusMessage(const QString &text);
+    void nameChanged(const QString &name);
+
+private:
+    void showMessage(const QString &text, bool error);
+    void pushPollList();
+    void refreshConnections();
+    void onFinished(quint64 id, const SessionResult &result);
+    void removeSelected();
+    void writeDialog();
+    void toggleSwapWords();
+    quint8 defaultStation() const;
+
+    ConnectionManager *m_manager;
+    QPointer<Connection> m_connection;
+    QString m_name;
+    WatchTableModel *m_model;
+    QTableView *m_view;
+    QLineEdit *m_addEdit;
+    QComboBox *m_connectionCombo;
+    QSpinBox *m_interval;
+    QToolButton *m_pause;
+    QCheckBox *m_confirmBox;
+    QLabel *m_message;
+    QAction *m_swapAction;
+    ConfirmHandler m_confirm;
+    struct PendingWrite
+    {
+        quint64 rowKey;
+        QString what;
+    };
+    QHash<quint64, PendingWrite> m_pendingWrites;
+};
+
+} // namespace Fatek
