@@ -14,19 +14,40 @@
 namespace {
 
 // Waits (without blocking the event loop) for the first values, then grabs the window.
-void scheduleScreenshot(Fatek::MainWindow *window, const QString &path, bool demo)
+void scheduleScreenshot(Fatek::MainWindow *window, const QString &path, bool demo, const QString &tool)
 {
     auto *timer = new QTimer(window);
     auto deadline = std::make_shared<QDeadlineTimer>(15000);
     // Values move in the demo; give the table a moment after the first batch so it fills in.
     auto settle = std::make_shared<int>(demo ? 6 : 0);
-    QObject::connect(timer, &QTimer::timeout, window, [window, path, timer, deadline, settle] {
+    QObject::connect(timer, &QTimer::timeout, window, [window, path, timer, deadline, settle, tool] {
         if (!deadline->hasExpired() && !window->hasValues() && !window->connections()->connections().isEmpty())
             return;
         if (!deadline->hasExpired() && (*settle)-- > 0)
             return;
         timer->stop();
-        const bool saved = window->grab().save(path, "PNG");
+        // A tool opened for the picture gets a few settle ticks to show its first answers.
+        QWidget *target = window;
+        if (!tool.isEmpty()) {
+            QWidget *toolWidget = window->openTool(tool);
+            if (!toolWidget) {
+                std::fprintf(stderr, "fatek-studio: unknown tool %s (control, forcing, console, loopback)\n",
+                             qPrintable(tool));
+                QCoreApplication::exit(2);
+                return;
+            }
+            if (toolWidget->isWindow())
+                target = toolWidget;
+            QTimer::singleShot(3000, window, [window, target, path] {
+                const bool ok = target->grab().save(path, "PNG");
+                if (!ok)
+                    std::fprintf(stderr, "fatek-studio: cannot write screenshot %s\n", qPrintable(path));
+                Q_UNUSED(window)
+                QCoreApplication::exit(ok ? 0 : 1);
+            });
+            return;
+        }
+        const bool saved = target->grab().save(path, "PNG");
         if (!saved)
             std::fprintf(stderr, "fatek-studio: cannot write screenshot %s\n", qPrintable(path));
         QCoreApplication::exit(saved ? 0 : 1);
@@ -56,7 +77,11 @@ int main(int argc, char *argv[])
                                            QStringLiteral("Render the main window to a PNG file after startup "
                                                           "and exit."),
                                            QStringLiteral("file"));
-    parser.addOptions({demoOpt, readOnlyOpt, screenshotOpt});
+    const QCommandLineOption toolOpt(QStringLiteral("tool"),
+                                     QStringLiteral("With --screenshot: open a commissioning tool first "
+                                                    "(control, forcing, console, loopback)."),
+                                     QStringLiteral("name"));
+    parser.addOptions({demoOpt, readOnlyOpt, screenshotOpt, toolOpt});
     parser.process(app);
 
     Fatek::MainWindow window(parser.isSet(readOnlyOpt));
@@ -68,6 +93,6 @@ int main(int argc, char *argv[])
     else if (!parser.isSet(screenshotOpt))
         window.restoreLastWatchList();
     if (parser.isSet(screenshotOpt))
-        scheduleScreenshot(&window, parser.value(screenshotOpt), parser.isSet(demoOpt));
+        scheduleScreenshot(&window, parser.value(screenshotOpt), parser.isSet(demoOpt), parser.value(toolOpt));
     return QApplication::exec();
 }

@@ -1,5 +1,7 @@
 #include "mainwindow.h"
 
+#include <QHash>
+
 #include "connectiondialog.h"
 #include "connectionmanager.h"
 #include "connectionspanel.h"
@@ -250,6 +252,7 @@ void MainWindow::createTools()
     m_toolsMenu->addSeparator();
     auto *loopback = m_toolsMenu->addAction(tr("&Loopback Test…"), this, [this] {
         auto *dialog = new LoopbackDialog(this);
+        dialog->setObjectName(QStringLiteral("loopbackDialog"));
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         Connection *c = currentConnection();
         dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1), c ? c->name() : QString());
@@ -266,6 +269,36 @@ void MainWindow::createTools()
     m_toolsMenu->addAction(tr("(commissioning tools not built)"))->setEnabled(false);
 #endif
     updateToolTargets();
+}
+
+QWidget *MainWindow::openTool(const QString &name)
+{
+#ifdef FATEK_WITH_TOOLS
+    static const QHash<QString, QString> docks = {{QStringLiteral("control"), QStringLiteral("plcControlDock")},
+                                                  {QStringLiteral("forcing"), QStringLiteral("forcingDock")},
+                                                  {QStringLiteral("console"), QStringLiteral("rawConsoleDock")}};
+    if (docks.contains(name)) {
+        auto *dock = findChild<QDockWidget *>(docks.value(name));
+        if (!dock)
+            return nullptr;
+        dock->show();
+        dock->raise();
+        return dock->widget();
+    }
+    if (name == QLatin1String("loopback")) {
+        for (QAction *action : m_toolsMenu->actions()) {
+            if (action->shortcut() == QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L))
+                action->trigger();
+        }
+        auto *dialog = findChild<LoopbackDialog *>(QStringLiteral("loopbackDialog"));
+        if (dialog)
+            dialog->start();
+        return dialog;
+    }
+#else
+    Q_UNUSED(name)
+#endif
+    return nullptr;
 }
 
 Connection *MainWindow::currentConnection() const
