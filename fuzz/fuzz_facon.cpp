@@ -13,11 +13,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     FaconDeframer deframer;
     std::vector<DeframedItem> items;
     feedInChunks(input, {&deframer}, items);
-    static const std::vector<Request> probes = {Request::briefStatus(1), Request::readRegisters(1, {ElementType::R, 12}, 3),
-                  Request::readRegisters(1, {ElementType::DR, 0}, 2),
-                  Request::readDiscretes(1, {ElementType::X, 0}, 8),
-                  Request::mixedRead(1, {{ElementType::R, 1}, {ElementType::Y, 9}, {ElementType::DWM, 0}}),
-                  Request::loopback(1, {'A', 'B'}), Request::detailStatus(1), Request::readProgram(1, 0)};
+    static const std::vector<Request> probes
+        = {Request::briefStatus(1),
+           Request::readRegisters(1, {ElementType::R, 12}, 3),
+           Request::readRegisters(1, {ElementType::DR, 0}, 2),
+           Request::readDiscretes(1, {ElementType::X, 0}, 8),
+           Request::mixedRead(1, {{ElementType::R, 1}, {ElementType::Y, 9}, {ElementType::DWM, 0}}),
+           Request::loopback(1, {'A', 'B'}),
+           Request::detailStatus(1),
+           Request::readProgram(1, 0)};
     fuzzDecoders(FaconCodec(), items, input, probes);
     return 0;
 }

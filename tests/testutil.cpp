@@ -13,7 +13,8 @@ QList<Vector> loadVectors(const QString &protocol)
     QFile file(QStringLiteral(FATEK_TEST_DATA "/vectors.json"));
     if (!file.open(QIODevice::ReadOnly))
         qFatal("cannot open %s", qPrintable(file.fileName()));
-    const QJsonArray array = QJsonDocument::fromJson(file.readAll()).object().value(protocol).toArray();
+    const QJsonArray array
+        = QJsonDocument::fromJson(file.readAll()).object().value(protocol).toArray();
     QList<Vector> out;
     for (const QJsonValue &v : array) {
         const QJsonObject o = v.toObject();

@@ -64,19 +64,32 @@ void TestAddress::rejects_data()
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("messagePart");
 
-    QTest::newRow("empty") << "" << "Empty address";
-    QTest::newRow("no type") << "12" << "must start with an element type";
-    QTest::newRow("unknown type") << "Q12" << "unknown element type \"Q\"";
-    QTest::newRow("no number") << "R" << "number is missing";
-    QTest::newRow("letters after") << "R12A" << "not a decimal element number";
-    QTest::newRow("negative") << "R-1" << "not a decimal element number";
-    QTest::newRow("R out of range") << "R70000" << "R70000 is out of range";
-    QTest::newRow("X out of range") << "X10000" << "0 to 9999";
-    QTest::newRow("WY misaligned") << "WY4" << "multiple of 8";
-    QTest::newRow("DWM misaligned") << "DWM12" << "e.g. DWM8";
-    QTest::newRow("WX past end") << "WX9992" << "out of range";
-    QTest::newRow("DR past end") << "DR65535" << "out of range";
-    QTest::newRow("huge") << "R99999999999999" << "too large";
+    QTest::newRow("empty") << ""
+                           << "Empty address";
+    QTest::newRow("no type") << "12"
+                             << "must start with an element type";
+    QTest::newRow("unknown type") << "Q12"
+                                  << "unknown element type \"Q\"";
+    QTest::newRow("no number") << "R"
+                               << "number is missing";
+    QTest::newRow("letters after") << "R12A"
+                                   << "not a decimal element number";
+    QTest::newRow("negative") << "R-1"
+                              << "not a decimal element number";
+    QTest::newRow("R out of range") << "R70000"
+                                    << "R70000 is out of range";
+    QTest::newRow("X out of range") << "X10000"
+                                    << "0 to 9999";
+    QTest::newRow("WY misaligned") << "WY4"
+                                   << "multiple of 8";
+    QTest::newRow("DWM misaligned") << "DWM12"
+                                    << "e.g. DWM8";
+    QTest::newRow("WX past end") << "WX9992"
+                                 << "out of range";
+    QTest::newRow("DR past end") << "DR65535"
+                                 << "out of range";
+    QTest::newRow("huge") << "R99999999999999"
+                          << "too large";
 }
 
 void TestAddress::rejects()
@@ -117,7 +130,9 @@ void TestAddress::faconWidths()
     for (const ElementInfo &info : allElements()) {
         if (info.faconDigits == 0)
             continue;
-        const std::size_t expected = info.width == ElementWidth::Bit ? 5 : info.width == ElementWidth::Word ? 6 : 7;
+        const std::size_t expected = info.width == ElementWidth::Bit    ? 5
+                                     : info.width == ElementWidth::Word ? 6
+                                                                        : 7;
         QCOMPARE((Address{info.type, 0}.toFaconString().size()), expected);
     }
     QCOMPARE(Address({ElementType::X, 16}).toFaconString(), std::string("X0016"));
@@ -152,24 +167,40 @@ void TestAddress::validateLimits_data()
 
     for (int p : {int(Protocol::Facon), int(Protocol::Binary)}) {
         const QByteArray tag = p == int(Protocol::Facon) ? "facon " : "binary ";
-        QTest::newRow(tag + "257 points") << p << int(ErrorKind::LimitExceeded) << "1 to 256 points" << 0;
-        QTest::newRow(tag + "0 points") << p << int(ErrorKind::LimitExceeded) << "1 to 256 points" << 1;
+        QTest::newRow(tag + "257 points")
+            << p << int(ErrorKind::LimitExceeded) << "1 to 256 points" << 0;
+        QTest::newRow(tag + "0 points")
+            << p << int(ErrorKind::LimitExceeded) << "1 to 256 points" << 1;
         QTest::newRow(tag + "65 words") << p << int(ErrorKind::LimitExceeded) << "1 to 64" << 2;
-        QTest::newRow(tag + "33 DR") << p << int(ErrorKind::LimitExceeded) << "count as two words" << 3;
-        QTest::newRow(tag + "mixed read 65 words") << p << int(ErrorKind::LimitExceeded) << "at most 64" << 4;
-        QTest::newRow(tag + "mixed write 33 words") << p << int(ErrorKind::LimitExceeded) << "at most 32" << 5;
-        QTest::newRow(tag + "loopback 257") << p << int(ErrorKind::LimitExceeded) << "at most 256" << 6;
-        QTest::newRow(tag + "46 on discrete") << p << int(ErrorKind::InvalidRequest) << "needs a register" << 7;
-        QTest::newRow(tag + "44 on register") << p << int(ErrorKind::InvalidRequest) << "needs a discrete" << 8;
-        QTest::newRow(tag + "discrete value 2") << p << int(ErrorKind::InvalidRequest) << "0 (OFF) or 1 (ON)" << 9;
-        QTest::newRow(tag + "word value 70000") << p << int(ErrorKind::InvalidRequest) << "16-bit" << 10;
-        QTest::newRow(tag + "station 255") << p << int(ErrorKind::InvalidRequest) << "1 to 254" << 11;
-        QTest::newRow(tag + "span past end") << p << int(ErrorKind::InvalidAddress) << "run past" << 12;
-        QTest::newRow(tag + "mixed write count mismatch") << p << int(ErrorKind::InvalidRequest) << "values" << 13;
+        QTest::newRow(tag + "33 DR")
+            << p << int(ErrorKind::LimitExceeded) << "count as two words" << 3;
+        QTest::newRow(tag + "mixed read 65 words")
+            << p << int(ErrorKind::LimitExceeded) << "at most 64" << 4;
+        QTest::newRow(tag + "mixed write 33 words")
+            << p << int(ErrorKind::LimitExceeded) << "at most 32" << 5;
+        QTest::newRow(tag + "loopback 257")
+            << p << int(ErrorKind::LimitExceeded) << "at most 256" << 6;
+        QTest::newRow(tag + "46 on discrete")
+            << p << int(ErrorKind::InvalidRequest) << "needs a register" << 7;
+        QTest::newRow(tag + "44 on register")
+            << p << int(ErrorKind::InvalidRequest) << "needs a discrete" << 8;
+        QTest::newRow(tag + "discrete value 2")
+            << p << int(ErrorKind::InvalidRequest) << "0 (OFF) or 1 (ON)" << 9;
+        QTest::newRow(tag + "word value 70000")
+            << p << int(ErrorKind::InvalidRequest) << "16-bit" << 10;
+        QTest::newRow(tag + "station 255")
+            << p << int(ErrorKind::InvalidRequest) << "1 to 254" << 11;
+        QTest::newRow(tag + "span past end")
+            << p << int(ErrorKind::InvalidAddress) << "run past" << 12;
+        QTest::newRow(tag + "mixed write count mismatch")
+            << p << int(ErrorKind::InvalidRequest) << "values" << 13;
     }
-    QTest::newRow("facon F") << int(Protocol::Facon) << int(ErrorKind::Unsupported) << "binary protocol only" << 14;
-    QTest::newRow("binary 4F") << int(Protocol::Binary) << int(ErrorKind::Unsupported) << "FACON" << 15;
-    QTest::newRow("facon loopback control char") << int(Protocol::Facon) << int(ErrorKind::InvalidRequest) << "printable" << 16;
+    QTest::newRow("facon F") << int(Protocol::Facon) << int(ErrorKind::Unsupported)
+                             << "binary protocol only" << 14;
+    QTest::newRow("binary 4F") << int(Protocol::Binary) << int(ErrorKind::Unsupported) << "FACON"
+                               << 15;
+    QTest::newRow("facon loopback control char")
+        << int(Protocol::Facon) << int(ErrorKind::InvalidRequest) << "printable" << 16;
 }
 
 void TestAddress::validateLimits()
@@ -230,14 +261,21 @@ void TestAddress::validateAccepts()
         QVERIFY(validateRequest(Request::readRegisters(1, dr0, 32), p).ok());
         QVERIFY(validateRequest(Request::mixedRead(1, std::vector<Address>(32, dr0)), p).ok());
         QVERIFY(validateRequest(Request::mixedWrite(1, std::vector<Address>(16, dr0),
-                                                    std::vector<std::uint32_t>(16, 0xFFFFFFFF)), p).ok());
+                                                    std::vector<std::uint32_t>(16, 0xFFFFFFFF)),
+                                p)
+                    .ok());
         QVERIFY(validateRequest(Request::loopback(1, Bytes(256, 'Z')), p).ok());
         QVERIFY(validateRequest(Request::loopback(1, {}), p).ok());
         QVERIFY(validateRequest(Request::runStop(0, true), p).ok()); // broadcast
     }
-    QVERIFY(validateRequest(Request::readRegisters(1, {ElementType::DF, 0}, 1), Protocol::Binary).ok());
-    QVERIFY(validateRequest(Request::writeProgram(1, 3, std::vector<std::uint32_t>(64, 0xFFFF)), Protocol::Facon).ok());
-    QVERIFY(!validateRequest(Request::writeProgram(1, 3, std::vector<std::uint32_t>(63, 0)), Protocol::Facon).ok());
+    QVERIFY(
+        validateRequest(Request::readRegisters(1, {ElementType::DF, 0}, 1), Protocol::Binary).ok());
+    QVERIFY(validateRequest(Request::writeProgram(1, 3, std::vector<std::uint32_t>(64, 0xFFFF)),
+                            Protocol::Facon)
+                .ok());
+    QVERIFY(!validateRequest(Request::writeProgram(1, 3, std::vector<std::uint32_t>(63, 0)),
+                             Protocol::Facon)
+                 .ok());
 }
 
 void TestAddress::describeAndTarget()
@@ -248,10 +286,12 @@ void TestAddress::describeAndTarget()
     const Request wy = Request::writeRegisters(2, {ElementType::WY, 16}, {0xAAAA, 0x5555});
     QCOMPARE(wy.target(), std::string("WY16..WY32"));
     QCOMPARE(wy.describe(), std::string("write WY16..WY32 = 0xAAAA 0x5555 (station 2)"));
-    const Request mixed = Request::mixedWrite(1, {{ElementType::Y, 0}, {ElementType::DR, 2}}, {1, 255});
+    const Request mixed
+        = Request::mixedWrite(1, {{ElementType::Y, 0}, {ElementType::DR, 2}}, {1, 255});
     QCOMPARE(mixed.describe(), std::string("write Y0=1, DR2=0x000000FF (station 1)"));
     QCOMPARE(Request::runStop(0, false).describe(), std::string("STOP (broadcast)"));
-    const ProtocolError e = makePlcError(0xA, Request::readRegisters(1, {ElementType::R, 65535}, 1).target());
+    const ProtocolError e
+        = makePlcError(0xA, Request::readRegisters(1, {ElementType::R, 65535}, 1).target());
     QCOMPARE(e.message, std::string("PLC error A: illegal address R65535"));
     QCOMPARE(e.plcCode, 0xA);
     QCOMPARE(e.kind, ErrorKind::PlcError);

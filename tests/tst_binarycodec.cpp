@@ -45,8 +45,14 @@ Bytes frame(std::uint8_t header, const Bytes &payload)
     return out;
 }
 
-Bytes query(const Bytes &payload) { return frame(0x51, payload); }
-Bytes answerFrame(const Bytes &payload) { return frame(0x52, payload); }
+Bytes query(const Bytes &payload)
+{
+    return frame(0x51, payload);
+}
+Bytes answerFrame(const Bytes &payload)
+{
+    return frame(0x52, payload);
+}
 
 Response answer(const Request &r, std::vector<std::uint32_t> values = {}, Bytes data = {})
 {
@@ -75,7 +81,9 @@ std::vector<VectorCase> vectorCases()
         Response resp = answer(r, std::move(values), std::move(data));
         c.push_back({std::move(r), std::move(resp), 0, {}});
     };
-    auto fail = [&c](Request r, int code, QString text) { c.push_back({std::move(r), std::nullopt, code, text}); };
+    auto fail = [&c](Request r, int code, QString text) {
+        c.push_back({std::move(r), std::nullopt, code, text});
+    };
 
     ok(Request::briefStatus(1), {}, {0x29, 0x00, 0x00});
     ok(Request::briefStatus(1), {}, {0x01, 0x00, 0x00});
@@ -92,13 +100,17 @@ std::vector<VectorCase> vectorCases()
     ok(Request::readRegisters(1, addr(E::R, 0), 2), {0xFF55, 0xFF4B});
     ok(Request::writeRegisters(1, addr(E::WY, 16), {0xAAAA, 0x5555}));
     ok(Request::writeRegisters(1, addr(E::R, 0), {0xFF55, 0xFF4B, 0xFF41}));
-    ok(Request::mixedRead(1, {addr(E::R, 1), addr(E::Y, 9), addr(E::DWM, 0)}), {0x5C34, 1, 0x003547BA});
+    ok(Request::mixedRead(1, {addr(E::R, 1), addr(E::Y, 9), addr(E::DWM, 0)}),
+       {0x5C34, 1, 0x003547BA});
     ok(Request::mixedRead(1, {addr(E::DR, 15), addr(E::D, 1)}), {0x99990000u, 0x0000});
-    ok(Request::mixedWrite(1, {addr(E::Y, 0), addr(E::Y, 1), addr(E::WM, 8), addr(E::DR, 2)}, {1, 0, 0x5555, 0xFF}));
+    ok(Request::mixedWrite(1, {addr(E::Y, 0), addr(E::Y, 1), addr(E::WM, 8), addr(E::DR, 2)},
+                           {1, 0, 0x5555, 0xFF}));
     ok(Request::mixedWrite(1, {addr(E::DR, 0), addr(E::R, 15)}, {0, 0xFF}));
-    ok(Request::loopback(1, {'A', 'B', 'C', 'D', 'E', 'F', 'G'}), {}, {'A', 'B', 'C', 'D', 'E', 'F', 'G'});
+    ok(Request::loopback(1, {'A', 'B', 'C', 'D', 'E', 'F', 'G'}), {},
+       {'A', 'B', 'C', 'D', 'E', 'F', 'G'});
     ok(Request::loopback(1, {0xFF, 0xFF}), {}, {0xFF, 0xFF});
-    fail(Request::readRegisters(1, addr(E::R, 0), 1), 0xA, QStringLiteral("PLC error A: illegal address R0"));
+    fail(Request::readRegisters(1, addr(E::R, 0), 1), 0xA,
+         QStringLiteral("PLC error A: illegal address R0"));
     fail(Request::runStop(1, true), 5, QStringLiteral("PLC error 5"));
     return c;
 }
@@ -114,7 +126,8 @@ struct RoundTrip
 std::vector<RoundTrip> everyCommand()
 {
     std::vector<RoundTrip> t;
-    auto add = [&t](const char *name, Request r, std::vector<std::uint32_t> values = {}, Bytes data = {}) {
+    auto add = [&t](const char *name, Request r, std::vector<std::uint32_t> values = {},
+                    Bytes data = {}) {
         Response resp = answer(r, std::move(values), std::move(data));
         t.push_back({name, std::move(r), std::move(resp)});
     };
@@ -124,21 +137,28 @@ std::vector<RoundTrip> everyCommand()
     add("42 enable", Request::discreteControl(1, DiscreteOp::Enable, addr(E::M, 9999)));
     add("42 set", Request::discreteControl(1, DiscreteOp::Set, addr(E::S, 5)));
     add("42 reset", Request::discreteControl(1, DiscreteOp::Reset, addr(E::T, 300)));
-    add("43 256", Request::readEnableFlags(1, addr(E::C, 0), 256), std::vector<std::uint32_t>(256, 1));
+    add("43 256", Request::readEnableFlags(1, addr(E::C, 0), 256),
+        std::vector<std::uint32_t>(256, 1));
     add("44 1", Request::readDiscretes(2, addr(E::M, 1000), 1), {1});
-    add("44 256", Request::readDiscretes(2, addr(E::X, 100), 256), std::vector<std::uint32_t>(256, 0));
+    add("44 256", Request::readDiscretes(2, addr(E::X, 100), 256),
+        std::vector<std::uint32_t>(256, 0));
     add("45 256", Request::writeDiscretes(1, addr(E::Y, 0), std::vector<std::uint32_t>(256, 1)));
     add("46 RT", Request::readRegisters(1, addr(E::RT, 5), 4), {1, 2, 3, 0xFFFF});
-    add("46 64 D", Request::readRegisters(1, addr(E::D, 100), 64), std::vector<std::uint32_t>(64, 0x1234));
-    add("46 32 DD", Request::readRegisters(1, addr(E::DD, 0), 32), std::vector<std::uint32_t>(32, 0x89ABCDEFu));
+    add("46 64 D", Request::readRegisters(1, addr(E::D, 100), 64),
+        std::vector<std::uint32_t>(64, 0x1234));
+    add("46 32 DD", Request::readRegisters(1, addr(E::DD, 0), 32),
+        std::vector<std::uint32_t>(32, 0x89ABCDEFu));
     add("46 DWY", Request::readRegisters(1, addr(E::DWY, 32), 2), {0xFFFFFFFFu, 0});
     add("47 F", Request::writeRegisters(1, addr(E::F, 65535), {0xBEEF}));
     add("47 DRC", Request::writeRegisters(1, addr(E::DRC, 10), {0x01020304, 0xA0B0C0D0u}));
-    add("47 64 WM", Request::writeRegisters(1, addr(E::WM, 0), std::vector<std::uint32_t>(64, 0x5A5A)));
-    add("48 all kinds", Request::mixedRead(1, {addr(E::X, 1), addr(E::WC, 16), addr(E::DF, 4), addr(E::RC, 7)}),
+    add("47 64 WM",
+        Request::writeRegisters(1, addr(E::WM, 0), std::vector<std::uint32_t>(64, 0x5A5A)));
+    add("48 all kinds",
+        Request::mixedRead(1, {addr(E::X, 1), addr(E::WC, 16), addr(E::DF, 4), addr(E::RC, 7)}),
         {1, 0x1111, 0x22223333, 0x4444});
-    add("49 all kinds", Request::mixedWrite(1, {addr(E::C, 2), addr(E::WT, 8), addr(E::DRT, 0), addr(E::F, 1)},
-                                           {0, 0x1111, 0x22223333, 0x4444}));
+    add("49 all kinds",
+        Request::mixedWrite(1, {addr(E::C, 2), addr(E::WT, 8), addr(E::DRT, 0), addr(E::F, 1)},
+                            {0, 0x1111, 0x22223333, 0x4444}));
     add("4E empty", Request::loopback(1, {}), {}, {});
     Bytes all(256);
     for (std::size_t i = 0; i < all.size(); ++i)
@@ -231,7 +251,8 @@ void TestBinaryCodec::vectors()
         QVERIFY(!decoded.ok());
         QVERIFY(decoded.error().kind == ErrorKind::PlcError);
         QCOMPARE(decoded.error().plcCode, c.plcError);
-        QVERIFY2(qs(decoded.error().message).contains(c.inMessage), decoded.error().message.c_str());
+        QVERIFY2(qs(decoded.error().message).contains(c.inMessage),
+                 decoded.error().message.c_str());
         Response error = answer(c.request);
         error.errorCode = static_cast<std::uint8_t>(c.plcError);
         QCOMPARE(toHex(codec.encodeResponse(c.request, error)), toHex(vector.response));
@@ -264,7 +285,8 @@ void TestBinaryCodec::dAndDrOverlap()
         QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().message.c_str());
         const auto decoded = codec.decodeRequest(*encoded);
         QVERIFY2(decoded.ok(), qPrintable(toHex(*encoded)));
-        QVERIFY2(*decoded == r, qPrintable(qs(r.describe()) + QStringLiteral(" came back as ") + qs(decoded->describe())));
+        QVERIFY2(*decoded == r, qPrintable(qs(r.describe()) + QStringLiteral(" came back as ")
+                                           + qs(decoded->describe())));
     }
     // The payload of "D20992" starts with the bytes of "DR": make sure the test above meant it.
     const auto encoded = codec.encodeRequest(requests[0]);
@@ -277,7 +299,8 @@ void TestBinaryCodec::dAndDrOverlap()
     QVERIFY(ambiguous.ok());
     const auto parsed = codec.decodeRequest(*ambiguous);
     QVERIFY(parsed.ok());
-    QVERIFY(parsed->addresses == (std::vector<Address>{addr(E::DR, 0x4444), addr(E::R, 0x44), addr(E::R, 0x4452)}));
+    QVERIFY(parsed->addresses
+            == (std::vector<Address>{addr(E::DR, 0x4444), addr(E::R, 0x44), addr(E::R, 0x4452)}));
 }
 
 void TestBinaryCodec::everyElementRoundTrips()
@@ -287,7 +310,8 @@ void TestBinaryCodec::everyElementRoundTrips()
     for (const ElementInfo &info : allElements()) {
         std::vector<Request> requests;
         const Address first{info.type, 0};
-        const Address end{info.type, info.maxNumber / info.alignment * info.alignment}; // highest valid
+        const Address end{info.type,
+                          info.maxNumber / info.alignment * info.alignment}; // highest valid
         const std::uint32_t full = info.width == ElementWidth::DoubleWord ? 0xFFFFFFFFu
                                    : info.width == ElementWidth::Word     ? 0xFFFFu
                                                                           : 1u;
@@ -313,7 +337,8 @@ void TestBinaryCodec::everyElementRoundTrips()
             // Answers carry the element's width.
             std::vector<std::uint32_t> values;
             for (std::uint32_t i = 0; i < r.expectedValueCount(); ++i)
-                values.push_back(full == 1 ? random() % 2 : static_cast<std::uint32_t>(random()) & full);
+                values.push_back(full == 1 ? random() % 2
+                                           : static_cast<std::uint32_t>(random()) & full);
             const Response resp = answer(r, values);
             const auto back = codec.decodeResponse(codec.encodeResponse(r, resp), r);
             QVERIFY2(back.ok(), back.ok() ? "" : back.error().message.c_str());
@@ -366,27 +391,41 @@ void TestBinaryCodec::limitsRejectedBeforeSending_data()
     QTest::newRow("44 257 points") << Request::readDiscretes(1, addr(E::X, 0), 257) << limit;
     QTest::newRow("44 0 points") << Request::readDiscretes(1, addr(E::X, 0), 0) << limit;
     QTest::newRow("43 257 points") << Request::readEnableFlags(1, addr(E::X, 0), 257) << limit;
-    QTest::newRow("45 257 values") << Request::writeDiscretes(1, addr(E::Y, 0), std::vector<std::uint32_t>(257, 0)) << limit;
+    QTest::newRow("45 257 values")
+        << Request::writeDiscretes(1, addr(E::Y, 0), std::vector<std::uint32_t>(257, 0)) << limit;
     QTest::newRow("46 65 words") << Request::readRegisters(1, addr(E::R, 0), 65) << limit;
     QTest::newRow("46 33 x 32-bit") << Request::readRegisters(1, addr(E::DR, 0), 33) << limit;
-    QTest::newRow("47 65 words") << Request::writeRegisters(1, addr(E::R, 0), std::vector<std::uint32_t>(65, 0)) << limit;
-    QTest::newRow("47 33 x 32-bit") << Request::writeRegisters(1, addr(E::DWY, 0), std::vector<std::uint32_t>(33, 0)) << limit;
+    QTest::newRow("47 65 words") << Request::writeRegisters(1, addr(E::R, 0),
+                                                            std::vector<std::uint32_t>(65, 0))
+                                 << limit;
+    QTest::newRow("47 33 x 32-bit")
+        << Request::writeRegisters(1, addr(E::DWY, 0), std::vector<std::uint32_t>(33, 0)) << limit;
     QTest::newRow("48 65 words") << Request::mixedRead(1, r65) << limit;
     QTest::newRow("48 33 x 32-bit") << Request::mixedRead(1, dr33) << limit;
     QTest::newRow("48 65 words mixed") << Request::mixedRead(1, mixed) << limit;
-    QTest::newRow("49 33 words") << Request::mixedWrite(1, r33, std::vector<std::uint32_t>(33, 0)) << limit;
-    QTest::newRow("49 17 x 32-bit") << Request::mixedWrite(1, dr17, std::vector<std::uint32_t>(17, 0)) << limit;
+    QTest::newRow("49 33 words") << Request::mixedWrite(1, r33, std::vector<std::uint32_t>(33, 0))
+                                 << limit;
+    QTest::newRow("49 17 x 32-bit")
+        << Request::mixedWrite(1, dr17, std::vector<std::uint32_t>(17, 0)) << limit;
     QTest::newRow("4E 257 bytes") << Request::loopback(1, Bytes(257, 0x41)) << limit;
     QTest::newRow("4F FACON only") << Request::readProgram(1, 0) << int(ErrorKind::Unsupported);
-    QTest::newRow("50 FACON only") << Request::writeProgram(1, 0, std::vector<std::uint32_t>(64, 0)) << int(ErrorKind::Unsupported);
+    QTest::newRow("50 FACON only") << Request::writeProgram(1, 0, std::vector<std::uint32_t>(64, 0))
+                                   << int(ErrorKind::Unsupported);
     QTest::newRow("station 255") << Request::briefStatus(255) << int(ErrorKind::InvalidRequest);
-    QTest::newRow("R past 65535") << Request::readRegisters(1, addr(E::R, 65535), 2) << int(ErrorKind::InvalidAddress);
-    QTest::newRow("X10000") << Request::readDiscretes(1, addr(E::X, 10000), 1) << int(ErrorKind::InvalidAddress);
-    QTest::newRow("WY unaligned") << Request::readRegisters(1, addr(E::WY, 4), 1) << int(ErrorKind::InvalidAddress);
-    QTest::newRow("46 on discrete") << Request::readRegisters(1, addr(E::X, 0), 1) << int(ErrorKind::InvalidRequest);
-    QTest::newRow("45 value 2") << Request::writeDiscretes(1, addr(E::Y, 0), {2}) << int(ErrorKind::InvalidRequest);
-    QTest::newRow("47 16-bit overflow") << Request::writeRegisters(1, addr(E::R, 0), {0x10000}) << int(ErrorKind::InvalidRequest);
-    QTest::newRow("49 count mismatch") << Request::mixedWrite(1, {addr(E::R, 0)}, {}) << int(ErrorKind::InvalidRequest);
+    QTest::newRow("R past 65535") << Request::readRegisters(1, addr(E::R, 65535), 2)
+                                  << int(ErrorKind::InvalidAddress);
+    QTest::newRow("X10000") << Request::readDiscretes(1, addr(E::X, 10000), 1)
+                            << int(ErrorKind::InvalidAddress);
+    QTest::newRow("WY unaligned") << Request::readRegisters(1, addr(E::WY, 4), 1)
+                                  << int(ErrorKind::InvalidAddress);
+    QTest::newRow("46 on discrete")
+        << Request::readRegisters(1, addr(E::X, 0), 1) << int(ErrorKind::InvalidRequest);
+    QTest::newRow("45 value 2") << Request::writeDiscretes(1, addr(E::Y, 0), {2})
+                                << int(ErrorKind::InvalidRequest);
+    QTest::newRow("47 16-bit overflow")
+        << Request::writeRegisters(1, addr(E::R, 0), {0x10000}) << int(ErrorKind::InvalidRequest);
+    QTest::newRow("49 count mismatch")
+        << Request::mixedWrite(1, {addr(E::R, 0)}, {}) << int(ErrorKind::InvalidRequest);
 }
 
 void TestBinaryCodec::limitsRejectedBeforeSending()
@@ -412,8 +451,10 @@ void TestBinaryCodec::limitsAtTheBoundaryAccepted_data()
     QTest::newRow("46 32 x 32-bit") << Request::readRegisters(1, addr(E::DR, 0), 32);
     QTest::newRow("48 64 words mixed") << Request::mixedRead(1, mixed);
     QTest::newRow("48 64 WX (largest query)") << Request::mixedRead(1, w64);
-    QTest::newRow("49 32 words") << Request::mixedWrite(1, std::vector<Address>(32, addr(E::R, 9)), std::vector<std::uint32_t>(32, 1));
-    QTest::newRow("49 16 x 32-bit") << Request::mixedWrite(1, std::vector<Address>(16, addr(E::DWC, 8)), std::vector<std::uint32_t>(16, 1));
+    QTest::newRow("49 32 words") << Request::mixedWrite(1, std::vector<Address>(32, addr(E::R, 9)),
+                                                        std::vector<std::uint32_t>(32, 1));
+    QTest::newRow("49 16 x 32-bit") << Request::mixedWrite(
+        1, std::vector<Address>(16, addr(E::DWC, 8)), std::vector<std::uint32_t>(16, 1));
     QTest::newRow("4E 256 bytes") << Request::loopback(1, Bytes(256, 0x52));
 }
 
@@ -440,14 +481,16 @@ void TestBinaryCodec::mismatchesAreNeverValues()
     auto decoded = codec.decodeResponse(answerFrame(p), r);
     QVERIFY(!decoded.ok());
     QVERIFY(decoded.error().kind == ErrorKind::StationMismatch);
-    QVERIFY2(qs(decoded.error().message).contains(QLatin1String("station 2")), decoded.error().message.c_str());
+    QVERIFY2(qs(decoded.error().message).contains(QLatin1String("station 2")),
+             decoded.error().message.c_str());
 
     p = {0x01, 0x44};
     p.insert(p.end(), values.begin(), values.end());
     decoded = codec.decodeResponse(answerFrame(p), r);
     QVERIFY(!decoded.ok());
     QVERIFY(decoded.error().kind == ErrorKind::CommandMismatch);
-    QVERIFY2(qs(decoded.error().message).contains(QLatin1String("44")), decoded.error().message.c_str());
+    QVERIFY2(qs(decoded.error().message).contains(QLatin1String("44")),
+             decoded.error().message.c_str());
 
     // A PLC error from another station is still a station mismatch, not a PLC error.
     decoded = codec.decodeResponse(answerFrame({0x05, 0x46, 0x0A}), r);
@@ -459,7 +502,8 @@ void TestBinaryCodec::brokenFrames_data()
 {
     QTest::addColumn<Bytes>("bytes");
     QTest::addColumn<int>("kind");
-    const Bytes good = fromHex(QStringLiteral("52 10 00 09 01 46 00 10 A5 7F C4 00 01 88 21 55 AA"));
+    const Bytes good
+        = fromHex(QStringLiteral("52 10 00 09 01 46 00 10 A5 7F C4 00 01 88 21 55 AA"));
     const int bad = int(ErrorKind::BadFrame);
     Bytes b = good;
     b[13] ^= 0x01;
@@ -514,23 +558,33 @@ void TestBinaryCodec::malformedAnswers_data()
     QTest::addColumn<Bytes>("payload");
     QTest::addColumn<QString>("inMessage");
     const Request r46 = Request::readRegisters(1, addr(E::R, 12), 3);
-    QTest::newRow("46 one byte short") << r46 << Bytes{0x01, 0x46, 0x00, 0x10, 0xA5, 0x7F, 0xC4, 0x00} << "5 data bytes";
-    QTest::newRow("46 one byte long") << r46 << Bytes{0x01, 0x46, 0x00, 1, 2, 3, 4, 5, 6, 7} << "7 data bytes";
+    QTest::newRow("46 one byte short")
+        << r46 << Bytes{0x01, 0x46, 0x00, 0x10, 0xA5, 0x7F, 0xC4, 0x00} << "5 data bytes";
+    QTest::newRow("46 one byte long")
+        << r46 << Bytes{0x01, 0x46, 0x00, 1, 2, 3, 4, 5, 6, 7} << "7 data bytes";
     QTest::newRow("46 32-bit width") << Request::readRegisters(1, addr(E::DR, 0), 2)
                                      << Bytes{0x01, 0x46, 0x00, 1, 2, 3, 4} << "instead of 8";
-    QTest::newRow("44 byte 02") << Request::readDiscretes(1, addr(E::X, 50), 2) << Bytes{0x01, 0x44, 0x00, 0x01, 0x02}
-                                << "X51";
-    QTest::newRow("44 too few") << Request::readDiscretes(1, addr(E::X, 50), 2) << Bytes{0x01, 0x44, 0x00, 0x01}
-                                << "1 data bytes";
-    QTest::newRow("43 byte FF") << Request::readEnableFlags(1, addr(E::Y, 0), 1) << Bytes{0x01, 0x43, 0x00, 0xFF} << "FF";
-    QTest::newRow("40 two status bytes") << Request::briefStatus(1) << Bytes{0x01, 0x40, 0x00, 0x01, 0x00} << "3 status";
-    QTest::newRow("41 with data") << Request::runStop(1, true) << Bytes{0x01, 0x41, 0x00, 0x00} << "without data";
+    QTest::newRow("44 byte 02") << Request::readDiscretes(1, addr(E::X, 50), 2)
+                                << Bytes{0x01, 0x44, 0x00, 0x01, 0x02} << "X51";
+    QTest::newRow("44 too few") << Request::readDiscretes(1, addr(E::X, 50), 2)
+                                << Bytes{0x01, 0x44, 0x00, 0x01} << "1 data bytes";
+    QTest::newRow("43 byte FF") << Request::readEnableFlags(1, addr(E::Y, 0), 1)
+                                << Bytes{0x01, 0x43, 0x00, 0xFF} << "FF";
+    QTest::newRow("40 two status bytes")
+        << Request::briefStatus(1) << Bytes{0x01, 0x40, 0x00, 0x01, 0x00} << "3 status";
+    QTest::newRow("41 with data") << Request::runStop(1, true) << Bytes{0x01, 0x41, 0x00, 0x00}
+                                  << "without data";
     QTest::newRow("no error byte") << r46 << Bytes{0x01, 0x46} << "error byte";
-    QTest::newRow("48 widths") << Request::mixedRead(1, {addr(E::R, 1), addr(E::Y, 9), addr(E::DWM, 0)})
-                               << Bytes{0x01, 0x48, 0x00, 0x5C, 0x34, 0x01, 0x00, 0x35, 0x47} << "6 data bytes";
-    QTest::newRow("48 discrete 07") << Request::mixedRead(1, {addr(E::Y, 9)}) << Bytes{0x01, 0x48, 0x00, 0x07} << "Y9";
-    QTest::newRow("4E other data") << Request::loopback(1, {'A', 'B'}) << Bytes{0x01, 0x4E, 'A', 'C'} << "differ";
-    QTest::newRow("4E shorter") << Request::loopback(1, {'A', 'B'}) << Bytes{0x01, 0x4E, 'A'} << "differ";
+    QTest::newRow("48 widths") << Request::mixedRead(
+        1, {addr(E::R, 1), addr(E::Y, 9), addr(E::DWM, 0)})
+                               << Bytes{0x01, 0x48, 0x00, 0x5C, 0x34, 0x01, 0x00, 0x35, 0x47}
+                               << "6 data bytes";
+    QTest::newRow("48 discrete 07")
+        << Request::mixedRead(1, {addr(E::Y, 9)}) << Bytes{0x01, 0x48, 0x00, 0x07} << "Y9";
+    QTest::newRow("4E other data")
+        << Request::loopback(1, {'A', 'B'}) << Bytes{0x01, 0x4E, 'A', 'C'} << "differ";
+    QTest::newRow("4E shorter") << Request::loopback(1, {'A', 'B'}) << Bytes{0x01, 0x4E, 'A'}
+                                << "differ";
 }
 
 void TestBinaryCodec::malformedAnswers()
@@ -553,11 +607,15 @@ void TestBinaryCodec::plcErrorsNameWhatWasAsked_data()
                              << "PLC error A: illegal address R0";
     QTest::newRow("A on R100..R102") << Request::readRegisters(1, addr(E::R, 100), 3) << 0xA
                                      << "PLC error A: illegal address R100..R102";
-    QTest::newRow("2 on write Y0") << Request::writeDiscretes(1, addr(E::Y, 0), {1}) << 2 << "PLC error 2: illegal value Y0";
-    QTest::newRow("4 on mixed") << Request::mixedRead(1, {addr(E::R, 1), addr(E::DWM, 0)}) << 4
-                                << "PLC error 4: illegal format, or command cannot execute R1, DWM0";
-    QTest::newRow("3 on 42") << Request::discreteControl(1, DiscreteOp::Set, addr(E::M, 7)) << 3 << "M7";
-    QTest::newRow("6 on RUN") << Request::runStop(1, true) << 6 << "PLC error 6: cannot RUN: PLC ID differs";
+    QTest::newRow("2 on write Y0")
+        << Request::writeDiscretes(1, addr(E::Y, 0), {1}) << 2 << "PLC error 2: illegal value Y0";
+    QTest::newRow("4 on mixed")
+        << Request::mixedRead(1, {addr(E::R, 1), addr(E::DWM, 0)}) << 4
+        << "PLC error 4: illegal format, or command cannot execute R1, DWM0";
+    QTest::newRow("3 on 42") << Request::discreteControl(1, DiscreteOp::Set, addr(E::M, 7)) << 3
+                             << "M7";
+    QTest::newRow("6 on RUN") << Request::runStop(1, true) << 6
+                              << "PLC error 6: cannot RUN: PLC ID differs";
     QTest::newRow("unknown 0x1F") << Request::briefStatus(1) << 0x1F << "31";
 }
 
@@ -568,7 +626,8 @@ void TestBinaryCodec::plcErrorsNameWhatWasAsked()
     QFETCH(QString, message);
     BinaryCodec codec;
     const auto decoded = codec.decodeResponse(
-        answerFrame({request.station, static_cast<std::uint8_t>(request.command), static_cast<std::uint8_t>(code)}),
+        answerFrame({request.station, static_cast<std::uint8_t>(request.command),
+                     static_cast<std::uint8_t>(code)}),
         request);
     QVERIFY(!decoded.ok());
     QVERIFY(decoded.error().kind == ErrorKind::PlcError);
@@ -649,17 +708,20 @@ void TestBinaryCodec::wrapHeaderAndErrorAnswer()
     BinaryCodec codec;
     const Bytes body = {0x01, 0x46, 0x03, 0x52, 0x00, 0x0C};
     QCOMPARE(toHex(codec.wrap(body)), QStringLiteral("51 10 00 06 01 46 03 52 00 0C 0F 85 55 AA"));
-    QCOMPARE(toHex(codec.wrap(Bytes{0x01, 0x46, 0x0A}, true)), QStringLiteral("52 10 00 03 01 46 0A C7 E3 55 AA"));
+    QCOMPARE(toHex(codec.wrap(Bytes{0x01, 0x46, 0x0A}, true)),
+             QStringLiteral("52 10 00 03 01 46 0A C7 E3 55 AA"));
     QCOMPARE(toHex(codec.encodeErrorResponse(FrameHeader{1, 0x46}, 0x0A)),
              QStringLiteral("52 10 00 03 01 46 0A C7 E3 55 AA"));
     QCOMPARE(toHex(codec.encodeErrorResponse(FrameHeader{1, 0x41}, 0x05)),
              QStringLiteral("52 10 00 03 01 41 05 85 D7 55 AA"));
 
-    const auto header = codec.frameHeader(fromHex(QStringLiteral("52 10 00 03 01 46 0A C7 E3 55 AA")));
+    const auto header
+        = codec.frameHeader(fromHex(QStringLiteral("52 10 00 03 01 46 0A C7 E3 55 AA")));
     QVERIFY(header.has_value());
     QCOMPARE(header->station, std::uint8_t(1));
     QCOMPARE(header->command, std::uint8_t(0x46));
-    QVERIFY(!codec.frameHeader(fromHex(QStringLiteral("52 10 00 03 01 46 0A C7 E4 55 AA"))).has_value());
+    QVERIFY(!codec.frameHeader(fromHex(QStringLiteral("52 10 00 03 01 46 0A C7 E4 55 AA")))
+                 .has_value());
     // Unknown commands still have a header (the simulator answers them with error 4).
     const auto unknown = codec.frameHeader(query({0x09, 0x4A}));
     QVERIFY(unknown.has_value());
@@ -670,12 +732,15 @@ void TestBinaryCodec::wrapHeaderAndErrorAnswer()
 void TestBinaryCodec::summaries()
 {
     BinaryCodec codec;
-    auto summary = [&codec](const QString &hex) { return qs(codec.summarize(fromHex(hex))); };
+    auto summary = [&codec](const QString &hex) {
+        return qs(codec.summarize(fromHex(hex)));
+    };
     QCOMPARE(summary(QStringLiteral("51 10 00 06 01 46 03 52 00 0C 0F 85 55 AA")),
              QStringLiteral("station 1, 46 read consecutive registers: 3 x R12"));
     QCOMPARE(summary(QStringLiteral("52 10 00 03 01 46 0A C7 E3 55 AA")),
              QStringLiteral("station 1, 46 answer: error A (illegal address)"));
-    QCOMPARE(summary(QStringLiteral("51 10 00 0E 01 48 03 52 00 01 59 00 09 44 57 4D 00 00 67 33 55 AA")),
+    QCOMPARE(summary(QStringLiteral(
+                 "51 10 00 0E 01 48 03 52 00 01 59 00 09 44 57 4D 00 00 67 33 55 AA")),
              QStringLiteral("station 1, 48 mixed read: R1, Y9, DWM0"));
     QCOMPARE(summary(QStringLiteral("51 10 00 03 01 41 01 84 14 55 AA")),
              QStringLiteral("station 1, 41 RUN/STOP control: RUN"));
@@ -683,9 +748,11 @@ void TestBinaryCodec::summaries()
              QStringLiteral("station 1, 46 answer: OK, 6 data bytes: 10 A5 7F C4 00 01"));
     QCOMPARE(summary(QStringLiteral("52 10 00 09 01 4E 41 42 43 44 45 46 47 32 79 55 AA")),
              QStringLiteral("station 1, 4E answer: echo of 7 bytes"));
-    QVERIFY(summary(QStringLiteral("52 10 00 03 01 46 0A C7 E4 55 AA")).startsWith(QLatin1String("bad binary frame")));
+    QVERIFY(summary(QStringLiteral("52 10 00 03 01 46 0A C7 E4 55 AA"))
+                .startsWith(QLatin1String("bad binary frame")));
     QVERIFY(qs(codec.summarize(query({0x01, 0x4A}))).contains(QLatin1String("4A unknown command")));
-    QVERIFY(qs(codec.summarize(query({0x01, 0x44, 0x01, 'Z', 0, 0}))).contains(QLatin1String("Unknown element")));
+    QVERIFY(qs(codec.summarize(query({0x01, 0x44, 0x01, 'Z', 0, 0})))
+                .contains(QLatin1String("Unknown element")));
 }
 
 void TestBinaryCodec::fuzzNeverCrashesAndReencodes()
@@ -711,7 +778,8 @@ void TestBinaryCodec::fuzzNeverCrashesAndReencodes()
             else if (kind == 2 && !payload.empty())
                 payload.erase(payload.begin() + std::ptrdiff_t(pos));
             else if (payload.size() > 2)
-                payload[2 + random() % (payload.size() - 2)] = static_cast<std::uint8_t>("XYMSTCRDFW"[random() % 10]);
+                payload[2 + random() % (payload.size() - 2)]
+                    = static_cast<std::uint8_t>("XYMSTCRDFW"[random() % 10]);
         }
         const Bytes q = query(payload);
         const auto decoded = codec.decodeRequest(q);
@@ -724,7 +792,8 @@ void TestBinaryCodec::fuzzNeverCrashesAndReencodes()
         } else {
             QVERIFY(!decoded.error().message.empty());
             // Checksum and framing are fine here: only a payload without command goes unanswered.
-            QVERIFY2(decoded.error().plcCode != 0 || payload.size() < 2, decoded.error().message.c_str());
+            QVERIFY2(decoded.error().plcCode != 0 || payload.size() < 2,
+                     decoded.error().message.c_str());
         }
         QVERIFY(!codec.summarize(q).empty());
 

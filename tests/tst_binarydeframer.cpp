@@ -167,17 +167,16 @@ void TestBinaryDeframer::manyFramesInOneChunk()
 
 void TestBinaryDeframer::garbageInterleaved()
 {
-    const Bytes facon = TestUtil::fromFacon(QStringLiteral("<STX>014603R00012F1<ETX><STX>01460010A5<ETX>"));
+    const Bytes facon
+        = TestUtil::fromFacon(QStringLiteral("<STX>014603R00012F1<ETX><STX>01460010A5<ETX>"));
     const QList<Bytes> garbage = {
-        {0x00, 0xFF, 0x13},
-        {0x52},                   // stray header
-        {0x52, 0x52, 0x52},       // several
-        {0x52, 0x10, 0xFF, 0xFF}, // header, ID and a huge length
-        {0x52, 0x10, 0x02, 0x01}, // length 513, one past the largest payload
-        {0x52, 0x10, 0x00, 0x01}, // too short for station and command
-        {0x52, 0x11, 0x00, 0x03}, // wrong ID
-        {0x55, 0xAA, 0x10},
-        facon,
+        {0x00, 0xFF, 0x13},       {0x52}, // stray header
+        {0x52, 0x52, 0x52},               // several
+        {0x52, 0x10, 0xFF, 0xFF},         // header, ID and a huge length
+        {0x52, 0x10, 0x02, 0x01},         // length 513, one past the largest payload
+        {0x52, 0x10, 0x00, 0x01},         // too short for station and command
+        {0x52, 0x11, 0x00, 0x03},         // wrong ID
+        {0x55, 0xAA, 0x10},       facon,
     };
     const QList<Bytes> frames = responses();
     Bytes stream;

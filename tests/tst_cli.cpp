@@ -1,6 +1,6 @@
-// fatek-cli end to end: the built executable run with QProcess, against its embedded simulator (--sim)
-// and against the independent Python reference PLC (tests/reference/fatekref.py) over TCP and UDP in
-// both protocols.
+// fatek-cli end to end: the built executable run with QProcess, against its embedded simulator
+// (--sim) and against the independent Python reference PLC (tests/reference/fatekref.py) over TCP
+// and UDP in both protocols.
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -61,8 +61,9 @@ QStringList sim(const QStringList &args)
 
 } // namespace
 
-#define RUN_OK(r)                                                                                                      \
-    QVERIFY2((r).code == 0, qPrintable(QStringLiteral("exit %1: %2 %3").arg((r).code).arg((r).err, (r).out)))
+#define RUN_OK(r)                                                                                  \
+    QVERIFY2((r).code == 0,                                                                        \
+             qPrintable(QStringLiteral("exit %1: %2 %3").arg((r).code).arg((r).err, (r).out)))
 
 class TestCli : public QObject
 {
@@ -112,8 +113,9 @@ void TestCli::initTestCase()
         return;
     }
     m_ref.setProgram(python);
-    m_ref.setArguments({QStringLiteral(FATEK_REFERENCE_PY), QStringLiteral("serve"), QStringLiteral("--tcp"),
-                        QStringLiteral("0"), QStringLiteral("--udp"), QStringLiteral("0")});
+    m_ref.setArguments({QStringLiteral(FATEK_REFERENCE_PY), QStringLiteral("serve"),
+                        QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--udp"),
+                        QStringLiteral("0")});
     m_ref.start();
     if (!m_ref.waitForStarted(10000)) {
         m_refProblem = QStringLiteral("the reference server did not start");
@@ -127,11 +129,13 @@ void TestCli::initTestCase()
             const auto m = listening.match(line);
             if (!m.hasMatch())
                 continue;
-            (m.captured(1) == QLatin1String("tcp") ? m_refTcp : m_refUdp) = static_cast<quint16>(m.captured(2).toUInt());
+            (m.captured(1) == QLatin1String("tcp") ? m_refTcp : m_refUdp)
+                = static_cast<quint16>(m.captured(2).toUInt());
         }
     }
     if (m_refTcp == 0 || m_refUdp == 0)
-        m_refProblem = QStringLiteral("the reference server did not say where it listens: ") + QString::fromUtf8(seen);
+        m_refProblem = QStringLiteral("the reference server did not say where it listens: ")
+                       + QString::fromUtf8(seen);
 }
 
 void TestCli::cleanupTestCase()
@@ -145,8 +149,14 @@ void TestCli::cleanupTestCase()
 QStringList TestCli::ref(const QString &medium, const QString &protocol) const
 {
     const quint16 port = medium == QLatin1String("tcp") ? m_refTcp : m_refUdp;
-    return {QStringLiteral("--") + medium, QStringLiteral("127.0.0.1:%1").arg(port), QStringLiteral("--protocol"), protocol,
-            QStringLiteral("--json"), QStringLiteral("--timeout"), QStringLiteral("1000"), QStringLiteral("--retries"),
+    return {QStringLiteral("--") + medium,
+            QStringLiteral("127.0.0.1:%1").arg(port),
+            QStringLiteral("--protocol"),
+            protocol,
+            QStringLiteral("--json"),
+            QStringLiteral("--timeout"),
+            QStringLiteral("1000"),
+            QStringLiteral("--retries"),
             QStringLiteral("1")};
 }
 
@@ -165,36 +175,47 @@ void TestCli::usageErrors_data()
 {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("message");
-    QTest::newRow("no link") << QStringList{QStringLiteral("status")} << QStringLiteral("No link given");
-    QTest::newRow("no command") << QStringList{QStringLiteral("--sim")} << QStringLiteral("No command");
-    QTest::newRow("unknown command") << sim({QStringLiteral("explode")}) << QStringLiteral("Unknown command");
-    QTest::newRow("unknown option") << sim({QStringLiteral("--frobnicate"), QStringLiteral("status")})
-                                    << QStringLiteral("Unknown option --frobnicate");
+    QTest::newRow("no link") << QStringList{QStringLiteral("status")}
+                             << QStringLiteral("No link given");
+    QTest::newRow("no command") << QStringList{QStringLiteral("--sim")}
+                                << QStringLiteral("No command");
+    QTest::newRow("unknown command")
+        << sim({QStringLiteral("explode")}) << QStringLiteral("Unknown command");
+    QTest::newRow("unknown option")
+        << sim({QStringLiteral("--frobnicate"), QStringLiteral("status")})
+        << QStringLiteral("Unknown option --frobnicate");
     QTest::newRow("two links") << QStringList{QStringLiteral("--sim"), QStringLiteral("--tcp"),
                                               QStringLiteral("127.0.0.1"), QStringLiteral("status")}
                                << QStringLiteral("only one");
-    QTest::newRow("address out of range") << sim({QStringLiteral("read"), QStringLiteral("R70000")})
-                                          << QStringLiteral("R70000");
-    QTest::newRow("16-bit overflow") << sim({QStringLiteral("write"), QStringLiteral("R100"), QStringLiteral("70000")})
-                                     << QStringLiteral("16-bit");
-    QTest::newRow("discrete value") << sim({QStringLiteral("write"), QStringLiteral("Y0"), QStringLiteral("2")})
-                                    << QStringLiteral("0, 1, on or off");
-    QTest::newRow("count too big") << sim({QStringLiteral("read"), QStringLiteral("R0"), QStringLiteral("65")})
-                                   << QStringLiteral("1..64");
-    QTest::newRow("set on register") << sim({QStringLiteral("set"), QStringLiteral("R0")})
-                                     << QStringLiteral("discretes");
-    QTest::newRow("bad raw hex") << sim({QStringLiteral("raw"), QStringLiteral("--hex"), QStringLiteral("0G")})
+    QTest::newRow("address out of range")
+        << sim({QStringLiteral("read"), QStringLiteral("R70000")}) << QStringLiteral("R70000");
+    QTest::newRow("16-bit overflow")
+        << sim({QStringLiteral("write"), QStringLiteral("R100"), QStringLiteral("70000")})
+        << QStringLiteral("16-bit");
+    QTest::newRow("discrete value")
+        << sim({QStringLiteral("write"), QStringLiteral("Y0"), QStringLiteral("2")})
+        << QStringLiteral("0, 1, on or off");
+    QTest::newRow("count too big")
+        << sim({QStringLiteral("read"), QStringLiteral("R0"), QStringLiteral("65")})
+        << QStringLiteral("1..64");
+    QTest::newRow("set on register")
+        << sim({QStringLiteral("set"), QStringLiteral("R0")}) << QStringLiteral("discretes");
+    QTest::newRow("bad raw hex") << sim(
+        {QStringLiteral("raw"), QStringLiteral("--hex"), QStringLiteral("0G")})
                                  << QStringLiteral("hex");
-    QTest::newRow("bad port") << QStringList{QStringLiteral("--tcp"), QStringLiteral("h:99999"), QStringLiteral("status")}
+    QTest::newRow("bad port") << QStringList{QStringLiteral("--tcp"), QStringLiteral("h:99999"),
+                                             QStringLiteral("status")}
                               << QStringLiteral("HOST:PORT");
-    QTest::newRow("read from broadcast")
-        << sim({QStringLiteral("--station"), QStringLiteral("0"), QStringLiteral("read"), QStringLiteral("R0")})
-        << QStringLiteral("broadcast");
+    QTest::newRow("read from broadcast") << sim({QStringLiteral("--station"), QStringLiteral("0"),
+                                                 QStringLiteral("read"), QStringLiteral("R0")})
+                                         << QStringLiteral("broadcast");
     QTest::newRow("endless monitor in a chain")
-        << sim({QStringLiteral("monitor"), QStringLiteral("R0"), QStringLiteral("--then"), QStringLiteral("status")})
+        << sim({QStringLiteral("monitor"), QStringLiteral("R0"), QStringLiteral("--then"),
+                QStringLiteral("status")})
         << QStringLiteral("--cycles");
     QTest::newRow("option of another command")
-        << sim({QStringLiteral("status"), QStringLiteral("--cycles"), QStringLiteral("3")}) << QStringLiteral("monitor");
+        << sim({QStringLiteral("status"), QStringLiteral("--cycles"), QStringLiteral("3")})
+        << QStringLiteral("monitor");
 }
 
 void TestCli::usageErrors()
@@ -234,22 +255,27 @@ void TestCli::simStatus()
 
 void TestCli::simWriteReadRoundTrip()
 {
-    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R100"),
-                              QStringLiteral("1234"), QStringLiteral("-2"), QStringLiteral("0xBEEF"),
-                              QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("R100"), QStringLiteral("3")}));
+    const Run r
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R100"),
+                      QStringLiteral("1234"), QStringLiteral("-2"), QStringLiteral("0xBEEF"),
+                      QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("R100"),
+                      QStringLiteral("3")}));
     RUN_OK(r);
     QCOMPARE(r.lines().size(), 2);
     QCOMPARE(r.json(0).value(QStringLiteral("written")).toArray(), ints({1234, 65534, 48879}));
     QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({1234, 65534, 48879}));
 
-    // Without the write the simulator starts from zero: the round trip really read what was written.
-    const Run fresh = runCli(sim({QStringLiteral("--json"), QStringLiteral("read"), QStringLiteral("R100"), QStringLiteral("3")}));
+    // Without the write the simulator starts from zero: the round trip really read what was
+    // written.
+    const Run fresh = runCli(sim({QStringLiteral("--json"), QStringLiteral("read"),
+                                  QStringLiteral("R100"), QStringLiteral("3")}));
     RUN_OK(fresh);
     QCOMPARE(fresh.json().value(QStringLiteral("values")).toArray(), ints({0, 0, 0}));
 
-    const Run dr = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("DR200"),
-                               QStringLiteral("-100000"), QStringLiteral("--then"), QStringLiteral("read"),
-                               QStringLiteral("R200"), QStringLiteral("2")}));
+    const Run dr
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("DR200"),
+                      QStringLiteral("-100000"), QStringLiteral("--then"), QStringLiteral("read"),
+                      QStringLiteral("R200"), QStringLiteral("2")}));
     RUN_OK(dr);
     // -100000 = 0xFFFE7960: low word first in R200.
     QCOMPARE(dr.json(1).value(QStringLiteral("values")).toArray(), ints({0x7960, 0xFFFE}));
@@ -257,10 +283,12 @@ void TestCli::simWriteReadRoundTrip()
 
 void TestCli::simDiscreteSetThenRead()
 {
-    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("set"), QStringLiteral("M7"), QStringLiteral("--then"),
-                              QStringLiteral("read"), QStringLiteral("M6"), QStringLiteral("3"), QStringLiteral("--then"),
-                              QStringLiteral("write"), QStringLiteral("M6"), QStringLiteral("on"), QStringLiteral("off"),
-                              QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("M6..M8")}));
+    const Run r
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("set"), QStringLiteral("M7"),
+                      QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("M6"),
+                      QStringLiteral("3"), QStringLiteral("--then"), QStringLiteral("write"),
+                      QStringLiteral("M6"), QStringLiteral("on"), QStringLiteral("off"),
+                      QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("M6..M8")}));
     RUN_OK(r);
     QCOMPARE(r.json(0).value(QStringLiteral("action")).toString(), QStringLiteral("set"));
     QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({0, 1, 0}));
@@ -269,10 +297,12 @@ void TestCli::simDiscreteSetThenRead()
 
 void TestCli::simDisableForced()
 {
-    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("disable"), QStringLiteral("Y5"), QStringLiteral("--then"),
-                              QStringLiteral("forced"), QStringLiteral("Y4"), QStringLiteral("3"), QStringLiteral("--then"),
-                              QStringLiteral("enable"), QStringLiteral("Y5"), QStringLiteral("--then"),
-                              QStringLiteral("forced"), QStringLiteral("Y4"), QStringLiteral("3")}));
+    const Run r
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("disable"), QStringLiteral("Y5"),
+                      QStringLiteral("--then"), QStringLiteral("forced"), QStringLiteral("Y4"),
+                      QStringLiteral("3"), QStringLiteral("--then"), QStringLiteral("enable"),
+                      QStringLiteral("Y5"), QStringLiteral("--then"), QStringLiteral("forced"),
+                      QStringLiteral("Y4"), QStringLiteral("3")}));
     RUN_OK(r);
     QCOMPARE(r.json(1).value(QStringLiteral("forced")).toArray(), ints({0, 1, 0}));
     QCOMPARE(r.json(3).value(QStringLiteral("forced")).toArray(), ints({0, 0, 0}));
@@ -280,23 +310,27 @@ void TestCli::simDisableForced()
 
 void TestCli::simLoopback()
 {
-    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("loopback"), QStringLiteral("HELLO"),
-                              QStringLiteral("--count"), QStringLiteral("5")}));
+    const Run r
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("loopback"), QStringLiteral("HELLO"),
+                      QStringLiteral("--count"), QStringLiteral("5")}));
     RUN_OK(r);
     const QJsonObject o = r.json();
     QCOMPARE(o.value(QStringLiteral("sent")).toInt(), 5);
     QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 5);
     QCOMPARE(o.value(QStringLiteral("mismatches")).toInt(), 0);
     QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), 0);
-    QVERIFY(o.value(QStringLiteral("minMs")).toDouble() <= o.value(QStringLiteral("meanMs")).toDouble());
-    QVERIFY(o.value(QStringLiteral("meanMs")).toDouble() <= o.value(QStringLiteral("maxMs")).toDouble());
+    QVERIFY(o.value(QStringLiteral("minMs")).toDouble()
+            <= o.value(QStringLiteral("meanMs")).toDouble());
+    QVERIFY(o.value(QStringLiteral("meanMs")).toDouble()
+            <= o.value(QStringLiteral("maxMs")).toDouble());
 }
 
 void TestCli::simMonitorThreeCycles()
 {
-    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("monitor"), QStringLiteral("R0..R1"),
-                              QStringLiteral("Y0"), QStringLiteral("--interval"), QStringLiteral("100"),
-                              QStringLiteral("--cycles"), QStringLiteral("3")}));
+    const Run r
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("monitor"), QStringLiteral("R0..R1"),
+                      QStringLiteral("Y0"), QStringLiteral("--interval"), QStringLiteral("100"),
+                      QStringLiteral("--cycles"), QStringLiteral("3")}));
     RUN_OK(r);
     QCOMPARE(r.lines().size(), 3);
     qint64 lastScans = -1;
@@ -317,8 +351,9 @@ void TestCli::simMonitorThreeCycles()
 void TestCli::simMonitorTable()
 {
     // R50: outside what the demo ladder drives (R0, R1, DR10), so it stays 0.
-    const Run r = runCli(sim({QStringLiteral("monitor"), QStringLiteral("R50"), QStringLiteral("--interval"),
-                              QStringLiteral("50"), QStringLiteral("--cycles"), QStringLiteral("3")}));
+    const Run r = runCli(
+        sim({QStringLiteral("monitor"), QStringLiteral("R50"), QStringLiteral("--interval"),
+             QStringLiteral("50"), QStringLiteral("--cycles"), QStringLiteral("3")}));
     RUN_OK(r);
     const QStringList l = r.lines();
     QCOMPARE(l.size(), 4);
@@ -330,30 +365,37 @@ void TestCli::simMonitorTable()
 
 void TestCli::simRawFrame()
 {
-    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("raw"), QStringLiteral("--frame"), QStringLiteral("0140")}));
+    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("raw"),
+                              QStringLiteral("--frame"), QStringLiteral("0140")}));
     RUN_OK(r);
     const QJsonObject o = r.json();
     // STX "0140" LRC ETX: the LRC of 02 30 31 34 30 is C7.
     QCOMPARE(o.value(QStringLiteral("sent")).toString(), QStringLiteral("02 30 31 34 30 43 37 03"));
     // Station 01, command 40, error 0, STATUS1 01 (RUN).
-    QVERIFY2(o.value(QStringLiteral("answerText")).toString().startsWith(QLatin1String("<02>0140001")),
-             qPrintable(r.out));
+    QVERIFY2(
+        o.value(QStringLiteral("answerText")).toString().startsWith(QLatin1String("<02>0140001")),
+        qPrintable(r.out));
 
     // Unframed bytes reach the wire as typed; an incomplete frame gets no answer: a link failure.
-    const Run bare = runCli(sim({QStringLiteral("--timeout"), QStringLiteral("200"), QStringLiteral("raw"), QStringLiteral("0140")}));
+    const Run bare = runCli(sim({QStringLiteral("--timeout"), QStringLiteral("200"),
+                                 QStringLiteral("raw"), QStringLiteral("0140")}));
     QCOMPARE(bare.code, 3);
     QVERIFY(bare.err.contains(QLatin1String("No answer")));
 }
 
 void TestCli::simJsonShape()
 {
-    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R12"), QStringLiteral("4261"),
-                              QStringLiteral("32708"), QStringLiteral("1"), QStringLiteral("--then"), QStringLiteral("read"),
-                              QStringLiteral("R12"), QStringLiteral("3")}));
+    const Run r
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R12"),
+                      QStringLiteral("4261"), QStringLiteral("32708"), QStringLiteral("1"),
+                      QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("R12"),
+                      QStringLiteral("3")}));
     RUN_OK(r);
-    QCOMPARE(r.lines().at(1), QStringLiteral("{\"address\":\"R12\",\"station\":1,\"values\":[4261,32708,1]}"));
+    QCOMPARE(r.lines().at(1),
+             QStringLiteral("{\"address\":\"R12\",\"station\":1,\"values\":[4261,32708,1]}"));
 
-    const Run e = runCli(sim({QStringLiteral("--json"), QStringLiteral("read"), QStringLiteral("R5000")}));
+    const Run e
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("read"), QStringLiteral("R5000")}));
     QCOMPARE(e.code, 4);
     const QJsonObject o = e.json();
     QCOMPARE(o.value(QStringLiteral("code")).toInt(), 4);
@@ -363,9 +405,10 @@ void TestCli::simJsonShape()
 
 void TestCli::simCsvShape()
 {
-    const Run r = runCli(sim({QStringLiteral("--csv"), QStringLiteral("write"), QStringLiteral("R12"), QStringLiteral("7"),
-                              QStringLiteral("8"), QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("R12"),
-                              QStringLiteral("2")}));
+    const Run r
+        = runCli(sim({QStringLiteral("--csv"), QStringLiteral("write"), QStringLiteral("R12"),
+                      QStringLiteral("7"), QStringLiteral("8"), QStringLiteral("--then"),
+                      QStringLiteral("read"), QStringLiteral("R12"), QStringLiteral("2")}));
     RUN_OK(r);
     const QStringList l = r.lines();
     QCOMPARE(l.size(), 6);
@@ -374,8 +417,10 @@ void TestCli::simCsvShape()
     QCOMPARE(l.at(4), QStringLiteral("1,R12,7"));
     QCOMPARE(l.at(5), QStringLiteral("1,R13,8"));
 
-    const Run m = runCli(sim({QStringLiteral("--csv"), QStringLiteral("monitor"), QStringLiteral("R20"), QStringLiteral("Y1"),
-                              QStringLiteral("--interval"), QStringLiteral("50"), QStringLiteral("--cycles"), QStringLiteral("2")}));
+    const Run m
+        = runCli(sim({QStringLiteral("--csv"), QStringLiteral("monitor"), QStringLiteral("R20"),
+                      QStringLiteral("Y1"), QStringLiteral("--interval"), QStringLiteral("50"),
+                      QStringLiteral("--cycles"), QStringLiteral("2")}));
     RUN_OK(m);
     QCOMPARE(m.lines().size(), 3);
     QCOMPARE(m.lines().at(0), QStringLiteral("cycle,time,station,R20,Y1"));
@@ -385,9 +430,11 @@ void TestCli::simCsvShape()
 
 void TestCli::simMixedRead()
 {
-    const Run r = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R30"), QStringLiteral("99"),
-                              QStringLiteral("--then"), QStringLiteral("set"), QStringLiteral("M3"), QStringLiteral("--then"),
-                              QStringLiteral("read"), QStringLiteral("R30"), QStringLiteral("M3"), QStringLiteral("M4")}));
+    const Run r
+        = runCli(sim({QStringLiteral("--json"), QStringLiteral("write"), QStringLiteral("R30"),
+                      QStringLiteral("99"), QStringLiteral("--then"), QStringLiteral("set"),
+                      QStringLiteral("M3"), QStringLiteral("--then"), QStringLiteral("read"),
+                      QStringLiteral("R30"), QStringLiteral("M3"), QStringLiteral("M4")}));
     RUN_OK(r);
     QCOMPARE(r.lines().size(), 5);
     QCOMPARE(r.json(2).value(QStringLiteral("address")).toString(), QStringLiteral("R30"));
@@ -406,26 +453,31 @@ void TestCli::plcErrorExit4()
 
     const Run r = runCli(sim({QStringLiteral("read"), QStringLiteral("R5000")}));
     QCOMPARE(r.code, 4);
-    QVERIFY2(r.err.contains(QLatin1String("PLC error A: illegal address R5000")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("PLC error A: illegal address R5000")),
+             qPrintable(r.err));
     QVERIFY(r.out.isEmpty());
 }
 
 void TestCli::linkFailureExit3()
 {
-    const Run r = runCli({QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:1"), QStringLiteral("status")});
+    const Run r = runCli(
+        {QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:1"), QStringLiteral("status")});
     QCOMPARE(r.code, 3);
     QVERIFY2(r.err.contains(QLatin1String("No connection")), qPrintable(r.err));
 }
 
 void TestCli::readOnlyExit5()
 {
-    const Run w = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("write"), QStringLiteral("R100"), QStringLiteral("5")}));
+    const Run w = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("write"),
+                              QStringLiteral("R100"), QStringLiteral("5")}));
     QCOMPARE(w.code, 5);
     QVERIFY(!w.err.isEmpty());
-    const Run s = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("set"), QStringLiteral("Y0")}));
+    const Run s
+        = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("set"), QStringLiteral("Y0")}));
     QCOMPARE(s.code, 5);
     // Reading stays allowed in operator mode.
-    const Run r = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("--json"), QStringLiteral("read"), QStringLiteral("R100")}));
+    const Run r = runCli(sim({QStringLiteral("--read-only"), QStringLiteral("--json"),
+                              QStringLiteral("read"), QStringLiteral("R100")}));
     RUN_OK(r);
     QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({0}));
 }
@@ -434,7 +486,8 @@ void TestCli::reference_data()
 {
     QTest::addColumn<QString>("medium");
     QTest::addColumn<QString>("protocol");
-    QTest::addColumn<int>("base"); // element numbers of this row: the reference PLC is shared by all rows
+    QTest::addColumn<int>(
+        "base"); // element numbers of this row: the reference PLC is shared by all rows
     QTest::newRow("tcp facon") << QStringLiteral("tcp") << QStringLiteral("facon") << 1000;
     QTest::newRow("tcp binary") << QStringLiteral("tcp") << QStringLiteral("binary") << 1100;
     QTest::newRow("udp facon") << QStringLiteral("udp") << QStringLiteral("facon") << 1200;
@@ -449,11 +502,14 @@ void TestCli::reference()
     QFETCH(QString, protocol);
     QFETCH(int, base);
     const QStringList link = ref(medium, protocol);
-    auto cli = [&](const QStringList &args) { return runCli(link + args); };
+    auto cli = [&](const QStringList &args) {
+        return runCli(link + args);
+    };
     const QString R = QStringLiteral("R%1").arg(base);
     const QString R1 = QStringLiteral("R%1").arg(base + 1);
     const QString DR = QStringLiteral("DR%1").arg(base + 10);
-    const QString Y = QStringLiteral("Y%1").arg(base / 10); // Y100.. are discretes far from other rows
+    const QString Y
+        = QStringLiteral("Y%1").arg(base / 10); // Y100.. are discretes far from other rows
     const QString M = QStringLiteral("M%1").arg(base);
 
     // run / stop, checked through STATUS1.
@@ -463,29 +519,37 @@ void TestCli::reference()
     QCOMPARE(r.json(1).value(QStringLiteral("running")).toBool(), true);
     QCOMPARE(r.json(1).value(QStringLiteral("status1")).toInt() & 1, 1);
     QCOMPARE(r.json(1).value(QStringLiteral("protocol")).toString(),
-             protocol == QLatin1String("facon") ? QStringLiteral("FACON") : QStringLiteral("binary"));
+             protocol == QLatin1String("facon") ? QStringLiteral("FACON")
+                                                : QStringLiteral("binary"));
     // The reference's 53 answer follows the FACON seed layout.
-    QCOMPARE(r.json(1).value(QStringLiteral("detail")).toObject().value(QStringLiteral("osVersion")).toString(),
+    QCOMPARE(r.json(1)
+                 .value(QStringLiteral("detail"))
+                 .toObject()
+                 .value(QStringLiteral("osVersion"))
+                 .toString(),
              QStringLiteral("V3.1"));
     r = cli({QStringLiteral("stop"), QStringLiteral("--then"), QStringLiteral("status")});
     RUN_OK(r);
     QCOMPARE(r.json(1).value(QStringLiteral("running")).toBool(), false);
 
     // Registers: consecutive write (47) and read back (46), 16 and 32 bit, negative and hex.
-    r = cli({QStringLiteral("write"), R, QStringLiteral("4261"), QStringLiteral("-1"), QStringLiteral("0x7FC4")});
+    r = cli({QStringLiteral("write"), R, QStringLiteral("4261"), QStringLiteral("-1"),
+             QStringLiteral("0x7FC4")});
     RUN_OK(r);
     r = cli({QStringLiteral("read"), R, QStringLiteral("3")});
     RUN_OK(r);
     QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({4261, 65535, 32708}));
-    r = cli({QStringLiteral("write"), DR, QStringLiteral("0x12345678"), QStringLiteral("--then"), QStringLiteral("read"),
-             DR, QStringLiteral("--then"), QStringLiteral("read"), QStringLiteral("R%1").arg(base + 10), QStringLiteral("2")});
+    r = cli({QStringLiteral("write"), DR, QStringLiteral("0x12345678"), QStringLiteral("--then"),
+             QStringLiteral("read"), DR, QStringLiteral("--then"), QStringLiteral("read"),
+             QStringLiteral("R%1").arg(base + 10), QStringLiteral("2")});
     RUN_OK(r);
     QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({0x12345678}));
     QCOMPARE(r.json(2).value(QStringLiteral("values")).toArray(), ints({0x5678, 0x1234}));
 
     // Discretes: consecutive write (45) and read back (44).
-    r = cli({QStringLiteral("write"), Y, QStringLiteral("1"), QStringLiteral("off"), QStringLiteral("on"),
-             QStringLiteral("--then"), QStringLiteral("read"), Y, QStringLiteral("3")});
+    r = cli({QStringLiteral("write"), Y, QStringLiteral("1"), QStringLiteral("off"),
+             QStringLiteral("on"), QStringLiteral("--then"), QStringLiteral("read"), Y,
+             QStringLiteral("3")});
     RUN_OK(r);
     QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({1, 0, 1}));
 
@@ -496,10 +560,12 @@ void TestCli::reference()
     r = cli({QStringLiteral("reset"), M, QStringLiteral("--then"), QStringLiteral("read"), M});
     RUN_OK(r);
     QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({0}));
-    r = cli({QStringLiteral("disable"), M, QStringLiteral("--then"), QStringLiteral("forced"), M, QStringLiteral("2")});
+    r = cli({QStringLiteral("disable"), M, QStringLiteral("--then"), QStringLiteral("forced"), M,
+             QStringLiteral("2")});
     RUN_OK(r);
     QCOMPARE(r.json(1).value(QStringLiteral("forced")).toArray(), ints({1, 0}));
-    r = cli({QStringLiteral("enable"), M, QStringLiteral("--then"), QStringLiteral("forced"), M, QStringLiteral("2")});
+    r = cli({QStringLiteral("enable"), M, QStringLiteral("--then"), QStringLiteral("forced"), M,
+             QStringLiteral("2")});
     RUN_OK(r);
     QCOMPARE(r.json(1).value(QStringLiteral("forced")).toArray(), ints({0, 0}));
 
@@ -512,14 +578,16 @@ void TestCli::reference()
     QCOMPARE(r.json(2).value(QStringLiteral("values")).toArray(), ints({1}));
 
     // Loopback (4E).
-    r = cli({QStringLiteral("loopback"), QStringLiteral("ABC123"), QStringLiteral("--count"), QStringLiteral("3")});
+    r = cli({QStringLiteral("loopback"), QStringLiteral("ABC123"), QStringLiteral("--count"),
+             QStringLiteral("3")});
     RUN_OK(r);
     QCOMPARE(r.json().value(QStringLiteral("ok")).toInt(), 3);
     QCOMPARE(r.json().value(QStringLiteral("mismatches")).toInt(), 0);
 
     // Monitor through the session's planned polling.
-    r = cli({QStringLiteral("monitor"), QStringLiteral("%1..%2").arg(R, R1), DR, QStringLiteral("--interval"),
-             QStringLiteral("50"), QStringLiteral("--cycles"), QStringLiteral("2")});
+    r = cli({QStringLiteral("monitor"), QStringLiteral("%1..%2").arg(R, R1), DR,
+             QStringLiteral("--interval"), QStringLiteral("50"), QStringLiteral("--cycles"),
+             QStringLiteral("2")});
     RUN_OK(r);
     QCOMPARE(r.lines().size(), 2);
     QCOMPARE(r.json(1).value(QStringLiteral("values")).toArray(), ints({4261, 65535, 0x12345678}));
@@ -528,7 +596,10 @@ void TestCli::reference()
     if (protocol == QLatin1String("facon")) {
         r = cli({QStringLiteral("raw"), QStringLiteral("--frame"), QStringLiteral("0140")});
         RUN_OK(r);
-        QVERIFY2(r.json().value(QStringLiteral("answerText")).toString().startsWith(QLatin1String("<02>0140000")),
+        QVERIFY2(r.json()
+                     .value(QStringLiteral("answerText"))
+                     .toString()
+                     .startsWith(QLatin1String("<02>0140000")),
                  qPrintable(r.out));
     } else {
         r = cli({QStringLiteral("raw"), QStringLiteral("--frame"), QStringLiteral("01 40")});
@@ -555,8 +626,8 @@ void TestCli::referenceAutoDetect()
     if (!m_refProblem.isEmpty())
         QSKIP(qPrintable(m_refProblem));
     // Default protocol for a real link: auto-detect (FACON answers first on the reference).
-    const Run r = runCli({QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:%1").arg(m_refTcp), QStringLiteral("--json"),
-                          QStringLiteral("status")});
+    const Run r = runCli({QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:%1").arg(m_refTcp),
+                          QStringLiteral("--json"), QStringLiteral("status")});
     RUN_OK(r);
     QCOMPARE(r.json().value(QStringLiteral("protocol")).toString(), QStringLiteral("FACON"));
 }
@@ -566,10 +637,12 @@ void TestCli::referenceReadOnlyKeepsValue()
     if (!m_refProblem.isEmpty())
         QSKIP(qPrintable(m_refProblem));
     const QStringList link = ref(QStringLiteral("tcp"), QStringLiteral("facon"));
-    Run r = runCli(link + QStringList{QStringLiteral("write"), QStringLiteral("R2000"), QStringLiteral("11")});
+    Run r = runCli(
+        link + QStringList{QStringLiteral("write"), QStringLiteral("R2000"), QStringLiteral("11")});
     RUN_OK(r);
-    r = runCli(link + QStringList{QStringLiteral("--read-only"), QStringLiteral("write"), QStringLiteral("R2000"),
-                                  QStringLiteral("99")});
+    r = runCli(link
+               + QStringList{QStringLiteral("--read-only"), QStringLiteral("write"),
+                             QStringLiteral("R2000"), QStringLiteral("99")});
     QCOMPARE(r.code, 5);
     QCOMPARE(r.json().value(QStringLiteral("code")).toInt(), 5);
     r = runCli(link + QStringList{QStringLiteral("read"), QStringLiteral("R2000")});

@@ -144,18 +144,21 @@ void TestFaconCodec::vectors()
         // encodeRequest gives the vector's bytes exactly.
         const auto encoded = m_codec.encodeRequest(c.request);
         QVERIFY2(encoded.ok(), what.constData());
-        QVERIFY2(*encoded == v.query, qPrintable(v.what + QStringLiteral(": ") + toFacon(*encoded)));
+        QVERIFY2(*encoded == v.query,
+                 qPrintable(v.what + QStringLiteral(": ") + toFacon(*encoded)));
 
         // The simulator side reads the query back into the same typed request.
         const auto decodedQuery = m_codec.decodeRequest(v.query);
-        QVERIFY2(decodedQuery.ok(), qPrintable(v.what + QStringLiteral(": ")
-                                               + (decodedQuery.ok() ? QString() : qs(decodedQuery.error().message))));
+        QVERIFY2(decodedQuery.ok(),
+                 qPrintable(v.what + QStringLiteral(": ")
+                            + (decodedQuery.ok() ? QString() : qs(decodedQuery.error().message))));
         QVERIFY2(*decodedQuery == c.request, what.constData());
 
         const auto decoded = m_codec.decodeResponse(v.response, c.request);
         if (c.response) {
-            QVERIFY2(decoded.ok(), qPrintable(v.what + QStringLiteral(": ")
-                                              + (decoded.ok() ? QString() : qs(decoded.error().message))));
+            QVERIFY2(decoded.ok(),
+                     qPrintable(v.what + QStringLiteral(": ")
+                                + (decoded.ok() ? QString() : qs(decoded.error().message))));
             QCOMPARE(decoded->station, c.response->station);
             QCOMPARE(decoded->command, c.response->command);
             QCOMPARE(decoded->errorCode, std::uint8_t(0));
@@ -163,7 +166,8 @@ void TestFaconCodec::vectors()
             QCOMPARE(decoded->data, c.response->data);
             // The simulator reproduces the vector's answer.
             const Bytes answerBytes = m_codec.encodeResponse(c.request, *c.response);
-            QVERIFY2(answerBytes == v.response, qPrintable(v.what + QStringLiteral(": ") + toFacon(answerBytes)));
+            QVERIFY2(answerBytes == v.response,
+                     qPrintable(v.what + QStringLiteral(": ") + toFacon(answerBytes)));
         } else {
             QVERIFY(!decoded.ok());
             QCOMPARE(decoded.error().kind, ErrorKind::PlcError);
@@ -200,7 +204,8 @@ void TestFaconCodec::roundTripEveryElement()
             std::vector<Request> requests;
             std::vector<std::vector<std::uint32_t>> answers;
             if (info.width == ElementWidth::Bit) {
-                for (auto op : {DiscreteOp::Disable, DiscreteOp::Enable, DiscreteOp::Set, DiscreteOp::Reset}) {
+                for (auto op : {DiscreteOp::Disable, DiscreteOp::Enable, DiscreteOp::Set,
+                                DiscreteOp::Reset}) {
                     requests.push_back(Request::discreteControl(3, op, a));
                     answers.push_back({});
                 }
@@ -274,13 +279,18 @@ void TestFaconCodec::roundTripEveryCommand()
     add(Request::runStop(1, false));
     add(Request::runStop(254, true));
     add(Request::discreteControl(1, DiscreteOp::Reset, addr(ElementType::M, 1234)));
-    add(Request::readEnableFlags(1, addr(ElementType::S, 0), 256), std::vector<std::uint32_t>(256, 1));
-    add(Request::readDiscretes(1, addr(ElementType::T, 100), 256), std::vector<std::uint32_t>(256, 0));
+    add(Request::readEnableFlags(1, addr(ElementType::S, 0), 256),
+        std::vector<std::uint32_t>(256, 1));
+    add(Request::readDiscretes(1, addr(ElementType::T, 100), 256),
+        std::vector<std::uint32_t>(256, 0));
     add(Request::writeDiscretes(1, addr(ElementType::C, 0), std::vector<std::uint32_t>(256, 1)));
-    add(Request::readRegisters(1, addr(ElementType::D, 0), 64), std::vector<std::uint32_t>(64, 0xBEEF));
-    add(Request::readRegisters(1, addr(ElementType::DD, 0), 32), std::vector<std::uint32_t>(32, 0xDEADBEEF));
+    add(Request::readRegisters(1, addr(ElementType::D, 0), 64),
+        std::vector<std::uint32_t>(64, 0xBEEF));
+    add(Request::readRegisters(1, addr(ElementType::DD, 0), 32),
+        std::vector<std::uint32_t>(32, 0xDEADBEEF));
     add(Request::writeRegisters(1, addr(ElementType::RT, 0), std::vector<std::uint32_t>(64, 7)));
-    add(Request::writeRegisters(1, addr(ElementType::DRC, 0), std::vector<std::uint32_t>(32, 0x12345678)));
+    add(Request::writeRegisters(1, addr(ElementType::DRC, 0),
+                                std::vector<std::uint32_t>(32, 0x12345678)));
     add(Request::mixedRead(1, std::vector<Address>(32, addr(ElementType::DR, 10))),
         std::vector<std::uint32_t>(32, 0xCAFEF00D));
     add(Request::mixedWrite(1, std::vector<Address>(16, addr(ElementType::DWY, 8)),
@@ -303,8 +313,9 @@ void TestFaconCodec::roundTripEveryCommand()
         const Bytes answerBytes = m_codec.encodeResponse(c.request, c.response);
         QVERIFY2(answerBytes.size() <= FaconCodec::maxFrameSize, what.constData());
         const auto decoded = m_codec.decodeResponse(answerBytes, c.request);
-        QVERIFY2(decoded.ok(), qPrintable(qs(c.request.describe()) + QStringLiteral(": ")
-                                          + (decoded.ok() ? QString() : qs(decoded.error().message))));
+        QVERIFY2(decoded.ok(),
+                 qPrintable(qs(c.request.describe()) + QStringLiteral(": ")
+                            + (decoded.ok() ? QString() : qs(decoded.error().message))));
         QVERIFY2(*decoded == c.response, what.constData());
     }
 
@@ -313,17 +324,20 @@ void TestFaconCodec::roundTripEveryCommand()
              frame("014400Y0000"));
     QCOMPARE(*m_codec.encodeRequest(Request::readProgram(1, 0x00CE)), frame("014F00CE"));
     QCOMPARE(*m_codec.encodeRequest(Request::runStop(1, false)), frame("01410"));
-    QCOMPARE(*m_codec.encodeRequest(Request::discreteControl(1, DiscreteOp::Set, addr(ElementType::Y, 7))),
+    QCOMPARE(*m_codec.encodeRequest(
+                 Request::discreteControl(1, DiscreteOp::Set, addr(ElementType::Y, 7))),
              frame("01423Y0007"));
     QCOMPARE(*m_codec.encodeRequest(Request::readRegisters(1, addr(ElementType::DRT, 4), 2)),
              frame("014602DRT0004"));
-    QCOMPARE(*m_codec.encodeRequest(Request::writeRegisters(1, addr(ElementType::DD, 2), {0x1A2B3C4D})),
-             frame("014701DD000021A2B3C4D"));
+    QCOMPARE(
+        *m_codec.encodeRequest(Request::writeRegisters(1, addr(ElementType::DD, 2), {0x1A2B3C4D})),
+        frame("014701DD000021A2B3C4D"));
     std::string writePage = "01500003";
     for (int i = 0; i < 64; ++i)
         writePage += "00FF";
-    QCOMPARE(*m_codec.encodeRequest(Request::writeProgram(1, 3, std::vector<std::uint32_t>(64, 0xFF))),
-             frame(writePage));
+    QCOMPARE(
+        *m_codec.encodeRequest(Request::writeProgram(1, 3, std::vector<std::uint32_t>(64, 0xFF))),
+        frame(writePage));
 }
 
 void TestFaconCodec::detailStatusLenient()
@@ -368,16 +382,21 @@ void TestFaconCodec::limits()
         {Request::readEnableFlags(1, addr(E::X, 0), 257), ErrorKind::LimitExceeded, "256"},
         {Request::readDiscretes(1, addr(E::X, 0), 257), ErrorKind::LimitExceeded, "256"},
         {Request::readDiscretes(1, addr(E::X, 0), 0), ErrorKind::LimitExceeded, "256"},
-        {Request::writeDiscretes(1, addr(E::Y, 0), std::vector<std::uint32_t>(257, 0)), ErrorKind::LimitExceeded, "256"},
+        {Request::writeDiscretes(1, addr(E::Y, 0), std::vector<std::uint32_t>(257, 0)),
+         ErrorKind::LimitExceeded, "256"},
         {Request::readRegisters(1, addr(E::R, 0), 65), ErrorKind::LimitExceeded, "64"},
         {Request::readRegisters(1, addr(E::DR, 0), 33), ErrorKind::LimitExceeded, "32"},
-        {Request::writeRegisters(1, addr(E::R, 0), std::vector<std::uint32_t>(65, 0)), ErrorKind::LimitExceeded, "64"},
-        {Request::writeRegisters(1, addr(E::DWM, 0), std::vector<std::uint32_t>(33, 0)), ErrorKind::LimitExceeded, "32"},
+        {Request::writeRegisters(1, addr(E::R, 0), std::vector<std::uint32_t>(65, 0)),
+         ErrorKind::LimitExceeded, "64"},
+        {Request::writeRegisters(1, addr(E::DWM, 0), std::vector<std::uint32_t>(33, 0)),
+         ErrorKind::LimitExceeded, "32"},
         {Request::mixedRead(1, r65), ErrorKind::LimitExceeded, "64"},
         {Request::mixedRead(1, dr33), ErrorKind::LimitExceeded, "66"},
         {Request::mixedRead(1, r63dr1), ErrorKind::LimitExceeded, "65"},
-        {Request::mixedWrite(1, r33, std::vector<std::uint32_t>(33, 0)), ErrorKind::LimitExceeded, "32"},
-        {Request::mixedWrite(1, dr17, std::vector<std::uint32_t>(17, 0)), ErrorKind::LimitExceeded, "34"},
+        {Request::mixedWrite(1, r33, std::vector<std::uint32_t>(33, 0)), ErrorKind::LimitExceeded,
+         "32"},
+        {Request::mixedWrite(1, dr17, std::vector<std::uint32_t>(17, 0)), ErrorKind::LimitExceeded,
+         "34"},
         {Request::loopback(1, Bytes(257, 'A')), ErrorKind::LimitExceeded, "256"},
         {Request::readRegisters(1, addr(E::R, 65535), 2), ErrorKind::InvalidAddress, "R65535"},
         {Request::readRegisters(1, addr(E::WY, 4), 1), ErrorKind::InvalidAddress, "WY4"},
@@ -385,7 +404,8 @@ void TestFaconCodec::limits()
         {Request::writeDiscretes(1, addr(E::Y, 0), {2}), ErrorKind::InvalidRequest, "Y0"},
         {Request::writeRegisters(1, addr(E::R, 0), {0x10000}), ErrorKind::InvalidRequest, "R0"},
         {Request::loopback(1, Bytes{'A', 0x03, 'B'}), ErrorKind::InvalidRequest, "ASCII"},
-        {Request::writeProgram(1, 0, std::vector<std::uint32_t>(63, 0)), ErrorKind::InvalidRequest, "64"},
+        {Request::writeProgram(1, 0, std::vector<std::uint32_t>(63, 0)), ErrorKind::InvalidRequest,
+         "64"},
         {Request::briefStatus(255), ErrorKind::InvalidRequest, "255"},
     };
     for (const Case &c : cases) {
@@ -406,8 +426,10 @@ void TestFaconCodec::limits()
         Request::readRegisters(1, addr(E::DR, 0), 32),
         Request::mixedRead(1, r62dr1),
         Request::mixedRead(1, std::vector<Address>(32, addr(E::DR, 0))),
-        Request::mixedWrite(1, std::vector<Address>(16, addr(E::DR, 0)), std::vector<std::uint32_t>(16, 1)),
-        Request::mixedWrite(1, std::vector<Address>(32, addr(E::Y, 0)), std::vector<std::uint32_t>(32, 1)),
+        Request::mixedWrite(1, std::vector<Address>(16, addr(E::DR, 0)),
+                            std::vector<std::uint32_t>(16, 1)),
+        Request::mixedWrite(1, std::vector<Address>(32, addr(E::Y, 0)),
+                            std::vector<std::uint32_t>(32, 1)),
         Request::loopback(1, Bytes(256, 'Z')),
     };
     for (const Request &r : fits)
@@ -417,15 +439,16 @@ void TestFaconCodec::limits()
 void TestFaconCodec::notInFacon()
 {
     using E = ElementType;
-    for (const Request &r : {Request::readRegisters(1, addr(E::F, 0), 1),
-                             Request::readRegisters(1, addr(E::DF, 0), 1),
-                             Request::writeRegisters(1, addr(E::F, 10), {1}),
-                             Request::mixedRead(1, {addr(E::R, 0), addr(E::DF, 2)}),
-                             Request::mixedWrite(1, {addr(E::F, 1)}, {5})}) {
+    for (const Request &r :
+         {Request::readRegisters(1, addr(E::F, 0), 1), Request::readRegisters(1, addr(E::DF, 0), 1),
+          Request::writeRegisters(1, addr(E::F, 10), {1}),
+          Request::mixedRead(1, {addr(E::R, 0), addr(E::DF, 2)}),
+          Request::mixedWrite(1, {addr(E::F, 1)}, {5})}) {
         const auto enc = m_codec.encodeRequest(r);
         QVERIFY(!enc.ok());
         QCOMPARE(enc.error().kind, ErrorKind::Unsupported);
-        QVERIFY2(enc.error().message.find("FACON") != std::string::npos, qPrintable(qs(enc.error().message)));
+        QVERIFY2(enc.error().message.find("FACON") != std::string::npos,
+                 qPrintable(qs(enc.error().message)));
     }
 }
 
@@ -436,10 +459,12 @@ void TestFaconCodec::responseErrors()
                                     const Request *req = nullptr) {
         const auto d = m_codec.decodeResponse(f, req ? *req : r46);
         QVERIFY2(!d.ok(), qPrintable(toFacon(f)));
-        QVERIFY2(d.error().kind == kind, qPrintable(toFacon(f) + QStringLiteral(": ") + qs(d.error().message)));
+        QVERIFY2(d.error().kind == kind,
+                 qPrintable(toFacon(f) + QStringLiteral(": ") + qs(d.error().message)));
         QVERIFY(!d.error().message.empty());
         if (mention)
-            QVERIFY2(d.error().message.find(mention) != std::string::npos, qPrintable(qs(d.error().message)));
+            QVERIFY2(d.error().message.find(mention) != std::string::npos,
+                     qPrintable(qs(d.error().message)));
     };
     // Another station or command is an error, never a value.
     expectError(frame("0246010A57FC40001"), ErrorKind::StationMismatch, "station 2");
@@ -503,7 +528,8 @@ void TestFaconCodec::plcErrors()
         QVERIFY2(msg.find(plcErrorText(code)) != std::string::npos, msg.c_str());
     }
     const auto a = m_codec.decodeResponse(frame("0146A"), r);
-    QVERIFY2(a.error().message.find("illegal address") != std::string::npos, a.error().message.c_str());
+    QVERIFY2(a.error().message.find("illegal address") != std::string::npos,
+             a.error().message.c_str());
     // Error answer to a write.
     const Request w = Request::writeDiscretes(1, addr(ElementType::Y, 300), {1});
     const auto e = m_codec.decodeResponse(frame("01453"), w);
@@ -533,10 +559,12 @@ void TestFaconCodec::decodeRequestErrors()
         const auto d = m_codec.decodeRequest(f);
         QVERIFY2(!d.ok(), qPrintable(toFacon(f)));
         QVERIFY2(d.error().plcCode == code,
-                 qPrintable(toFacon(f) + QStringLiteral(": code %1, ").arg(d.error().plcCode) + qs(d.error().message)));
+                 qPrintable(toFacon(f) + QStringLiteral(": code %1, ").arg(d.error().plcCode)
+                            + qs(d.error().message)));
         QVERIFY(!d.error().message.empty());
         if (mention)
-            QVERIFY2(d.error().message.find(mention) != std::string::npos, qPrintable(qs(d.error().message)));
+            QVERIFY2(d.error().message.find(mention) != std::string::npos,
+                     qPrintable(qs(d.error().message)));
     };
     Bytes badLrc = frame("014603R00012");
     badLrc[badLrc.size() - 2] ^= 0x01;
@@ -548,25 +576,25 @@ void TestFaconCodec::decodeRequestErrors()
     expectCode(frame("014603R000121"), 4, "unexpected");
     expectCode(frame("014603R0001"), 4);
     expectCode(frame("0146"), 4);
-    expectCode(frame("014641R00000"), 4, "65");       // 65 registers
-    expectCode(frame("014600R00000"), 4);              // 0 registers
-    expectCode(frame("014601X0000"), 4, "X0");        // discrete in a register command
-    expectCode(frame("014403R00000"), 4, "R0");       // register in a discrete command
-    expectCode(frame("0146010R0000"), 4);              // address missing its letters
+    expectCode(frame("014641R00000"), 4, "65"); // 65 registers
+    expectCode(frame("014600R00000"), 4);       // 0 registers
+    expectCode(frame("014601X0000"), 4, "X0");  // discrete in a register command
+    expectCode(frame("014403R00000"), 4, "R0"); // register in a discrete command
+    expectCode(frame("0146010R0000"), 4);       // address missing its letters
     expectCode(frame("014601R0A000"), 4, "decimal");
     expectCode(frame("014601R70000"), 0xA, "R70000");
     expectCode(frame("014601WY0003"), 0xA, "WY3");
     expectCode(frame("014601Q00000"), 0xA, "Q");
     expectCode(frame("014601F00000"), 0xA, "F");
     expectCode(frame("014801DF00000"), 0xA, "DF");
-    expectCode(frame("014402X9999"), 0xA, "X9999");    // runs past X9999
+    expectCode(frame("014402X9999"), 0xA, "X9999"); // runs past X9999
     expectCode(frame("014502Y000012"), 2, "0 or 1");
     expectCode(frame("014701R00000ZZZZ"), 2, "hex");
     expectCode(frame("014902Y00001R00000GGGG"), 2, "hex");
     expectCode(frame("01415"), 2);
     expectCode(frame("01425X0000"), 2);
     expectCode(frame("01421R00000"), 4);
-    expectCode(frame("0150000100FF"), 4);              // program page cut short
+    expectCode(frame("0150000100FF"), 4); // program page cut short
     expectCode(frame("FF40"), 4, "255");
     // Broadcast is a valid query.
     QVERIFY(m_codec.decodeRequest(frame("00411")).ok());
@@ -575,8 +603,8 @@ void TestFaconCodec::decodeRequestErrors()
 
 void TestFaconCodec::decodeRequestNeverCrashes()
 {
-    // Every prefix of every vector query and answer, re-wrapped with a valid LRC, plus random bodies
-    // from the FACON alphabet: each yields a request or a coded error.
+    // Every prefix of every vector query and answer, re-wrapped with a valid LRC, plus random
+    // bodies from the FACON alphabet: each yields a request or a coded error.
     std::vector<std::string> bodies;
     for (const TestUtil::Vector &v : TestUtil::loadVectors(QStringLiteral("facon"))) {
         for (const Bytes &f : {v.query, v.response}) {
@@ -587,8 +615,9 @@ void TestFaconCodec::decodeRequestNeverCrashes()
     }
     std::mt19937 rng(12345);
     const std::string alphabet = "0123456789ABCDEFXYMSTCWRDabf\x7f\x80 ";
-    const std::vector<std::string> heads = {"0140", "0141", "0142", "0143", "0144", "0145", "0146", "0147",
-                                            "0148", "0149", "014E", "014F", "0150", "0153", "01FF"};
+    const std::vector<std::string> heads
+        = {"0140", "0141", "0142", "0143", "0144", "0145", "0146", "0147",
+           "0148", "0149", "014E", "014F", "0150", "0153", "01FF"};
     for (int i = 0; i < 20000; ++i) {
         std::string body = heads[rng() % heads.size()];
         const std::size_t len = rng() % 80;
@@ -619,13 +648,16 @@ void TestFaconCodec::decodeRequestNeverCrashes()
 
 void TestFaconCodec::errorResponseAndHeader()
 {
-    QCOMPARE(m_codec.encodeErrorResponse({1, 0x46}, 0xA), TestUtil::fromFacon(QStringLiteral("<STX>0146A0E<ETX>")));
+    QCOMPARE(m_codec.encodeErrorResponse({1, 0x46}, 0xA),
+             TestUtil::fromFacon(QStringLiteral("<STX>0146A0E<ETX>")));
     QCOMPARE(m_codec.encodeErrorResponse({0x1F, 0x99}, 4), frame("1F994"));
-    const auto h = m_codec.frameHeader(TestUtil::fromFacon(QStringLiteral("<STX>014603R0001275<ETX>")));
+    const auto h
+        = m_codec.frameHeader(TestUtil::fromFacon(QStringLiteral("<STX>014603R0001275<ETX>")));
     QVERIFY(h.has_value());
     QCOMPARE(h->station, std::uint8_t(1));
     QCOMPARE(h->command, std::uint8_t(0x46));
-    QVERIFY(!m_codec.frameHeader(TestUtil::fromFacon(QStringLiteral("<STX>014603R0001276<ETX>"))).has_value());
+    QVERIFY(!m_codec.frameHeader(TestUtil::fromFacon(QStringLiteral("<STX>014603R0001276<ETX>")))
+                 .has_value());
     QVERIFY(!m_codec.frameHeader(Bytes{0x02, 0x03}).has_value());
     // Error answer for a write: error digit only.
     const Request w = Request::writeRegisters(1, addr(ElementType::R, 0), {1});

@@ -60,13 +60,15 @@ private:
     void expectFrames(const std::vector<DeframedItem> &items, const std::vector<Bytes> &frames);
 };
 
-void TestFaconDeframer::expectFrames(const std::vector<DeframedItem> &items, const std::vector<Bytes> &frames)
+void TestFaconDeframer::expectFrames(const std::vector<DeframedItem> &items,
+                                     const std::vector<Bytes> &frames)
 {
     QCOMPARE(items.size(), frames.size());
     for (std::size_t i = 0; i < items.size(); ++i) {
         QVERIFY2(!items[i].error.has_value(),
                  qPrintable(toFacon(items[i].frame) + QStringLiteral(": ")
-                            + QString::fromStdString(items[i].error ? items[i].error->message : std::string())));
+                            + QString::fromStdString(items[i].error ? items[i].error->message
+                                                                    : std::string())));
         QVERIFY2(items[i].frame == frames[i], qPrintable(toFacon(items[i].frame)));
     }
 }
@@ -116,7 +118,7 @@ void TestFaconDeframer::garbageBetweenFrames()
     const auto frames = vectorFrames();
     // Binary-protocol bytes, stray ETX, text, high bytes: none is STX, so all is skipped.
     const Bytes garbage = {0x52, 0x10, 0x00, 0x03, 0x01, 0x41, 0x00, 0x45, 0xD4, 0x55, 0xAA,
-                           0x03, 'h', 'i', 0x00, 0xFF, 0x80, 0x03, '0', '1', '4', '0'};
+                           0x03, 'h',  'i',  0x00, 0xFF, 0x80, 0x03, '0',  '1',  '4',  '0'};
     Bytes stream = garbage;
     for (const Bytes &f : frames) {
         append(stream, f);

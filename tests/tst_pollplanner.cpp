@@ -34,7 +34,8 @@ std::vector<WatchItem> itemsOf(std::initializer_list<const char *> texts, std::u
 
 Address addressOfSlot(const Request &r, std::uint32_t valueIndex)
 {
-    return r.command == Command::MixedRead ? r.addresses.at(valueIndex) : r.start.advanced(valueIndex);
+    return r.command == Command::MixedRead ? r.addresses.at(valueIndex)
+                                           : r.start.advanced(valueIndex);
 }
 
 // Every step is a valid request, its size is what queryBytes/responseBytes say, every plannable
@@ -100,7 +101,8 @@ Optimum exhaustiveOptimum(std::span<const WatchItem> items, Protocol protocol)
         auto consider = [&](const Request &r) {
             if (!validateRequest(r, protocol))
                 return;
-            const std::size_t b = PollPlanner::queryBytes(r, protocol) + PollPlanner::responseBytes(r, protocol);
+            const std::size_t b
+                = PollPlanner::queryBytes(r, protocol) + PollPlanner::responseBytes(r, protocol);
             if (!best || b < *best)
                 best = b;
         };
@@ -120,9 +122,11 @@ Optimum exhaustiveOptimum(std::span<const WatchItem> items, Protocol protocol)
         consider(Request::mixedRead(block.front().station, list));
         if (oneChain) {
             const Address first = block.front().address;
-            const std::uint32_t span = (block.back().address.number - first.number) / first.info().step + 1;
-            consider(isDiscrete(first.type) ? Request::readDiscretes(block.front().station, first, span)
-                                            : Request::readRegisters(block.front().station, first, span));
+            const std::uint32_t span
+                = (block.back().address.number - first.number) / first.info().step + 1;
+            consider(isDiscrete(first.type)
+                         ? Request::readDiscretes(block.front().station, first, span)
+                         : Request::readRegisters(block.front().station, first, span));
         }
         blockBytes[mask] = best;
     }
@@ -199,31 +203,38 @@ void TestPollPlanner::sizesMatchVectors_data()
     const auto f = static_cast<int>(Protocol::Facon);
     QTest::newRow("bin 40") << b << 0 << Request::briefStatus(1);
     QTest::newRow("bin 41 stop") << b << 2 << Request::runStop(1, false);
-    QTest::newRow("bin 42") << b << 4 << Request::discreteControl(1, DiscreteOp::Disable, addr("X16"));
+    QTest::newRow("bin 42") << b << 4
+                            << Request::discreteControl(1, DiscreteOp::Disable, addr("X16"));
     QTest::newRow("bin 43") << b << 5 << Request::readEnableFlags(1, addr("Y10"), 7);
     QTest::newRow("bin 44") << b << 7 << Request::readDiscretes(1, addr("X50"), 6);
     QTest::newRow("bin 44 15") << b << 8 << Request::readDiscretes(1, addr("Y0"), 15);
     QTest::newRow("bin 45") << b << 9 << Request::writeDiscretes(1, addr("Y0"), {1, 0, 0, 1});
     QTest::newRow("bin 46") << b << 11 << Request::readRegisters(1, addr("R12"), 3);
-    QTest::newRow("bin 47 WY") << b << 13 << Request::writeRegisters(1, addr("WY16"), {0xAAAA, 0x5555});
-    QTest::newRow("bin 48") << b << 15 << Request::mixedRead(1, {addr("R1"), addr("Y9"), addr("DWM0")});
+    QTest::newRow("bin 47 WY") << b << 13
+                               << Request::writeRegisters(1, addr("WY16"), {0xAAAA, 0x5555});
+    QTest::newRow("bin 48") << b << 15
+                            << Request::mixedRead(1, {addr("R1"), addr("Y9"), addr("DWM0")});
     QTest::newRow("bin 48 DR") << b << 16 << Request::mixedRead(1, {addr("DR15"), addr("D1")});
     QTest::newRow("bin 49") << b << 17
-                            << Request::mixedWrite(1, {addr("Y0"), addr("Y1"), addr("WM8"), addr("DR2")},
-                                                   {1, 0, 0x5555, 0xFF});
+                            << Request::mixedWrite(
+                                   1, {addr("Y0"), addr("Y1"), addr("WM8"), addr("DR2")},
+                                   {1, 0, 0x5555, 0xFF});
     QTest::newRow("bin 4E") << b << 19 << Request::loopback(1, {'A', 'B', 'C', 'D', 'E', 'F', 'G'});
     QTest::newRow("fa 40") << f << 0 << Request::briefStatus(1);
     QTest::newRow("fa 41") << f << 1 << Request::runStop(1, true);
-    QTest::newRow("fa 42") << f << 2 << Request::discreteControl(1, DiscreteOp::Disable, addr("X16"));
+    QTest::newRow("fa 42") << f << 2
+                           << Request::discreteControl(1, DiscreteOp::Disable, addr("X16"));
     QTest::newRow("fa 43") << f << 3 << Request::readEnableFlags(1, addr("Y10"), 7);
     QTest::newRow("fa 44") << f << 4 << Request::readDiscretes(1, addr("X50"), 6);
     QTest::newRow("fa 45") << f << 5 << Request::writeDiscretes(1, addr("Y0"), {1, 0, 0, 1});
     QTest::newRow("fa 46") << f << 6 << Request::readRegisters(1, addr("R12"), 3);
     QTest::newRow("fa 47") << f << 7 << Request::writeRegisters(1, addr("WY8"), {0xAAAA, 0x5555});
-    QTest::newRow("fa 48") << f << 8 << Request::mixedRead(1, {addr("R1"), addr("Y9"), addr("DWM0")});
+    QTest::newRow("fa 48") << f << 8
+                           << Request::mixedRead(1, {addr("R1"), addr("Y9"), addr("DWM0")});
     QTest::newRow("fa 49") << f << 9
-                           << Request::mixedWrite(1, {addr("Y0"), addr("Y1"), addr("WM8"), addr("DR2")},
-                                                  {1, 0, 0x5555, 0xFF});
+                           << Request::mixedWrite(
+                                  1, {addr("Y0"), addr("Y1"), addr("WM8"), addr("DR2")},
+                                  {1, 0, 0x5555, 0xFF});
     QTest::newRow("fa 4E") << f << 10 << Request::loopback(1, {'A', 'B', 'C', 'D', 'E', 'F', 'G'});
 }
 
@@ -279,7 +290,8 @@ void TestPollPlanner::sizesMatchFaconCodec()
         const auto frame = codec.encodeRequest(r);
         QVERIFY2(frame.ok(), frame.ok() ? "" : frame.error().message.c_str());
         QCOMPARE(PollPlanner::queryBytes(r, Protocol::Facon), frame->size());
-        QCOMPARE(PollPlanner::responseBytes(r, Protocol::Facon), codec.encodeResponse(r, zeroAnswer(r)).size());
+        QCOMPARE(PollPlanner::responseBytes(r, Protocol::Facon),
+                 codec.encodeResponse(r, zeroAnswer(r)).size());
     }
 }
 
@@ -290,7 +302,8 @@ void TestPollPlanner::sizesMatchBinaryCodec()
         const auto frame = codec.encodeRequest(r);
         QVERIFY2(frame.ok(), frame.ok() ? "" : frame.error().message.c_str());
         QCOMPARE(PollPlanner::queryBytes(r, Protocol::Binary), frame->size());
-        QCOMPARE(PollPlanner::responseBytes(r, Protocol::Binary), codec.encodeResponse(r, zeroAnswer(r)).size());
+        QCOMPARE(PollPlanner::responseBytes(r, Protocol::Binary),
+                 codec.encodeResponse(r, zeroAnswer(r)).size());
     }
 }
 
@@ -361,7 +374,8 @@ void TestPollPlanner::limits()
     for (Protocol p : {Protocol::Facon, Protocol::Binary}) {
         std::vector<WatchItem> items;
         for (int k = 0; k < count; ++k)
-            items.push_back({static_cast<std::uint64_t>(k), 1, Address{*type, static_cast<std::uint32_t>(k * step)}});
+            items.push_back({static_cast<std::uint64_t>(k), 1,
+                             Address{*type, static_cast<std::uint32_t>(k * step)}});
         const Plan plan = PollPlanner(p).plan(items);
         checkPlanConsistent(plan, items, p);
         QCOMPARE(plan.requestCount(), static_cast<std::size_t>(requests));
@@ -390,7 +404,8 @@ void TestPollPlanner::mixedWidthsAndTypes()
         plan = PollPlanner(p).plan(items);
         checkPlanConsistent(plan, items, p);
         QCOMPARE(plan.requestCount(), std::size_t{1});
-        QCOMPARE(plan.steps[0].request, Request::mixedRead(1, {addr("Y9"), addr("R1"), addr("DWM0")}));
+        QCOMPARE(plan.steps[0].request,
+                 Request::mixedRead(1, {addr("Y9"), addr("R1"), addr("DWM0")}));
 
         // 100 consecutive M + 20 scattered R: the M run (more than 64 points) is one 44 and the
         // registers one 48: 2 requests, where a pure 48 packing needs 2 as well but far more bytes.
@@ -410,7 +425,8 @@ void TestPollPlanner::mixedWidthsAndTypes()
 void TestPollPlanner::severalStations()
 {
     std::vector<WatchItem> items = {
-        {1, 2, addr("R0")}, {2, 1, addr("R0")}, {3, 2, addr("R1")}, {4, 1, addr("R1")}, {5, 3, addr("Y0")},
+        {1, 2, addr("R0")}, {2, 1, addr("R0")}, {3, 2, addr("R1")},
+        {4, 1, addr("R1")}, {5, 3, addr("Y0")},
     };
     const Plan plan = PollPlanner(Protocol::Binary).plan(items);
     checkPlanConsistent(plan, items, Protocol::Binary);
@@ -458,7 +474,8 @@ void TestPollPlanner::wordViewAlignment()
 
 void TestPollPlanner::fileRegistersBinaryOnly()
 {
-    const std::vector<WatchItem> items = {{1, 1, addr("F10")}, {2, 1, addr("DF4")}, {3, 1, addr("R0")}};
+    const std::vector<WatchItem> items
+        = {{1, 1, addr("F10")}, {2, 1, addr("DF4")}, {3, 1, addr("R0")}};
     const Plan binary = PollPlanner(Protocol::Binary).plan(items);
     checkPlanConsistent(binary, items, Protocol::Binary);
     QVERIFY(binary.unplannable.empty());
@@ -476,10 +493,10 @@ void TestPollPlanner::fileRegistersBinaryOnly()
 void TestPollPlanner::badItemsReported()
 {
     const std::vector<WatchItem> items = {
-        {1, 0, addr("R0")},                          // broadcast: nobody answers
-        {2, 255, addr("R0")},                        // no such station
-        {3, 1, Address{ElementType::X, 10000}},      // out of range
-        {4, 1, Address{ElementType::WY, 4}},         // misaligned W view
+        {1, 0, addr("R0")},                     // broadcast: nobody answers
+        {2, 255, addr("R0")},                   // no such station
+        {3, 1, Address{ElementType::X, 10000}}, // out of range
+        {4, 1, Address{ElementType::WY, 4}},    // misaligned W view
         {5, 1, addr("R0")},
     };
     const Plan plan = PollPlanner(Protocol::Facon).plan(items);
@@ -520,8 +537,8 @@ void TestPollPlanner::randomSmallListsAreOptimal()
         std::uint32_t multiple;
     };
     std::vector<Kind> kinds = {
-        {ElementType::X, 600, 1}, {ElementType::Y, 40, 1},   {ElementType::M, 300, 1},
-        {ElementType::R, 150, 1}, {ElementType::D, 30, 1},   {ElementType::DR, 150, 1},
+        {ElementType::X, 600, 1},   {ElementType::Y, 40, 1},     {ElementType::M, 300, 1},
+        {ElementType::R, 150, 1},   {ElementType::D, 30, 1},     {ElementType::DR, 150, 1},
         {ElementType::WY, 1200, 8}, {ElementType::DWM, 2400, 8}, {ElementType::RT, 70, 1},
         {ElementType::DRC, 40, 1},
     };
@@ -538,9 +555,11 @@ void TestPollPlanner::randomSmallListsAreOptimal()
         std::vector<WatchItem> items;
         for (int k = 0; k < n; ++k) {
             const Kind &kind = chosen[rng() % chosen.size()];
-            const auto number = static_cast<std::uint32_t>(rng() % (kind.range / kind.multiple)) * kind.multiple;
+            const auto number
+                = static_cast<std::uint32_t>(rng() % (kind.range / kind.multiple)) * kind.multiple;
             const auto station = static_cast<std::uint8_t>(round % 5 == 0 ? 1 + rng() % 2 : 1);
-            items.push_back({static_cast<std::uint64_t>(k + 1), station, Address{kind.type, number}});
+            items.push_back(
+                {static_cast<std::uint64_t>(k + 1), station, Address{kind.type, number}});
         }
         const Plan plan = PollPlanner(p).plan(items);
         checkPlanConsistent(plan, items, p);
@@ -549,9 +568,11 @@ void TestPollPlanner::randomSmallListsAreOptimal()
         if (plan.requestCount() != best.requests || plan.wireBytes != best.bytes) {
             QString list;
             for (const WatchItem &i : items)
-                list += QString(" %1:%2").arg(i.station).arg(QString::fromStdString(i.address.toString()));
-            qWarning("round %d:%s -> %zu requests %zu bytes, optimum %u / %zu", round, qPrintable(list),
-                     plan.requestCount(), plan.wireBytes, best.requests, best.bytes);
+                list += QString(" %1:%2").arg(i.station).arg(
+                    QString::fromStdString(i.address.toString()));
+            qWarning("round %d:%s -> %zu requests %zu bytes, optimum %u / %zu", round,
+                     qPrintable(list), plan.requestCount(), plan.wireBytes, best.requests,
+                     best.bytes);
         }
         QCOMPARE(plan.requestCount(), static_cast<std::size_t>(best.requests));
         QVERIFY(plan.wireBytes * 100 <= best.bytes * 105);
@@ -570,7 +591,8 @@ void TestPollPlanner::largeListsStayValid()
             const ElementInfo &info = elementInfo(type);
             if (p == Protocol::Facon && info.faconDigits == 0)
                 continue;
-            const auto number = static_cast<std::uint32_t>(rng() % 800) / info.alignment * info.alignment;
+            const auto number
+                = static_cast<std::uint32_t>(rng() % 800) / info.alignment * info.alignment;
             items.push_back({id, static_cast<std::uint8_t>(1 + rng() % 3), Address{type, number}});
         }
         const Plan plan = PollPlanner(p).plan(items);
@@ -645,7 +667,8 @@ void TestPollPlanner::splitIsolatesInLog2Rounds()
                 std::size_t slotCount = 0;
                 for (const PlanStep &h : halves) {
                     QVERIFY(validateRequest(h.request, p).ok());
-                    QCOMPARE(h.wireBytes, PollPlanner::queryBytes(h.request, p) + PollPlanner::responseBytes(h.request, p));
+                    QCOMPARE(h.wireBytes, PollPlanner::queryBytes(h.request, p)
+                                              + PollPlanner::responseBytes(h.request, p));
                     slotCount += h.itemSlots.size();
                     bool holdsBad = false;
                     for (const PlanSlot &s : h.itemSlots)

@@ -104,8 +104,10 @@ private Q_SLOTS:
     void destroyWhileBusy();
 
 private:
-    // Opens the simulator endpoint for `transport` and fills `settings`; false (with QSKIP) if impossible.
-    bool makeLink(const QString &transport, LinkSettings::ProtocolChoice protocol, LinkSettings &settings);
+    // Opens the simulator endpoint for `transport` and fills `settings`; false (with QSKIP) if
+    // impossible.
+    bool makeLink(const QString &transport, LinkSettings::ProtocolChoice protocol,
+                  LinkSettings &settings);
     std::unique_ptr<Session> openSession(const LinkSettings &settings);
     SessionResult run(Session &session, Results &results, const Request &request,
                       Priority priority = Priority::User);
@@ -188,21 +190,23 @@ std::unique_ptr<Session> TestSession::openSession(const LinkSettings &settings)
     return session;
 }
 
-SessionResult TestSession::run(Session &session, Results &results, const Request &request, Priority priority)
+SessionResult TestSession::run(Session &session, Results &results, const Request &request,
+                               Priority priority)
 {
     const quint64 id = session.submit(request, priority);
     if (!results.waitFor(id))
-        return SessionResult::fromError(makeError(ErrorKind::Timeout, "test: no finished() signal"));
+        return SessionResult::fromError(
+            makeError(ErrorKind::Timeout, "test: no finished() signal"));
     return results.map.value(id);
 }
 
 // Evaluates `expr` once (QVERIFY2 evaluates its message even on success).
-#define CHECK_OK(expr) \
-    do { \
-        const SessionResult checked_ = (expr); \
-        if (!checked_.ok()) \
-            dumpLog(); \
-        QVERIFY2(checked_.ok(), qPrintable(checked_.errorText())); \
+#define CHECK_OK(expr)                                                                             \
+    do {                                                                                           \
+        const SessionResult checked_ = (expr);                                                     \
+        if (!checked_.ok())                                                                        \
+            dumpLog();                                                                             \
+        QVERIFY2(checked_.ok(), qPrintable(checked_.errorText()));                                 \
     } while (false)
 
 void TestSession::everyCommand_data()
@@ -210,8 +214,10 @@ void TestSession::everyCommand_data()
     QTest::addColumn<QString>("transport");
     QTest::addColumn<int>("protocol");
     for (const char *transport : {"tcp", "udp", "serial"}) {
-        QTest::addRow("%s facon", transport) << QString::fromLatin1(transport) << int(Protocol::Facon);
-        QTest::addRow("%s binary", transport) << QString::fromLatin1(transport) << int(Protocol::Binary);
+        QTest::addRow("%s facon", transport)
+            << QString::fromLatin1(transport) << int(Protocol::Facon);
+        QTest::addRow("%s binary", transport)
+            << QString::fromLatin1(transport) << int(Protocol::Binary);
     }
 }
 
@@ -221,8 +227,9 @@ void TestSession::everyCommand()
     QFETCH(int, protocol);
     const auto proto = static_cast<Protocol>(protocol);
     LinkSettings settings;
-    if (!makeLink(transport, proto == Protocol::Facon ? LinkSettings::ProtocolChoice::Facon
-                                                      : LinkSettings::ProtocolChoice::Binary,
+    if (!makeLink(transport,
+                  proto == Protocol::Facon ? LinkSettings::ProtocolChoice::Facon
+                                           : LinkSettings::ProtocolChoice::Binary,
                   settings))
         QSKIP("socat is not available for a serial pty pair");
     auto session = openSession(settings);
@@ -271,8 +278,9 @@ void TestSession::everyCommand()
     QCOMPARE(r.response().values, (std::vector<std::uint32_t>{0x12345678}));
 
     // 49 / 48 mixed
-    CHECK_OK(run(*session, results,
-                 Request::mixedWrite(1, {addr("R100"), addr("Y20"), addr("DR30")}, {7, 1, 100000})));
+    CHECK_OK(
+        run(*session, results,
+            Request::mixedWrite(1, {addr("R100"), addr("Y20"), addr("DR30")}, {7, 1, 100000})));
     r = run(*session, results, Request::mixedRead(1, {addr("R100"), addr("Y20"), addr("DR30")}));
     CHECK_OK(r);
     QCOMPARE(r.response().values, (std::vector<std::uint32_t>{7, 1, 100000}));
@@ -487,7 +495,8 @@ void TestSession::otherStationIgnored()
     QCOMPARE(r.errorKind(), ErrorKind::Timeout);
     bool logged = false;
     for (const TrafficEntry &entry : session->trafficLog()->entries()) {
-        if (entry.direction == TrafficEntry::Direction::In && entry.error.contains(QStringLiteral("station")))
+        if (entry.direction == TrafficEntry::Direction::In
+            && entry.error.contains(QStringLiteral("station")))
             logged = true;
     }
     QVERIFY(logged);
@@ -517,10 +526,13 @@ void TestSession::userActionsGoFirst()
     for (int i = 0; i < 15; ++i)
         polls.append(session->submit(Request::readRegisters(1, addr("R0"), 4), Priority::Poll));
     const quint64 background = session->submit(Request::briefStatus(1), Priority::Background);
-    const quint64 user = session->submit(Request::writeRegisters(1, addr("R60"), {5}), Priority::User);
+    const quint64 user
+        = session->submit(Request::writeRegisters(1, addr("R60"), {5}), Priority::User);
     QVERIFY(results.waitFor(polls.last()));
     QVERIFY(results.map.value(user).ok());
-    const auto position = [&results](quint64 id) { return results.order.indexOf(id); };
+    const auto position = [&results](quint64 id) {
+        return results.order.indexOf(id);
+    };
     // At most the poll already on the wire goes before the user's write.
     QVERIFY2(position(user) <= 1, qPrintable(QString::number(position(user))));
     QVERIFY(position(user) < position(background));
@@ -580,9 +592,10 @@ void TestSession::rawFrames()
     QFETCH(int, protocol);
     const bool facon = protocol == int(Protocol::Facon);
     LinkSettings settings;
-    QVERIFY(makeLink(QStringLiteral("tcp"),
-                     facon ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Binary,
-                     settings));
+    QVERIFY(
+        makeLink(QStringLiteral("tcp"),
+                 facon ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Binary,
+                 settings));
     settings.timeoutMs = 300;
     auto session = openSession(settings);
     Results results(session.get());
@@ -595,12 +608,16 @@ void TestSession::rawFrames()
     CHECK_OK(r);
     QVERIFY(r.isRaw());
     if (facon)
-        QVERIFY2(r.rawAnswer().startsWith("\x02" "0140"), r.rawAnswer().toHex(' ').constData());
+        QVERIFY2(r.rawAnswer().startsWith("\x02"
+                                          "0140"),
+                 r.rawAnswer().toHex(' ').constData());
     else
-        QVERIFY2(r.rawAnswer().startsWith(QByteArray("\x52\x10", 2)), r.rawAnswer().toHex(' ').constData());
+        QVERIFY2(r.rawAnswer().startsWith(QByteArray("\x52\x10", 2)),
+                 r.rawAnswer().toHex(' ').constData());
 
     // A complete frame as typed.
-    const QByteArray frame = facon ? QByteArray("\x02" "0140C7\x03")
+    const QByteArray frame = facon ? QByteArray("\x02"
+                                                "0140C7\x03")
                                    : QByteArray::fromHex("51 10 00 02 01 40 A1 84 55 AA");
     id = session->sendRaw(frame, false);
     QVERIFY(results.waitFor(id));
@@ -609,7 +626,9 @@ void TestSession::rawFrames()
     QVERIFY(!r.rawAnswer().isEmpty());
 
     // Something the PLC ignores (bad checksum): the timeout says nothing came back.
-    const QByteArray broken = facon ? QByteArray("\x02" "0140FF\x03") : QByteArray::fromHex("51 10 00 02 01 40 00 00 55 AA");
+    const QByteArray broken = facon ? QByteArray("\x02"
+                                                 "0140FF\x03")
+                                    : QByteArray::fromHex("51 10 00 02 01 40 00 00 55 AA");
     id = session->sendRaw(broken, false);
     QVERIFY(results.waitFor(id));
     r = results.map.value(id);
@@ -630,7 +649,8 @@ void TestSession::autoDetect()
     CHECK_OK(r);
     QCOMPARE(r.response().values.front(), 77u);
     QVERIFY(session->isProtocolKnown());
-    QCOMPARE(session->protocol(), Protocol::Facon); // the simulator speaks both; FACON is probed first
+    QCOMPARE(session->protocol(),
+             Protocol::Facon); // the simulator speaks both; FACON is probed first
     QTRY_COMPARE_WITH_TIMEOUT(detected.count(), 1, 5000);
     // Remembered: the next request probes nothing.
     const quint64 before = m_server->counters().frames;
@@ -649,7 +669,8 @@ void TestSession::autoDetectNobody()
     const SessionResult r = run(*session, results, Request::briefStatus(1));
     QVERIFY(!r.ok());
     QCOMPARE(r.errorKind(), ErrorKind::Timeout);
-    QVERIFY2(r.errorText().contains(QStringLiteral("neither in FACON nor in binary")), qPrintable(r.errorText()));
+    QVERIFY2(r.errorText().contains(QStringLiteral("neither in FACON nor in binary")),
+             qPrintable(r.errorText()));
     QVERIFY(!session->isProtocolKnown());
 }
 
@@ -663,10 +684,11 @@ void TestSession::reconnectAfterSimulatorRestart()
     auto session = openSession(settings);
     QList<LinkState> states;
     QStringList reasons;
-    connect(session.get(), &Session::linkStateChanged, this, [&](LinkState state, const QString &reason) {
-        states.append(state);
-        reasons.append(reason);
-    });
+    connect(session.get(), &Session::linkStateChanged, this,
+            [&](LinkState state, const QString &reason) {
+                states.append(state);
+                reasons.append(reason);
+            });
     Results results(session.get());
     CHECK_OK(run(*session, results, Request::briefStatus(1)));
 
@@ -744,7 +766,8 @@ void TestSession::trafficLogBounded()
     TrafficLog log(10);
     QSignalSpy added(&log, &TrafficLog::entriesAdded);
     for (int i = 0; i < 25; ++i)
-        log.append(TrafficEntry::Direction::Out, QByteArray::number(i), QStringLiteral("frame %1").arg(i));
+        log.append(TrafficEntry::Direction::Out, QByteArray::number(i),
+                   QStringLiteral("frame %1").arg(i));
     QCOMPARE(log.size(), 10);
     QCOMPARE(added.count(), 25);
     QCOMPARE(log.lastSequence(), quint64(25));
@@ -769,7 +792,8 @@ void TestSession::trafficLogBounded()
     QCOMPARE(entries.size(), 2);
     QCOMPARE(entries.at(0).direction, TrafficEntry::Direction::Out);
     QCOMPARE(entries.at(1).direction, TrafficEntry::Direction::In);
-    QVERIFY(entries.at(0).bytes.startsWith("\x02" "0146"));
+    QVERIFY(entries.at(0).bytes.startsWith("\x02"
+                                           "0146"));
     QVERIFY(!entries.at(0).summary.isEmpty());
     QVERIFY(entries.at(1).error.isEmpty());
 }
@@ -784,9 +808,13 @@ void TestSession::polling()
     m_plc->setValue(addr("Y3"), 1);
     auto session = openSession(settings);
     QList<QList<WatchValue>> batches;
-    connect(session.get(), &Session::values, this, [&batches](const QList<WatchValue> &v) { batches.append(v); });
-    session->setWatchList({{1, 1, addr("R0"), 50}, {2, 1, addr("R1"), 50}, {3, 1, addr("DR10"), 50},
-                           {4, 1, addr("Y3"), 50}, {5, 1, addr("R0"), 50}});
+    connect(session.get(), &Session::values, this,
+            [&batches](const QList<WatchValue> &v) { batches.append(v); });
+    session->setWatchList({{1, 1, addr("R0"), 50},
+                           {2, 1, addr("R1"), 50},
+                           {3, 1, addr("DR10"), 50},
+                           {4, 1, addr("Y3"), 50},
+                           {5, 1, addr("R0"), 50}});
     QTRY_VERIFY_WITH_TIMEOUT(!batches.isEmpty(), 5000);
     QList<WatchValue> first = batches.first();
     QCOMPARE(first.size(), 5); // one batch per cycle, every item
@@ -803,13 +831,15 @@ void TestSession::polling()
     QCOMPARE(seen.value(5), 11u);
 
     m_plc->setValue(addr("R1"), 99);
-    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(batches.last().cbegin(), batches.last().cend(),
-                                         [](const WatchValue &v) { return v.itemId == 2 && v.value == 99; }),
-                             5000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        std::any_of(batches.last().cbegin(), batches.last().cend(),
+                    [](const WatchValue &v) { return v.itemId == 2 && v.value == 99; }),
+        5000);
 
     // Re-plan on a new list; an empty list stops polling.
     session->setWatchList({{7, 1, addr("R1"), 30}});
-    QTRY_VERIFY_WITH_TIMEOUT(batches.last().size() == 1 && batches.last().first().itemId == 7, 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(batches.last().size() == 1 && batches.last().first().itemId == 7,
+                             5000);
     session->setWatchList({});
     QTest::qWait(100);
     const qsizetype count = batches.size();
@@ -828,10 +858,15 @@ void TestSession::pollingIsolatesBadAddress()
     m_plc->setValue(addr("DR100"), 70000);
     auto session = openSession(settings);
     QList<QList<WatchValue>> batches;
-    connect(session.get(), &Session::values, this, [&batches](const QList<WatchValue> &v) { batches.append(v); });
-    // D3500 does not exist on this model (D0..D2999): the PLC answers error A for any batch holding it.
-    session->setWatchList({{1, 1, addr("R0"), 50}, {2, 1, addr("D3500"), 50}, {3, 1, addr("R3000"), 50},
-                           {4, 1, addr("M5"), 50}, {5, 1, addr("DR100"), 50}});
+    connect(session.get(), &Session::values, this,
+            [&batches](const QList<WatchValue> &v) { batches.append(v); });
+    // D3500 does not exist on this model (D0..D2999): the PLC answers error A for any batch holding
+    // it.
+    session->setWatchList({{1, 1, addr("R0"), 50},
+                           {2, 1, addr("D3500"), 50},
+                           {3, 1, addr("R3000"), 50},
+                           {4, 1, addr("M5"), 50},
+                           {5, 1, addr("DR100"), 50}});
     QTRY_VERIFY_WITH_TIMEOUT(batches.size() >= 3, 10000);
     for (const QList<WatchValue> &batch : std::as_const(batches)) {
         QCOMPARE(batch.size(), 5);
@@ -846,10 +881,14 @@ void TestSession::pollingIsolatesBadAddress()
     }
     const QList<WatchValue> last = batches.last();
     for (const WatchValue &v : last) {
-        if (v.itemId == 1) QCOMPARE(v.value, 5u);
-        if (v.itemId == 3) QCOMPARE(v.value, 6u);
-        if (v.itemId == 4) QCOMPARE(v.value, 1u);
-        if (v.itemId == 5) QCOMPARE(v.value, 70000u);
+        if (v.itemId == 1)
+            QCOMPARE(v.value, 5u);
+        if (v.itemId == 3)
+            QCOMPARE(v.value, 6u);
+        if (v.itemId == 4)
+            QCOMPARE(v.value, 1u);
+        if (v.itemId == 5)
+            QCOMPARE(v.value, 70000u);
     }
 }
 
@@ -862,9 +901,12 @@ void TestSession::pollingSeveralStations()
     m_plc->setValue(addr("R0"), 17);
     auto session = openSession(settings);
     QList<QList<WatchValue>> batches;
-    connect(session.get(), &Session::values, this, [&batches](const QList<WatchValue> &v) { batches.append(v); });
+    connect(session.get(), &Session::values, this,
+            [&batches](const QList<WatchValue> &v) { batches.append(v); });
     // Station 2 is absent: its items go stale; station 1 keeps being served.
-    session->setWatchList({{1, 1, addr("R0"), 50}, {2, 2, addr("R0"), 50}, {3, 1, addr("R1"), 50},
+    session->setWatchList({{1, 1, addr("R0"), 50},
+                           {2, 2, addr("R0"), 50},
+                           {3, 1, addr("R1"), 50},
                            {4, 2, addr("R1"), 50}});
     QTRY_VERIFY_WITH_TIMEOUT(batches.size() >= 2, 10000);
     for (const WatchValue &v : batches.last()) {
@@ -910,7 +952,7 @@ void TestSession::pollingTrickyWatchList()
     };
     for (std::uint32_t n = 0; n < 200; n += 3) // 67 registers over 200 words: more than one 46
         add({ElementType::R, n}, 1000 + n);
-    for (std::uint32_t n = 0; n < 16; n += 2)  // 32-bit, aligned pairs
+    for (std::uint32_t n = 0; n < 16; n += 2) // 32-bit, aligned pairs
         add({ElementType::DR, 300 + n}, 0x10000u * n + 7);
     for (std::uint32_t n = 0; n < 600; n += 37) // bits over more than 256 points
         add({ElementType::M, n}, n % 2);
@@ -918,10 +960,11 @@ void TestSession::pollingTrickyWatchList()
     add({ElementType::D, 2000}, 66); // far away: mixed read or its own request
     add({ElementType::Y, 3}, 1);
     add({ElementType::WY, 0}, 0x0008, false); // Y3 seen through WY0
-    add({ElementType::R, 0}, 1000, false);     // duplicate of the first item
+    add({ElementType::R, 0}, 1000, false);    // duplicate of the first item
     auto session = openSession(settings);
     QList<QList<WatchValue>> batches;
-    connect(session.get(), &Session::values, this, [&batches](const QList<WatchValue> &v) { batches.append(v); });
+    connect(session.get(), &Session::values, this,
+            [&batches](const QList<WatchValue> &v) { batches.append(v); });
     session->setWatchList(watch);
     QTRY_VERIFY_WITH_TIMEOUT(!batches.isEmpty(), 10000);
     const QList<WatchValue> batch = batches.first();

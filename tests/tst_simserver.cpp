@@ -31,7 +31,8 @@ using namespace Fatek;
 namespace {
 
 constexpr int answerTimeoutMs = 3000;
-// Long enough for a loopback answer to arrive many times over: silence after it means none was sent.
+// Long enough for a loopback answer to arrive many times over: silence after it means none was
+// sent.
 constexpr int silenceMs = 300;
 
 Address addr(const char *text)
@@ -46,7 +47,8 @@ const Codec &codecFor(Protocol p)
 {
     static const FaconCodec facon;
     static const BinaryCodec binary;
-    return p == Protocol::Facon ? static_cast<const Codec &>(facon) : static_cast<const Codec &>(binary);
+    return p == Protocol::Facon ? static_cast<const Codec &>(facon)
+                                : static_cast<const Codec &>(binary);
 }
 
 Bytes ascii(const char *text)
@@ -68,7 +70,8 @@ public:
             p->rx += p->m_tcp->readAll();
             ++p->packets;
         });
-        QObject::connect(m->m_tcp.get(), &QTcpSocket::disconnected, m.get(), [p = m.get()] { p->closed = true; });
+        QObject::connect(m->m_tcp.get(), &QTcpSocket::disconnected, m.get(),
+                         [p = m.get()] { p->closed = true; });
         m->m_tcp->connectToHost(QHostAddress::LocalHost, port);
         return m;
     }
@@ -113,7 +116,8 @@ public:
 
     void write(const Bytes &bytes)
     {
-        const QByteArray data(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
+        const QByteArray data(reinterpret_cast<const char *>(bytes.data()),
+                              static_cast<qsizetype>(bytes.size()));
         if (m_tcp)
             m_tcp->write(data);
         else if (m_udp)
@@ -132,7 +136,9 @@ public:
                                                       : static_cast<Deframer &>(m_binary);
             if (m_fed < rx.size()) {
                 const auto *p = reinterpret_cast<const std::uint8_t *>(rx.constData()) + m_fed;
-                d.feed(std::span<const std::uint8_t>(p, static_cast<std::size_t>(rx.size() - m_fed)), m_items);
+                d.feed(
+                    std::span<const std::uint8_t>(p, static_cast<std::size_t>(rx.size() - m_fed)),
+                    m_items);
                 m_fed = rx.size();
             }
             if (!m_items.empty()) {
@@ -225,7 +231,8 @@ struct Rig
 
     std::unique_ptr<Master> connect(Transport t)
     {
-        auto m = t == Transport::Tcp ? Master::tcp(server.tcpPort()) : Master::udp(server.udpPort());
+        auto m
+            = t == Transport::Tcp ? Master::tcp(server.tcpPort()) : Master::udp(server.udpPort());
         if (!m->waitConnected())
             return nullptr;
         return m;
@@ -266,7 +273,8 @@ bool commandSuite(Master &m, SimulatedPlc &plc, Protocol p)
     askOk(Request::discreteControl(s, DiscreteOp::Set, addr("Y3")));
     check(plc.isDisabled(addr("Y3")) == std::optional<bool>{true}, "42 disable");
     check(plc.value(addr("Y3")) == std::optional<std::uint32_t>{1}, "42 set");
-    check(askOk(Request::readEnableFlags(s, addr("Y0"), 8)).values == V{0, 0, 0, 1, 0, 0, 0, 0}, "43 flags");
+    check(askOk(Request::readEnableFlags(s, addr("Y0"), 8)).values == V{0, 0, 0, 1, 0, 0, 0, 0},
+          "43 flags");
 
     askOk(Request::writeDiscretes(s, addr("M10"), {1, 0, 1, 1}));
     check(plc.value(addr("M13")) == std::optional<std::uint32_t>{1}, "45 write");
@@ -275,7 +283,8 @@ bool commandSuite(Master &m, SimulatedPlc &plc, Protocol p)
 
     askOk(Request::writeRegisters(s, addr("R100"), {1, 0xFFFF, 0x1234}));
     check(plc.value(addr("R101")) == std::optional<std::uint32_t>{0xFFFF}, "47 write");
-    check(askOk(Request::readRegisters(s, addr("R100"), 3)).values == V{1, 0xFFFF, 0x1234}, "46 read");
+    check(askOk(Request::readRegisters(s, addr("R100"), 3)).values == V{1, 0xFFFF, 0x1234},
+          "46 read");
     askOk(Request::writeRegisters(s, addr("DR200"), {0x12345678}));
     check(plc.value(addr("R201")) == std::optional<std::uint32_t>{0x1234}, "47 DR write");
     check(askOk(Request::readRegisters(s, addr("DR200"), 1)).values == V{0x12345678}, "46 DR read");
@@ -375,7 +384,8 @@ void TestSimServer::everyCommandSerial()
                        QStringLiteral("pty,raw,echo=0,link=") + simEnd,
                        QStringLiteral("pty,raw,echo=0,link=") + masterEnd});
     QVERIFY(proc.waitForStarted());
-    QVERIFY(QTest::qWaitFor([&] { return QFileInfo::exists(simEnd) && QFileInfo::exists(masterEnd); }, 5000));
+    QVERIFY(QTest::qWaitFor(
+        [&] { return QFileInfo::exists(simEnd) && QFileInfo::exists(masterEnd); }, 5000));
 
     SimulatedPlc plc;
     SimServer server(&plc);
@@ -390,7 +400,8 @@ void TestSimServer::everyCommandSerial()
     QVERIFY(commandSuite(*m, plc, Protocol::Binary));
 
     // Broadcast on the serial line: executed, silent.
-    auto frame = codecFor(Protocol::Facon).encodeRequest(Request::writeRegisters(0, addr("R50"), {77}));
+    auto frame
+        = codecFor(Protocol::Facon).encodeRequest(Request::writeRegisters(0, addr("R50"), {77}));
     QVERIFY(frame);
     m->write(*frame);
     QVERIFY(m->silentFor(silenceMs));
@@ -408,7 +419,8 @@ void TestSimServer::referenceVectors_data()
     QTest::addColumn<QByteArray>("query");
     QTest::addColumn<QByteArray>("response");
     auto bytes = [](const Bytes &b) {
-        return QByteArray(reinterpret_cast<const char *>(b.data()), static_cast<qsizetype>(b.size()));
+        return QByteArray(reinterpret_cast<const char *>(b.data()),
+                          static_cast<qsizetype>(b.size()));
     };
     for (const auto &[name, p] : {std::pair{QStringLiteral("facon"), Protocol::Facon},
                                   std::pair{QStringLiteral("binary"), Protocol::Binary}}) {
@@ -475,8 +487,7 @@ void TestSimServer::referenceVectors()
             for (std::size_t i = 0; i < r.addresses.size(); ++i)
                 QVERIFY(plc.setValue(r.addresses[i], answer->values.at(i)));
             break;
-        default:
-            break;
+        default: break;
         }
     }
 
@@ -503,8 +514,7 @@ void TestSimServer::referenceVectors()
         if (r.op == DiscreteOp::Disable)
             QCOMPARE(plc.isDisabled(r.start), std::optional<bool>{true});
         break;
-    default:
-        break;
+    default: break;
     }
 }
 
@@ -533,7 +543,8 @@ void TestSimServer::errorCodes()
     QCOMPARE(r.error().plcCode, 0xA);
 
     // 2: a discrete value of 2, which no codec would encode.
-    const Bytes badValue = p == Protocol::Facon ? ascii("014501Y00002") : Bytes{1, 0x45, 1, 'Y', 0, 0, 2};
+    const Bytes badValue
+        = p == Protocol::Facon ? ascii("014501Y00002") : Bytes{1, 0x45, 1, 'Y', 0, 0, 2};
     QCOMPARE(errorCodeOf(m->askRaw(badValue, p), p), 2);
     QCOMPARE(rig.plc.value(addr("Y0")), std::optional<std::uint32_t>{0});
 
@@ -627,7 +638,8 @@ void TestSimServer::bothProtocolsOnOneConnection()
     both.insert(both.end(), {'x', 'y'}); // noise between frames is skipped
     both.insert(both.end(), second.begin(), second.end());
     m->write(both);
-    const qsizetype expected = 13 + 13; // FACON 46 answer of one register; binary 4E answer of 3 bytes
+    const qsizetype expected
+        = 13 + 13; // FACON 46 answer of one register; binary 4E answer of 3 bytes
     QVERIFY(QTest::qWaitFor([&] { return m->rx.size() >= expected; }, answerTimeoutMs));
     QCOMPARE(m->rx.size(), expected);
     const auto *bytes = reinterpret_cast<const std::uint8_t *>(m->rx.constData());
@@ -662,8 +674,7 @@ void TestSimServer::manyTcpClients()
         const auto p = i % 2 ? Protocol::Binary : Protocol::Facon;
         auto answer = masters[i]->waitFrame(p);
         QVERIFY(answer && !answer->error);
-        QCOMPARE(rig.plc.value(Address{ElementType::R, i}),
-                 std::optional<std::uint32_t>{100 + i});
+        QCOMPARE(rig.plc.value(Address{ElementType::R, i}), std::optional<std::uint32_t>{100 + i});
     }
     masters.pop_back();
     QVERIFY(QTest::qWaitFor([&] { return rig.server.tcpClientCount() == 4; }, answerTimeoutMs));
@@ -750,8 +761,9 @@ void TestSimServer::faultDropIsSeeded()
         auto m = rig.connect(Transport::Tcp);
         Bytes all;
         for (int i = 0; i < 20; ++i) {
-            const Bytes one = *codecFor(Protocol::Facon).encodeRequest(
-                Request::loopback(1, ascii(QByteArray::number(100 + i).constData())));
+            const Bytes one = *codecFor(Protocol::Facon)
+                                   .encodeRequest(Request::loopback(
+                                       1, ascii(QByteArray::number(100 + i).constData())));
             all.insert(all.end(), one.begin(), one.end());
         }
         m->write(all);
@@ -759,7 +771,8 @@ void TestSimServer::faultDropIsSeeded()
             return QStringList{QStringLiteral("timeout")};
         QStringList answered;
         while (auto item = m->waitFrame(Protocol::Facon, 200))
-            answered << QString::fromLatin1(reinterpret_cast<const char *>(item->frame.data()) + 5, 3);
+            answered << QString::fromLatin1(reinterpret_cast<const char *>(item->frame.data()) + 5,
+                                            3);
         return answered;
     };
     const QStringList first = run(42);
@@ -776,10 +789,13 @@ void TestSimServer::faultCorrupt()
     rig.server.setFaults(f);
     auto m = rig.connect(Transport::Tcp);
     QVERIFY(m);
-    const Bytes clean = codecFor(Protocol::Facon).encodeResponse(
-        Request::briefStatus(1), Response{1, Command::BriefStatus, 0, {}, rig.plc.briefStatusBytes()});
+    const Bytes clean
+        = codecFor(Protocol::Facon)
+              .encodeResponse(Request::briefStatus(1),
+                              Response{1, Command::BriefStatus, 0, {}, rig.plc.briefStatusBytes()});
     m->write(*codecFor(Protocol::Facon).encodeRequest(Request::briefStatus(1)));
-    QVERIFY(QTest::qWaitFor([&] { return m->rx.size() >= static_cast<qsizetype>(clean.size()); }, answerTimeoutMs));
+    QVERIFY(QTest::qWaitFor([&] { return m->rx.size() >= static_cast<qsizetype>(clean.size()); },
+                            answerTimeoutMs));
     QCOMPARE(m->rx.size(), static_cast<qsizetype>(clean.size()));
     // Every byte differs, so no valid answer can be found in it.
     for (qsizetype i = 0; i < m->rx.size(); ++i)

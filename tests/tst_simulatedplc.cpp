@@ -58,21 +58,51 @@ void TestSimulatedPlc::profiles_data()
     QTest::addColumn<QString>("profile");
     QTest::addColumn<QString>("last");   // highest valid element
     QTest::addColumn<QString>("beyond"); // the next one, missing on this model
-    QTest::newRow("fbs X") << "fbs" << "X255" << "X256";
-    QTest::newRow("fbs Y") << "fbs" << "Y255" << "Y256";
-    QTest::newRow("fbs M") << "fbs" << "M2001" << "M2002";
-    QTest::newRow("fbs S") << "fbs" << "S999" << "S1000";
-    QTest::newRow("fbs R") << "fbs" << "R3839" << "R3840";
-    QTest::newRow("fbs D") << "fbs" << "D2999" << "D3000";
-    QTest::newRow("fbs WY") << "fbs" << "WY240" << "WY248";
-    QTest::newRow("fbs DWX") << "fbs" << "DWX224" << "DWX232";
-    QTest::newRow("fbs DR") << "fbs" << "DR3838" << "DR3839";
-    QTest::newRow("m X") << "m" << "X9999" << "";
-    QTest::newRow("m R") << "m" << "R65535" << "";
-    QTest::newRow("m F") << "m" << "F65535" << "";
-    QTest::newRow("m DR") << "m" << "DR65534" << "";
-    QTest::newRow("m DWC") << "m" << "DWC9968" << "";
-    QTest::newRow("m RT") << "m" << "RT9999" << "";
+    QTest::newRow("fbs X") << "fbs"
+                           << "X255"
+                           << "X256";
+    QTest::newRow("fbs Y") << "fbs"
+                           << "Y255"
+                           << "Y256";
+    QTest::newRow("fbs M") << "fbs"
+                           << "M2001"
+                           << "M2002";
+    QTest::newRow("fbs S") << "fbs"
+                           << "S999"
+                           << "S1000";
+    QTest::newRow("fbs R") << "fbs"
+                           << "R3839"
+                           << "R3840";
+    QTest::newRow("fbs D") << "fbs"
+                           << "D2999"
+                           << "D3000";
+    QTest::newRow("fbs WY") << "fbs"
+                            << "WY240"
+                            << "WY248";
+    QTest::newRow("fbs DWX") << "fbs"
+                             << "DWX224"
+                             << "DWX232";
+    QTest::newRow("fbs DR") << "fbs"
+                            << "DR3838"
+                            << "DR3839";
+    QTest::newRow("m X") << "m"
+                         << "X9999"
+                         << "";
+    QTest::newRow("m R") << "m"
+                         << "R65535"
+                         << "";
+    QTest::newRow("m F") << "m"
+                         << "F65535"
+                         << "";
+    QTest::newRow("m DR") << "m"
+                          << "DR65534"
+                          << "";
+    QTest::newRow("m DWC") << "m"
+                           << "DWC9968"
+                           << "";
+    QTest::newRow("m RT") << "m"
+                          << "RT9999"
+                          << "";
 }
 
 void TestSimulatedPlc::profiles()
@@ -110,13 +140,16 @@ void TestSimulatedPlc::rangesAnswerA_data()
     QTest::newRow("read R3838..R3841") << Request::readRegisters(S, addr("R3838"), 4) << facon;
     QTest::newRow("read X250..X259") << Request::readDiscretes(S, addr("X250"), 10) << facon;
     QTest::newRow("write D3000") << Request::writeRegisters(S, addr("D3000"), {1}) << facon;
-    QTest::newRow("set M2002") << Request::discreteControl(S, DiscreteOp::Set, addr("M2002")) << facon;
+    QTest::newRow("set M2002") << Request::discreteControl(S, DiscreteOp::Set, addr("M2002"))
+                               << facon;
     QTest::newRow("flags S999..S1000") << Request::readEnableFlags(S, addr("S999"), 2) << facon;
-    QTest::newRow("misaligned WY4") << Request::readRegisters(S, Address{ElementType::WY, 4}, 1) << facon;
+    QTest::newRow("misaligned WY4")
+        << Request::readRegisters(S, Address{ElementType::WY, 4}, 1) << facon;
     QTest::newRow("WY240 x2") << Request::readRegisters(S, addr("WY240"), 2) << facon;
     QTest::newRow("DR3839 needs R3840") << Request::readRegisters(S, addr("DR3839"), 1) << facon;
     QTest::newRow("F0 on FBs") << Request::readRegisters(S, addr("F0"), 1) << binary;
-    QTest::newRow("mixed with R9999") << Request::mixedRead(S, {addr("R0"), addr("R9999")}) << facon;
+    QTest::newRow("mixed with R9999")
+        << Request::mixedRead(S, {addr("R0"), addr("R9999")}) << facon;
     QTest::newRow("mixed write Y300")
         << Request::mixedWrite(S, {addr("R0"), addr("Y300")}, {5, 1}) << facon;
     QTest::newRow("program page 207") << Request::readProgram(S, 207) << facon;
@@ -146,7 +179,8 @@ void TestSimulatedPlc::wordViewsOverBits()
     QCOMPARE(r.values, std::vector<std::uint32_t>{0x0100});
 
     // Writing a DW view sets the 32 points.
-    QCOMPARE(plc.execute(Request::writeRegisters(S, addr("DWM64"), {0x80000003})).errorCode, std::uint8_t{0});
+    QCOMPARE(plc.execute(Request::writeRegisters(S, addr("DWM64"), {0x80000003})).errorCode,
+             std::uint8_t{0});
     r = plc.execute(Request::readDiscretes(S, addr("M64"), 32));
     std::vector<std::uint32_t> expected(32, 0);
     expected[0] = expected[1] = expected[31] = 1;
@@ -174,8 +208,10 @@ void TestSimulatedPlc::doubleRegisterPairs()
 void TestSimulatedPlc::illegalValuesAnswer2()
 {
     SimulatedPlc plc;
-    QCOMPARE(plc.execute(Request::writeDiscretes(S, addr("Y0"), {1, 2})).errorCode, std::uint8_t{2});
-    QCOMPARE(plc.execute(Request::writeRegisters(S, addr("R0"), {0x10000})).errorCode, std::uint8_t{2});
+    QCOMPARE(plc.execute(Request::writeDiscretes(S, addr("Y0"), {1, 2})).errorCode,
+             std::uint8_t{2});
+    QCOMPARE(plc.execute(Request::writeRegisters(S, addr("R0"), {0x10000})).errorCode,
+             std::uint8_t{2});
     QCOMPARE(plc.execute(Request::mixedWrite(S, {addr("M0")}, {7})).errorCode, std::uint8_t{2});
     std::vector<std::uint32_t> page(64, 0);
     page[63] = 0x12345;
@@ -189,7 +225,8 @@ void TestSimulatedPlc::refusedWriteChangesNothing()
 {
     SimulatedPlc plc;
     // The last value is bad: none of the values may be written.
-    QCOMPARE(plc.execute(Request::writeRegisters(S, addr("R0"), {1, 2, 0x10000})).errorCode, std::uint8_t{2});
+    QCOMPARE(plc.execute(Request::writeRegisters(S, addr("R0"), {1, 2, 0x10000})).errorCode,
+             std::uint8_t{2});
     QCOMPARE(plc.value(addr("R0")), std::optional<std::uint32_t>{0});
     QCOMPARE(plc.execute(Request::mixedWrite(S, {addr("R5"), addr("R4000")}, {9, 9})).errorCode,
              std::uint8_t{0xA});
@@ -205,7 +242,8 @@ void TestSimulatedPlc::malformedAnswer4_data()
     QTest::newRow("44 count 0") << Request::readDiscretes(S, addr("X0"), 0) << facon;
     QTest::newRow("44 count 257") << Request::readDiscretes(S, addr("M0"), 257) << facon;
     QTest::newRow("44 on a register") << Request::readDiscretes(S, addr("R0"), 1) << facon;
-    QTest::newRow("42 on a register") << Request::discreteControl(S, DiscreteOp::Set, addr("R0")) << facon;
+    QTest::newRow("42 on a register")
+        << Request::discreteControl(S, DiscreteOp::Set, addr("R0")) << facon;
     QTest::newRow("46 on a discrete") << Request::readRegisters(S, addr("Y0"), 1) << facon;
     QTest::newRow("46 65 words") << Request::readRegisters(S, addr("R0"), 65) << facon;
     QTest::newRow("46 33 DR") << Request::readRegisters(S, addr("DR0"), 33) << facon;
@@ -213,14 +251,18 @@ void TestSimulatedPlc::malformedAnswer4_data()
     std::vector<Address> many(33, addr("DR0"));
     QTest::newRow("48 66 words") << Request::mixedRead(S, many) << facon;
     std::vector<Address> seventeen(17, addr("DR0"));
-    QTest::newRow("49 34 words")
-        << Request::mixedWrite(S, seventeen, std::vector<std::uint32_t>(17, 0)) << facon;
-    QTest::newRow("49 values missing") << Request::mixedWrite(S, {addr("R0"), addr("R1")}, {1}) << facon;
+    QTest::newRow("49 34 words") << Request::mixedWrite(S, seventeen,
+                                                        std::vector<std::uint32_t>(17, 0))
+                                 << facon;
+    QTest::newRow("49 values missing")
+        << Request::mixedWrite(S, {addr("R0"), addr("R1")}, {1}) << facon;
     QTest::newRow("48 empty") << Request::mixedRead(S, {}) << facon;
     QTest::newRow("4E 257 bytes") << Request::loopback(S, Bytes(257, 0x41)) << facon;
     QTest::newRow("4F in binary") << Request::readProgram(S, 0) << binary;
-    QTest::newRow("50 in binary") << Request::writeProgram(S, 0, std::vector<std::uint32_t>(64, 0)) << binary;
-    QTest::newRow("50 short page") << Request::writeProgram(S, 0, std::vector<std::uint32_t>(63, 0)) << facon;
+    QTest::newRow("50 in binary") << Request::writeProgram(S, 0, std::vector<std::uint32_t>(64, 0))
+                                  << binary;
+    QTest::newRow("50 short page")
+        << Request::writeProgram(S, 0, std::vector<std::uint32_t>(63, 0)) << facon;
     Request unknown = Request::briefStatus(S);
     unknown.command = static_cast<Command>(0x4A);
     QTest::newRow("command 4A") << unknown << facon;
@@ -251,7 +293,8 @@ void TestSimulatedPlc::runStopAndStatus()
     flags.idSet = true;
     plc.setStatusFlags(flags);
     QCOMPARE(plc.execute(Request::runStop(S, true)).errorCode, std::uint8_t{0});
-    QCOMPARE(plc.execute(Request::briefStatus(S)).data.at(0), std::uint8_t{0x29}); // the reference example
+    QCOMPARE(plc.execute(Request::briefStatus(S)).data.at(0),
+             std::uint8_t{0x29}); // the reference example
     QVERIFY(plc.status().running);
 
     SimulatedPlc m(ModelProfile::mSeries());
@@ -290,9 +333,9 @@ void TestSimulatedPlc::detailStatus()
     QCOMPARE(r.data.size(), std::size_t{64});
     const DetailStatus d = DetailStatus::decode(r.data);
     QVERIFY(d.status.running);
-    QCOMPARE(d.mainUnitType, std::optional<std::uint8_t>{1});  // MC
-    QCOMPARE(d.ioPointsCode, std::optional<std::uint8_t>{2});  // 28 points
-    QCOMPARE(d.osVersion, std::optional<std::uint8_t>{0x31});  // V3.1
+    QCOMPARE(d.mainUnitType, std::optional<std::uint8_t>{1});    // MC
+    QCOMPARE(d.ioPointsCode, std::optional<std::uint8_t>{2});    // 28 points
+    QCOMPARE(d.osVersion, std::optional<std::uint8_t>{0x31});    // V3.1
     QCOMPARE(d.ladderSize, std::optional<std::uint16_t>{13184}); // 13K
     QCOMPARE(d.discreteInputs, std::optional<std::uint16_t>{256});
     QCOMPARE(d.mRelays, std::optional<std::uint16_t>{2002});
@@ -309,12 +352,15 @@ void TestSimulatedPlc::forcing()
     plc.scan(100);
     QCOMPARE(plc.value(y0), std::optional<std::uint32_t>{1});
 
-    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Disable, y0)).errorCode, std::uint8_t{0});
+    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Disable, y0)).errorCode,
+             std::uint8_t{0});
     QCOMPARE(plc.isDisabled(y0), std::optional<bool>{true});
-    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Reset, y0)).errorCode, std::uint8_t{0});
+    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Reset, y0)).errorCode,
+             std::uint8_t{0});
     plc.scan(200); // ladder wants 1
     QCOMPARE(plc.value(y0), std::optional<std::uint32_t>{0});
-    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Set, y0)).errorCode, std::uint8_t{0});
+    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Set, y0)).errorCode,
+             std::uint8_t{0});
     plc.scan(700); // ladder wants 0
     QCOMPARE(plc.value(y0), std::optional<std::uint32_t>{1});
 
@@ -327,7 +373,8 @@ void TestSimulatedPlc::forcing()
     QCOMPARE(plc.value(addr("X2")), std::optional<std::uint32_t>{1});
 
     // Enabled again: the ladder takes over at the next scan.
-    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Enable, y0)).errorCode, std::uint8_t{0});
+    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Enable, y0)).errorCode,
+             std::uint8_t{0});
     QCOMPARE(plc.isDisabled(y0), std::optional<bool>{false});
     plc.scan(1700);
     QCOMPARE(plc.value(y0), std::optional<std::uint32_t>{0});
@@ -342,7 +389,8 @@ void TestSimulatedPlc::readEnableFlags()
     QCOMPARE(r.errorCode, std::uint8_t{0});
     QCOMPARE(r.values, (std::vector<std::uint32_t>{1, 0, 1, 0, 0, 0, 1}));
     // 256 points in one request (count 256 is sent as 0 on the wire).
-    QCOMPARE(plc.execute(Request::readEnableFlags(S, addr("M0"), 256)).values.size(), std::size_t{256});
+    QCOMPARE(plc.execute(Request::readEnableFlags(S, addr("M0"), 256)).values.size(),
+             std::size_t{256});
 }
 
 void TestSimulatedPlc::demoLadder()
@@ -355,7 +403,8 @@ void TestSimulatedPlc::demoLadder()
     QCOMPARE(plc.value(addr("R0")), std::optional<std::uint32_t>{3});
     QCOMPARE(plc.value(addr("R1")), std::optional<std::uint32_t>{1000});
     plc.scan(7500);
-    QCOMPARE(plc.value(addr("R1")), std::optional<std::uint32_t>{static_cast<std::uint16_t>(-1000)});
+    QCOMPARE(plc.value(addr("R1")),
+             std::optional<std::uint32_t>{static_cast<std::uint16_t>(-1000)});
     plc.scan(12345);
     QCOMPARE(plc.value(addr("DR10")), std::optional<std::uint32_t>{1234});
     QCOMPARE(plc.value(addr("Y0")), std::optional<std::uint32_t>{1});
@@ -407,8 +456,10 @@ void TestSimulatedPlc::loopback()
 void TestSimulatedPlc::mixedReadWrite()
 {
     SimulatedPlc plc(ModelProfile::mSeries());
-    const std::vector<Address> list = {addr("Y9"), addr("R70"), addr("DWM16"), addr("F100"), addr("DF2")};
-    QCOMPARE(plc.execute(Request::mixedWrite(S, list, {1, 0xBEEF, 0x00010002, 7, 0xCAFEF00D}), Protocol::Binary)
+    const std::vector<Address> list
+        = {addr("Y9"), addr("R70"), addr("DWM16"), addr("F100"), addr("DF2")};
+    QCOMPARE(plc.execute(Request::mixedWrite(S, list, {1, 0xBEEF, 0x00010002, 7, 0xCAFEF00D}),
+                         Protocol::Binary)
                  .errorCode,
              std::uint8_t{0});
     const Response r = plc.execute(Request::mixedRead(S, list), Protocol::Binary);
@@ -417,10 +468,12 @@ void TestSimulatedPlc::mixedReadWrite()
     QCOMPARE(plc.value(addr("M32")), std::optional<std::uint32_t>{1});
     QCOMPARE(plc.value(addr("F3")), std::optional<std::uint32_t>{0xCAFE});
     // F is binary only: the same request in FACON names an element FACON cannot address.
-    QCOMPARE(plc.execute(Request::mixedRead(S, list), Protocol::Facon).errorCode, std::uint8_t{0xA});
+    QCOMPARE(plc.execute(Request::mixedRead(S, list), Protocol::Facon).errorCode,
+             std::uint8_t{0xA});
     // 64 words: the largest mixed read.
-    QCOMPARE(plc.execute(Request::mixedRead(S, std::vector<Address>(32, addr("DR0")))).values.size(),
-             std::size_t{32});
+    QCOMPARE(
+        plc.execute(Request::mixedRead(S, std::vector<Address>(32, addr("DR0")))).values.size(),
+        std::size_t{32});
 }
 
 QTEST_APPLESS_MAIN(TestSimulatedPlc)

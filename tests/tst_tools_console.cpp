@@ -1,5 +1,6 @@
-// RawConsole against the simulator: typed frames (ASCII and hex, with and without automatic framing)
-// get their decoded answers in the log; corrupted answers are error lines; filters, cap, save.
+// RawConsole against the simulator: typed frames (ASCII and hex, with and without automatic
+// framing) get their decoded answers in the log; corrupted answers are error lines; filters, cap,
+// save.
 #include "frametext.h"
 #include "rawconsole.h"
 #include "rawsendbar.h"
@@ -66,7 +67,8 @@ void TestToolsConsole::cleanup()
     m_rig.plc.reset();
 }
 
-int TestToolsConsole::findRow(TrafficEntry::Direction direction, const QString &meaningPart, int after) const
+int TestToolsConsole::findRow(TrafficEntry::Direction direction, const QString &meaningPart,
+                              int after) const
 {
     TrafficLogModel *model = m_console->model();
     for (int r = after; r < model->rowCount(); ++r) {
@@ -79,14 +81,18 @@ int TestToolsConsole::findRow(TrafficEntry::Direction direction, const QString &
 
 void TestToolsConsole::frameText()
 {
-    const QByteArray frame("\x02" "0140C7\x03", 8);
+    const QByteArray frame("\x02"
+                           "0140C7\x03",
+                           8);
     QCOMPARE(FrameText::toAscii(frame), QStringLiteral("<STX>0140C7<ETX>"));
     QCOMPARE(FrameText::toHex(frame), QStringLiteral("02 30 31 34 30 43 37 03"));
     QCOMPARE(FrameText::toAscii(QByteArray("\x0d\xff", 2)), QStringLiteral("<CR><FF>"));
     QCOMPARE(*FrameText::parseAscii(QStringLiteral("<STX>0140C7<ETX>")), frame);
-    QCOMPARE(*FrameText::parseAscii(QStringLiteral("<stx>01<0d>")), QByteArray("\x02" "01\x0d"));
+    QCOMPARE(*FrameText::parseAscii(QStringLiteral("<stx>01<0d>")), QByteArray("\x02"
+                                                                               "01\x0d"));
     QCOMPARE(*FrameText::parseAscii(QStringLiteral("a<b")), QByteArray("a<b"));
-    QCOMPARE(*FrameText::parseHex(QStringLiteral("01 46 03 52 00 0C")), QByteArray::fromHex("01460352000C"));
+    QCOMPARE(*FrameText::parseHex(QStringLiteral("01 46 03 52 00 0C")),
+             QByteArray::fromHex("01460352000C"));
     QCOMPARE(*FrameText::parseHex(QStringLiteral("0x01,0x46")), QByteArray::fromHex("0146"));
     QCOMPARE(*FrameText::parseHex(QStringLiteral("014603")), QByteArray::fromHex("014603"));
 
@@ -99,7 +105,9 @@ void TestToolsConsole::frameText()
     QCOMPARE(binary->station, quint8(1));
     QCOMPARE(binary->command, quint8(0x40));
     QVERIFY(!FrameText::header(QByteArray("hello")));
-    QVERIFY(!FrameText::header(QByteArray("\x02" "0", 2)));
+    QVERIFY(!FrameText::header(QByteArray("\x02"
+                                          "0",
+                                          2)));
     const auto body = FrameText::bodyHeader(QByteArray("014603R00012"), true);
     QVERIFY(body);
     QCOMPARE(body->command, quint8(0x46));
@@ -110,11 +118,15 @@ void TestToolsConsole::parseErrors_data()
     QTest::addColumn<bool>("hex");
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("messagePart");
-    QTest::newRow("odd") << true << "01 4" << "Odd number";
-    QTest::newRow("not hex") << true << "01 G6" << "not a hex digit";
-    QTest::newRow("empty hex") << true << "  " << "Nothing to send";
+    QTest::newRow("odd") << true << "01 4"
+                         << "Odd number";
+    QTest::newRow("not hex") << true << "01 G6"
+                             << "not a hex digit";
+    QTest::newRow("empty hex") << true << "  "
+                               << "Nothing to send";
     QTest::newRow("non-ascii") << false << QStringLiteral("01\u00e940") << "printable ASCII";
-    QTest::newRow("empty ascii") << false << "" << "Nothing to send";
+    QTest::newRow("empty ascii") << false << ""
+                                 << "Nothing to send";
 }
 
 void TestToolsConsole::parseErrors()
@@ -124,7 +136,8 @@ void TestToolsConsole::parseErrors()
     QFETCH(QString, messagePart);
     const Result<QByteArray> r = hex ? FrameText::parseHex(text) : FrameText::parseAscii(text);
     QVERIFY(!r);
-    QVERIFY2(QString::fromStdString(r.error().message).contains(messagePart), r.error().message.c_str());
+    QVERIFY2(QString::fromStdString(r.error().message).contains(messagePart),
+             r.error().message.c_str());
 }
 
 void TestToolsConsole::modelCapsRows()
@@ -185,18 +198,27 @@ void TestToolsConsole::typedFaconFrameDecoded()
     bar->send();
     QVERIFY(m_rig.questions.isEmpty()); // a read needs no confirmation
     QTRY_COMPARE_WITH_TIMEOUT(bar->answersReceived(), 1, 10000);
-    QVERIFY2(bar->resultText().contains(QStringLiteral("Sent    <STX>014603R00012")), qPrintable(bar->resultText()));
+    QVERIFY2(bar->resultText().contains(QStringLiteral("Sent    <STX>014603R00012")),
+             qPrintable(bar->resultText()));
     QVERIFY2(bar->resultText().contains(QStringLiteral("1234")), qPrintable(bar->resultText()));
-    QVERIFY2(bar->resultText().contains(QStringLiteral("answer: OK")), qPrintable(bar->resultText()));
+    QVERIFY2(bar->resultText().contains(QStringLiteral("answer: OK")),
+             qPrintable(bar->resultText()));
     // The console shows the frame out and the decoded answer in.
-    QTRY_VERIFY_WITH_TIMEOUT(findRow(TrafficEntry::Direction::In, QStringLiteral("46")) >= 0, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(findRow(TrafficEntry::Direction::In, QStringLiteral("46")) >= 0,
+                             10000);
     const int out = findRow(TrafficEntry::Direction::Out, QStringLiteral("46"));
     QVERIFY(out >= 0);
     const int in = findRow(TrafficEntry::Direction::In, QStringLiteral("46"), out);
     QVERIFY(in > out);
     TrafficLogModel *model = m_console->model();
-    QVERIFY(model->index(out, TrafficLogModel::AsciiColumn).data().toString().startsWith(QStringLiteral("<STX>014603R00012")));
-    QVERIFY(model->index(in, TrafficLogModel::AsciiColumn).data().toString().contains(QStringLiteral("1234")));
+    QVERIFY(model->index(out, TrafficLogModel::AsciiColumn)
+                .data()
+                .toString()
+                .startsWith(QStringLiteral("<STX>014603R00012")));
+    QVERIFY(model->index(in, TrafficLogModel::AsciiColumn)
+                .data()
+                .toString()
+                .contains(QStringLiteral("1234")));
     QVERIFY(model->index(in, TrafficLogModel::ErrorColumn).data().toString().isEmpty());
     QVERIFY(!model->index(in, 0).data(TrafficLogModel::IsErrorRole).toBool());
     QCOMPARE(model->index(in, TrafficLogModel::StationColumn).data().toInt(), 1);
@@ -213,9 +235,14 @@ void TestToolsConsole::typedBinaryFrameDecoded()
     bar->send();
     QTRY_COMPARE_WITH_TIMEOUT(bar->answersReceived(), 1, 10000);
     QVERIFY2(bar->resultText().contains(QStringLiteral("BE EF")), qPrintable(bar->resultText()));
-    QTRY_VERIFY_WITH_TIMEOUT(findRow(TrafficEntry::Direction::In, QStringLiteral("46")) >= 0, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(findRow(TrafficEntry::Direction::In, QStringLiteral("46")) >= 0,
+                             10000);
     const int in = findRow(TrafficEntry::Direction::In, QStringLiteral("46"));
-    QVERIFY(m_console->model()->index(in, TrafficLogModel::HexColumn).data().toString().startsWith(QStringLiteral("52 10")));
+    QVERIFY(m_console->model()
+                ->index(in, TrafficLogModel::HexColumn)
+                .data()
+                .toString()
+                .startsWith(QStringLiteral("52 10")));
 }
 
 void TestToolsConsole::wholeFrameWithoutFraming()
@@ -227,7 +254,8 @@ void TestToolsConsole::wholeFrameWithoutFraming()
     bar->setText(QStringLiteral("<STX>0140C7<ETX>"));
     bar->send();
     QTRY_COMPARE_WITH_TIMEOUT(bar->answersReceived(), 1, 10000);
-    QVERIFY(bar->lastAnswer().startsWith("\x02" "0140"));
+    QVERIFY(bar->lastAnswer().startsWith("\x02"
+                                         "0140"));
 }
 
 void TestToolsConsole::corruptedAnswerIsErrorLine()
@@ -245,23 +273,27 @@ void TestToolsConsole::corruptedAnswerIsErrorLine()
     QTRY_VERIFY_WITH_TIMEOUT(!bar->isBusy(), 10000);
     TrafficLogModel *model = m_console->model();
     int errorRow = -1;
-    QTRY_VERIFY_WITH_TIMEOUT(([&] {
-                                 for (int r = 0; r < model->rowCount(); ++r) {
-                                     if (model->entryAt(r).direction != TrafficEntry::Direction::Out
-                                         && model->index(r, 0).data(TrafficLogModel::IsErrorRole).toBool()) {
-                                         errorRow = r;
-                                         return true;
-                                     }
-                                 }
-                                 return false;
-                             }()),
-                             10000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        ([&] {
+            for (int r = 0; r < model->rowCount(); ++r) {
+                if (model->entryAt(r).direction != TrafficEntry::Direction::Out
+                    && model->index(r, 0).data(TrafficLogModel::IsErrorRole).toBool()) {
+                    errorRow = r;
+                    return true;
+                }
+            }
+            return false;
+        }()),
+        10000);
     QVERIFY(!model->index(errorRow, TrafficLogModel::ErrorColumn).data().toString().isEmpty());
     // Highlighted with the palette-derived error colours.
     const QPalette palette = m_console->palette();
-    QCOMPARE(model->index(errorRow, TrafficLogModel::MeaningColumn).data(Qt::ForegroundRole).value<QColor>(),
+    QCOMPARE(model->index(errorRow, TrafficLogModel::MeaningColumn)
+                 .data(Qt::ForegroundRole)
+                 .value<QColor>(),
              ToolPalette::errorText(palette));
-    QCOMPARE(model->index(errorRow, 0).data(Qt::BackgroundRole).value<QColor>(), ToolPalette::errorBackground(palette));
+    QCOMPARE(model->index(errorRow, 0).data(Qt::BackgroundRole).value<QColor>(),
+             ToolPalette::errorBackground(palette));
     // "Errors only" keeps it and hides the sent frame.
     auto *errorsOnly = m_console->findChild<QCheckBox *>(QStringLiteral("errorsOnly"));
     QVERIFY(errorsOnly);
@@ -281,7 +313,8 @@ void TestToolsConsole::writeFrameAsksFirst()
     m_rig.answer = false;
     bar->send();
     QCOMPARE(m_rig.questions.size(), 1);
-    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("station 1")), qPrintable(m_rig.questions.last()));
+    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("station 1")),
+             qPrintable(m_rig.questions.last()));
     QVERIFY(m_rig.questions.last().contains(Rig::connectionName()));
     QVERIFY(bar->resultText().contains(QStringLiteral("Cancelled")));
     QTest::qWait(200);
@@ -292,7 +325,8 @@ void TestToolsConsole::writeFrameAsksFirst()
     QCOMPARE(m_rig.questions.size(), 2);
     QTRY_VERIFY_WITH_TIMEOUT(!m_rig.plc->isRunning(), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(!bar->isBusy(), 10000);
-    QVERIFY2(bar->resultText().contains(QStringLiteral("Answer  <STX>01410")), qPrintable(bar->resultText()));
+    QVERIFY2(bar->resultText().contains(QStringLiteral("Answer  <STX>01410")),
+             qPrintable(bar->resultText()));
 
     // Operator mode: the session refuses raw frames; shown as an error.
     m_rig.session->setReadOnly(true);
@@ -339,7 +373,8 @@ void TestToolsConsole::filtersPauseClearSave()
     QCOMPARE(m_console->saveToFile(path), QString());
     QFile file(path);
     QVERIFY(file.open(QIODevice::ReadOnly));
-    const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    const QStringList lines
+        = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), before + 2 + 1);
     QVERIFY(lines.first().startsWith(QStringLiteral("Time\tDirection")));
     QVERIFY(lines.at(1).contains(QStringLiteral("<STX>01460")));

@@ -70,7 +70,8 @@ void TestToolsControl::runStopRun()
 
     clickAndConfirm("stopButton");
     QCOMPARE(m_rig.questions.size(), 1);
-    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("station 1")), qPrintable(m_rig.questions.last()));
+    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("station 1")),
+             qPrintable(m_rig.questions.last()));
     QVERIFY(m_rig.questions.last().contains(Rig::connectionName()));
     QVERIFY(m_rig.questions.last().contains(QStringLiteral("STOP")));
     QTRY_VERIFY_WITH_TIMEOUT(!m_rig.plc->isRunning(), 10000);
@@ -86,7 +87,8 @@ void TestToolsControl::runStopRun()
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.plc->isRunning(), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(m_panel->status() && m_panel->status()->running, 10000);
     QTRY_COMPARE_WITH_TIMEOUT(runLamp->state(), StatusIndicator::State::On, 10000);
-    QVERIFY2(m_panel->outcomeText().contains(QStringLiteral("accepted")), qPrintable(m_panel->outcomeText()));
+    QVERIFY2(m_panel->outcomeText().contains(QStringLiteral("accepted")),
+             qPrintable(m_panel->outcomeText()));
 }
 
 void TestToolsControl::refusalShownInWords()
@@ -94,7 +96,8 @@ void TestToolsControl::refusalShownInWords()
     m_rig.plc->setRunning(false);
     m_rig.plc->setRunRefusalCode(5);
     clickAndConfirm("runButton");
-    QTRY_VERIFY_WITH_TIMEOUT(m_panel->outcomeText().contains(QStringLiteral("PLC error 5: cannot RUN: ladder checksum error")),
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->outcomeText().contains(
+                                 QStringLiteral("PLC error 5: cannot RUN: ladder checksum error")),
                              10000);
     auto *outcome = m_panel->findChild<QLabel *>(QStringLiteral("outcomeLabel"));
     QVERIFY(outcome->property("error").toBool());
@@ -102,7 +105,8 @@ void TestToolsControl::refusalShownInWords()
 
     m_rig.plc->setRunRefusalCode(6);
     clickAndConfirm("runButton");
-    QTRY_VERIFY_WITH_TIMEOUT(m_panel->outcomeText().contains(QStringLiteral("PLC ID differs")), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->outcomeText().contains(QStringLiteral("PLC ID differs")),
+                             10000);
     QVERIFY(!m_rig.plc->isRunning());
 }
 
@@ -153,7 +157,8 @@ void TestToolsControl::detailStatusDecoded()
     for (QLabel *label : m_panel->findChildren<QLabel *>())
         texts << label->text();
     const QString shown = texts.join(QLatin1Char('|'));
-    QVERIFY2(shown.contains(QStringLiteral("%1 words").arg(profile.programWords)), qPrintable(shown));
+    QVERIFY2(shown.contains(QStringLiteral("%1 words").arg(profile.programWords)),
+             qPrintable(shown));
     QVERIFY2(shown.contains(QStringLiteral("V3.1")), qPrintable(shown));
     QVERIFY2(shown.contains(QStringLiteral("main unit MC")), qPrintable(shown));
     auto *raw = m_panel->findChild<QLabel *>(QStringLiteral("rawDetail"));
@@ -192,7 +197,8 @@ void TestToolsControl::operatorModeDisablesRunStop()
     QVERIFY(run->toolTip().contains(QStringLiteral("Read-only")));
     // Called anyway (a shortcut, a script): the session refuses and the panel says so.
     m_panel->requestRun();
-    QTRY_VERIFY_WITH_TIMEOUT(m_panel->outcomeText().contains(QStringLiteral("Read-only mode")), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->outcomeText().contains(QStringLiteral("Read-only mode")),
+                             10000);
     m_rig.session->setReadOnly(false);
     QTRY_VERIFY_WITH_TIMEOUT(run->isEnabled(), 10000);
 }

@@ -21,7 +21,8 @@ struct Rig
     bool answer = true;    // what the automatic confirmer answers
 
     // Starts the simulator (RUN) and opens a session in `protocol`; false if it did not connect.
-    bool start(Fatek::LinkSettings::ProtocolChoice protocol = Fatek::LinkSettings::ProtocolChoice::Facon,
+    bool start(Fatek::LinkSettings::ProtocolChoice protocol
+               = Fatek::LinkSettings::ProtocolChoice::Facon,
                int timeoutMs = 1000, int retries = 1)
     {
         Fatek::registerSessionMetaTypes();
@@ -33,7 +34,8 @@ struct Rig
             qWarning() << error;
             return false;
         }
-        auto settings = Fatek::LinkSettings::tcp(QStringLiteral("127.0.0.1"), server->tcpPort(), protocol);
+        auto settings
+            = Fatek::LinkSettings::tcp(QStringLiteral("127.0.0.1"), server->tcpPort(), protocol);
         settings.timeoutMs = timeoutMs;
         settings.retries = retries;
         session = std::make_unique<Fatek::Session>(settings);

@@ -64,7 +64,8 @@ void TestToolsForcing::select(int first, int last)
     QTableView *view = m_panel->view();
     const QItemSelection selection(view->model()->index(first, 0),
                                    view->model()->index(last, DiscreteTableModel::ColumnCount - 1));
-    view->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    view->selectionModel()->select(selection,
+                                   QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
 }
 
 void TestToolsForcing::waitForRead()
@@ -77,17 +78,28 @@ void TestToolsForcing::rangeParsing_data()
 {
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("expected"); // ranges joined by ";" or "error"
-    QTest::newRow("one range") << "Y0-255" << "Y0-255";
-    QTest::newRow("dots, lower case") << "m100..199" << "M100-199";
-    QTest::newRow("single point") << "X7" << "X7";
-    QTest::newRow("repeated symbol") << "X16-X31" << "X16-31";
-    QTest::newRow("list with spaces") << "X0-7, Y 0 - 15; S3" << "X0-7;Y0-15;S3";
-    QTest::newRow("register type") << "R0-10" << "error";
-    QTest::newRow("reversed") << "Y10-2" << "error";
-    QTest::newRow("mixed types") << "X0-Y5" << "error";
-    QTest::newRow("beyond range") << "M9990-10010" << "error";
-    QTest::newRow("garbage") << "hello" << "error";
-    QTest::newRow("empty") << "  " << "error";
+    QTest::newRow("one range") << "Y0-255"
+                               << "Y0-255";
+    QTest::newRow("dots, lower case") << "m100..199"
+                                      << "M100-199";
+    QTest::newRow("single point") << "X7"
+                                  << "X7";
+    QTest::newRow("repeated symbol") << "X16-X31"
+                                     << "X16-31";
+    QTest::newRow("list with spaces") << "X0-7, Y 0 - 15; S3"
+                                      << "X0-7;Y0-15;S3";
+    QTest::newRow("register type") << "R0-10"
+                                   << "error";
+    QTest::newRow("reversed") << "Y10-2"
+                              << "error";
+    QTest::newRow("mixed types") << "X0-Y5"
+                                 << "error";
+    QTest::newRow("beyond range") << "M9990-10010"
+                                  << "error";
+    QTest::newRow("garbage") << "hello"
+                             << "error";
+    QTest::newRow("empty") << "  "
+                           << "error";
 }
 
 void TestToolsForcing::rangeParsing()
@@ -116,13 +128,18 @@ void TestToolsForcing::tableShowsStateAndForcing()
     waitForRead();
     DiscreteTableModel *model = m_panel->model();
     QCOMPARE(model->rowCount(), 8);
-    QCOMPARE(model->index(3, DiscreteTableModel::PointColumn).data().toString(), QStringLiteral("M3"));
+    QCOMPARE(model->index(3, DiscreteTableModel::PointColumn).data().toString(),
+             QStringLiteral("M3"));
     QCOMPARE(model->stateAt(3), std::optional<bool>(true));
     QCOMPARE(model->stateAt(4), std::optional<bool>(false));
     QCOMPARE(model->disabledAt(5), std::optional<bool>(true));
     QCOMPARE(model->disabledAt(3), std::optional<bool>(false));
-    QCOMPARE(model->index(3, DiscreteTableModel::StateColumn).data().toString(), QStringLiteral("ON"));
-    QVERIFY(model->index(5, DiscreteTableModel::ForcedColumn).data().toString().contains(QStringLiteral("disabled")));
+    QCOMPARE(model->index(3, DiscreteTableModel::StateColumn).data().toString(),
+             QStringLiteral("ON"));
+    QVERIFY(model->index(5, DiscreteTableModel::ForcedColumn)
+                .data()
+                .toString()
+                .contains(QStringLiteral("disabled")));
     QVERIFY(model->index(5, 0).data(Qt::BackgroundRole).isValid());
     QVERIFY(!model->index(4, 0).data(Qt::BackgroundRole).isValid());
 }
@@ -132,18 +149,21 @@ void TestToolsForcing::disableY0StopsTheLadder()
     m_rig.server->setDemoLadder(true);
     // Y0 blinks at 1 Hz while nothing forces it.
     bool seen[2] = {false, false};
-    QTRY_VERIFY_WITH_TIMEOUT((seen[m_rig.plc->value(addr("Y0")).value_or(0) & 1] = true, seen[0] && seen[1]), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (seen[m_rig.plc->value(addr("Y0")).value_or(0) & 1] = true, seen[0] && seen[1]), 10000);
 
     m_panel->showRange(ElementType::Y, 0, 8);
     waitForRead();
     select(0, 0);
     m_panel->applyToSelection(DiscreteOp::Disable);
     QCOMPARE(m_rig.questions.size(), 1);
-    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("Disable Y0")), qPrintable(m_rig.questions.last()));
+    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("Disable Y0")),
+             qPrintable(m_rig.questions.last()));
     QVERIFY(m_rig.questions.last().contains(QStringLiteral("station 1")));
     QVERIFY(m_rig.questions.last().contains(Rig::connectionName()));
     QTRY_COMPARE_WITH_TIMEOUT(m_rig.plc->isDisabled(addr("Y0")), std::optional<bool>(true), 10000);
-    QTRY_VERIFY_WITH_TIMEOUT(m_panel->messageText().contains(QStringLiteral("Disabled 1 point")), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->messageText().contains(QStringLiteral("Disabled 1 point")),
+                             10000);
     QTRY_COMPARE_WITH_TIMEOUT(m_panel->model()->disabledAt(0), std::optional<bool>(true), 10000);
 
     // The ladder keeps running (R0 counts scans) but Y0 no longer changes: watch it for 2.5 blinks.
@@ -161,18 +181,22 @@ void TestToolsForcing::disableY0StopsTheLadder()
     forced->scan();
     QTRY_VERIFY_WITH_TIMEOUT(forced->scanCount() == 1, 10000);
     QCOMPARE(forced->forcedPoints(), QList<Address>{addr("Y0")});
-    QVERIFY2(forced->messageText().contains(QStringLiteral("1 forced point")), qPrintable(forced->messageText()));
+    QVERIFY2(forced->messageText().contains(QStringLiteral("1 forced point")),
+             qPrintable(forced->messageText()));
 
     // Enable all (confirmed) clears it, and the ladder drives Y0 again.
     forced->enableAll();
     QCOMPARE(m_rig.questions.size(), 2);
-    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("Enable Y0")), qPrintable(m_rig.questions.last()));
+    QVERIFY2(m_rig.questions.last().contains(QStringLiteral("Enable Y0")),
+             qPrintable(m_rig.questions.last()));
     QVERIFY(m_rig.questions.last().contains(Rig::connectionName()));
     QTRY_COMPARE_WITH_TIMEOUT(m_rig.plc->isDisabled(addr("Y0")), std::optional<bool>(false), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(forced->scanCount() == 2, 10000);
     QVERIFY(forced->forcedPoints().isEmpty());
-    QVERIFY2(forced->messageText().contains(QStringLiteral("Enabled 1 point")), qPrintable(forced->messageText()));
-    QTRY_COMPARE_WITH_TIMEOUT(m_rig.plc->value(addr("Y0")).value_or(0) != frozen.value_or(0), true, 10000);
+    QVERIFY2(forced->messageText().contains(QStringLiteral("Enabled 1 point")),
+             qPrintable(forced->messageText()));
+    QTRY_COMPARE_WITH_TIMEOUT(m_rig.plc->value(addr("Y0")).value_or(0) != frozen.value_or(0), true,
+                              10000);
     QTRY_COMPARE_WITH_TIMEOUT(m_panel->model()->disabledAt(0), std::optional<bool>(false), 10000);
 }
 
@@ -184,7 +208,8 @@ void TestToolsForcing::setResetMultiSelect()
     select(0, 2); // M10..M12
     m_panel->applyToSelection(DiscreteOp::Set);
     QVERIFY(m_rig.questions.last().contains(QStringLiteral("M10, M11, M12")));
-    QTRY_VERIFY_WITH_TIMEOUT(m_panel->messageText().contains(QStringLiteral("Set ON 3 points")), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->messageText().contains(QStringLiteral("Set ON 3 points")),
+                             10000);
     for (const char *a : {"M10", "M11", "M12"})
         QCOMPARE(m_rig.plc->value(addr(a)), std::optional<std::uint32_t>(1));
     QCOMPARE(m_rig.plc->value(addr("M13")), std::optional<std::uint32_t>(0));
@@ -192,7 +217,8 @@ void TestToolsForcing::setResetMultiSelect()
 
     select(1, 1);
     m_panel->applyToSelection(DiscreteOp::Reset);
-    QTRY_COMPARE_WITH_TIMEOUT(m_rig.plc->value(addr("M11")), std::optional<std::uint32_t>(0), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_rig.plc->value(addr("M11")), std::optional<std::uint32_t>(0),
+                              10000);
     QCOMPARE(m_rig.plc->value(addr("M10")), std::optional<std::uint32_t>(1));
 }
 
@@ -226,15 +252,18 @@ void TestToolsForcing::refusedPointShownInWords()
     const quint32 beyond = m_rig.plc->profile().size(ElementType::Y);
     m_panel->showRange(ElementType::Y, beyond - 2, 4);
     waitForRead();
-    QVERIFY2(m_panel->messageText().contains(QStringLiteral("PLC error A")), qPrintable(m_panel->messageText()));
+    QVERIFY2(m_panel->messageText().contains(QStringLiteral("PLC error A")),
+             qPrintable(m_panel->messageText()));
     ForcedPointsView *forced = m_panel->forcedPointsView();
     forced->setRanges(QStringLiteral("Y%1-%2").arg(beyond).arg(beyond + 3));
     forced->scan();
     QTRY_VERIFY_WITH_TIMEOUT(forced->scanCount() == 1, 10000);
-    QVERIFY2(forced->messageText().contains(QStringLiteral("Scan incomplete")), qPrintable(forced->messageText()));
+    QVERIFY2(forced->messageText().contains(QStringLiteral("Scan incomplete")),
+             qPrintable(forced->messageText()));
     forced->setRanges(QStringLiteral("Y0-R5"));
     forced->scan();
-    QVERIFY2(forced->messageText().contains(QStringLiteral("one type")), qPrintable(forced->messageText()));
+    QVERIFY2(forced->messageText().contains(QStringLiteral("one type")),
+             qPrintable(forced->messageText()));
 }
 
 void TestToolsForcing::noConnection()
@@ -256,8 +285,10 @@ void TestToolsForcing::operatorModeDisablesForcing()
     QVERIFY(disable->isEnabled());
     m_rig.session->setReadOnly(true);
     QTRY_VERIFY_WITH_TIMEOUT(!disable->isEnabled(), 10000);
-    m_panel->applyToSelection(DiscreteOp::Disable); // called anyway: refused by the session, in words
-    QTRY_VERIFY_WITH_TIMEOUT(m_panel->messageText().contains(QStringLiteral("Read-only mode")), 10000);
+    m_panel->applyToSelection(
+        DiscreteOp::Disable); // called anyway: refused by the session, in words
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->messageText().contains(QStringLiteral("Read-only mode")),
+                             10000);
     QCOMPARE(m_rig.plc->isDisabled(addr("Y0")), std::optional<bool>(false));
 }
 

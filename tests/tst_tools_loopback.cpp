@@ -30,8 +30,8 @@ private Q_SLOTS:
 private:
     Rig m_rig;
     std::unique_ptr<LoopbackDialog> m_dialog;
-    void open(LinkSettings::ProtocolChoice protocol = LinkSettings::ProtocolChoice::Facon, int timeoutMs = 1000,
-              int retries = 1);
+    void open(LinkSettings::ProtocolChoice protocol = LinkSettings::ProtocolChoice::Facon,
+              int timeoutMs = 1000, int retries = 1);
 };
 
 void TestToolsLoopback::open(LinkSettings::ProtocolChoice protocol, int timeoutMs, int retries)
@@ -70,7 +70,8 @@ void TestToolsLoopback::statsArithmetic()
     QCOMPARE(s.maxMs(), 1000.0);
     QCOMPARE(s.meanMs(), (5050.0 + 1000.0) / 101.0);
     QCOMPARE(s.p99Ms(), 100.0); // rank ceil(0.99 * 101) = 100
-    QVERIFY(s.summary().startsWith(QStringLiteral("103 runs: 100 OK, 1 mismatch, 1 timeout, 1 other errors")));
+    QVERIFY(s.summary().startsWith(
+        QStringLiteral("103 runs: 100 OK, 1 mismatch, 1 timeout, 1 other errors")));
     s.reset();
     QCOMPARE(s.runs(), 0);
 }
@@ -89,7 +90,8 @@ void TestToolsLoopback::hundredRunsSucceed()
     QCOMPARE(m_dialog->stats().successes(), 100);
     QVERIFY(m_dialog->stats().hasRoundTrips());
     QVERIFY(m_dialog->stats().minMs() <= m_dialog->stats().p99Ms());
-    QVERIFY2(m_dialog->totalsText().startsWith(QStringLiteral("100 runs: 100 OK")), qPrintable(m_dialog->totalsText()));
+    QVERIFY2(m_dialog->totalsText().startsWith(QStringLiteral("100 runs: 100 OK")),
+             qPrintable(m_dialog->totalsText()));
     QCOMPARE(m_dialog->messageText(), QStringLiteral("Done."));
     auto *log = m_dialog->findChild<QPlainTextEdit *>(QStringLiteral("runLog"));
     QCOMPARE(log->document()->blockCount(), 100);
@@ -158,17 +160,20 @@ void TestToolsLoopback::badDataRefused()
     m_dialog->setData(QStringLiteral("01 2"));
     m_dialog->start();
     QVERIFY(!m_dialog->isRunning());
-    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("Odd number")), qPrintable(m_dialog->messageText()));
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("Odd number")),
+             qPrintable(m_dialog->messageText()));
     // FACON carries printable characters only.
     m_dialog->setData(QStringLiteral("02 03"));
     m_dialog->start();
     QVERIFY(!m_dialog->isRunning());
-    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("printable")), qPrintable(m_dialog->messageText()));
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("printable")),
+             qPrintable(m_dialog->messageText()));
     m_dialog->setDataMode(LoopbackDialog::DataMode::Text);
     m_dialog->setData(QString(300, QLatin1Char('A')));
     m_dialog->start();
     QVERIFY(!m_dialog->isRunning());
-    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("256")), qPrintable(m_dialog->messageText()));
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("256")),
+             qPrintable(m_dialog->messageText()));
 }
 
 void TestToolsLoopback::stopAndNoConnection()

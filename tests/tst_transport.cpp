@@ -37,8 +37,10 @@ private Q_SLOTS:
 
 void TestTransport::linkSettingsText()
 {
-    QCOMPARE(LinkSettings::tcp(QStringLiteral("127.0.0.1")).toString(), QStringLiteral("TCP 127.0.0.1:500, FACON"));
-    QCOMPARE(LinkSettings::udp(QStringLiteral("plc1"), 600, LinkSettings::ProtocolChoice::Binary).toString(),
+    QCOMPARE(LinkSettings::tcp(QStringLiteral("127.0.0.1")).toString(),
+             QStringLiteral("TCP 127.0.0.1:500, FACON"));
+    QCOMPARE(LinkSettings::udp(QStringLiteral("plc1"), 600, LinkSettings::ProtocolChoice::Binary)
+                 .toString(),
              QStringLiteral("UDP plc1:600, binary"));
     LinkSettings serial = LinkSettings::serial(QStringLiteral("/dev/ttyUSB0"), 19200,
                                                LinkSettings::ProtocolChoice::Auto);
@@ -55,11 +57,16 @@ void TestTransport::linkSettingsValidation_data()
     QTest::addColumn<QString>("fragment"); // empty: valid
 
     QTest::newRow("tcp ok") << LinkSettings::tcp(QStringLiteral("10.0.0.5")) << QString();
-    QTest::newRow("no host") << LinkSettings::tcp(QStringLiteral(" ")) << QStringLiteral("IP address");
-    QTest::newRow("port 0") << LinkSettings::udp(QStringLiteral("h"), 0) << QStringLiteral("Port 0");
-    QTest::newRow("no serial port") << LinkSettings::serial(QString()) << QStringLiteral("serial port");
-    QTest::newRow("baud low") << LinkSettings::serial(QStringLiteral("COM1"), 300) << QStringLiteral("Baud rate 300");
-    QTest::newRow("baud high") << LinkSettings::serial(QStringLiteral("COM1"), 1000000) << QStringLiteral("Baud rate");
+    QTest::newRow("no host") << LinkSettings::tcp(QStringLiteral(" "))
+                             << QStringLiteral("IP address");
+    QTest::newRow("port 0") << LinkSettings::udp(QStringLiteral("h"), 0)
+                            << QStringLiteral("Port 0");
+    QTest::newRow("no serial port")
+        << LinkSettings::serial(QString()) << QStringLiteral("serial port");
+    QTest::newRow("baud low") << LinkSettings::serial(QStringLiteral("COM1"), 300)
+                              << QStringLiteral("Baud rate 300");
+    QTest::newRow("baud high") << LinkSettings::serial(QStringLiteral("COM1"), 1000000)
+                               << QStringLiteral("Baud rate");
     LinkSettings bits = LinkSettings::serial(QStringLiteral("COM1"));
     bits.dataBits = 6;
     QTest::newRow("data bits") << bits << QStringLiteral("Data bits");
@@ -97,8 +104,11 @@ void TestTransport::tcpEcho()
     QVERIFY(transport.isOpen());
 
     QByteArray received;
-    connect(&transport, &Transport::bytesReceived, this, [&received](const QByteArray &b) { received += b; });
-    const QByteArray query("\x02" "0140C7\x03", 8);
+    connect(&transport, &Transport::bytesReceived, this,
+            [&received](const QByteArray &b) { received += b; });
+    const QByteArray query("\x02"
+                           "0140C7\x03",
+                           8);
     QVERIFY(transport.write(query));
     QTRY_COMPARE_WITH_TIMEOUT(received, query, 5000);
     QCOMPARE(lost.count(), 0);
@@ -189,7 +199,8 @@ void TestTransport::udpIgnoresOtherSenders()
     const QNetworkDatagram query = plc.receiveDatagram();
     // A stranger writes to our port first; then the PLC answers.
     QUdpSocket stranger;
-    stranger.writeDatagram("intruder", query.senderAddress(), static_cast<quint16>(query.senderPort()));
+    stranger.writeDatagram("intruder", query.senderAddress(),
+                           static_cast<quint16>(query.senderPort()));
     plc.writeDatagram(query.makeReply("answer"));
     QTRY_COMPARE_WITH_TIMEOUT(datagrams.size(), 1, 5000);
     QTest::qWait(100); // let a wrongly accepted datagram show up
@@ -205,7 +216,8 @@ void TestTransport::serialPty()
     const QString a = dir.filePath(QStringLiteral("a"));
     const QString b = dir.filePath(QStringLiteral("b"));
     QProcess process;
-    process.start(socat, {QStringLiteral("pty,raw,echo=0,link=") + a, QStringLiteral("pty,raw,echo=0,link=") + b});
+    process.start(socat, {QStringLiteral("pty,raw,echo=0,link=") + a,
+                          QStringLiteral("pty,raw,echo=0,link=") + b});
     QVERIFY(process.waitForStarted(5000));
     QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(a) && QFile::exists(b), 5000);
 
@@ -220,7 +232,8 @@ void TestTransport::serialPty()
         transport.open();
         QVERIFY(opened.wait(5000));
         QByteArray received;
-        connect(&transport, &Transport::bytesReceived, this, [&received](const QByteArray &bytes) { received += bytes; });
+        connect(&transport, &Transport::bytesReceived, this,
+                [&received](const QByteArray &bytes) { received += bytes; });
         QVERIFY(transport.write("query"));
         QByteArray atPeer;
         QTRY_VERIFY_WITH_TIMEOUT((atPeer += peer.readAll()) == "query", 5000);

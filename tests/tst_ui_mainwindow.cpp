@@ -14,12 +14,12 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStyle>
 #include <QStyleOptionViewItem>
 #include <QTableView>
 #include <QTemporaryDir>
-#include <QSignalSpy>
 #include <QTest>
 
 #include <memory>
@@ -145,7 +145,8 @@ private Q_SLOTS:
         // The status bar and the connections panel show the link.
         auto *linkStatus = window.findChild<QLabel *>(QStringLiteral("linkStatus"));
         QVERIFY(linkStatus);
-        QTRY_VERIFY_WITH_TIMEOUT(linkStatus->text().contains(QStringLiteral("connected")), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(linkStatus->text().contains(QStringLiteral("connected")),
+                                 longWait);
         QTRY_VERIFY_WITH_TIMEOUT(c->statistics().total.requests > 0, longWait);
     }
 
@@ -164,7 +165,8 @@ private Q_SLOTS:
         WatchTableWidget *table = window.currentWatchTable();
         typeInto(table->addressEdit(), QStringLiteral("R100 R101 Y0"));
         WatchTableModel *model = table->model();
-        QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(0) && model->hasValue(1) && model->hasValue(2), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(0) && model->hasValue(1) && model->hasValue(2),
+                                 longWait);
 
         // Edit in place: the view's editor, as a technician types it.
         QTableView *view = table->view();
@@ -178,7 +180,8 @@ private Q_SLOTS:
         QTest::keyClick(editor, Qt::Key_Return);
         QTRY_COMPARE_WITH_TIMEOUT(plc.plc.value(addr("R100")).value_or(0), 42u, longWait);
         QCOMPARE(confirmations, 1);
-        QTRY_VERIFY_WITH_TIMEOUT(table->message().startsWith(QStringLiteral("Wrote R100")), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(table->message().startsWith(QStringLiteral("Wrote R100")),
+                                 longWait);
         QTRY_COMPARE_WITH_TIMEOUT(model->valueText(0), QStringLiteral("42"), longWait);
         // The traffic log records the write.
         bool logged = false;
@@ -197,9 +200,11 @@ private Q_SLOTS:
         QStyleOptionViewItem option;
         option.initFrom(view->viewport());
         option.rect = view->visualRect(y0);
-        option.features = QStyleOptionViewItem::HasCheckIndicator | QStyleOptionViewItem::HasDisplay;
+        option.features
+            = QStyleOptionViewItem::HasCheckIndicator | QStyleOptionViewItem::HasDisplay;
         option.text = y0.data().toString();
-        const QRect box = view->style()->subElementRect(QStyle::SE_ItemViewItemCheckIndicator, &option, view);
+        const QRect box
+            = view->style()->subElementRect(QStyle::SE_ItemViewItemCheckIndicator, &option, view);
         QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, box.center());
         QTRY_COMPARE_WITH_TIMEOUT(plc.plc.value(addr("Y0")).value_or(0), 1u, longWait);
         QTRY_COMPARE_WITH_TIMEOUT(y0.data(Qt::CheckStateRole).toInt(), int(Qt::Checked), longWait);
@@ -275,7 +280,8 @@ private Q_SLOTS:
         WatchTableWidget *table = window.currentWatchTable();
         typeInto(table->addressEdit(), QStringLiteral("R100 R99999"));
         QCOMPARE(table->model()->rowCount(), 0);
-        QVERIFY2(table->message().contains(QStringLiteral("\"R99999\"")), qPrintable(table->message()));
+        QVERIFY2(table->message().contains(QStringLiteral("\"R99999\"")),
+                 qPrintable(table->message()));
         // The text stays for correction.
         QCOMPARE(table->addressEdit()->text(), QStringLiteral("R100 R99999"));
         typeInto(table->addressEdit(), QStringLiteral("R10..R5"));
@@ -315,8 +321,10 @@ private Q_SLOTS:
             WatchTableWidget *table = window.currentWatchTable();
             typeInto(table->addressEdit(), QStringLiteral("R100 DR10 X0..X1"));
             WatchTableModel *model = table->model();
-            QVERIFY(model->setData(model->index(0, WatchTableModel::NameColumn), QStringLiteral("Tank level")));
-            QVERIFY(model->setData(model->index(0, WatchTableModel::FormatColumn), QStringLiteral("float")));
+            QVERIFY(model->setData(model->index(0, WatchTableModel::NameColumn),
+                                   QStringLiteral("Tank level")));
+            QVERIFY(model->setData(model->index(0, WatchTableModel::FormatColumn),
+                                   QStringLiteral("float")));
             QVERIFY(model->setFormat(0, DisplayFormat::Float32, true).ok());
             table->setIntervalMs(250);
             table->setConfirmWrites(false);
@@ -350,7 +358,8 @@ private Q_SLOTS:
         // A broken file is refused with the place of the problem; the tables stay.
         QFile bad(dir.filePath(QStringLiteral("bad.json")));
         QVERIFY(bad.open(QIODevice::WriteOnly));
-        bad.write(R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"name":"A","items":[{"address":"R1"},{"address":"Q5"}]}]})");
+        bad.write(
+            R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"name":"A","items":[{"address":"R1"},{"address":"Q5"}]}]})");
         bad.close();
         const Status refused = window.loadWatchList(bad.fileName());
         QVERIFY(!refused.ok());
@@ -376,7 +385,8 @@ private Q_SLOTS:
         WatchTableWidget *table = window.currentWatchTable();
         typeInto(table->addressEdit(), QStringLiteral("R100"));
         QTRY_VERIFY_WITH_TIMEOUT(table->model()->hasValue(0), longWait);
-        table->model()->setData(table->model()->index(0, WatchTableModel::ValueColumn), QStringLiteral("6"));
+        table->model()->setData(table->model()->index(0, WatchTableModel::ValueColumn),
+                                QStringLiteral("6"));
         QTRY_VERIFY_WITH_TIMEOUT(table->message().contains(QStringLiteral("failed")), longWait);
         QVERIFY2(table->message().contains(QStringLiteral("read-only"), Qt::CaseInsensitive)
                      || table->message().contains(QStringLiteral("operator"), Qt::CaseInsensitive),
@@ -402,7 +412,8 @@ private Q_SLOTS:
 
         SavedConnection udp;
         udp.name = QStringLiteral("Remote");
-        udp.settings = LinkSettings::udp(QStringLiteral("10.0.0.9"), 5000, LinkSettings::ProtocolChoice::Binary);
+        udp.settings = LinkSettings::udp(QStringLiteral("10.0.0.9"), 5000,
+                                         LinkSettings::ProtocolChoice::Binary);
         dialog.setConnection(udp);
         QCOMPARE(dialog.connection(), udp);
 

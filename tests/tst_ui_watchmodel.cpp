@@ -54,7 +54,8 @@ private Q_SLOTS:
 
     void pastedCsvKeepsNames()
     {
-        const auto rows = WatchInput::parsePasted(QStringLiteral("R100,Tank level\nR101,Pump speed\n"), 3);
+        const auto rows
+            = WatchInput::parsePasted(QStringLiteral("R100,Tank level\nR101,Pump speed\n"), 3);
         QVERIFY2(rows.ok(), rows.ok() ? "" : rows.error().message.c_str());
         QCOMPARE(rows->size(), 2);
         QCOMPARE(rows->at(0).name, QStringLiteral("Tank level"));
@@ -86,7 +87,8 @@ private Q_SLOTS:
         model.applyValues({good(entries.at(0).id, 0x0000), good(entries.at(1).id, 0x3FC0)});
         QVERIFY(model.hasValue(0));
         QCOMPARE(model.rawValue(0), std::uint64_t(0x3FC00000));
-        QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(), QStringLiteral("1.5"));
+        QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(),
+                 QStringLiteral("1.5"));
     }
 
     void doubleJoinsFourRegistersAndChangedValuesFlash()
@@ -96,8 +98,8 @@ private Q_SLOTS:
         const QList<WatchEntry> entries = model.pollEntries(500);
         QCOMPARE(entries.size(), 4);
         // 1.0 = 0x3FF0000000000000: the highest word in R3.
-        model.applyValues({good(entries.at(0).id, 0), good(entries.at(1).id, 0), good(entries.at(2).id, 0),
-                           good(entries.at(3).id, 0x3FF0)});
+        model.applyValues({good(entries.at(0).id, 0), good(entries.at(1).id, 0),
+                           good(entries.at(2).id, 0), good(entries.at(3).id, 0x3FF0)});
         QCOMPARE(model.valueText(0), QStringLiteral("1"));
         const QModelIndex value = model.index(0, WatchTableModel::ValueColumn);
         QVERIFY(value.data(Qt::BackgroundRole).isValid()); // a new value flashes ...
@@ -118,7 +120,8 @@ private Q_SLOTS:
         const QList<WatchEntry> entries = model.pollEntries(500);
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         QSignalSpy reset(&model, &QAbstractItemModel::modelReset);
-        model.applyValues({good(entries.at(0).id, 1), good(entries.at(1).id, 2), good(entries.at(3).id, 4)});
+        model.applyValues(
+            {good(entries.at(0).id, 1), good(entries.at(1).id, 2), good(entries.at(3).id, 4)});
         QCOMPARE(reset.count(), 0);
         QCOMPARE(changed.count(), 2); // rows 0..1, row 3
         QCOMPARE(changed.at(0).at(0).toModelIndex().row(), 0);
@@ -139,11 +142,13 @@ private Q_SLOTS:
         stale.error = QStringLiteral("timeout after 1000 ms");
         model.applyValues({stale});
         QCOMPARE(model.quality(0), ValueQuality::Stale);
-        QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(), QStringLiteral("42"));
+        QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(),
+                 QStringLiteral("42"));
         QVERIFY(model.data(model.index(0, WatchTableModel::QualityColumn), Qt::ToolTipRole)
                     .toString()
                     .contains(QStringLiteral("timeout after 1000 ms")));
-        QCOMPARE(model.data(model.index(0, WatchTableModel::QualityColumn)).toString(), QStringLiteral("stale"));
+        QCOMPARE(model.data(model.index(0, WatchTableModel::QualityColumn)).toString(),
+                 QStringLiteral("stale"));
     }
 
     void typedValueBecomesWriteRequest()
@@ -154,13 +159,15 @@ private Q_SLOTS:
         model.applyValues({good(entries.at(0).id, 0), good(entries.at(1).id, 0)});
         QSignalSpy writes(&model, &WatchTableModel::writeRequested);
         QSignalSpy rejected(&model, &WatchTableModel::inputRejected);
-        QVERIFY(!model.setData(model.index(0, WatchTableModel::ValueColumn), QStringLiteral("1Ah")));
+        QVERIFY(
+            !model.setData(model.index(0, WatchTableModel::ValueColumn), QStringLiteral("1Ah")));
         QCOMPARE(writes.count(), 1);
         QCOMPARE(writes.at(0).at(1).toULongLong(), 0x1Aull);
         model.setData(model.index(0, WatchTableModel::ValueColumn), QStringLiteral("0x10000"));
         QCOMPARE(rejected.count(), 1);
         QCOMPARE(writes.count(), 1);
-        model.setData(model.index(1, WatchTableModel::ValueColumn), Qt::Checked, Qt::CheckStateRole);
+        model.setData(model.index(1, WatchTableModel::ValueColumn), Qt::Checked,
+                      Qt::CheckStateRole);
         QCOMPARE(writes.count(), 2);
         QCOMPARE(writes.at(1).at(0).toInt(), 1);
         QCOMPARE(writes.at(1).at(1).toULongLong(), 1ull);
@@ -174,7 +181,8 @@ private Q_SLOTS:
         // R65535 as float would need R65536.
         QVERIFY(!model.setFormat(0, DisplayFormat::Float32, false).ok());
         QVERIFY(!model.availableFormats(1).contains(DisplayFormat::Float32));
-        QVERIFY(!model.setData(model.index(1, WatchTableModel::FormatColumn), QStringLiteral("float")));
+        QVERIFY(
+            !model.setData(model.index(1, WatchTableModel::FormatColumn), QStringLiteral("float")));
         QCOMPARE(rejected.count(), 1);
         model.addItems({item("R0", DisplayFormat::Signed)});
         QSignalSpy repoll(&model, &WatchTableModel::pollListChanged);

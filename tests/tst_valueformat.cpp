@@ -55,7 +55,8 @@ void TestValueFormat::names()
 {
     const QList<DisplayFormat> all = ValueFormat::allFormats();
     QCOMPARE(all.size(), 9);
-    const QStringList expected{"bit", "unsigned", "signed", "hex", "binary", "bcd", "float", "ascii", "double"};
+    const QStringList expected{"bit", "unsigned", "signed", "hex",   "binary",
+                               "bcd", "float",    "ascii",  "double"};
     QStringList names;
     for (DisplayFormat f : all) {
         names.append(ValueFormat::name(f));
@@ -64,8 +65,10 @@ void TestValueFormat::names()
     QCOMPARE(names, expected);
     QCOMPARE(ValueFormat::fromName(u"FLOAT"), std::optional<DisplayFormat>(DisplayFormat::Float32));
     QCOMPARE(ValueFormat::fromName(u" Hex "), std::optional<DisplayFormat>(DisplayFormat::Hex));
-    QCOMPARE(ValueFormat::fromName(u"float32"), std::optional<DisplayFormat>(DisplayFormat::Float32));
-    QCOMPARE(ValueFormat::fromName(u"double64"), std::optional<DisplayFormat>(DisplayFormat::Double64));
+    QCOMPARE(ValueFormat::fromName(u"float32"),
+             std::optional<DisplayFormat>(DisplayFormat::Float32));
+    QCOMPARE(ValueFormat::fromName(u"double64"),
+             std::optional<DisplayFormat>(DisplayFormat::Double64));
     QVERIFY(!ValueFormat::fromName(u"decimal"));
     QVERIFY(!ValueFormat::fromName(u""));
 }
@@ -92,7 +95,9 @@ void TestValueFormat::availability()
 
 void TestValueFormat::widthsOfAddresses()
 {
-    const auto addr = [](const char *text) { return *Address::parse(text); };
+    const auto addr = [](const char *text) {
+        return *Address::parse(text);
+    };
     using F = DisplayFormat;
     QCOMPARE(ValueFormat::valueWidth(addr("X0"), F::Bit), 1);
     QCOMPARE(ValueFormat::elementCount(addr("X0"), F::Bit), 1);
@@ -116,7 +121,8 @@ void TestValueFormat::widthsOfAddresses()
 void TestValueFormat::swapWordsIsItsOwnInverse()
 {
     QCOMPARE(quint64(ValueFormat::swapWords(0x12345678u, 32)), quint64(0x56781234u));
-    QCOMPARE(quint64(ValueFormat::swapWords(0x1111222233334444ull, 64)), quint64(0x4444333322221111ull));
+    QCOMPARE(quint64(ValueFormat::swapWords(0x1111222233334444ull, 64)),
+             quint64(0x4444333322221111ull));
     QCOMPARE(quint64(ValueFormat::swapWords(0x1234u, 16)), quint64(0x1234u));
     for (quint64 v : {0ull, 0x0102030405060708ull, ~0ull, 0x8000000000000001ull}) {
         QCOMPARE(quint64(ValueFormat::swapWords(ValueFormat::swapWords(v, 64), 64)), v);
@@ -152,18 +158,22 @@ void TestValueFormat::format_data()
     QTest::newRow("s16 max") << 0x7FFFull << 16 << F::Signed << false << "32767";
     QTest::newRow("s32 min") << 0x80000000ull << 32 << F::Signed << false << "-2147483648";
     QTest::newRow("s32 swapped -2") << 0xFFFEFFFFull << 32 << F::Signed << true << "-2";
-    QTest::newRow("s64 min") << 0x8000000000000000ull << 64 << F::Signed << false << "-9223372036854775808";
-    QTest::newRow("s64 max") << 0x7FFFFFFFFFFFFFFFull << 64 << F::Signed << false << "9223372036854775807";
+    QTest::newRow("s64 min") << 0x8000000000000000ull << 64 << F::Signed << false
+                             << "-9223372036854775808";
+    QTest::newRow("s64 max") << 0x7FFFFFFFFFFFFFFFull << 64 << F::Signed << false
+                             << "9223372036854775807";
 
     QTest::newRow("hex16") << 0x1Aull << 16 << F::Hex << false << "0x001A";
     QTest::newRow("hex16 max") << 0xFFFFull << 16 << F::Hex << false << "0xFFFF";
     QTest::newRow("hex32") << 0xABCDEFull << 32 << F::Hex << false << "0x00ABCDEF";
     QTest::newRow("hex32 swapped") << 0x12345678ull << 32 << F::Hex << true << "0x56781234";
     QTest::newRow("hex64") << 0x1ull << 64 << F::Hex << false << "0x0000000000000001";
-    QTest::newRow("hex64 swapped") << 0x1111222233334444ull << 64 << F::Hex << true << "0x4444333322221111";
+    QTest::newRow("hex64 swapped")
+        << 0x1111222233334444ull << 64 << F::Hex << true << "0x4444333322221111";
 
     QTest::newRow("bin16") << 1ull << 16 << F::Binary << false << "0000 0000 0000 0001";
-    QTest::newRow("bin16 pattern") << 0xA5C3ull << 16 << F::Binary << false << "1010 0101 1100 0011";
+    QTest::newRow("bin16 pattern")
+        << 0xA5C3ull << 16 << F::Binary << false << "1010 0101 1100 0011";
     QTest::newRow("bin32") << 0x80000001ull << 32 << F::Binary << false
                            << "1000 0000 0000 0000 0000 0000 0000 0001";
 
@@ -184,15 +194,17 @@ void TestValueFormat::format_data()
     QTest::newRow("float inf") << 0x7F800000ull << 32 << F::Float32 << false << "Inf";
     QTest::newRow("float -inf") << 0xFF800000ull << 32 << F::Float32 << false << "-Inf";
     QTest::newRow("float -0") << 0x80000000ull << 32 << F::Float32 << false << "-0";
-    QTest::newRow("float pi low word high") << 0x0FDB4049ull << 32 << F::Float32 << true << "3.141593";
+    QTest::newRow("float pi low word high")
+        << 0x0FDB4049ull << 32 << F::Float32 << true << "3.141593";
 
-    QTest::newRow("double pi") << bitsOf(3.141592653589793) << 64 << F::Double64 << false << "3.141592653589793";
+    QTest::newRow("double pi") << bitsOf(3.141592653589793) << 64 << F::Double64 << false
+                               << "3.141592653589793";
     QTest::newRow("double 0.1") << bitsOf(0.1) << 64 << F::Double64 << false << "0.1";
     QTest::newRow("double 1 swapped") << 0x3FF0ull << 64 << F::Double64 << true << "1";
-    QTest::newRow("double nan") << bitsOf(std::numeric_limits<double>::quiet_NaN()) << 64 << F::Double64 << false
-                                << "NaN";
-    QTest::newRow("double -inf") << bitsOf(-std::numeric_limits<double>::infinity()) << 64 << F::Double64 << false
-                                 << "-Inf";
+    QTest::newRow("double nan") << bitsOf(std::numeric_limits<double>::quiet_NaN()) << 64
+                                << F::Double64 << false << "NaN";
+    QTest::newRow("double -inf") << bitsOf(-std::numeric_limits<double>::infinity()) << 64
+                                 << F::Double64 << false << "-Inf";
 
     QTest::newRow("ascii16") << 0x4142ull << 16 << F::Ascii << false << "AB";
     QTest::newRow("ascii16 nul") << 0x4100ull << 16 << F::Ascii << false << "A.";
@@ -201,9 +213,11 @@ void TestValueFormat::format_data()
     QTest::newRow("ascii32 swapped") << 0x43444142ull << 32 << F::Ascii << true << "CDAB";
     QTest::newRow("ascii64") << 0x4748454643444142ull << 64 << F::Ascii << false << "ABCDEFGH";
 
-    QTest::newRow("float on 16 bits") << 0ull << 16 << F::Float32 << false << "(float needs 32 bits)";
+    QTest::newRow("float on 16 bits")
+        << 0ull << 16 << F::Float32 << false << "(float needs 32 bits)";
     QTest::newRow("bit on 16 bits") << 0ull << 16 << F::Bit << false << "(bit needs a single bit)";
-    QTest::newRow("signed on 1 bit") << 0ull << 1 << F::Signed << false << "(signed needs 16 bits or more)";
+    QTest::newRow("signed on 1 bit")
+        << 0ull << 1 << F::Signed << false << "(signed needs 16 bits or more)";
     QTest::newRow("8 bits") << 0ull << 8 << F::Unsigned << false << "(no 8-bit values)";
 }
 
@@ -253,7 +267,8 @@ void TestValueFormat::parse_data()
     QTest::newRow("u32 max") << "4294967295" << 32 << F::Unsigned << false << 0xFFFFFFFFull;
     QTest::newRow("s32 swapped") << "1" << 32 << F::Signed << true << 0x00010000ull;
     QTest::newRow("u64 max") << "18446744073709551615" << 64 << F::Unsigned << false << ~0ull;
-    QTest::newRow("s64 min") << "-9223372036854775808" << 64 << F::Signed << false << 0x8000000000000000ull;
+    QTest::newRow("s64 min") << "-9223372036854775808" << 64 << F::Signed << false
+                             << 0x8000000000000000ull;
     QTest::newRow("u64 swapped") << "1" << 64 << F::Unsigned << true << 0x0001000000000000ull;
 
     QTest::newRow("hex bare") << "1A" << 16 << F::Hex << false << 0x1Aull;
@@ -285,7 +300,8 @@ void TestValueFormat::parse_data()
     QTest::newRow("float raw bits") << "0x3F800000" << 32 << F::Float32 << false << 0x3F800000ull;
     QTest::newRow("float raw h") << "3F800000h" << 32 << F::Float32 << false << 0x3F800000ull;
     QTest::newRow("float swapped") << "1" << 32 << F::Float32 << true << 0x00003F80ull;
-    QTest::newRow("float max") << "3.402823e+38" << 32 << F::Float32 << false << bitsOf(3.402823e38f);
+    QTest::newRow("float max") << "3.402823e+38" << 32 << F::Float32 << false
+                               << bitsOf(3.402823e38f);
 
     QTest::newRow("double 1") << "1" << 64 << F::Double64 << false << 0x3FF0000000000000ull;
     QTest::newRow("double swapped") << "1" << 64 << F::Double64 << true << 0x3FF0ull;
@@ -317,7 +333,8 @@ void TestValueFormat::parse()
 
 void TestValueFormat::parseNaN()
 {
-    for (const QString &text : {QStringLiteral("NaN"), QStringLiteral("nan"), QStringLiteral("-NaN")}) {
+    for (const QString &text :
+         {QStringLiteral("NaN"), QStringLiteral("nan"), QStringLiteral("-NaN")}) {
         const auto f = ValueFormat::parse(text, 32, DisplayFormat::Float32);
         QVERIFY(f.ok());
         QVERIFY(std::isnan(std::bit_cast<float>(static_cast<std::uint32_t>(*f))));
@@ -349,45 +366,60 @@ void TestValueFormat::rejects_data()
     QTest::newRow("0x only") << "0x" << 16 << F::Signed << "\"0x\" is not a number";
     QTest::newRow("bad hex") << "0x1G" << 16 << F::Signed << "\"0x1G\" is not a hexadecimal number";
     QTest::newRow("bad hex bare") << "12G" << 16 << F::Hex << "\"12G\" is not a hexadecimal number";
-    QTest::newRow("bad binary") << "102" << 16 << F::Binary << "\"102\" is not a binary number (only 0 and 1)";
+    QTest::newRow("bad binary") << "102" << 16 << F::Binary
+                                << "\"102\" is not a binary number (only 0 and 1)";
     QTest::newRow("empty") << "" << 16 << F::Signed
                            << "No value typed: type a number such as 12, -5, 0x1A or 1Ah.";
     QTest::newRow("blank") << "   " << 32 << F::Float32
                            << "No value typed: type a number such as 12, -5, 0x1A or 1Ah.";
     QTest::newRow("u32 over") << "4294967296" << 32 << F::Unsigned
                               << "4294967296 does not fit a 32-bit value (-2147483648..4294967295)";
-    QTest::newRow("s32 under") << "-2147483649" << 32 << F::Signed
-                               << "-2147483649 does not fit a 32-bit value (-2147483648..4294967295)";
+    QTest::newRow("s32 under")
+        << "-2147483649" << 32 << F::Signed
+        << "-2147483649 does not fit a 32-bit value (-2147483648..4294967295)";
     QTest::newRow("u64 over") << "18446744073709551616" << 64 << F::Unsigned
                               << "18446744073709551616 does not fit a 64-bit value "
                                  "(-9223372036854775808..18446744073709551615)";
     QTest::newRow("s64 under") << "-9223372036854775809" << 64 << F::Signed
                                << "-9223372036854775809 does not fit a 64-bit value "
                                   "(-9223372036854775808..18446744073709551615)";
-    QTest::newRow("bcd too big") << "12345" << 16 << F::Bcd << "12345 does not fit a 16-bit register as BCD (0..9999)";
-    QTest::newRow("bcd negative") << "-5" << 16 << F::Bcd << "BCD values cannot be negative (\"-5\")";
-    QTest::newRow("bcd letter") << "12A" << 16 << F::Bcd << "\"12A\" is not a BCD number (digits 0-9 only)";
-    QTest::newRow("float too big") << "1e39" << 32 << F::Float32
-                                   << "1e39 does not fit a 32-bit float (largest about ±3.4e38)";
-    QTest::newRow("double too big") << "1e400" << 64 << F::Double64
-                                    << "1e400 does not fit a 64-bit double (largest about ±1.8e308)";
+    QTest::newRow("bcd too big") << "12345" << 16 << F::Bcd
+                                 << "12345 does not fit a 16-bit register as BCD (0..9999)";
+    QTest::newRow("bcd negative") << "-5" << 16 << F::Bcd
+                                  << "BCD values cannot be negative (\"-5\")";
+    QTest::newRow("bcd letter") << "12A" << 16 << F::Bcd
+                                << "\"12A\" is not a BCD number (digits 0-9 only)";
+    QTest::newRow("float too big")
+        << "1e39" << 32 << F::Float32 << "1e39 does not fit a 32-bit float (largest about ±3.4e38)";
+    QTest::newRow("double too big")
+        << "1e400" << 64 << F::Double64
+        << "1e400 does not fit a 64-bit double (largest about ±1.8e308)";
     QTest::newRow("float text") << "abc" << 32 << F::Float32 << "\"abc\" is not a number";
     QTest::newRow("float comma") << "1,5" << 32 << F::Float32 << "\"1,5\" is not a number";
     QTest::newRow("float grouped") << "1,000" << 32 << F::Float32 << "\"1,000\" is not a number";
-    QTest::newRow("double grouped") << "1,000.5" << 64 << F::Double64 << "\"1,000.5\" is not a number";
-    QTest::newRow("ascii long") << "ABC" << 16 << F::Ascii
-                                << "\"ABC\" is too long: a 16-bit register holds 2 ASCII characters";
+    QTest::newRow("double grouped")
+        << "1,000.5" << 64 << F::Double64 << "\"1,000.5\" is not a number";
+    QTest::newRow("ascii long")
+        << "ABC" << 16 << F::Ascii
+        << "\"ABC\" is too long: a 16-bit register holds 2 ASCII characters";
     QTest::newRow("ascii umlaut") << QString::fromUtf8("\xC3\xA4") << 16 << F::Ascii
-                                  << QString::fromUtf8("\"\xC3\xA4\" contains a character that is not plain "
-                                                       "printable ASCII (letters, digits, punctuation and space "
-                                                       "only)");
-    QTest::newRow("bit 2") << "2" << 1 << F::Bit << "\"2\" is not a bit value: type ON, OFF, 1 or 0";
-    QTest::newRow("bit -1") << "-1" << 1 << F::Bit << "\"-1\" is not a bit value: type ON, OFF, 1 or 0";
-    QTest::newRow("bit yes") << "yes" << 1 << F::Bit << "\"yes\" is not a bit value: type ON, OFF, 1 or 0";
+                                  << QString::fromUtf8(
+                                         "\"\xC3\xA4\" contains a character that is not plain "
+                                         "printable ASCII (letters, digits, punctuation and space "
+                                         "only)");
+    QTest::newRow("bit 2") << "2" << 1 << F::Bit
+                           << "\"2\" is not a bit value: type ON, OFF, 1 or 0";
+    QTest::newRow("bit -1") << "-1" << 1 << F::Bit
+                            << "\"-1\" is not a bit value: type ON, OFF, 1 or 0";
+    QTest::newRow("bit yes") << "yes" << 1 << F::Bit
+                             << "\"yes\" is not a bit value: type ON, OFF, 1 or 0";
     QTest::newRow("bit empty") << "" << 1 << F::Bit << "No value typed: type ON, OFF, 1 or 0.";
-    QTest::newRow("float on 16") << "5" << 16 << F::Float32 << "The float format needs 32 bits; this value has 16 bits.";
-    QTest::newRow("bit on 16") << "1" << 16 << F::Bit << "The bit format needs a single bit; this value has 16 bits.";
-    QTest::newRow("width 8") << "1" << 8 << F::Unsigned << "A 8-bit value cannot be written (only 1, 16, 32 or 64 bits).";
+    QTest::newRow("float on 16") << "5" << 16 << F::Float32
+                                 << "The float format needs 32 bits; this value has 16 bits.";
+    QTest::newRow("bit on 16") << "1" << 16 << F::Bit
+                               << "The bit format needs a single bit; this value has 16 bits.";
+    QTest::newRow("width 8") << "1" << 8 << F::Unsigned
+                             << "A 8-bit value cannot be written (only 1, 16, 32 or 64 bits).";
 }
 
 void TestValueFormat::rejects()
@@ -411,8 +443,14 @@ void TestValueFormat::roundTripExact_data()
     QTest::addColumn<QList<quint64>>("raws");
 
     const QList<quint64> generic16{0, 1, 0x7FFF, 0x8000, 0xFFFF, 0x1234, 0xA5C3};
-    const QList<quint64> generic32{0, 1, 0x7FFFFFFF, 0x80000000, 0xFFFFFFFF, 0x12345678, 0x0000FFFF, 0xFFFF0000};
-    const QList<quint64> generic64{0, 1, 0x7FFFFFFFFFFFFFFF, 0x8000000000000000, ~0ull, 0x0123456789ABCDEF,
+    const QList<quint64> generic32{0,          1,          0x7FFFFFFF, 0x80000000,
+                                   0xFFFFFFFF, 0x12345678, 0x0000FFFF, 0xFFFF0000};
+    const QList<quint64> generic64{0,
+                                   1,
+                                   0x7FFFFFFFFFFFFFFF,
+                                   0x8000000000000000,
+                                   ~0ull,
+                                   0x0123456789ABCDEF,
                                    0x00000000FFFF0000};
     const QList<quint64> bcd16{0, 1, 0x9999, 0x1234, 0x0900};
     const QList<quint64> bcd32{0, 0x99999999, 0x12345678, 0x00090000};
@@ -424,12 +462,13 @@ void TestValueFormat::roundTripExact_data()
     for (bool swap : {false, true}) {
         const char *s = swap ? " swapped" : "";
         QTest::addRow("bit%s", s) << DisplayFormat::Bit << 1 << swap << QList<quint64>{0, 1};
-        for (DisplayFormat f : {DisplayFormat::Unsigned, DisplayFormat::Hex, DisplayFormat::Binary}) {
+        for (DisplayFormat f :
+             {DisplayFormat::Unsigned, DisplayFormat::Hex, DisplayFormat::Binary}) {
             const QByteArray n = ValueFormat::name(f).toLatin1();
             QTest::addRow("%s 1%s", n.constData(), s) << f << 1 << swap << QList<quint64>{0, 1};
         }
-        for (DisplayFormat f :
-             {DisplayFormat::Unsigned, DisplayFormat::Signed, DisplayFormat::Hex, DisplayFormat::Binary}) {
+        for (DisplayFormat f : {DisplayFormat::Unsigned, DisplayFormat::Signed, DisplayFormat::Hex,
+                                DisplayFormat::Binary}) {
             const QByteArray n = ValueFormat::name(f).toLatin1();
             QTest::addRow("%s 16%s", n.constData(), s) << f << 16 << swap << generic16;
             QTest::addRow("%s 32%s", n.constData(), s) << f << 32 << swap << generic32;
@@ -444,12 +483,18 @@ void TestValueFormat::roundTripExact_data()
         QTest::addRow("ascii 64%s", s) << DisplayFormat::Ascii << 64 << swap << ascii64;
         QTest::addRow("float exact%s", s)
             << DisplayFormat::Float32 << 32 << swap
-            << QList<quint64>{0, 0x80000000, 0x3F800000, 0xC0200000, 0x7F800000, 0xFF800000, 0x7FC00000,
-                              bitsOf(0.1f), bitsOf(1234.5f), bitsOf(-1.0e-5f)};
+            << QList<quint64>{
+                   0,          0x80000000, 0x3F800000,   0xC0200000,      0x7F800000,
+                   0xFF800000, 0x7FC00000, bitsOf(0.1f), bitsOf(1234.5f), bitsOf(-1.0e-5f)};
         QTest::addRow("double exact%s", s)
             << DisplayFormat::Double64 << 64 << swap
-            << QList<quint64>{0, 0x8000000000000000, bitsOf(1.0), bitsOf(0.1), bitsOf(-123456.789),
-                              bitsOf(std::numeric_limits<double>::infinity()), 0x7FF8000000000000};
+            << QList<quint64>{0,
+                              0x8000000000000000,
+                              bitsOf(1.0),
+                              bitsOf(0.1),
+                              bitsOf(-123456.789),
+                              bitsOf(std::numeric_limits<double>::infinity()),
+                              0x7FF8000000000000};
     }
 }
 
@@ -465,8 +510,10 @@ void TestValueFormat::roundTripExact()
         const QString text = ValueFormat::format(stored, width, fmt, swap);
         const auto back = ValueFormat::parse(text, width, fmt, swap);
         QVERIFY2(back.ok(), qPrintable(text + QStringLiteral(": ") + errorText(back)));
-        QVERIFY2(quint64(*back) == stored,
-                 qPrintable(QStringLiteral("%1 -> \"%2\" -> %3").arg(stored, 0, 16).arg(text).arg(*back, 0, 16)));
+        QVERIFY2(quint64(*back) == stored, qPrintable(QStringLiteral("%1 -> \"%2\" -> %3")
+                                                          .arg(stored, 0, 16)
+                                                          .arg(text)
+                                                          .arg(*back, 0, 16)));
     }
 }
 
@@ -478,14 +525,23 @@ void TestValueFormat::roundTripFloatText_data()
     QTest::addColumn<int>("width");
     QTest::addColumn<quint64>("raw");
 
-    const QList<float> floats{std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest(),
-                              std::numeric_limits<float>::min(), std::numeric_limits<float>::denorm_min(),
-                              3.14159265f, -2.7182818f, 1.0e-30f, 123456789.0f};
+    const QList<float> floats{std::numeric_limits<float>::max(),
+                              std::numeric_limits<float>::lowest(),
+                              std::numeric_limits<float>::min(),
+                              std::numeric_limits<float>::denorm_min(),
+                              3.14159265f,
+                              -2.7182818f,
+                              1.0e-30f,
+                              123456789.0f};
     for (float f : floats)
         QTest::addRow("float %g", double(f)) << DisplayFormat::Float32 << 32 << bitsOf(f);
-    const QList<double> doubles{std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
-                                std::numeric_limits<double>::min(), std::numeric_limits<double>::denorm_min(),
-                                3.141592653589793, 1.0 / 3.0, -6.02214076e23};
+    const QList<double> doubles{std::numeric_limits<double>::max(),
+                                std::numeric_limits<double>::lowest(),
+                                std::numeric_limits<double>::min(),
+                                std::numeric_limits<double>::denorm_min(),
+                                3.141592653589793,
+                                1.0 / 3.0,
+                                -6.02214076e23};
     for (double d : doubles)
         QTest::addRow("double %g", d) << DisplayFormat::Double64 << 64 << bitsOf(d);
 }

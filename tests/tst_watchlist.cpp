@@ -20,8 +20,8 @@ QString errorText(const Result<T> &r)
     return r.ok() ? QString() : QString::fromStdString(r.error().message);
 }
 
-WatchItemSpec entry(const char *address, DisplayFormat format, quint8 station = 1, const QString &name = {},
-                 const QString &comment = {}, bool swap = false)
+WatchItemSpec entry(const char *address, DisplayFormat format, quint8 station = 1,
+                    const QString &name = {}, const QString &comment = {}, bool swap = false)
 {
     WatchItemSpec e;
     e.address = addr(address);
@@ -40,7 +40,8 @@ WatchListFile sampleFile()
     main.intervalMs = 500;
     main.confirmWrites = true;
     main.items = {
-        entry("R100", DisplayFormat::Signed, 1, QStringLiteral("Tank level"), QStringLiteral("cm, from sensor \"A\"")),
+        entry("R100", DisplayFormat::Signed, 1, QStringLiteral("Tank level"),
+              QStringLiteral("cm, from sensor \"A\"")),
         entry("X0", DisplayFormat::Bit, 1, QStringLiteral("Start button")),
         entry("DR10", DisplayFormat::Float32, 2, QString::fromUtf8("F\xC3\xBCllstand"), {}, true),
         entry("R200", DisplayFormat::Double64, 254),
@@ -147,7 +148,8 @@ void TestWatchList::loadDefaults()
     QCOMPARE(loaded->tables.at(1).name, QStringLiteral("Table 2"));
     QVERIFY(loaded->tables.at(1).items.isEmpty());
 
-    const auto noTables = WatchList::load(R"({"format":"fatek-studio-watchlist","version":1,"tables":[]})");
+    const auto noTables
+        = WatchList::load(R"({"format":"fatek-studio-watchlist","version":1,"tables":[]})");
     QVERIFY(noTables.ok());
     QVERIFY(noTables->tables.isEmpty());
 }
@@ -157,76 +159,98 @@ void TestWatchList::loadErrors_data()
     QTest::addColumn<QByteArray>("json");
     QTest::addColumn<QString>("message");
 
-    const QString knownFormats = QStringLiteral("bit, unsigned, signed, hex, binary, bcd, float, ascii, double");
-    QTest::newRow("array root") << QByteArray("[]")
-                                << "The file is not a FATEK Studio watch list: it holds no JSON object.";
+    const QString knownFormats
+        = QStringLiteral("bit, unsigned, signed, hex, binary, bcd, float, ascii, double");
+    QTest::newRow("array root") << QByteArray(
+        "[]") << "The file is not a FATEK Studio watch list: it holds no JSON object.";
     QTest::newRow("no marker") << QByteArray(R"({"version":1,"tables":[]})")
                                << "The file is not a FATEK Studio watch list: \"format\" is not "
                                   "\"fatek-studio-watchlist\".";
-    QTest::newRow("wrong marker") << QByteArray(R"({"format":"fatek-studio-project","version":1,"tables":[]})")
+    QTest::newRow("wrong marker") << QByteArray(
+        R"({"format":"fatek-studio-project","version":1,"tables":[]})")
                                   << "The file is not a FATEK Studio watch list: \"format\" is not "
                                      "\"fatek-studio-watchlist\".";
     QTest::newRow("no version") << QByteArray(R"({"format":"fatek-studio-watchlist","tables":[]})")
                                 << "The watch list has no valid \"version\" (expected 1).";
-    QTest::newRow("version text") << QByteArray(R"({"format":"fatek-studio-watchlist","version":"1","tables":[]})")
+    QTest::newRow("version text") << QByteArray(
+        R"({"format":"fatek-studio-watchlist","version":"1","tables":[]})")
                                   << "The watch list has no valid \"version\" (expected 1).";
-    QTest::newRow("version 0") << QByteArray(R"({"format":"fatek-studio-watchlist","version":0,"tables":[]})")
+    QTest::newRow("version 0") << QByteArray(
+        R"({"format":"fatek-studio-watchlist","version":0,"tables":[]})")
                                << "The watch list has no valid \"version\" (expected 1).";
-    QTest::newRow("version 1.5") << QByteArray(R"({"format":"fatek-studio-watchlist","version":1.5,"tables":[]})")
+    QTest::newRow("version 1.5") << QByteArray(
+        R"({"format":"fatek-studio-watchlist","version":1.5,"tables":[]})")
                                  << "The watch list has no valid \"version\" (expected 1).";
-    QTest::newRow("version 2") << QByteArray(R"({"format":"fatek-studio-watchlist","version":2,"tables":[]})")
-                               << "The watch list is version 2, written by a newer FATEK Studio; this one reads "
-                                  "version 1.";
+    QTest::newRow("version 2")
+        << QByteArray(R"({"format":"fatek-studio-watchlist","version":2,"tables":[]})")
+        << "The watch list is version 2, written by a newer FATEK Studio; this one reads "
+           "version 1.";
     QTest::newRow("no tables") << QByteArray(R"({"format":"fatek-studio-watchlist","version":1})")
                                << "The watch list has no \"tables\" list.";
-    QTest::newRow("tables object") << QByteArray(R"({"format":"fatek-studio-watchlist","version":1,"tables":{}})")
-                                   << "The watch list has no \"tables\" list.";
+    QTest::newRow("tables object")
+        << QByteArray(R"({"format":"fatek-studio-watchlist","version":1,"tables":{}})")
+        << "The watch list has no \"tables\" list.";
     QTest::newRow("table not object")
         << QByteArray(R"({"format":"fatek-studio-watchlist","version":1,"tables":[5]})")
         << "table 1: a table must be a JSON object";
-    QTest::newRow("interval small") << fileWithItems({}, R"(,"intervalMs":5)")
-                                    << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
-    QTest::newRow("interval text") << fileWithItems({}, R"(,"intervalMs":"500")")
-                                   << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
-    QTest::newRow("interval fraction") << fileWithItems({}, R"(,"intervalMs":500.5)")
-                                       << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
+    QTest::newRow("interval small")
+        << fileWithItems({}, R"(,"intervalMs":5)")
+        << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
+    QTest::newRow("interval text")
+        << fileWithItems({}, R"(,"intervalMs":"500")")
+        << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
+    QTest::newRow("interval fraction")
+        << fileWithItems({}, R"(,"intervalMs":500.5)")
+        << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
     QTest::newRow("confirm text") << fileWithItems({}, R"(,"confirmWrites":"yes")")
                                   << "table 1: \"confirmWrites\" must be true or false";
     QTest::newRow("table name number")
         << QByteArray(R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"name":5}]})")
         << "table 1: \"name\" must be text";
-    QTest::newRow("items object")
-        << QByteArray(R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"items":{}}]})")
-        << "table 1: \"items\" must be a list";
-    QTest::newRow("item not object") << fileWithItems("\"R100\"") << "table 1, item 1: an item must be a JSON object";
-    QTest::newRow("no address") << fileWithItems(R"({"station":1})") << "table 1, item 1: the \"address\" is missing";
+    QTest::newRow("items object") << QByteArray(
+        R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"items":{}}]})")
+                                  << "table 1: \"items\" must be a list";
+    QTest::newRow("item not object")
+        << fileWithItems("\"R100\"") << "table 1, item 1: an item must be a JSON object";
+    QTest::newRow("no address") << fileWithItems(R"({"station":1})")
+                                << "table 1, item 1: the \"address\" is missing";
     QTest::newRow("address number") << fileWithItems(R"({"address":100})")
                                     << "table 1, item 1: \"address\" must be text such as \"R100\"";
-    QTest::newRow("address range") << fileWithItems(R"({"address":"R70000"})")
-                                   << "table 1, item 1: address R70000 is out of range: R numbers go from 0 to 65535.";
-    QTest::newRow("address unaligned") << fileWithItems(R"({"address":"WY4"})")
-                                       << "table 1, item 1: address WY4 is not aligned: WY must start at a multiple "
-                                          "of 8 (e.g. WY0).";
-    QTest::newRow("unknown format") << fileWithItems(R"({"address":"R1"},{"address":"R2","format":"decimal"})")
-                                    << "table 1, item 2: unknown format \"decimal\" (known: " + knownFormats + ")";
+    QTest::newRow("address range")
+        << fileWithItems(R"({"address":"R70000"})")
+        << "table 1, item 1: address R70000 is out of range: R numbers go from 0 to 65535.";
+    QTest::newRow("address unaligned")
+        << fileWithItems(R"({"address":"WY4"})")
+        << "table 1, item 1: address WY4 is not aligned: WY must start at a multiple "
+           "of 8 (e.g. WY0).";
+    QTest::newRow("unknown format")
+        << fileWithItems(R"({"address":"R1"},{"address":"R2","format":"decimal"})")
+        << "table 1, item 2: unknown format \"decimal\" (known: " + knownFormats + ")";
     QTest::newRow("format number") << fileWithItems(R"({"address":"R1","format":3})")
                                    << "table 1, item 1: \"format\" must be text";
-    QTest::newRow("float on bit") << fileWithItems(R"({"address":"X0","format":"float"})")
-                                  << "table 1, item 1: format \"float\" does not apply to X0 (input)";
-    QTest::newRow("bit on register") << fileWithItems(R"({"address":"R7","format":"bit"})")
-                                     << "table 1, item 1: format \"bit\" does not apply to R7 (data register)";
-    QTest::newRow("float past end") << fileWithItems(R"({"address":"R65535","format":"float"})")
-                                    << "table 1, item 1: format \"float\" on R65535 needs 2 elements: 2 elements "
-                                       "from R65535 run past R65535, the last R.";
-    QTest::newRow("double past end") << fileWithItems(R"({"address":"DR65534","format":"double"})")
-                                     << "table 1, item 1: format \"double\" on DR65534 needs 2 elements: 2 elements "
-                                        "from DR65534 run past DR65534, the last DR.";
-    QTest::newRow("station 0") << fileWithItems(R"({"address":"R1","station":0})")
-                               << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
-    QTest::newRow("station 255") << fileWithItems(R"({"address":"R1","station":255})")
-                                 << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
-    QTest::newRow("station text") << fileWithItems(R"({"address":"R1","station":"1"})")
-                                  << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
+    QTest::newRow("float on bit")
+        << fileWithItems(R"({"address":"X0","format":"float"})")
+        << "table 1, item 1: format \"float\" does not apply to X0 (input)";
+    QTest::newRow("bit on register")
+        << fileWithItems(R"({"address":"R7","format":"bit"})")
+        << "table 1, item 1: format \"bit\" does not apply to R7 (data register)";
+    QTest::newRow("float past end")
+        << fileWithItems(R"({"address":"R65535","format":"float"})")
+        << "table 1, item 1: format \"float\" on R65535 needs 2 elements: 2 elements "
+           "from R65535 run past R65535, the last R.";
+    QTest::newRow("double past end")
+        << fileWithItems(R"({"address":"DR65534","format":"double"})")
+        << "table 1, item 1: format \"double\" on DR65534 needs 2 elements: 2 elements "
+           "from DR65534 run past DR65534, the last DR.";
+    QTest::newRow("station 0")
+        << fileWithItems(R"({"address":"R1","station":0})")
+        << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
+    QTest::newRow("station 255")
+        << fileWithItems(R"({"address":"R1","station":255})")
+        << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
+    QTest::newRow("station text")
+        << fileWithItems(R"({"address":"R1","station":"1"})")
+        << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
     QTest::newRow("swap text") << fileWithItems(R"({"address":"DR0","swapWords":"no"})")
                                << "table 1, item 1: \"swapWords\" must be true or false";
     QTest::newRow("name number") << fileWithItems(R"({"address":"R1","name":1})")
@@ -246,15 +270,18 @@ void TestWatchList::loadErrors()
 
 void TestWatchList::notJsonNamesLine()
 {
-    const auto r = WatchList::load("{\n  \"format\": \"fatek-studio-watchlist\",\n  \"version\": 1,\n  oops\n}");
+    const auto r = WatchList::load(
+        "{\n  \"format\": \"fatek-studio-watchlist\",\n  \"version\": 1,\n  oops\n}");
     QVERIFY(!r.ok());
     const QString message = errorText(r);
-    QVERIFY2(message.startsWith(QStringLiteral("The file is not valid JSON: ")), qPrintable(message));
+    QVERIFY2(message.startsWith(QStringLiteral("The file is not valid JSON: ")),
+             qPrintable(message));
     QVERIFY2(message.contains(QStringLiteral(" at line 4, column ")), qPrintable(message));
 
     const auto empty = WatchList::load(QByteArray());
     QVERIFY(!empty.ok());
-    QVERIFY2(errorText(empty).contains(QStringLiteral("at line 1, column 1")), qPrintable(errorText(empty)));
+    QVERIFY2(errorText(empty).contains(QStringLiteral("at line 1, column 1")),
+             qPrintable(errorText(empty)));
 
     const auto truncated = WatchList::load(WatchList::save(sampleFile()).chopped(10));
     QVERIFY(!truncated.ok());
@@ -269,8 +296,10 @@ void TestWatchList::errorNamesTableAndItem()
                              {"address":"R-1"}]}]})";
     const auto r = WatchList::load(json);
     QVERIFY(!r.ok());
-    QCOMPARE(errorText(r),
-             QStringLiteral("table 2, item 5: invalid address \"R-1\": \"-1\" is not a decimal element number."));
+    QCOMPARE(
+        errorText(r),
+        QStringLiteral(
+            "table 2, item 5: invalid address \"R-1\": \"-1\" is not a decimal element number."));
     QCOMPARE(r.error().kind, ErrorKind::InvalidAddress);
 }
 
@@ -312,16 +341,19 @@ void TestWatchList::saveToFileRefusesInvalid()
     broken.tables[1].items.append(entry("R2", DisplayFormat::Signed, 0));
     const Status s = WatchList::saveToFile(broken, path);
     QVERIFY(!s.ok());
-    QCOMPARE(QString::fromStdString(s.error().message),
-             QStringLiteral("Not saved: table 2, item 2: station 0 is broadcast (no PLC answers): use a station "
-                            "number 1..254"));
+    QCOMPARE(
+        QString::fromStdString(s.error().message),
+        QStringLiteral(
+            "Not saved: table 2, item 2: station 0 is broadcast (no PLC answers): use a station "
+            "number 1..254"));
 
     WatchListFile badInterval = sampleFile();
     badInterval.tables[0].intervalMs = 5;
     const Status s2 = WatchList::saveToFile(badInterval, path);
     QVERIFY(!s2.ok());
-    QCOMPARE(QString::fromStdString(s2.error().message),
-             QStringLiteral("Not saved: table 1: poll interval 5 ms is out of range (10..3600000 ms)"));
+    QCOMPARE(
+        QString::fromStdString(s2.error().message),
+        QStringLiteral("Not saved: table 1: poll interval 5 ms is out of range (10..3600000 ms)"));
 
     QFile after(path);
     QVERIFY(after.open(QIODevice::ReadOnly));
@@ -336,7 +368,8 @@ void TestWatchList::saveToFileUnwritable()
     const QString missingDir = dir.filePath(QStringLiteral("no/such/dir/plant.fwatch"));
     const Status s = WatchList::saveToFile(sampleFile(), missingDir);
     QVERIFY(!s.ok());
-    QVERIFY2(QString::fromStdString(s.error().message).startsWith(QStringLiteral("Cannot write ") + missingDir + ": "),
+    QVERIFY2(QString::fromStdString(s.error().message)
+                 .startsWith(QStringLiteral("Cannot write ") + missingDir + ": "),
              s.error().message.c_str());
     QVERIFY(!QFile::exists(missingDir));
 
@@ -355,7 +388,8 @@ void TestWatchList::loadFromFileErrors()
     QVERIFY(dir.isValid());
     const auto missing = WatchList::loadFromFile(dir.filePath(QStringLiteral("missing.fwatch")));
     QVERIFY(!missing.ok());
-    QVERIFY2(errorText(missing).startsWith(QStringLiteral("Cannot open ")), qPrintable(errorText(missing)));
+    QVERIFY2(errorText(missing).startsWith(QStringLiteral("Cannot open ")),
+             qPrintable(errorText(missing)));
 
     const QString path = dir.filePath(QStringLiteral("bad.fwatch"));
     QFile f(path);
@@ -364,7 +398,8 @@ void TestWatchList::loadFromFileErrors()
     f.close();
     const auto bad = WatchList::loadFromFile(path);
     QVERIFY(!bad.ok());
-    QVERIFY2(errorText(bad).startsWith(QStringLiteral("bad.fwatch: table 1, item 1: invalid address \"Q1\"")),
+    QVERIFY2(errorText(bad).startsWith(
+                 QStringLiteral("bad.fwatch: table 1, item 1: invalid address \"Q1\"")),
              qPrintable(errorText(bad)));
 }
 
@@ -387,11 +422,13 @@ void TestWatchList::validateEntry()
 
 void TestWatchList::csvPositional()
 {
-    const auto r = WatchList::importCsv("R100\nR101,2,hex,Pump,\"Speed, rpm\"\nX3,,,Start\nDR10,1,float\n");
+    const auto r
+        = WatchList::importCsv("R100\nR101,2,hex,Pump,\"Speed, rpm\"\nX3,,,Start\nDR10,1,float\n");
     QVERIFY2(r.ok(), qPrintable(errorText(r)));
     QCOMPARE(r->size(), 4);
     QCOMPARE(r->at(0), entry("R100", DisplayFormat::Signed));
-    QCOMPARE(r->at(1), entry("R101", DisplayFormat::Hex, 2, QStringLiteral("Pump"), QStringLiteral("Speed, rpm")));
+    QCOMPARE(r->at(1), entry("R101", DisplayFormat::Hex, 2, QStringLiteral("Pump"),
+                             QStringLiteral("Speed, rpm")));
     QCOMPARE(r->at(2), entry("X3", DisplayFormat::Bit, 1, QStringLiteral("Start")));
     QCOMPARE(r->at(3), entry("DR10", DisplayFormat::Float32));
 
@@ -410,10 +447,12 @@ void TestWatchList::csvHeader()
     QCOMPARE(r->at(0), entry("R100", DisplayFormat::Float32, 1, QStringLiteral("Tank")));
     QCOMPARE(r->at(1), entry("Y0", DisplayFormat::Bit));
 
-    const auto full = WatchList::importCsv("address,station,format,name,comment,\nR5,7,unsigned,N,C,\n");
+    const auto full
+        = WatchList::importCsv("address,station,format,name,comment,\nR5,7,unsigned,N,C,\n");
     QVERIFY2(full.ok(), qPrintable(errorText(full)));
     QCOMPARE(full->size(), 1);
-    QCOMPARE(full->at(0), entry("R5", DisplayFormat::Unsigned, 7, QStringLiteral("N"), QStringLiteral("C")));
+    QCOMPARE(full->at(0),
+             entry("R5", DisplayFormat::Unsigned, 7, QStringLiteral("N"), QStringLiteral("C")));
 }
 
 void TestWatchList::csvSemicolonsAndQuotes()
@@ -425,7 +464,8 @@ void TestWatchList::csvSemicolonsAndQuotes()
         "R102;;;;\r\n");
     QVERIFY2(r.ok(), qPrintable(errorText(r)));
     QCOMPARE(r->size(), 3);
-    QCOMPARE(r->at(0), entry("R100", DisplayFormat::Signed, 1, QStringLiteral("Level, tank"), QStringLiteral("ok")));
+    QCOMPARE(r->at(0), entry("R100", DisplayFormat::Signed, 1, QStringLiteral("Level, tank"),
+                             QStringLiteral("ok")));
     QCOMPARE(r->at(1), entry("R101", DisplayFormat::Ascii, 2, QStringLiteral("say \"hi\""),
                              QStringLiteral("two\nlines; really")));
     QCOMPARE(r->at(2), entry("R102", DisplayFormat::Signed));
@@ -457,7 +497,8 @@ void TestWatchList::csvRanges()
 
 void TestWatchList::csvSkipsBlankAndComments()
 {
-    const auto r = WatchList::importCsv("# exported list\n\n   \naddress,name\n  # indented comment\nR1,One\n,,\n,\n\nR2,Two");
+    const auto r = WatchList::importCsv(
+        "# exported list\n\n   \naddress,name\n  # indented comment\nR1,One\n,,\n,\n\nR2,Two");
     QVERIFY2(r.ok(), qPrintable(errorText(r)));
     QCOMPARE(r->size(), 2);
     QCOMPARE(r->at(0).name, QStringLiteral("One"));
@@ -466,7 +507,8 @@ void TestWatchList::csvSkipsBlankAndComments()
 
 void TestWatchList::csvEncoding()
 {
-    const auto bom = WatchList::importCsv("\xEF\xBB\xBF" "address;name\nR1;F\xC3\xBCllstand\n");
+    const auto bom = WatchList::importCsv("\xEF\xBB\xBF"
+                                          "address;name\nR1;F\xC3\xBCllstand\n");
     QVERIFY2(bom.ok(), qPrintable(errorText(bom)));
     QCOMPARE(bom->size(), 1);
     QCOMPARE(bom->at(0).name, QString::fromUtf8("F\xC3\xBCllstand"));
@@ -481,45 +523,57 @@ void TestWatchList::csvErrors_data()
     QTest::addColumn<QByteArray>("csv");
     QTest::addColumn<QString>("message");
 
-    QTest::newRow("bad address") << QByteArray("R100\nR-1\n")
-                                 << "line 2: invalid address \"R-1\": \"-1\" is not a decimal element number.";
-    QTest::newRow("line after comments") << QByteArray("# c\n\nR100\nR70000")
-                                         << "line 4: address R70000 is out of range: R numbers go from 0 to 65535.";
-    QTest::newRow("line after quoted newline") << QByteArray("R100,1,signed,\"a\nb\"\nR70000")
-                                               << "line 3: address R70000 is out of range: R numbers go from 0 to "
-                                                  "65535.";
-    QTest::newRow("station 0") << QByteArray("R1,0") << "line 1: station \"0\" is not valid: use a number from 1 to 254";
-    QTest::newRow("station text") << QByteArray("R1,one")
-                                  << "line 1: station \"one\" is not valid: use a number from 1 to 254";
-    QTest::newRow("station 300") << QByteArray("R1;300")
-                                 << "line 1: station \"300\" is not valid: use a number from 1 to 254";
-    QTest::newRow("unknown format") << QByteArray("R1,1,decimal")
-                                    << "line 1: unknown format \"decimal\" (known: bit, unsigned, signed, hex, binary, "
-                                       "bcd, float, ascii, double)";
-    QTest::newRow("format not applicable") << QByteArray("X0,1,float")
-                                           << "line 1: format \"float\" does not apply to X0 (input)";
+    QTest::newRow("bad address")
+        << QByteArray("R100\nR-1\n")
+        << "line 2: invalid address \"R-1\": \"-1\" is not a decimal element number.";
+    QTest::newRow("line after comments")
+        << QByteArray("# c\n\nR100\nR70000")
+        << "line 4: address R70000 is out of range: R numbers go from 0 to 65535.";
+    QTest::newRow("line after quoted newline")
+        << QByteArray("R100,1,signed,\"a\nb\"\nR70000")
+        << "line 3: address R70000 is out of range: R numbers go from 0 to "
+           "65535.";
+    QTest::newRow("station 0") << QByteArray("R1,0")
+                               << "line 1: station \"0\" is not valid: use a number from 1 to 254";
+    QTest::newRow("station text") << QByteArray(
+        "R1,one") << "line 1: station \"one\" is not valid: use a number from 1 to 254";
+    QTest::newRow("station 300") << QByteArray(
+        "R1;300") << "line 1: station \"300\" is not valid: use a number from 1 to 254";
+    QTest::newRow("unknown format")
+        << QByteArray("R1,1,decimal")
+        << "line 1: unknown format \"decimal\" (known: bit, unsigned, signed, hex, binary, "
+           "bcd, float, ascii, double)";
+    QTest::newRow("format not applicable")
+        << QByteArray("X0,1,float") << "line 1: format \"float\" does not apply to X0 (input)";
     QTest::newRow("range past end with double")
         << QByteArray("R65530..R65533,1,double")
-        << "line 1: format \"double\" on R65533 needs 4 elements: 4 elements from R65533 run past R65535, the last R.";
-    QTest::newRow("too many fields") << QByteArray("R1,1,signed,a,b,c")
-                                     << "line 1: too many fields: at most 5 (address, station, format, name, comment)";
-    QTest::newRow("unclosed quote") << QByteArray("R1\nR2,\"abc\nR3\n")
-                                    << "line 2: a quoted field is not closed (missing \")";
-    QTest::newRow("text after quote") << QByteArray("\"R100\"x,1")
-                                      << "line 1: unexpected text after the quoted field \"R100\"";
-    QTest::newRow("missing address") << QByteArray("R1\n,1,signed") << "line 2: the address is missing";
-    QTest::newRow("reversed range") << QByteArray("R103..R100")
-                                    << "line 1: range \"R103..R100\" runs backwards: write the lower address first "
-                                       "(R100..R103).";
-    QTest::newRow("unknown column") << QByteArray("address,foo\nR1,2")
-                                    << "line 1: unknown column \"foo\" (known: address, station, format, name, comment)";
-    QTest::newRow("duplicate column") << QByteArray("address;name;Name\nR1;a;b")
-                                      << "line 1: column \"Name\" appears twice";
-    QTest::newRow("more than header") << QByteArray("address\nR100,1")
-                                      << "line 2: more fields than the header has columns";
+        << "line 1: format \"double\" on R65533 needs 4 elements: 4 elements from R65533 run past "
+           "R65535, the last R.";
+    QTest::newRow("too many fields")
+        << QByteArray("R1,1,signed,a,b,c")
+        << "line 1: too many fields: at most 5 (address, station, format, name, comment)";
+    QTest::newRow("unclosed quote")
+        << QByteArray("R1\nR2,\"abc\nR3\n") << "line 2: a quoted field is not closed (missing \")";
+    QTest::newRow("text after quote")
+        << QByteArray("\"R100\"x,1") << "line 1: unexpected text after the quoted field \"R100\"";
+    QTest::newRow("missing address")
+        << QByteArray("R1\n,1,signed") << "line 2: the address is missing";
+    QTest::newRow("reversed range")
+        << QByteArray("R103..R100")
+        << "line 1: range \"R103..R100\" runs backwards: write the lower address first "
+           "(R100..R103).";
+    QTest::newRow("unknown column")
+        << QByteArray("address,foo\nR1,2")
+        << "line 1: unknown column \"foo\" (known: address, station, format, name, comment)";
+    QTest::newRow("duplicate column")
+        << QByteArray("address;name;Name\nR1;a;b") << "line 1: column \"Name\" appears twice";
+    QTest::newRow("more than header")
+        << QByteArray("address\nR100,1") << "line 2: more fields than the header has columns";
     QTest::newRow("empty") << QByteArray() << "The CSV text holds no addresses to watch.";
-    QTest::newRow("only comments") << QByteArray("# nothing\n\n") << "The CSV text holds no addresses to watch.";
-    QTest::newRow("only header") << QByteArray("address,name\n") << "The CSV text holds no addresses to watch.";
+    QTest::newRow("only comments")
+        << QByteArray("# nothing\n\n") << "The CSV text holds no addresses to watch.";
+    QTest::newRow("only header") << QByteArray("address,name\n")
+                                 << "The CSV text holds no addresses to watch.";
 }
 
 void TestWatchList::csvErrors()
@@ -538,17 +592,28 @@ void TestWatchList::expandRange_data()
     QTest::addColumn<QString>("first");
     QTest::addColumn<QString>("last");
 
-    QTest::newRow("R100..R163") << "R100..R163" << 64 << "R100" << "R163";
-    QTest::newRow("X0..X15") << "X0..X15" << 16 << "X0" << "X15";
-    QTest::newRow("WY0..WY32") << "WY0..WY32" << 3 << "WY0" << "WY32";
-    QTest::newRow("DWM0..DWM64") << "DWM0..DWM64" << 3 << "DWM0" << "DWM64";
-    QTest::newRow("DR0..DR4") << "DR0..DR4" << 3 << "DR0" << "DR4";
-    QTest::newRow("single") << "R100" << 1 << "R100" << "R100";
-    QTest::newRow("same both ends") << "R100..R100" << 1 << "R100" << "R100";
-    QTest::newRow("number only end") << "R100..103" << 4 << "R100" << "R103";
-    QTest::newRow("spaces and case") << "  r100 .. r103 " << 4 << "R100" << "R103";
-    QTest::newRow("1024") << "R0..R1023" << 1024 << "R0" << "R1023";
-    QTest::newRow("to the end") << "R65530..R65535" << 6 << "R65530" << "R65535";
+    QTest::newRow("R100..R163") << "R100..R163" << 64 << "R100"
+                                << "R163";
+    QTest::newRow("X0..X15") << "X0..X15" << 16 << "X0"
+                             << "X15";
+    QTest::newRow("WY0..WY32") << "WY0..WY32" << 3 << "WY0"
+                               << "WY32";
+    QTest::newRow("DWM0..DWM64") << "DWM0..DWM64" << 3 << "DWM0"
+                                 << "DWM64";
+    QTest::newRow("DR0..DR4") << "DR0..DR4" << 3 << "DR0"
+                              << "DR4";
+    QTest::newRow("single") << "R100" << 1 << "R100"
+                            << "R100";
+    QTest::newRow("same both ends") << "R100..R100" << 1 << "R100"
+                                    << "R100";
+    QTest::newRow("number only end") << "R100..103" << 4 << "R100"
+                                     << "R103";
+    QTest::newRow("spaces and case") << "  r100 .. r103 " << 4 << "R100"
+                                     << "R103";
+    QTest::newRow("1024") << "R0..R1023" << 1024 << "R0"
+                          << "R1023";
+    QTest::newRow("to the end") << "R65530..R65535" << 6 << "R65530"
+                                << "R65535";
 }
 
 void TestWatchList::expandRange()
@@ -571,25 +636,41 @@ void TestWatchList::expandRangeErrors_data()
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("message");
 
-    QTest::newRow("backwards") << "R103..R100"
-                               << "Range \"R103..R100\" runs backwards: write the lower address first (R100..R103).";
-    QTest::newRow("too many") << "R0..R1024" << "Range \"R0..R1024\" has 1025 elements; at most 1024 fit in one range.";
-    QTest::newRow("mixed") << "R100..D103"
-                           << "Range \"R100..D103\" mixes R100 and D103: both ends must be the same element type.";
-    QTest::newRow("off step W") << "WY0..WY40"
-                                << "Range \"WY0..WY40\" does not end on a whole element: WY elements are 16 apart "
-                                   "(WY0, WY16, ...).";
-    QTest::newRow("off step DR") << "DR0..DR3"
-                                 << "Range \"DR0..DR3\" does not end on a whole element: DR elements are 2 apart "
-                                    "(DR0, DR2, ...).";
-    QTest::newRow("no end") << "R100.." << "Incomplete range \"R100..\": write it as first..last, e.g. R100..R163.";
-    QTest::newRow("no start") << "..R5" << "Incomplete range \"..R5\": write it as first..last, e.g. R100..R163.";
-    QTest::newRow("bad start") << "R-1..R5" << "Invalid address \"R-1\": \"-1\" is not a decimal element number.";
-    QTest::newRow("end out of range") << "R65530..R70000"
-                                      << "Address R70000 is out of range: R numbers go from 0 to 65535.";
-    QTest::newRow("three dots") << "R1...R5" << "Invalid address \".R5\": it must start with an element type such as "
-                                                "R, X or DWM.";
-    QTest::newRow("empty") << "" << "Empty address: type an element such as R12 or X0.";
+    QTest::newRow("backwards")
+        << "R103..R100"
+        << "Range \"R103..R100\" runs backwards: write the lower address first (R100..R103).";
+    QTest::newRow("too many")
+        << "R0..R1024"
+        << "Range \"R0..R1024\" has 1025 elements; at most 1024 fit in one range.";
+    QTest::newRow("mixed")
+        << "R100..D103"
+        << "Range \"R100..D103\" mixes R100 and D103: both ends must be the same element type.";
+    QTest::newRow("off step W")
+        << "WY0..WY40"
+        << "Range \"WY0..WY40\" does not end on a whole element: WY elements are 16 apart "
+           "(WY0, WY16, ...).";
+    QTest::newRow("off step DR")
+        << "DR0..DR3"
+        << "Range \"DR0..DR3\" does not end on a whole element: DR elements are 2 apart "
+           "(DR0, DR2, ...).";
+    QTest::newRow("no end")
+        << "R100.."
+        << "Incomplete range \"R100..\": write it as first..last, e.g. R100..R163.";
+    QTest::newRow("no start")
+        << "..R5"
+        << "Incomplete range \"..R5\": write it as first..last, e.g. R100..R163.";
+    QTest::newRow("bad start")
+        << "R-1..R5"
+        << "Invalid address \"R-1\": \"-1\" is not a decimal element number.";
+    QTest::newRow("end out of range")
+        << "R65530..R70000"
+        << "Address R70000 is out of range: R numbers go from 0 to 65535.";
+    QTest::newRow("three dots")
+        << "R1...R5"
+        << "Invalid address \".R5\": it must start with an element type such as "
+           "R, X or DWM.";
+    QTest::newRow("empty") << ""
+                           << "Empty address: type an element such as R12 or X0.";
 }
 
 void TestWatchList::expandRangeErrors()

@@ -6,7 +6,7 @@ packages=(
     build-essential cmake ninja-build pkg-config
     qt6-base-dev qt6-serialport-dev qt6-charts-dev qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libqt6svg6
     libgl-dev libxkbcommon-dev fonts-dejavu-core
-    socat python3
+    socat python3 git clang-format
 )
 
 missing=()

@@ -83,7 +83,9 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
     QStringList positional = arguments;
     s.name = positional.takeFirst().toLower();
     const QString &cmd = s.name;
-    auto fail = [](const QString &message) { return message; };
+    auto fail = [](const QString &message) {
+        return message;
+    };
     auto argCount = [&](qsizetype min, qsizetype max) -> QString {
         if (positional.size() < min)
             return QStringLiteral("%1 needs more arguments (see --help).").arg(cmd);
@@ -94,13 +96,17 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
     auto countArg = [&](const QString &text, std::uint32_t max, std::uint32_t *out) -> QString {
         qint64 c = 0;
         if (!parseInt(text, 1, max, &c))
-            return QStringLiteral("%1: COUNT must be 1..%2, not \"%3\".").arg(cmd).arg(max).arg(text);
+            return QStringLiteral("%1: COUNT must be 1..%2, not \"%3\".")
+                .arg(cmd)
+                .arg(max)
+                .arg(text);
         *out = static_cast<std::uint32_t>(c);
         return {};
     };
     QString err;
 
-    if (cmd == QLatin1String("status") || cmd == QLatin1String("run") || cmd == QLatin1String("stop")) {
+    if (cmd == QLatin1String("status") || cmd == QLatin1String("run")
+        || cmd == QLatin1String("stop")) {
         if (!(err = argCount(0, 0)).isEmpty())
             return fail(err);
         s.command = cmd == QLatin1String("status") ? CliCommand::ShowStatus
@@ -133,15 +139,17 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
             s.count = static_cast<std::uint32_t>(s.addresses.size());
         } else {
             if (positional.size() > 2)
-                return fail(QStringLiteral("%1: unexpected argument \"%2\".").arg(cmd, positional.at(2)));
+                return fail(
+                    QStringLiteral("%1: unexpected argument \"%2\".").arg(cmd, positional.at(2)));
             if (s.command == CliCommand::Forced && !isDiscrete(s.addresses.first().type))
                 return fail(QStringLiteral("forced reads discretes (X Y M S T C), not %1.")
                                 .arg(QString::fromStdString(s.addresses.first().toString())));
             if (positional.size() == 2) {
                 if (range)
                     return fail(QStringLiteral("%1: give a range or a COUNT, not both.").arg(cmd));
-                const std::uint32_t max = isDiscrete(s.addresses.first().type) ? Limits::maxDiscretes
-                                                                                  : Limits::maxRegisterWords;
+                const std::uint32_t max = isDiscrete(s.addresses.first().type)
+                                              ? Limits::maxDiscretes
+                                              : Limits::maxRegisterWords;
                 if (!(err = countArg(positional.at(1), max, &s.count)).isEmpty())
                     return fail(err);
             } else {
@@ -170,8 +178,8 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
         const Status span = validateSpan(a.value(), s.count);
         if (!span)
             return fail(errorOf(span.error()));
-    } else if (cmd == QLatin1String("set") || cmd == QLatin1String("reset") || cmd == QLatin1String("enable")
-               || cmd == QLatin1String("disable")) {
+    } else if (cmd == QLatin1String("set") || cmd == QLatin1String("reset")
+               || cmd == QLatin1String("enable") || cmd == QLatin1String("disable")) {
         if (!(err = argCount(1, 1)).isEmpty())
             return fail(err);
         s.command = CliCommand::Control;
@@ -191,10 +199,13 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
         if (!(err = argCount(0, -1)).isEmpty())
             return fail(err);
         s.command = CliCommand::Loopback;
-        const QString text = positional.isEmpty() ? QStringLiteral("FATEK-CLI") : positional.join(QLatin1Char(' '));
+        const QString text = positional.isEmpty() ? QStringLiteral("FATEK-CLI")
+                                                  : positional.join(QLatin1Char(' '));
         s.loopbackData = text.toLatin1();
-        if (s.loopbackData.isEmpty() || static_cast<std::uint32_t>(s.loopbackData.size()) > Limits::maxLoopback)
-            return fail(QStringLiteral("loopback TEXT must be 1..%1 characters.").arg(Limits::maxLoopback));
+        if (s.loopbackData.isEmpty()
+            || static_cast<std::uint32_t>(s.loopbackData.size()) > Limits::maxLoopback)
+            return fail(
+                QStringLiteral("loopback TEXT must be 1..%1 characters.").arg(Limits::maxLoopback));
     } else if (cmd == QLatin1String("monitor")) {
         if (!(err = argCount(1, -1)).isEmpty())
             return fail(err);
@@ -206,7 +217,8 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
             s.addresses += more.value();
         }
         if (s.addresses.size() > WatchList::MaxRangeItems)
-            return fail(QStringLiteral("monitor watches at most %1 elements.").arg(WatchList::MaxRangeItems));
+            return fail(QStringLiteral("monitor watches at most %1 elements.")
+                            .arg(WatchList::MaxRangeItems));
     } else if (cmd == QLatin1String("raw")) {
         if (!(err = argCount(1, -1)).isEmpty())
             return fail(err);
@@ -226,10 +238,12 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
             const auto m = range.match(positional.at(0).trimmed());
             qint64 first = 0, last = 0;
             if (!m.hasMatch() || !parseInt(m.captured(1), 1, Limits::maxStation, &first)
-                || !parseInt(m.captured(2).isEmpty() ? m.captured(1) : m.captured(2), 1, Limits::maxStation, &last)
+                || !parseInt(m.captured(2).isEmpty() ? m.captured(1) : m.captured(2), 1,
+                             Limits::maxStation, &last)
                 || last < first)
-                return fail(QStringLiteral("scan takes a station range like 1..16 (1..254), not \"%1\".")
-                                .arg(positional.at(0)));
+                return fail(
+                    QStringLiteral("scan takes a station range like 1..16 (1..254), not \"%1\".")
+                        .arg(positional.at(0)));
             s.scanFirst = static_cast<int>(first);
             s.scanLast = static_cast<int>(last);
         }
@@ -249,15 +263,18 @@ QString usageText()
         "Link (exactly one):\n"
         "  --tcp HOST[:PORT]        FATEK over TCP (port 500 if not given)\n"
         "  --udp HOST[:PORT]        FATEK over UDP (port 500 if not given)\n"
-        "  --serial DEV             serial line, with --baud N (9600) --parity N|E|O (E) --data 7|8 (7) --stop 1|2 (1)\n"
-        "  --sim                    embedded simulator (FBs profile, demo ladder, RUN) on 127.0.0.1\n"
+        "  --serial DEV             serial line, with --baud N (9600) --parity N|E|O (E) --data "
+        "7|8 (7) --stop 1|2 (1)\n"
+        "  --sim                    embedded simulator (FBs profile, demo ladder, RUN) on "
+        "127.0.0.1\n"
         "\n"
         "Options:\n"
         "  --protocol facon|binary|auto   (auto for a real link, facon for --sim)\n"
         "  --station N              station 1..254 (0 = broadcast, no answer) [1]\n"
         "  --timeout MS             per attempt [1000]\n"
         "  --retries N              extra attempts after a timeout [2]\n"
-        "  --read-only              operator mode: writes, RUN/STOP, forcing and raw frames are refused\n"
+        "  --read-only              operator mode: writes, RUN/STOP, forcing and raw frames are "
+        "refused\n"
         "  --json | --csv           output one JSON object per line / CSV instead of a table\n"
         "  --help, --version\n"
         "\n"
@@ -266,19 +283,24 @@ QString usageText()
         "  run | stop               switch the PLC to RUN / STOP\n"
         "  read ADDR [COUNT]        consecutive elements (ADDR may be a range R0..R9)\n"
         "  read ADDR ADDR...        a mixed list (48)\n"
-        "  write ADDR VALUE...      decimal, -decimal or 0x-hex; discretes 0/1/on/off; several = consecutive\n"
+        "  write ADDR VALUE...      decimal, -decimal or 0x-hex; discretes 0/1/on/off; several = "
+        "consecutive\n"
         "  set|reset|enable|disable ADDR   discrete control (42)\n"
         "  forced ADDR [COUNT]      which discretes are disabled (forced) (43)\n"
         "  loopback [TEXT] [--count N]     round trips: min/mean/max, mismatches, timeouts\n"
-        "  monitor ADDR... [--interval MS] [--cycles N]   poll, one line per cycle (ADDR may be a range)\n"
-        "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" ASCII);\n"
+        "  monitor ADDR... [--interval MS] [--cycles N]   poll, one line per cycle (ADDR may be a "
+        "range)\n"
+        "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" "
+        "ASCII);\n"
         "                           --frame adds the protocol's framing and checksum\n"
         "  scan [FROM..TO]          which stations answer (default 1..254)\n"
         "\n"
-        "Exit codes: 0 ok, 2 usage, 3 link failure (timeout, no connection), 4 PLC error, 5 refused by --read-only.\n");
+        "Exit codes: 0 ok, 2 usage, 3 link failure (timeout, no connection), 4 PLC error, 5 "
+        "refused by --read-only.\n");
 }
 
-std::optional<std::uint32_t> parseValue(const QString &rawText, const Address &address, QString *error)
+std::optional<std::uint32_t> parseValue(const QString &rawText, const Address &address,
+                                        QString *error)
 {
     const QString text = rawText.trimmed();
     const QString lower = text.toLower();
@@ -288,7 +310,8 @@ std::optional<std::uint32_t> parseValue(const QString &rawText, const Address &a
             return 1u;
         if (lower == QLatin1String("0") || lower == QLatin1String("off"))
             return 0u;
-        *error = QStringLiteral("%1 is a discrete: write 0, 1, on or off, not \"%2\".").arg(name, text);
+        *error = QStringLiteral("%1 is a discrete: write 0, 1, on or off, not \"%2\".")
+                     .arg(name, text);
         return std::nullopt;
     }
     const bool wide = isDoubleWord(address.type);
@@ -305,12 +328,13 @@ std::optional<std::uint32_t> parseValue(const QString &rawText, const Address &a
         ok = ok && v >= minSigned && v <= maxUnsigned;
     }
     if (!ok) {
-        *error = QStringLiteral("%1 is a %2-bit register: give a value %3..%4 or 0x-hex, not \"%5\".")
-                     .arg(name)
-                     .arg(wide ? 32 : 16)
-                     .arg(minSigned)
-                     .arg(maxUnsigned)
-                     .arg(text);
+        *error
+            = QStringLiteral("%1 is a %2-bit register: give a value %3..%4 or 0x-hex, not \"%5\".")
+                  .arg(name)
+                  .arg(wide ? 32 : 16)
+                  .arg(minSigned)
+                  .arg(maxUnsigned)
+                  .arg(text);
         return std::nullopt;
     }
     // Negative values go out as two's complement of the element's width.
@@ -322,7 +346,8 @@ QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QSt
     QString t = text.trimmed();
     bool hex = forceHex;
     if (!forceAscii && !forceHex) {
-        static const QRegularExpression pairs(QStringLiteral("^[0-9A-Fa-f]{2}(\\s+[0-9A-Fa-f]{2})+$"));
+        static const QRegularExpression pairs(
+            QStringLiteral("^[0-9A-Fa-f]{2}(\\s+[0-9A-Fa-f]{2})+$"));
         if (pairs.match(t).hasMatch())
             hex = true;
         else if (t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
@@ -336,15 +361,19 @@ QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QSt
         digits.remove(QRegularExpression(QStringLiteral("\\s")));
         static const QRegularExpression hexOnly(QStringLiteral("^([0-9A-Fa-f]{2})+$"));
         if (!hexOnly.match(digits).hasMatch()) {
-            *error = QStringLiteral("\"%1\" is not hex bytes: write pairs of hex digits like \"01 40\".").arg(text);
+            *error = QStringLiteral(
+                         "\"%1\" is not hex bytes: write pairs of hex digits like \"01 40\".")
+                         .arg(text);
             return {};
         }
         return QByteArray::fromHex(digits.toLatin1());
     }
     for (const QChar c : t) {
         if (c.unicode() < 0x20 || c.unicode() > 0x7E) {
-            *error = QStringLiteral("\"%1\" has characters that are not printable ASCII: send such bytes as hex.")
-                         .arg(text);
+            *error
+                = QStringLiteral(
+                      "\"%1\" has characters that are not printable ASCII: send such bytes as hex.")
+                      .arg(text);
             return {};
         }
     }
@@ -363,13 +392,16 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     bool forceHex = false, forceAscii = false;
     bool countGiven = false, intervalGiven = false, cyclesGiven = false, frameGiven = false;
     QString countText, intervalText, cyclesText, stationText, timeoutText, retriesText;
-    auto fail = [](const QString &message) { return CliParseResult{std::nullopt, message}; };
+    auto fail = [](const QString &message) {
+        return CliParseResult{std::nullopt, message};
+    };
 
-    const QStringList valued = {QStringLiteral("tcp"), QStringLiteral("udp"), QStringLiteral("serial"),
-                                QStringLiteral("baud"), QStringLiteral("parity"), QStringLiteral("data"),
-                                QStringLiteral("stop"), QStringLiteral("protocol"), QStringLiteral("station"),
-                                QStringLiteral("timeout"), QStringLiteral("retries"), QStringLiteral("count"),
-                                QStringLiteral("interval"), QStringLiteral("cycles")};
+    const QStringList valued
+        = {QStringLiteral("tcp"),      QStringLiteral("udp"),      QStringLiteral("serial"),
+           QStringLiteral("baud"),     QStringLiteral("parity"),   QStringLiteral("data"),
+           QStringLiteral("stop"),     QStringLiteral("protocol"), QStringLiteral("station"),
+           QStringLiteral("timeout"),  QStringLiteral("retries"),  QStringLiteral("count"),
+           QStringLiteral("interval"), QStringLiteral("cycles")};
     bool onlyPositional = false;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
         const QString &arg = arguments.at(i);
@@ -404,33 +436,64 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                     return fail(QStringLiteral("--%1 needs a value.").arg(name));
                 value = arguments.at(++i);
             }
-            if (name == QLatin1String("tcp")) { tcp = value; ++links; }
-            else if (name == QLatin1String("udp")) { udp = value; ++links; }
-            else if (name == QLatin1String("serial")) { serial = value; ++links; }
-            else if (name == QLatin1String("baud")) baud = value;
-            else if (name == QLatin1String("parity")) parity = value;
-            else if (name == QLatin1String("data")) data = value;
-            else if (name == QLatin1String("stop")) stop = value;
-            else if (name == QLatin1String("protocol")) protocol = value;
-            else if (name == QLatin1String("station")) stationText = value;
-            else if (name == QLatin1String("timeout")) timeoutText = value;
-            else if (name == QLatin1String("retries")) retriesText = value;
-            else if (name == QLatin1String("count")) { countText = value; countGiven = true; }
-            else if (name == QLatin1String("interval")) { intervalText = value; intervalGiven = true; }
-            else if (name == QLatin1String("cycles")) { cyclesText = value; cyclesGiven = true; }
+            if (name == QLatin1String("tcp")) {
+                tcp = value;
+                ++links;
+            } else if (name == QLatin1String("udp")) {
+                udp = value;
+                ++links;
+            } else if (name == QLatin1String("serial")) {
+                serial = value;
+                ++links;
+            } else if (name == QLatin1String("baud"))
+                baud = value;
+            else if (name == QLatin1String("parity"))
+                parity = value;
+            else if (name == QLatin1String("data"))
+                data = value;
+            else if (name == QLatin1String("stop"))
+                stop = value;
+            else if (name == QLatin1String("protocol"))
+                protocol = value;
+            else if (name == QLatin1String("station"))
+                stationText = value;
+            else if (name == QLatin1String("timeout"))
+                timeoutText = value;
+            else if (name == QLatin1String("retries"))
+                retriesText = value;
+            else if (name == QLatin1String("count")) {
+                countText = value;
+                countGiven = true;
+            } else if (name == QLatin1String("interval")) {
+                intervalText = value;
+                intervalGiven = true;
+            } else if (name == QLatin1String("cycles")) {
+                cyclesText = value;
+                cyclesGiven = true;
+            }
             continue;
         }
         if (hasValue)
             return fail(QStringLiteral("--%1 takes no value.").arg(name));
-        if (name == QLatin1String("help")) o.help = true;
-        else if (name == QLatin1String("version")) o.version = true;
-        else if (name == QLatin1String("sim")) { o.sim = true; linkCount = true; }
-        else if (name == QLatin1String("json")) o.format = OutputFormat::Json;
-        else if (name == QLatin1String("csv")) o.format = OutputFormat::Csv;
-        else if (name == QLatin1String("read-only")) o.readOnly = true;
-        else if (name == QLatin1String("frame")) frameGiven = true;
-        else if (name == QLatin1String("hex")) forceHex = true;
-        else if (name == QLatin1String("ascii")) forceAscii = true;
+        if (name == QLatin1String("help"))
+            o.help = true;
+        else if (name == QLatin1String("version"))
+            o.version = true;
+        else if (name == QLatin1String("sim")) {
+            o.sim = true;
+            linkCount = true;
+        } else if (name == QLatin1String("json"))
+            o.format = OutputFormat::Json;
+        else if (name == QLatin1String("csv"))
+            o.format = OutputFormat::Csv;
+        else if (name == QLatin1String("read-only"))
+            o.readOnly = true;
+        else if (name == QLatin1String("frame"))
+            frameGiven = true;
+        else if (name == QLatin1String("hex"))
+            forceHex = true;
+        else if (name == QLatin1String("ascii"))
+            forceAscii = true;
         else
             return fail(QStringLiteral("Unknown option --%1 (see --help).").arg(name));
     }
@@ -439,32 +502,39 @@ CliParseResult parseCommandLine(const QStringList &arguments)
 
     // The link.
     if (links + (linkCount ? 1 : 0) == 0)
-        return fail(QStringLiteral("No link given: use --tcp HOST[:PORT], --udp HOST[:PORT], --serial DEV or --sim."));
+        return fail(QStringLiteral(
+            "No link given: use --tcp HOST[:PORT], --udp HOST[:PORT], --serial DEV or --sim."));
     if (links + (linkCount ? 1 : 0) > 1)
         return fail(QStringLiteral("Give only one of --tcp, --udp, --serial and --sim."));
-    if (serial.isEmpty() && !(baud.isEmpty() && parity.isEmpty() && data.isEmpty() && stop.isEmpty()))
+    if (serial.isEmpty()
+        && !(baud.isEmpty() && parity.isEmpty() && data.isEmpty() && stop.isEmpty()))
         return fail(QStringLiteral("--baud, --parity, --data and --stop only apply to --serial."));
     if (!tcp.isEmpty() || !udp.isEmpty()) {
         QString host;
         quint16 port = 500;
         const QString &text = tcp.isEmpty() ? udp : tcp;
         if (!parseHostPort(text, &host, &port))
-            return fail(QStringLiteral("--%1 needs HOST or HOST:PORT (port 1..65535), not \"%2\".")
-                            .arg(tcp.isEmpty() ? QStringLiteral("udp") : QStringLiteral("tcp"), text));
+            return fail(
+                QStringLiteral("--%1 needs HOST or HOST:PORT (port 1..65535), not \"%2\".")
+                    .arg(tcp.isEmpty() ? QStringLiteral("udp") : QStringLiteral("tcp"), text));
         o.link = tcp.isEmpty() ? LinkSettings::udp(host, port) : LinkSettings::tcp(host, port);
     } else if (!serial.isEmpty()) {
         o.link = LinkSettings::serial(serial);
         qint64 v = 0;
         if (!baud.isEmpty()) {
             if (!parseInt(baud, 50, 10000000, &v))
-                return fail(QStringLiteral("--baud needs a speed like 9600, not \"%1\".").arg(baud));
+                return fail(
+                    QStringLiteral("--baud needs a speed like 9600, not \"%1\".").arg(baud));
             o.link.baudRate = static_cast<qint32>(v);
         }
         if (!parity.isEmpty()) {
             const QString p = parity.toUpper();
-            if (p == QLatin1String("N") || p == QLatin1String("NONE")) o.link.parity = LinkSettings::Parity::None;
-            else if (p == QLatin1String("E") || p == QLatin1String("EVEN")) o.link.parity = LinkSettings::Parity::Even;
-            else if (p == QLatin1String("O") || p == QLatin1String("ODD")) o.link.parity = LinkSettings::Parity::Odd;
+            if (p == QLatin1String("N") || p == QLatin1String("NONE"))
+                o.link.parity = LinkSettings::Parity::None;
+            else if (p == QLatin1String("E") || p == QLatin1String("EVEN"))
+                o.link.parity = LinkSettings::Parity::Even;
+            else if (p == QLatin1String("O") || p == QLatin1String("ODD"))
+                o.link.parity = LinkSettings::Parity::Odd;
             else
                 return fail(QStringLiteral("--parity takes N, E or O, not \"%1\".").arg(parity));
         }
@@ -480,15 +550,20 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         }
     }
     o.link.autoReconnect = false; // a script wants the failure, not a retry loop
-    o.link.protocol = o.sim ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Auto;
+    o.link.protocol
+        = o.sim ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Auto;
     if (!protocol.isEmpty()) {
         const QString p = protocol.toLower();
         o.protocolGiven = true;
-        if (p == QLatin1String("facon")) o.link.protocol = LinkSettings::ProtocolChoice::Facon;
-        else if (p == QLatin1String("binary")) o.link.protocol = LinkSettings::ProtocolChoice::Binary;
-        else if (p == QLatin1String("auto")) o.link.protocol = LinkSettings::ProtocolChoice::Auto;
+        if (p == QLatin1String("facon"))
+            o.link.protocol = LinkSettings::ProtocolChoice::Facon;
+        else if (p == QLatin1String("binary"))
+            o.link.protocol = LinkSettings::ProtocolChoice::Binary;
+        else if (p == QLatin1String("auto"))
+            o.link.protocol = LinkSettings::ProtocolChoice::Auto;
         else
-            return fail(QStringLiteral("--protocol takes facon, binary or auto, not \"%1\".").arg(protocol));
+            return fail(QStringLiteral("--protocol takes facon, binary or auto, not \"%1\".")
+                            .arg(protocol));
     }
     qint64 v = 0;
     if (!stationText.isEmpty()) {
@@ -498,7 +573,8 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     }
     if (!timeoutText.isEmpty()) {
         if (!parseInt(timeoutText, 10, 60000, &v))
-            return fail(QStringLiteral("--timeout takes 10..60000 ms, not \"%1\".").arg(timeoutText));
+            return fail(
+                QStringLiteral("--timeout takes 10..60000 ms, not \"%1\".").arg(timeoutText));
         o.link.timeoutMs = static_cast<int>(v);
         o.timeoutGiven = true;
     }
@@ -510,8 +586,9 @@ CliParseResult parseCommandLine(const QStringList &arguments)
 
     // The commands, separated by --then.
     if (positional.isEmpty())
-        return fail(QStringLiteral("No command given (status, run, stop, read, write, set, reset, enable, disable, "
-                                   "forced, loopback, monitor, raw, scan)."));
+        return fail(QStringLiteral(
+            "No command given (status, run, stop, read, write, set, reset, enable, disable, "
+            "forced, loopback, monitor, raw, scan)."));
     QList<QStringList> parts{QStringList{}};
     for (const QString &p : positional) {
         if (p == QLatin1String("\x01then"))
@@ -525,7 +602,9 @@ CliParseResult parseCommandLine(const QStringList &arguments)
             return fail(QStringLiteral("--then needs a command on both sides."));
         names << part.first().toLower();
     }
-    auto uses = [&](const char *name) { return names.contains(QLatin1String(name)); };
+    auto uses = [&](const char *name) {
+        return names.contains(QLatin1String(name));
+    };
     if (countGiven && !uses("loopback"))
         return fail(QStringLiteral("--count only applies to loopback."));
     if ((intervalGiven || cyclesGiven) && !uses("monitor"))
@@ -547,7 +626,8 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     }
     if (cyclesGiven) {
         if (!parseInt(cyclesText, 1, 100000000, &v))
-            return fail(QStringLiteral("--cycles takes a positive number, not \"%1\".").arg(cyclesText));
+            return fail(
+                QStringLiteral("--cycles takes a positive number, not \"%1\".").arg(cyclesText));
         o.cycles = static_cast<int>(v);
     }
     for (qsizetype n = 0; n < parts.size(); ++n) {
@@ -555,14 +635,18 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         const QString error = parseStep(parts.at(n), frameGiven, forceHex, forceAscii, &step);
         if (!error.isEmpty())
             return fail(error);
-        const bool answerNeeded = step.command == CliCommand::ShowStatus || step.command == CliCommand::Read
-                                  || step.command == CliCommand::Forced || step.command == CliCommand::Loopback
-                                  || step.command == CliCommand::Monitor;
+        const bool answerNeeded
+            = step.command == CliCommand::ShowStatus || step.command == CliCommand::Read
+              || step.command == CliCommand::Forced || step.command == CliCommand::Loopback
+              || step.command == CliCommand::Monitor;
         if (o.station == Limits::broadcastStation && answerNeeded)
-            return fail(QStringLiteral("%1 needs an answer: station 0 is broadcast, PLCs do not answer it "
-                                       "(use --station 1..254).").arg(step.name));
+            return fail(
+                QStringLiteral("%1 needs an answer: station 0 is broadcast, PLCs do not answer it "
+                               "(use --station 1..254).")
+                    .arg(step.name));
         if (step.command == CliCommand::Monitor && o.cycles == 0 && n + 1 < parts.size())
-            return fail(QStringLiteral("monitor before --then needs --cycles: it would never end."));
+            return fail(
+                QStringLiteral("monitor before --then needs --cycles: it would never end."));
         o.steps << step;
     }
     return {o, {}};

@@ -16,14 +16,26 @@ namespace Fatek {
 // Exit codes of fatek-cli (documented in docs/cli.md).
 namespace ExitCode {
 inline constexpr int Ok = 0;
-inline constexpr int Internal = 1;  // the tool itself failed (e.g. the simulator could not listen)
-inline constexpr int Usage = 2;     // bad command line, or a request that cannot be valid
-inline constexpr int Link = 3;      // timeout, no connection, broken answers
-inline constexpr int Plc = 4;       // the PLC answered with an error code
-inline constexpr int ReadOnly = 5;  // refused by --read-only
+inline constexpr int Internal = 1; // the tool itself failed (e.g. the simulator could not listen)
+inline constexpr int Usage = 2;    // bad command line, or a request that cannot be valid
+inline constexpr int Link = 3;     // timeout, no connection, broken answers
+inline constexpr int Plc = 4;      // the PLC answered with an error code
+inline constexpr int ReadOnly = 5; // refused by --read-only
 } // namespace ExitCode
 
-enum class CliCommand { ShowStatus, Run, Stop, Read, Write, Control, Forced, Loopback, Monitor, Raw, Scan };
+enum class CliCommand {
+    ShowStatus,
+    Run,
+    Stop,
+    Read,
+    Write,
+    Control,
+    Forced,
+    Loopback,
+    Monitor,
+    Raw,
+    Scan
+};
 enum class OutputFormat { Table, Json, Csv };
 
 // One command of the command line (several may be chained with --then).
@@ -35,9 +47,9 @@ struct CliStep
     // read / write / forced / control / monitor
     QList<Address> addresses; // read of a mixed list, monitor items, else one start address
     std::uint32_t count = 1;
-    bool mixed = false;       // read: several addresses -> 48
+    bool mixed = false; // read: several addresses -> 48
     std::vector<std::uint32_t> values;
-    int controlOp = 0;        // DiscreteOp value for set/reset/enable/disable
+    int controlOp = 0; // DiscreteOp value for set/reset/enable/disable
 
     QByteArray loopbackData;
     QByteArray rawBytes;
@@ -54,14 +66,14 @@ struct CliOptions
     bool version = false;
 
     bool sim = false;
-    LinkSettings link;       // for --sim only the protocol and timing policy count
+    LinkSettings link; // for --sim only the protocol and timing policy count
     bool protocolGiven = false;
     bool timeoutGiven = false;
     std::uint8_t station = 1;
     bool readOnly = false;
     OutputFormat format = OutputFormat::Table;
 
-    QList<CliStep> steps;    // run in order; the first failure ends the program
+    QList<CliStep> steps; // run in order; the first failure ends the program
 
     int loopbackCount = 1;
     int intervalMs = 1000;
@@ -81,7 +93,8 @@ CliParseResult parseCommandLine(const QStringList &arguments);
 QString usageText();
 
 // "-5", "65535", "0x1F" for an element of `address`'s width; discretes also on/off.
-std::optional<std::uint32_t> parseValue(const QString &text, const Address &address, QString *error);
+std::optional<std::uint32_t> parseValue(const QString &text, const Address &address,
+                                        QString *error);
 // "01 40 0A" (two-digit hex tokens, or one token starting 0x / hex:) -> bytes; else the ASCII text.
 QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error);
 

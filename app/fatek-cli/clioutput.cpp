@@ -14,8 +14,8 @@ CliOutput::CliOutput(OutputFormat format)
 
 QString CliOutput::csvCell(const QString &text)
 {
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) && !text.contains(QLatin1Char('\n'))
-        && !text.contains(QLatin1Char(';')))
+    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"'))
+        && !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char(';')))
         return text;
     QString quoted = text;
     quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
@@ -96,7 +96,8 @@ void CliOutput::beginStream(const QStringList &columns, const QList<int> &minWid
     m_streamColumns = columns;
     m_streamWidths.clear();
     for (qsizetype i = 0; i < columns.size(); ++i)
-        m_streamWidths << std::max(static_cast<int>(columns.at(i).size()), i < minWidths.size() ? minWidths.at(i) : 0);
+        m_streamWidths << std::max(static_cast<int>(columns.at(i).size()),
+                                   i < minWidths.size() ? minWidths.at(i) : 0);
     if (m_format == OutputFormat::Json)
         return;
     QStringList header;
@@ -107,7 +108,8 @@ void CliOutput::beginStream(const QStringList &columns, const QList<int> &minWid
             header << (i == 0 ? columns.at(i).leftJustified(m_streamWidths.at(i))
                               : columns.at(i).rightJustified(m_streamWidths.at(i)));
     }
-    m_out << header.join(m_format == OutputFormat::Csv ? QStringLiteral(",") : QStringLiteral("  ")) << '\n';
+    m_out << header.join(m_format == OutputFormat::Csv ? QStringLiteral(",") : QStringLiteral("  "))
+          << '\n';
     m_out.flush();
 }
 

@@ -35,7 +35,8 @@ public:
     void beginStream(const QStringList &columns, const QList<int> &minWidths = {});
     void streamRow(const QStringList &cells, const QJsonObject &json);
 
-    // The reason on stderr in technician words; with --json also {"error":...,"code":...} on stdout.
+    // The reason on stderr in technician words; with --json also {"error":...,"code":...} on
+    // stdout.
     void error(const QString &message, int exitCode, const QJsonObject &extra = {});
     // A remark on stderr that does not change the exit code.
     void note(const QString &message);

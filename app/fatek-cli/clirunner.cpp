@@ -23,7 +23,8 @@ QString hexBytes(const QByteArray &bytes)
 
 QString hexBytes(const Bytes &bytes)
 {
-    return hexBytes(QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size())));
+    return hexBytes(QByteArray(reinterpret_cast<const char *>(bytes.data()),
+                               static_cast<qsizetype>(bytes.size())));
 }
 
 // Printable view of an answer: control characters as <02>, <03> ...
@@ -50,8 +51,10 @@ QString valueHex(std::uint32_t value, const Address &address)
     if (isDiscrete(address.type))
         return {};
     const int digits = isDoubleWord(address.type) ? 8 : 4;
-    return QStringLiteral("0x%1").arg(value, digits, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"),
-                                                                                            QLatin1String("0x"));
+    return QStringLiteral("0x%1")
+        .arg(value, digits, 16, QLatin1Char('0'))
+        .toUpper()
+        .replace(QLatin1String("0X"), QLatin1String("0x"));
 }
 
 QString yesNo(bool b)
@@ -73,7 +76,8 @@ CliRunner::CliRunner(const CliOptions &options, QObject *parent)
 {
     m_watchdog.setSingleShot(true);
     connect(&m_watchdog, &QTimer::timeout, this, [this] {
-        m_out.error(QStringLiteral("No result within %1 s: the link stalled.").arg(m_watchdog.interval() / 1000.0),
+        m_out.error(QStringLiteral("No result within %1 s: the link stalled.")
+                        .arg(m_watchdog.interval() / 1000.0),
                     ExitCode::Link);
         finish(ExitCode::Link);
     });
@@ -97,7 +101,8 @@ bool CliRunner::startSimulator(QString *error)
     if (!m_server->listenTcp(0, error))
         return false;
     const LinkSettings policy = m_options.link;
-    m_options.link = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort(), policy.protocol);
+    m_options.link
+        = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort(), policy.protocol);
     m_options.link.timeoutMs = policy.timeoutMs;
     m_options.link.retries = policy.retries;
     m_options.link.autoReconnect = false;
@@ -110,7 +115,8 @@ void CliRunner::start()
     if (m_options.sim) {
         QString error;
         if (!startSimulator(&error)) {
-            m_out.error(QStringLiteral("The embedded simulator could not listen: %1").arg(error), ExitCode::Internal);
+            m_out.error(QStringLiteral("The embedded simulator could not listen: %1").arg(error),
+                        ExitCode::Internal);
             finish(ExitCode::Internal);
             return;
         }
@@ -144,8 +150,9 @@ void CliRunner::onLinkState(LinkState state, const QString &reason)
         // Requests in flight finish with LinkError and report it themselves; polling and a link
         // that never came up have nobody else to tell.
         if (!m_dispatched || m_monitoring || m_handlers.isEmpty()) {
-            m_out.error(QStringLiteral("No connection to %1: %2").arg(m_options.link.toString(), reason),
-                        ExitCode::Link);
+            m_out.error(
+                QStringLiteral("No connection to %1: %2").arg(m_options.link.toString(), reason),
+                ExitCode::Link);
             finish(ExitCode::Link);
         }
     }
@@ -189,17 +196,13 @@ void CliRunner::onFinished(quint64 id, const SessionResult &result)
 int CliRunner::exitCodeFor(ErrorKind kind)
 {
     switch (kind) {
-    case ErrorKind::PlcError:
-        return ExitCode::Plc;
-    case ErrorKind::ReadOnly:
-        return ExitCode::ReadOnly;
+    case ErrorKind::PlcError: return ExitCode::Plc;
+    case ErrorKind::ReadOnly: return ExitCode::ReadOnly;
     case ErrorKind::InvalidAddress:
     case ErrorKind::LimitExceeded:
     case ErrorKind::InvalidRequest:
-    case ErrorKind::Unsupported:
-        return ExitCode::Usage;
-    default:
-        return ExitCode::Link;
+    case ErrorKind::Unsupported: return ExitCode::Usage;
+    default: return ExitCode::Link;
     }
 }
 
@@ -207,10 +210,13 @@ void CliRunner::failWith(const SessionResult &result)
 {
     const int code = exitCodeFor(result.errorKind());
     QJsonObject extra;
-    extra.insert(QStringLiteral("kind"), QString::fromLatin1(errorKindName(result.errorKind()).data(),
-                                                             static_cast<qsizetype>(errorKindName(result.errorKind()).size())));
+    extra.insert(
+        QStringLiteral("kind"),
+        QString::fromLatin1(errorKindName(result.errorKind()).data(),
+                            static_cast<qsizetype>(errorKindName(result.errorKind()).size())));
     if (result.errorKind() == ErrorKind::PlcError)
-        extra.insert(QStringLiteral("plcError"), QString::number(result.error().plcCode, 16).toUpper());
+        extra.insert(QStringLiteral("plcError"),
+                     QString::number(result.error().plcCode, 16).toUpper());
     QString text = result.errorText();
     if (text.isEmpty())
         text = QString::fromStdString(result.error().message);
@@ -276,7 +282,8 @@ void CliRunner::runStatus()
         if (!brief.ok())
             return failWith(brief);
         const Bytes briefBytes = brief.response().data;
-        submit(Request::detailStatus(m_options.station), [this, briefBytes](const SessionResult &detail) {
+        submit(Request::detailStatus(m_options.station), [this,
+                                                          briefBytes](const SessionResult &detail) {
             if (!detail.ok() && exitCodeFor(detail.errorKind()) == ExitCode::Link)
                 return failWith(detail);
             const std::uint8_t status1 = briefBytes.empty() ? 0 : briefBytes.front();
@@ -285,7 +292,8 @@ void CliRunner::runStatus()
             block.columns = {QStringLiteral("field"), QStringLiteral("value")};
             block.tableHeader = false;
             QJsonObject json;
-            auto add = [&](const QString &label, const QString &key, const QJsonValue &jsonValue, const QString &text) {
+            auto add = [&](const QString &label, const QString &key, const QJsonValue &jsonValue,
+                           const QString &text) {
                 block.rows << QStringList{label, text};
                 json.insert(key, jsonValue);
             };
@@ -293,52 +301,71 @@ void CliRunner::runStatus()
                 add(label, key, value, yesNo(value));
             };
             const auto proto = protocolName(m_session->protocol());
-            add(QStringLiteral("station"), QStringLiteral("station"), m_options.station, stationText());
+            add(QStringLiteral("station"), QStringLiteral("station"), m_options.station,
+                stationText());
             add(QStringLiteral("protocol"), QStringLiteral("protocol"),
                 QString::fromLatin1(proto.data(), static_cast<qsizetype>(proto.size())),
                 QString::fromLatin1(proto.data(), static_cast<qsizetype>(proto.size())));
-            add(QStringLiteral("mode"), QStringLiteral("mode"), s.running ? QStringLiteral("RUN") : QStringLiteral("STOP"),
+            add(QStringLiteral("mode"), QStringLiteral("mode"),
+                s.running ? QStringLiteral("RUN") : QStringLiteral("STOP"),
                 s.running ? QStringLiteral("RUN") : QStringLiteral("STOP"));
             add(QStringLiteral("STATUS1"), QStringLiteral("status1"), status1,
-                QStringLiteral("0x%1").arg(status1, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x")));
-            add(QStringLiteral("status bytes"), QStringLiteral("statusBytes"), hexBytes(briefBytes), hexBytes(briefBytes));
+                QStringLiteral("0x%1")
+                    .arg(status1, 2, 16, QLatin1Char('0'))
+                    .toUpper()
+                    .replace(QLatin1String("0X"), QLatin1String("0x")));
+            add(QStringLiteral("status bytes"), QStringLiteral("statusBytes"), hexBytes(briefBytes),
+                hexBytes(briefBytes));
             flag(QStringLiteral("running"), QStringLiteral("running"), s.running);
             flag(QStringLiteral("battery low"), QStringLiteral("batteryLow"), s.batteryLow);
-            flag(QStringLiteral("ladder checksum error"), QStringLiteral("ladderChecksumError"), s.ladderChecksumError);
+            flag(QStringLiteral("ladder checksum error"), QStringLiteral("ladderChecksumError"),
+                 s.ladderChecksumError);
             flag(QStringLiteral("memory pack"), QStringLiteral("memoryPack"), s.memoryPack);
-            flag(QStringLiteral("watchdog error"), QStringLiteral("watchdogError"), s.watchdogError);
+            flag(QStringLiteral("watchdog error"), QStringLiteral("watchdogError"),
+                 s.watchdogError);
             flag(QStringLiteral("ID set"), QStringLiteral("idSet"), s.idSet);
-            flag(QStringLiteral("emergency stop"), QStringLiteral("emergencyStop"), s.emergencyStop);
+            flag(QStringLiteral("emergency stop"), QStringLiteral("emergencyStop"),
+                 s.emergencyStop);
             if (detail.ok()) {
                 const DetailStatus d = DetailStatus::decode(detail.response().data);
                 QJsonObject dj;
-                block.rows << QStringList{QStringLiteral("detail"), QString::fromStdString(d.summary())};
+                block.rows << QStringList{QStringLiteral("detail"),
+                                          QString::fromStdString(d.summary())};
                 dj.insert(QStringLiteral("summary"), QString::fromStdString(d.summary()));
                 dj.insert(QStringLiteral("raw"), hexBytes(d.raw));
-                auto opt8 = [&](const QString &label, const QString &key, const std::optional<std::uint8_t> &v) {
+                auto opt8 = [&](const QString &label, const QString &key,
+                                const std::optional<std::uint8_t> &v) {
                     if (!v)
                         return;
                     block.rows << QStringList{label, QString::number(*v)};
                     dj.insert(key, *v);
                 };
-                auto opt16 = [&](const QString &label, const QString &key, const std::optional<std::uint16_t> &v) {
+                auto opt16 = [&](const QString &label, const QString &key,
+                                 const std::optional<std::uint16_t> &v) {
                     if (!v)
                         return;
                     block.rows << QStringList{label, QString::number(*v)};
                     dj.insert(key, *v);
                 };
-                opt8(QStringLiteral("main unit type"), QStringLiteral("mainUnitType"), d.mainUnitType);
-                opt8(QStringLiteral("I/O points code"), QStringLiteral("ioPointsCode"), d.ioPointsCode);
+                opt8(QStringLiteral("main unit type"), QStringLiteral("mainUnitType"),
+                     d.mainUnitType);
+                opt8(QStringLiteral("I/O points code"), QStringLiteral("ioPointsCode"),
+                     d.ioPointsCode);
                 if (d.osVersion) {
-                    const QString os = QStringLiteral("V%1.%2").arg(*d.osVersion >> 4).arg(*d.osVersion & 0xF);
+                    const QString os
+                        = QStringLiteral("V%1.%2").arg(*d.osVersion >> 4).arg(*d.osVersion & 0xF);
                     block.rows << QStringList{QStringLiteral("OS version"), os};
                     dj.insert(QStringLiteral("osVersion"), os);
                 }
                 opt16(QStringLiteral("program words"), QStringLiteral("ladderSize"), d.ladderSize);
-                opt16(QStringLiteral("X points"), QStringLiteral("discreteInputs"), d.discreteInputs);
-                opt16(QStringLiteral("Y points"), QStringLiteral("discreteOutputs"), d.discreteOutputs);
-                opt16(QStringLiteral("analog inputs"), QStringLiteral("analogInputs"), d.analogInputs);
-                opt16(QStringLiteral("analog outputs"), QStringLiteral("analogOutputs"), d.analogOutputs);
+                opt16(QStringLiteral("X points"), QStringLiteral("discreteInputs"),
+                      d.discreteInputs);
+                opt16(QStringLiteral("Y points"), QStringLiteral("discreteOutputs"),
+                      d.discreteOutputs);
+                opt16(QStringLiteral("analog inputs"), QStringLiteral("analogInputs"),
+                      d.analogInputs);
+                opt16(QStringLiteral("analog outputs"), QStringLiteral("analogOutputs"),
+                      d.analogOutputs);
                 opt16(QStringLiteral("M relays"), QStringLiteral("mRelays"), d.mRelays);
                 opt16(QStringLiteral("S relays"), QStringLiteral("sRelays"), d.sRelays);
                 opt16(QStringLiteral("L relays"), QStringLiteral("lRelays"), d.lRelays);
@@ -349,8 +376,9 @@ void CliRunner::runStatus()
                 json.insert(QStringLiteral("detail"), dj);
             } else {
                 // Some PLCs refuse 53: the brief status still stands.
-                block.rows << QStringList{QStringLiteral("detail"),
-                                          QStringLiteral("unavailable (%1)").arg(detail.errorText())};
+                block.rows << QStringList{
+                    QStringLiteral("detail"),
+                    QStringLiteral("unavailable (%1)").arg(detail.errorText())};
                 json.insert(QStringLiteral("detailError"), detail.errorText());
             }
             block.json << json;
@@ -369,11 +397,13 @@ void CliRunner::runRunStop(bool run)
             return failWith(r);
         const QString mode = run ? QStringLiteral("RUN") : QStringLiteral("STOP");
         OutputBlock block;
-        block.columns = {QStringLiteral("station"), QStringLiteral("command"), QStringLiteral("result")};
+        block.columns
+            = {QStringLiteral("station"), QStringLiteral("command"), QStringLiteral("result")};
         block.rows << QStringList{stationText(), mode, QStringLiteral("accepted")};
         QJsonObject json;
         json.insert(QStringLiteral("station"), m_options.station);
-        json.insert(QStringLiteral("command"), run ? QStringLiteral("run") : QStringLiteral("stop"));
+        json.insert(QStringLiteral("command"),
+                    run ? QStringLiteral("run") : QStringLiteral("stop"));
         json.insert(QStringLiteral("ok"), true);
         block.json << json;
         m_out.print(block);
@@ -381,15 +411,17 @@ void CliRunner::runRunStop(bool run)
     });
 }
 
-// --- read / write ----------------------------------------------------------------------------------
+// --- read / write
+// ----------------------------------------------------------------------------------
 
 void CliRunner::runRead()
 {
     const Address start = step().addresses.first();
     Request request;
     if (step().mixed)
-        request = Request::mixedRead(m_options.station,
-                                     std::vector<Address>(step().addresses.begin(), step().addresses.end()));
+        request
+            = Request::mixedRead(m_options.station, std::vector<Address>(step().addresses.begin(),
+                                                                         step().addresses.end()));
     else if (isDiscrete(start.type))
         request = Request::readDiscretes(m_options.station, start, step().count);
     else
@@ -405,16 +437,18 @@ void CliRunner::runRead()
         if (bitsOnly)
             block.columns.removeLast();
         if (m_options.format == OutputFormat::Csv)
-            block.columns = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("value")};
+            block.columns
+                = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("value")};
         QJsonArray all;
         for (std::size_t i = 0; i < values.size(); ++i) {
             const Address a = step().mixed ? step().addresses.at(static_cast<qsizetype>(i))
-                                              : start.advanced(static_cast<std::uint32_t>(i));
+                                           : start.advanced(static_cast<std::uint32_t>(i));
             const QString v = QString::number(values[i]);
             if (m_options.format == OutputFormat::Csv)
                 block.rows << QStringList{stationText(), addressText(a), v};
             else
-                block.rows << (bitsOnly ? QStringList{addressText(a), v} : QStringList{addressText(a), v, valueHex(values[i], a)});
+                block.rows << (bitsOnly ? QStringList{addressText(a), v}
+                                        : QStringList{addressText(a), v, valueHex(values[i], a)});
             all.append(static_cast<qint64>(values[i]));
             if (step().mixed) {
                 QJsonObject json;
@@ -446,11 +480,13 @@ void CliRunner::runWrite()
         if (!r.ok())
             return failWith(r);
         OutputBlock block;
-        block.columns = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("written")};
+        block.columns
+            = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("written")};
         QJsonArray all;
         for (std::size_t i = 0; i < step().values.size(); ++i) {
             const Address a = start.advanced(static_cast<std::uint32_t>(i));
-            block.rows << QStringList{stationText(), addressText(a), QString::number(step().values[i])};
+            block.rows << QStringList{stationText(), addressText(a),
+                                      QString::number(step().values[i])};
             all.append(static_cast<qint64>(step().values[i]));
         }
         QJsonObject json;
@@ -467,54 +503,61 @@ void CliRunner::runControl()
 {
     const Address a = step().addresses.first();
     const auto op = static_cast<DiscreteOp>(step().controlOp);
-    submit(Request::discreteControl(m_options.station, op, a), [this, a, op](const SessionResult &r) {
-        if (!r.ok())
-            return failWith(r);
-        const auto name = discreteOpName(op);
-        const QString action = QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
-        OutputBlock block;
-        block.columns = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("action")};
-        block.rows << QStringList{stationText(), addressText(a), action};
-        QJsonObject json;
-        json.insert(QStringLiteral("address"), addressText(a));
-        json.insert(QStringLiteral("station"), m_options.station);
-        json.insert(QStringLiteral("action"), action);
-        json.insert(QStringLiteral("ok"), true);
-        block.json << json;
-        m_out.print(block);
-        stepDone();
-    });
+    submit(
+        Request::discreteControl(m_options.station, op, a), [this, a, op](const SessionResult &r) {
+            if (!r.ok())
+                return failWith(r);
+            const auto name = discreteOpName(op);
+            const QString action
+                = QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
+            OutputBlock block;
+            block.columns
+                = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("action")};
+            block.rows << QStringList{stationText(), addressText(a), action};
+            QJsonObject json;
+            json.insert(QStringLiteral("address"), addressText(a));
+            json.insert(QStringLiteral("station"), m_options.station);
+            json.insert(QStringLiteral("action"), action);
+            json.insert(QStringLiteral("ok"), true);
+            block.json << json;
+            m_out.print(block);
+            stepDone();
+        });
 }
 
 void CliRunner::runForced()
 {
     const Address start = step().addresses.first();
-    submit(Request::readEnableFlags(m_options.station, start, step().count), [this, start](const SessionResult &r) {
-        if (!r.ok())
-            return failWith(r);
-        OutputBlock block;
-        block.columns = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("forced")};
-        QJsonArray all;
-        const auto &values = r.response().values;
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            const Address a = start.advanced(static_cast<std::uint32_t>(i));
-            block.rows << QStringList{stationText(), addressText(a),
-                                      m_options.format == OutputFormat::Table
-                                          ? (values[i] ? QStringLiteral("disabled (forced)") : QStringLiteral("enabled"))
-                                          : QString::number(values[i])};
-            all.append(static_cast<qint64>(values[i]));
-        }
-        QJsonObject json;
-        json.insert(QStringLiteral("address"), addressText(start));
-        json.insert(QStringLiteral("station"), m_options.station);
-        json.insert(QStringLiteral("forced"), all);
-        block.json << json;
-        m_out.print(block);
-        stepDone();
-    });
+    submit(Request::readEnableFlags(m_options.station, start, step().count),
+           [this, start](const SessionResult &r) {
+               if (!r.ok())
+                   return failWith(r);
+               OutputBlock block;
+               block.columns = {QStringLiteral("station"), QStringLiteral("address"),
+                                QStringLiteral("forced")};
+               QJsonArray all;
+               const auto &values = r.response().values;
+               for (std::size_t i = 0; i < values.size(); ++i) {
+                   const Address a = start.advanced(static_cast<std::uint32_t>(i));
+                   block.rows << QStringList{stationText(), addressText(a),
+                                             m_options.format == OutputFormat::Table
+                                                 ? (values[i] ? QStringLiteral("disabled (forced)")
+                                                              : QStringLiteral("enabled"))
+                                                 : QString::number(values[i])};
+                   all.append(static_cast<qint64>(values[i]));
+               }
+               QJsonObject json;
+               json.insert(QStringLiteral("address"), addressText(start));
+               json.insert(QStringLiteral("station"), m_options.station);
+               json.insert(QStringLiteral("forced"), all);
+               block.json << json;
+               m_out.print(block);
+               stepDone();
+           });
 }
 
-// --- loopback --------------------------------------------------------------------------------------
+// --- loopback
+// --------------------------------------------------------------------------------------
 
 void CliRunner::runLoopback()
 {
@@ -553,7 +596,9 @@ void CliRunner::loopbackNext()
         json.insert(QStringLiteral("mismatches"), m_loopMismatches);
         json.insert(QStringLiteral("timeouts"), m_loopTimeouts);
         // Microsecond resolution is all a round trip measurement can claim.
-        auto rounded = [](double v) { return std::round(v * 1000.0) / 1000.0; };
+        auto rounded = [](double v) {
+            return std::round(v * 1000.0) / 1000.0;
+        };
         json.insert(QStringLiteral("minMs"), rounded(min));
         json.insert(QStringLiteral("meanMs"), rounded(mean));
         json.insert(QStringLiteral("maxMs"), rounded(max));
@@ -564,7 +609,9 @@ void CliRunner::loopbackNext()
         m_out.note(QStringLiteral("%1 of %2 round trips failed%3")
                        .arg(m_loopSent - m_loopOk)
                        .arg(m_loopSent)
-                       .arg(m_loopLastError.isEmpty() ? QString() : QStringLiteral(" (last: %1)").arg(m_loopLastError)));
+                       .arg(m_loopLastError.isEmpty()
+                                ? QString()
+                                : QStringLiteral(" (last: %1)").arg(m_loopLastError)));
         return finish(ExitCode::Link);
     }
     ++m_loopSent;
@@ -577,8 +624,9 @@ void CliRunner::loopbackNext()
             } else {
                 ++m_loopMismatches;
                 m_loopLastError = QStringLiteral("echo \"%1\" differs from what was sent")
-                                      .arg(QString::fromLatin1(reinterpret_cast<const char *>(r.response().data.data()),
-                                                               static_cast<qsizetype>(r.response().data.size())));
+                                      .arg(QString::fromLatin1(
+                                          reinterpret_cast<const char *>(r.response().data.data()),
+                                          static_cast<qsizetype>(r.response().data.size())));
             }
         } else if (r.errorKind() == ErrorKind::Timeout) {
             ++m_loopTimeouts;
@@ -590,7 +638,8 @@ void CliRunner::loopbackNext()
     });
 }
 
-// --- monitor -----------------------------------------------------------------------------------------
+// --- monitor
+// -----------------------------------------------------------------------------------------
 
 void CliRunner::runMonitor()
 {
@@ -614,7 +663,8 @@ void CliRunner::runMonitor()
     if (m_options.format == OutputFormat::Csv)
         columns.insert(2, QStringLiteral("station"));
     m_out.beginStream(columns, m_options.format == OutputFormat::Csv ? QList<int>{} : widths);
-    armWatchdog(m_options.intervalMs + requestBudgetMs() * (1 + static_cast<int>(entries.size()) / 16));
+    armWatchdog(m_options.intervalMs
+                + requestBudgetMs() * (1 + static_cast<int>(entries.size()) / 16));
     m_session->setWatchList(entries);
 }
 
@@ -668,7 +718,8 @@ void CliRunner::onValues(const QList<WatchValue> &values)
     // Nothing read for three cycles in a row: the link is gone for practical purposes.
     m_staleCycles = (!anyGood && !staleReason.isEmpty()) ? m_staleCycles + 1 : 0;
     if (m_staleCycles >= 3) {
-        m_out.error(QStringLiteral("Nothing read for 3 cycles: %1").arg(staleReason), ExitCode::Link);
+        m_out.error(QStringLiteral("Nothing read for 3 cycles: %1").arg(staleReason),
+                    ExitCode::Link);
         return finish(ExitCode::Link);
     }
     if (m_options.cycles > 0 && m_cycle >= m_options.cycles) {
@@ -680,10 +731,12 @@ void CliRunner::onValues(const QList<WatchValue> &values)
         m_monitoring = false;
         return stepDone();
     }
-    armWatchdog(m_options.intervalMs + requestBudgetMs() * (1 + static_cast<int>(step().addresses.size()) / 16));
+    armWatchdog(m_options.intervalMs
+                + requestBudgetMs() * (1 + static_cast<int>(step().addresses.size()) / 16));
 }
 
-// --- raw ------------------------------------------------------------------------------------------------
+// --- raw
+// ------------------------------------------------------------------------------------------------
 
 void CliRunner::runRaw()
 {
@@ -730,38 +783,47 @@ void CliRunner::runRaw()
     send();
 }
 
-// --- scan -------------------------------------------------------------------------------------------------
+// --- scan
+// -------------------------------------------------------------------------------------------------
 
 void CliRunner::runScan()
 {
     m_scanner = std::make_unique<StationScanner>(m_session.get());
     const int timeout = m_options.timeoutGiven ? m_options.link.timeoutMs : 100;
-    const int perStation = timeout * (m_options.link.protocol == LinkSettings::ProtocolChoice::Auto ? 2 : 1) + 1000;
-    connect(m_scanner.get(), &StationScanner::progress, this, [this, perStation](int, int) { armWatchdog(perStation + 2000); });
-    connect(m_scanner.get(), &StationScanner::finished, this, [this](const QList<StationScanner::Hit> &hits) {
-        if (m_done)
-            return;
-        OutputBlock block;
-        block.columns = {QStringLiteral("station"), QStringLiteral("mode"), QStringLiteral("status bytes")};
-        for (const StationScanner::Hit &hit : hits) {
-            const QString mode = hit.status.running ? QStringLiteral("RUN") : QStringLiteral("STOP");
-            block.rows << QStringList{QString::number(hit.station), mode, hexBytes(hit.statusBytes)};
-            QJsonObject json;
-            json.insert(QStringLiteral("station"), hit.station);
-            json.insert(QStringLiteral("mode"), mode);
-            json.insert(QStringLiteral("running"), hit.status.running);
-            json.insert(QStringLiteral("status1"), hit.status.toStatus1());
-            json.insert(QStringLiteral("statusBytes"), hexBytes(hit.statusBytes));
-            block.json << json;
-        }
-        if (hits.isEmpty()) {
-            m_out.error(QStringLiteral("No station answered in %1..%2.").arg(step().scanFirst).arg(step().scanLast),
-                        ExitCode::Link);
-            return finish(ExitCode::Link);
-        }
-        m_out.print(block);
-        stepDone();
-    });
+    const int perStation
+        = timeout * (m_options.link.protocol == LinkSettings::ProtocolChoice::Auto ? 2 : 1) + 1000;
+    connect(m_scanner.get(), &StationScanner::progress, this,
+            [this, perStation](int, int) { armWatchdog(perStation + 2000); });
+    connect(m_scanner.get(), &StationScanner::finished, this,
+            [this](const QList<StationScanner::Hit> &hits) {
+                if (m_done)
+                    return;
+                OutputBlock block;
+                block.columns = {QStringLiteral("station"), QStringLiteral("mode"),
+                                 QStringLiteral("status bytes")};
+                for (const StationScanner::Hit &hit : hits) {
+                    const QString mode
+                        = hit.status.running ? QStringLiteral("RUN") : QStringLiteral("STOP");
+                    block.rows << QStringList{QString::number(hit.station), mode,
+                                              hexBytes(hit.statusBytes)};
+                    QJsonObject json;
+                    json.insert(QStringLiteral("station"), hit.station);
+                    json.insert(QStringLiteral("mode"), mode);
+                    json.insert(QStringLiteral("running"), hit.status.running);
+                    json.insert(QStringLiteral("status1"), hit.status.toStatus1());
+                    json.insert(QStringLiteral("statusBytes"), hexBytes(hit.statusBytes));
+                    block.json << json;
+                }
+                if (hits.isEmpty()) {
+                    m_out.error(QStringLiteral("No station answered in %1..%2.")
+                                    .arg(step().scanFirst)
+                                    .arg(step().scanLast),
+                                ExitCode::Link);
+                    return finish(ExitCode::Link);
+                }
+                m_out.print(block);
+                stepDone();
+            });
     armWatchdog(perStation + 2000);
     m_scanner->start(step().scanFirst, step().scanLast, timeout);
 }

@@ -22,7 +22,8 @@ int main(int argc, char *argv[])
         QTextStream(stderr) << "fatek-cli: " << parsed.error << "\nTry 'fatek-cli --help'.\n";
         if (arguments.contains(QLatin1String("--json"))) {
             // Scripts parsing stdout get the error in their format too.
-            const QJsonObject error{{QStringLiteral("error"), parsed.error}, {QStringLiteral("code"), ExitCode::Usage}};
+            const QJsonObject error{{QStringLiteral("error"), parsed.error},
+                                    {QStringLiteral("code"), ExitCode::Usage}};
             QTextStream(stdout) << QJsonDocument(error).toJson(QJsonDocument::Compact) << '\n';
         }
         return ExitCode::Usage;
@@ -37,8 +38,9 @@ int main(int argc, char *argv[])
     }
 
     CliRunner runner(*parsed.options);
-    QObject::connect(&runner, &CliRunner::done, &app, [](int code) { QCoreApplication::exit(code); },
-                     Qt::QueuedConnection);
+    QObject::connect(
+        &runner, &CliRunner::done, &app, [](int code) { QCoreApplication::exit(code); },
+        Qt::QueuedConnection);
     QTimer::singleShot(0, &runner, &CliRunner::start);
     return app.exec();
 }

@@ -11,9 +11,9 @@
 #include <cstdio>
 
 #ifdef Q_OS_UNIX
+#include <QSocketNotifier>
 #include <csignal>
 #include <unistd.h>
-#include <QSocketNotifier>
 #endif
 #ifdef Q_OS_WIN
 #include <windows.h>
@@ -60,7 +60,8 @@ void installQuitOnSignals(QCoreApplication &app)
 #elif defined(Q_OS_WIN)
 BOOL WINAPI onConsoleControl(DWORD)
 {
-    QMetaObject::invokeMethod(QCoreApplication::instance(), &QCoreApplication::quit, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(QCoreApplication::instance(), &QCoreApplication::quit,
+                              Qt::QueuedConnection);
     return TRUE;
 }
 
@@ -131,69 +132,146 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "Simulated FATEK PLC. Answers the FACON ASCII and the FATEK binary protocol on every endpoint\n"
-        "(told apart by the first byte of each frame). Stop with Ctrl-C."));
+    parser.setApplicationDescription(
+        QStringLiteral("Simulated FATEK PLC. Answers the FACON ASCII and the FATEK binary protocol "
+                       "on every endpoint\n"
+                       "(told apart by the first byte of each frame). Stop with Ctrl-C."));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption tcpOpt(QStringLiteral("tcp"), QStringLiteral("Listen on TCP <port> (0: any free port)."), QStringLiteral("port"));
-    const QCommandLineOption udpOpt(QStringLiteral("udp"), QStringLiteral("Listen on UDP <port> (0: any free port)."), QStringLiteral("port"));
-    const QCommandLineOption serialOpt(QStringLiteral("serial"), QStringLiteral("Serve on serial port <device> (e.g. /dev/pts/7, COM3)."), QStringLiteral("device"));
-    const QCommandLineOption serialBaudOpt(QStringLiteral("serial-baud"), QStringLiteral("Serial port speed (default 9600)."), QStringLiteral("baud"), QStringLiteral("9600"));
-    const QCommandLineOption serialFormatOpt(QStringLiteral("serial-format"), QStringLiteral("Serial data bits, parity, stop bits (default 7E1)."), QStringLiteral("format"), QStringLiteral("7E1"));
-    const QCommandLineOption bindOpt(QStringLiteral("bind"), QStringLiteral("Address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)."), QStringLiteral("address"), QStringLiteral("127.0.0.1"));
-    const QCommandLineOption stationOpt(QStringLiteral("station"), QStringLiteral("Station number 1..254 (default 1)."), QStringLiteral("n"), QStringLiteral("1"));
-    const QCommandLineOption profileOpt(QStringLiteral("profile"), QStringLiteral("Model profile: fbs (default) or m."), QStringLiteral("name"), QStringLiteral("fbs"));
-    const QCommandLineOption ladderOpt(QStringLiteral("demo-ladder"), QStringLiteral("Run the demo ladder in RUN mode (R0 counter, R1 sine, Y0 blink, DR10 ramp, X0..X7 walking bit)."));
-    const QCommandLineOption stopOpt(QStringLiteral("stop"), QStringLiteral("Start in STOP instead of RUN."));
-    const QCommandLineOption refuseOpt(QStringLiteral("refuse-run"), QStringLiteral("Answer RUN commands with error <code> (5, 6, 7 or 9)."), QStringLiteral("code"));
-    const QCommandLineOption verboseOpt(QStringLiteral("verbose"), QStringLiteral("Log one line per request."));
-    const QCommandLineOption latencyOpt(QStringLiteral("latency"), QStringLiteral("Fault: delay every answer by <ms>."), QStringLiteral("ms"));
-    const QCommandLineOption jitterOpt(QStringLiteral("jitter"), QStringLiteral("Fault: add 0..<ms> random delay."), QStringLiteral("ms"));
-    const QCommandLineOption turnaroundOpt(QStringLiteral("turnaround"), QStringLiteral("Slave turnaround delay in ms."), QStringLiteral("ms"));
-    const QCommandLineOption baudOpt(QStringLiteral("baud"), QStringLiteral("Line-speed emulation: delay each answer by its wire time at <baud> (10 bits per byte)."), QStringLiteral("baud"));
-    const QCommandLineOption dropOpt(QStringLiteral("drop"), QStringLiteral("Fault: drop this fraction of answers (0..1)."), QStringLiteral("rate"));
-    const QCommandLineOption corruptOpt(QStringLiteral("corrupt"), QStringLiteral("Fault: corrupt this fraction of answer bytes (0..1)."), QStringLiteral("rate"));
-    const QCommandLineOption garbageOpt(QStringLiteral("garbage"), QStringLiteral("Fault: send <n> noise bytes before each answer."), QStringLiteral("n"));
-    const QCommandLineOption chunkOpt(QStringLiteral("chunk"), QStringLiteral("Fault: split answers into pieces of <n> bytes."), QStringLiteral("n"));
-    const QCommandLineOption chunkDelayOpt(QStringLiteral("chunk-delay"), QStringLiteral("Fault: <ms> between answer pieces."), QStringLiteral("ms"));
-    const QCommandLineOption closeOpt(QStringLiteral("close-every"), QStringLiteral("Fault: close each TCP connection <s> seconds after it opens."), QStringLiteral("s"));
-    const QCommandLineOption wrongOpt(QStringLiteral("wrong-station"), QStringLiteral("Fault: answer this fraction of requests as another station (0..1)."), QStringLiteral("rate"));
-    const QCommandLineOption seedOpt(QStringLiteral("seed"), QStringLiteral("Seed of the random faults (default 1)."), QStringLiteral("n"), QStringLiteral("1"));
-    parser.addOptions({tcpOpt, udpOpt, serialOpt, serialBaudOpt, serialFormatOpt, bindOpt, stationOpt, profileOpt,
-                       ladderOpt, stopOpt, refuseOpt, verboseOpt, latencyOpt, jitterOpt, turnaroundOpt, baudOpt,
-                       dropOpt, corruptOpt, garbageOpt, chunkOpt, chunkDelayOpt, closeOpt, wrongOpt, seedOpt});
+    const QCommandLineOption tcpOpt(QStringLiteral("tcp"),
+                                    QStringLiteral("Listen on TCP <port> (0: any free port)."),
+                                    QStringLiteral("port"));
+    const QCommandLineOption udpOpt(QStringLiteral("udp"),
+                                    QStringLiteral("Listen on UDP <port> (0: any free port)."),
+                                    QStringLiteral("port"));
+    const QCommandLineOption serialOpt(
+        QStringLiteral("serial"),
+        QStringLiteral("Serve on serial port <device> (e.g. /dev/pts/7, COM3)."),
+        QStringLiteral("device"));
+    const QCommandLineOption serialBaudOpt(QStringLiteral("serial-baud"),
+                                           QStringLiteral("Serial port speed (default 9600)."),
+                                           QStringLiteral("baud"), QStringLiteral("9600"));
+    const QCommandLineOption serialFormatOpt(
+        QStringLiteral("serial-format"),
+        QStringLiteral("Serial data bits, parity, stop bits (default 7E1)."),
+        QStringLiteral("format"), QStringLiteral("7E1"));
+    const QCommandLineOption bindOpt(
+        QStringLiteral("bind"),
+        QStringLiteral("Address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)."),
+        QStringLiteral("address"), QStringLiteral("127.0.0.1"));
+    const QCommandLineOption stationOpt(QStringLiteral("station"),
+                                        QStringLiteral("Station number 1..254 (default 1)."),
+                                        QStringLiteral("n"), QStringLiteral("1"));
+    const QCommandLineOption profileOpt(QStringLiteral("profile"),
+                                        QStringLiteral("Model profile: fbs (default) or m."),
+                                        QStringLiteral("name"), QStringLiteral("fbs"));
+    const QCommandLineOption ladderOpt(
+        QStringLiteral("demo-ladder"),
+        QStringLiteral("Run the demo ladder in RUN mode (R0 counter, R1 sine, Y0 blink, DR10 ramp, "
+                       "X0..X7 walking bit)."));
+    const QCommandLineOption stopOpt(QStringLiteral("stop"),
+                                     QStringLiteral("Start in STOP instead of RUN."));
+    const QCommandLineOption refuseOpt(
+        QStringLiteral("refuse-run"),
+        QStringLiteral("Answer RUN commands with error <code> (5, 6, 7 or 9)."),
+        QStringLiteral("code"));
+    const QCommandLineOption verboseOpt(QStringLiteral("verbose"),
+                                        QStringLiteral("Log one line per request."));
+    const QCommandLineOption latencyOpt(QStringLiteral("latency"),
+                                        QStringLiteral("Fault: delay every answer by <ms>."),
+                                        QStringLiteral("ms"));
+    const QCommandLineOption jitterOpt(QStringLiteral("jitter"),
+                                       QStringLiteral("Fault: add 0..<ms> random delay."),
+                                       QStringLiteral("ms"));
+    const QCommandLineOption turnaroundOpt(QStringLiteral("turnaround"),
+                                           QStringLiteral("Slave turnaround delay in ms."),
+                                           QStringLiteral("ms"));
+    const QCommandLineOption baudOpt(QStringLiteral("baud"),
+                                     QStringLiteral("Line-speed emulation: delay each answer by "
+                                                    "its wire time at <baud> (10 bits per byte)."),
+                                     QStringLiteral("baud"));
+    const QCommandLineOption dropOpt(QStringLiteral("drop"),
+                                     QStringLiteral("Fault: drop this fraction of answers (0..1)."),
+                                     QStringLiteral("rate"));
+    const QCommandLineOption corruptOpt(
+        QStringLiteral("corrupt"),
+        QStringLiteral("Fault: corrupt this fraction of answer bytes (0..1)."),
+        QStringLiteral("rate"));
+    const QCommandLineOption garbageOpt(
+        QStringLiteral("garbage"),
+        QStringLiteral("Fault: send <n> noise bytes before each answer."), QStringLiteral("n"));
+    const QCommandLineOption chunkOpt(
+        QStringLiteral("chunk"), QStringLiteral("Fault: split answers into pieces of <n> bytes."),
+        QStringLiteral("n"));
+    const QCommandLineOption chunkDelayOpt(QStringLiteral("chunk-delay"),
+                                           QStringLiteral("Fault: <ms> between answer pieces."),
+                                           QStringLiteral("ms"));
+    const QCommandLineOption closeOpt(
+        QStringLiteral("close-every"),
+        QStringLiteral("Fault: close each TCP connection <s> seconds after it opens."),
+        QStringLiteral("s"));
+    const QCommandLineOption wrongOpt(
+        QStringLiteral("wrong-station"),
+        QStringLiteral("Fault: answer this fraction of requests as another station (0..1)."),
+        QStringLiteral("rate"));
+    const QCommandLineOption seedOpt(QStringLiteral("seed"),
+                                     QStringLiteral("Seed of the random faults (default 1)."),
+                                     QStringLiteral("n"), QStringLiteral("1"));
+    parser.addOptions({tcpOpt,        udpOpt,     serialOpt,  serialBaudOpt, serialFormatOpt,
+                       bindOpt,       stationOpt, profileOpt, ladderOpt,     stopOpt,
+                       refuseOpt,     verboseOpt, latencyOpt, jitterOpt,     turnaroundOpt,
+                       baudOpt,       dropOpt,    corruptOpt, garbageOpt,    chunkOpt,
+                       chunkDelayOpt, closeOpt,   wrongOpt,   seedOpt});
     parser.process(app);
 
     if (!parser.isSet(tcpOpt) && !parser.isSet(udpOpt) && !parser.isSet(serialOpt))
-        return fail(QStringLiteral("nothing to serve: give --tcp, --udp and/or --serial (see --help)."));
+        return fail(
+            QStringLiteral("nothing to serve: give --tcp, --udp and/or --serial (see --help)."));
 
     const auto profile = ModelProfile::byName(parser.value(profileOpt).toStdString());
     if (!profile)
-        return fail(QStringLiteral("unknown profile \"%1\": use fbs or m.").arg(parser.value(profileOpt)));
+        return fail(
+            QStringLiteral("unknown profile \"%1\": use fbs or m.").arg(parser.value(profileOpt)));
     int station = 1;
     if (!parseInt(parser.value(stationOpt), 1, 254, &station))
-        return fail(QStringLiteral("station must be 1..254, not \"%1\".").arg(parser.value(stationOpt)));
+        return fail(
+            QStringLiteral("station must be 1..254, not \"%1\".").arg(parser.value(stationOpt)));
     const QHostAddress bind(parser.value(bindOpt));
     if (bind.isNull())
         return fail(QStringLiteral("\"%1\" is not an IP address.").arg(parser.value(bindOpt)));
 
     FaultConfig faults;
-    struct IntKnob { const QCommandLineOption *option; int *value; int max; };
+    struct IntKnob
+    {
+        const QCommandLineOption *option;
+        int *value;
+        int max;
+    };
     const IntKnob intKnobs[] = {
-        {&latencyOpt, &faults.latencyMs, 600000}, {&jitterOpt, &faults.jitterMs, 600000},
-        {&turnaroundOpt, &faults.turnaroundMs, 600000}, {&baudOpt, &faults.baud, 10000000},
-        {&garbageOpt, &faults.garbageBytes, 100000}, {&chunkOpt, &faults.chunkSize, 100000},
-        {&chunkDelayOpt, &faults.chunkDelayMs, 600000}, {&closeOpt, &faults.closeEverySeconds, 86400},
+        {&latencyOpt, &faults.latencyMs, 600000},
+        {&jitterOpt, &faults.jitterMs, 600000},
+        {&turnaroundOpt, &faults.turnaroundMs, 600000},
+        {&baudOpt, &faults.baud, 10000000},
+        {&garbageOpt, &faults.garbageBytes, 100000},
+        {&chunkOpt, &faults.chunkSize, 100000},
+        {&chunkDelayOpt, &faults.chunkDelayMs, 600000},
+        {&closeOpt, &faults.closeEverySeconds, 86400},
     };
     for (const IntKnob &k : intKnobs) {
         if (parser.isSet(*k.option) && !parseInt(parser.value(*k.option), 0, k.max, k.value)) {
             return fail(QStringLiteral("--%1 needs a whole number 0..%2, not \"%3\".")
-                            .arg(k.option->names().constFirst()).arg(k.max).arg(parser.value(*k.option)));
+                            .arg(k.option->names().constFirst())
+                            .arg(k.max)
+                            .arg(parser.value(*k.option)));
         }
     }
-    struct RateKnob { const QCommandLineOption *option; double *value; };
-    const RateKnob rateKnobs[] = {{&dropOpt, &faults.dropRate}, {&corruptOpt, &faults.corruptRate},
+    struct RateKnob
+    {
+        const QCommandLineOption *option;
+        double *value;
+    };
+    const RateKnob rateKnobs[] = {{&dropOpt, &faults.dropRate},
+                                  {&corruptOpt, &faults.corruptRate},
                                   {&wrongOpt, &faults.wrongStationRate}};
     for (const RateKnob &k : rateKnobs) {
         if (parser.isSet(*k.option) && !parseRate(parser.value(*k.option), k.value)) {
@@ -204,7 +282,8 @@ int main(int argc, char *argv[])
     bool seedOk = false;
     faults.seed = parser.value(seedOpt).toUInt(&seedOk);
     if (!seedOk)
-        return fail(QStringLiteral("--seed needs a whole number, not \"%1\".").arg(parser.value(seedOpt)));
+        return fail(
+            QStringLiteral("--seed needs a whole number, not \"%1\".").arg(parser.value(seedOpt)));
 
     SimulatedPlc plc(*profile);
     plc.setRunning(!parser.isSet(stopOpt));
@@ -222,13 +301,15 @@ int main(int argc, char *argv[])
     server.setBindAddress(bind);
     server.setFaults(faults);
     server.setVerbose(parser.isSet(verboseOpt));
-    QObject::connect(&server, &SimServer::logLine, &app, [](const QString &line) { out() << line << Qt::endl; });
+    QObject::connect(&server, &SimServer::logLine, &app,
+                     [](const QString &line) { out() << line << Qt::endl; });
 
     QString error;
     if (parser.isSet(tcpOpt)) {
         int port = 0;
         if (!parseInt(parser.value(tcpOpt), 0, 65535, &port))
-            return fail(QStringLiteral("--tcp needs a port 0..65535, not \"%1\".").arg(parser.value(tcpOpt)));
+            return fail(QStringLiteral("--tcp needs a port 0..65535, not \"%1\".")
+                            .arg(parser.value(tcpOpt)));
         if (!server.listenTcp(static_cast<quint16>(port), &error))
             return fail(error);
         out() << "listening on tcp " << bind.toString() << ':' << server.tcpPort() << Qt::endl;
@@ -236,7 +317,8 @@ int main(int argc, char *argv[])
     if (parser.isSet(udpOpt)) {
         int port = 0;
         if (!parseInt(parser.value(udpOpt), 0, 65535, &port))
-            return fail(QStringLiteral("--udp needs a port 0..65535, not \"%1\".").arg(parser.value(udpOpt)));
+            return fail(QStringLiteral("--udp needs a port 0..65535, not \"%1\".")
+                            .arg(parser.value(udpOpt)));
         if (!server.listenUdp(static_cast<quint16>(port), &error))
             return fail(error);
         out() << "listening on udp " << bind.toString() << ':' << server.udpPort() << Qt::endl;
@@ -246,18 +328,21 @@ int main(int argc, char *argv[])
         serial.portName = parser.value(serialOpt);
         int baud = 0;
         if (!parseInt(parser.value(serialBaudOpt), 50, 10000000, &baud))
-            return fail(QStringLiteral("--serial-baud needs a speed, not \"%1\".").arg(parser.value(serialBaudOpt)));
+            return fail(QStringLiteral("--serial-baud needs a speed, not \"%1\".")
+                            .arg(parser.value(serialBaudOpt)));
         serial.baudRate = baud;
         if (!parseSerialFormat(parser.value(serialFormatOpt), &serial))
-            return fail(QStringLiteral("--serial-format takes e.g. 7E1 or 8N1, not \"%1\".").arg(parser.value(serialFormatOpt)));
+            return fail(QStringLiteral("--serial-format takes e.g. 7E1 or 8N1, not \"%1\".")
+                            .arg(parser.value(serialFormatOpt)));
         if (!server.openSerial(serial, &error))
             return fail(error);
         out() << "listening on serial " << serial.portName << Qt::endl;
     }
     server.setDemoLadder(parser.isSet(ladderOpt));
-    out() << "station " << station << ", profile " << QString::fromStdString(profile->description) << ", "
-          << (plc.isRunning() ? "RUN" : "STOP") << (server.demoLadder() ? ", demo ladder" : "")
-          << ", faults: " << faults.describe() << Qt::endl;
+    out() << "station " << station << ", profile " << QString::fromStdString(profile->description)
+          << ", " << (plc.isRunning() ? "RUN" : "STOP")
+          << (server.demoLadder() ? ", demo ladder" : "") << ", faults: " << faults.describe()
+          << Qt::endl;
 
     installQuitOnSignals(app);
     const int rc = app.exec();

@@ -40,12 +40,9 @@ std::size_t addressBytes(const Address &a, Protocol p)
 std::size_t valueBytes(ElementType type, Protocol p)
 {
     switch (elementInfo(type).width) {
-    case ElementWidth::Bit:
-        return 1;
-    case ElementWidth::Word:
-        return p == Protocol::Facon ? 4 : 2;
-    case ElementWidth::DoubleWord:
-        return p == Protocol::Facon ? 8 : 4;
+    case ElementWidth::Bit: return 1;
+    case ElementWidth::Word: return p == Protocol::Facon ? 4 : 2;
+    case ElementWidth::DoubleWord: return p == Protocol::Facon ? 8 : 4;
     }
     return 0;
 }
@@ -81,7 +78,8 @@ struct Cost
     Cost operator+(const Cost &o) const { return {requests + o.requests, bytes + o.bytes}; }
 };
 
-constexpr Cost unreachable{std::numeric_limits<std::uint32_t>::max(), std::numeric_limits<std::size_t>::max()};
+constexpr Cost unreachable{std::numeric_limits<std::uint32_t>::max(),
+                           std::numeric_limits<std::size_t>::max()};
 
 bool isReachable(const Cost &c)
 {
@@ -97,7 +95,8 @@ std::uint32_t maxRunElements(ElementType type)
 
 Request singleRead(std::uint8_t station, const Address &a)
 {
-    return isDiscrete(a.type) ? Request::readDiscretes(station, a, 1) : Request::readRegisters(station, a, 1);
+    return isDiscrete(a.type) ? Request::readDiscretes(station, a, 1)
+                              : Request::readRegisters(station, a, 1);
 }
 
 Request runRead(std::uint8_t station, const Address &start, std::uint32_t count)
@@ -189,8 +188,10 @@ public:
         for (std::size_t W = 0; W <= reach; ++W) {
             if (!isReachable(best[W]))
                 continue;
-            const std::size_t packs = (W + Limits::maxMixedReadWords - 1) / Limits::maxMixedReadWords;
-            const Cost total = best[W] + Cost{static_cast<std::uint32_t>(packs), packs * m_packOverhead};
+            const std::size_t packs
+                = (W + Limits::maxMixedReadWords - 1) / Limits::maxMixedReadWords;
+            const Cost total
+                = best[W] + Cost{static_cast<std::uint32_t>(packs), packs * m_packOverhead};
             if (total < bestTotal) {
                 bestTotal = total;
                 bestWords = W;
@@ -219,7 +220,8 @@ private:
         return PollPlanner::queryBytes(r, m_protocol) + PollPlanner::responseBytes(r, m_protocol);
     }
 
-    std::vector<Segment> buildSegments(const std::vector<Address> &addresses, const std::set<Address> &blockers,
+    std::vector<Segment> buildSegments(const std::vector<Address> &addresses,
+                                       const std::set<Address> &blockers,
                                        StationResult &result) const
     {
         // addresses are sorted and distinct; group by (type, residue).
@@ -252,7 +254,8 @@ private:
                 return false;
             };
             for (std::uint32_t number : numbers) {
-                const bool tooFar = !current.empty() && (number - current.back()) / step + 1 > limit;
+                const bool tooFar
+                    = !current.empty() && (number - current.back()) / step + 1 > limit;
                 if (tooFar || current.size() >= maxSegmentItems
                     || (!current.empty() && blockedBetween(current.back(), number)))
                     flush();
@@ -345,7 +348,8 @@ private:
 std::vector<std::vector<Address>> packPool(std::vector<Address> pooled)
 {
     std::sort(pooled.begin(), pooled.end());
-    std::stable_partition(pooled.begin(), pooled.end(), [](const Address &a) { return a.words() == 2; });
+    std::stable_partition(pooled.begin(), pooled.end(),
+                          [](const Address &a) { return a.words() == 2; });
     std::vector<std::vector<Address>> packs;
     std::vector<std::uint32_t> used;
     for (const Address &a : pooled) {
@@ -395,7 +399,8 @@ Plan PollPlanner::plan(std::span<const WatchItem> items) const
     return plan(items, {});
 }
 
-Plan PollPlanner::plan(std::span<const WatchItem> items, const std::set<StationAddress> &isolated) const
+Plan PollPlanner::plan(std::span<const WatchItem> items,
+                       const std::set<StationAddress> &isolated) const
 {
     Plan result;
     // station -> address -> ids (input order)
@@ -404,7 +409,8 @@ Plan PollPlanner::plan(std::span<const WatchItem> items, const std::set<StationA
         if (item.station == Limits::broadcastStation) {
             result.unplannable.push_back(
                 {item.id, item.address.toString()
-                              + ": station 0 is broadcast; PLCs do not answer it, so nothing can be read there."});
+                              + ": station 0 is broadcast; PLCs do not answer it, so nothing can "
+                                "be read there."});
             continue;
         }
         if (Status s = validateRequest(singleRead(item.station, item.address), m_protocol); !s) {
@@ -416,13 +422,14 @@ Plan PollPlanner::plan(std::span<const WatchItem> items, const std::set<StationA
 
     StationSolver solver(m_protocol);
     for (const auto &[station, elements] : stations) {
-        auto slotsFor = [&elements](const Address &a, std::uint32_t valueIndex, std::vector<PlanSlot> &out) {
-            const auto it = elements.find(a);
-            if (it == elements.end())
-                return;
-            for (std::uint64_t id : it->second)
-                out.push_back({id, valueIndex});
-        };
+        auto slotsFor
+            = [&elements](const Address &a, std::uint32_t valueIndex, std::vector<PlanSlot> &out) {
+                  const auto it = elements.find(a);
+                  if (it == elements.end())
+                      return;
+                  for (std::uint64_t id : it->second)
+                      out.push_back({id, valueIndex});
+              };
 
         std::vector<Address> batchable;
         std::set<Address> blockers;
@@ -482,7 +489,8 @@ std::vector<PlanStep> PollPlanner::split(const PlanStep &failed) const
     }
     std::vector<std::uint32_t> used;
     for (const PlanSlot &s : failed.itemSlots) {
-        if (r.command == Command::MixedRead ? s.valueIndex < r.addresses.size() : s.valueIndex < r.count)
+        if (r.command == Command::MixedRead ? s.valueIndex < r.addresses.size()
+                                            : s.valueIndex < r.count)
             used.push_back(s.valueIndex);
     }
     std::sort(used.begin(), used.end());
@@ -495,7 +503,8 @@ std::vector<PlanStep> PollPlanner::split(const PlanStep &failed) const
     };
     const std::size_t half = (used.size() + 1) / 2;
     std::vector<PlanStep> out;
-    for (const auto &[begin, end] : {std::pair{std::size_t{0}, half}, std::pair{half, used.size()}}) {
+    for (const auto &[begin, end] :
+         {std::pair{std::size_t{0}, half}, std::pair{half, used.size()}}) {
         const std::vector<std::uint32_t> part(used.begin() + static_cast<std::ptrdiff_t>(begin),
                                               used.begin() + static_cast<std::ptrdiff_t>(end));
         // old value index -> new value index
@@ -530,22 +539,16 @@ std::size_t PollPlanner::queryBytes(const Request &r, Protocol p)
     std::size_t data = 0;
     switch (r.command) {
     case Command::BriefStatus:
-    case Command::DetailStatus:
-        break;
-    case Command::RunStop:
-        data = 1;
-        break;
-    case Command::DiscreteControl:
-        data = 1 + addressBytes(r.start, p);
-        break;
+    case Command::DetailStatus: break;
+    case Command::RunStop: data = 1; break;
+    case Command::DiscreteControl: data = 1 + addressBytes(r.start, p); break;
     case Command::ReadEnableFlags:
     case Command::ReadDiscretes:
-    case Command::ReadRegisters:
-        data = countBytes(p) + addressBytes(r.start, p);
-        break;
+    case Command::ReadRegisters: data = countBytes(p) + addressBytes(r.start, p); break;
     case Command::WriteDiscretes:
     case Command::WriteRegisters:
-        data = countBytes(p) + addressBytes(r.start, p) + r.values.size() * valueBytes(r.start.type, p);
+        data = countBytes(p) + addressBytes(r.start, p)
+               + r.values.size() * valueBytes(r.start.type, p);
         break;
     case Command::MixedRead:
         data = countBytes(p);
@@ -557,9 +560,7 @@ std::size_t PollPlanner::queryBytes(const Request &r, Protocol p)
         for (const Address &a : r.addresses)
             data += addressBytes(a, p) + valueBytes(a.type, p);
         break;
-    case Command::Loopback:
-        data = r.data.size();
-        break;
+    case Command::Loopback: data = r.data.size(); break;
     case Command::ReadProgram:
     case Command::WriteProgram:
         if (p != Protocol::Facon)
@@ -576,17 +577,13 @@ std::size_t PollPlanner::responseBytes(const Request &r, Protocol p)
 {
     std::size_t data = 0;
     switch (r.command) {
-    case Command::BriefStatus:
-        data = 3 * statusByteBytes(p);
-        break;
-    case Command::DetailStatus:
-        return 0; // length depends on the model (binary: undocumented)
+    case Command::BriefStatus: data = 3 * statusByteBytes(p); break;
+    case Command::DetailStatus: return 0; // length depends on the model (binary: undocumented)
     case Command::RunStop:
     case Command::DiscreteControl:
     case Command::WriteDiscretes:
     case Command::WriteRegisters:
-    case Command::MixedWrite:
-        break;
+    case Command::MixedWrite: break;
     case Command::WriteProgram:
         if (p != Protocol::Facon)
             return 0;
@@ -595,9 +592,7 @@ std::size_t PollPlanner::responseBytes(const Request &r, Protocol p)
     case Command::ReadDiscretes:
         data = r.count; // one char / byte per point
         break;
-    case Command::ReadRegisters:
-        data = r.count * valueBytes(r.start.type, p);
-        break;
+    case Command::ReadRegisters: data = r.count * valueBytes(r.start.type, p); break;
     case Command::MixedRead:
         for (const Address &a : r.addresses)
             data += valueBytes(a.type, p);

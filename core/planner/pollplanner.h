@@ -32,7 +32,8 @@ struct PlanStep
 struct UnplannableItem
 {
     std::uint64_t itemId = 0;
-    std::string reason; // technician words, e.g. "F12: F elements are not available in the FACON protocol ..."
+    std::string reason; // technician words, e.g. "F12: F elements are not available in the FACON
+                        // protocol ..."
 };
 
 struct Plan
@@ -48,8 +49,9 @@ struct Plan
 // consecutive runs of one element type via 44 (discretes, <= 256 points) or 46 (registers,
 // <= 64 words, 32-bit elements count 2), everything else packed into 48 mixed reads (<= 64 words).
 // Reading the elements between two items (bridging a gap) is chosen whenever it is cheaper in
-// bytes than the alternatives. The optimisation is exact for this request model (see pollplanner.cpp).
-// Pure and stateless: re-plan whenever the watch list (or the set of isolated elements) changes.
+// bytes than the alternatives. The optimisation is exact for this request model (see
+// pollplanner.cpp). Pure and stateless: re-plan whenever the watch list (or the set of isolated
+// elements) changes.
 class PollPlanner
 {
 public:
@@ -65,8 +67,8 @@ public:
     Plan plan(std::span<const WatchItem> items, const std::set<StationAddress> &isolated) const;
 
     // Isolation: split a failed step into two halves (each a valid request, trimmed to the items it
-    // serves), or nothing if it serves a single element. Repeating on the failing half finds one bad
-    // element among n in ceil(log2 n) rounds.
+    // serves), or nothing if it serves a single element. Repeating on the failing half finds one
+    // bad element among n in ceil(log2 n) rounds.
     std::vector<PlanStep> split(const PlanStep &failed) const;
 
     // Exact frame size on the wire of the query; 0 if the command does not exist in `p`.

@@ -28,7 +28,8 @@ Result<Address> Address::parse(std::string_view text)
         text.remove_suffix(1);
     const std::string shown(text);
     if (text.empty())
-        return makeError(ErrorKind::InvalidAddress, "Empty address: type an element such as R12 or X0.");
+        return makeError(ErrorKind::InvalidAddress,
+                         "Empty address: type an element such as R12 or X0.");
 
     std::size_t split = 0;
     while (split < text.size() && std::isalpha(static_cast<unsigned char>(text[split])))
@@ -37,13 +38,15 @@ Result<Address> Address::parse(std::string_view text)
     const std::string_view digits = text.substr(split);
     if (symbol.empty()) {
         return makeError(ErrorKind::InvalidAddress,
-                         "Invalid address \"" + shown + "\": it must start with an element type such as R, X or DWM.");
+                         "Invalid address \"" + shown
+                             + "\": it must start with an element type such as R, X or DWM.");
     }
     const auto type = elementTypeFromSymbol(symbol);
     if (!type) {
-        return makeError(ErrorKind::InvalidAddress,
-                         "Invalid address \"" + shown + "\": unknown element type \"" + std::string(symbol)
-                             + "\" (known: X Y M S T C, WX..WC, RT RC R D F, DWX..DWC, DRT DRC DR DD DF).");
+        return makeError(
+            ErrorKind::InvalidAddress,
+            "Invalid address \"" + shown + "\": unknown element type \"" + std::string(symbol)
+                + "\" (known: X Y M S T C, WX..WC, RT RC R D F, DWX..DWC, DRT DRC DR DD DF).");
     }
     if (digits.empty()) {
         return makeError(ErrorKind::InvalidAddress,
@@ -74,15 +77,16 @@ Status validateAddress(const Address &address)
     const ElementInfo &i = address.info();
     if (address.number > i.maxNumber) {
         return makeError(ErrorKind::InvalidAddress,
-                         "Address " + address.toString() + " is out of range: " + std::string(i.symbol)
+                         "Address " + address.toString()
+                             + " is out of range: " + std::string(i.symbol)
                              + " numbers go from 0 to " + std::to_string(i.maxNumber) + ".");
     }
     if (address.number % i.alignment != 0) {
         return makeError(ErrorKind::InvalidAddress,
-                         "Address " + address.toString() + " is not aligned: " + std::string(i.symbol)
-                             + " must start at a multiple of " + std::to_string(i.alignment) + " (e.g. "
-                             + std::string(i.symbol) + std::to_string(address.number / i.alignment * i.alignment)
-                             + ").");
+                         "Address " + address.toString() + " is not aligned: "
+                             + std::string(i.symbol) + " must start at a multiple of "
+                             + std::to_string(i.alignment) + " (e.g. " + std::string(i.symbol)
+                             + std::to_string(address.number / i.alignment * i.alignment) + ").");
     }
     return Ok{};
 }

@@ -28,10 +28,7 @@ struct Address
     std::string toFaconString() const;
 
     // The element `index` positions after this one in a consecutive read (WY0 + 1 = WY16).
-    Address advanced(std::uint32_t index) const
-    {
-        return {type, number + index * info().step};
-    }
+    Address advanced(std::uint32_t index) const { return {type, number + index * info().step}; }
 
     // Accepts what users type: "R12", "r12", "DWM0", "X16", "D00012", " wy8 ".
     // Checks the number against the largest model's range and W/DW alignment.

@@ -63,9 +63,7 @@ std::size_t valueSize(ElementType type)
 void appendValue(Bytes &out, ElementType type, std::uint32_t value)
 {
     switch (valueSize(type)) {
-    case 1:
-        out.push_back(value != 0 ? 1 : 0);
-        break;
+    case 1: out.push_back(value != 0 ? 1 : 0); break;
     case 4:
         out.push_back(static_cast<std::uint8_t>(value >> 24));
         out.push_back(static_cast<std::uint8_t>(value >> 16));
@@ -133,26 +131,30 @@ struct ParsedFrame
 Result<ParsedFrame> parseFrame(std::span<const std::uint8_t> frame)
 {
     if (frame.size() < kOverhead + 2) {
-        return makeError(ErrorKind::BadFrame,
-                         "Binary frame too short (" + std::to_string(frame.size())
-                             + " bytes): a frame has at least 10 bytes.");
+        return makeError(ErrorKind::BadFrame, "Binary frame too short ("
+                                                  + std::to_string(frame.size())
+                                                  + " bytes): a frame has at least 10 bytes.");
     }
     if (frame[0] != BinaryCodec::queryHeader && frame[0] != BinaryCodec::responseHeader) {
-        return makeError(ErrorKind::BadFrame,
-                         "Binary frame starts with " + hex2(frame[0]) + " instead of 51 (query) or 52 (answer).");
+        return makeError(ErrorKind::BadFrame, "Binary frame starts with " + hex2(frame[0])
+                                                  + " instead of 51 (query) or 52 (answer).");
     }
     if (frame[1] != BinaryCodec::frameId)
-        return makeError(ErrorKind::BadFrame, "Binary frame ID is " + hex2(frame[1]) + " instead of 10.");
+        return makeError(ErrorKind::BadFrame,
+                         "Binary frame ID is " + hex2(frame[1]) + " instead of 10.");
     const std::size_t length = readNumber(frame, 2, 2);
     if (length + kOverhead != frame.size()) {
-        return makeError(ErrorKind::BadFrame,
-                         "Binary frame length field says " + std::to_string(length) + " payload bytes but the frame carries "
-                             + std::to_string(frame.size() < kOverhead ? 0 : frame.size() - kOverhead) + ".");
+        return makeError(
+            ErrorKind::BadFrame,
+            "Binary frame length field says " + std::to_string(length)
+                + " payload bytes but the frame carries "
+                + std::to_string(frame.size() < kOverhead ? 0 : frame.size() - kOverhead) + ".");
     }
-    if (frame[frame.size() - 2] != BinaryCodec::terminator[0] || frame[frame.size() - 1] != BinaryCodec::terminator[1]) {
-        return makeError(ErrorKind::BadFrame,
-                         "Binary frame ends with " + hexBytes(frame.subspan(frame.size() - 2), 2)
-                             + " instead of the terminator 55 AA.");
+    if (frame[frame.size() - 2] != BinaryCodec::terminator[0]
+        || frame[frame.size() - 1] != BinaryCodec::terminator[1]) {
+        return makeError(ErrorKind::BadFrame, "Binary frame ends with "
+                                                  + hexBytes(frame.subspan(frame.size() - 2), 2)
+                                                  + " instead of the terminator 55 AA.");
     }
     const std::uint16_t expected = BinaryCodec::crc16(frame.subspan(2, length + 2));
     const std::uint16_t got = static_cast<std::uint16_t>(frame[kHeadSize + length]
@@ -160,7 +162,8 @@ Result<ParsedFrame> parseFrame(std::span<const std::uint8_t> frame)
     if (expected != got) {
         return makeError(ErrorKind::BadChecksum,
                          "Binary frame CRC is " + hex2(got) + " " + hex2(got >> 8u) + ", computed "
-                             + hex2(expected) + " " + hex2(static_cast<std::uint32_t>(expected) >> 8u) + ".");
+                             + hex2(expected) + " "
+                             + hex2(static_cast<std::uint32_t>(expected) >> 8u) + ".");
     }
     if (length < 2)
         return makeError(ErrorKind::BadFrame, "Binary frame without station and command.");
@@ -189,7 +192,8 @@ Bytes frameOf(std::uint8_t header, std::span<const std::uint8_t> payload)
 
 // ---- slave side: query payloads ---------------------------------------------------------------
 
-ProtocolError queryError(int plcCode, std::string message, ErrorKind kind = ErrorKind::InvalidRequest)
+ProtocolError queryError(int plcCode, std::string message,
+                         ErrorKind kind = ErrorKind::InvalidRequest)
 {
     return makeError(kind, std::move(message), plcCode);
 }
@@ -198,7 +202,8 @@ ProtocolError queryError(int plcCode, std::string message, ErrorKind kind = Erro
 // `restSize(type)` bytes after the address: of the symbols that match, the one for which the
 // length is consistent wins (D + 0x52xx looks like DR).
 template<typename RestSize>
-Result<Address> singleAddress(std::span<const std::uint8_t> data, std::size_t pos, RestSize restSize)
+Result<Address> singleAddress(std::span<const std::uint8_t> data, std::size_t pos,
+                              RestSize restSize)
 {
     const auto candidates = symbolCandidates(data.subspan(pos));
     if (candidates.empty()) {
@@ -275,7 +280,9 @@ Result<Request> parseQueryPayload(std::span<const std::uint8_t> p)
     const std::uint8_t code = p[1];
     const auto data = p.subspan(2);
     const std::string name = commandText(code);
-    auto malformed = [&name](std::string what) { return queryError(4, name + ": " + std::move(what)); };
+    auto malformed = [&name](std::string what) {
+        return queryError(4, name + ": " + std::move(what));
+    };
     auto noData = [&](Request r) -> Result<Request> {
         if (!data.empty())
             return malformed(std::to_string(data.size()) + " unexpected data bytes.");
@@ -283,15 +290,15 @@ Result<Request> parseQueryPayload(std::span<const std::uint8_t> p)
     };
 
     switch (code) {
-    case 0x40:
-        return noData(Request::briefStatus(station));
-    case 0x53:
-        return noData(Request::detailStatus(station));
+    case 0x40: return noData(Request::briefStatus(station));
+    case 0x53: return noData(Request::detailStatus(station));
     case 0x41:
         if (data.size() != 1)
-            return malformed("expected one control byte, got " + std::to_string(data.size()) + " bytes.");
+            return malformed("expected one control byte, got " + std::to_string(data.size())
+                             + " bytes.");
         if (data[0] > 1)
-            return queryError(2, "RUN/STOP control byte " + hex2(data[0]) + " is not 00 (stop) or 01 (run).");
+            return queryError(2, "RUN/STOP control byte " + hex2(data[0])
+                                     + " is not 00 (stop) or 01 (run).");
         return Request::runStop(station, data[0] == 1);
     case 0x42: {
         if (data.empty())
@@ -319,7 +326,8 @@ Result<Request> parseQueryPayload(std::span<const std::uint8_t> p)
         }
         if (n == 0)
             n = 256;
-        return code == 0x43 ? Request::readEnableFlags(station, *a, n) : Request::readDiscretes(station, *a, n);
+        return code == 0x43 ? Request::readEnableFlags(station, *a, n)
+                            : Request::readDiscretes(station, *a, n);
     }
     case 0x45:
     case 0x47: {
@@ -340,7 +348,8 @@ Result<Request> parseQueryPayload(std::span<const std::uint8_t> p)
         for (std::size_t i = 0; i < n; ++i) {
             const std::uint32_t v = readNumber(data, first + i * vsize, vsize);
             if (isDiscrete(a->type) && v > 1) {
-                return queryError(2, "Value " + hex2(v) + " for " + a->advanced(static_cast<std::uint32_t>(i)).toString()
+                return queryError(2, "Value " + hex2(v) + " for "
+                                         + a->advanced(static_cast<std::uint32_t>(i)).toString()
                                          + " is not 00 or 01.");
             }
             values.push_back(v);
@@ -367,23 +376,23 @@ Result<Request> parseQueryPayload(std::span<const std::uint8_t> p)
             if (parser.unknownSymbol())
                 return queryError(0xA, name + ": unknown element type code in the address list.",
                                   ErrorKind::InvalidAddress);
-            return malformed("the address list does not match its count of " + std::to_string(n) + " and "
-                             + std::to_string(data.size()) + " data bytes.");
+            return malformed("the address list does not match its count of " + std::to_string(n)
+                             + " and " + std::to_string(data.size()) + " data bytes.");
         }
         if (code == 0x48)
             return Request::mixedRead(station, std::move(parser.addresses));
         for (std::size_t i = 0; i < n; ++i) {
             if (isDiscrete(parser.addresses[i].type) && parser.values[i] > 1) {
-                return queryError(2, "Value " + hex2(parser.values[i]) + " for " + parser.addresses[i].toString()
-                                         + " is not 00 or 01.");
+                return queryError(2, "Value " + hex2(parser.values[i]) + " for "
+                                         + parser.addresses[i].toString() + " is not 00 or 01.");
             }
         }
         return Request::mixedWrite(station, std::move(parser.addresses), std::move(parser.values));
     }
-    case 0x4E:
-        return Request::loopback(station, Bytes(data.begin(), data.end()));
+    case 0x4E: return Request::loopback(station, Bytes(data.begin(), data.end()));
     default:
-        return queryError(4, "Command " + hex2(code) + " is not part of the binary protocol.", ErrorKind::Unsupported);
+        return queryError(4, "Command " + hex2(code) + " is not part of the binary protocol.",
+                          ErrorKind::Unsupported);
     }
 }
 
@@ -400,19 +409,17 @@ std::string queryDetail(const Request &r)
         return s;
     };
     switch (r.command) {
-    case Command::RunStop:
-        return r.run ? ": RUN" : ": STOP";
+    case Command::RunStop: return r.run ? ": RUN" : ": STOP";
     case Command::DiscreteControl:
         return ": " + std::string(discreteOpName(r.op)) + " " + r.start.toString();
     case Command::ReadEnableFlags:
     case Command::ReadDiscretes:
-    case Command::ReadRegisters:
-        return ": " + std::to_string(r.count) + " x " + r.start.toString();
+    case Command::ReadRegisters: return ": " + std::to_string(r.count) + " x " + r.start.toString();
     case Command::WriteDiscretes:
     case Command::WriteRegisters:
-        return ": " + std::to_string(r.values.size()) + " x " + r.start.toString() + " =" + values(r.start);
-    case Command::MixedRead:
-        return ": " + r.target();
+        return ": " + std::to_string(r.values.size()) + " x " + r.start.toString() + " ="
+               + values(r.start);
+    case Command::MixedRead: return ": " + r.target();
     case Command::MixedWrite: {
         std::string s = ":";
         for (std::size_t i = 0; i < r.addresses.size() && i < r.values.size(); ++i) {
@@ -421,10 +428,8 @@ std::string queryDetail(const Request &r)
         }
         return s;
     }
-    case Command::Loopback:
-        return ": " + std::to_string(r.data.size()) + " bytes";
-    default:
-        return {};
+    case Command::Loopback: return ": " + std::to_string(r.data.size()) + " bytes";
+    default: return {};
     }
 }
 
@@ -455,11 +460,8 @@ Result<Bytes> BinaryCodec::encodeRequest(const Request &request) const
     p.push_back(static_cast<std::uint8_t>(request.command));
     switch (request.command) {
     case Command::BriefStatus:
-    case Command::DetailStatus:
-        break;
-    case Command::RunStop:
-        p.push_back(request.run ? 1 : 0);
-        break;
+    case Command::DetailStatus: break;
+    case Command::RunStop: p.push_back(request.run ? 1 : 0); break;
     case Command::DiscreteControl:
         p.push_back(static_cast<std::uint8_t>(request.op));
         appendAddress(p, request.start);
@@ -489,40 +491,42 @@ Result<Bytes> BinaryCodec::encodeRequest(const Request &request) const
             appendValue(p, request.addresses[i].type, request.values[i]);
         }
         break;
-    case Command::Loopback:
-        p.insert(p.end(), request.data.begin(), request.data.end());
-        break;
+    case Command::Loopback: p.insert(p.end(), request.data.begin(), request.data.end()); break;
     case Command::ReadProgram:
     case Command::WriteProgram:
         // validateRequest refuses these for the binary protocol; kept for a complete switch.
-        return makeError(ErrorKind::Unsupported, "Program pages (4F/50) exist only in the FACON protocol.");
+        return makeError(ErrorKind::Unsupported,
+                         "Program pages (4F/50) exist only in the FACON protocol.");
     }
     return frameOf(queryHeader, p);
 }
 
-Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame, const Request &request) const
+Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame,
+                                             const Request &request) const
 {
     auto parsed = parseFrame(frame);
     if (!parsed)
         return parsed.error();
     if (parsed->header != responseHeader) {
-        return makeError(ErrorKind::BadFrame,
-                         "Received a query frame (51) instead of an answer (52): probably the echo of our own query.");
+        return makeError(ErrorKind::BadFrame, "Received a query frame (51) instead of an answer "
+                                              "(52): probably the echo of our own query.");
     }
     const auto p = parsed->payload;
     const std::uint8_t code = static_cast<std::uint8_t>(request.command);
     if (p[0] != request.station) {
         return makeError(ErrorKind::StationMismatch,
                          "Answer from station " + std::to_string(p[0]) + " while station "
-                             + std::to_string(request.station) + " was asked (" + request.describe() + ").");
+                             + std::to_string(request.station) + " was asked (" + request.describe()
+                             + ").");
     }
     if (p[1] != code) {
-        return makeError(ErrorKind::CommandMismatch,
-                         "Answer to command " + hex2(p[1]) + " while " + commandText(code) + " was sent ("
-                             + request.describe() + ").");
+        return makeError(ErrorKind::CommandMismatch, "Answer to command " + hex2(p[1]) + " while "
+                                                         + commandText(code) + " was sent ("
+                                                         + request.describe() + ").");
     }
     auto malformed = [&request](std::string message) {
-        return makeError(ErrorKind::MalformedResponse, "Answer to " + request.describe() + ": " + std::move(message));
+        return makeError(ErrorKind::MalformedResponse,
+                         "Answer to " + request.describe() + ": " + std::move(message));
     };
 
     Response response;
@@ -549,8 +553,8 @@ Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame
     const auto data = p.subspan(3);
     auto expectSize = [&](std::size_t size, std::string_view what) -> Status {
         if (data.size() != size) {
-            return malformed(std::to_string(data.size()) + " data bytes instead of " + std::to_string(size)
-                             + " (" + std::string(what) + ").");
+            return malformed(std::to_string(data.size()) + " data bytes instead of "
+                             + std::to_string(size) + " (" + std::string(what) + ").");
         }
         return Ok{};
     };
@@ -567,7 +571,9 @@ Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame
         break;
     case Command::ReadEnableFlags:
     case Command::ReadDiscretes: {
-        if (Status s = expectSize(request.count, std::to_string(request.count) + " points, one byte each"); !s)
+        if (Status s
+            = expectSize(request.count, std::to_string(request.count) + " points, one byte each");
+            !s)
             return s.error();
         for (std::size_t i = 0; i < data.size(); ++i) {
             if (data[i] > 1) {
@@ -593,14 +599,17 @@ Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame
         std::size_t total = 0;
         for (const Address &a : request.addresses)
             total += valueSize(a.type);
-        if (Status s = expectSize(total, "values of " + std::to_string(request.addresses.size()) + " elements"); !s)
+        if (Status s = expectSize(total, "values of " + std::to_string(request.addresses.size())
+                                             + " elements");
+            !s)
             return s.error();
         std::size_t pos = 0;
         for (const Address &a : request.addresses) {
             const std::size_t vsize = valueSize(a.type);
             const std::uint32_t v = readNumber(data, pos, vsize);
             if (isDiscrete(a.type) && v > 1)
-                return malformed("value " + hex2(v) + " for " + a.toString() + " is neither 00 nor 01.");
+                return malformed("value " + hex2(v) + " for " + a.toString()
+                                 + " is neither 00 nor 01.");
             response.values.push_back(v);
             pos += vsize;
         }
@@ -620,7 +629,8 @@ Result<Request> BinaryCodec::decodeRequest(std::span<const std::uint8_t> frame) 
     if (!parsed)
         return parsed.error(); // plcCode 0: a broken frame gets no answer
     if (parsed->header != queryHeader) {
-        return makeError(ErrorKind::BadFrame, "Frame starts with 52 (an answer), not 51 (a query).");
+        return makeError(ErrorKind::BadFrame,
+                         "Frame starts with 52 (an answer), not 51 (a query).");
     }
     auto request = parseQueryPayload(parsed->payload);
     if (!request)
@@ -662,13 +672,14 @@ Bytes BinaryCodec::encodeResponse(const Request &request, const Response &respon
             appendValue(p, request.start.type, v);
         break;
     case Command::MixedRead:
-        // A value without an address (a simulator bug) is sent as 16-bit rather than dropped silently.
+        // A value without an address (a simulator bug) is sent as 16-bit rather than dropped
+        // silently.
         for (std::size_t i = 0; i < response.values.size(); ++i)
-            appendValue(p, i < request.addresses.size() ? request.addresses[i].type : ElementType::R,
+            appendValue(p,
+                        i < request.addresses.size() ? request.addresses[i].type : ElementType::R,
                         response.values[i]);
         break;
-    default:
-        break;
+    default: break;
     }
     return frameOf(responseHeader, p);
 }
@@ -696,7 +707,8 @@ std::string BinaryCodec::summarize(std::span<const std::uint8_t> frame) const
 {
     auto parsed = parseFrame(frame);
     if (!parsed)
-        return "bad binary frame (" + std::to_string(frame.size()) + " bytes): " + parsed.error().message;
+        return "bad binary frame (" + std::to_string(frame.size())
+               + " bytes): " + parsed.error().message;
     const auto p = parsed->payload;
     const std::string head = "station " + std::to_string(p[0]) + ", ";
     if (parsed->header == queryHeader) {
@@ -711,7 +723,8 @@ std::string BinaryCodec::summarize(std::span<const std::uint8_t> frame) const
     if (p.size() < 3)
         return answer + "no error byte";
     if (p[2] != 0)
-        return answer + "error " + (p[2] < 16 ? hex2(p[2]).substr(1) : hex2(p[2])) + " (" + std::string(plcErrorText(p[2])) + ")";
+        return answer + "error " + (p[2] < 16 ? hex2(p[2]).substr(1) : hex2(p[2])) + " ("
+               + std::string(plcErrorText(p[2])) + ")";
     const auto data = p.subspan(3);
     if (data.empty())
         return answer + "OK";

@@ -4,7 +4,8 @@
 
 namespace Fatek {
 
-// FATEK binary protocol (M series): 0x51|0x52, 0x10, length(2, BE), payload, CRC(2, low first), 55 AA.
+// FATEK binary protocol (M series): 0x51|0x52, 0x10, length(2, BE), payload, CRC(2, low first), 55
+// AA.
 class BinaryCodec final : public Codec
 {
 public:
@@ -12,7 +13,8 @@ public:
     static constexpr std::uint8_t responseHeader = 0x52;
     static constexpr std::uint8_t frameId = 0x10;
     static constexpr std::uint8_t terminator[2] = {0x55, 0xAA};
-    static constexpr std::size_t maxPayload = 512; // largest legal: 48 query with 64 W addresses, 323 bytes
+    static constexpr std::size_t maxPayload
+        = 512; // largest legal: 48 query with 64 W addresses, 323 bytes
     static constexpr std::size_t maxFrameSize = 4 + maxPayload + 4;
 
     // CRC-16/MODBUS (init 0xFFFF, reflected polynomial 0xA001).

@@ -33,7 +33,8 @@ void BinaryDeframer::feed(std::span<const std::uint8_t> bytes, std::vector<Defra
     while (!bytes.empty()) {
         const std::size_t room = maxFrameSize() - m_buffer.size();
         const std::size_t take = std::min(room, bytes.size());
-        m_buffer.insert(m_buffer.end(), bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(take));
+        m_buffer.insert(m_buffer.end(), bytes.begin(),
+                        bytes.begin() + static_cast<std::ptrdiff_t>(take));
         bytes = bytes.subspan(take);
         scan(out);
     }
@@ -41,8 +42,8 @@ void BinaryDeframer::feed(std::span<const std::uint8_t> bytes, std::vector<Defra
 
 void BinaryDeframer::scan(std::vector<DeframedItem> &out)
 {
-    const std::uint8_t header = m_expect == Direction::Query ? BinaryCodec::queryHeader
-                                                             : BinaryCodec::responseHeader;
+    const std::uint8_t header
+        = m_expect == Direction::Query ? BinaryCodec::queryHeader : BinaryCodec::responseHeader;
     for (;;) {
         // Skip garbage up to the next header byte.
         const auto start = std::find(m_buffer.begin(), m_buffer.end(), header);
@@ -70,7 +71,8 @@ void BinaryDeframer::scan(std::vector<DeframedItem> &out)
         const std::span<const std::uint8_t> frame(m_buffer.data(), total);
         DeframedItem item;
         item.frame.assign(frame.begin(), frame.end());
-        if (frame[total - 2] != BinaryCodec::terminator[0] || frame[total - 1] != BinaryCodec::terminator[1]) {
+        if (frame[total - 2] != BinaryCodec::terminator[0]
+            || frame[total - 1] != BinaryCodec::terminator[1]) {
             item.error = makeError(ErrorKind::BadFrame,
                                    "Binary frame of " + std::to_string(total)
                                        + " bytes does not end with the terminator 55 AA.");
@@ -79,9 +81,10 @@ void BinaryDeframer::scan(std::vector<DeframedItem> &out)
             const auto got = static_cast<std::uint16_t>(frame[kHeadSize + length]
                                                         | (frame[kHeadSize + length + 1] << 8));
             if (got != expected) {
-                item.error = makeError(ErrorKind::BadChecksum,
-                                       "Binary frame of " + std::to_string(total)
-                                           + " bytes has a wrong CRC (line noise or a broken frame).");
+                item.error
+                    = makeError(ErrorKind::BadChecksum,
+                                "Binary frame of " + std::to_string(total)
+                                    + " bytes has a wrong CRC (line noise or a broken frame).");
             }
         }
         const bool rejected = item.error.has_value();

@@ -12,8 +12,8 @@ namespace Fatek {
 
 struct DeframedItem
 {
-    Bytes frame;                         // the complete frame, or the rejected bytes
-    std::optional<ProtocolError> error;  // set when the frame was rejected (bad LRC/CRC, ID, ...)
+    Bytes frame;                        // the complete frame, or the rejected bytes
+    std::optional<ProtocolError> error; // set when the frame was rejected (bad LRC/CRC, ID, ...)
 };
 
 // Finds frames in a byte stream fed in arbitrary chunks. Skips garbage before a frame, rejects a

@@ -123,9 +123,10 @@ Result<ParsedFrame> parseFrame(std::span<const std::uint8_t> frame)
                              + " bytes; at least 8: STX, station, command, LRC, ETX).");
     }
     if (frame.size() > FaconCodec::maxFrameSize) {
-        return makeError(ErrorKind::BadFrame, "FACON frame too long (" + std::to_string(frame.size())
-                                                  + " bytes; at most "
-                                                  + std::to_string(FaconCodec::maxFrameSize) + ").");
+        return makeError(ErrorKind::BadFrame,
+                         "FACON frame too long (" + std::to_string(frame.size())
+                             + " bytes; at most " + std::to_string(FaconCodec::maxFrameSize)
+                             + ").");
     }
     if (frame.front() != FaconCodec::STX)
         return makeError(ErrorKind::BadFrame, "FACON frame does not start with STX.");
@@ -134,23 +135,27 @@ Result<ParsedFrame> parseFrame(std::span<const std::uint8_t> frame)
     const std::string_view text(reinterpret_cast<const char *>(frame.data()), frame.size());
     for (std::size_t i = 1; i + 1 < text.size(); ++i) {
         if (frame[i] == FaconCodec::STX || frame[i] == FaconCodec::ETX)
-            return makeError(ErrorKind::BadFrame, "FACON frame contains a stray STX or ETX inside.");
+            return makeError(ErrorKind::BadFrame,
+                             "FACON frame contains a stray STX or ETX inside.");
     }
     const auto station = parseHex(text.substr(1, 2));
     const auto command = parseHex(text.substr(3, 2));
     if (!station || !command) {
-        return makeError(ErrorKind::BadFrame, "FACON frame header \"" + printable(text.substr(1, 4), 4)
+        return makeError(ErrorKind::BadFrame, "FACON frame header \""
+                                                  + printable(text.substr(1, 4), 4)
                                                   + "\" is not station and command in hex.");
     }
     const auto received = parseHex(text.substr(text.size() - 3, 2));
     if (!received) {
-        return makeError(ErrorKind::BadFrame, "FACON checksum \"" + printable(text.substr(text.size() - 3, 2), 2)
+        return makeError(ErrorKind::BadFrame, "FACON checksum \""
+                                                  + printable(text.substr(text.size() - 3, 2), 2)
                                                   + "\" is not two hex characters.");
     }
     const std::uint8_t computed = FaconCodec::lrc(frame.first(frame.size() - 3));
     if (computed != *received) {
-        return makeError(ErrorKind::BadChecksum, "FACON checksum error: frame says " + hex2(*received)
-                                                     + ", computed " + hex2(computed) + ".");
+        return makeError(ErrorKind::BadChecksum, "FACON checksum error: frame says "
+                                                     + hex2(*received) + ", computed "
+                                                     + hex2(computed) + ".");
     }
     ParsedFrame parsed;
     parsed.station = static_cast<std::uint8_t>(*station);
@@ -183,7 +188,8 @@ public:
             return queryError(4, "Query too short: " + std::string(what) + " missing.");
         const auto v = parseHex(m_data.substr(m_pos, chars));
         if (!v) {
-            return queryError(badCode, std::string(what) + " \"" + printable(m_data.substr(m_pos, chars), chars)
+            return queryError(badCode, std::string(what) + " \""
+                                           + printable(m_data.substr(m_pos, chars), chars)
                                            + "\" is not hex.");
         }
         m_pos += chars;
@@ -195,13 +201,15 @@ public:
     {
         std::size_t end = m_pos;
         while (end < m_data.size() && end - m_pos < 3
-               && ((m_data[end] >= 'A' && m_data[end] <= 'Z') || (m_data[end] >= 'a' && m_data[end] <= 'z')))
+               && ((m_data[end] >= 'A' && m_data[end] <= 'Z')
+                   || (m_data[end] >= 'a' && m_data[end] <= 'z')))
             ++end;
         const std::string_view symbol = m_data.substr(m_pos, end - m_pos);
         if (symbol.empty()) {
             if (atEnd())
                 return queryError(4, "Query too short: element address missing.");
-            return queryError(4, "Element address expected at \"" + printable(m_data.substr(m_pos), 8) + "\".");
+            return queryError(4, "Element address expected at \""
+                                     + printable(m_data.substr(m_pos), 8) + "\".");
         }
         const auto type = elementTypeFromSymbol(symbol);
         if (!type || elementInfo(*type).faconDigits == 0) {
@@ -209,12 +217,14 @@ public:
         }
         const auto digits = static_cast<std::size_t>(elementInfo(*type).faconDigits);
         if (m_data.size() - end < digits)
-            return queryError(4, "Element address " + printable(m_data.substr(m_pos), 8) + " is cut short.");
+            return queryError(4, "Element address " + printable(m_data.substr(m_pos), 8)
+                                     + " is cut short.");
         std::uint32_t number = 0;
         for (std::size_t i = end; i < end + digits; ++i) {
             const char c = m_data[i];
             if (c < '0' || c > '9') {
-                return queryError(4, "Element address \"" + printable(m_data.substr(m_pos, end + digits - m_pos), 8)
+                return queryError(4, "Element address \""
+                                         + printable(m_data.substr(m_pos, end + digits - m_pos), 8)
                                          + "\" has a non-decimal number.");
             }
             number = number * 10 + static_cast<std::uint32_t>(c - '0');
@@ -233,7 +243,8 @@ public:
                 return queryError(4, "Query too short: discrete value missing.");
             const char c = m_data[m_pos];
             if (c != '0' && c != '1')
-                return queryError(2, "Discrete value \"" + printable(m_data.substr(m_pos, 1), 1) + "\" is not 0 or 1.");
+                return queryError(2, "Discrete value \"" + printable(m_data.substr(m_pos, 1), 1)
+                                         + "\" is not 0 or 1.");
             ++m_pos;
             return static_cast<std::uint32_t>(c - '0');
         }
@@ -268,18 +279,15 @@ Result<Request> parseQuery(std::uint8_t station, Command command, std::string_vi
     };
 
     switch (command) {
-    case Command::BriefStatus:
-        request = Request::briefStatus(station);
-        break;
-    case Command::DetailStatus:
-        request = Request::detailStatus(station);
-        break;
+    case Command::BriefStatus: request = Request::briefStatus(station); break;
+    case Command::DetailStatus: request = Request::detailStatus(station); break;
     case Command::RunStop: {
         if (in.atEnd())
             return queryError(4, "RUN/STOP query without control code.");
         const char c = data[0];
         if (c != '0' && c != '1')
-            return queryError(2, "RUN/STOP control code \"" + printable(data.substr(0, 1), 1) + "\" is not 0 or 1.");
+            return queryError(2, "RUN/STOP control code \"" + printable(data.substr(0, 1), 1)
+                                     + "\" is not 0 or 1.");
         request = Request::runStop(station, c == '1');
         in = Reader(data.substr(1));
         break;
@@ -289,7 +297,8 @@ Result<Request> parseQuery(std::uint8_t station, Command command, std::string_vi
             return queryError(4, "Discrete control query without operation code.");
         const char c = data[0];
         if (c < '1' || c > '4')
-            return queryError(2, "Discrete operation \"" + printable(data.substr(0, 1), 1) + "\" is not 1..4.");
+            return queryError(2, "Discrete operation \"" + printable(data.substr(0, 1), 1)
+                                     + "\" is not 1..4.");
         in = Reader(data.substr(1));
         auto a = in.address();
         if (!a)
@@ -348,7 +357,8 @@ Result<Request> parseQuery(std::uint8_t station, Command command, std::string_vi
         if (!isRegister(a->type))
             return queryError(4, "Write registers needs a register, not " + a->toString() + ".");
         if (*n == 0 || *n > Limits::maxRegisterWords)
-            return queryError(4, "Write registers: " + std::to_string(*n) + " registers is out of 1..64.");
+            return queryError(4, "Write registers: " + std::to_string(*n)
+                                     + " registers is out of 1..64.");
         std::vector<std::uint32_t> values;
         for (std::uint32_t i = 0; i < *n; ++i) {
             auto v = in.value(a->type);
@@ -380,8 +390,9 @@ Result<Request> parseQuery(std::uint8_t station, Command command, std::string_vi
                 values.push_back(*v);
             }
         }
-        request = command == Command::MixedRead ? Request::mixedRead(station, std::move(addresses))
-                                                : Request::mixedWrite(station, std::move(addresses), std::move(values));
+        request = command == Command::MixedRead
+                      ? Request::mixedRead(station, std::move(addresses))
+                      : Request::mixedWrite(station, std::move(addresses), std::move(values));
         break;
     }
     case Command::Loopback: {
@@ -408,13 +419,15 @@ Result<Request> parseQuery(std::uint8_t station, Command command, std::string_vi
                 return w.error();
             words.push_back(*w);
         }
-        request = Request::writeProgram(station, static_cast<std::uint16_t>(*page), std::move(words));
+        request
+            = Request::writeProgram(station, static_cast<std::uint16_t>(*page), std::move(words));
         break;
     }
     }
     if (!in.atEnd()) {
         return queryError(4, "Query " + hex2(static_cast<std::uint32_t>(command)) + " has "
-                                 + std::to_string(in.remaining()) + " unexpected characters at the end (\""
+                                 + std::to_string(in.remaining())
+                                 + " unexpected characters at the end (\""
                                  + printable(in.rest(), 16) + "\").");
     }
     if (Status s = validateRequest(request, Protocol::Facon); !s)
@@ -438,10 +451,8 @@ std::string queryDetails(const Request &r)
     };
     switch (r.command) {
     case Command::BriefStatus:
-    case Command::DetailStatus:
-        return {};
-    case Command::RunStop:
-        return r.run ? ": RUN" : ": STOP";
+    case Command::DetailStatus: return {};
+    case Command::RunStop: return r.run ? ": RUN" : ": STOP";
     case Command::DiscreteControl:
         return ": " + std::string(discreteOpName(r.op)) + " " + r.start.toFaconString();
     case Command::ReadEnableFlags:
@@ -469,12 +480,12 @@ std::string queryDetails(const Request &r)
     }
     case Command::Loopback:
         return ": " + std::to_string(r.data.size()) + " chars \""
-               + printable(std::string_view(reinterpret_cast<const char *>(r.data.data()), r.data.size()), 32)
+               + printable(
+                   std::string_view(reinterpret_cast<const char *>(r.data.data()), r.data.size()),
+                   32)
                + "\"";
-    case Command::ReadProgram:
-        return ": page " + std::to_string(r.page);
-    case Command::WriteProgram:
-        return ": page " + std::to_string(r.page) + ", 64 words";
+    case Command::ReadProgram: return ": page " + std::to_string(r.page);
+    case Command::WriteProgram: return ": page " + std::to_string(r.page) + ", 64 words";
     }
     return {};
 }
@@ -488,8 +499,8 @@ Result<Response> decodeAnswerData(const Request &request, std::string_view data,
     };
     auto expectLength = [&](std::size_t expected, std::string_view what) -> Status {
         if (data.size() != expected) {
-            return malformed("expected " + std::to_string(expected) + " data characters (" + std::string(what)
-                             + "), got " + std::to_string(data.size()) + ".");
+            return malformed("expected " + std::to_string(expected) + " data characters ("
+                             + std::string(what) + "), got " + std::to_string(data.size()) + ".");
         }
         return Ok{};
     };
@@ -497,7 +508,8 @@ Result<Response> decodeAnswerData(const Request &request, std::string_view data,
         for (std::size_t i = 0; i + 1 < text.size(); i += 2) {
             const auto b = parseHex(text.substr(i, 2));
             if (!b)
-                return malformed("status byte \"" + printable(text.substr(i, 2), 2) + "\" is not hex.");
+                return malformed("status byte \"" + printable(text.substr(i, 2), 2)
+                                 + "\" is not hex.");
             response.data.push_back(static_cast<std::uint8_t>(*b));
         }
         return Ok{};
@@ -527,7 +539,8 @@ Result<Response> decodeAnswerData(const Request &request, std::string_view data,
     case Command::DetailStatus:
         // Models answer 21, 28 or 64 status bytes: accept any whole number of bytes.
         if (data.size() % 2 != 0)
-            return malformed("status bytes have an odd number of hex characters (" + std::to_string(data.size()) + ").");
+            return malformed("status bytes have an odd number of hex characters ("
+                             + std::to_string(data.size()) + ").");
         if (Status s = hexBytes(data); !s)
             return s.error();
         break;
@@ -575,8 +588,7 @@ Result<Response> decodeAnswerData(const Request &request, std::string_view data,
         }
         break;
     }
-    case Command::Loopback:
-        break; // handled by the caller
+    case Command::Loopback: break; // handled by the caller
     case Command::RunStop:
     case Command::DiscreteControl:
     case Command::WriteDiscretes:
@@ -608,11 +620,8 @@ Result<Bytes> FaconCodec::encodeRequest(const Request &request) const
     // A FACON address is always non-empty here: validateRequest refuses types without a FACON form.
     switch (request.command) {
     case Command::BriefStatus:
-    case Command::DetailStatus:
-        break;
-    case Command::RunStop:
-        body += request.run ? '1' : '0';
-        break;
+    case Command::DetailStatus: break;
+    case Command::RunStop: body += request.run ? '1' : '0'; break;
     case Command::DiscreteControl:
         body += static_cast<char>('0' + static_cast<int>(request.op));
         body += request.start.toFaconString();
@@ -670,7 +679,8 @@ Result<Response> FaconCodec::decodeResponse(std::span<const std::uint8_t> frame,
     if (f.station != request.station) {
         return makeError(ErrorKind::StationMismatch,
                          "Answer from station " + std::to_string(f.station) + " while station "
-                             + std::to_string(request.station) + " was asked (" + request.describe() + ").");
+                             + std::to_string(request.station) + " was asked (" + request.describe()
+                             + ").");
     }
     if (f.command != static_cast<std::uint8_t>(request.command)) {
         return makeError(ErrorKind::CommandMismatch,
@@ -683,11 +693,12 @@ Result<Response> FaconCodec::decodeResponse(std::span<const std::uint8_t> frame,
     response.command = request.command;
     if (request.command == Command::Loopback) {
         // The only answer without an error digit: the test data comes back as sent.
-        const std::string_view sent(reinterpret_cast<const char *>(request.data.data()), request.data.size());
+        const std::string_view sent(reinterpret_cast<const char *>(request.data.data()),
+                                    request.data.size());
         if (f.data != sent) {
             return makeError(ErrorKind::MalformedResponse,
-                             "Loopback data differs: sent \"" + printable(sent, 32) + "\", received \""
-                                 + printable(f.data, 32) + "\".");
+                             "Loopback data differs: sent \"" + printable(sent, 32)
+                                 + "\", received \"" + printable(f.data, 32) + "\".");
         }
         response.data.assign(request.data.begin(), request.data.end());
         return response;
@@ -699,8 +710,8 @@ Result<Response> FaconCodec::decodeResponse(std::span<const std::uint8_t> frame,
     const auto code = hexValue(f.data[0]);
     if (!code) {
         return makeError(ErrorKind::MalformedResponse,
-                         "Answer to " + request.describe() + ": error digit \"" + printable(f.data.substr(0, 1), 1)
-                             + "\" is not hex.");
+                         "Answer to " + request.describe() + ": error digit \""
+                             + printable(f.data.substr(0, 1), 1) + "\" is not hex.");
     }
     if (*code != 0)
         return makePlcError(static_cast<int>(*code), request.target());
@@ -714,7 +725,8 @@ Result<Request> FaconCodec::decodeRequest(std::span<const std::uint8_t> frame) c
         return parsed.error(); // plcCode 0: a broken frame gets no answer
     const ParsedFrame &f = *parsed;
     if (!isKnownCommand(f.command)) {
-        return makeError(ErrorKind::Unsupported, "Unknown FACON command " + hex2(f.command) + ".", 4);
+        return makeError(ErrorKind::Unsupported, "Unknown FACON command " + hex2(f.command) + ".",
+                         4);
     }
     return parseQuery(f.station, static_cast<Command>(f.command), f.data);
 }
@@ -751,8 +763,7 @@ Bytes FaconCodec::encodeResponse(const Request &request, const Response &respons
         for (std::uint32_t w : response.values)
             appendHex(body, w, 4);
         break;
-    default:
-        break;
+    default: break;
     }
     return frameOf(body);
 }
@@ -782,7 +793,8 @@ std::string FaconCodec::summarize(std::span<const std::uint8_t> frame) const
 {
     auto parsed = parseFrame(frame);
     if (!parsed) {
-        return "invalid FACON frame (" + std::to_string(frame.size()) + " bytes): " + parsed.error().message;
+        return "invalid FACON frame (" + std::to_string(frame.size())
+               + " bytes): " + parsed.error().message;
     }
     const ParsedFrame &f = *parsed;
     const std::string head = "station " + std::to_string(f.station) + ", " + hex2(f.command);
@@ -796,7 +808,8 @@ std::string FaconCodec::summarize(std::span<const std::uint8_t> frame) const
     if (command == Command::RunStop && f.data == "0")
         return name + ": STOP, or answer: no error";
     if (command == Command::Loopback)
-        return name + ": " + std::to_string(f.data.size()) + " chars \"" + printable(f.data, 32) + "\"";
+        return name + ": " + std::to_string(f.data.size()) + " chars \"" + printable(f.data, 32)
+               + "\"";
     if (auto query = parseQuery(f.station, command, f.data))
         return name + queryDetails(*query);
 
@@ -812,8 +825,8 @@ std::string FaconCodec::summarize(std::span<const std::uint8_t> frame) const
     }
     if (f.data.size() == 1)
         return answer + "OK";
-    return answer + "OK, " + std::to_string(f.data.size() - 1) + " data chars \"" + printable(f.data.substr(1), 40)
-           + "\"";
+    return answer + "OK, " + std::to_string(f.data.size() - 1) + " data chars \""
+           + printable(f.data.substr(1), 40) + "\"";
 }
 
 } // namespace Fatek

@@ -27,8 +27,9 @@ std::optional<ProtocolError> checkFrame(const Bytes &frame)
 {
     // STX, station (2), command (2), LRC (2), ETX.
     if (frame.size() < 8) {
-        return makeError(ErrorKind::BadFrame, "FACON frame too short (" + std::to_string(frame.size())
-                                                  + " bytes): station, command and LRC do not fit.");
+        return makeError(ErrorKind::BadFrame,
+                         "FACON frame too short (" + std::to_string(frame.size())
+                             + " bytes): station, command and LRC do not fit.");
     }
     for (std::size_t i = 1; i < 5; ++i) {
         if (!isHexChar(frame[i]))
@@ -37,7 +38,8 @@ std::optional<ProtocolError> checkFrame(const Bytes &frame)
     const std::uint8_t hi = frame[frame.size() - 3];
     const std::uint8_t lo = frame[frame.size() - 2];
     if (!isHexChar(hi) || !isHexChar(lo))
-        return makeError(ErrorKind::BadFrame, "FACON frame whose checksum is not two hex characters.");
+        return makeError(ErrorKind::BadFrame,
+                         "FACON frame whose checksum is not two hex characters.");
     const std::uint32_t received = hexCharValue(hi) << 4 | hexCharValue(lo);
     const std::uint8_t computed = FaconCodec::lrc(std::span(frame).first(frame.size() - 3));
     if (received != computed) {
@@ -66,7 +68,8 @@ void FaconDeframer::feed(std::span<const std::uint8_t> bytes, std::vector<Defram
         if (b == FaconCodec::STX) {
             // A new frame starts: the sender gave up on the previous one (or we missed its ETX).
             out.push_back({std::move(m_buffer),
-                           makeError(ErrorKind::BadFrame, "Incomplete FACON frame: a new STX arrived before ETX.")});
+                           makeError(ErrorKind::BadFrame,
+                                     "Incomplete FACON frame: a new STX arrived before ETX.")});
             m_buffer.clear();
             m_buffer.push_back(b);
             continue;

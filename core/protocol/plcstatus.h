@@ -29,13 +29,14 @@ struct PlcStatus
 struct DetailStatus
 {
     std::vector<std::uint8_t> raw;
-    PlcStatus status;                          // STATUS1
-    std::optional<std::uint8_t> mainUnitType;  // STATUS2: 0 MA/MU, 1 MC
-    std::optional<std::uint8_t> ioPointsCode;  // STATUS3: 1 = 20 points, 2 = 28, 3 = 40 ...
-    std::optional<std::uint8_t> osVersion;     // STATUS4: 0x31 = V3.1
-    std::optional<std::uint16_t> ladderSize;   // STATUS5..6, words
+    PlcStatus status;                         // STATUS1
+    std::optional<std::uint8_t> mainUnitType; // STATUS2: 0 MA/MU, 1 MC
+    std::optional<std::uint8_t> ioPointsCode; // STATUS3: 1 = 20 points, 2 = 28, 3 = 40 ...
+    std::optional<std::uint8_t> osVersion;    // STATUS4: 0x31 = V3.1
+    std::optional<std::uint16_t> ladderSize;  // STATUS5..6, words
     std::optional<std::uint16_t> discreteInputs, discreteOutputs, analogInputs, analogOutputs;
-    std::optional<std::uint16_t> mRelays, sRelays, lRelays, rRegisters, dRegisters, timers, counters;
+    std::optional<std::uint16_t> mRelays, sRelays, lRelays, rRegisters, dRegisters, timers,
+        counters;
 
     static DetailStatus decode(std::span<const std::uint8_t> statusBytes);
     // "FBs-MC, 28 points, OS V3.1, program 13184 words" as far as known.

@@ -27,8 +27,10 @@ enum class ErrorKind {
 struct ProtocolError
 {
     ErrorKind kind = ErrorKind::BadFrame;
-    std::string message; // complete sentence for technicians, e.g. "PLC error A: illegal address R70000"
-    int plcCode = 0;     // PLC error code for PlcError; for a slave decoding a query: the code to answer
+    std::string
+        message; // complete sentence for technicians, e.g. "PLC error A: illegal address R70000"
+    int plcCode
+        = 0; // PLC error code for PlcError; for a slave decoding a query: the code to answer
 
     bool operator==(const ProtocolError &) const = default;
 };

@@ -12,11 +12,21 @@ std::string_view protocolName(Protocol protocol)
 bool isKnownCommand(std::uint8_t code)
 {
     switch (code) {
-    case 0x40: case 0x41: case 0x42: case 0x43: case 0x44: case 0x45: case 0x46:
-    case 0x47: case 0x48: case 0x49: case 0x4E: case 0x4F: case 0x50: case 0x53:
-        return true;
-    default:
-        return false;
+    case 0x40:
+    case 0x41:
+    case 0x42:
+    case 0x43:
+    case 0x44:
+    case 0x45:
+    case 0x46:
+    case 0x47:
+    case 0x48:
+    case 0x49:
+    case 0x4E:
+    case 0x4F:
+    case 0x50:
+    case 0x53: return true;
+    default: return false;
     }
 }
 
@@ -49,10 +59,8 @@ bool isWriteCommand(Command command)
     case Command::WriteDiscretes:
     case Command::WriteRegisters:
     case Command::MixedWrite:
-    case Command::WriteProgram:
-        return true;
-    default:
-        return false;
+    case Command::WriteProgram: return true;
+    default: return false;
     }
 }
 
@@ -79,8 +87,14 @@ Request make(std::uint8_t station, Command command)
 }
 } // namespace
 
-Request Request::briefStatus(std::uint8_t station) { return make(station, Command::BriefStatus); }
-Request Request::detailStatus(std::uint8_t station) { return make(station, Command::DetailStatus); }
+Request Request::briefStatus(std::uint8_t station)
+{
+    return make(station, Command::BriefStatus);
+}
+Request Request::detailStatus(std::uint8_t station)
+{
+    return make(station, Command::DetailStatus);
+}
 
 Request Request::runStop(std::uint8_t station, bool runIt)
 {
@@ -147,7 +161,8 @@ Request Request::mixedRead(std::uint8_t station, std::vector<Address> list)
     return r;
 }
 
-Request Request::mixedWrite(std::uint8_t station, std::vector<Address> list, std::vector<std::uint32_t> v)
+Request Request::mixedWrite(std::uint8_t station, std::vector<Address> list,
+                            std::vector<std::uint32_t> v)
 {
     Request r = make(station, Command::MixedWrite);
     r.count = static_cast<std::uint32_t>(list.size());
@@ -170,7 +185,8 @@ Request Request::readProgram(std::uint8_t station, std::uint16_t pageNumber)
     return r;
 }
 
-Request Request::writeProgram(std::uint8_t station, std::uint16_t pageNumber, std::vector<std::uint32_t> words)
+Request Request::writeProgram(std::uint8_t station, std::uint16_t pageNumber,
+                              std::vector<std::uint32_t> words)
 {
     Request r = make(station, Command::WriteProgram);
     r.page = pageNumber;
@@ -183,14 +199,10 @@ std::uint32_t Request::expectedValueCount() const
     switch (command) {
     case Command::ReadEnableFlags:
     case Command::ReadDiscretes:
-    case Command::ReadRegisters:
-        return count;
-    case Command::MixedRead:
-        return static_cast<std::uint32_t>(addresses.size());
-    case Command::ReadProgram:
-        return Limits::programPageWords;
-    default:
-        return 0;
+    case Command::ReadRegisters: return count;
+    case Command::MixedRead: return static_cast<std::uint32_t>(addresses.size());
+    case Command::ReadProgram: return Limits::programPageWords;
+    default: return 0;
     }
 }
 
@@ -219,15 +231,12 @@ std::string valueText(const Address &a, std::uint32_t v)
 std::string Request::target() const
 {
     switch (command) {
-    case Command::DiscreteControl:
-        return start.toString();
+    case Command::DiscreteControl: return start.toString();
     case Command::ReadEnableFlags:
     case Command::ReadDiscretes:
-    case Command::ReadRegisters:
-        return span(start, count);
+    case Command::ReadRegisters: return span(start, count);
     case Command::WriteDiscretes:
-    case Command::WriteRegisters:
-        return span(start, static_cast<std::uint32_t>(values.size()));
+    case Command::WriteRegisters: return span(start, static_cast<std::uint32_t>(values.size()));
     case Command::MixedRead:
     case Command::MixedWrite: {
         std::string s;
@@ -239,10 +248,8 @@ std::string Request::target() const
         return s;
     }
     case Command::ReadProgram:
-    case Command::WriteProgram:
-        return "program page " + std::to_string(page);
-    default:
-        return {};
+    case Command::WriteProgram: return "program page " + std::to_string(page);
+    default: return {};
     }
 }
 
@@ -259,9 +266,7 @@ std::string Request::describe() const
     case Command::ReadEnableFlags: s = "read disable flags " + target(); break;
     case Command::ReadDiscretes:
     case Command::ReadRegisters:
-    case Command::MixedRead:
-        s = "read " + target();
-        break;
+    case Command::MixedRead: s = "read " + target(); break;
     case Command::WriteDiscretes:
     case Command::WriteRegisters: {
         s = "write " + target() + " =";
@@ -275,7 +280,8 @@ std::string Request::describe() const
         s = "write";
         for (std::size_t i = 0; i < addresses.size(); ++i) {
             s += i ? ", " : " ";
-            s += addresses[i].toString() + "=" + (i < values.size() ? valueText(addresses[i], values[i]) : "?");
+            s += addresses[i].toString() + "="
+                 + (i < values.size() ? valueText(addresses[i], values[i]) : "?");
         }
         break;
     }
@@ -305,9 +311,10 @@ ProtocolError limit(std::string message)
 Status checkProtocolSupport(const Address &a, Protocol protocol)
 {
     if (protocol == Protocol::Facon && a.info().faconDigits == 0) {
-        return makeError(ErrorKind::Unsupported,
-                         a.toString() + ": " + std::string(a.info().symbol)
-                             + " elements are not available in the FACON protocol (binary protocol only).");
+        return makeError(
+            ErrorKind::Unsupported,
+            a.toString() + ": " + std::string(a.info().symbol)
+                + " elements are not available in the FACON protocol (binary protocol only).");
     }
     return Ok{};
 }
@@ -343,15 +350,18 @@ Status checkDiscreteSpan(const Request &r, std::uint32_t n, Protocol protocol)
 Status checkRegisterSpan(const Request &r, std::uint32_t n, Protocol protocol)
 {
     if (!isRegister(r.start.type)) {
-        return invalid(std::string(commandName(r.command)) + " needs a register (R, D, WY, DR, ...), not "
-                       + r.start.toString() + "; use discretes commands for single points.");
+        return invalid(std::string(commandName(r.command))
+                       + " needs a register (R, D, WY, DR, ...), not " + r.start.toString()
+                       + "; use discretes commands for single points.");
     }
-    const std::uint32_t maxElements = Limits::maxRegisterWords / static_cast<std::uint32_t>(r.start.words());
+    const std::uint32_t maxElements
+        = Limits::maxRegisterWords / static_cast<std::uint32_t>(r.start.words());
     if (n < 1 || n > maxElements) {
-        return limit(std::string(commandName(r.command)) + ": " + std::to_string(n) + " "
-                     + (isDoubleWord(r.start.type) ? "32-bit" : "16-bit")
-                     + " registers requested; one request carries 1 to " + std::to_string(maxElements)
-                     + (isDoubleWord(r.start.type) ? " (32-bit registers count as two words)." : "."));
+        return limit(
+            std::string(commandName(r.command)) + ": " + std::to_string(n) + " "
+            + (isDoubleWord(r.start.type) ? "32-bit" : "16-bit")
+            + " registers requested; one request carries 1 to " + std::to_string(maxElements)
+            + (isDoubleWord(r.start.type) ? " (32-bit registers count as two words)." : "."));
     }
     if (Status s = checkProtocolSupport(r.start, protocol); !s)
         return s;
@@ -364,7 +374,8 @@ Status checkMixed(const Request &r, std::uint32_t maxWords, Protocol protocol)
         return limit(std::string(commandName(r.command)) + ": no element given.");
     if (r.addresses.size() > 255) {
         return limit(std::string(commandName(r.command)) + ": " + std::to_string(r.addresses.size())
-                     + " elements; at most " + std::to_string(maxWords) + " words fit in one request.");
+                     + " elements; at most " + std::to_string(maxWords)
+                     + " words fit in one request.");
     }
     std::uint32_t words = 0;
     for (const Address &a : r.addresses) {
@@ -375,9 +386,10 @@ Status checkMixed(const Request &r, std::uint32_t maxWords, Protocol protocol)
         words += static_cast<std::uint32_t>(a.words());
     }
     if (words > maxWords) {
-        return limit(std::string(commandName(r.command)) + ": " + std::to_string(words)
-                     + " words requested; at most " + std::to_string(maxWords)
-                     + " fit in one request (a discrete or 16-bit element counts 1, a 32-bit element 2).");
+        return limit(
+            std::string(commandName(r.command)) + ": " + std::to_string(words)
+            + " words requested; at most " + std::to_string(maxWords)
+            + " fit in one request (a discrete or 16-bit element counts 1, a 32-bit element 2).");
     }
     return Ok{};
 }
@@ -387,20 +399,20 @@ Status checkMixed(const Request &r, std::uint32_t maxWords, Protocol protocol)
 Status validateRequest(const Request &r, Protocol protocol)
 {
     if (r.station > Limits::maxStation) {
-        return invalid("Station " + std::to_string(r.station) + " is not valid: stations are 1 to 254 (0 = broadcast).");
+        return invalid("Station " + std::to_string(r.station)
+                       + " is not valid: stations are 1 to 254 (0 = broadcast).");
     }
     switch (r.command) {
     case Command::BriefStatus:
     case Command::DetailStatus:
-    case Command::RunStop:
-        return Ok{};
+    case Command::RunStop: return Ok{};
     case Command::DiscreteControl:
         if (r.op < DiscreteOp::Disable || r.op > DiscreteOp::Reset)
-            return invalid("Unknown discrete operation " + std::to_string(static_cast<int>(r.op)) + ".");
+            return invalid("Unknown discrete operation " + std::to_string(static_cast<int>(r.op))
+                           + ".");
         return checkDiscreteSpan(r, 1, protocol);
     case Command::ReadEnableFlags:
-    case Command::ReadDiscretes:
-        return checkDiscreteSpan(r, r.count, protocol);
+    case Command::ReadDiscretes: return checkDiscreteSpan(r, r.count, protocol);
     case Command::WriteDiscretes: {
         const auto n = static_cast<std::uint32_t>(r.values.size());
         if (Status s = checkDiscreteSpan(r, n, protocol); !s)
@@ -411,8 +423,7 @@ Status validateRequest(const Request &r, Protocol protocol)
         }
         return Ok{};
     }
-    case Command::ReadRegisters:
-        return checkRegisterSpan(r, r.count, protocol);
+    case Command::ReadRegisters: return checkRegisterSpan(r, r.count, protocol);
     case Command::WriteRegisters: {
         const auto n = static_cast<std::uint32_t>(r.values.size());
         if (Status s = checkRegisterSpan(r, n, protocol); !s)
@@ -423,8 +434,7 @@ Status validateRequest(const Request &r, Protocol protocol)
         }
         return Ok{};
     }
-    case Command::MixedRead:
-        return checkMixed(r, Limits::maxMixedReadWords, protocol);
+    case Command::MixedRead: return checkMixed(r, Limits::maxMixedReadWords, protocol);
     case Command::MixedWrite: {
         if (r.values.size() != r.addresses.size()) {
             return invalid("Mixed write: " + std::to_string(r.addresses.size()) + " addresses but "
@@ -458,8 +468,8 @@ Status validateRequest(const Request &r, Protocol protocol)
         }
         if (r.command == Command::WriteProgram) {
             if (r.values.size() != Limits::programPageWords) {
-                return invalid("A program page holds exactly 64 words; " + std::to_string(r.values.size())
-                               + " given.");
+                return invalid("A program page holds exactly 64 words; "
+                               + std::to_string(r.values.size()) + " given.");
             }
             for (std::uint32_t w : r.values) {
                 if (w > 0xFFFF)

@@ -40,12 +40,12 @@ enum class DiscreteOp : std::uint8_t { Disable = 1, Enable = 2, Set = 3, Reset =
 std::string_view discreteOpName(DiscreteOp op); // "disable"
 
 namespace Limits {
-inline constexpr std::uint32_t maxDiscretes = 256;     // 43 44 45
-inline constexpr std::uint32_t maxRegisterWords = 64;  // 46 47 (32-bit elements count 2)
-inline constexpr std::uint32_t maxMixedReadWords = 64; // 48
+inline constexpr std::uint32_t maxDiscretes = 256;      // 43 44 45
+inline constexpr std::uint32_t maxRegisterWords = 64;   // 46 47 (32-bit elements count 2)
+inline constexpr std::uint32_t maxMixedReadWords = 64;  // 48
 inline constexpr std::uint32_t maxMixedWriteWords = 32; // 49
-inline constexpr std::uint32_t maxLoopback = 256;      // 4E bytes / chars
-inline constexpr std::uint32_t programPageWords = 64;  // 4F 50
+inline constexpr std::uint32_t maxLoopback = 256;       // 4E bytes / chars
+inline constexpr std::uint32_t programPageWords = 64;   // 4F 50
 inline constexpr std::uint8_t broadcastStation = 0;
 inline constexpr std::uint8_t maxStation = 254;
 } // namespace Limits
@@ -71,22 +71,27 @@ struct Request
     static Request discreteControl(std::uint8_t station, DiscreteOp op, Address discrete);
     static Request readEnableFlags(std::uint8_t station, Address start, std::uint32_t count);
     static Request readDiscretes(std::uint8_t station, Address start, std::uint32_t count);
-    static Request writeDiscretes(std::uint8_t station, Address start, std::vector<std::uint32_t> values);
+    static Request writeDiscretes(std::uint8_t station, Address start,
+                                  std::vector<std::uint32_t> values);
     static Request readRegisters(std::uint8_t station, Address start, std::uint32_t count);
-    static Request writeRegisters(std::uint8_t station, Address start, std::vector<std::uint32_t> values);
+    static Request writeRegisters(std::uint8_t station, Address start,
+                                  std::vector<std::uint32_t> values);
     static Request mixedRead(std::uint8_t station, std::vector<Address> addresses);
-    static Request mixedWrite(std::uint8_t station, std::vector<Address> addresses, std::vector<std::uint32_t> values);
+    static Request mixedWrite(std::uint8_t station, std::vector<Address> addresses,
+                              std::vector<std::uint32_t> values);
     static Request loopback(std::uint8_t station, Bytes data);
     static Request readProgram(std::uint8_t station, std::uint16_t page);
-    static Request writeProgram(std::uint8_t station, std::uint16_t page, std::vector<std::uint32_t> words);
+    static Request writeProgram(std::uint8_t station, std::uint16_t page,
+                                std::vector<std::uint32_t> words);
     static Request detailStatus(std::uint8_t station);
 
     // Number of values a successful answer carries (43 44 46 48 4F), else 0.
     std::uint32_t expectedValueCount() const;
     // Short text for logs: "read R12..R14", "write Y0=1".
     std::string describe() const;
-    // What the request addresses, for error messages: "R12..R14", "Y0", "R1, Y9, DWM0", "" (40 41 4E 53).
-    // Decoders build PLC errors as makePlcError(code, request.target()) -> "PLC error A: illegal address R70000".
+    // What the request addresses, for error messages: "R12..R14", "Y0", "R1, Y9, DWM0", "" (40 41
+    // 4E 53). Decoders build PLC errors as makePlcError(code, request.target()) -> "PLC error A:
+    // illegal address R70000".
     std::string target() const;
 };
 

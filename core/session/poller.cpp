@@ -179,8 +179,8 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
                     group.replan = true;
             }
             for (const PlanSlot &slot : step.itemSlots)
-                group.cycleValues.insert(slot.itemId, {slot.itemId, 0, now, ValueQuality::Error,
-                                                       result.errorText()});
+                group.cycleValues.insert(
+                    slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorText()});
         }
     } else if (result.errorKind() == ErrorKind::PlcError
                || result.errorKind() == ErrorKind::InvalidAddress
@@ -188,12 +188,13 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
                || result.errorKind() == ErrorKind::LimitExceeded
                || result.errorKind() == ErrorKind::Unsupported) {
         for (const PlanSlot &slot : step.itemSlots)
-            group.cycleValues.insert(slot.itemId,
-                                     {slot.itemId, 0, now, ValueQuality::Error, result.errorText()});
+            group.cycleValues.insert(
+                slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorText()});
     } else {
         // Timeout, link down, damaged answers: the old value is kept, marked stale.
         for (const PlanSlot &slot : step.itemSlots) {
-            WatchValue value = m_lastGood.value(slot.itemId, WatchValue{slot.itemId, 0, {}, {}, {}});
+            WatchValue value
+                = m_lastGood.value(slot.itemId, WatchValue{slot.itemId, 0, {}, {}, {}});
             value.quality = ValueQuality::Stale;
             value.error = result.errorText();
             group.cycleValues.insert(slot.itemId, value);
@@ -210,8 +211,9 @@ void Poller::finishCycle(Group &group)
     QList<WatchValue> batch;
     batch.reserve(static_cast<qsizetype>(group.items.size()));
     for (const UnplannableItem &item : group.plan.unplannable)
-        group.cycleValues.insert(item.itemId, {item.itemId, 0, QDateTime::currentDateTime(),
-                                               ValueQuality::Error, QString::fromStdString(item.reason)});
+        group.cycleValues.insert(item.itemId,
+                                 {item.itemId, 0, QDateTime::currentDateTime(), ValueQuality::Error,
+                                  QString::fromStdString(item.reason)});
     for (const WatchItem &item : group.items) {
         auto it = group.cycleValues.constFind(item.id);
         if (it != group.cycleValues.constEnd())

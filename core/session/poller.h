@@ -69,7 +69,8 @@ private:
     void onTimer();
     void startCycle(Group &group);
     void submitStep(Group &group, const PlanStep &step);
-    void onStepDone(int intervalMs, quint64 generation, const PlanStep &step, const SessionResult &result);
+    void onStepDone(int intervalMs, quint64 generation, const PlanStep &step,
+                    const SessionResult &result);
     void finishCycle(Group &group);
 
     SubmitFunction m_submit;
@@ -84,4 +85,3 @@ private:
 };
 
 } // namespace Fatek
-

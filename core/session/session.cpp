@@ -76,7 +76,8 @@ quint64 Session::submit(const Request &request, Priority priority, RequestOption
     job.options = options;
     const quint64 id = job.id;
     QMetaObject::invokeMethod(
-        m_worker, [worker = m_worker, job = std::move(job)]() mutable { worker->enqueue(std::move(job)); },
+        m_worker,
+        [worker = m_worker, job = std::move(job)]() mutable { worker->enqueue(std::move(job)); },
         Qt::QueuedConnection);
     return id;
 }
@@ -92,15 +93,16 @@ quint64 Session::sendRaw(const QByteArray &bytes, bool addFraming, RequestOption
     job.options = options;
     const quint64 id = job.id;
     QMetaObject::invokeMethod(
-        m_worker, [worker = m_worker, job = std::move(job)]() mutable { worker->enqueue(std::move(job)); },
+        m_worker,
+        [worker = m_worker, job = std::move(job)]() mutable { worker->enqueue(std::move(job)); },
         Qt::QueuedConnection);
     return id;
 }
 
 void Session::cancel(quint64 id)
 {
-    QMetaObject::invokeMethod(m_worker, [worker = m_worker, id] { worker->cancel(id); },
-                              Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        m_worker, [worker = m_worker, id] { worker->cancel(id); }, Qt::QueuedConnection);
 }
 
 void Session::setReadOnly(bool readOnly)
@@ -146,8 +148,9 @@ void Session::resetStatistics()
 
 void Session::setWatchList(const QList<WatchEntry> &entries)
 {
-    QMetaObject::invokeMethod(m_worker, [worker = m_worker, entries] { worker->setWatchList(entries); },
-                              Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        m_worker, [worker = m_worker, entries] { worker->setWatchList(entries); },
+        Qt::QueuedConnection);
 }
 
 } // namespace Fatek

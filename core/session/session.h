@@ -21,7 +21,8 @@ struct SessionShared;
 
 // One link (one transport, one protocol) serving one or several stations. The Session object
 // lives in the caller's thread; the I/O runs on a worker QThread it owns. Every public function
-// is thread-safe and returns at once; each submitted request gets exactly one finished() with its id.
+// is thread-safe and returns at once; each submitted request gets exactly one finished() with its
+// id.
 class Session : public QObject
 {
     Q_OBJECT
@@ -48,7 +49,8 @@ public:
     // Drops a queued request (finished() with Cancelled); a request already on the wire completes.
     void cancel(quint64 id);
 
-    // Operator mode: write commands and raw frames are refused (ErrorKind::ReadOnly) before the wire.
+    // Operator mode: write commands and raw frames are refused (ErrorKind::ReadOnly) before the
+    // wire.
     void setReadOnly(bool readOnly);
     bool isReadOnly() const;
 

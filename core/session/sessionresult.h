@@ -17,7 +17,8 @@ public:
     SessionResult() = default; // for the meta-type system: a Cancelled error
     SessionResult(Result<Response> result, QByteArray rawAnswer = {}, bool raw = false);
 
-    static SessionResult fromError(ProtocolError error, QByteArray rawAnswer = {}, bool raw = false);
+    static SessionResult fromError(ProtocolError error, QByteArray rawAnswer = {},
+                                   bool raw = false);
     static SessionResult fromRaw(QByteArray rawAnswer);
 
     bool ok() const { return m_result.ok(); }

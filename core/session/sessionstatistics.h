@@ -20,9 +20,9 @@ struct StationStatistics
     quint64 retries = 0;        // attempts beyond the first
     quint64 bytesOut = 0;
     quint64 bytesIn = 0;
-    double rttLastMs = 0;  // query written -> answer complete, last good answer
-    double rttMeanMs = 0;  // over every answer since the last reset
-    double rttP50Ms = 0;   // over the last rttWindow answers
+    double rttLastMs = 0; // query written -> answer complete, last good answer
+    double rttMeanMs = 0; // over every answer since the last reset
+    double rttP50Ms = 0;  // over the last rttWindow answers
     double rttP99Ms = 0;
 
     static constexpr int rttWindow = 1024;
@@ -43,8 +43,8 @@ struct SessionStatistics
 {
     StationStatistics total;
     QMap<quint8, StationStatistics> stations;
-    quint64 pollCycles = 0;   // poll cycles completed
-    double lastCycleMs = 0;   // duration of the last poll cycle
+    quint64 pollCycles = 0;     // poll cycles completed
+    double lastCycleMs = 0;     // duration of the last poll cycle
     quint64 bytesDiscarded = 0; // stale or unexpected bytes thrown away
 };
 

@@ -28,7 +28,8 @@ std::span<const std::uint8_t> bytesOf(const QByteArray &bytes)
 
 QByteArray toQByteArray(const Bytes &bytes)
 {
-    return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()),
+                      static_cast<qsizetype>(bytes.size()));
 }
 
 } // namespace
@@ -167,8 +168,9 @@ void SessionWorker::onDisconnected(const QString &reason)
     if (m_wantOpen && m_settings.autoReconnect) {
         const int delay = m_backoffMs;
         m_backoffMs = std::min(m_settings.reconnectMaxMs, m_backoffMs * 2);
-        setState(LinkState::Reconnecting,
-                 QStringLiteral("%1; next attempt in %2 s").arg(reason).arg(delay / 1000.0, 0, 'f', 1));
+        setState(
+            LinkState::Reconnecting,
+            QStringLiteral("%1; next attempt in %2 s").arg(reason).arg(delay / 1000.0, 0, 'f', 1));
         m_reconnectTimer.start(delay);
     } else {
         m_wantOpen = false;
@@ -227,12 +229,14 @@ void SessionWorker::enqueue(SessionJob job)
         return;
     }
     if (m_state != LinkState::Connected && m_state != LinkState::Connecting) {
-        const QString why = m_state == LinkState::Closed
-                                ? QStringLiteral("the link is not open")
-                                : QStringLiteral("the link is down (%1)").arg(linkStateName(m_state));
-        deliver(job, SessionResult::fromError(makeError(ErrorKind::LinkError,
-                                                        toStd(QStringLiteral("Not sent: %1.").arg(why))),
-                                              {}, job.raw));
+        const QString why
+            = m_state == LinkState::Closed
+                  ? QStringLiteral("the link is not open")
+                  : QStringLiteral("the link is down (%1)").arg(linkStateName(m_state));
+        deliver(job,
+                SessionResult::fromError(makeError(ErrorKind::LinkError,
+                                                   toStd(QStringLiteral("Not sent: %1.").arg(why))),
+                                         {}, job.raw));
         return;
     }
     queueFor(job.priority).push_back(std::move(job));
@@ -247,8 +251,9 @@ void SessionWorker::cancel(quint64 id)
         if (it != queue->end()) {
             SessionJob job = std::move(*it);
             queue->erase(it);
-            deliver(job, SessionResult::fromError(makeError(ErrorKind::Cancelled, "Cancelled before it was sent."),
-                                                  {}, job.raw));
+            deliver(job, SessionResult::fromError(
+                             makeError(ErrorKind::Cancelled, "Cancelled before it was sent."), {},
+                             job.raw));
             return;
         }
     }
@@ -289,10 +294,13 @@ void SessionWorker::schedulePump()
     if (m_pumpScheduled)
         return;
     m_pumpScheduled = true;
-    QMetaObject::invokeMethod(this, [this] {
-        m_pumpScheduled = false;
-        pump();
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_pumpScheduled = false;
+            pump();
+        },
+        Qt::QueuedConnection);
 }
 
 void SessionWorker::pump()
@@ -346,14 +354,15 @@ bool SessionWorker::prepare(SessionJob &job)
                     (*next)(Protocol::Binary);
                 } else {
                     const ErrorKind kind = linkDown ? result.errorKind() : ErrorKind::Timeout;
-                    deliver(*waiting,
-                            SessionResult::fromError(
-                                makeError(kind,
-                                          toStd(QStringLiteral("Protocol auto-detect: station %1 answered "
-                                                               "neither in FACON nor in binary (%2)")
-                                                    .arg(station)
-                                                    .arg(result.errorText()))),
-                                {}, waiting->raw));
+                    deliver(
+                        *waiting,
+                        SessionResult::fromError(
+                            makeError(kind, toStd(QStringLiteral(
+                                                      "Protocol auto-detect: station %1 answered "
+                                                      "neither in FACON nor in binary (%2)")
+                                                      .arg(station)
+                                                      .arg(result.errorText()))),
+                            {}, waiting->raw));
                 }
             };
             m_userQueue.push_front(std::move(probe));
@@ -414,13 +423,14 @@ void SessionWorker::proceed()
 void SessionWorker::startAttempt()
 {
     SessionJob &job = *m_current;
-    const Codec *activeCodec = job.probe ? (*job.probe == Protocol::Facon ? m_faconCodec.get()
-                                                                          : m_binaryCodec.get())
-                                         : codec();
+    const Codec *activeCodec
+        = job.probe ? (*job.probe == Protocol::Facon ? m_faconCodec.get() : m_binaryCodec.get())
+                    : codec();
 
     // Stale bytes (a late answer to a timed-out query, noise) must not join the next answer.
     const QByteArray stale = m_transport->takePending();
-    const std::size_t partial = m_faconDeframer->bufferedBytes() + m_binaryDeframer->bufferedBytes();
+    const std::size_t partial
+        = m_faconDeframer->bufferedBytes() + m_binaryDeframer->bufferedBytes();
     m_faconDeframer->reset();
     m_binaryDeframer->reset();
     if (!stale.isEmpty()) {
@@ -457,8 +467,8 @@ void SessionWorker::startAttempt()
     if (!m_transport->write(frame)) {
         // The transport reports the failure itself (disconnected); make sure the job ends.
         finishCurrent(SessionResult::fromError(
-            makeError(ErrorKind::LinkError, toStd(QStringLiteral("Could not write to %1.")
-                                                      .arg(m_transport->describe()))),
+            makeError(ErrorKind::LinkError,
+                      toStd(QStringLiteral("Could not write to %1.").arg(m_transport->describe()))),
             {}, job.raw));
         return;
     }
@@ -514,8 +524,10 @@ void SessionWorker::onBytes(const QByteArray &bytes)
     }
 
     const Protocol protocol = job.probe ? *job.probe : *m_protocol;
-    const Codec *activeCodec = protocol == Protocol::Facon ? m_faconCodec.get() : m_binaryCodec.get();
-    Deframer *deframer = protocol == Protocol::Facon ? m_faconDeframer.get() : m_binaryDeframer.get();
+    const Codec *activeCodec
+        = protocol == Protocol::Facon ? m_faconCodec.get() : m_binaryCodec.get();
+    Deframer *deframer
+        = protocol == Protocol::Facon ? m_faconDeframer.get() : m_binaryDeframer.get();
     std::vector<DeframedItem> items;
     deframer->feed(bytesOf(bytes), items);
     for (DeframedItem &item : items) {
@@ -534,7 +546,8 @@ void SessionWorker::onBytes(const QByteArray &bytes)
         if (!decoded && frame == m_sentFrame) {
             // 2-wire RS-485 hears its own query. (Only when it does not decode as an answer: a
             // FACON STOP or loopback answer is byte for byte the query.)
-            m_log->append(TrafficEntry::Direction::In, frame, QStringLiteral("echo of the query"), {});
+            m_log->append(TrafficEntry::Direction::In, frame, QStringLiteral("echo of the query"),
+                          {});
             continue;
         }
         if (!decoded
@@ -568,7 +581,8 @@ void SessionWorker::onRawBytes(const QByteArray &bytes)
     // the timeout.
     if (!m_protocol)
         return;
-    Deframer *deframer = *m_protocol == Protocol::Facon ? m_faconDeframer.get() : m_binaryDeframer.get();
+    Deframer *deframer
+        = *m_protocol == Protocol::Facon ? m_faconDeframer.get() : m_binaryDeframer.get();
     std::vector<DeframedItem> items;
     deframer->feed(bytesOf(bytes), items);
     for (const DeframedItem &item : items) {
@@ -599,7 +613,8 @@ void SessionWorker::onTimeout()
             m_log->append(TrafficEntry::Direction::Event, {}, QStringLiteral("raw frame"),
                           QStringLiteral("no answer within %1 ms").arg(timeout));
             finishCurrent(SessionResult::fromError(
-                makeError(ErrorKind::Timeout, toStd(QStringLiteral("No answer within %1 ms.").arg(timeout))),
+                makeError(ErrorKind::Timeout,
+                          toStd(QStringLiteral("No answer within %1 ms.").arg(timeout))),
                 {}, true));
         } else {
             m_log->append(TrafficEntry::Direction::In, m_answer, QStringLiteral("raw answer"),
@@ -611,11 +626,12 @@ void SessionWorker::onTimeout()
     const quint8 station = stationOf(job);
     countForStation(station, [](StationStatistics &s) { ++s.timeouts; });
     const int attempts = retriesFor(job) + 1;
-    const QString message = QStringLiteral("No answer from station %1 within %2 ms (attempt %3 of %4).")
-                                .arg(station)
-                                .arg(timeout)
-                                .arg(job.attempts)
-                                .arg(attempts);
+    const QString message
+        = QStringLiteral("No answer from station %1 within %2 ms (attempt %3 of %4).")
+              .arg(station)
+              .arg(timeout)
+              .arg(job.attempts)
+              .arg(attempts);
     m_log->append(TrafficEntry::Direction::Event, {},
                   QString::fromStdString(job.request.describe()), message);
     retryOrFail(makeError(ErrorKind::Timeout, toStd(message)));

@@ -57,7 +57,8 @@ class SessionWorker : public QObject
     Q_OBJECT
 
 public:
-    SessionWorker(const LinkSettings &settings, std::shared_ptr<SessionShared> shared, TrafficLog *log);
+    SessionWorker(const LinkSettings &settings, std::shared_ptr<SessionShared> shared,
+                  TrafficLog *log);
     ~SessionWorker() override;
 
     void open();
@@ -119,7 +120,7 @@ private:
     std::deque<SessionJob> m_pollQueue;
     std::optional<SessionJob> m_current;
     QByteArray m_sentFrame;
-    QByteArray m_answer;       // bytes of the current attempt's answer
+    QByteArray m_answer; // bytes of the current attempt's answer
     bool m_pumpScheduled = false;
 
     LinkState m_state = LinkState::Closed;

@@ -37,7 +37,8 @@ void StationScanner::start(int first, int last, int timeoutMs)
     // actions still go first.
     for (int station = first; station <= last; ++station) {
         const auto s = static_cast<quint8>(station);
-        m_pending.insert(m_session->submit(Request::briefStatus(s), Priority::Background, options), s);
+        m_pending.insert(m_session->submit(Request::briefStatus(s), Priority::Background, options),
+                         s);
     }
     Q_EMIT progress(0, m_total);
 }

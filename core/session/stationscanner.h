@@ -46,7 +46,7 @@ private:
     void onFinished(quint64 id, const SessionResult &result);
     void dropPending();
 
-    QPointer<Session> m_session; // the scanner may outlive it
+    QPointer<Session> m_session;      // the scanner may outlive it
     QHash<quint64, quint8> m_pending; // request id -> station
     QList<Hit> m_hits;
     int m_total = 0;

@@ -32,7 +32,8 @@ quint64 TrafficLog::append(TrafficEntry::Direction direction, const QByteArray &
     {
         QMutexLocker locker(&m_mutex);
         sequence = ++m_lastSequence;
-        m_entries.push_back({sequence, QDateTime::currentDateTime(), direction, bytes, summary, error});
+        m_entries.push_back(
+            {sequence, QDateTime::currentDateTime(), direction, bytes, summary, error});
         while (m_entries.size() > static_cast<std::size_t>(m_capacity))
             m_entries.pop_front();
     }
@@ -51,7 +52,8 @@ QList<TrafficEntry> TrafficLog::entries(quint64 after) const
     const quint64 first = m_entries.front().sequence;
     const std::size_t skip = after < first ? 0 : static_cast<std::size_t>(after - first + 1);
     list.reserve(static_cast<qsizetype>(m_entries.size() - skip));
-    for (auto it = m_entries.begin() + static_cast<std::ptrdiff_t>(skip); it != m_entries.end(); ++it)
+    for (auto it = m_entries.begin() + static_cast<std::ptrdiff_t>(skip); it != m_entries.end();
+         ++it)
         list.append(*it);
     return list;
 }

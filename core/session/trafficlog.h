@@ -20,9 +20,9 @@ struct TrafficEntry
     quint64 sequence = 0; // increasing from 1, never reused (survives clear())
     QDateTime timestamp;
     Direction direction = Direction::Event;
-    QByteArray bytes;     // raw frame (empty for events such as a timeout)
-    QString summary;      // decoded: "46 read registers, station 1, 3 x R12"
-    QString error;        // "bad checksum", "unexpected station 2", "timeout after 1000 ms"
+    QByteArray bytes; // raw frame (empty for events such as a timeout)
+    QString summary;  // decoded: "46 read registers, station 1, 3 x R12"
+    QString error;    // "bad checksum", "unexpected station 2", "timeout after 1000 ms"
 };
 
 // Every frame in and out of a session, bounded (oldest entries dropped). Written by the session's

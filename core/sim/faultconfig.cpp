@@ -7,7 +7,8 @@ int FaultConfig::wireTimeMs(qsizetype bytes) const
     if (baud <= 0 || bytes <= 0)
         return 0;
     const qint64 bits = static_cast<qint64>(bytes) * 10;
-    return static_cast<int>((bits * 1000 + baud - 1) / baud); // rounded up: never faster than the line
+    return static_cast<int>((bits * 1000 + baud - 1)
+                            / baud); // rounded up: never faster than the line
 }
 
 bool FaultConfig::anyActive() const

@@ -11,16 +11,16 @@ namespace Fatek {
 // Random choices come from a generator seeded with `seed`, so a test sees the same faults each run.
 struct FaultConfig
 {
-    int latencyMs = 0;          // added before every answer
-    int jitterMs = 0;           // plus 0..jitterMs, random
-    int turnaroundMs = 0;       // slave turnaround time, added before every answer
-    int baud = 0;               // > 0: each answer also waits its wire time at 10 bits per byte
-    double dropRate = 0.0;      // fraction of answers not sent (the request is still executed)
-    double corruptRate = 0.0;   // fraction of answer bytes flipped
-    int garbageBytes = 0;       // noise bytes sent before each answer (never a frame start byte)
-    int chunkSize = 0;          // > 0: answers go out in pieces of this many bytes ...
-    int chunkDelayMs = 0;       // ... this far apart
-    int closeEverySeconds = 0;  // > 0: TCP connections are closed this long after they open
+    int latencyMs = 0;             // added before every answer
+    int jitterMs = 0;              // plus 0..jitterMs, random
+    int turnaroundMs = 0;          // slave turnaround time, added before every answer
+    int baud = 0;                  // > 0: each answer also waits its wire time at 10 bits per byte
+    double dropRate = 0.0;         // fraction of answers not sent (the request is still executed)
+    double corruptRate = 0.0;      // fraction of answer bytes flipped
+    int garbageBytes = 0;          // noise bytes sent before each answer (never a frame start byte)
+    int chunkSize = 0;             // > 0: answers go out in pieces of this many bytes ...
+    int chunkDelayMs = 0;          // ... this far apart
+    int closeEverySeconds = 0;     // > 0: TCP connections are closed this long after they open
     double wrongStationRate = 0.0; // fraction of answers sent with another station number
     std::uint32_t seed = 1;
 

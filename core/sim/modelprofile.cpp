@@ -75,7 +75,8 @@ bool ModelProfile::contains(const Address &start, std::uint32_t count) const
 
 std::uint16_t ModelProfile::programPages() const
 {
-    return static_cast<std::uint16_t>(1 + (programWords + Limits::programPageWords - 1) / Limits::programPageWords);
+    return static_cast<std::uint16_t>(
+        1 + (programWords + Limits::programPageWords - 1) / Limits::programPageWords);
 }
 
 Bytes ModelProfile::detailStatus(std::uint8_t status1) const

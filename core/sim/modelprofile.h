@@ -25,9 +25,9 @@ struct ModelProfile
 
     std::uint8_t status2 = 0; // 40: program capacity / model code
     std::uint8_t status3 = 0;
-    std::uint8_t mainUnitType = 1;  // 53 STATUS2: 1 = MC
-    std::uint8_t ioPointsCode = 2;  // 53 STATUS3: 2 = 28 points
-    std::uint8_t osVersion = 0x31;  // 53 STATUS4: V3.1
+    std::uint8_t mainUnitType = 1; // 53 STATUS2: 1 = MC
+    std::uint8_t ioPointsCode = 2; // 53 STATUS3: 2 = 28 points
+    std::uint8_t osVersion = 0x31; // 53 STATUS4: V3.1
     std::uint16_t programWords = 13184;
     std::uint16_t analogInputs = 0;
     std::uint16_t analogOutputs = 0;

@@ -23,8 +23,8 @@ std::size_t registerSlot(ElementType t)
 
 constexpr std::array<ElementType, 6> kDiscretes = {ElementType::X, ElementType::Y, ElementType::M,
                                                    ElementType::S, ElementType::T, ElementType::C};
-constexpr std::array<ElementType, 5> kRegisters = {ElementType::RT, ElementType::RC, ElementType::R,
-                                                   ElementType::D, ElementType::F};
+constexpr std::array<ElementType, 5> kRegisters
+    = {ElementType::RT, ElementType::RC, ElementType::R, ElementType::D, ElementType::F};
 
 } // namespace
 

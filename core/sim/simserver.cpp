@@ -33,7 +33,8 @@ SimServer::SimServer(SimulatedPlc *plc, QObject *parent)
     , m_random(m_faults.seed)
 {
     m_ladderTimer.setInterval(ladderPeriodMs);
-    connect(&m_ladderTimer, &QTimer::timeout, this, [this] { m_plc->scan(m_ladderClock.elapsed()); });
+    connect(&m_ladderTimer, &QTimer::timeout, this,
+            [this] { m_plc->scan(m_ladderClock.elapsed()); });
 }
 
 SimServer::~SimServer()
@@ -68,7 +69,9 @@ bool SimServer::listenTcp(quint16 port, QString *error)
     if (!m_tcp->listen(m_bind, port)) {
         if (error) {
             *error = QStringLiteral("Cannot listen on TCP %1:%2: %3")
-                         .arg(m_bind.toString()).arg(port).arg(m_tcp->errorString());
+                         .arg(m_bind.toString())
+                         .arg(port)
+                         .arg(m_tcp->errorString());
         }
         return false;
     }
@@ -86,7 +89,9 @@ bool SimServer::listenUdp(quint16 port, QString *error)
     if (!m_udp->bind(m_bind, port)) {
         if (error) {
             *error = QStringLiteral("Cannot listen on UDP %1:%2: %3")
-                         .arg(m_bind.toString()).arg(port).arg(m_udp->errorString());
+                         .arg(m_bind.toString())
+                         .arg(port)
+                         .arg(m_udp->errorString());
         }
         return false;
     }
@@ -109,19 +114,22 @@ bool SimServer::openSerial(const SerialSettings &settings, QString *error)
     port->setFlowControl(QSerialPort::NoFlowControl);
     if (!port->open(QIODevice::ReadWrite)) {
         if (error) {
-            *error = QStringLiteral("Cannot open serial port %1: %2").arg(settings.portName, port->errorString());
+            *error = QStringLiteral("Cannot open serial port %1: %2")
+                         .arg(settings.portName, port->errorString());
         }
         delete port;
         return false;
     }
     m_serial = port;
-    m_serialConnection = new SimConnection(QStringLiteral("serial ") + settings.portName,
-                                           [port](const QByteArray &bytes) { port->write(bytes); }, port);
+    m_serialConnection = new SimConnection(
+        QStringLiteral("serial ") + settings.portName,
+        [port](const QByteArray &bytes) { port->write(bytes); }, port);
     connect(port, &QSerialPort::readyRead, m_serialConnection,
             [this, port] { handleBytes(m_serialConnection, port->readAll()); });
     connect(port, &QSerialPort::errorOccurred, this, [this, port](QSerialPort::SerialPortError e) {
         if (e != QSerialPort::NoError)
-            Q_EMIT logLine(QStringLiteral("serial %1: %2").arg(port->portName(), port->errorString()));
+            Q_EMIT logLine(
+                QStringLiteral("serial %1: %2").arg(port->portName(), port->errorString()));
     });
     return true;
 }
@@ -179,11 +187,15 @@ void SimServer::close()
 void SimServer::acceptTcp()
 {
     while (QTcpSocket *socket = m_tcp->nextPendingConnection()) {
-        const QString peer = peerText(QStringLiteral("tcp"), socket->peerAddress(), socket->peerPort());
-        auto *connection = new SimConnection(peer, [socket](const QByteArray &bytes) {
-            if (socket->state() == QAbstractSocket::ConnectedState)
-                socket->write(bytes);
-        }, socket);
+        const QString peer
+            = peerText(QStringLiteral("tcp"), socket->peerAddress(), socket->peerPort());
+        auto *connection = new SimConnection(
+            peer,
+            [socket](const QByteArray &bytes) {
+                if (socket->state() == QAbstractSocket::ConnectedState)
+                    socket->write(bytes);
+            },
+            socket);
         connect(socket, &QTcpSocket::readyRead, connection,
                 [this, socket, connection] { handleBytes(connection, socket->readAll()); });
         connect(socket, &QTcpSocket::disconnected, this, [this, socket, peer] {
@@ -228,9 +240,12 @@ void SimServer::readUdp()
                 }
             }
             QUdpSocket *udp = m_udp;
-            connection = new SimConnection(key, [udp, address, port](const QByteArray &bytes) {
-                udp->writeDatagram(bytes, address, port);
-            }, m_udp);
+            connection = new SimConnection(
+                key,
+                [udp, address, port](const QByteArray &bytes) {
+                    udp->writeDatagram(bytes, address, port);
+                },
+                m_udp);
             m_udpPeers.insert(key, connection);
         }
         handleBytes(connection, datagram.data());
@@ -255,8 +270,9 @@ void SimServer::handleFrame(SimConnection *connection, Protocol protocol, const 
 {
     const Codec &codec = protocol == Protocol::Facon ? static_cast<const Codec &>(m_faconCodec)
                                                      : static_cast<const Codec &>(m_binaryCodec);
-    const QString prefix = QStringLiteral("[%1] %2 ").arg(connection->peer(),
-                                                          QString::fromUtf8(protocolName(protocol).data()));
+    const QString prefix
+        = QStringLiteral("[%1] %2 ")
+              .arg(connection->peer(), QString::fromUtf8(protocolName(protocol).data()));
     const std::optional<FrameHeader> header = codec.frameHeader(frame);
     if (!header) {
         ++m_counters.rejected;
@@ -277,22 +293,26 @@ void SimServer::handleFrame(SimConnection *connection, Protocol protocol, const 
     Result<Request> decoded = codec.decodeRequest(frame);
     if (!decoded) {
         const int code = decoded.error().plcCode;
-        log(prefix + QStringLiteral("command %1: %2 -> %3")
-                         .arg(hexCode(header->command), QString::fromStdString(decoded.error().message),
-                              code == 0 || broadcast ? QStringLiteral("no answer")
-                                                     : QStringLiteral("error ") + hexCode(static_cast<std::uint8_t>(code))));
+        log(prefix
+            + QStringLiteral("command %1: %2 -> %3")
+                  .arg(hexCode(header->command), QString::fromStdString(decoded.error().message),
+                       code == 0 || broadcast
+                           ? QStringLiteral("no answer")
+                           : QStringLiteral("error ") + hexCode(static_cast<std::uint8_t>(code))));
         if (code == 0 || broadcast)
             return;
         FrameHeader answerHeader = *header;
         if (wrongStation)
             answerHeader.station = otherStation;
-        sendAnswer(connection, codec.encodeErrorResponse(answerHeader, static_cast<std::uint8_t>(code)));
+        sendAnswer(connection,
+                   codec.encodeErrorResponse(answerHeader, static_cast<std::uint8_t>(code)));
         return;
     }
     Request request = std::move(decoded).value();
     Response response = m_plc->execute(request, protocol);
     log(prefix + QString::fromStdString(request.describe()) + QStringLiteral(" -> ")
-        + (response.errorCode == 0 ? QStringLiteral("OK") : QStringLiteral("error ") + hexCode(response.errorCode))
+        + (response.errorCode == 0 ? QStringLiteral("OK")
+                                   : QStringLiteral("error ") + hexCode(response.errorCode))
         + (broadcast ? QStringLiteral(", broadcast: no answer") : QString()));
     if (broadcast)
         return;

@@ -46,8 +46,7 @@ SimulatedPlc::SimulatedPlc(const ModelProfile &profile)
     : m_memory(profile)
     , m_program(std::size_t{profile.programPages()} * Limits::programPageWords, 0)
     , m_running(true) // a PLC holding a program powers up in RUN
-{
-}
+{}
 
 ModelProfile SimulatedPlc::profile() const
 {
@@ -245,8 +244,9 @@ Response SimulatedPlc::executeLocked(const Request &r, Protocol protocol)
             return answer(r, c);
         for (std::uint32_t i = 0; i < r.count; ++i) {
             const std::uint32_t n = r.start.number + i;
-            const bool v = r.command == Command::ReadEnableFlags ? m_memory.isDisabled(r.start.type, n)
-                                                                 : m_memory.bit(r.start.type, n);
+            const bool v = r.command == Command::ReadEnableFlags
+                               ? m_memory.isDisabled(r.start.type, n)
+                               : m_memory.bit(r.start.type, n);
             resp.values.push_back(v ? 1 : 0);
         }
         return resp;
@@ -269,7 +269,8 @@ Response SimulatedPlc::executeLocked(const Request &r, Protocol protocol)
     case Command::WriteRegisters: {
         const bool write = r.command == Command::WriteRegisters;
         const auto n = write ? static_cast<std::uint32_t>(r.values.size()) : r.count;
-        const auto maxElements = Limits::maxRegisterWords / static_cast<std::uint32_t>(r.start.words());
+        const auto maxElements
+            = Limits::maxRegisterWords / static_cast<std::uint32_t>(r.start.words());
         if (!Fatek::isRegister(r.start.type) || n < 1 || n > maxElements)
             return answer(r, errFormat);
         if (auto c = spanCode(r.start, n))
@@ -290,7 +291,8 @@ Response SimulatedPlc::executeLocked(const Request &r, Protocol protocol)
     case Command::MixedRead:
     case Command::MixedWrite: {
         const bool write = r.command == Command::MixedWrite;
-        const std::uint32_t maxWords = write ? Limits::maxMixedWriteWords : Limits::maxMixedReadWords;
+        const std::uint32_t maxWords
+            = write ? Limits::maxMixedWriteWords : Limits::maxMixedReadWords;
         if (r.addresses.empty() || (write && r.values.size() != r.addresses.size()))
             return answer(r, errFormat);
         std::uint32_t words = 0;

@@ -40,7 +40,8 @@ public:
 
     // One scan of the demo ladder at `msSinceStart`; does nothing in STOP. The ladder: R0 counts
     // scans, R1 a signed sine (+-1000, 10 s period), Y0 blinks at 1 Hz, DR10 ramps 0..99999
-    // (one step per 10 ms), X0..X7 a walking bit (250 ms per step). Disabled discretes keep their value.
+    // (one step per 10 ms), X0..X7 a walking bit (250 ms per step). Disabled discretes keep their
+    // value.
     void scan(std::int64_t msSinceStart);
     std::uint64_t scanCount() const;
 

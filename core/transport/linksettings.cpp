@@ -53,12 +53,8 @@ QString LinkSettings::toString() const
 {
     QString medium;
     switch (kind) {
-    case Kind::Tcp:
-        medium = QStringLiteral("TCP %1:%2").arg(host).arg(port);
-        break;
-    case Kind::Udp:
-        medium = QStringLiteral("UDP %1:%2").arg(host).arg(port);
-        break;
+    case Kind::Tcp: medium = QStringLiteral("TCP %1:%2").arg(host).arg(port); break;
+    case Kind::Udp: medium = QStringLiteral("UDP %1:%2").arg(host).arg(port); break;
     case Kind::Serial:
         medium = QStringLiteral("%1 %2 %3%4%5")
                      .arg(portName.isEmpty() ? QStringLiteral("(no port)") : portName)
@@ -83,7 +79,8 @@ QString LinkSettings::validate() const
         if (host.trimmed().isEmpty())
             return QStringLiteral("Enter the PLC's IP address or host name.");
         if (port == 0)
-            return QStringLiteral("Port 0 is not usable; FATEK Ethernet modules usually listen on 500.");
+            return QStringLiteral(
+                "Port 0 is not usable; FATEK Ethernet modules usually listen on 500.");
         break;
     case Kind::Serial:
         if (portName.trimmed().isEmpty())
@@ -101,11 +98,13 @@ QString LinkSettings::validate() const
     if (retries < 0 || retries > 10)
         return QStringLiteral("Retries %1 is out of range (0 to 10).").arg(retries);
     if (interFrameMs < 0 || interFrameMs > 1000)
-        return QStringLiteral("Inter-frame silence %1 ms is out of range (0 to 1000 ms).").arg(interFrameMs);
+        return QStringLiteral("Inter-frame silence %1 ms is out of range (0 to 1000 ms).")
+            .arg(interFrameMs);
     if (connectTimeoutMs < 1)
         return QStringLiteral("Connect timeout must be at least 1 ms.");
     if (reconnectMinMs < 1 || reconnectMaxMs < reconnectMinMs)
-        return QStringLiteral("Reconnect delays must be positive, the maximum not below the minimum.");
+        return QStringLiteral(
+            "Reconnect delays must be positive, the maximum not below the minimum.");
     return {};
 }
 

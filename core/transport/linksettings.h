@@ -36,8 +36,8 @@ struct LinkSettings
     int interFrameMs = 5;        // serial only: line silence before a new query
     int connectTimeoutMs = 3000; // TCP connect
     bool autoReconnect = true;
-    int reconnectMinMs = 500;    // first reconnect delay, doubled after each failure ...
-    int reconnectMaxMs = 10000;  // ... up to this
+    int reconnectMinMs = 500;   // first reconnect delay, doubled after each failure ...
+    int reconnectMaxMs = 10000; // ... up to this
 
     static LinkSettings tcp(const QString &host, quint16 port = 500,
                             ProtocolChoice protocol = ProtocolChoice::Facon);

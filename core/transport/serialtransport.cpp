@@ -21,7 +21,8 @@ QList<SerialPortEntry> SerialTransport::availablePorts()
     QList<SerialPortEntry> ports;
     const auto infos = QSerialPortInfo::availablePorts();
     for (const QSerialPortInfo &info : infos)
-        ports.append({info.portName(), info.systemLocation(), info.description(), info.manufacturer()});
+        ports.append(
+            {info.portName(), info.systemLocation(), info.description(), info.manufacturer()});
     return ports;
 }
 
@@ -39,13 +40,18 @@ void SerialTransport::open()
     m_port->setStopBits(m_settings.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop);
     switch (m_settings.flowControl) {
     case LinkSettings::FlowControl::None: m_port->setFlowControl(QSerialPort::NoFlowControl); break;
-    case LinkSettings::FlowControl::Hardware: m_port->setFlowControl(QSerialPort::HardwareControl); break;
-    case LinkSettings::FlowControl::Software: m_port->setFlowControl(QSerialPort::SoftwareControl); break;
+    case LinkSettings::FlowControl::Hardware:
+        m_port->setFlowControl(QSerialPort::HardwareControl);
+        break;
+    case LinkSettings::FlowControl::Software:
+        m_port->setFlowControl(QSerialPort::SoftwareControl);
+        break;
     }
 
     const bool ok = m_port->open(QIODevice::ReadWrite);
     if (!ok) {
-        const QString reason = QStringLiteral("cannot open %1: %2").arg(describe(), m_port->errorString());
+        const QString reason
+            = QStringLiteral("cannot open %1: %2").arg(describe(), m_port->errorString());
         close();
         // Asynchronous like the other transports, so callers see one code path.
         QTimer::singleShot(0, this, [this, reason] { Q_EMIT disconnected(reason); });
@@ -57,7 +63,8 @@ void SerialTransport::open()
             Q_EMIT bytesReceived(bytes);
     });
     connect(m_port, &QSerialPort::errorOccurred, this, [this](QSerialPort::SerialPortError error) {
-        // Parity/framing errors are line noise (the checksum catches them); a vanished adapter is not.
+        // Parity/framing errors are line noise (the checksum catches them); a vanished adapter is
+        // not.
         if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError)
             return;
         if (error != QSerialPort::ResourceError && error != QSerialPort::PermissionError

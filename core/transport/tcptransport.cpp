@@ -46,9 +46,8 @@ void TcpTransport::open()
         else
             fail(QStringLiteral("%1: %2").arg(describe(), m_socket->errorString()));
     });
-    connect(m_socket, &QTcpSocket::disconnected, this, [this] {
-        fail(QStringLiteral("%1 closed the connection").arg(describe()));
-    });
+    connect(m_socket, &QTcpSocket::disconnected, this,
+            [this] { fail(QStringLiteral("%1 closed the connection").arg(describe())); });
     m_connectTimer.start(m_settings.connectTimeoutMs);
     m_socket->connectToHost(m_settings.host, m_settings.port);
 }

@@ -42,32 +42,24 @@ std::uint64_t widthMask(int width)
 QString widthPhrase(int width)
 {
     switch (width) {
-    case 1:
-        return QStringLiteral("a bit");
-    case 16:
-        return QStringLiteral("a 16-bit register");
-    default:
-        return QStringLiteral("a %1-bit value").arg(width);
+    case 1: return QStringLiteral("a bit");
+    case 16: return QStringLiteral("a 16-bit register");
+    default: return QStringLiteral("a %1-bit value").arg(width);
     }
 }
 
 QString needsText(DisplayFormat format)
 {
     switch (format) {
-    case DisplayFormat::Bit:
-        return QStringLiteral("a single bit");
-    case DisplayFormat::Float32:
-        return QStringLiteral("32 bits");
-    case DisplayFormat::Double64:
-        return QStringLiteral("64 bits");
+    case DisplayFormat::Bit: return QStringLiteral("a single bit");
+    case DisplayFormat::Float32: return QStringLiteral("32 bits");
+    case DisplayFormat::Double64: return QStringLiteral("64 bits");
     case DisplayFormat::Signed:
     case DisplayFormat::Bcd:
-    case DisplayFormat::Ascii:
-        return QStringLiteral("16 bits or more");
+    case DisplayFormat::Ascii: return QStringLiteral("16 bits or more");
     case DisplayFormat::Unsigned:
     case DisplayFormat::Hex:
-    case DisplayFormat::Binary:
-        break;
+    case DisplayFormat::Binary: break;
     }
     return QStringLiteral("1, 16, 32 or 64 bits");
 }
@@ -123,7 +115,8 @@ QString asciiText(std::uint64_t value, int width)
     for (int word = 0; word < width / 16; ++word) {
         for (int shift : {8, 0}) {
             const auto byte = static_cast<unsigned>((value >> (16 * word + shift)) & 0xFF);
-            text += byte >= 0x20 && byte <= 0x7E ? QChar(static_cast<char16_t>(byte)) : QLatin1Char('.');
+            text += byte >= 0x20 && byte <= 0x7E ? QChar(static_cast<char16_t>(byte))
+                                                 : QLatin1Char('.');
         }
     }
     return text;
@@ -132,14 +125,16 @@ QString asciiText(std::uint64_t value, int width)
 QString signedText(std::uint64_t value, int width)
 {
     if (width < 64 && (value >> (width - 1)) & 1)
-        return QString::number(static_cast<qint64>(value) - static_cast<qint64>(std::uint64_t(1) << width));
+        return QString::number(static_cast<qint64>(value)
+                               - static_cast<qint64>(std::uint64_t(1) << width));
     return QString::number(static_cast<qint64>(value));
 }
 
 QString rangeText(int width)
 {
-    const QString low = width >= 64 ? QStringLiteral("-9223372036854775808")
-                                    : QString::number(-static_cast<qint64>(std::uint64_t(1) << (width - 1)));
+    const QString low
+        = width >= 64 ? QStringLiteral("-9223372036854775808")
+                      : QString::number(-static_cast<qint64>(std::uint64_t(1) << (width - 1)));
     return QStringLiteral("%1..%2").arg(low, QString::number(widthMask(width)));
 }
 
@@ -188,11 +183,13 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
 
     const auto notANumber = [&] {
         if (bcd)
-            return valueError(QStringLiteral("\"%1\" is not a BCD number (digits 0-9 only)").arg(text));
+            return valueError(
+                QStringLiteral("\"%1\" is not a BCD number (digits 0-9 only)").arg(text));
         if (base == 16)
             return valueError(QStringLiteral("\"%1\" is not a hexadecimal number").arg(text));
         if (base == 2)
-            return valueError(QStringLiteral("\"%1\" is not a binary number (only 0 and 1)").arg(text));
+            return valueError(
+                QStringLiteral("\"%1\" is not a binary number (only 0 and 1)").arg(text));
         return valueError(QStringLiteral("\"%1\" is not a number").arg(text));
     };
 
@@ -204,10 +201,11 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
         // Spaces and underscores group hex and binary digits ("0000 0001" as shown by format()).
         if (base != 10 && (c == QLatin1Char(' ') || c == QLatin1Char('_')) && digits > 0)
             continue;
-        const int digit = c.isDigit() && c.unicode() < 0x80 ? c.unicode() - '0'
-                          : base == 16 && c.toLower() >= QLatin1Char('a') && c.toLower() <= QLatin1Char('f')
-                              ? c.toLower().unicode() - 'a' + 10
-                              : -1;
+        const int digit
+            = c.isDigit() && c.unicode() < 0x80 ? c.unicode() - '0'
+              : base == 16 && c.toLower() >= QLatin1Char('a') && c.toLower() <= QLatin1Char('f')
+                  ? c.toLower().unicode() - 'a' + 10
+                  : -1;
         if (digit < 0 || digit >= base)
             return notANumber();
         ++digits;
@@ -224,8 +222,9 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
         if (negative)
             return valueError(QStringLiteral("BCD values cannot be negative (\"%1\")").arg(text));
         if (overflow || magnitude > widthMask(width)) {
-            return valueError(QStringLiteral("%1 does not fit %2 as BCD (0..%3)")
-                                  .arg(text, widthPhrase(width), QString(width / 4, QLatin1Char('9'))));
+            return valueError(
+                QStringLiteral("%1 does not fit %2 as BCD (0..%3)")
+                    .arg(text, widthPhrase(width), QString(width / 4, QLatin1Char('9'))));
         }
         return magnitude;
     }
@@ -233,7 +232,8 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
     const std::uint64_t mask = widthMask(width);
     const std::uint64_t negativeLimit = std::uint64_t(1) << (width - 1);
     if (overflow || (negative ? magnitude > negativeLimit : magnitude > mask))
-        return valueError(QStringLiteral("%1 does not fit %2 (%3)").arg(text, widthPhrase(width), rangeText(width)));
+        return valueError(QStringLiteral("%1 does not fit %2 (%3)")
+                              .arg(text, widthPhrase(width), rangeText(width)));
     return negative ? (~magnitude + 1) & mask : magnitude;
 }
 
@@ -255,10 +255,11 @@ Result<std::uint64_t> parseFloat(const QString &text, int width)
 {
     const QString lower = text.toLower();
     double value = 0;
-    if (lower == QLatin1String("nan") || lower == QLatin1String("+nan") || lower == QLatin1String("-nan")) {
+    if (lower == QLatin1String("nan") || lower == QLatin1String("+nan")
+        || lower == QLatin1String("-nan")) {
         value = std::numeric_limits<double>::quiet_NaN();
-    } else if (lower == QLatin1String("inf") || lower == QLatin1String("+inf") || lower == QLatin1String("infinity")
-               || lower == QLatin1String("+infinity")) {
+    } else if (lower == QLatin1String("inf") || lower == QLatin1String("+inf")
+               || lower == QLatin1String("infinity") || lower == QLatin1String("+infinity")) {
         value = std::numeric_limits<double>::infinity();
     } else if (lower == QLatin1String("-inf") || lower == QLatin1String("-infinity")) {
         value = -std::numeric_limits<double>::infinity();
@@ -271,18 +272,21 @@ Result<std::uint64_t> parseFloat(const QString &text, int width)
         value = cLocale.toDouble(text, &ok);
         const bool finite = ok && std::isfinite(value);
         if (!finite || (width == 32 && std::fabs(value) > std::numeric_limits<float>::max())) {
-            // toDouble() reports too-large numbers as a failure; tell them apart from typing errors.
+            // toDouble() reports too-large numbers as a failure; tell them apart from typing
+            // errors.
             bool looksNumeric = !text.isEmpty();
             for (QChar c : text) {
-                if (!(c.isDigit() || c == QLatin1Char('.') || c == QLatin1Char('e') || c == QLatin1Char('E')
-                      || c == QLatin1Char('-') || c == QLatin1Char('+')))
+                if (!(c.isDigit() || c == QLatin1Char('.') || c == QLatin1Char('e')
+                      || c == QLatin1Char('E') || c == QLatin1Char('-') || c == QLatin1Char('+')))
                     looksNumeric = false;
             }
             if (finite || looksNumeric) {
-                return valueError(QStringLiteral("%1 does not fit a %2 (largest about ±%3)")
-                                      .arg(text,
-                                           width == 32 ? QStringLiteral("32-bit float") : QStringLiteral("64-bit double"),
-                                           width == 32 ? QStringLiteral("3.4e38") : QStringLiteral("1.8e308")));
+                return valueError(
+                    QStringLiteral("%1 does not fit a %2 (largest about ±%3)")
+                        .arg(text,
+                             width == 32 ? QStringLiteral("32-bit float")
+                                         : QStringLiteral("64-bit double"),
+                             width == 32 ? QStringLiteral("3.4e38") : QStringLiteral("1.8e308")));
             }
             return valueError(QStringLiteral("\"%1\" is not a number").arg(text));
         }
@@ -304,9 +308,10 @@ Result<std::uint64_t> parseAscii(const QString &text, int width)
     for (int i = 0; i < text.size(); ++i) {
         const char16_t c = text[i].unicode();
         if (c < 0x20 || c > 0x7E) {
-            return valueError(QStringLiteral("\"%1\" contains a character that is not plain printable ASCII "
-                                             "(letters, digits, punctuation and space only)")
-                                  .arg(text));
+            return valueError(
+                QStringLiteral("\"%1\" contains a character that is not plain printable ASCII "
+                               "(letters, digits, punctuation and space only)")
+                    .arg(text));
         }
         // Word i/2 (R(n) first), high byte first inside the word.
         value |= std::uint64_t(c) << (16 * (i / 2) + (i % 2 == 0 ? 8 : 0));
@@ -352,20 +357,15 @@ bool isAvailable(DisplayFormat format, int width)
     if (!validWidth(width))
         return false;
     switch (format) {
-    case DisplayFormat::Bit:
-        return width == 1;
+    case DisplayFormat::Bit: return width == 1;
     case DisplayFormat::Unsigned:
     case DisplayFormat::Hex:
-    case DisplayFormat::Binary:
-        return true;
+    case DisplayFormat::Binary: return true;
     case DisplayFormat::Signed:
     case DisplayFormat::Bcd:
-    case DisplayFormat::Ascii:
-        return width >= 16;
-    case DisplayFormat::Float32:
-        return width == 32;
-    case DisplayFormat::Double64:
-        return width == 64;
+    case DisplayFormat::Ascii: return width >= 16;
+    case DisplayFormat::Float32: return width == 32;
+    case DisplayFormat::Double64: return width == 64;
     }
     return false;
 }
@@ -374,15 +374,9 @@ int valueWidth(const Address &address, DisplayFormat format)
 {
     int natural = 1;
     switch (address.width()) {
-    case ElementWidth::Bit:
-        natural = 1;
-        break;
-    case ElementWidth::Word:
-        natural = 16;
-        break;
-    case ElementWidth::DoubleWord:
-        natural = 32;
-        break;
+    case ElementWidth::Bit: natural = 1; break;
+    case ElementWidth::Word: natural = 16; break;
+    case ElementWidth::DoubleWord: natural = 32; break;
     }
     if (natural >= 16 && format == DisplayFormat::Float32)
         return 32;
@@ -395,12 +389,9 @@ int elementCount(const Address &address, DisplayFormat format)
 {
     const int width = valueWidth(address, format);
     switch (address.width()) {
-    case ElementWidth::Bit:
-        return width;
-    case ElementWidth::Word:
-        return width / 16;
-    case ElementWidth::DoubleWord:
-        return width / 32;
+    case ElementWidth::Bit: return width;
+    case ElementWidth::Word: return width / 16;
+    case ElementWidth::DoubleWord: return width / 32;
     }
     return 0;
 }
@@ -435,23 +426,19 @@ QString format(std::uint64_t raw, int width, DisplayFormat format, bool swap)
         value = swapWords(value, width);
 
     switch (format) {
-    case DisplayFormat::Bit:
-        return value ? QStringLiteral("ON") : QStringLiteral("OFF");
-    case DisplayFormat::Unsigned:
-        return QString::number(value);
-    case DisplayFormat::Signed:
-        return signedText(value, width);
-    case DisplayFormat::Hex:
-        return hexText(value, width);
-    case DisplayFormat::Binary:
-        return binaryText(value, width);
+    case DisplayFormat::Bit: return value ? QStringLiteral("ON") : QStringLiteral("OFF");
+    case DisplayFormat::Unsigned: return QString::number(value);
+    case DisplayFormat::Signed: return signedText(value, width);
+    case DisplayFormat::Hex: return hexText(value, width);
+    case DisplayFormat::Binary: return binaryText(value, width);
     case DisplayFormat::Bcd:
         // Valid BCD nibbles read as hex digits are the decimal digits.
-        return isValidBcd(value) ? QString::number(value, 16) : QStringLiteral("?BCD ") + hexText(value, width);
+        return isValidBcd(value) ? QString::number(value, 16)
+                                 : QStringLiteral("?BCD ") + hexText(value, width);
     case DisplayFormat::Float32:
-        return floatText(static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(value))), 7);
-    case DisplayFormat::Ascii:
-        return asciiText(value, width);
+        return floatText(
+            static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(value))), 7);
+    case DisplayFormat::Ascii: return asciiText(value, width);
     case DisplayFormat::Double64:
         // Shortest text that reads back as the same double: 0.1 shows as "0.1", nothing is lost.
         return floatText(std::bit_cast<double>(value), QLocale::FloatingPointShortest);
@@ -462,11 +449,14 @@ QString format(std::uint64_t raw, int width, DisplayFormat format, bool swap)
 Result<std::uint64_t> parse(const QString &text, int width, DisplayFormat format, bool swap)
 {
     if (!validWidth(width))
-        return valueError(QStringLiteral("A %1-bit value cannot be written (only 1, 16, 32 or 64 bits).").arg(width));
+        return valueError(
+            QStringLiteral("A %1-bit value cannot be written (only 1, 16, 32 or 64 bits).")
+                .arg(width));
     if (!isAvailable(format, width)) {
-        return valueError(QStringLiteral("The %1 format needs %2; this value has %3.")
-                              .arg(name(format), needsText(format))
-                              .arg(width == 1 ? QStringLiteral("1 bit") : QStringLiteral("%1 bits").arg(width)));
+        return valueError(
+            QStringLiteral("The %1 format needs %2; this value has %3.")
+                .arg(name(format), needsText(format))
+                .arg(width == 1 ? QStringLiteral("1 bit") : QStringLiteral("%1 bits").arg(width)));
     }
 
     Result<std::uint64_t> value = std::uint64_t(0);
@@ -476,12 +466,15 @@ Result<std::uint64_t> parse(const QString &text, int width, DisplayFormat format
     } else {
         const QString trimmed = text.trimmed();
         if (trimmed.isEmpty()) {
-            return valueError(width == 1 ? QStringLiteral("No value typed: type ON, OFF, 1 or 0.")
-                                         : QStringLiteral("No value typed: type a number such as 12, -5, 0x1A or 1Ah."));
+            return valueError(
+                width == 1
+                    ? QStringLiteral("No value typed: type ON, OFF, 1 or 0.")
+                    : QStringLiteral("No value typed: type a number such as 12, -5, 0x1A or 1Ah."));
         }
         if (width == 1)
             value = parseBit(trimmed, format);
-        else if ((format == DisplayFormat::Float32 || format == DisplayFormat::Double64) && !isRawNotation(trimmed))
+        else if ((format == DisplayFormat::Float32 || format == DisplayFormat::Double64)
+                 && !isRawNotation(trimmed))
             value = parseFloat(trimmed, width);
         else
             value = parseInteger(trimmed, width, format);

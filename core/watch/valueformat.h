@@ -26,27 +26,29 @@ enum class DisplayFormat {
 };
 
 // A raw watch value is a std::uint64_t plus its width in bits: 1 (discrete), 16 (register),
-// 32 (register pair: high word = R(n+1), low word = R(n)) or 64 (four registers, word 0 = R(n) lowest).
-// swapWords reverses the order of the 16-bit words before interpreting (PLCs or HMIs that store the low
-// word of a float high); it has no effect on 1- and 16-bit values. Bits above `width` are ignored.
+// 32 (register pair: high word = R(n+1), low word = R(n)) or 64 (four registers, word 0 = R(n)
+// lowest). swapWords reverses the order of the 16-bit words before interpreting (PLCs or HMIs that
+// store the low word of a float high); it has no effect on 1- and 16-bit values. Bits above `width`
+// are ignored.
 namespace ValueFormat {
 
-// Names used in watch list files and on the command line: "bit", "unsigned", "signed", "hex", "binary",
-// "bcd", "float", "ascii", "double".
+// Names used in watch list files and on the command line: "bit", "unsigned", "signed", "hex",
+// "binary", "bcd", "float", "ascii", "double".
 QString name(DisplayFormat format);
 // Case-insensitive; also accepts "float32" and "double64".
 std::optional<DisplayFormat> fromName(QStringView name);
 QList<DisplayFormat> allFormats();
 
-// Whether `format` means something for a value of `width` bits: Bit needs 1 bit, Signed/Bcd/Ascii 16 bits
-// or more, Float32 exactly 32, Double64 exactly 64; Unsigned/Hex/Binary fit every width.
+// Whether `format` means something for a value of `width` bits: Bit needs 1 bit, Signed/Bcd/Ascii
+// 16 bits or more, Float32 exactly 32, Double64 exactly 64; Unsigned/Hex/Binary fit every width.
 bool isAvailable(DisplayFormat format, int width);
 
 // Bits a watch item of `address` shown as `format` covers, or 0 if the format does not apply:
 // a discrete is 1 bit; a 16-bit register shown as float covers R(n), R(n+1) (32 bits) and as double
 // R(n)..R(n+3) (64 bits); a 32-bit register shown as double covers DR(n), DR(n+2).
 int valueWidth(const Address &address, DisplayFormat format);
-// Consecutive elements (address.advanced(0..count-1)) that valueWidth covers; 0 if the format does not apply.
+// Consecutive elements (address.advanced(0..count-1)) that valueWidth covers; 0 if the format does
+// not apply.
 int elementCount(const Address &address, DisplayFormat format);
 // Format given to new items: Bit for discretes, Signed for registers.
 DisplayFormat defaultFormat(const Address &address);
@@ -57,12 +59,13 @@ QString format(std::uint64_t raw, int width, DisplayFormat format, bool swapWord
 
 // Parses what a technician typed into the raw value to write (swapWords applied, so that
 // format(parse(text)) shows text again). Integer formats accept decimal (negative values as two's
-// complement, range -2^(w-1)..2^w-1), 0x1A, 1Ah and 0b1010; in Hex format bare digits are hex, in Binary
-// format bare digits are binary (spaces allowed), in Bcd format bare digits are the BCD digits.
-// Float32/Double64 take decimal or exponent text, NaN, Inf, -Inf, or raw bits as 0x.., ..h or 0b...
-// Ascii takes the literal characters (shorter text is padded with NUL). 1-bit values take ON/OFF,
-// TRUE/FALSE, 1/0 in any format. Errors are sentences for technicians.
-Result<std::uint64_t> parse(const QString &text, int width, DisplayFormat format, bool swapWords = false);
+// complement, range -2^(w-1)..2^w-1), 0x1A, 1Ah and 0b1010; in Hex format bare digits are hex, in
+// Binary format bare digits are binary (spaces allowed), in Bcd format bare digits are the BCD
+// digits. Float32/Double64 take decimal or exponent text, NaN, Inf, -Inf, or raw bits as 0x.., ..h
+// or 0b... Ascii takes the literal characters (shorter text is padded with NUL). 1-bit values take
+// ON/OFF, TRUE/FALSE, 1/0 in any format. Errors are sentences for technicians.
+Result<std::uint64_t> parse(const QString &text, int width, DisplayFormat format,
+                            bool swapWords = false);
 
 // Reverses the 16-bit words of a 32- or 64-bit value; identity for other widths. Its own inverse.
 std::uint64_t swapWords(std::uint64_t raw, int width);

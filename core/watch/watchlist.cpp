@@ -20,8 +20,8 @@ ProtocolError fileError(const QString &message)
     return makeError(ErrorKind::InvalidRequest, message.toStdString());
 }
 
-// "Invalid address ..." becomes "invalid address ..." after "table 2, item 5: ". Acronyms ("BCD ...")
-// keep their case.
+// "Invalid address ..." becomes "invalid address ..." after "table 2, item 5: ". Acronyms ("BCD
+// ...") keep their case.
 QString lowerFirst(const QString &text)
 {
     if (text.size() >= 2 && text[0].isUpper() && text[1].isLower())
@@ -32,7 +32,8 @@ QString lowerFirst(const QString &text)
 ProtocolError atPlace(const QString &place, const ProtocolError &error)
 {
     ProtocolError e = error;
-    e.message = (place + QStringLiteral(": ") + lowerFirst(QString::fromStdString(error.message))).toStdString();
+    e.message = (place + QStringLiteral(": ") + lowerFirst(QString::fromStdString(error.message)))
+                    .toStdString();
     return e;
 }
 
@@ -137,7 +138,8 @@ Result<WatchItemSpec> entryFromJson(const QJsonValue &value)
     } else if (const auto format = ValueFormat::fromName(*formatName)) {
         entry.format = *format;
     } else {
-        return fileError(QStringLiteral("unknown format \"%1\" (known: %2)").arg(*formatName, knownFormats()));
+        return fileError(
+            QStringLiteral("unknown format \"%1\" (known: %2)").arg(*formatName, knownFormats()));
     }
 
     const auto swap = boolMember(object, QStringLiteral("swapWords"), false);
@@ -167,11 +169,13 @@ Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index)
     const QJsonObject object = value.toObject();
 
     WatchTableSpec table;
-    const auto name = textMember(object, QStringLiteral("name"), QStringLiteral("Table %1").arg(index + 1));
+    const auto name
+        = textMember(object, QStringLiteral("name"), QStringLiteral("Table %1").arg(index + 1));
     if (!name)
         return atPlace(place, name.error());
     table.name = *name;
-    const auto interval = intMember(object, QStringLiteral("intervalMs"), 500, MinIntervalMs, MaxIntervalMs);
+    const auto interval
+        = intMember(object, QStringLiteral("intervalMs"), 500, MinIntervalMs, MaxIntervalMs);
     if (!interval)
         return atPlace(place, interval.error());
     table.intervalMs = *interval;
@@ -221,8 +225,8 @@ bool isBlankOrComment(QStringView line)
     return trimmed.isEmpty() || trimmed.startsWith(QLatin1Char('#'));
 }
 
-// Splits the text into records of fields. The first ',' or ';' outside quotes fixes the separator for the
-// whole file; until then both count.
+// Splits the text into records of fields. The first ',' or ';' outside quotes fixes the separator
+// for the whole file; until then both count.
 Result<QList<CsvRecord>> splitCsv(const QString &text)
 {
     QList<CsvRecord> records;
@@ -234,7 +238,9 @@ Result<QList<CsvRecord>> splitCsv(const QString &text)
         }
         return !separator.isNull() && c == separator;
     };
-    const auto isBlank = [](QChar c) { return c == QLatin1Char(' ') || c == QLatin1Char('\t') || c == QLatin1Char('\r'); };
+    const auto isBlank = [](QChar c) {
+        return c == QLatin1Char(' ') || c == QLatin1Char('\t') || c == QLatin1Char('\r');
+    };
 
     const qsizetype n = text.size();
     qsizetype i = 0;
@@ -278,14 +284,17 @@ Result<QList<CsvRecord>> splitCsv(const QString &text)
                     ++i;
                 }
                 if (!closed) {
-                    return atPlace(linePlace(quoteLine),
-                                   fileError(QStringLiteral("a quoted field is not closed (missing \")")));
+                    return atPlace(
+                        linePlace(quoteLine),
+                        fileError(QStringLiteral("a quoted field is not closed (missing \")")));
                 }
                 while (i < n && isBlank(text[i]))
                     ++i;
                 if (i < n && text[i] != QLatin1Char('\n') && !isSeparator(text[i])) {
-                    return atPlace(linePlace(line),
-                                   fileError(QStringLiteral("unexpected text after the quoted field \"%1\"").arg(field)));
+                    return atPlace(
+                        linePlace(line),
+                        fileError(QStringLiteral("unexpected text after the quoted field \"%1\"")
+                                      .arg(field)));
                 }
             } else {
                 const qsizetype start = i;
@@ -330,10 +339,12 @@ Result<QList<Column>> headerColumns(const CsvRecord &record)
         else if (key == QLatin1String("comment"))
             column = Column::Comment;
         else if (!key.isEmpty()) {
-            return atPlace(linePlace(record.line),
-                           fileError(QStringLiteral("unknown column \"%1\" (known: address, station, format, name, "
-                                                    "comment)")
-                                         .arg(cell)));
+            return atPlace(
+                linePlace(record.line),
+                fileError(
+                    QStringLiteral("unknown column \"%1\" (known: address, station, format, name, "
+                                   "comment)")
+                        .arg(cell)));
         }
         if (column != Column::Ignored) {
             if (seen.contains(column)) {
@@ -352,18 +363,21 @@ Result<QList<Column>> headerColumns(const CsvRecord &record)
 Status validateEntry(const WatchItemSpec &entry)
 {
     if (entry.station == 0)
-        return fileError(QStringLiteral("station 0 is broadcast (no PLC answers): use a station number 1..254"));
+        return fileError(
+            QStringLiteral("station 0 is broadcast (no PLC answers): use a station number 1..254"));
     if (entry.station > 254)
-        return fileError(QStringLiteral("station %1 is not valid: use a station number 1..254").arg(entry.station));
+        return fileError(QStringLiteral("station %1 is not valid: use a station number 1..254")
+                             .arg(entry.station));
     if (Status s = validateAddress(entry.address); !s)
         return s;
     const int count = ValueFormat::elementCount(entry.address, entry.format);
     const QString address = QString::fromStdString(entry.address.toString());
     if (count == 0) {
-        return fileError(QStringLiteral("format \"%1\" does not apply to %2 (%3)")
-                             .arg(ValueFormat::name(entry.format), address,
-                                  QString::fromUtf8(entry.address.info().name.data(),
-                                                    static_cast<qsizetype>(entry.address.info().name.size()))));
+        return fileError(
+            QStringLiteral("format \"%1\" does not apply to %2 (%3)")
+                .arg(ValueFormat::name(entry.format), address,
+                     QString::fromUtf8(entry.address.info().name.data(),
+                                       static_cast<qsizetype>(entry.address.info().name.size()))));
     }
     if (count > 1) {
         if (Status s = validateSpan(entry.address, static_cast<std::uint32_t>(count)); !s) {
@@ -405,23 +419,28 @@ Result<WatchListFile> load(const QByteArray &json)
                              .arg(column));
     }
     if (!document.isObject())
-        return fileError(QStringLiteral("The file is not a FATEK Studio watch list: it holds no JSON object."));
+        return fileError(
+            QStringLiteral("The file is not a FATEK Studio watch list: it holds no JSON object."));
     const QJsonObject root = document.object();
 
     if (root.value(QStringLiteral("format")).toString() != QLatin1String(FormatMarker)) {
-        return fileError(QStringLiteral("The file is not a FATEK Studio watch list: \"format\" is not \"%1\".")
-                             .arg(QLatin1String(FormatMarker)));
+        return fileError(
+            QStringLiteral("The file is not a FATEK Studio watch list: \"format\" is not \"%1\".")
+                .arg(QLatin1String(FormatMarker)));
     }
     const QJsonValue version = root.value(QStringLiteral("version"));
     const double versionNumber = version.toDouble();
     if (!version.isDouble() || std::floor(versionNumber) != versionNumber || versionNumber < 1) {
-        return fileError(QStringLiteral("The watch list has no valid \"version\" (expected %1).").arg(CurrentVersion));
+        return fileError(QStringLiteral("The watch list has no valid \"version\" (expected %1).")
+                             .arg(CurrentVersion));
     }
     if (versionNumber > CurrentVersion) {
-        return fileError(QStringLiteral("The watch list is version %1, written by a newer FATEK Studio; this one "
-                                        "reads version %2.")
-                             .arg(versionNumber)
-                             .arg(CurrentVersion));
+        return fileError(
+            QStringLiteral(
+                "The watch list is version %1, written by a newer FATEK Studio; this one "
+                "reads version %2.")
+                .arg(versionNumber)
+                .arg(CurrentVersion));
     }
 
     const QJsonValue tables = root.value(QStringLiteral("tables"));
@@ -504,10 +523,11 @@ Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
     if (!records)
         return records.error();
 
-    QList<Column> columns{Column::Address, Column::Station, Column::Format, Column::Name, Column::Comment};
+    QList<Column> columns{Column::Address, Column::Station, Column::Format, Column::Name,
+                          Column::Comment};
     bool header = false;
-    // A data row always holds an address, and "address" is not one; so a first row with an "address" cell
-    // and no address in its first cell names the columns.
+    // A data row always holds an address, and "address" is not one; so a first row with an
+    // "address" cell and no address in its first cell names the columns.
     const auto looksLikeHeader = [](const CsvRecord &record) {
         if (expandRange(record.fields.first()).ok())
             return false;
@@ -536,10 +556,12 @@ Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
                 // Spreadsheets pad rows with empty cells; only real extra data is an error.
                 if (field.isEmpty())
                     continue;
-                return atPlace(place,
-                               fileError(header ? QStringLiteral("more fields than the header has columns")
-                                                : QStringLiteral("too many fields: at most 5 (address, station, "
-                                                                 "format, name, comment)")));
+                return atPlace(
+                    place,
+                    fileError(header
+                                  ? QStringLiteral("more fields than the header has columns")
+                                  : QStringLiteral("too many fields: at most 5 (address, station, "
+                                                   "format, name, comment)")));
             }
             if (columns.at(c) != Column::Ignored)
                 cells[static_cast<int>(columns.at(c))] = field;
@@ -567,9 +589,10 @@ Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
             bool ok = false;
             const int value = stationText.trimmed().toInt(&ok);
             if (!ok || value < 1 || value > 254) {
-                return atPlace(place,
-                               fileError(QStringLiteral("station \"%1\" is not valid: use a number from 1 to 254")
-                                             .arg(stationText)));
+                return atPlace(
+                    place, fileError(QStringLiteral(
+                                         "station \"%1\" is not valid: use a number from 1 to 254")
+                                         .arg(stationText)));
             }
             station = static_cast<quint8>(value);
         }
@@ -588,7 +611,9 @@ Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
             entry.address = addresses->at(i);
             entry.station = station;
             entry.format = format ? *format : ValueFormat::defaultFormat(entry.address);
-            entry.name = addresses->size() > 1 && !name.isEmpty() ? QStringLiteral("%1[%2]").arg(name).arg(i) : name;
+            entry.name = addresses->size() > 1 && !name.isEmpty()
+                             ? QStringLiteral("%1[%2]").arg(name).arg(i)
+                             : name;
             entry.comment = comment;
             if (Status s = validateEntry(entry); !s)
                 return atPlace(place, s.error());
@@ -614,10 +639,11 @@ Result<QList<Address>> expandRange(const QString &text)
     const QString left = trimmed.left(dots).trimmed();
     QString right = trimmed.mid(dots + 2).trimmed();
     if (left.isEmpty() || right.isEmpty()) {
-        return makeError(ErrorKind::InvalidAddress,
-                         QStringLiteral("Incomplete range \"%1\": write it as first..last, e.g. R100..R163.")
-                             .arg(trimmed)
-                             .toStdString());
+        return makeError(
+            ErrorKind::InvalidAddress,
+            QStringLiteral("Incomplete range \"%1\": write it as first..last, e.g. R100..R163.")
+                .arg(trimmed)
+                .toStdString());
     }
     const auto start = Address::parse(left.toStdString());
     if (!start)
@@ -638,29 +664,34 @@ Result<QList<Address>> expandRange(const QString &text)
     const QString first = QString::fromStdString(start->toString());
     const QString last = QString::fromStdString(end->toString());
     if (start->type != end->type) {
-        return rangeError(QStringLiteral("Range \"%1\" mixes %2 and %3: both ends must be the same element type.")
-                              .arg(trimmed, first, last));
+        return rangeError(
+            QStringLiteral("Range \"%1\" mixes %2 and %3: both ends must be the same element type.")
+                .arg(trimmed, first, last));
     }
     if (end->number < start->number) {
-        return rangeError(QStringLiteral("Range \"%1\" runs backwards: write the lower address first (%2..%3).")
-                              .arg(trimmed, last, first));
+        return rangeError(
+            QStringLiteral("Range \"%1\" runs backwards: write the lower address first (%2..%3).")
+                .arg(trimmed, last, first));
     }
     const std::uint32_t step = start->info().step;
     const std::uint32_t distance = end->number - start->number;
     if (distance % step != 0) {
-        return rangeError(QStringLiteral("Range \"%1\" does not end on a whole element: %2 elements are %3 apart "
-                                         "(%4, %5, ...).")
-                              .arg(trimmed, QString::fromLatin1(start->info().symbol.data(),
-                                                                static_cast<qsizetype>(start->info().symbol.size())))
-                              .arg(step)
-                              .arg(first, QString::fromStdString(start->advanced(1).toString())));
+        return rangeError(
+            QStringLiteral("Range \"%1\" does not end on a whole element: %2 elements are %3 apart "
+                           "(%4, %5, ...).")
+                .arg(trimmed,
+                     QString::fromLatin1(start->info().symbol.data(),
+                                         static_cast<qsizetype>(start->info().symbol.size())))
+                .arg(step)
+                .arg(first, QString::fromStdString(start->advanced(1).toString())));
     }
     const std::uint32_t count = distance / step + 1;
     if (count > static_cast<std::uint32_t>(MaxRangeItems)) {
-        return rangeError(QStringLiteral("Range \"%1\" has %2 elements; at most %3 fit in one range.")
-                              .arg(trimmed)
-                              .arg(count)
-                              .arg(MaxRangeItems));
+        return rangeError(
+            QStringLiteral("Range \"%1\" has %2 elements; at most %3 fit in one range.")
+                .arg(trimmed)
+                .arg(count)
+                .arg(MaxRangeItems));
     }
     QList<Address> addresses;
     addresses.reserve(count);

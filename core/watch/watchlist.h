@@ -10,8 +10,8 @@
 
 namespace Fatek {
 
-// One row of a watch table. (Named apart from the session's WatchEntry, the poll entry: both live in
-// namespace Fatek and the GUI links and includes both.)
+// One row of a watch table. (Named apart from the session's WatchEntry, the poll entry: both live
+// in namespace Fatek and the GUI links and includes both.)
 struct WatchItemSpec
 {
     QString name;
@@ -56,15 +56,15 @@ inline constexpr int MinIntervalMs = 10;
 inline constexpr int MaxIntervalMs = 3600000;
 inline constexpr int MaxRangeItems = 1024;
 
-// Station 1..254 (0 is broadcast: no answer to watch), the address exists, the format applies to it and
-// every register it spans exists (R65535 as float would need R65536).
+// Station 1..254 (0 is broadcast: no answer to watch), the address exists, the format applies to it
+// and every register it spans exists (R65535 as float would need R65536).
 Status validateEntry(const WatchItemSpec &entry);
 // Every entry and table setting; errors start with "table N" / "table N, item M".
 Status validate(const WatchListFile &file);
 
-// Parses and validates a watch list file. Within version 1, missing optional keys take their defaults
-// (station 1, format by element type, swapWords false, intervalMs 500, confirmWrites true) and unknown keys
-// are ignored.
+// Parses and validates a watch list file. Within version 1, missing optional keys take their
+// defaults (station 1, format by element type, swapWords false, intervalMs 500, confirmWrites true)
+// and unknown keys are ignored.
 Result<WatchListFile> load(const QByteArray &json);
 Result<WatchListFile> loadFromFile(const QString &path);
 
@@ -73,17 +73,18 @@ QByteArray save(const WatchListFile &file);
 // Validates, then writes through QSaveFile: on any error the existing file stays as it was.
 Status saveToFile(const WatchListFile &file, const QString &path);
 
-// Rows from CSV: columns address[,station][,format][,name][,comment]. A first row with a cell "address" (and
-// no address in its first cell) is a header naming the columns (any order, any subset with address);
-// without it the columns are positional. Comma or semicolon separated (the first separator outside quotes decides), fields may be
-// quoted ("a, b" and "say ""hi"""), blank lines and lines starting with # are skipped, "R100..R103" in the
-// address column gives four rows (names get [0], [1], ... suffixes). UTF-8 with or without BOM; text that is
-// not UTF-8 is read as Latin-1 (older spreadsheet exports).
+// Rows from CSV: columns address[,station][,format][,name][,comment]. A first row with a cell
+// "address" (and no address in its first cell) is a header naming the columns (any order, any
+// subset with address); without it the columns are positional. Comma or semicolon separated (the
+// first separator outside quotes decides), fields may be quoted ("a, b" and "say ""hi"""), blank
+// lines and lines starting with # are skipped, "R100..R103" in the address column gives four rows
+// (names get [0], [1], ... suffixes). UTF-8 with or without BOM; text that is not UTF-8 is read as
+// Latin-1 (older spreadsheet exports).
 Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv);
 
 // "R100..R163" -> R100..R163 (64), "WY0..WY32" -> WY0, WY16, WY32, "DR0..DR4" -> DR0, DR2, DR4,
-// "R100..163" (number only after ..) and "R100" alone (1). Rejects mixed types, backwards ranges, ends off the
-// element step, and more than MaxRangeItems elements.
+// "R100..163" (number only after ..) and "R100" alone (1). Rejects mixed types, backwards ranges,
+// ends off the element step, and more than MaxRangeItems elements.
 Result<QList<Address>> expandRange(const QString &text);
 
 } // namespace WatchList

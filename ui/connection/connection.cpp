@@ -80,7 +80,8 @@ void Connection::updateRate()
     const quint64 requests = m_statistics.total.requests;
     const quint64 delta = requests >= m_rateRequests ? requests - m_rateRequests : 0;
     m_rateRequests = requests;
-    const double rate = ms > 0 ? static_cast<double>(delta) * 1000.0 / static_cast<double>(ms) : 0.0;
+    const double rate
+        = ms > 0 ? static_cast<double>(delta) * 1000.0 / static_cast<double>(ms) : 0.0;
     if (rate != m_rate) {
         m_rate = rate;
         Q_EMIT changed();

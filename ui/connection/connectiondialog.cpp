@@ -50,7 +50,8 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_name->setPlaceholderText(tr("e.g. Pump station"));
     m_kind = comboOf({{tr("Serial (RS-232 / RS-485)"), int(LinkSettings::Kind::Serial)},
                       {tr("TCP"), int(LinkSettings::Kind::Tcp)},
-                      {tr("UDP"), int(LinkSettings::Kind::Udp)}}, this);
+                      {tr("UDP"), int(LinkSettings::Kind::Udp)}},
+                     this);
 
     // Serial page
     auto *serialPage = new QWidget(this);
@@ -72,7 +73,8 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     serialForm->addRow(tr("&Data bits:"), m_dataBits);
     m_parity = comboOf({{tr("None"), int(LinkSettings::Parity::None)},
                         {tr("Even"), int(LinkSettings::Parity::Even)},
-                        {tr("Odd"), int(LinkSettings::Parity::Odd)}}, serialPage);
+                        {tr("Odd"), int(LinkSettings::Parity::Odd)}},
+                       serialPage);
     serialForm->addRow(tr("Pa&rity:"), m_parity);
     m_stopBits = comboOf({{QStringLiteral("1"), 1}, {QStringLiteral("2"), 2}}, serialPage);
     serialForm->addRow(tr("&Stop bits:"), m_stopBits);
@@ -98,7 +100,8 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
 
     m_protocol = comboOf({{tr("FACON (ASCII)"), int(LinkSettings::ProtocolChoice::Facon)},
                           {tr("Binary"), int(LinkSettings::ProtocolChoice::Binary)},
-                          {tr("Auto-detect"), int(LinkSettings::ProtocolChoice::Auto)}}, this);
+                          {tr("Auto-detect"), int(LinkSettings::ProtocolChoice::Auto)}},
+                         this);
     m_station = new QSpinBox(this);
     m_station->setRange(1, 254);
     m_timeout = new QSpinBox(this);
@@ -216,7 +219,8 @@ void ConnectionDialog::accept()
 {
     const SavedConnection c = connection();
     QString problem = c.name.isEmpty() ? tr("Give the connection a name.") : c.settings.validate();
-    if (problem.isEmpty() && c.settings.kind == LinkSettings::Kind::Serial && c.settings.baudRate <= 0)
+    if (problem.isEmpty() && c.settings.kind == LinkSettings::Kind::Serial
+        && c.settings.baudRate <= 0)
         problem = tr("The baud rate must be a positive number.");
     if (!problem.isEmpty()) {
         m_error->setText(problem);

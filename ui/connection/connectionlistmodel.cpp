@@ -56,7 +56,8 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         case RateColumn: return QString::number(c->requestsPerSecond(), 'f', 1);
         case ErrorsColumn: return QString::number(c->errorCount());
         case RttColumn:
-            return t.answers ? QStringLiteral("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–");
+            return t.answers ? QStringLiteral("%1 ms").arg(t.rttMeanMs, 0, 'f', 1)
+                             : QStringLiteral("–");
         default: return {};
         }
     }
@@ -66,12 +67,16 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
             return c->linkReason().isEmpty() ? linkStateName(c->linkState()) : c->linkReason();
         case ErrorsColumn:
             return tr("%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries")
-                .arg(t.timeouts).arg(t.checksumErrors).arg(t.plcErrors).arg(t.retries);
+                .arg(t.timeouts)
+                .arg(t.checksumErrors)
+                .arg(t.plcErrors)
+                .arg(t.retries);
         case RttColumn:
             return tr("Round trip: last %1 ms, median %2 ms, 99%% %3 ms")
-                .arg(t.rttLastMs, 0, 'f', 1).arg(t.rttP50Ms, 0, 'f', 1).arg(t.rttP99Ms, 0, 'f', 1);
-        case StationColumn:
-            return tr("Station the tools act on; double-click to change");
+                .arg(t.rttLastMs, 0, 'f', 1)
+                .arg(t.rttP50Ms, 0, 'f', 1)
+                .arg(t.rttP99Ms, 0, 'f', 1);
+        case StationColumn: return tr("Station the tools act on; double-click to change");
         default: {
             // Per station: several PLCs on one RS-485 line share a connection.
             QStringList lines{c->settings().toString()};
@@ -88,7 +93,8 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         }
         }
     }
-    if (role == Qt::TextAlignmentRole && index.column() >= StationColumn && index.column() != StateColumn)
+    if (role == Qt::TextAlignmentRole && index.column() >= StationColumn
+        && index.column() != StateColumn)
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     return {};
 }

@@ -13,15 +13,24 @@ class ConnectionListModel : public QAbstractTableModel
     Q_OBJECT
 
 public:
-    enum Column { NameColumn, LinkColumn, StationColumn, StateColumn, RateColumn, ErrorsColumn,
-                  RttColumn, ColumnCount };
+    enum Column {
+        NameColumn,
+        LinkColumn,
+        StationColumn,
+        StateColumn,
+        RateColumn,
+        ErrorsColumn,
+        RttColumn,
+        ColumnCount
+    };
 
     explicit ConnectionListModel(ConnectionManager *manager, QObject *parent = nullptr);
 
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
-    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
     Qt::ItemFlags flags(const QModelIndex &index) const override;
     bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
 

@@ -25,7 +25,8 @@ ConnectionsPanel::ConnectionsPanel(ConnectionManager *manager, QWidget *parent)
     // The link description takes the spare width; the numbers stay compact.
     m_view->horizontalHeader()->setStretchLastSection(false);
     m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_view->horizontalHeader()->setSectionResizeMode(ConnectionListModel::LinkColumn, QHeaderView::Stretch);
+    m_view->horizontalHeader()->setSectionResizeMode(ConnectionListModel::LinkColumn,
+                                                     QHeaderView::Stretch);
     m_view->setWordWrap(false);
 
     auto *layout = new QVBoxLayout(this);
@@ -59,9 +60,8 @@ void ConnectionsPanel::setCurrentConnection(Connection *connection)
     const int row = m_manager->indexOf(connection);
     if (row < 0)
         return;
-    m_view->selectionModel()->setCurrentIndex(m_model->index(row, 0),
-                                              QItemSelectionModel::ClearAndSelect
-                                                  | QItemSelectionModel::Rows);
+    m_view->selectionModel()->setCurrentIndex(
+        m_model->index(row, 0), QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
 }
 
 } // namespace Fatek

@@ -28,17 +28,22 @@ void DemoSimulator::start()
     m_thread.start();
     SimulatedPlc *plc = m_plc.get();
     QObject *anchor = m_anchor;
-    QMetaObject::invokeMethod(m_anchor, [this, plc, anchor] {
-        auto *server = new SimServer(plc, anchor);
-        QString error;
-        if (!server->listenTcp(0, &error)) {
-            QMetaObject::invokeMethod(this, [this, error] { Q_EMIT failed(error); }, Qt::QueuedConnection);
-            return;
-        }
-        server->setDemoLadder(true);
-        const quint16 port = server->tcpPort();
-        QMetaObject::invokeMethod(this, [this, port] { Q_EMIT ready(port); }, Qt::QueuedConnection);
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        m_anchor,
+        [this, plc, anchor] {
+            auto *server = new SimServer(plc, anchor);
+            QString error;
+            if (!server->listenTcp(0, &error)) {
+                QMetaObject::invokeMethod(
+                    this, [this, error] { Q_EMIT failed(error); }, Qt::QueuedConnection);
+                return;
+            }
+            server->setDemoLadder(true);
+            const quint16 port = server->tcpPort();
+            QMetaObject::invokeMethod(
+                this, [this, port] { Q_EMIT ready(port); }, Qt::QueuedConnection);
+        },
+        Qt::QueuedConnection);
 }
 
 WatchTableSpec DemoSimulator::demoTable(quint8 station)
@@ -47,7 +52,8 @@ WatchTableSpec DemoSimulator::demoTable(quint8 station)
     spec.name = tr("Demo");
     spec.intervalMs = 200;
     spec.confirmWrites = true;
-    auto add = [&](const char *address, DisplayFormat format, const QString &name, const QString &comment) {
+    auto add = [&](const char *address, DisplayFormat format, const QString &name,
+                   const QString &comment) {
         WatchItemSpec item;
         item.address = *Address::parse(address);
         item.station = station;

@@ -12,9 +12,9 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFile>
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
@@ -26,8 +26,11 @@
 #include <QTableView>
 #include <QToolBar>
 
-#if defined(FATEK_HAVE_UITOOLS) && __has_include("plccontrolpanel.h") && __has_include("forcingpanel.h") \
-    && __has_include("loopbackdialog.h") && __has_include("rawconsole.h")
+#if defined(FATEK_HAVE_UITOOLS)                                                                    \
+    && __has_include(                                                                              \
+        "plccontrolpanel.h")                                                                       \
+        && __has_include("forcingpanel.h")                                                         \
+                         && __has_include("loopbackdialog.h") && __has_include("rawconsole.h")
 #define FATEK_WITH_TOOLS 1
 #include "forcingpanel.h"
 #include "loopbackdialog.h"
@@ -110,10 +113,13 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     });
     connect(m_manager, &ConnectionManager::recentChanged, this, &MainWindow::rebuildRecentMenu);
     connect(m_manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
-        connect(c, &Connection::linkStateChanged, this, [this, c](LinkState state, const QString &reason) {
-            showStatus(reason.isEmpty() ? tr("%1: %2").arg(c->name(), linkStateName(state))
-                                        : tr("%1: %2 (%3)").arg(c->name(), linkStateName(state), reason));
-        });
+        connect(c, &Connection::linkStateChanged, this,
+                [this, c](LinkState state, const QString &reason) {
+                    showStatus(
+                        reason.isEmpty()
+                            ? tr("%1: %2").arg(c->name(), linkStateName(state))
+                            : tr("%1: %2 (%3)").arg(c->name(), linkStateName(state), reason));
+                });
     });
 
     resize(1280, 800);
@@ -148,24 +154,28 @@ void MainWindow::createActions()
     toolBar->setObjectName(QStringLiteral("mainToolBar"));
     toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
 
-    auto *connectAction = file->addAction(QIcon(QStringLiteral(":/icons/connect.svg")), tr("&New Connection…"),
-                                          this, &MainWindow::newConnectionDialog);
+    auto *connectAction
+        = file->addAction(QIcon(QStringLiteral(":/icons/connect.svg")), tr("&New Connection…"),
+                          this, &MainWindow::newConnectionDialog);
     connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     m_recentMenu = file->addMenu(tr("&Recent Connections"));
     rebuildRecentMenu();
-    auto *disconnectAction = file->addAction(QIcon(QStringLiteral(":/icons/disconnect.svg")),
-                                             tr("&Close Connection"), this,
-                                             &MainWindow::closeCurrentConnection);
+    auto *disconnectAction
+        = file->addAction(QIcon(QStringLiteral(":/icons/disconnect.svg")), tr("&Close Connection"),
+                          this, &MainWindow::closeCurrentConnection);
     disconnectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
     file->addSeparator();
-    auto *newTable = file->addAction(QIcon(QStringLiteral(":/icons/table.svg")), tr("New &Watch Table"), this,
-                                     [this] { m_tabs->setCurrentWidget(addWatchTable()); });
+    auto *newTable
+        = file->addAction(QIcon(QStringLiteral(":/icons/table.svg")), tr("New &Watch Table"), this,
+                          [this] { m_tabs->setCurrentWidget(addWatchTable()); });
     newTable->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
-    auto *openAction = file->addAction(QIcon(QStringLiteral(":/icons/open.svg")), tr("&Open Watch List…"),
-                                       this, &MainWindow::openWatchListDialog);
+    auto *openAction
+        = file->addAction(QIcon(QStringLiteral(":/icons/open.svg")), tr("&Open Watch List…"), this,
+                          &MainWindow::openWatchListDialog);
     openAction->setShortcut(QKeySequence::Open);
-    auto *saveAction = file->addAction(QIcon(QStringLiteral(":/icons/save.svg")), tr("&Save Watch List…"),
-                                       this, &MainWindow::saveWatchListDialog);
+    auto *saveAction
+        = file->addAction(QIcon(QStringLiteral(":/icons/save.svg")), tr("&Save Watch List…"), this,
+                          &MainWindow::saveWatchListDialog);
     saveAction->setShortcut(QKeySequence::Save);
     auto *importAction = file->addAction(tr("&Import CSV…"), this, &MainWindow::importCsvDialog);
     importAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
@@ -183,10 +193,11 @@ void MainWindow::createActions()
             t->addressEdit()->setFocus();
     });
     focusAdd->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
-    auto *pause = watch->addAction(QIcon(QStringLiteral(":/icons/pause.svg")), tr("&Pause Table"), this, [this] {
-        if (WatchTableWidget *t = currentWatchTable())
-            t->setPaused(!t->isPaused());
-    });
+    auto *pause = watch->addAction(QIcon(QStringLiteral(":/icons/pause.svg")), tr("&Pause Table"),
+                                   this, [this] {
+                                       if (WatchTableWidget *t = currentWatchTable())
+                                           t->setPaused(!t->isPaused());
+                                   });
     pause->setShortcut(QKeySequence(Qt::Key_F8));
     auto *closeTable = watch->addAction(tr("&Close Table"), this,
                                         [this] { closeWatchTable(m_tabs->currentIndex()); });
@@ -218,7 +229,8 @@ void MainWindow::createActions()
 void MainWindow::createTools()
 {
 #ifdef FATEK_WITH_TOOLS
-    auto addDock = [this](auto *tool, const QString &title, const QString &name, Qt::DockWidgetArea area) {
+    auto addDock = [this](auto *tool, const QString &title, const QString &name,
+                          Qt::DockWidgetArea area) {
         auto *dock = new QDockWidget(title, this);
         dock->setObjectName(name);
         dock->setWidget(tool);
@@ -232,10 +244,10 @@ void MainWindow::createTools()
     };
     QDockWidget *control = addDock(new PlcControlPanel(this), tr("PLC Control"),
                                    QStringLiteral("plcControlDock"), Qt::RightDockWidgetArea);
-    QDockWidget *forcing = addDock(new ForcingPanel(this), tr("Forcing"), QStringLiteral("forcingDock"),
-                                   Qt::RightDockWidgetArea);
-    QDockWidget *console = addDock(new RawConsole(this), tr("Raw Console"), QStringLiteral("rawConsoleDock"),
-                                   Qt::BottomDockWidgetArea);
+    QDockWidget *forcing = addDock(new ForcingPanel(this), tr("Forcing"),
+                                   QStringLiteral("forcingDock"), Qt::RightDockWidgetArea);
+    QDockWidget *console = addDock(new RawConsole(this), tr("Raw Console"),
+                                   QStringLiteral("rawConsoleDock"), Qt::BottomDockWidgetArea);
     control->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
     forcing->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
     console->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
@@ -255,10 +267,12 @@ void MainWindow::createTools()
         dialog->setObjectName(QStringLiteral("loopbackDialog"));
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         Connection *c = currentConnection();
-        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1), c ? c->name() : QString());
-        // Like the docks, an open dialog follows the current connection (and lets go of a closed one).
-        m_toolTargets.append([target = QPointer<LoopbackDialog>(dialog)](Session *session, quint8 station,
-                                                                          const QString &name) {
+        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
+                          c ? c->name() : QString());
+        // Like the docks, an open dialog follows the current connection (and lets go of a closed
+        // one).
+        m_toolTargets.append([target = QPointer<LoopbackDialog>(dialog)](
+                                 Session *session, quint8 station, const QString &name) {
             if (target)
                 target->setTarget(session, station, name);
         });
@@ -274,9 +288,10 @@ void MainWindow::createTools()
 QWidget *MainWindow::openTool(const QString &name)
 {
 #ifdef FATEK_WITH_TOOLS
-    static const QHash<QString, QString> docks = {{QStringLiteral("control"), QStringLiteral("plcControlDock")},
-                                                  {QStringLiteral("forcing"), QStringLiteral("forcingDock")},
-                                                  {QStringLiteral("console"), QStringLiteral("rawConsoleDock")}};
+    static const QHash<QString, QString> docks
+        = {{QStringLiteral("control"), QStringLiteral("plcControlDock")},
+           {QStringLiteral("forcing"), QStringLiteral("forcingDock")},
+           {QStringLiteral("console"), QStringLiteral("rawConsoleDock")}};
     if (docks.contains(name)) {
         auto *dock = findChild<QDockWidget *>(docks.value(name));
         if (!dock)
@@ -385,8 +400,8 @@ void MainWindow::renameWatchTable(int index)
     if (!table)
         return;
     bool ok = false;
-    const QString name = QInputDialog::getText(this, tr("Rename Watch Table"), tr("Name:"), QLineEdit::Normal,
-                                               table->name(), &ok);
+    const QString name = QInputDialog::getText(this, tr("Rename Watch Table"), tr("Name:"),
+                                               QLineEdit::Normal, table->name(), &ok);
     if (ok && !name.trimmed().isEmpty())
         table->setName(name.trimmed());
 }
@@ -424,8 +439,9 @@ bool MainWindow::restoreLastWatchList()
     if (!settings.value(reopenKey, true).toBool() || path.isEmpty() || !QFileInfo::exists(path))
         return false;
     if (const Status s = loadWatchList(path); !s) {
-        showStatus(tr("The last watch list %1 cannot be loaded: %2")
-                       .arg(QDir::toNativeSeparators(path), QString::fromStdString(s.error().message)));
+        showStatus(
+            tr("The last watch list %1 cannot be loaded: %2")
+                .arg(QDir::toNativeSeparators(path), QString::fromStdString(s.error().message)));
         return false;
     }
     showStatus(tr("Reopened %1.").arg(QDir::toNativeSeparators(path)));
@@ -454,9 +470,10 @@ void MainWindow::openWatchListDialog()
         return;
     setLastDirectory(path);
     if (const Status s = loadWatchList(path); !s) {
-        QMessageBox::warning(this, tr("Open Watch List"),
-                             tr("%1 cannot be loaded:\n%2")
-                                 .arg(QFileInfo(path).fileName(), QString::fromStdString(s.error().message)));
+        QMessageBox::warning(
+            this, tr("Open Watch List"),
+            tr("%1 cannot be loaded:\n%2")
+                .arg(QFileInfo(path).fileName(), QString::fromStdString(s.error().message)));
         return;
     }
     showStatus(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
@@ -472,7 +489,8 @@ void MainWindow::saveWatchListDialog()
         path += QStringLiteral(".json");
     setLastDirectory(path);
     if (const Status s = saveWatchList(path); !s) {
-        QMessageBox::warning(this, tr("Save Watch List"), QString::fromStdString(s.error().message));
+        QMessageBox::warning(this, tr("Save Watch List"),
+                             QString::fromStdString(s.error().message));
         return;
     }
     showStatus(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
@@ -486,9 +504,10 @@ void MainWindow::importCsvDialog()
         return;
     setLastDirectory(path);
     if (const Status s = importCsv(path); !s) {
-        QMessageBox::warning(this, tr("Import CSV"),
-                             tr("%1 cannot be imported:\n%2")
-                                 .arg(QFileInfo(path).fileName(), QString::fromStdString(s.error().message)));
+        QMessageBox::warning(
+            this, tr("Import CSV"),
+            tr("%1 cannot be imported:\n%2")
+                .arg(QFileInfo(path).fileName(), QString::fromStdString(s.error().message)));
         return;
     }
     showStatus(tr("Imported %1.").arg(QDir::toNativeSeparators(path)));
@@ -564,9 +583,9 @@ void MainWindow::updateLinkStatus()
                               .arg(c->requestsPerSecond(), 0, 'f', 1)
                               .arg(c->errorCount())
                               .arg(t.rttMeanMs, 0, 'f', 1));
-    m_linkStatus->setToolTip(c->linkReason().isEmpty() ? c->settings().toString()
-                                                       : c->settings().toString() + QLatin1Char('\n')
-                                                             + c->linkReason());
+    m_linkStatus->setToolTip(c->linkReason().isEmpty()
+                                 ? c->settings().toString()
+                                 : c->settings().toString() + QLatin1Char('\n') + c->linkReason());
 }
 
 void MainWindow::updateToolTargets()
@@ -579,7 +598,8 @@ void MainWindow::updateToolTargets()
     m_toolConnection = c;
     m_toolStation = station;
     for (const auto &setTarget : std::as_const(m_toolTargets))
-        setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1), c ? c->name() : QString());
+        setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
+                  c ? c->name() : QString());
 }
 
 void MainWindow::showStatus(const QString &text)

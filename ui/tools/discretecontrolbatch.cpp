@@ -50,7 +50,8 @@ bool DiscreteControlBatch::run(RequestTracker *tracker, quint8 station, Discrete
                             if (result.ok())
                                 ++state->outcome.succeeded;
                             else
-                                state->outcome.errors << QStringLiteral("%1: %2").arg(name, result.errorText());
+                                state->outcome.errors
+                                    << QStringLiteral("%1: %2").arg(name, result.errorText());
                             if (--state->remaining == 0 && done)
                                 done(state->outcome);
                         });
@@ -74,8 +75,9 @@ QString DiscreteControlBatch::describe(DiscreteOp op, const QList<Address> &poin
 QString DiscreteControlBatch::outcomeText(DiscreteOp op, const Outcome &outcome)
 {
     if (outcome.errors.isEmpty()) {
-        return outcome.succeeded == 1 ? QStringLiteral("%1 1 point.").arg(pastVerb(op))
-                                      : QStringLiteral("%1 %2 points.").arg(pastVerb(op)).arg(outcome.succeeded);
+        return outcome.succeeded == 1
+                   ? QStringLiteral("%1 1 point.").arg(pastVerb(op))
+                   : QStringLiteral("%1 %2 points.").arg(pastVerb(op)).arg(outcome.succeeded);
     }
     QString text = QStringLiteral("%1: %2 done, %3 failed \u2014 %4")
                        .arg(verb(op))

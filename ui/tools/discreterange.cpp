@@ -14,8 +14,8 @@ QString DiscreteRange::toString() const
 
 Result<DiscreteRange> DiscreteRange::parse(const QString &text)
 {
-    static const QRegularExpression pattern(
-        QStringLiteral(R"(^\s*([A-Za-z]+)\s*(\d+)\s*(?:(?:-|\.\.)\s*(?:([A-Za-z]+)\s*)?(\d+))?\s*$)"));
+    static const QRegularExpression pattern(QStringLiteral(
+        R"(^\s*([A-Za-z]+)\s*(\d+)\s*(?:(?:-|\.\.)\s*(?:([A-Za-z]+)\s*)?(\d+))?\s*$)"));
     const QRegularExpressionMatch m = pattern.match(text);
     if (!m.hasMatch()) {
         return makeError(ErrorKind::InvalidAddress,
@@ -36,12 +36,14 @@ Result<DiscreteRange> DiscreteRange::parse(const QString &text)
     bool ok = false;
     const quint32 first = m.captured(2).toUInt(&ok);
     if (!ok)
-        return makeError(ErrorKind::InvalidAddress, "Point number too large in " + text.trimmed().toStdString());
+        return makeError(ErrorKind::InvalidAddress,
+                         "Point number too large in " + text.trimmed().toStdString());
     quint32 lastNumber = first;
     if (m.hasCaptured(4) && !m.captured(4).isEmpty()) {
         lastNumber = m.captured(4).toUInt(&ok);
         if (!ok)
-            return makeError(ErrorKind::InvalidAddress, "Point number too large in " + text.trimmed().toStdString());
+            return makeError(ErrorKind::InvalidAddress,
+                             "Point number too large in " + text.trimmed().toStdString());
     }
     if (lastNumber < first) {
         return makeError(ErrorKind::InvalidAddress,
@@ -59,12 +61,15 @@ Result<QList<DiscreteRange>> DiscreteRange::parseList(const QString &text)
 {
     // Split on separators, but keep "Y0 - 255" together by normalizing spaces around dashes first.
     QString normalized = text;
-    normalized.replace(QRegularExpression(QStringLiteral(R"(\s*(-|\.\.)\s*)")), QStringLiteral("\\1"));
-    normalized.replace(QRegularExpression(QStringLiteral(R"(([A-Za-z])\s+(\d))")), QStringLiteral("\\1\\2"));
-    const QStringList parts = normalized.split(QRegularExpression(QStringLiteral(R"([\s,;]+)")),
-                                               Qt::SkipEmptyParts);
+    normalized.replace(QRegularExpression(QStringLiteral(R"(\s*(-|\.\.)\s*)")),
+                       QStringLiteral("\\1"));
+    normalized.replace(QRegularExpression(QStringLiteral(R"(([A-Za-z])\s+(\d))")),
+                       QStringLiteral("\\1\\2"));
+    const QStringList parts
+        = normalized.split(QRegularExpression(QStringLiteral(R"([\s,;]+)")), Qt::SkipEmptyParts);
     if (parts.isEmpty())
-        return makeError(ErrorKind::InvalidAddress, "No range given; write for example X0-255, Y0-255.");
+        return makeError(ErrorKind::InvalidAddress,
+                         "No range given; write for example X0-255, Y0-255.");
     QList<DiscreteRange> ranges;
     for (const QString &part : parts) {
         const Result<DiscreteRange> r = parse(part);

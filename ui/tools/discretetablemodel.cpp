@@ -31,7 +31,8 @@ void DiscreteTableModel::assign(std::vector<std::optional<bool>> &target,
             target[i] = std::nullopt;
     }
     if (!target.empty())
-        Q_EMIT dataChanged(index(0, PointColumn), index(static_cast<int>(target.size()) - 1, ColumnCount - 1),
+        Q_EMIT dataChanged(index(0, PointColumn),
+                           index(static_cast<int>(target.size()) - 1, ColumnCount - 1),
                            {Qt::DisplayRole, Qt::FontRole, Qt::BackgroundRole});
 }
 
@@ -79,14 +80,13 @@ QVariant DiscreteTableModel::data(const QModelIndex &index, int role) const
     switch (role) {
     case Qt::DisplayRole:
         switch (index.column()) {
-        case PointColumn:
-            return QString::fromStdString(addressAt(row).toString());
-        case StateColumn:
-            return !state ? QStringLiteral("?") : *state ? tr("ON") : tr("OFF");
+        case PointColumn: return QString::fromStdString(addressAt(row).toString());
+        case StateColumn: return !state ? QStringLiteral("?") : *state ? tr("ON") : tr("OFF");
         case ForcedColumn:
-            return !disabled ? QStringLiteral("?") : *disabled ? tr("disabled (forced)") : tr("enabled");
-        default:
-            return {};
+            return !disabled   ? QStringLiteral("?")
+                   : *disabled ? tr("disabled (forced)")
+                               : tr("enabled");
+        default: return {};
         }
     case Qt::FontRole:
         if ((index.column() == StateColumn && state.value_or(false))
@@ -99,10 +99,10 @@ QVariant DiscreteTableModel::data(const QModelIndex &index, int role) const
     case Qt::BackgroundRole:
         // A forced point must stand out: the engineer has to enable it again before leaving.
         if (disabled.value_or(false))
-            return ToolPalette::blend(m_palette.color(QPalette::Base), m_palette.color(QPalette::Highlight), 0.25);
+            return ToolPalette::blend(m_palette.color(QPalette::Base),
+                                      m_palette.color(QPalette::Highlight), 0.25);
         return {};
-    default:
-        return {};
+    default: return {};
     }
 }
 

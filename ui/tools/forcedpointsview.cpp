@@ -25,7 +25,8 @@ ForcedPointsView::ForcedPointsView(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     auto *row = new QHBoxLayout;
     row->addWidget(new QLabel(tr("Ranges:"), this));
-    m_ranges = new QLineEdit(QStringLiteral("X0-255, Y0-255, M0-1023, S0-255, T0-255, C0-255"), this);
+    m_ranges
+        = new QLineEdit(QStringLiteral("X0-255, Y0-255, M0-1023, S0-255, T0-255, C0-255"), this);
     m_ranges->setObjectName(QStringLiteral("forcedRanges"));
     m_ranges->setToolTip(tr("Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999"));
     row->addWidget(m_ranges, 1);
@@ -69,8 +70,9 @@ void ForcedPointsView::setTarget(Session *session, quint8 station, const QString
     m_prefixIsError = false;
     m_forced.clear();
     showList();
-    ToolPalette::showMessage(m_message, session ? tr("Press Scan to list the forced points.") : tr("No connection."),
-                             false);
+    ToolPalette::showMessage(
+        m_message, session ? tr("Press Scan to list the forced points.") : tr("No connection."),
+        false);
     updateEnabled();
 }
 
@@ -90,8 +92,9 @@ void ForcedPointsView::updateEnabled()
     m_scanButton->setEnabled(connected && !m_scanning && !m_enabling);
     const bool writable = connected && !m_session->isReadOnly();
     m_enableAllButton->setEnabled(writable && !m_scanning && !m_enabling && !m_forced.isEmpty());
-    m_enableAllButton->setToolTip(connected && !writable ? tr("Read-only (operator) mode: forcing is disabled.")
-                                                         : tr("Give every listed point back to the ladder"));
+    m_enableAllButton->setToolTip(connected && !writable
+                                      ? tr("Read-only (operator) mode: forcing is disabled.")
+                                      : tr("Give every listed point back to the ladder"));
 }
 
 void ForcedPointsView::scan()
@@ -107,7 +110,8 @@ void ForcedPointsView::scan()
     QList<DiscreteRange> chunks;
     for (const DiscreteRange &r : *ranges) {
         for (quint32 done = 0; done < r.count; done += Limits::maxDiscretes)
-            chunks << DiscreteRange{r.start.advanced(done), std::min<quint32>(Limits::maxDiscretes, r.count - done)};
+            chunks << DiscreteRange{r.start.advanced(done),
+                                    std::min<quint32>(Limits::maxDiscretes, r.count - done)};
     }
     struct ScanState
     {
@@ -121,40 +125,44 @@ void ForcedPointsView::scan()
     ToolPalette::showMessage(m_message, tr("Scanning %1 \u2026").arg(m_ranges->text()), false);
     updateEnabled();
     for (const DiscreteRange &chunk : chunks) {
-        m_requests->submit(Request::readEnableFlags(m_station, chunk.start, chunk.count),
-                           [this, state, chunk, generation](const SessionResult &result) {
-                               if (generation != m_generation)
-                                   return;
-                               if (!result.ok()) {
-                                   state->errors << QStringLiteral("%1: %2").arg(chunk.toString(), result.errorText());
-                               } else {
-                                   const auto &flags = result.response().values;
-                                   for (std::size_t i = 0; i < flags.size(); ++i) {
-                                       if (flags[i] != 0)
-                                           state->forced << chunk.start.advanced(static_cast<quint32>(i));
-                                   }
-                               }
-                               if (--state->remaining > 0)
-                                   return;
-                               m_scanning = false;
-                               ++m_scans;
-                               m_forced = state->forced;
-                               std::sort(m_forced.begin(), m_forced.end());
-                               showList();
-                               const QString text = !state->errors.isEmpty()
-                                   ? tr("Scan incomplete \u2014 %1").arg(state->errors.join(QStringLiteral("; ")))
-                                   : m_forced.isEmpty()
-                                   ? tr("No forced points in %1.").arg(m_ranges->text())
-                                   : (m_forced.size() == 1 ? tr("1 forced point: enable it before leaving the site.")
-                                                          : tr("%1 forced points: enable them before leaving the site.")
-                                                                .arg(m_forced.size()));
-                               // Keep the outcome of an Enable all visible in front of the new list.
-                               ToolPalette::showMessage(m_message, (m_prefix + QLatin1Char(' ') + text).trimmed(),
-                                                        m_prefixIsError || !state->errors.isEmpty());
-                               m_prefix.clear();
-                               m_prefixIsError = false;
-                               updateEnabled();
-                           });
+        m_requests->submit(
+            Request::readEnableFlags(m_station, chunk.start, chunk.count),
+            [this, state, chunk, generation](const SessionResult &result) {
+                if (generation != m_generation)
+                    return;
+                if (!result.ok()) {
+                    state->errors << QStringLiteral("%1: %2").arg(chunk.toString(),
+                                                                  result.errorText());
+                } else {
+                    const auto &flags = result.response().values;
+                    for (std::size_t i = 0; i < flags.size(); ++i) {
+                        if (flags[i] != 0)
+                            state->forced << chunk.start.advanced(static_cast<quint32>(i));
+                    }
+                }
+                if (--state->remaining > 0)
+                    return;
+                m_scanning = false;
+                ++m_scans;
+                m_forced = state->forced;
+                std::sort(m_forced.begin(), m_forced.end());
+                showList();
+                const QString text
+                    = !state->errors.isEmpty() ? tr("Scan incomplete \u2014 %1")
+                                                     .arg(state->errors.join(QStringLiteral("; ")))
+                      : m_forced.isEmpty()
+                          ? tr("No forced points in %1.").arg(m_ranges->text())
+                          : (m_forced.size() == 1
+                                 ? tr("1 forced point: enable it before leaving the site.")
+                                 : tr("%1 forced points: enable them before leaving the site.")
+                                       .arg(m_forced.size()));
+                // Keep the outcome of an Enable all visible in front of the new list.
+                ToolPalette::showMessage(m_message, (m_prefix + QLatin1Char(' ') + text).trimmed(),
+                                         m_prefixIsError || !state->errors.isEmpty());
+                m_prefix.clear();
+                m_prefixIsError = false;
+                updateEnabled();
+            });
     }
 }
 
@@ -166,7 +174,8 @@ void ForcedPointsView::enableAll()
                                  .arg(DiscreteControlBatch::describe(DiscreteOp::Enable, m_forced),
                                       ToolConfirmation::target(m_station, m_connectionName));
     if (!ToolConfirmation::ask(this, tr("Enable all forced points"), question, m_confirmer)) {
-        ToolPalette::showMessage(m_message, tr("Enable all cancelled; the points stay forced."), false);
+        ToolPalette::showMessage(m_message, tr("Enable all cancelled; the points stay forced."),
+                                 false);
         return;
     }
     m_enabling = true;
@@ -174,7 +183,8 @@ void ForcedPointsView::enableAll()
     DiscreteControlBatch::run(m_requests, m_station, DiscreteOp::Enable, m_forced,
                               [this](const DiscreteControlBatch::Outcome &outcome) {
                                   m_enabling = false;
-                                  m_prefix = DiscreteControlBatch::outcomeText(DiscreteOp::Enable, outcome);
+                                  m_prefix = DiscreteControlBatch::outcomeText(DiscreteOp::Enable,
+                                                                               outcome);
                                   m_prefixIsError = !outcome.errors.isEmpty();
                                   Q_EMIT pointsChanged();
                                   scan(); // show what is really left

@@ -8,8 +8,8 @@
 #include "toolpalette.h"
 
 #include <QCheckBox>
-#include <QEvent>
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
@@ -41,12 +41,15 @@ ForcingPanel::ForcingPanel(QWidget *parent)
     auto *row = new QHBoxLayout;
     m_type = new QComboBox(table);
     m_type->setObjectName(QStringLiteral("typeCombo"));
-    for (ElementType t : {ElementType::X, ElementType::Y, ElementType::M, ElementType::S, ElementType::T,
-                          ElementType::C}) {
+    for (ElementType t : {ElementType::X, ElementType::Y, ElementType::M, ElementType::S,
+                          ElementType::T, ElementType::C}) {
         const ElementInfo &info = elementInfo(t);
-        m_type->addItem(QStringLiteral("%1 \u2013 %2").arg(QString::fromUtf8(info.symbol.data(), static_cast<qsizetype>(info.symbol.size())),
-                                                        QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size()))),
-                        static_cast<int>(t));
+        m_type->addItem(
+            QStringLiteral("%1 \u2013 %2")
+                .arg(QString::fromUtf8(info.symbol.data(),
+                                       static_cast<qsizetype>(info.symbol.size())),
+                     QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size()))),
+            static_cast<int>(t));
     }
     m_type->setCurrentIndex(1); // Y: outputs are what gets forced most
     m_start = new QSpinBox(table);
@@ -116,7 +119,8 @@ ForcingPanel::ForcingPanel(QWidget *parent)
 
     connect(m_readButton, &QPushButton::clicked, this, &ForcingPanel::applyRangeFromControls);
     connect(m_autoRefresh, &QCheckBox::toggled, this, &ForcingPanel::setAutoRefresh);
-    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &ForcingPanel::updateEnabled);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &ForcingPanel::updateEnabled);
     connect(m_forced, &ForcedPointsView::pointsChanged, this, &ForcingPanel::refresh);
     m_timer.setInterval(1000);
     connect(&m_timer, &QTimer::timeout, this, [this] {
@@ -132,7 +136,8 @@ void ForcingPanel::setTarget(Session *session, quint8 station, const QString &co
 {
     disconnect(m_sessionGone);
     if (session) // a deleted session leaves the tool in "no connection"
-        m_sessionGone = connect(session, &QObject::destroyed, this, [this] { setTarget(nullptr, m_station, {}); });
+        m_sessionGone = connect(session, &QObject::destroyed, this,
+                                [this] { setTarget(nullptr, m_station, {}); });
     m_session = session;
     m_station = station;
     m_connectionName = connectionName;
@@ -166,7 +171,8 @@ void ForcingPanel::showRange(ElementType type, quint32 start, quint32 count)
 {
     const int index = m_type->findData(static_cast<int>(type));
     if (index < 0) {
-        ToolPalette::showMessage(m_message, tr("Only X, Y, M, S, T and C points can be forced."), true);
+        ToolPalette::showMessage(m_message, tr("Only X, Y, M, S, T and C points can be forced."),
+                                 true);
         return;
     }
     m_type->setCurrentIndex(index);
@@ -223,7 +229,8 @@ void ForcingPanel::refresh()
             if (r.ok())
                 values = r.response().values;
             else
-                ToolPalette::showMessage(m_message, tr("Could not read: %1").arg(r.errorText()), true);
+                ToolPalette::showMessage(m_message, tr("Could not read: %1").arg(r.errorText()),
+                                         true);
             if (states)
                 m_model->setStates(values);
             else
@@ -236,7 +243,8 @@ void ForcingPanel::refresh()
     };
     m_pendingReads = 2;
     m_requests->submit(Request::readDiscretes(m_station, range.start, range.count), handle(true));
-    m_requests->submit(Request::readEnableFlags(m_station, range.start, range.count), handle(false));
+    m_requests->submit(Request::readEnableFlags(m_station, range.start, range.count),
+                       handle(false));
 }
 
 void ForcingPanel::applyToSelection(DiscreteOp op)
@@ -248,14 +256,16 @@ void ForcingPanel::applyToSelection(DiscreteOp op)
         rows << index.row();
     std::sort(rows.begin(), rows.end());
     if (rows.isEmpty()) {
-        ToolPalette::showMessage(m_message, tr("Select the points first (Ctrl/Shift-click for several)."), false);
+        ToolPalette::showMessage(
+            m_message, tr("Select the points first (Ctrl/Shift-click for several)."), false);
         return;
     }
     QList<Address> points;
     for (int row : rows)
         points << m_model->addressAt(row);
     const QString action = DiscreteControlBatch::describe(op, points);
-    const QString question = tr("%1 on %2?").arg(action, ToolConfirmation::target(m_station, m_connectionName));
+    const QString question
+        = tr("%1 on %2?").arg(action, ToolConfirmation::target(m_station, m_connectionName));
     if (!ToolConfirmation::ask(this, tr("Forcing"), question, m_confirmer)) {
         ToolPalette::showMessage(m_message, tr("Cancelled: nothing sent."), false);
         return;
@@ -266,8 +276,9 @@ void ForcingPanel::applyToSelection(DiscreteOp op)
     DiscreteControlBatch::run(m_requests, m_station, op, points,
                               [this, op](const DiscreteControlBatch::Outcome &outcome) {
                                   m_acting = false;
-                                  ToolPalette::showMessage(m_message, DiscreteControlBatch::outcomeText(op, outcome),
-                                                           !outcome.errors.isEmpty());
+                                  ToolPalette::showMessage(
+                                      m_message, DiscreteControlBatch::outcomeText(op, outcome),
+                                      !outcome.errors.isEmpty());
                                   updateEnabled();
                                   refresh();
                               });
@@ -279,7 +290,9 @@ void ForcingPanel::updateEnabled()
     const bool selected = m_view->selectionModel() && m_view->selectionModel()->hasSelection();
     // Operator mode: the session would refuse every 42; say so on the buttons.
     const bool writable = connected && !m_session->isReadOnly();
-    const QString tip = connected && !writable ? tr("Read-only (operator) mode: forcing is disabled.") : QString();
+    const QString tip = connected && !writable
+                            ? tr("Read-only (operator) mode: forcing is disabled.")
+                            : QString();
     for (QPushButton *b : std::as_const(m_actionButtons)) {
         b->setEnabled(writable && selected && !m_acting);
         b->setToolTip(tip);

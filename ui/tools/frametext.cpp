@@ -6,9 +6,10 @@ namespace Fatek {
 
 namespace {
 
-const char *const controlNames[32] = {
-    "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS", "HT", "LF", "VT", "FF", "CR", "SO", "SI",
-    "DLE", "DC1", "DC2", "DC3", "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB", "ESC", "FS", "GS", "RS", "US"};
+const char *const controlNames[32]
+    = {"NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS",  "HT",  "LF",
+       "VT",  "FF",  "CR",  "SO",  "SI",  "DLE", "DC1", "DC2", "DC3", "DC4", "NAK",
+       "SYN", "ETB", "CAN", "EM",  "SUB", "ESC", "FS",  "GS",  "RS",  "US"};
 
 std::optional<quint8> hexPair(const QByteArray &bytes, qsizetype at)
 {
@@ -57,9 +58,11 @@ Result<QByteArray> FrameText::parseHex(const QString &text)
                              + "\u201d is not a hex digit; type bytes like 01 46 03 52 00 0C.");
     }
     if (digits.isEmpty())
-        return makeError(ErrorKind::InvalidRequest, "Nothing to send: type the frame's bytes in hex.");
+        return makeError(ErrorKind::InvalidRequest,
+                         "Nothing to send: type the frame's bytes in hex.");
     if (digits.size() % 2 != 0)
-        return makeError(ErrorKind::InvalidRequest, "Odd number of hex digits: each byte needs two (0C, not C).");
+        return makeError(ErrorKind::InvalidRequest,
+                         "Odd number of hex digits: each byte needs two (0C, not C).");
     return QByteArray::fromHex(digits.toLatin1());
 }
 
@@ -94,7 +97,8 @@ Result<QByteArray> FrameText::parseAscii(const QString &text)
         }
         if (c.unicode() < 32 || c.unicode() > 126) {
             return makeError(ErrorKind::InvalidRequest,
-                             "Only printable ASCII can be typed; write control characters as <STX>, <ETX> or <0D>.");
+                             "Only printable ASCII can be typed; write control characters as "
+                             "<STX>, <ETX> or <0D>.");
         }
         out += static_cast<char>(c.unicode());
     }
@@ -111,7 +115,8 @@ std::optional<FrameText::Header> FrameText::header(const QByteArray &frame)
     if (first == 0x02)
         return bodyHeader(frame.mid(1), true);
     // Binary: header (51 query / 52 answer), ID 10, length (2), then STN CMD.
-    if ((first == 0x51 || first == 0x52) && frame.size() >= 6 && static_cast<quint8>(frame.at(1)) == 0x10)
+    if ((first == 0x51 || first == 0x52) && frame.size() >= 6
+        && static_cast<quint8>(frame.at(1)) == 0x10)
         return Header{static_cast<quint8>(frame.at(4)), static_cast<quint8>(frame.at(5))};
     return std::nullopt;
 }

@@ -30,7 +30,8 @@ public:
     // Printable ASCII plus <STX>/<ETX>/<CR>... and <1F>-style escapes, as toAscii() writes them.
     static Result<QByteArray> parseAscii(const QString &text);
 
-    // Station and command of a FACON (STX ...) or binary (51/52 10 ...) frame, checksum not checked.
+    // Station and command of a FACON (STX ...) or binary (51/52 10 ...) frame, checksum not
+    // checked.
     static std::optional<Header> header(const QByteArray &frame);
     // Station and command of a body typed for automatic framing, in the given protocol.
     static std::optional<Header> bodyHeader(const QByteArray &body, bool facon);

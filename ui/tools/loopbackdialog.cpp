@@ -114,7 +114,8 @@ void LoopbackDialog::setTarget(Session *session, quint8 station, const QString &
 {
     disconnect(m_sessionGone);
     if (session) // a deleted session leaves the tool in "no connection"
-        m_sessionGone = connect(session, &QObject::destroyed, this, [this] { setTarget(nullptr, m_station, {}); });
+        m_sessionGone = connect(session, &QObject::destroyed, this,
+                                [this] { setTarget(nullptr, m_station, {}); });
     if (m_running)
         finish(tr("Stopped: the target changed."));
     m_session = session;
@@ -122,8 +123,9 @@ void LoopbackDialog::setTarget(Session *session, quint8 station, const QString &
     m_connectionName = connectionName;
     m_requests->setSession(session);
     m_requests->forgetPending();
-    m_targetLabel->setText(session ? tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName)
-                                   : tr("No connection: choose a connection and a station."));
+    m_targetLabel->setText(session
+                               ? tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName)
+                               : tr("No connection: choose a connection and a station."));
     updateControls();
 }
 
@@ -176,7 +178,8 @@ void LoopbackDialog::updateControls()
 
 Result<Bytes> LoopbackDialog::testData() const
 {
-    const bool binary = m_session && m_session->isProtocolKnown() && m_session->protocol() == Protocol::Binary;
+    const bool binary
+        = m_session && m_session->isProtocolKnown() && m_session->protocol() == Protocol::Binary;
     Bytes bytesOut;
     switch (static_cast<DataMode>(m_mode->currentIndex())) {
     case DataMode::Text: {
@@ -197,7 +200,8 @@ Result<Bytes> LoopbackDialog::testData() const
         // Binary links carry every byte value; FACON only printable characters ('!' .. '~').
         const int length = m_length->value();
         for (int i = 0; i < length; ++i)
-            bytesOut.push_back(binary ? static_cast<std::uint8_t>(i & 0xFF) : static_cast<std::uint8_t>(0x21 + i % 94));
+            bytesOut.push_back(binary ? static_cast<std::uint8_t>(i & 0xFF)
+                                      : static_cast<std::uint8_t>(0x21 + i % 94));
         break;
     }
     }
@@ -222,7 +226,10 @@ void LoopbackDialog::start()
     m_running = true;
     m_runs->clear();
     ToolPalette::showMessage(m_totals, m_stats.summary(), false);
-    ToolPalette::showMessage(m_message, tr("Running %1 loopback tests of %2 bytes \u2026").arg(m_repeat->value()).arg(m_data.size()),
+    ToolPalette::showMessage(m_message,
+                             tr("Running %1 loopback tests of %2 bytes \u2026")
+                                 .arg(m_repeat->value())
+                                 .arg(m_data.size()),
                              false);
     updateControls();
     runNext();
@@ -241,9 +248,10 @@ void LoopbackDialog::runNext()
     const int run = ++m_run;
     auto clock = std::make_shared<QElapsedTimer>();
     clock->start();
-    m_requests->submit(Request::loopback(m_station, m_data), [this, run, clock](const SessionResult &r) {
-        onAnswer(run, r, static_cast<double>(clock->nsecsElapsed()) / 1e6);
-    });
+    m_requests->submit(Request::loopback(m_station, m_data),
+                       [this, run, clock](const SessionResult &r) {
+                           onAnswer(run, r, static_cast<double>(clock->nsecsElapsed()) / 1e6);
+                       });
 }
 
 void LoopbackDialog::onAnswer(int run, const SessionResult &result, double rttMs)
@@ -256,7 +264,9 @@ void LoopbackDialog::onAnswer(int run, const SessionResult &result, double rttMs
         appendLine(tr("%1  OK        %2 ms").arg(prefix).arg(rttMs, 0, 'f', 1), false);
     } else if (result.ok()) {
         m_stats.add(LoopbackStats::Outcome::Mismatch, rttMs);
-        appendLine(tr("%1  MISMATCH  %2 ms: got %3").arg(prefix).arg(rttMs, 0, 'f', 1)
+        appendLine(tr("%1  MISMATCH  %2 ms: got %3")
+                       .arg(prefix)
+                       .arg(rttMs, 0, 'f', 1)
                        .arg(FrameText::toAscii(toQByteArray(result.response().data))),
                    true);
     } else if (result.errorKind() == ErrorKind::Timeout) {

@@ -43,7 +43,8 @@ double LoopbackStats::p99Ms() const
         return 0;
     std::vector<double> sorted = m_rtts;
     std::sort(sorted.begin(), sorted.end());
-    const auto rank = static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(sorted.size())));
+    const auto rank
+        = static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(sorted.size())));
     return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
 }
 

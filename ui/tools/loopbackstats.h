@@ -29,7 +29,8 @@ public:
     // Nearest-rank 99th percentile.
     double p99Ms() const;
 
-    // "100 runs: 98 OK, 1 mismatch, 1 timeout, 0 other errors — RTT min 1.2 / mean 2.0 / max 9.1 / p99 8.7 ms"
+    // "100 runs: 98 OK, 1 mismatch, 1 timeout, 0 other errors — RTT min 1.2 / mean 2.0 / max 9.1 /
+    // p99 8.7 ms"
     QString summary() const;
 
 private:

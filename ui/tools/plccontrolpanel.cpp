@@ -156,7 +156,8 @@ void PlcControlPanel::setTarget(Session *session, quint8 station, const QString 
 {
     disconnect(m_sessionGone);
     if (session) // a deleted session leaves the tool in "no connection"
-        m_sessionGone = connect(session, &QObject::destroyed, this, [this] { setTarget(nullptr, m_station, {}); });
+        m_sessionGone = connect(session, &QObject::destroyed, this,
+                                [this] { setTarget(nullptr, m_station, {}); });
     m_session = session;
     m_station = station;
     m_connectionName = connectionName;
@@ -197,7 +198,9 @@ void PlcControlPanel::updateEnabled()
     const bool connected = !m_session.isNull();
     // Operator mode: the session would refuse RUN/STOP anyway; say so on the buttons.
     const bool writable = connected && !m_session->isReadOnly();
-    const QString tip = connected && !writable ? tr("Read-only (operator) mode: RUN/STOP is disabled.") : QString();
+    const QString tip = connected && !writable
+                            ? tr("Read-only (operator) mode: RUN/STOP is disabled.")
+                            : QString();
     for (QPushButton *b : {m_runButton, m_stopButton}) {
         b->setEnabled(writable && !m_modePending);
         b->setToolTip(tip);
@@ -239,8 +242,8 @@ void PlcControlPanel::requestMode(bool run)
     if (!m_session || m_modePending)
         return;
     const QString mode = run ? QStringLiteral("RUN") : QStringLiteral("STOP");
-    const QString question = tr("Put %1 into %2?")
-                                 .arg(ToolConfirmation::target(m_station, m_connectionName), mode);
+    const QString question
+        = tr("Put %1 into %2?").arg(ToolConfirmation::target(m_station, m_connectionName), mode);
     if (!ToolConfirmation::ask(this, tr("PLC %1").arg(mode), question, m_confirmer)) {
         ToolPalette::showMessage(m_outcomeLabel, tr("%1 not sent: cancelled.").arg(mode), false);
         return;
@@ -250,9 +253,11 @@ void PlcControlPanel::requestMode(bool run)
     m_requests->submit(Request::runStop(m_station, run), [this, mode](const SessionResult &r) {
         m_modePending = false;
         if (r.ok())
-            ToolPalette::showMessage(m_outcomeLabel, tr("%1 accepted by station %2.").arg(mode).arg(m_station), false);
+            ToolPalette::showMessage(
+                m_outcomeLabel, tr("%1 accepted by station %2.").arg(mode).arg(m_station), false);
         else
-            ToolPalette::showMessage(m_outcomeLabel, tr("%1 refused: %2").arg(mode, r.errorText()), true);
+            ToolPalette::showMessage(m_outcomeLabel, tr("%1 refused: %2").arg(mode, r.errorText()),
+                                     true);
         updateEnabled();
         refresh();
         refreshDetail(); // its STATUS1 changes too
@@ -265,17 +270,19 @@ void PlcControlPanel::onBriefStatus(const SessionResult &result)
     m_briefPending = false;
     if (!result.ok() || result.response().data.empty()) {
         showStatus(std::nullopt);
-        ToolPalette::showMessage(m_refreshLabel,
-                                 tr("Status unknown: %1")
-                                     .arg(result.ok() ? tr("the PLC sent no status bytes.") : result.errorText()),
-                                 true);
+        ToolPalette::showMessage(
+            m_refreshLabel,
+            tr("Status unknown: %1")
+                .arg(result.ok() ? tr("the PLC sent no status bytes.") : result.errorText()),
+            true);
         return;
     }
     showStatus(PlcStatus::fromStatus1(result.response().data.front()));
     updateEnabled(); // follows a change of operator mode
-    ToolPalette::showMessage(m_refreshLabel,
-                             tr("Status read at %1.").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss"))),
-                             false);
+    ToolPalette::showMessage(
+        m_refreshLabel,
+        tr("Status read at %1.").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss"))),
+        false);
 }
 
 void PlcControlPanel::onDetailStatus(const SessionResult &result)
@@ -295,10 +302,12 @@ void PlcControlPanel::showStatus(const std::optional<PlcStatus> &status)
 {
     m_status = status;
     using S = StatusIndicator::State;
-    auto state = [&](bool on) { return !status ? S::Unknown : on ? S::On : S::Off; };
+    auto state = [&](bool on) {
+        return !status ? S::Unknown : on ? S::On : S::Off;
+    };
     const PlcStatus s = status.value_or(PlcStatus{});
-    const bool values[] = {s.running, s.batteryLow, s.ladderChecksumError, s.memoryPack,
-                           s.watchdogError, s.idSet, s.emergencyStop};
+    const bool values[] = {s.running,       s.batteryLow, s.ladderChecksumError, s.memoryPack,
+                           s.watchdogError, s.idSet,      s.emergencyStop};
     for (int i = 0; i < m_indicators.size(); ++i)
         m_indicators.at(i)->setState(state(values[i]));
     m_modeLabel->setText(!status ? tr("Mode unknown") : s.running ? tr("RUN") : tr("STOP"));
@@ -307,7 +316,7 @@ void PlcControlPanel::showStatus(const std::optional<PlcStatus> &status)
 void PlcControlPanel::showDetail()
 {
     const QString none = QStringLiteral("\u2013");
-    QLabel *const decoded[] = {m_model, m_io, m_os, m_program, m_discretes,
+    QLabel *const decoded[] = {m_model,  m_io,     m_os,        m_program,       m_discretes,
                                m_analog, m_relays, m_registers, m_timersCounters};
     for (QLabel *label : decoded)
         label->setText(none);
@@ -335,8 +344,9 @@ void PlcControlPanel::showDetail()
     if (d.osVersion) {
         const int v = *d.osVersion;
         // Version digits are BCD-like: 0x31 means V3.1.
-        m_os->setText(v >= 0x10 && (v & 0x0F) <= 9 ? QStringLiteral("V%1.%2").arg(v >> 4).arg(v & 0x0F)
-                                                  : tr("code 0x%1").arg(v, 2, 16, QLatin1Char('0')));
+        m_os->setText(v >= 0x10 && (v & 0x0F) <= 9
+                          ? QStringLiteral("V%1.%2").arg(v >> 4).arg(v & 0x0F)
+                          : tr("code 0x%1").arg(v, 2, 16, QLatin1Char('0')));
     }
     if (d.ladderSize)
         m_program->setText(tr("%1 words").arg(*d.ladderSize));
@@ -347,7 +357,8 @@ void PlcControlPanel::showDetail()
     pair(m_discretes, d.discreteInputs, d.discreteOutputs);
     pair(m_analog, d.analogInputs, d.analogOutputs);
     if (d.mRelays || d.sRelays || d.lRelays)
-        m_relays->setText(QStringLiteral("%1 / %2 / %3").arg(count(d.mRelays), count(d.sRelays), count(d.lRelays)));
+        m_relays->setText(QStringLiteral("%1 / %2 / %3")
+                              .arg(count(d.mRelays), count(d.sRelays), count(d.lRelays)));
     pair(m_registers, d.rRegisters, d.dRegisters);
     pair(m_timersCounters, d.timers, d.counters);
 }

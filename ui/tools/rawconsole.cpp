@@ -8,9 +8,9 @@
 
 #include <QApplication>
 #include <QCheckBox>
-#include <QEvent>
 #include <QClipboard>
 #include <QComboBox>
+#include <QEvent>
 #include <QFile>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -57,9 +57,10 @@ RawConsole::RawConsole(QWidget *parent)
         if (!isKnownCommand(static_cast<std::uint8_t>(code)))
             continue;
         const std::string_view name = commandName(static_cast<Command>(code));
-        m_command->addItem(QString::number(code, 16).toUpper() + QLatin1Char(' ')
-                               + QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
-                           code);
+        m_command->addItem(
+            QString::number(code, 16).toUpper() + QLatin1Char(' ')
+                + QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
+            code);
     }
     m_errorsOnly = new QCheckBox(tr("Errors only"), this);
     m_errorsOnly->setObjectName(QStringLiteral("errorsOnly"));
@@ -95,12 +96,17 @@ RawConsole::RawConsole(QWidget *parent)
     m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 6);
     m_view->horizontalHeader()->setStretchLastSection(true);
     const QFontMetrics fm = m_view->fontMetrics();
-    m_view->setColumnWidth(TrafficLogModel::TimeColumn, fm.horizontalAdvance(QStringLiteral("00:00:00.000  ")));
-    m_view->setColumnWidth(TrafficLogModel::DirectionColumn, fm.horizontalAdvance(QStringLiteral("received  ")));
-    m_view->setColumnWidth(TrafficLogModel::StationColumn, fm.horizontalAdvance(QStringLiteral("Station  ")));
+    m_view->setColumnWidth(TrafficLogModel::TimeColumn,
+                           fm.horizontalAdvance(QStringLiteral("00:00:00.000  ")));
+    m_view->setColumnWidth(TrafficLogModel::DirectionColumn,
+                           fm.horizontalAdvance(QStringLiteral("received  ")));
+    m_view->setColumnWidth(TrafficLogModel::StationColumn,
+                           fm.horizontalAdvance(QStringLiteral("Station  ")));
     m_view->setColumnWidth(TrafficLogModel::HexColumn, fm.horizontalAdvance(QLatin1Char('0')) * 30);
-    m_view->setColumnWidth(TrafficLogModel::AsciiColumn, fm.horizontalAdvance(QLatin1Char('0')) * 22);
-    m_view->setColumnWidth(TrafficLogModel::MeaningColumn, fm.horizontalAdvance(QLatin1Char('0')) * 34);
+    m_view->setColumnWidth(TrafficLogModel::AsciiColumn,
+                           fm.horizontalAdvance(QLatin1Char('0')) * 22);
+    m_view->setColumnWidth(TrafficLogModel::MeaningColumn,
+                           fm.horizontalAdvance(QLatin1Char('0')) * 34);
     layout->addWidget(m_view, 1);
 
     m_status = new QLabel(this);
@@ -120,7 +126,8 @@ RawConsole::RawConsole(QWidget *parent)
     // Follow new frames unless the user scrolled up to read; scrolling back down follows again.
     QScrollBar *bar = m_view->verticalScrollBar();
     connect(bar, &QScrollBar::actionTriggered, this, [this, bar] {
-        QTimer::singleShot(0, this, [this, bar] { m_followTail = bar->value() >= bar->maximum() - 1; });
+        QTimer::singleShot(0, this,
+                           [this, bar] { m_followTail = bar->value() >= bar->maximum() - 1; });
     });
     // entriesAdded can come for every frame: gather them and append in batches.
     m_fetchTimer.setSingleShot(true);
@@ -151,11 +158,13 @@ void RawConsole::setTarget(Session *session, quint8 station, const QString &conn
         return;
     }
     // The log belongs to the link, not one station: every frame of the connection is shown.
-    m_targetLabel->setText(tr("Traffic of \u201c%1\u201d (sending to station %2)").arg(connectionName).arg(station));
+    m_targetLabel->setText(
+        tr("Traffic of \u201c%1\u201d (sending to station %2)").arg(connectionName).arg(station));
     if (sameLink)
         return;
     // A deleted session leaves the console in "no connection".
-    m_sessionGone = connect(session, &QObject::destroyed, this, [this] { setTarget(nullptr, m_station, {}); });
+    m_sessionGone = connect(session, &QObject::destroyed, this,
+                            [this] { setTarget(nullptr, m_station, {}); });
     connect(session->trafficLog(), &TrafficLog::entriesAdded, this, [this] {
         if (!m_fetchTimer.isActive())
             m_fetchTimer.start();
@@ -176,7 +185,8 @@ void RawConsole::setPaused(bool paused)
     if (!paused)
         fetch();
     else
-        ToolPalette::showMessage(m_status, tr("Paused: new frames are kept in the log and shown on Resume."), false);
+        ToolPalette::showMessage(
+            m_status, tr("Paused: new frames are kept in the log and shown on Resume."), false);
 }
 
 bool RawConsole::isPaused() const
@@ -192,8 +202,9 @@ void RawConsole::fetch()
     if (entries.isEmpty())
         return;
     if (entries.first().sequence > m_lastSequence + 1 && m_lastSequence != 0) {
-        ToolPalette::showMessage(m_status, tr("%1 older frames were dropped from the log while paused.")
-                                               .arg(entries.first().sequence - m_lastSequence - 1),
+        ToolPalette::showMessage(m_status,
+                                 tr("%1 older frames were dropped from the log while paused.")
+                                     .arg(entries.first().sequence - m_lastSequence - 1),
                                  false);
     } else {
         ToolPalette::showMessage(m_status, {}, false);
@@ -213,10 +224,12 @@ void RawConsole::clear()
 void RawConsole::applyFilters()
 {
     const int direction = m_direction->currentData().toInt();
-    m_filter->setDirection(direction < 0 ? std::nullopt
-                                         : std::optional(static_cast<TrafficEntry::Direction>(direction)));
-    m_filter->setStation(m_stationFilter->value() < 0 ? std::nullopt
-                                                : std::optional(static_cast<quint8>(m_stationFilter->value())));
+    m_filter->setDirection(direction < 0
+                               ? std::nullopt
+                               : std::optional(static_cast<TrafficEntry::Direction>(direction)));
+    m_filter->setStation(m_stationFilter->value() < 0
+                             ? std::nullopt
+                             : std::optional(static_cast<quint8>(m_stationFilter->value())));
     const int command = m_command->currentData().toInt();
     m_filter->setCommand(command < 0 ? std::nullopt : std::optional(static_cast<quint8>(command)));
     m_filter->setErrorsOnly(m_errorsOnly->isChecked());
@@ -264,12 +277,14 @@ QString RawConsole::saveToFile(const QString &path) const
 
 void RawConsole::save()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save traffic"), QStringLiteral("traffic.tsv"),
-                                                      tr("Tab-separated text (*.tsv *.txt)"));
+    const QString path
+        = QFileDialog::getSaveFileName(this, tr("Save traffic"), QStringLiteral("traffic.tsv"),
+                                       tr("Tab-separated text (*.tsv *.txt)"));
     if (path.isEmpty())
         return;
     const QString error = saveToFile(path);
-    ToolPalette::showMessage(m_status, error.isEmpty() ? tr("Saved to %1.").arg(path) : error, !error.isEmpty());
+    ToolPalette::showMessage(m_status, error.isEmpty() ? tr("Saved to %1.").arg(path) : error,
+                             !error.isEmpty());
 }
 
 void RawConsole::changeEvent(QEvent *event)

@@ -42,7 +42,8 @@ public:
 
     void setPaused(bool paused);
     bool isPaused() const;
-    // Writes every visible row (after filters) as tab-separated text; returns an error sentence or "".
+    // Writes every visible row (after filters) as tab-separated text; returns an error sentence or
+    // "".
     QString saveToFile(const QString &path) const;
     // The visible (or only the selected, if any) rows as text, also put on the clipboard.
     QString copyRows() const;

@@ -117,11 +117,13 @@ bool RawSendBar::framingIsFacon() const
 void RawSendBar::updateFramingLabel()
 {
     const bool facon = framingIsFacon();
-    m_framing->setText(facon ? tr("Add STX, LRC, ETX (FACON)") : tr("Add header, length, CRC (binary)"));
+    m_framing->setText(facon ? tr("Add STX, LRC, ETX (FACON)")
+                             : tr("Add header, length, CRC (binary)"));
     const bool hex = m_mode->currentIndex() == 0;
     if (m_framing->isChecked())
-        m_input->setPlaceholderText(facon ? (hex ? tr("body in hex, e.g. 30 31 34 30") : tr("body, e.g. 014603R00012"))
-                                          : (hex ? tr("payload, e.g. 01 46 03 52 00 0C") : tr("payload as ASCII")));
+        m_input->setPlaceholderText(
+            facon ? (hex ? tr("body in hex, e.g. 30 31 34 30") : tr("body, e.g. 014603R00012"))
+                  : (hex ? tr("payload, e.g. 01 46 03 52 00 0C") : tr("payload as ASCII")));
     else
         m_input->setPlaceholderText(hex ? tr("whole frame in hex, e.g. 02 30 31 34 30 43 37 03")
                                         : tr("whole frame, e.g. <STX>0140C7<ETX>"));
@@ -137,7 +139,8 @@ void RawSendBar::send()
     if (!m_session || m_busy)
         return;
     const bool hex = m_mode->currentIndex() == 0;
-    const Result<QByteArray> typed = hex ? FrameText::parseHex(m_input->text()) : FrameText::parseAscii(m_input->text());
+    const Result<QByteArray> typed
+        = hex ? FrameText::parseHex(m_input->text()) : FrameText::parseAscii(m_input->text());
     if (!typed) {
         ToolPalette::showMessage(m_result, QString::fromStdString(typed.error().message), true);
         return;
@@ -147,14 +150,17 @@ void RawSendBar::send()
     // What will go on the wire, to show it; the session does the same wrapping.
     QByteArray frame = *typed;
     if (framing) {
-        frame = facon ? fromBytes(FaconCodec().wrap(toBytes(*typed))) : fromBytes(BinaryCodec().wrap(toBytes(*typed)));
+        frame = facon ? fromBytes(FaconCodec().wrap(toBytes(*typed)))
+                      : fromBytes(BinaryCodec().wrap(toBytes(*typed)));
     }
     // A raw frame can do anything: ask unless it is clearly a command that only reads.
     const auto header = FrameText::header(frame);
     const bool harmless = header && isKnownCommand(header->command)
                           && !isWriteCommand(static_cast<Command>(header->command));
     if (!harmless) {
-        const QString what = header ? tr("command %1 to station %2").arg(header->command, 2, 16, QLatin1Char('0')).arg(header->station)
+        const QString what = header ? tr("command %1 to station %2")
+                                          .arg(header->command, 2, 16, QLatin1Char('0'))
+                                          .arg(header->station)
                                     : tr("an unrecognized frame");
         const QString question = tr("Send %1 (%2) on %3? It may change the PLC.")
                                      .arg(what, FrameText::toAscii(frame),
@@ -166,8 +172,11 @@ void RawSendBar::send()
     }
     m_busy = true;
     updateEnabled();
-    ToolPalette::showMessage(m_result, tr("Sent    %1\nwaiting for the answer \u2026").arg(FrameText::toAscii(frame)), false);
-    m_requests->sendRaw(*typed, framing, [this, frame](const SessionResult &r) { onAnswer(frame, r); });
+    ToolPalette::showMessage(
+        m_result, tr("Sent    %1\nwaiting for the answer \u2026").arg(FrameText::toAscii(frame)),
+        false);
+    m_requests->sendRaw(*typed, framing,
+                        [this, frame](const SessionResult &r) { onAnswer(frame, r); });
 }
 
 void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
@@ -176,18 +185,21 @@ void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
     updateEnabled();
     const QString sentLine = tr("Sent    %1").arg(FrameText::toAscii(sent));
     if (!result.ok()) {
-        ToolPalette::showMessage(m_result, tr("%1\nFailed  %2").arg(sentLine, result.errorText()), true);
+        ToolPalette::showMessage(m_result, tr("%1\nFailed  %2").arg(sentLine, result.errorText()),
+                                 true);
         return;
     }
     ++m_answers;
     m_lastAnswer = result.rawAnswer();
     const std::vector<std::uint8_t> answer = toBytes(m_lastAnswer);
-    const bool facon = !m_lastAnswer.isEmpty() && static_cast<quint8>(m_lastAnswer.at(0)) == FaconCodec::STX;
+    const bool facon
+        = !m_lastAnswer.isEmpty() && static_cast<quint8>(m_lastAnswer.at(0)) == FaconCodec::STX;
     const QString meaning = facon ? QString::fromStdString(FaconCodec().summarize(answer))
                                   : QString::fromStdString(BinaryCodec().summarize(answer));
     ToolPalette::showMessage(m_result,
                              tr("%1\nAnswer  %2\n        %3\nMeaning %4")
-                                 .arg(sentLine, FrameText::toAscii(m_lastAnswer), FrameText::toHex(m_lastAnswer), meaning),
+                                 .arg(sentLine, FrameText::toAscii(m_lastAnswer),
+                                      FrameText::toHex(m_lastAnswer), meaning),
                              false);
 }
 

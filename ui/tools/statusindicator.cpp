@@ -20,7 +20,9 @@ void StatusIndicator::setState(State state)
     if (m_state == state)
         return;
     m_state = state;
-    const QString stateText = state == State::On ? tr("on") : state == State::Off ? tr("off") : tr("unknown");
+    const QString stateText = state == State::On    ? tr("on")
+                              : state == State::Off ? tr("off")
+                                                    : tr("unknown");
     setAccessibleDescription(stateText);
     setToolTip(QStringLiteral("%1: %2").arg(m_text, stateText));
     update();
@@ -62,7 +64,8 @@ void StatusIndicator::paintEvent(QPaintEvent *)
     p.setBrush(fill);
     p.drawEllipse(circle);
 
-    p.setPen(pal.color(m_state == State::Unknown ? QPalette::PlaceholderText : QPalette::WindowText));
+    p.setPen(
+        pal.color(m_state == State::Unknown ? QPalette::PlaceholderText : QPalette::WindowText));
     const int x = lamp + 4 + fontMetrics().horizontalAdvance(QLatin1Char(' '));
     p.drawText(QRect(x, 0, width() - x, height()), Qt::AlignVCenter | Qt::AlignLeft, m_text);
 }

@@ -50,7 +50,8 @@ void ToolPalette::showMessage(QLabel *label, const QString &text, bool error)
     // Only the text role is set, and only for errors: everything else keeps following the theme.
     QPalette pal;
     if (error) {
-        const QPalette base = label->parentWidget() ? label->parentWidget()->palette() : label->palette();
+        const QPalette base
+            = label->parentWidget() ? label->parentWidget()->palette() : label->palette();
         pal.setColor(QPalette::WindowText, errorText(base));
     }
     label->setPalette(pal);

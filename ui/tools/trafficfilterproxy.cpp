@@ -6,8 +6,7 @@ namespace Fatek {
 
 TrafficFilterProxy::TrafficFilterProxy(QObject *parent)
     : QSortFilterProxyModel(parent)
-{
-}
+{}
 
 void TrafficFilterProxy::setDirection(std::optional<TrafficEntry::Direction> direction)
 {
@@ -38,11 +37,14 @@ bool TrafficFilterProxy::filterAcceptsRow(int sourceRow, const QModelIndex &sour
     const QModelIndex index = sourceModel()->index(sourceRow, 0, sourceParent);
     if (m_errorsOnly && !index.data(TrafficLogModel::IsErrorRole).toBool())
         return false;
-    if (m_direction && index.data(TrafficLogModel::DirectionRole).toInt() != static_cast<int>(*m_direction))
+    if (m_direction
+        && index.data(TrafficLogModel::DirectionRole).toInt() != static_cast<int>(*m_direction))
         return false;
-    if (m_station && index.data(TrafficLogModel::StationRole).toInt() != static_cast<int>(*m_station))
+    if (m_station
+        && index.data(TrafficLogModel::StationRole).toInt() != static_cast<int>(*m_station))
         return false;
-    if (m_command && index.data(TrafficLogModel::CommandRole).toInt() != static_cast<int>(*m_command))
+    if (m_command
+        && index.data(TrafficLogModel::CommandRole).toInt() != static_cast<int>(*m_command))
         return false;
     return true;
 }

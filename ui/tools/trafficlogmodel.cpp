@@ -8,8 +8,7 @@ namespace Fatek {
 
 TrafficLogModel::TrafficLogModel(QObject *parent)
     : QAbstractTableModel(parent)
-{
-}
+{}
 
 void TrafficLogModel::setCapacity(int rows)
 {
@@ -47,7 +46,8 @@ void TrafficLogModel::append(const QList<TrafficEntry> &entries)
     beginInsertRows({}, first, first + static_cast<int>(incoming) - 1);
     for (qsizetype i = skip; i < entries.size(); ++i) {
         const TrafficEntry &e = entries.at(i);
-        m_rows.push_back(Row{e, FrameText::header(e.bytes), FrameText::toHex(e.bytes), FrameText::toAscii(e.bytes)});
+        m_rows.push_back(Row{e, FrameText::header(e.bytes), FrameText::toHex(e.bytes),
+                             FrameText::toAscii(e.bytes)});
     }
     endInsertRows();
 }

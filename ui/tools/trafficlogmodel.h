@@ -18,8 +18,16 @@ class TrafficLogModel : public QAbstractTableModel
     Q_OBJECT
 
 public:
-    enum Column { TimeColumn, DirectionColumn, StationColumn, HexColumn, AsciiColumn, MeaningColumn,
-                  ErrorColumn, ColumnCount };
+    enum Column {
+        TimeColumn,
+        DirectionColumn,
+        StationColumn,
+        HexColumn,
+        AsciiColumn,
+        MeaningColumn,
+        ErrorColumn,
+        ColumnCount
+    };
     // Roles the filter reads: direction (int of TrafficEntry::Direction), station and command
     // (-1 when the row has none), whether the row is an error.
     enum Role { DirectionRole = Qt::UserRole + 1, StationRole, CommandRole, IsErrorRole };
@@ -32,7 +40,10 @@ public:
 
     void append(const QList<TrafficEntry> &entries);
     void clear();
-    const TrafficEntry &entryAt(int row) const { return m_rows.at(static_cast<std::size_t>(row)).entry; }
+    const TrafficEntry &entryAt(int row) const
+    {
+        return m_rows.at(static_cast<std::size_t>(row)).entry;
+    }
     // One line of tab-separated text per row, for copy and save.
     QString rowText(int row) const;
     static QString directionText(TrafficEntry::Direction direction);
@@ -40,7 +51,8 @@ public:
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
-    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
 
 private:
     struct Row

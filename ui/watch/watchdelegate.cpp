@@ -28,7 +28,8 @@ void WatchDelegate::setEditorData(QWidget *editor, const QModelIndex &index) con
     QStyledItemDelegate::setEditorData(editor, index);
 }
 
-void WatchDelegate::setModelData(QWidget *editor, QAbstractItemModel *model, const QModelIndex &index) const
+void WatchDelegate::setModelData(QWidget *editor, QAbstractItemModel *model,
+                                 const QModelIndex &index) const
 {
     if (auto *combo = qobject_cast<QComboBox *>(editor)) {
         model->setData(index, combo->currentData().toInt(), Qt::EditRole);

@@ -4,7 +4,8 @@
 
 namespace Fatek {
 
-// Format column: a combo with the formats that fit the row's element; other columns: default editors.
+// Format column: a combo with the formats that fit the row's element; other columns: default
+// editors.
 class WatchDelegate : public QStyledItemDelegate
 {
     Q_OBJECT
@@ -15,7 +16,8 @@ public:
     QWidget *createEditor(QWidget *parent, const QStyleOptionViewItem &option,
                           const QModelIndex &index) const override;
     void setEditorData(QWidget *editor, const QModelIndex &index) const override;
-    void setModelData(QWidget *editor, QAbstractItemModel *model, const QModelIndex &index) const override;
+    void setModelData(QWidget *editor, QAbstractItemModel *model,
+                      const QModelIndex &index) const override;
 };
 
 } // namespace Fatek

@@ -51,7 +51,8 @@ Result<QList<WatchItemSpec>> parsePasted(const QString &text, quint8 station)
         normalised.replace(QLatin1Char('\t'), QLatin1Char(';'));
         const QString firstLine = lines.constFirst();
         const bool hasHeader = firstLine.contains(QLatin1String("address"), Qt::CaseInsensitive);
-        bool hasStation = hasHeader && firstLine.contains(QLatin1String("station"), Qt::CaseInsensitive);
+        bool hasStation
+            = hasHeader && firstLine.contains(QLatin1String("station"), Qt::CaseInsensitive);
         if (!hasHeader) {
             // Spreadsheet rows usually read "address, name[, comment]"; a number second is the
             // station (the file column order), a format name second is "address, format, name".
@@ -62,8 +63,9 @@ Result<QList<WatchItemSpec>> parsePasted(const QString &text, quint8 station)
             const char sep = normalised.contains(QLatin1Char(';')) ? ';' : ',';
             QString header;
             if (!isNumber) {
-                header = ValueFormat::fromName(second) ? QStringLiteral("address%1format%1name%1comment\n")
-                                                       : QStringLiteral("address%1name%1comment\n");
+                header = ValueFormat::fromName(second)
+                             ? QStringLiteral("address%1format%1name%1comment\n")
+                             : QStringLiteral("address%1name%1comment\n");
                 normalised.prepend(header.arg(QLatin1Char(sep)));
             }
         }

@@ -176,7 +176,8 @@ int WatchTableModel::valueWidth(int row) const
 
 bool WatchTableModel::received(const Row &row) const
 {
-    return std::all_of(row.parts.cbegin(), row.parts.cend(), [](const Part &p) { return p.received; });
+    return std::all_of(row.parts.cbegin(), row.parts.cend(),
+                       [](const Part &p) { return p.received; });
 }
 
 bool WatchTableModel::hasValue(int row) const
@@ -394,13 +395,15 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             if (!row.writeOutcome.isEmpty())
                 lines << row.writeOutcome;
             if (index.column() == ValueColumn)
-                lines << (discrete ? tr("Click the box to toggle") : tr("Double-click or F2 to write"));
+                lines << (discrete ? tr("Click the box to toggle")
+                                   : tr("Double-click or F2 to write"));
         } else if (index.column() == AddressColumn) {
             const int count = static_cast<int>(row.ids.size());
             lines << (count > 1 ? tr("%1 .. %2 (%3 elements)")
                                       .arg(QString::fromStdString(spec.address.toString()),
                                            QString::fromStdString(
-                                               spec.address.advanced(static_cast<std::uint32_t>(count - 1))
+                                               spec.address
+                                                   .advanced(static_cast<std::uint32_t>(count - 1))
                                                    .toString()))
                                       .arg(count)
                                 : QString::fromStdString(std::string(spec.address.info().name)));
@@ -418,7 +421,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         }
         return {};
     case Qt::FontRole:
-        if ((index.column() == ValueColumn || index.column() == QualityColumn) && q != ValueQuality::Good) {
+        if ((index.column() == ValueColumn || index.column() == QualityColumn)
+            && q != ValueQuality::Good) {
             QFont font;
             font.setItalic(true);
             return font;
@@ -440,8 +444,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         if (index.column() == ValueColumn || index.column() == StationColumn)
             return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
         return {};
-    default:
-        return {};
+    default: return {};
     }
 }
 
@@ -472,12 +475,9 @@ Qt::ItemFlags WatchTableModel::flags(const QModelIndex &index) const
     case NameColumn:
     case StationColumn:
     case FormatColumn:
-    case CommentColumn:
-        return f | Qt::ItemIsEditable;
-    case ValueColumn:
-        return discrete ? (f | Qt::ItemIsUserCheckable) : (f | Qt::ItemIsEditable);
-    default:
-        return f;
+    case CommentColumn: return f | Qt::ItemIsEditable;
+    case ValueColumn: return discrete ? (f | Qt::ItemIsUserCheckable) : (f | Qt::ItemIsEditable);
+    default: return f;
     }
 }
 
@@ -498,10 +498,12 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
         const QString text = value.toString().trimmed();
         if (text.isEmpty() || text == valueText(r))
             return false;
-        const auto raw = ValueFormat::parse(text, valueWidth(r), row.spec.format, row.spec.swapWords);
+        const auto raw
+            = ValueFormat::parse(text, valueWidth(r), row.spec.format, row.spec.swapWords);
         if (!raw) {
-            Q_EMIT inputRejected(tr("%1: %2").arg(QString::fromStdString(row.spec.address.toString()),
-                                                  QString::fromStdString(raw.error().message)));
+            Q_EMIT inputRejected(
+                tr("%1: %2").arg(QString::fromStdString(row.spec.address.toString()),
+                                 QString::fromStdString(raw.error().message)));
             return false;
         }
         Q_EMIT writeRequested(r, *raw);
@@ -510,12 +512,8 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
     if (role != Qt::EditRole)
         return false;
     switch (index.column()) {
-    case NameColumn:
-        row.spec.name = value.toString();
-        break;
-    case CommentColumn:
-        row.spec.comment = value.toString();
-        break;
+    case NameColumn: row.spec.name = value.toString(); break;
+    case CommentColumn: row.spec.comment = value.toString(); break;
     case StationColumn: {
         bool ok = false;
         const int station = value.toInt(&ok);
@@ -547,8 +545,7 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
         }
         return true;
     }
-    default:
-        return false;
+    default: return false;
     }
     Q_EMIT dataChanged(index, index);
     return true;

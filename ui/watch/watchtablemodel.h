@@ -22,8 +22,17 @@ class WatchTableModel : public QAbstractTableModel
     Q_OBJECT
 
 public:
-    enum Column { NameColumn, AddressColumn, StationColumn, ValueColumn, FormatColumn,
-                  QualityColumn, UpdatedColumn, CommentColumn, ColumnCount };
+    enum Column {
+        NameColumn,
+        AddressColumn,
+        StationColumn,
+        ValueColumn,
+        FormatColumn,
+        QualityColumn,
+        UpdatedColumn,
+        CommentColumn,
+        ColumnCount
+    };
     // How long a changed value stays highlighted.
     static constexpr int flashMs = 700;
 
@@ -32,7 +41,8 @@ public:
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
-    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
     Qt::ItemFlags flags(const QModelIndex &index) const override;
     // Value column: text typed in the row's format (or a check state for discretes) is parsed and
     // becomes writeRequested(); the model itself changes only when the PLC reports the new value.

@@ -21,8 +21,8 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableView>
-#include <QToolButton>
 #include <QTime>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace Fatek {
@@ -105,11 +105,13 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     writeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
     writeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_swapAction = new QAction(tr("&Swap Words"), m_view);
-    m_swapAction->setToolTip(tr("Low word first for 32- and 64-bit values (some HMIs store floats so)"));
+    m_swapAction->setToolTip(
+        tr("Low word first for 32- and 64-bit values (some HMIs store floats so)"));
     auto *pasteAction = new QAction(tr("&Paste Items"), m_view);
     pasteAction->setShortcut(QKeySequence::Paste);
     pasteAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    auto *removeAction = new QAction(QIcon(QStringLiteral(":/icons/remove.svg")), tr("&Remove"), m_view);
+    auto *removeAction
+        = new QAction(QIcon(QStringLiteral(":/icons/remove.svg")), tr("&Remove"), m_view);
     removeAction->setShortcut(QKeySequence::Delete);
     removeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_view->addActions({writeAction, m_swapAction, pasteAction, removeAction});
@@ -132,11 +134,14 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     // loop while the view is closing its editor). The row is found again by its key.
     connect(m_model, &WatchTableModel::writeRequested, this, [this](int row, quint64 raw) {
         const quint64 key = m_model->rowKey(row);
-        QMetaObject::invokeMethod(this, [this, key, raw] {
-            const int current = m_model->rowOfKey(key);
-            if (current >= 0)
-                write(current, raw);
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this,
+            [this, key, raw] {
+                const int current = m_model->rowOfKey(key);
+                if (current >= 0)
+                    write(current, raw);
+            },
+            Qt::QueuedConnection);
     });
     connect(m_model, &WatchTableModel::inputRejected, this,
             [this](const QString &text) { showMessage(text, true); });
@@ -146,9 +151,8 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
         if (paused)
             m_model->markAllStale(tr("polling paused"));
     });
-    connect(m_connectionCombo, &QComboBox::activated, this, [this](int index) {
-        setConnection(m_manager->connection(index));
-    });
+    connect(m_connectionCombo, &QComboBox::activated, this,
+            [this](int index) { setConnection(m_manager->connection(index)); });
     connect(manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
         refreshConnections();
         if (!m_connection)
@@ -158,7 +162,8 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
         if (c == m_connection)
             setConnection(nullptr);
     });
-    connect(manager, &ConnectionManager::connectionRemoved, this, &WatchTableWidget::refreshConnections);
+    connect(manager, &ConnectionManager::connectionRemoved, this,
+            &WatchTableWidget::refreshConnections);
 
     refreshConnections();
     if (!manager->connections().isEmpty())
@@ -197,12 +202,14 @@ void WatchTableWidget::setConnection(Connection *connection)
                 m_model->applyValues(values);
         });
         // The session stops polling while its link is down (no batches come): mark the rows here.
-        connect(connection, &Connection::linkStateChanged, m_model, [this](LinkState state, const QString &reason) {
-            if (state == LinkState::Connected || state == LinkState::Connecting)
-                return;
-            m_model->markAllStale(reason.isEmpty() ? tr("link %1").arg(linkStateName(state))
-                                                   : tr("link %1: %2").arg(linkStateName(state), reason));
-        });
+        connect(connection, &Connection::linkStateChanged, m_model,
+                [this](LinkState state, const QString &reason) {
+                    if (state == LinkState::Connected || state == LinkState::Connecting)
+                        return;
+                    m_model->markAllStale(
+                        reason.isEmpty() ? tr("link %1").arg(linkStateName(state))
+                                         : tr("link %1: %2").arg(linkStateName(state), reason));
+                });
         connect(connection->session(), &Session::finished, this, &WatchTableWidget::onFinished);
     } else {
         m_model->markAllStale(tr("no connection"));
@@ -215,7 +222,8 @@ void WatchTableWidget::pushPollList()
 {
     if (!m_connection)
         return;
-    m_connection->setPollEntries(this, isPaused() ? QList<WatchEntry>() : m_model->pollEntries(intervalMs()));
+    m_connection->setPollEntries(this, isPaused() ? QList<WatchEntry>()
+                                                  : m_model->pollEntries(intervalMs()));
 }
 
 WatchTableSpec WatchTableWidget::spec() const
@@ -321,7 +329,8 @@ bool WatchTableWidget::addFromPaste(const QString &text)
 {
     const auto items = WatchInput::parsePasted(text, defaultStation());
     if (!items) {
-        showMessage(tr("Cannot paste: %1").arg(QString::fromStdString(items.error().message)), true);
+        showMessage(tr("Cannot paste: %1").arg(QString::fromStdString(items.error().message)),
+                    true);
         return false;
     }
     m_model->addItems(*items);
@@ -333,7 +342,8 @@ void WatchTableWidget::write(int row, quint64 raw)
 {
     const WatchItemSpec item = m_model->item(row);
     const QString address = QString::fromStdString(item.address.toString());
-    const QString text = ValueFormat::format(raw, m_model->valueWidth(row), item.format, item.swapWords);
+    const QString text
+        = ValueFormat::format(raw, m_model->valueWidth(row), item.format, item.swapWords);
     const QString what = tr("%1 (station %2) = %3").arg(address).arg(item.station).arg(text);
     if (!m_connection) {
         showMessage(tr("Cannot write %1: the table has no connection.").arg(what), true);
@@ -362,12 +372,14 @@ void WatchTableWidget::onFinished(quint64 id, const SessionResult &result)
         return;
     const PendingWrite pending = it.value();
     m_pendingWrites.erase(it);
-    const QString outcome = result.ok() ? tr("Wrote %1.").arg(pending.what)
-                                        : tr("Write of %1 failed: %2").arg(pending.what, result.errorText());
+    const QString outcome
+        = result.ok() ? tr("Wrote %1.").arg(pending.what)
+                      : tr("Write of %1 failed: %2").arg(pending.what, result.errorText());
     const int row = m_model->rowOfKey(pending.rowKey);
     if (row >= 0)
-        m_model->setWriteOutcome(row, QStringLiteral("%1 %2").arg(
-                                          QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
+        m_model->setWriteOutcome(
+            row, QStringLiteral("%1 %2").arg(
+                     QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
     showMessage(outcome, !result.ok());
 }
 

@@ -5,7 +5,8 @@ namespace Fatek {
 Request makeWriteRequest(const WatchItemSpec &item, std::uint64_t raw)
 {
     if (isDiscrete(item.address.type))
-        return Request::writeDiscretes(item.station, item.address, {static_cast<std::uint32_t>(raw & 1u)});
+        return Request::writeDiscretes(item.station, item.address,
+                                       {static_cast<std::uint32_t>(raw & 1u)});
     const int count = std::max(1, ValueFormat::elementCount(item.address, item.format));
     const int bits = isDoubleWord(item.address.type) ? 32 : 16;
     const std::uint64_t mask = bits == 32 ? 0xFFFFFFFFull : 0xFFFFull;
