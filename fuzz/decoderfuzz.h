@@ -20,7 +20,8 @@ inline void fuzzDecoders(const Codec &codec, const std::vector<DeframedItem> &it
         if (request.ok()) {
             if (!codec.encodeRequest(*request).ok())
                 std::abort();
-            (void)codec.encodeResponse(*request, Response{request->station, request->command, 0, {}, {}});
+            (void)codec.encodeResponse(*request,
+                                       Response{request->station, request->command, 0, {}, {}});
         }
         for (const Request &probe : probes)
             (void)codec.decodeResponse(item.frame, probe);
@@ -33,7 +34,8 @@ inline void fuzzDecoders(const Codec &codec, const std::vector<DeframedItem> &it
 }
 
 // Feeds data[1..] in chunks whose size the first byte picks, so splits are explored too.
-inline void feedInChunks(std::span<const std::uint8_t> data, std::initializer_list<Deframer *> deframers,
+inline void feedInChunks(std::span<const std::uint8_t> data,
+                         std::initializer_list<Deframer *> deframers,
                          std::vector<DeframedItem> &items)
 {
     const std::size_t chunk = std::size_t(data[0] % 17) + 1;
