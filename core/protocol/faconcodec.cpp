@@ -251,6 +251,20 @@ public:
         return hex(valueChars(type), 2, "Value");
     }
 
+    // `count` consecutive values of one element type (45, 47).
+    Result<std::vector<std::uint32_t>> values(ElementType type, std::uint32_t count)
+    {
+        std::vector<std::uint32_t> out;
+        out.reserve(count);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            auto v = value(type);
+            if (!v)
+                return v.error();
+            out.push_back(*v);
+        }
+        return out;
+    }
+
     std::string_view rest() const { return m_data.substr(std::min(m_pos, m_data.size())); }
 
 private:
@@ -327,14 +341,10 @@ Result<Request> parseQuery(std::uint8_t station, Command command, std::string_vi
             return a.error();
         if (!isDiscrete(a->type))
             return queryError(4, "Write discretes needs a discrete, not " + a->toString() + ".");
-        std::vector<std::uint32_t> values;
-        for (std::uint32_t i = 0; i < *n; ++i) {
-            auto v = in.value(a->type);
-            if (!v)
-                return v.error();
-            values.push_back(*v);
-        }
-        request = Request::writeDiscretes(station, *a, std::move(values));
+        auto values = in.values(a->type, *n);
+        if (!values)
+            return values.error();
+        request = Request::writeDiscretes(station, *a, std::move(values).value());
         break;
     }
     case Command::ReadRegisters: {
@@ -359,14 +369,10 @@ Result<Request> parseQuery(std::uint8_t station, Command command, std::string_vi
         if (*n == 0 || *n > Limits::maxRegisterWords)
             return queryError(4, "Write registers: " + std::to_string(*n)
                                      + " registers is out of 1..64.");
-        std::vector<std::uint32_t> values;
-        for (std::uint32_t i = 0; i < *n; ++i) {
-            auto v = in.value(a->type);
-            if (!v)
-                return v.error();
-            values.push_back(*v);
-        }
-        request = Request::writeRegisters(station, *a, std::move(values));
+        auto values = in.values(a->type, *n);
+        if (!values)
+            return values.error();
+        request = Request::writeRegisters(station, *a, std::move(values).value());
         break;
     }
     case Command::MixedRead:
