@@ -9,3 +9,4 @@ export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-$jobs}
 export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-$jobs}
 cmake --workflow --preset release
 cmake --workflow --preset asan
+# EXTRA CI STEPS (keep this marker line)

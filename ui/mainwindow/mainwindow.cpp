@@ -209,6 +209,9 @@ void MainWindow::createActions()
     m_viewMenu->addAction(toolBar->toggleViewAction());
 
     m_toolsMenu = menuBar()->addMenu(tr("&Tools"));
+    // TRENDS AND LOGGING ACTIONS (keep this marker line)
+    // OPERATOR MODE ACTIONS (keep this marker line)
+    // LANGUAGE MENU (keep this marker line)
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About FATEK Studio"), this, [this] {

@@ -81,6 +81,9 @@ private:
     void showStatus(const QString &text);
     QString lastDirectory() const;
     void setLastDirectory(const QString &path);
+    // TRENDS AND LOGGING METHODS (keep this marker line)
+    // OPERATOR MODE METHODS (keep this marker line)
+    // LANGUAGE METHODS (keep this marker line)
 
     bool m_readOnly;
     ConnectionManager *m_manager;
@@ -99,6 +102,9 @@ private:
     quint8 m_toolStation = 1;
     bool m_toolsInitialised = false;
     int m_tableCounter = 0;
+    // TRENDS AND LOGGING MEMBERS (keep this marker line)
+    // OPERATOR MODE MEMBERS (keep this marker line)
+    // LANGUAGE MEMBERS (keep this marker line)
 };
 
 } // namespace Fatek
