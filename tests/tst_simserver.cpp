@@ -348,6 +348,7 @@ private slots:
     void faultDelays_data();
     void faultDelays();
     void faultJitter();
+    void faultLineTimeCountsQuery();
 };
 
 void TestSimServer::everyCommand_data()
@@ -923,6 +924,34 @@ void TestSimServer::faultJitter()
     }
     // Six draws of 0..200 ms from a fixed seed: at least one is well above zero.
     QVERIFY2(longest >= 20, qPrintable(QString::number(longest)));
+}
+
+void TestSimServer::faultLineTimeCountsQuery()
+{
+    // Line-speed emulation is half duplex: a long query (a 32-register write) occupies the line
+    // before its short answer does, so the answer waits for both.
+    Rig rig;
+    FaultConfig f;
+    f.baud = 9600;
+    rig.server.setFaults(f);
+    auto m = rig.connect(Transport::Tcp);
+    QVERIFY(m);
+    const Request write
+        = Request::writeRegisters(1, addr("R0"), std::vector<std::uint32_t>(32, 0x1234));
+    FaconCodec codec;
+    const std::size_t queryBytes = codec.encodeRequest(write).value().size();
+    Response ok;
+    ok.station = 1;
+    ok.command = Command::WriteRegisters;
+    const std::size_t answerBytes = codec.encodeResponse(write, ok).size();
+    const auto minimumMs = static_cast<qint64>((queryBytes + answerBytes) * 10 * 1000 / 9600);
+    QVERIFY(minimumMs > 150); // the query alone is ~140 bytes: ~150 ms
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(m->ask(write, Protocol::Facon));
+    // Only a lower bound: a busy machine may always be slower, never faster.
+    QVERIFY2(clock.elapsed() >= minimumMs,
+             qPrintable(QStringLiteral("%1 < %2").arg(clock.elapsed()).arg(minimumMs)));
 }
 
 QTEST_GUILESS_MAIN(TestSimServer)

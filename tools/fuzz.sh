@@ -1,30 +1,73 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with clang and runs each for SECONDS (default 60), seeded with the
-# frames of tests/data/vectors.json. Findings land in build/fuzz/findings/.
+# Builds the libFuzzer targets with clang and runs each for SECONDS (default 60), one after the
+# other, seeded with the frames of tests/data/vectors.json and sample watch lists.
+#   tools/fuzz.sh [SECONDS] [TARGET...]      TARGET: facon binary address simquery watchlist (default all)
+# Environment: FUZZ_BUILD (default build/fuzz), FUZZ_LOGS (directory for one log per target; default
+# only the summary is printed). Findings land in $FUZZ_BUILD/findings/; the script exits 1 if any.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(facon binary address simquery watchlist)
+build=${FUZZ_BUILD:-build/fuzz}
 command -v clang++-14 >/dev/null || { echo "needs clang-14 and libclang-rt-14-dev (apt-get install clang-14 libclang-rt-14-dev)"; exit 2; }
-cmake -S . -B build/fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DFATEK_FUZZ=ON -DFATEK_BUILD_TESTS=OFF -DFATEK_BUILD_BENCH=OFF >/dev/null
-cmake --build build/fuzz --target fuzz_facon fuzz_binary fuzz_address
-python3 - <<'PY'
+cmake --build "$build" -j2 --target $(printf 'fuzz_%s ' "${targets[@]}")
+FUZZ_BUILD=$build python3 - <<'PY'
 import json, os
+b = os.environ["FUZZ_BUILD"]
 v = json.load(open("tests/data/vectors.json"))
+def raw(proto, s):
+    return bytes.fromhex(s) if proto == "binary" else s.replace("<STX>", "\x02").replace("<ETX>", "\x03").encode()
 for proto in ("facon", "binary"):
-    d = f"build/fuzz/corpus/{proto}"; os.makedirs(d, exist_ok=True)
+    d = f"{b}/corpus/{proto}"; os.makedirs(d, exist_ok=True)
     for i, f in enumerate(v[proto]):
         for kind in ("query", "response"):
-            s = f[kind]
-            raw = bytes.fromhex(s) if proto == "binary" else s.replace("<STX>", "\x02").replace("<ETX>", "\x03").encode()
-            open(f"{d}/{i}-{kind}", "wb").write(b"\x00" + raw)  # first byte: chunk size selector
-d = "build/fuzz/corpus/address"; os.makedirs(d, exist_ok=True)
+            open(f"{d}/{i}-{kind}", "wb").write(b"\x00" + raw(proto, f[kind]))  # first byte: chunk size selector
+# Simulator: the queries of both protocols (first byte: model and RUN/STOP), and both in one stream.
+d = f"{b}/corpus/simquery"; os.makedirs(d, exist_ok=True)
+both = b""
+for proto in ("facon", "binary"):
+    for i, f in enumerate(v[proto]):
+        q = raw(proto, f["query"]); both += q
+        open(f"{d}/{proto}-{i}", "wb").write(bytes([i % 4]) + q)
+open(f"{d}/mixed", "wb").write(b"\x02" + both)
+d = f"{b}/corpus/address"; os.makedirs(d, exist_ok=True)
 for i, t in enumerate(["R12", "r12", "DWM0", "X16", "D00012", "WY8", "DR15", "DRT9998", "F100"]):
     open(f"{d}/{i}", "w").write(t)
+# Watch lists: first byte 0 JSON, 1 CSV, 2 range text.
+d = f"{b}/corpus/watchlist"; os.makedirs(d, exist_ok=True)
+doc = {"format": "fatek-studio-watchlist", "version": 1, "tables": [
+    {"name": "Main", "intervalMs": 500, "confirmWrites": True, "items": [
+        {"address": "R100", "station": 1, "format": "signed", "swapWords": False, "name": "Tank level", "comment": "m"},
+        {"address": "DR10", "station": 2, "format": "float", "swapWords": True, "name": "Flow"},
+        {"address": "Y0", "format": "bool"}, {"address": "WX16", "format": "hex"}]},
+    {"name": "Second", "intervalMs": 100, "items": [{"address": "D12"}]}]}
+open(f"{d}/json-full", "wb").write(b"\x00" + json.dumps(doc, indent=1).encode())
+open(f"{d}/json-min", "wb").write(b'\x00{"format":"fatek-studio-watchlist","version":1,"tables":[]}')
+csvs = ["address,station,format,name,comment\nR100,1,signed,Tank,\"a, b\"\nDR10,2,float,Flow,x\n",
+        "\ufeffname;address;comment\nPump;Y0;\"say \"\"hi\"\"\"\n# comment\n\nLevel;R100..R103;\n",
+        "R100\nWY0..WY32\nX0,3,bool\n"]
+for i, c in enumerate(csvs):
+    open(f"{d}/csv-{i}", "wb").write(b"\x01" + c.encode())
+for i, t in enumerate(["R100..R163", "WY0..WY32", "DR0..DR4", "R100..163", "R100"]):
+    open(f"{d}/range-{i}", "wb").write(b"\x02" + t.encode())
 PY
-mkdir -p build/fuzz/findings
-for t in facon binary address; do
+mkdir -p "$build/findings"
+[ -z "${FUZZ_LOGS:-}" ] || mkdir -p "$FUZZ_LOGS"
+status=0
+for t in "${targets[@]}"; do
     echo "== fuzz_$t for ${seconds}s"
-    build/fuzz/fuzz/fuzz_$t -max_total_time="$seconds" -print_final_stats=1 \
-        -artifact_prefix=build/fuzz/findings/$t- build/fuzz/corpus/$t 2>&1 | tail -12
+    log=${FUZZ_LOGS:+$FUZZ_LOGS/fuzz_$t.log}
+    log=${log:-$build/fuzz_$t.log}
+    # -rss_limit_mb: the simulator holds a full PLC memory image per model; 2 GB is libFuzzer's default.
+    if ! "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 \
+        -artifact_prefix="$build/findings/$t-" "$build/corpus/$t" >"$log" 2>&1; then
+        status=1
+        echo "!! fuzz_$t found a problem: see $log and $build/findings/"
+    fi
+    grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|Done [0-9]+ runs|ERROR" "$log" | head -5 || true
 done
+exit $status

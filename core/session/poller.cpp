@@ -25,7 +25,7 @@ void Poller::setWatchList(const QList<WatchEntry> &entries)
 {
     // Results of cycles still on the wire belong to the old list: the generation tells them apart.
     m_groups.clear();
-    QHash<std::uint64_t, WatchValue> lastGood;
+    QHash<std::uint64_t, LastGood> lastGood;
     for (const WatchEntry &entry : entries) {
         if (m_lastGood.contains(entry.id))
             lastGood.insert(entry.id, m_lastGood.value(entry.id));
@@ -151,7 +151,7 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
             if (slot.valueIndex < response.values.size()) {
                 value.value = response.values[slot.valueIndex];
                 value.quality = ValueQuality::Good;
-                m_lastGood.insert(slot.itemId, value);
+                m_lastGood.insert(slot.itemId, {value.value, now});
             } else {
                 value.quality = ValueQuality::Error;
                 value.error = QStringLiteral("The answer carries fewer values than asked.");
@@ -193,11 +193,9 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
     } else {
         // Timeout, link down, damaged answers: the old value is kept, marked stale.
         for (const PlanSlot &slot : step.itemSlots) {
-            WatchValue value
-                = m_lastGood.value(slot.itemId, WatchValue{slot.itemId, 0, {}, {}, {}});
-            value.quality = ValueQuality::Stale;
-            value.error = result.errorText();
-            group.cycleValues.insert(slot.itemId, value);
+            const LastGood last = m_lastGood.value(slot.itemId);
+            group.cycleValues.insert(slot.itemId, {slot.itemId, last.value, last.timestamp,
+                                                   ValueQuality::Stale, result.errorText()});
         }
     }
 

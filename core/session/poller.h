@@ -76,7 +76,14 @@ private:
     SubmitFunction m_submit;
     std::optional<PollPlanner> m_planner;
     std::map<int, Group> m_groups;
-    QHash<std::uint64_t, WatchValue> m_lastGood;
+    // Last good value of each item, for Stale reports: only what they need (16 bytes, not a
+    // whole WatchValue: this is per watched item, see docs/performance.md).
+    struct LastGood
+    {
+        std::uint32_t value = 0;
+        QDateTime timestamp;
+    };
+    QHash<std::uint64_t, LastGood> m_lastGood;
     std::set<StationAddress> m_isolated;
     bool m_linkUp = false;
     quint64 m_generation = 0;

@@ -17,6 +17,7 @@ struct StationStatistics
     quint64 timeouts = 0;       // attempts that got no complete answer in time
     quint64 checksumErrors = 0; // answer frames rejected for a bad LRC/CRC
     quint64 plcErrors = 0;      // answers carrying a non-zero PLC error code
+    quint64 frameErrors = 0;    // answer frames rejected for broken framing or content
     quint64 retries = 0;        // attempts beyond the first
     quint64 bytesOut = 0;
     quint64 bytesIn = 0;
@@ -34,6 +35,7 @@ struct StationStatistics
 
 private:
     std::vector<double> m_window; // ring of the last rttWindow samples
+    std::vector<double> m_sorted; // the same samples, sorted (percentiles without a sort)
     std::size_t m_next = 0;
     quint64 m_rttCount = 0;
 };
@@ -45,7 +47,8 @@ struct SessionStatistics
     QMap<quint8, StationStatistics> stations;
     quint64 pollCycles = 0;     // poll cycles completed
     double lastCycleMs = 0;     // duration of the last poll cycle
-    quint64 bytesDiscarded = 0; // stale or unexpected bytes thrown away
+    quint64 bytesDiscarded = 0; // stale or unexpected bytes thrown away (noise included)
+    quint64 linkLosses = 0;     // times an open link failed (peer closed, cable pulled ...)
 };
 
 } // namespace Fatek

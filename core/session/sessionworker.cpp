@@ -159,6 +159,11 @@ void SessionWorker::onDisconnected(const QString &reason)
 {
     if (!m_wantOpen && m_state == LinkState::Closed)
         return; // a late report from a link the user already closed
+    if (m_state == LinkState::Connected) {
+        ++m_statistics.linkLosses;
+        statisticsChangedInternally();
+        publishStatistics();
+    }
     m_timeoutTimer.stop();
     m_silenceTimer.stop();
     m_poller->setLinkUp(false);
@@ -239,7 +244,20 @@ void SessionWorker::enqueue(SessionJob job)
                                          {}, job.raw));
         return;
     }
-    queueFor(job.priority).push_back(std::move(job));
+    std::deque<SessionJob> &queue = queueFor(job.priority);
+    // A caller that submits faster than the link answers must not grow memory without end. The
+    // poll queue holds at most one cycle per group and is not capped here.
+    if (job.priority != Priority::Poll && queue.size() >= maxQueuedRequests) {
+        deliver(job, SessionResult::fromError(
+                         makeError(ErrorKind::LimitExceeded,
+                                   toStd(QStringLiteral("Not sent: %1 requests are already "
+                                                        "waiting on this link (the PLC answers "
+                                                        "slower than requests arrive).")
+                                             .arg(maxQueuedRequests))),
+                         {}, job.raw));
+        return;
+    }
+    queue.push_back(std::move(job));
     schedulePump();
 }
 
@@ -530,6 +548,7 @@ void SessionWorker::onBytes(const QByteArray &bytes)
         = protocol == Protocol::Facon ? m_faconDeframer.get() : m_binaryDeframer.get();
     std::vector<DeframedItem> items;
     deframer->feed(bytesOf(bytes), items);
+    countDeframerNoise();
     for (DeframedItem &item : items) {
         const QByteArray frame = toQByteArray(item.frame);
         if (item.error) {
@@ -537,6 +556,8 @@ void SessionWorker::onBytes(const QByteArray &bytes)
                           QString::fromStdString(item.error->message));
             if (item.error->kind == ErrorKind::BadChecksum)
                 countForStation(station, [](StationStatistics &s) { ++s.checksumErrors; });
+            else
+                countForStation(station, [](StationStatistics &s) { ++s.frameErrors; });
             // A damaged answer: ask again (or give up with this error).
             m_timeoutTimer.stop();
             retryOrFail(*item.error);
@@ -562,11 +583,14 @@ void SessionWorker::onBytes(const QByteArray &bytes)
                       decoded ? QString() : QString::fromStdString(decoded.error().message));
         const double rtt = static_cast<double>(m_roundTrip.nsecsElapsed()) / 1e6;
         const bool plcError = !decoded && decoded.error().kind == ErrorKind::PlcError;
-        countForStation(station, [rtt, plcError](StationStatistics &s) {
+        const bool malformed = !decoded && !plcError;
+        countForStation(station, [rtt, plcError, malformed](StationStatistics &s) {
             ++s.answers;
             s.addRoundTrip(rtt);
             if (plcError)
                 ++s.plcErrors;
+            if (malformed)
+                ++s.frameErrors;
         });
         m_answer = frame;
         finishCurrent(SessionResult(std::move(decoded), frame));
@@ -577,6 +601,14 @@ void SessionWorker::onBytes(const QByteArray &bytes)
 void SessionWorker::onRawBytes(const QByteArray &bytes)
 {
     m_answer += bytes;
+    if (m_answer.size() > maxRawAnswerBytes) {
+        // A peer that floods the console: keep what fits and end now rather than at the timeout.
+        m_answer.truncate(maxRawAnswerBytes);
+        m_log->append(TrafficEntry::Direction::In, m_answer, QStringLiteral("raw answer"),
+                      QStringLiteral("more than %1 bytes: rest not read").arg(maxRawAnswerBytes));
+        finishCurrent(SessionResult::fromRaw(m_answer));
+        return;
+    }
     // End early once a complete frame of the link's protocol came back; otherwise collect until
     // the timeout.
     if (!m_protocol)
@@ -585,6 +617,8 @@ void SessionWorker::onRawBytes(const QByteArray &bytes)
         = *m_protocol == Protocol::Facon ? m_faconDeframer.get() : m_binaryDeframer.get();
     std::vector<DeframedItem> items;
     deframer->feed(bytesOf(bytes), items);
+    // Bytes around a console answer are the answer, not noise.
+    m_deframerNoise = m_faconDeframer->discardedBytes() + m_binaryDeframer->discardedBytes();
     for (const DeframedItem &item : items) {
         const QByteArray frame = toQByteArray(item.frame);
         const double rtt = static_cast<double>(m_roundTrip.nsecsElapsed()) / 1e6;
@@ -673,6 +707,18 @@ void SessionWorker::deliver(SessionJob &job, SessionResult result)
 }
 
 // ---- statistics -------------------------------------------------------------------------------
+
+void SessionWorker::countDeframerNoise()
+{
+    // Deframers count skipped noise since construction; the statistics want it once.
+    const std::size_t total
+        = m_faconDeframer->discardedBytes() + m_binaryDeframer->discardedBytes();
+    if (total > m_deframerNoise) {
+        m_statistics.bytesDiscarded += static_cast<quint64>(total - m_deframerNoise);
+        statisticsChangedInternally();
+    }
+    m_deframerNoise = total;
+}
 
 void SessionWorker::countForStation(quint8 station,
                                     const std::function<void(StationStatistics &)> &update)

@@ -57,6 +57,11 @@ class SessionWorker : public QObject
     Q_OBJECT
 
 public:
+    // Requests a user or background queue holds at most; more are refused (LimitExceeded).
+    static constexpr std::size_t maxQueuedRequests = 1000;
+    // Bytes a raw console answer collects at most.
+    static constexpr qsizetype maxRawAnswerBytes = 65536;
+
     SessionWorker(const LinkSettings &settings, std::shared_ptr<SessionShared> shared,
                   TrafficLog *log);
     ~SessionWorker() override;
@@ -102,6 +107,7 @@ private:
     quint8 stationOf(const SessionJob &job) const;
     void countForStation(quint8 station, const std::function<void(StationStatistics &)> &update);
     void statisticsChangedInternally();
+    void countDeframerNoise();
     void publishStatistics();
     QString summarize(const QByteArray &frame) const;
 
@@ -135,8 +141,9 @@ private:
     QElapsedTimer m_roundTrip;
 
     SessionStatistics m_statistics;
-    bool m_statsDirty = false;  // statisticsChanged() due
-    bool m_sharedStale = false; // SessionShared::statistics behind
+    std::size_t m_deframerNoise = 0; // deframers' discardedBytes() already counted
+    bool m_statsDirty = false;       // statisticsChanged() due
+    bool m_sharedStale = false;      // SessionShared::statistics behind
 
     Poller *m_poller = nullptr;
 };

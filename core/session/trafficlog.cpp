@@ -21,8 +21,36 @@ void TrafficLog::setCapacity(int capacity)
 {
     QMutexLocker locker(&m_mutex);
     m_capacity = std::max(1, capacity);
-    while (m_entries.size() > static_cast<std::size_t>(m_capacity))
+    trimLocked();
+}
+
+qint64 TrafficLog::byteBudget() const
+{
+    QMutexLocker locker(&m_mutex);
+    return m_byteBudget;
+}
+
+void TrafficLog::setByteBudget(qint64 bytes)
+{
+    QMutexLocker locker(&m_mutex);
+    m_byteBudget = std::max<qint64>(maxEntryBytes, bytes);
+    trimLocked();
+}
+
+qint64 TrafficLog::bytesHeld() const
+{
+    QMutexLocker locker(&m_mutex);
+    return m_bytesHeld;
+}
+
+void TrafficLog::trimLocked()
+{
+    while (!m_entries.empty()
+           && (m_entries.size() > static_cast<std::size_t>(m_capacity)
+               || m_bytesHeld > m_byteBudget)) {
+        m_bytesHeld -= m_entries.front().bytes.size();
         m_entries.pop_front();
+    }
 }
 
 quint64 TrafficLog::append(TrafficEntry::Direction direction, const QByteArray &bytes,
@@ -32,10 +60,18 @@ quint64 TrafficLog::append(TrafficEntry::Direction direction, const QByteArray &
     {
         QMutexLocker locker(&m_mutex);
         sequence = ++m_lastSequence;
+        QString note = error;
+        QByteArray kept = bytes;
+        if (kept.size() > maxEntryBytes) {
+            kept.truncate(maxEntryBytes);
+            const QString cut
+                = QStringLiteral("%1 bytes, first %2 kept").arg(bytes.size()).arg(maxEntryBytes);
+            note = note.isEmpty() ? cut : note + QStringLiteral("; ") + cut;
+        }
+        m_bytesHeld += kept.size();
         m_entries.push_back(
-            {sequence, QDateTime::currentDateTime(), direction, bytes, summary, error});
-        while (m_entries.size() > static_cast<std::size_t>(m_capacity))
-            m_entries.pop_front();
+            {sequence, QDateTime::currentDateTime(), direction, kept, summary, note});
+        trimLocked();
     }
     // Emitted outside the lock: a direct-connected slot may call entries().
     Q_EMIT entriesAdded(sequence);
@@ -74,6 +110,7 @@ void TrafficLog::clear()
 {
     QMutexLocker locker(&m_mutex);
     m_entries.clear();
+    m_bytesHeld = 0;
 }
 
 } // namespace Fatek

@@ -37,6 +37,13 @@ public:
 
     int capacity() const;
     void setCapacity(int capacity);
+    // Besides the entry count, the frame bytes held are bounded too: a peer flooding the link
+    // with large chunks cannot grow the log beyond this (oldest entries go first), and one entry
+    // keeps at most maxEntryBytes of its bytes.
+    static constexpr qsizetype maxEntryBytes = 4096;
+    qint64 byteBudget() const;
+    void setByteBudget(qint64 bytes);
+    qint64 bytesHeld() const;
 
     // Returns the entry's sequence number.
     quint64 append(TrafficEntry::Direction direction, const QByteArray &bytes,
@@ -55,7 +62,11 @@ Q_SIGNALS:
 private:
     mutable QMutex m_mutex;
     std::deque<TrafficEntry> m_entries;
+    void trimLocked();
+
     int m_capacity;
+    qint64 m_byteBudget = 16 * 1024 * 1024;
+    qint64 m_bytesHeld = 0;
     quint64 m_lastSequence = 0;
 };
 

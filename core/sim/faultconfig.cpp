@@ -15,7 +15,7 @@ bool FaultConfig::anyActive() const
 {
     return latencyMs > 0 || jitterMs > 0 || turnaroundMs > 0 || baud > 0 || dropRate > 0.0
            || corruptRate > 0.0 || garbageBytes > 0 || chunkSize > 0 || closeEverySeconds > 0
-           || wrongStationRate > 0.0;
+           || wrongStationRate > 0.0 || (spikeRate > 0.0 && spikeMs > 0);
 }
 
 QString FaultConfig::describe() const
@@ -41,6 +41,8 @@ QString FaultConfig::describe() const
         parts << QStringLiteral("close-every=%1s").arg(closeEverySeconds);
     if (wrongStationRate > 0.0)
         parts << QStringLiteral("wrong-station=%1").arg(wrongStationRate);
+    if (spikeRate > 0.0 && spikeMs > 0)
+        parts << QStringLiteral("spike=%1/%2ms").arg(spikeRate).arg(spikeMs);
     if (parts.isEmpty())
         return QStringLiteral("none");
     parts << QStringLiteral("seed=%1").arg(seed);

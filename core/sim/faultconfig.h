@@ -14,7 +14,7 @@ struct FaultConfig
     int latencyMs = 0;             // added before every answer
     int jitterMs = 0;              // plus 0..jitterMs, random
     int turnaroundMs = 0;          // slave turnaround time, added before every answer
-    int baud = 0;                  // > 0: each answer also waits its wire time at 10 bits per byte
+    int baud = 0;                  // > 0: answers wait the query's and their wire time, 10 bit/B
     double dropRate = 0.0;         // fraction of answers not sent (the request is still executed)
     double corruptRate = 0.0;      // fraction of answer bytes flipped
     int garbageBytes = 0;          // noise bytes sent before each answer (never a frame start byte)
@@ -22,6 +22,8 @@ struct FaultConfig
     int chunkDelayMs = 0;          // ... this far apart
     int closeEverySeconds = 0;     // > 0: TCP connections are closed this long after they open
     double wrongStationRate = 0.0; // fraction of answers sent with another station number
+    double spikeRate = 0.0;        // fraction of answers delayed by a further spikeMs ...
+    int spikeMs = 0;               // ... (latency spikes: a busy PLC or network)
     std::uint32_t seed = 1;
 
     // Wire time of `bytes` at `baud` (10 bits per byte), 0 when line-speed emulation is off.

@@ -39,8 +39,10 @@ std::vector<SimConnection::Item> SimConnection::feed(const QByteArray &bytes)
         const Protocol protocol = m_active == &m_facon ? Protocol::Facon : Protocol::Binary;
         out.clear();
         m_active->feed(std::span<const std::uint8_t>(&b, 1), out);
-        for (DeframedItem &item : out)
+        for (DeframedItem &item : out) {
+            m_lastFrameBytes = static_cast<qsizetype>(item.frame.size());
             items.push_back({protocol, std::move(item)});
+        }
         if (m_active->bufferedBytes() == 0)
             m_active = nullptr;
     }
@@ -52,12 +54,27 @@ std::size_t SimConnection::discardedBytes() const
     return m_skipped + m_facon.discardedBytes() + m_binary.discardedBytes();
 }
 
-void SimConnection::send(const QByteArray &bytes, qint64 delayMs)
+qint64 SimConnection::lineTimeUs(qsizetype bytes, int baud)
 {
-    const qint64 due = std::max(m_clock.elapsed() + std::max<qint64>(delayMs, 0), m_lastDue);
+    if (baud <= 0 || bytes <= 0)
+        return 0;
+    const qint64 bits = static_cast<qint64>(bytes) * 10;
+    return (bits * 1000000 + baud - 1) / baud; // rounded up: never faster than the line
+}
+
+qint64 SimConnection::nowUs() const
+{
+    return m_clock.nsecsElapsed() / 1000;
+}
+
+void SimConnection::send(const QByteArray &bytes, qint64 delayMs, qint64 lineUs)
+{
+    const qint64 now = nowUs();
+    const qint64 due = std::max(
+        now + std::max<qint64>(delayMs, 0) * 1000 + std::max<qint64>(lineUs, 0), m_lastDue);
     m_lastDue = due;
     m_pending.push_back({due, bytes});
-    if (due <= m_clock.elapsed() && m_pending.size() == 1) {
+    if (due <= now && m_pending.size() == 1) {
         flushDue(); // no delay asked and nothing queued: answer at once
         return;
     }
@@ -68,12 +85,12 @@ qint64 SimConnection::busyForMs() const
 {
     if (m_pending.empty())
         return 0;
-    return std::max<qint64>(m_lastDue - m_clock.elapsed(), 0);
+    return (std::max<qint64>(m_lastDue - nowUs(), 0) + 999) / 1000;
 }
 
 void SimConnection::flushDue()
 {
-    const qint64 now = m_clock.elapsed();
+    const qint64 now = nowUs();
     while (!m_pending.empty() && m_pending.front().due <= now) {
         const QByteArray bytes = std::move(m_pending.front().bytes);
         m_pending.pop_front();
@@ -88,8 +105,11 @@ void SimConnection::armTimer()
         m_timer.stop();
         return;
     }
-    const qint64 wait = std::max<qint64>(m_pending.front().due - m_clock.elapsed(), 0);
-    m_timer.start(static_cast<int>(wait));
+    // Whole milliseconds by the timer, the last fraction by re-checking on each event-loop pass:
+    // a timer rounded up to the next millisecond would add up to 1 ms per answer, more than a
+    // whole short frame takes at 115200 baud.
+    const qint64 waitUs = std::max<qint64>(m_pending.front().due - nowUs(), 0);
+    m_timer.start(static_cast<int>(waitUs / 1000));
 }
 
 } // namespace Fatek

@@ -39,8 +39,14 @@ public:
     std::vector<Item> feed(const QByteArray &bytes);
     std::size_t discardedBytes() const;
 
-    // Sends `bytes` no earlier than `delayMs` from now and never before what was queued earlier.
-    void send(const QByteArray &bytes, qint64 delayMs);
+    // Sends `bytes` no earlier than `delayMs` (plus `lineUs` microseconds of line time) from now
+    // and never before what was queued earlier. Due times are kept in microseconds so that the
+    // line-speed emulation at 115200 baud (87 us per byte) is not rounded to whole milliseconds.
+    void send(const QByteArray &bytes, qint64 delayMs, qint64 lineUs = 0);
+    // Size of the last complete frame fed in (the query being answered), 0 before the first.
+    qsizetype lastFrameBytes() const { return m_lastFrameBytes; }
+    // Time `bytes` take on a line at `baud` (10 bits per byte), rounded up; 0 when baud <= 0.
+    static qint64 lineTimeUs(qsizetype bytes, int baud);
     // Time (ms from now) at which the last queued bytes go out; 0 when idle.
     qint64 busyForMs() const;
     bool hasPending() const { return !m_pending.empty(); }
@@ -48,10 +54,11 @@ public:
 private:
     void flushDue();
     void armTimer();
+    qint64 nowUs() const;
 
     struct Pending
     {
-        qint64 due = 0;
+        qint64 due = 0; // microseconds on m_clock
         QByteArray bytes;
     };
 
@@ -64,7 +71,8 @@ private:
     QElapsedTimer m_clock;
     QTimer m_timer;
     std::deque<Pending> m_pending;
-    qint64 m_lastDue = 0;
+    qint64 m_lastDue = 0; // microseconds on m_clock
+    qsizetype m_lastFrameBytes = 0;
 };
 
 } // namespace Fatek

@@ -4,6 +4,7 @@
 #include "simulatedplc.h"
 
 #include <QNetworkDatagram>
+#include <QNetworkProxy>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QUdpSocket>
@@ -62,6 +63,8 @@ bool SimServer::listenTcp(quint16 port, QString *error)
 {
     if (!m_tcp) {
         m_tcp = new QTcpServer(this);
+        // A PLC endpoint is never a proxy client (and libproxy stays out of the process).
+        m_tcp->setProxy(QNetworkProxy::NoProxy);
         connect(m_tcp, &QTcpServer::newConnection, this, &SimServer::acceptTcp);
     }
     if (m_tcp->isListening())
@@ -82,6 +85,7 @@ bool SimServer::listenUdp(quint16 port, QString *error)
 {
     if (!m_udp) {
         m_udp = new QUdpSocket(this);
+        m_udp->setProxy(QNetworkProxy::NoProxy);
         connect(m_udp, &QUdpSocket::readyRead, this, &SimServer::readUdp);
     }
     if (m_udp->state() != QAbstractSocket::UnconnectedState)
@@ -254,6 +258,7 @@ void SimServer::readUdp()
 
 void SimServer::handleBytes(SimConnection *connection, const QByteArray &bytes)
 {
+    m_counters.bytesIn += static_cast<quint64>(bytes.size());
     for (SimConnection::Item &item : connection->feed(bytes)) {
         if (item.item.error) {
             ++m_counters.rejected;
@@ -305,7 +310,8 @@ void SimServer::handleFrame(SimConnection *connection, Protocol protocol, const 
         if (wrongStation)
             answerHeader.station = otherStation;
         sendAnswer(connection,
-                   codec.encodeErrorResponse(answerHeader, static_cast<std::uint8_t>(code)));
+                   codec.encodeErrorResponse(answerHeader, static_cast<std::uint8_t>(code)),
+                   wrongStation);
         return;
     }
     Request request = std::move(decoded).value();
@@ -320,13 +326,14 @@ void SimServer::handleFrame(SimConnection *connection, Protocol protocol, const 
         request.station = otherStation;
         response.station = otherStation;
     }
-    sendAnswer(connection, codec.encodeResponse(request, response));
+    sendAnswer(connection, codec.encodeResponse(request, response), wrongStation);
 }
 
-void SimServer::sendAnswer(SimConnection *connection, Bytes answer)
+void SimServer::sendAnswer(SimConnection *connection, Bytes answer, bool wrongStation)
 {
     if (chance(m_faults.dropRate)) {
         ++m_counters.dropped;
+        ++m_counters.faultyAnswers;
         log(QStringLiteral("[%1] answer dropped by fault injection").arg(connection->peer()));
         return;
     }
@@ -339,19 +346,38 @@ void SimServer::sendAnswer(SimConnection *connection, Bytes answer)
             c = static_cast<char>(0x20 + m_random.bounded(0x5F));
         out.append(c);
     }
+    m_counters.garbageBytes
+        += static_cast<quint64>(m_faults.garbageBytes > 0 ? m_faults.garbageBytes : 0);
+    bool corrupted = false;
     for (std::uint8_t b : answer) {
-        if (chance(m_faults.corruptRate))
+        if (chance(m_faults.corruptRate)) {
             b = static_cast<std::uint8_t>(b ^ (1 + m_random.bounded(255)));
+            corrupted = true;
+        }
         out.append(static_cast<char>(b));
     }
-    qint64 delay = m_faults.turnaroundMs + m_faults.latencyMs + m_faults.wireTimeMs(out.size());
+    if (corrupted)
+        ++m_counters.corrupted;
+    if (wrongStation)
+        ++m_counters.wrongStation;
+    if (corrupted || wrongStation)
+        ++m_counters.faultyAnswers;
+    qint64 delay = m_faults.turnaroundMs + m_faults.latencyMs;
+    // Half-duplex line: the query's own wire time passes before the answer's (in microseconds).
+    const qint64 lineUs
+        = SimConnection::lineTimeUs(connection->lastFrameBytes() + out.size(), m_faults.baud);
     if (m_faults.jitterMs > 0)
         delay += m_random.bounded(m_faults.jitterMs + 1);
+    if (m_faults.spikeMs > 0 && chance(m_faults.spikeRate)) {
+        ++m_counters.spikes;
+        delay += m_faults.spikeMs;
+    }
     if (m_faults.chunkSize > 0) {
         for (qsizetype pos = 0, i = 0; pos < out.size(); pos += m_faults.chunkSize, ++i)
-            connection->send(out.mid(pos, m_faults.chunkSize), delay + i * m_faults.chunkDelayMs);
+            connection->send(out.mid(pos, m_faults.chunkSize), delay + i * m_faults.chunkDelayMs,
+                             lineUs);
     } else {
-        connection->send(out, delay);
+        connection->send(out, delay, lineUs);
     }
 }
 

@@ -48,6 +48,13 @@ public:
         quint64 rejected = 0;     // broken frames (bad checksum, framing): no answer
         quint64 otherStation = 0; // frames for another station: ignored
         quint64 closed = 0;       // connections closed by the close-every fault
+        // Injected faults, for reliability tests comparing them with what a master counted.
+        quint64 faultyAnswers = 0; // answers hit by drop, corruption or wrong station (once each)
+        quint64 corrupted = 0;     // answers sent with at least one byte flipped
+        quint64 wrongStation = 0;  // answers sent with another station number
+        quint64 spikes = 0;        // answers delayed by a latency spike
+        quint64 garbageBytes = 0;  // noise bytes sent before answers
+        quint64 bytesIn = 0;       // every byte received from masters (what reached the wire)
     };
 
     explicit SimServer(SimulatedPlc *plc, QObject *parent = nullptr);
@@ -88,7 +95,7 @@ private:
     void readUdp();
     void handleBytes(SimConnection *connection, const QByteArray &bytes);
     void handleFrame(SimConnection *connection, Protocol protocol, const Bytes &frame);
-    void sendAnswer(SimConnection *connection, Bytes answer);
+    void sendAnswer(SimConnection *connection, Bytes answer, bool wrongStation);
     bool chance(double rate);
     void log(const QString &line);
 
