@@ -1,12 +1,15 @@
 // fatek-cli end to end: the built executable run with QProcess, against its embedded simulator
 // (--sim) and against the independent Python reference PLC (tests/reference/fatekref.py) over TCP
 // and UDP in both protocols.
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 namespace {
@@ -95,6 +98,7 @@ private Q_SLOTS:
     void reference();
     void referenceAutoDetect();
     void referenceReadOnlyKeepsValue();
+    void referenceMonitorCsvLog();
 
 private:
     QStringList ref(const QString &medium, const QString &protocol) const;
@@ -423,9 +427,9 @@ void TestCli::simCsvShape()
                       QStringLiteral("--cycles"), QStringLiteral("2")}));
     RUN_OK(m);
     QCOMPARE(m.lines().size(), 3);
-    QCOMPARE(m.lines().at(0), QStringLiteral("cycle,time,station,R20,Y1"));
-    QVERIFY(m.lines().at(2).startsWith(QLatin1String("2,")));
-    QVERIFY(m.lines().at(2).endsWith(QLatin1String(",1,0,0")));
+    // The data log format (docs/trends.md): timestamp, one column per item, status.
+    QCOMPARE(m.lines().at(0), QStringLiteral("timestamp,R20,Y1,status"));
+    QVERIFY(m.lines().at(2).endsWith(QLatin1String(",0,0,ok")));
 }
 
 void TestCli::simMixedRead()
@@ -648,6 +652,76 @@ void TestCli::referenceReadOnlyKeepsValue()
     r = runCli(link + QStringList{QStringLiteral("read"), QStringLiteral("R2000")});
     RUN_OK(r);
     QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({11}));
+}
+
+void TestCli::referenceMonitorCsvLog()
+{
+    if (!m_refProblem.isEmpty())
+        QSKIP(qPrintable(m_refProblem));
+    const QStringList link{QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:%1").arg(m_refTcp),
+                           QStringLiteral("--protocol"), QStringLiteral("facon")};
+    // 1.5f = 0x3FC00000: R400 low word 0x0000, R401 high word 0x3FC0; R402 = -5; R403 = 0x1A.
+    const Run w = runCli(link
+                         + QStringList{QStringLiteral("write"), QStringLiteral("R400"),
+                                       QStringLiteral("0"), QStringLiteral("0x3FC0"),
+                                       QStringLiteral("-5"), QStringLiteral("0x1A")});
+    RUN_OK(w);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("log.csv"));
+    const QStringList monitor
+        = link + QStringList{QStringLiteral("--csv"),      QStringLiteral("monitor"),
+                             QStringLiteral("R400:float"), QStringLiteral("R402"),
+                             QStringLiteral("R403:hex"),   QStringLiteral("R402:unsigned"),
+                             QStringLiteral("--interval"), QStringLiteral("50"),
+                             QStringLiteral("--cycles"),   QStringLiteral("4"),
+                             QStringLiteral("--output"),   path};
+    const Run r = runCli(monitor);
+    RUN_OK(r);
+    const QStringList l = r.lines();
+    QCOMPARE(l.size(), 5);
+    QCOMPARE(l.at(0), QStringLiteral("timestamp,R400,R402,R403,R402,status"));
+    QDateTime previous;
+    for (int i = 1; i < 5; ++i) {
+        const QStringList cells = l.at(i).split(QLatin1Char(','));
+        QCOMPARE(cells.size(), 6);
+        const QDateTime t = QDateTime::fromString(cells.at(0), Qt::ISODateWithMs);
+        QVERIFY2(t.isValid(), qPrintable(cells.at(0)));
+        // Milliseconds and the UTC offset are in the text.
+        QVERIFY2(QRegularExpression(QStringLiteral("\\.\\d{3}[+-]\\d\\d:\\d\\d$"))
+                     .match(cells.at(0))
+                     .hasMatch(),
+                 qPrintable(cells.at(0)));
+        if (previous.isValid())
+            QVERIFY2(t > previous, qPrintable(l.join(QLatin1Char('\n'))));
+        previous = t;
+        QCOMPARE(cells.mid(1),
+                 (QStringList{QStringLiteral("1.5"), QStringLiteral("-5"), QStringLiteral("0x001A"),
+                              QStringLiteral("65531"), QStringLiteral("ok")}));
+    }
+    // The log file holds the same rows; a second run appends without a second header.
+    const Run again = runCli(monitor);
+    RUN_OK(again);
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QStringList logged
+        = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(logged.size(), 9);
+    QCOMPARE(logged.mid(0, 5), l);
+    QCOMPARE(logged.count(l.at(0)), 1);
+
+    // Another column layout into the same file is refused (usage), the file stays as it was.
+    const Run other = runCli(link
+                             + QStringList{QStringLiteral("monitor"), QStringLiteral("R400"),
+                                           QStringLiteral("--cycles"), QStringLiteral("1"),
+                                           QStringLiteral("--output"), path});
+    QCOMPARE(other.code, 2);
+    QVERIFY2(other.err.contains(QLatin1String("other columns")), qPrintable(other.err));
+    QCOMPARE(QFileInfo(path).size(), f.size());
+    // A bad format name is a usage error naming the choices.
+    const Run bad
+        = runCli(link + QStringList{QStringLiteral("monitor"), QStringLiteral("R0:hexx")});
+    QCOMPARE(bad.code, 2);
+    QVERIFY(bad.err.contains(QLatin1String("float")));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

@@ -74,6 +74,14 @@ QString errorOf(const ProtocolError &e)
     return QString::fromStdString(e.message);
 }
 
+QString formatNames()
+{
+    QStringList names;
+    for (const DisplayFormat f : ValueFormat::allFormats())
+        names << ValueFormat::name(f);
+    return names.join(QStringLiteral(", "));
+}
+
 // Parses one command with its arguments into `s`; returns the usage error or nothing.
 QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, bool forceAscii,
                   CliStep *result)
@@ -211,10 +219,21 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
             return fail(err);
         s.command = CliCommand::Monitor;
         for (const QString &text : positional) {
-            auto more = parseAddressOrRange(text);
+            // "R0..R3:hex": a format after the colon applies to every element of the argument.
+            const qsizetype colon = text.indexOf(QLatin1Char(':'));
+            std::optional<DisplayFormat> format;
+            if (colon >= 0) {
+                format = ValueFormat::fromName(text.mid(colon + 1).trimmed());
+                if (!format)
+                    return fail(QStringLiteral("Unknown format \"%1\" in %2 (%3).")
+                                    .arg(text.mid(colon + 1), text, formatNames()));
+            }
+            auto more = parseAddressOrRange(colon >= 0 ? text.left(colon) : text);
             if (!more)
                 return fail(errorOf(more.error()));
             s.addresses += more.value();
+            for (qsizetype n = 0; n < more.value().size(); ++n)
+                s.formats << format;
         }
         if (s.addresses.size() > WatchList::MaxRangeItems)
             return fail(QStringLiteral("monitor watches at most %1 elements.")
@@ -288,8 +307,13 @@ QString usageText()
         "  set|reset|enable|disable ADDR   discrete control (42)\n"
         "  forced ADDR [COUNT]      which discretes are disabled (forced) (43)\n"
         "  loopback [TEXT] [--count N]     round trips: min/mean/max, mismatches, timeouts\n"
-        "  monitor ADDR... [--interval MS] [--cycles N]   poll, one line per cycle (ADDR may be a "
-        "range)\n"
+        "  monitor ADDR[:FORMAT]... [--interval MS] [--cycles N] [--format FORMAT] [--output "
+        "FILE]\n"
+        "                           poll, one line per cycle (ADDR may be a range); FORMAT: "
+        "unsigned,\n"
+        "                           signed, hex, binary, bcd, float, double, bit; --output "
+        "appends a CSV\n"
+        "                           data log (timestamp, values, status) to FILE\n"
         "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" "
         "ASCII);\n"
         "                           --frame adds the protocol's framing and checksum\n"
@@ -401,7 +425,8 @@ CliParseResult parseCommandLine(const QStringList &arguments)
            QStringLiteral("baud"),     QStringLiteral("parity"),   QStringLiteral("data"),
            QStringLiteral("stop"),     QStringLiteral("protocol"), QStringLiteral("station"),
            QStringLiteral("timeout"),  QStringLiteral("retries"),  QStringLiteral("count"),
-           QStringLiteral("interval"), QStringLiteral("cycles")};
+           QStringLiteral("interval"), QStringLiteral("cycles"),   QStringLiteral("output"),
+           QStringLiteral("format")};
     bool onlyPositional = false;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
         const QString &arg = arguments.at(i);
@@ -470,6 +495,15 @@ CliParseResult parseCommandLine(const QStringList &arguments)
             } else if (name == QLatin1String("cycles")) {
                 cyclesText = value;
                 cyclesGiven = true;
+            } else if (name == QLatin1String("output")) {
+                if (value.trimmed().isEmpty())
+                    return fail(QStringLiteral("--output needs a file name."));
+                o.outputPath = value;
+            } else if (name == QLatin1String("format")) {
+                o.valueFormat = ValueFormat::fromName(value.trimmed());
+                if (!o.valueFormat)
+                    return fail(QStringLiteral("--format takes one of %1, not \"%2\".")
+                                    .arg(formatNames(), value));
             }
             continue;
         }
@@ -609,6 +643,8 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         return fail(QStringLiteral("--count only applies to loopback."));
     if ((intervalGiven || cyclesGiven) && !uses("monitor"))
         return fail(QStringLiteral("--interval and --cycles only apply to monitor."));
+    if ((!o.outputPath.isEmpty() || o.valueFormat) && !uses("monitor"))
+        return fail(QStringLiteral("--output and --format only apply to monitor."));
     if ((frameGiven || forceHex || forceAscii) && !uses("raw"))
         return fail(QStringLiteral("--frame, --hex and --ascii only apply to raw."));
     if (countGiven) {
@@ -644,6 +680,26 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                 QStringLiteral("%1 needs an answer: station 0 is broadcast, PLCs do not answer it "
                                "(use --station 1..254).")
                     .arg(step.name));
+        if (step.command == CliCommand::Monitor) {
+            for (qsizetype i = 0; i < step.addresses.size(); ++i) {
+                WatchItemSpec item;
+                item.address = step.addresses.at(i);
+                item.station = o.station;
+                item.format = step.formats.value(i).value_or(
+                    o.valueFormat.value_or(ValueFormat::defaultFormat(item.address)));
+                // A global --format that does not fit an element (bit for R0) falls back to the
+                // element's default; a format asked for that element alone must fit.
+                if (!step.formats.value(i)
+                    && ValueFormat::valueWidth(item.address, item.format) == 0)
+                    item.format = ValueFormat::defaultFormat(item.address);
+                // Station 0 is refused above for monitor; validate with a real one.
+                WatchItemSpec check = item;
+                check.station = 1;
+                if (const Status valid = WatchList::validateEntry(check); !valid)
+                    return fail(errorOf(valid.error()));
+                step.items << item;
+            }
+        }
         if (step.command == CliCommand::Monitor && o.cycles == 0 && n + 1 < parts.size())
             return fail(
                 QStringLiteral("monitor before --then needs --cycles: it would never end."));

@@ -2,6 +2,7 @@
 
 #include "address.h"
 #include "linksettings.h"
+#include "watchlist.h"
 
 #include <QByteArray>
 #include <QList>
@@ -57,6 +58,11 @@ struct CliStep
 
     int scanFirst = 1;
     int scanLast = 254;
+
+    // monitor: the format asked for each address ("R0:hex"), then (after parsing) the items to
+    // poll with their resolved formats (per item, else --format, else the element's default).
+    QList<std::optional<DisplayFormat>> formats;
+    QList<WatchItemSpec> items;
 };
 
 // Everything the command line asked for, parsed and checked (no I/O yet).
@@ -77,7 +83,9 @@ struct CliOptions
 
     int loopbackCount = 1;
     int intervalMs = 1000;
-    int cycles = 0; // monitor: 0 = until interrupted
+    int cycles = 0;                           // monitor: 0 = until interrupted
+    QString outputPath;                       // monitor --output: CSV data log, appended
+    std::optional<DisplayFormat> valueFormat; // monitor --format
 };
 
 struct CliParseResult

@@ -133,6 +133,12 @@ void CliOutput::streamRow(const QStringList &cells, const QJsonObject &json)
     m_out.flush();
 }
 
+void CliOutput::line(const QString &text)
+{
+    m_out << text << '\n';
+    m_out.flush();
+}
+
 void CliOutput::error(const QString &message, int exitCode, const QJsonObject &extra)
 {
     m_err << "fatek-cli: " << message << '\n';

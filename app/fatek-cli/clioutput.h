@@ -34,6 +34,8 @@ public:
     // Streaming rows (monitor): the header once, then one line per row, flushed at once.
     void beginStream(const QStringList &columns, const QList<int> &minWidths = {});
     void streamRow(const QStringList &cells, const QJsonObject &json);
+    // One finished line on stdout (monitor --csv: DataLogger's rows), flushed at once.
+    void line(const QString &text);
 
     // The reason on stderr in technician words; with --json also {"error":...,"code":...} on
     // stdout.

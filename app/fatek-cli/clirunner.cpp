@@ -62,6 +62,9 @@ QString yesNo(bool b)
     return b ? QStringLiteral("yes") : QStringLiteral("no");
 }
 
+// Poll ids of monitor items: item * monitorPartsMax + element (a double spans four registers).
+constexpr std::uint64_t monitorPartsMax = 4;
+
 QString ms(double v)
 {
     return QString::number(v, 'f', 2);
@@ -234,6 +237,7 @@ void CliRunner::finish(int exitCode)
         m_scanner->cancel();
     if (m_session)
         m_session->setWatchList({});
+    m_logger.close(); // a monitor ended by an error keeps the rows it logged
     Q_EMIT done(exitCode);
 }
 
@@ -650,19 +654,36 @@ void CliRunner::runMonitor()
     QList<WatchEntry> entries;
     QStringList columns{QStringLiteral("cycle"), QStringLiteral("time")};
     QList<int> widths{5, 12};
-    for (qsizetype i = 0; i < step().addresses.size(); ++i) {
-        WatchEntry e;
-        e.id = static_cast<std::uint64_t>(i);
-        e.station = m_options.station;
-        e.address = step().addresses.at(i);
-        e.intervalMs = m_options.intervalMs;
-        entries << e;
-        columns << addressText(e.address);
-        widths << (isDoubleWord(e.address.type) ? 10 : isDiscrete(e.address.type) ? 1 : 5);
+    const QList<WatchItemSpec> &items = step().items;
+    for (qsizetype i = 0; i < items.size(); ++i) {
+        const WatchItemSpec &item = items.at(i);
+        // A float over R100 polls R100 and R101: one entry per element, id = item * 4 + part.
+        const int parts = std::max(1, ValueFormat::elementCount(item.address, item.format));
+        for (int part = 0; part < parts; ++part) {
+            WatchEntry e;
+            e.id = static_cast<std::uint64_t>(i) * monitorPartsMax
+                   + static_cast<std::uint64_t>(part);
+            e.station = m_options.station;
+            e.address = item.address.advanced(static_cast<std::uint32_t>(part));
+            e.intervalMs = m_options.intervalMs;
+            entries << e;
+        }
+        columns << addressText(item.address);
+        const int width = ValueFormat::valueWidth(item.address, item.format);
+        widths << (width == 1 ? 1 : width <= 16 ? 6 : 12);
+    }
+    if (!m_options.outputPath.isEmpty() && !m_logger.isOpen()) {
+        // Every row reaches the disk at once: an interrupted monitor loses nothing.
+        m_logger.setFlushIntervalMs(0);
+        if (const Status s = m_logger.open(m_options.outputPath, items); !s) {
+            m_out.error(QString::fromStdString(s.error().message), ExitCode::Usage);
+            return finish(ExitCode::Usage);
+        }
     }
     if (m_options.format == OutputFormat::Csv)
-        columns.insert(2, QStringLiteral("station"));
-    m_out.beginStream(columns, m_options.format == OutputFormat::Csv ? QList<int>{} : widths);
+        m_out.line(DataLogger::headerLine(items));
+    else
+        m_out.beginStream(columns, widths);
     armWatchdog(m_options.intervalMs
                 + requestBudgetMs() * (1 + static_cast<int>(entries.size()) / 16));
     m_session->setWatchList(entries);
@@ -673,38 +694,69 @@ void CliRunner::onValues(const QList<WatchValue> &values)
     if (m_done || !m_monitoring || step().command != CliCommand::Monitor)
         return;
     ++m_cycle;
-    QList<const WatchValue *> byItem(step().addresses.size(), nullptr);
+    const QList<WatchItemSpec> &items = step().items;
+    // Join the elements of each item back into one value; its quality is the worst part's.
+    QList<DataLogger::Cell> cells(items.size());
+    QList<int> partsSeen(items.size(), 0);
+    for (DataLogger::Cell &c : cells)
+        c.quality = DataLogger::Quality::Good;
     for (const WatchValue &v : values) {
-        if (v.itemId < static_cast<std::uint64_t>(byItem.size()))
-            byItem[static_cast<qsizetype>(v.itemId)] = &v;
+        const auto item = static_cast<qsizetype>(v.itemId / monitorPartsMax);
+        const auto part = static_cast<int>(v.itemId % monitorPartsMax);
+        if (item >= items.size())
+            continue;
+        DataLogger::Cell &cell = cells[item];
+        ++partsSeen[item];
+        const Address &a = items.at(item).address;
+        const int bits = isDiscrete(a.type) ? 1 : isDoubleWord(a.type) ? 32 : 16;
+        cell.raw |= static_cast<std::uint64_t>(v.value) << (part * bits);
+        if (v.quality == ValueQuality::Error) {
+            cell.quality = DataLogger::Quality::Error;
+            cell.reason = v.error;
+        } else if (v.quality == ValueQuality::Stale && cell.quality == DataLogger::Quality::Good) {
+            cell.quality = DataLogger::Quality::Stale;
+            cell.reason = v.error;
+        }
     }
     const QDateTime now = QDateTime::currentDateTime();
-    QStringList cells{QString::number(m_cycle), now.toString(QStringLiteral("HH:mm:ss.zzz"))};
-    if (m_options.format == OutputFormat::Csv)
-        cells << stationText();
-    QJsonArray jsonValues, jsonAddresses;
+    QStringList tableCells{QString::number(m_cycle), now.toString(QStringLiteral("HH:mm:ss.zzz"))};
+    QJsonArray jsonValues, jsonTexts, jsonAddresses;
     bool anyGood = false;
     QString staleReason;
-    for (qsizetype i = 0; i < byItem.size(); ++i) {
-        const WatchValue *v = byItem.at(i);
-        const QString name = addressText(step().addresses.at(i));
+    for (qsizetype i = 0; i < items.size(); ++i) {
+        DataLogger::Cell &cell = cells[i];
+        const WatchItemSpec &item = items.at(i);
+        const int parts = std::max(1, ValueFormat::elementCount(item.address, item.format));
+        if (partsSeen.at(i) < parts && cell.quality == DataLogger::Quality::Good) {
+            cell.quality = DataLogger::Quality::Missing;
+            cell.reason = QStringLiteral("no value this cycle");
+        }
+        const QString name = addressText(item.address);
         jsonAddresses.append(name);
-        if (v && v->quality == ValueQuality::Good) {
+        if (cell.quality == DataLogger::Quality::Good) {
             anyGood = true;
-            cells << QString::number(v->value);
-            jsonValues.append(static_cast<qint64>(v->value));
+            const QString text = DataLogger::valueText(item, cell.raw);
+            tableCells << text;
+            jsonValues.append(static_cast<qint64>(cell.raw));
+            jsonTexts.append(text);
             continue;
         }
-        cells << (m_options.format == OutputFormat::Csv ? QString() : QStringLiteral("?"));
+        tableCells << QStringLiteral("?");
         jsonValues.append(QJsonValue::Null);
-        const QString reason = v ? v->error : QStringLiteral("no value this cycle");
-        if (v && v->quality == ValueQuality::Error)
+        jsonTexts.append(QJsonValue::Null);
+        if (cell.quality == DataLogger::Quality::Error)
             m_monitorErrors = true;
         else
-            staleReason = reason;
-        if (!m_reported.contains(name + reason)) {
-            m_reported.insert(name + reason);
-            m_out.note(QStringLiteral("%1: %2").arg(name, reason));
+            staleReason = cell.reason;
+        if (!m_reported.contains(name + cell.reason)) {
+            m_reported.insert(name + cell.reason);
+            m_out.note(QStringLiteral("%1: %2").arg(name, cell.reason));
+        }
+    }
+    if (m_logger.isOpen()) {
+        if (const Status s = m_logger.writeRow(now, cells); !s) {
+            m_out.error(QString::fromStdString(s.error().message), ExitCode::Internal);
+            return finish(ExitCode::Internal);
         }
     }
     QJsonObject json;
@@ -713,7 +765,11 @@ void CliRunner::onValues(const QList<WatchValue> &values)
     json.insert(QStringLiteral("station"), m_options.station);
     json.insert(QStringLiteral("addresses"), jsonAddresses);
     json.insert(QStringLiteral("values"), jsonValues);
-    m_out.streamRow(cells, json);
+    json.insert(QStringLiteral("text"), jsonTexts);
+    if (m_options.format == OutputFormat::Csv)
+        m_out.line(DataLogger::rowLine(now, items, cells));
+    else
+        m_out.streamRow(tableCells, json);
 
     // Nothing read for three cycles in a row: the link is gone for practical purposes.
     m_staleCycles = (!anyGood && !staleReason.isEmpty()) ? m_staleCycles + 1 : 0;
@@ -729,6 +785,10 @@ void CliRunner::onValues(const QList<WatchValue> &values)
             return finish(ExitCode::Plc);
         m_session->setWatchList({});
         m_monitoring = false;
+        if (const Status s = m_logger.close(); !s) {
+            m_out.error(QString::fromStdString(s.error().message), ExitCode::Internal);
+            return finish(ExitCode::Internal);
+        }
         return stepDone();
     }
     armWatchdog(m_options.intervalMs

@@ -2,6 +2,7 @@
 
 #include "clioptions.h"
 #include "clioutput.h"
+#include "datalogger.h"
 #include "request.h"
 #include "session.h"
 #include "stationscanner.h"
@@ -98,6 +99,7 @@ private:
     int m_staleCycles = 0;
     bool m_monitorErrors = false;
     QSet<QString> m_reported;
+    DataLogger m_logger; // --output
 };
 
 } // namespace Fatek

@@ -1,6 +1,8 @@
 // fatek-studio: the GUI. Options: --demo (embedded simulator and a ready watch table),
-// --read-only (operator mode), --screenshot FILE (render the window to PNG after startup, exit).
+// --read-only (operator mode), --screenshot FILE (render the window to PNG after startup, exit),
+// --language CODE (en, zh_TW: overrides the system locale and the View > Language choice).
 #include "connectionmanager.h"
+#include "languagemenu.h"
 #include "mainwindow.h"
 
 #include <QApplication>
@@ -36,21 +38,37 @@ void scheduleScreenshot(Fatek::MainWindow *window, const QString &path, bool dem
                 if (!toolWidget) {
                     std::fprintf(
                         stderr,
-                        "fatek-studio: unknown tool %s (control, forcing, console, loopback)\n",
+                        "fatek-studio: unknown tool %s (control, forcing, console, loopback, "
+                        "trend)\n",
                         qPrintable(tool));
                     QCoreApplication::exit(2);
                     return;
                 }
                 if (toolWidget->isWindow())
                     target = toolWidget;
-                QTimer::singleShot(3000, window, [window, target, path] {
+                auto grab = [target, path] {
                     const bool ok = target->grab().save(path, "PNG");
                     if (!ok)
                         std::fprintf(stderr, "fatek-studio: cannot write screenshot %s\n",
                                      qPrintable(path));
-                    Q_UNUSED(window)
                     QCoreApplication::exit(ok ? 0 : 1);
-                });
+                };
+                if (tool == QLatin1String("trend")) {
+                    // The trend shows its wave once it holds a whole demo sine period (10 s).
+                    auto *wait = new QTimer(window);
+                    auto trendDeadline = std::make_shared<QDeadlineTimer>(40000);
+                    QObject::connect(wait, &QTimer::timeout, window,
+                                     [wait, toolWidget, trendDeadline, grab] {
+                                         if (toolWidget->property("spanMs").toLongLong() < 12000
+                                             && !trendDeadline->hasExpired())
+                                             return;
+                                         wait->stop();
+                                         grab();
+                                     });
+                    wait->start(250);
+                    return;
+                }
+                QTimer::singleShot(3000, window, grab);
                 return;
             }
             const bool saved = target->grab().save(path, "PNG");
@@ -60,6 +78,20 @@ void scheduleScreenshot(Fatek::MainWindow *window, const QString &path, bool dem
             QCoreApplication::exit(saved ? 0 : 1);
         });
     timer->start(250);
+}
+
+// --language must be known before the parser's own texts are built (they are translated too).
+QString languageArgument(const QStringList &arguments)
+{
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        const QString &a = arguments.at(i);
+        if ((a == QLatin1String("--language") || a == QLatin1String("-language"))
+            && i + 1 < arguments.size())
+            return arguments.at(i + 1);
+        if (a.startsWith(QLatin1String("--language=")))
+            return a.mid(11);
+    }
+    return {};
 }
 
 } // namespace
@@ -72,28 +104,43 @@ int main(int argc, char *argv[])
     QApplication::setApplicationDisplayName(QStringLiteral("FATEK Studio"));
     QApplication::setApplicationVersion(QStringLiteral(FATEK_VERSION));
 
+    const QString language = languageArgument(QCoreApplication::arguments());
+    if (!language.isEmpty() && !Fatek::Language::isKnown(language)) {
+        std::fprintf(stderr, "fatek-studio: unknown language %s (%s)\n", qPrintable(language),
+                     qPrintable(Fatek::Language::available().join(QStringLiteral(", "))));
+        return 2;
+    }
+    Fatek::Language::install(&app, Fatek::Language::effectiveLocale(language));
+
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        QStringLiteral("Commissioning and monitoring tool for FATEK PLCs."));
+        QCoreApplication::translate("main", "Commissioning and monitoring tool for FATEK PLCs."));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption demoOpt(
         QStringLiteral("demo"),
-        QStringLiteral("Start the embedded PLC simulator (demo ladder) and watch it."));
+        QCoreApplication::translate(
+            "main", "Start the embedded PLC simulator (demo ladder) and watch it."));
     const QCommandLineOption readOnlyOpt(
         QStringLiteral("read-only"),
-        QStringLiteral("Operator mode: no writes, RUN/STOP or forcing."));
+        QCoreApplication::translate("main", "Operator mode: no writes, RUN/STOP or forcing."));
     const QCommandLineOption screenshotOpt(
         QStringLiteral("screenshot"),
-        QStringLiteral("Render the main window to a PNG file after startup "
-                       "and exit."),
-        QStringLiteral("file"));
+        QCoreApplication::translate("main", "Render the main window to a PNG file after startup "
+                                            "and exit."),
+        QCoreApplication::translate("main", "file"));
     const QCommandLineOption toolOpt(
         QStringLiteral("tool"),
-        QStringLiteral("With --screenshot: open a commissioning tool first "
-                       "(control, forcing, console, loopback)."),
-        QStringLiteral("name"));
-    parser.addOptions({demoOpt, readOnlyOpt, screenshotOpt, toolOpt});
+        QCoreApplication::translate("main", "With --screenshot: open a commissioning tool first "
+                                            "(control, forcing, console, loopback, trend)."),
+        QCoreApplication::translate("main", "name"));
+    const QCommandLineOption languageOpt(
+        QStringLiteral("language"),
+        QCoreApplication::translate("main", "User interface language for this run: en or zh_TW "
+                                            "(default: the View > Language choice, else the "
+                                            "system's)."),
+        QCoreApplication::translate("main", "code"));
+    parser.addOptions({demoOpt, readOnlyOpt, screenshotOpt, toolOpt, languageOpt});
     parser.process(app);
 
     Fatek::MainWindow window(parser.isSet(readOnlyOpt));

@@ -1,5 +1,6 @@
 #include "connectiondialog.h"
 
+#include "coretext.h"
 #include "serialtransport.h"
 
 #include <QComboBox>
@@ -43,7 +44,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_recentCombo = new QComboBox(this);
     m_recentCombo->addItem(tr("(new)"));
     for (const SavedConnection &c : recent)
-        m_recentCombo->addItem(QStringLiteral("%1 — %2").arg(c.name, c.settings.toString()));
+        m_recentCombo->addItem(tr("%1 — %2").arg(c.name, CoreText::settings(c.settings)));
     m_recentCombo->setEnabled(!recent.isEmpty());
 
     m_name = new QLineEdit(this);

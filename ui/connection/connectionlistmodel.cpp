@@ -1,6 +1,7 @@
 #include "connectionlistmodel.h"
 
 #include "connectionmanager.h"
+#include "coretext.h"
 
 namespace Fatek {
 
@@ -50,9 +51,9 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
     if (role == Qt::DisplayRole || role == Qt::EditRole) {
         switch (index.column()) {
         case NameColumn: return c->name();
-        case LinkColumn: return c->settings().toString();
+        case LinkColumn: return CoreText::settings(c->settings());
         case StationColumn: return c->station();
-        case StateColumn: return linkStateName(c->linkState());
+        case StateColumn: return CoreText::linkState(c->linkState());
         case RateColumn: return QString::number(c->requestsPerSecond(), 'f', 1);
         case ErrorsColumn: return QString::number(c->errorCount());
         case RttColumn:
@@ -64,7 +65,8 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
     if (role == Qt::ToolTipRole) {
         switch (index.column()) {
         case StateColumn:
-            return c->linkReason().isEmpty() ? linkStateName(c->linkState()) : c->linkReason();
+            return c->linkReason().isEmpty() ? CoreText::linkState(c->linkState())
+                                             : CoreText::message(c->linkReason());
         case ErrorsColumn:
             return tr("%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries")
                 .arg(t.timeouts)
@@ -72,14 +74,14 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
                 .arg(t.plcErrors)
                 .arg(t.retries);
         case RttColumn:
-            return tr("Round trip: last %1 ms, median %2 ms, 99%% %3 ms")
+            return tr("Round trip: last %1 ms, median %2 ms, 99% %3 ms")
                 .arg(t.rttLastMs, 0, 'f', 1)
                 .arg(t.rttP50Ms, 0, 'f', 1)
                 .arg(t.rttP99Ms, 0, 'f', 1);
         case StationColumn: return tr("Station the tools act on; double-click to change");
         default: {
             // Per station: several PLCs on one RS-485 line share a connection.
-            QStringList lines{c->settings().toString()};
+            QStringList lines{CoreText::settings(c->settings())};
             const SessionStatistics statistics = c->statistics();
             for (auto it = statistics.stations.cbegin(); it != statistics.stations.cend(); ++it) {
                 const StationStatistics &s = it.value();

@@ -5,7 +5,11 @@
 #include "connectiondialog.h"
 #include "connectionmanager.h"
 #include "connectionspanel.h"
+#include "coretext.h"
 #include "demosimulator.h"
+#include "languagemenu.h"
+#include "tablelogger.h"
+#include "trendview.h"
 #include "watchtablemodel.h"
 
 #include <QAction>
@@ -115,10 +119,11 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     connect(m_manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
         connect(c, &Connection::linkStateChanged, this,
                 [this, c](LinkState state, const QString &reason) {
-                    showStatus(
-                        reason.isEmpty()
-                            ? tr("%1: %2").arg(c->name(), linkStateName(state))
-                            : tr("%1: %2 (%3)").arg(c->name(), linkStateName(state), reason));
+                    showStatus(reason.isEmpty()
+                                   ? tr("%1: %2").arg(c->name(), CoreText::linkState(state))
+                                   : tr("%1: %2 (%3)")
+                                         .arg(c->name(), CoreText::linkState(state),
+                                              CoreText::message(reason)));
                 });
     });
 
@@ -209,8 +214,12 @@ void MainWindow::createActions()
     m_viewMenu->addAction(toolBar->toggleViewAction());
 
     m_toolsMenu = menuBar()->addMenu(tr("&Tools"));
+    createTrendAndLogging();
     // TRENDS AND LOGGING ACTIONS (keep this marker line)
+    createOperatorMode();
     // OPERATOR MODE ACTIONS (keep this marker line)
+    m_viewMenu->addSeparator();
+    m_viewMenu->addMenu(new LanguageMenu(m_viewMenu));
     // LANGUAGE MENU (keep this marker line)
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
@@ -290,6 +299,8 @@ void MainWindow::createTools()
 
 QWidget *MainWindow::openTool(const QString &name)
 {
+    if (name == QLatin1String("trend"))
+        return showTrend();
 #ifdef FATEK_WITH_TOOLS
     static const QHash<QString, QString> docks
         = {{QStringLiteral("control"), QStringLiteral("plcControlDock")},
@@ -329,7 +340,7 @@ Connection *MainWindow::openConnection(const SavedConnection &saved, bool rememb
     if (remember)
         m_manager->addRecent(saved);
     Connection *c = m_manager->open(saved);
-    showStatus(tr("Connecting to %1 (%2)…").arg(c->name(), c->settings().toString()));
+    showStatus(tr("Connecting to %1 (%2)…").arg(c->name(), CoreText::settings(c->settings())));
     return c;
 }
 
@@ -351,7 +362,7 @@ void MainWindow::rebuildRecentMenu()
     m_recentMenu->clear();
     const QList<SavedConnection> recent = m_manager->recent();
     for (const SavedConnection &c : recent) {
-        m_recentMenu->addAction(QStringLiteral("%1 — %2").arg(c.name, c.settings.toString()), this,
+        m_recentMenu->addAction(tr("%1 — %2").arg(c.name, CoreText::settings(c.settings)), this,
                                 [this, c] { openConnection(c); });
     }
     m_recentMenu->setEnabled(!recent.isEmpty());
@@ -366,6 +377,8 @@ WatchTableWidget *MainWindow::addWatchTable(const QString &name)
     if (m_confirm)
         table->setConfirmHandler(m_confirm);
     connect(table, &WatchTableWidget::statusMessage, this, &MainWindow::showStatus);
+    connect(table, &WatchTableWidget::addToTrendRequested, this,
+            [this, table](const QList<int> &rows) { addToTrend(table, rows); });
     connect(table, &WatchTableWidget::nameChanged, this, [this, table](const QString &text) {
         m_tabs->setTabText(m_tabs->indexOf(table), text);
     });
@@ -442,9 +455,8 @@ bool MainWindow::restoreLastWatchList()
     if (!settings.value(reopenKey, true).toBool() || path.isEmpty() || !QFileInfo::exists(path))
         return false;
     if (const Status s = loadWatchList(path); !s) {
-        showStatus(
-            tr("The last watch list %1 cannot be loaded: %2")
-                .arg(QDir::toNativeSeparators(path), QString::fromStdString(s.error().message)));
+        showStatus(tr("The last watch list %1 cannot be loaded: %2")
+                       .arg(QDir::toNativeSeparators(path), CoreText::message(s.error().message)));
         return false;
     }
     showStatus(tr("Reopened %1.").arg(QDir::toNativeSeparators(path)));
@@ -476,7 +488,7 @@ void MainWindow::openWatchListDialog()
         QMessageBox::warning(
             this, tr("Open Watch List"),
             tr("%1 cannot be loaded:\n%2")
-                .arg(QFileInfo(path).fileName(), QString::fromStdString(s.error().message)));
+                .arg(QFileInfo(path).fileName(), CoreText::message(s.error().message)));
         return;
     }
     showStatus(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
@@ -492,8 +504,7 @@ void MainWindow::saveWatchListDialog()
         path += QStringLiteral(".json");
     setLastDirectory(path);
     if (const Status s = saveWatchList(path); !s) {
-        QMessageBox::warning(this, tr("Save Watch List"),
-                             QString::fromStdString(s.error().message));
+        QMessageBox::warning(this, tr("Save Watch List"), CoreText::message(s.error().message));
         return;
     }
     showStatus(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
@@ -510,7 +521,7 @@ void MainWindow::importCsvDialog()
         QMessageBox::warning(
             this, tr("Import CSV"),
             tr("%1 cannot be imported:\n%2")
-                .arg(QFileInfo(path).fileName(), QString::fromStdString(s.error().message)));
+                .arg(QFileInfo(path).fileName(), CoreText::message(s.error().message)));
         return;
     }
     showStatus(tr("Imported %1.").arg(QDir::toNativeSeparators(path)));
@@ -582,13 +593,14 @@ void MainWindow::updateLinkStatus()
     }
     const StationStatistics &t = c->statistics().total;
     m_linkStatus->setText(tr("%1: %2 · %3 req/s · %4 errors · RTT %5 ms")
-                              .arg(c->name(), linkStateName(c->linkState()))
+                              .arg(c->name(), CoreText::linkState(c->linkState()))
                               .arg(c->requestsPerSecond(), 0, 'f', 1)
                               .arg(c->errorCount())
                               .arg(t.rttMeanMs, 0, 'f', 1));
     m_linkStatus->setToolTip(c->linkReason().isEmpty()
-                                 ? c->settings().toString()
-                                 : c->settings().toString() + QLatin1Char('\n') + c->linkReason());
+                                 ? CoreText::settings(c->settings())
+                                 : CoreText::settings(c->settings()) + QLatin1Char('\n')
+                                       + CoreText::message(c->linkReason()));
 }
 
 void MainWindow::updateToolTargets()
@@ -612,6 +624,7 @@ void MainWindow::showStatus(const QString &text)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    stopLogging(); // the log file is complete when the window goes
     QSettings settings;
     settings.setValue(geometryKey, saveGeometry());
     settings.setValue(stateKey, saveState());

@@ -18,6 +18,8 @@ class ConnectionManager;
 class ConnectionsPanel;
 class DemoSimulator;
 class Session;
+class TableLogger;
+class TrendView;
 
 // The main window composes: the connections panel, the watch table tabs, the tool docks, menus,
 // shortcuts and the status bar. Polling, parsing and formatting live in the parts it composes.
@@ -81,7 +83,25 @@ private:
     void showStatus(const QString &text);
     QString lastDirectory() const;
     void setLastDirectory(const QString &path);
+
+public:
+    // Trends and data logging (ui/trend, defined in ui/trend/mainwindowtrend.cpp).
+    TrendView *trendView() const { return m_trendView; }
+    TableLogger *tableLogger() const { return m_tableLogger; }
+    // Adds rows of a watch table to the trend and shows the trend.
+    void addToTrend(WatchTableWidget *table, const QList<int> &rows);
+    // Logs the current watch table to `path` (CSV, appended); a log already running stops first.
+    Status startLogging(const QString &path);
+    void stopLogging();
+
+private:
+    void createTrendAndLogging();
+    QWidget *showTrend();
+    void startLoggingDialog();
+    void updateLoggingStatus();
     // TRENDS AND LOGGING METHODS (keep this marker line)
+    void createOperatorMode();
+    void applyOperatorMode(bool active);
     // OPERATOR MODE METHODS (keep this marker line)
     // LANGUAGE METHODS (keep this marker line)
 
@@ -102,7 +122,14 @@ private:
     quint8 m_toolStation = 1;
     bool m_toolsInitialised = false;
     int m_tableCounter = 0;
+    TrendView *m_trendView = nullptr;
+    QWidget *m_trendDock = nullptr;
+    TableLogger *m_tableLogger = nullptr;
+    QLabel *m_loggingLabel = nullptr;
+    QAction *m_startLoggingAction = nullptr;
+    QAction *m_stopLoggingAction = nullptr;
     // TRENDS AND LOGGING MEMBERS (keep this marker line)
+    class OperatorMode *m_operatorMode = nullptr;
     // OPERATOR MODE MEMBERS (keep this marker line)
     // LANGUAGE MEMBERS (keep this marker line)
 };

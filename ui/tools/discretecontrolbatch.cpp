@@ -1,6 +1,9 @@
 #include "discretecontrolbatch.h"
 
+#include "coretext.h"
 #include "requesttracker.h"
+
+#include <QCoreApplication>
 
 #include <memory>
 
@@ -11,10 +14,14 @@ namespace {
 QString verb(DiscreteOp op)
 {
     switch (op) {
-    case DiscreteOp::Disable: return QStringLiteral("Disable");
-    case DiscreteOp::Enable: return QStringLiteral("Enable");
-    case DiscreteOp::Set: return QStringLiteral("Set ON");
-    case DiscreteOp::Reset: return QStringLiteral("Reset OFF");
+    case DiscreteOp::Disable:
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "Disable");
+    case DiscreteOp::Enable:
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "Enable");
+    case DiscreteOp::Set:
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "Set ON");
+    case DiscreteOp::Reset:
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "Reset OFF");
     }
     return {};
 }
@@ -22,10 +29,16 @@ QString verb(DiscreteOp op)
 QString pastVerb(DiscreteOp op)
 {
     switch (op) {
-    case DiscreteOp::Disable: return QStringLiteral("Disabled");
-    case DiscreteOp::Enable: return QStringLiteral("Enabled");
-    case DiscreteOp::Set: return QStringLiteral("Set ON");
-    case DiscreteOp::Reset: return QStringLiteral("Reset OFF");
+    case DiscreteOp::Disable:
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "Disabled");
+    case DiscreteOp::Enable:
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "Enabled");
+    //: Past tense, as in "Set ON 3 points."
+    case DiscreteOp::Set:
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "Set ON", "past");
+    //: Past tense, as in "Reset OFF 3 points."
+    case DiscreteOp::Reset:
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "Reset OFF", "past");
     }
     return {};
 }
@@ -51,7 +64,9 @@ bool DiscreteControlBatch::run(RequestTracker *tracker, quint8 station, Discrete
                                 ++state->outcome.succeeded;
                             else
                                 state->outcome.errors
-                                    << QStringLiteral("%1: %2").arg(name, result.errorText());
+                                    << QCoreApplication::translate("Fatek::DiscreteControlBatch",
+                                                                   "%1: %2")
+                                           .arg(name, CoreText::message(result.errorText()));
                             if (--state->remaining == 0 && done)
                                 done(state->outcome);
                         });
@@ -65,27 +80,36 @@ QString DiscreteControlBatch::describe(DiscreteOp op, const QList<Address> &poin
     for (const Address &a : points)
         names << QString::fromStdString(a.toString());
     if (points.size() <= 8)
-        return QStringLiteral("%1 %2").arg(verb(op), names.join(QStringLiteral(", ")));
-    return QStringLiteral("%1 %2 points (%3, %4 \u2026 %5)")
-        .arg(verb(op))
-        .arg(points.size())
-        .arg(names.at(0), names.at(1), names.last());
+        return QCoreApplication::translate("Fatek::DiscreteControlBatch", "%1 %2")
+            .arg(verb(op), names.join(QStringLiteral(", ")));
+    const int count = static_cast<int>(points.size());
+    //: %1 is the action (Disable, Set ON...), %2..%4 the first, second and last point.
+    return QCoreApplication::translate("Fatek::DiscreteControlBatch",
+                                       "%1 %n points (%2, %3 \u2026 %4)", nullptr, count)
+        .arg(verb(op), names.at(0), names.at(1), names.last());
 }
 
 QString DiscreteControlBatch::outcomeText(DiscreteOp op, const Outcome &outcome)
 {
     if (outcome.errors.isEmpty()) {
+        // Two texts rather than %n: the English must read right without a translator loaded.
+        //: %1 is the past action (Disabled, Enabled, Set ON, Reset OFF).
         return outcome.succeeded == 1
-                   ? QStringLiteral("%1 1 point.").arg(pastVerb(op))
-                   : QStringLiteral("%1 %2 points.").arg(pastVerb(op)).arg(outcome.succeeded);
+                   ? QCoreApplication::translate("Fatek::DiscreteControlBatch", "%1 1 point.")
+                         .arg(pastVerb(op))
+                   : QCoreApplication::translate("Fatek::DiscreteControlBatch", "%1 %2 points.")
+                         .arg(pastVerb(op))
+                         .arg(outcome.succeeded);
     }
-    QString text = QStringLiteral("%1: %2 done, %3 failed \u2014 %4")
+    QString text = QCoreApplication::translate("Fatek::DiscreteControlBatch",
+                                               "%1: %2 done, %3 failed \u2014 %4")
                        .arg(verb(op))
                        .arg(outcome.succeeded)
                        .arg(outcome.errors.size())
                        .arg(outcome.errors.first());
     if (outcome.errors.size() > 1)
-        text += QStringLiteral(" (and %1 more)").arg(outcome.errors.size() - 1);
+        text += QCoreApplication::translate("Fatek::DiscreteControlBatch", " (and %1 more)")
+                    .arg(outcome.errors.size() - 1);
     return text;
 }
 

@@ -1,5 +1,6 @@
 #include "discreterange.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 namespace Fatek {
@@ -19,35 +20,54 @@ Result<DiscreteRange> DiscreteRange::parse(const QString &text)
     const QRegularExpressionMatch m = pattern.match(text);
     if (!m.hasMatch()) {
         return makeError(ErrorKind::InvalidAddress,
-                         "\u201c" + text.trimmed().toStdString()
-                             + "\u201d is not a range of discretes; write it like Y0-255 or M100.");
+                         QCoreApplication::translate("Fatek::DiscreteRange",
+                                                     "\u201c%1\u201d is not a range of discretes; "
+                                                     "write it like Y0-255 or M100.")
+                             .arg(text.trimmed())
+                             .toStdString());
     }
     const auto type = elementTypeFromSymbol(m.captured(1).toStdString());
     if (!type || !isDiscrete(*type)) {
-        return makeError(ErrorKind::InvalidAddress,
-                         "\u201c" + m.captured(1).toStdString()
-                             + "\u201d is not a discrete type; use X, Y, M, S, T or C.");
+        return makeError(
+            ErrorKind::InvalidAddress,
+            QCoreApplication::translate("Fatek::DiscreteRange",
+                                        "\u201c%1\u201d is not a discrete type; use X, Y, M, "
+                                        "S, T or C.")
+                .arg(m.captured(1))
+                .toStdString());
     }
     if (m.hasCaptured(3) && !m.captured(3).isEmpty()
         && elementTypeFromSymbol(m.captured(3).toStdString()) != type) {
         return makeError(ErrorKind::InvalidAddress,
-                         "A range must stay within one type: " + text.trimmed().toStdString());
+                         QCoreApplication::translate("Fatek::DiscreteRange",
+                                                     "A range must stay within one type: %1")
+                             .arg(text.trimmed())
+                             .toStdString());
     }
     bool ok = false;
     const quint32 first = m.captured(2).toUInt(&ok);
     if (!ok)
-        return makeError(ErrorKind::InvalidAddress,
-                         "Point number too large in " + text.trimmed().toStdString());
+        return makeError(
+            ErrorKind::InvalidAddress,
+            QCoreApplication::translate("Fatek::DiscreteRange", "Point number too large in %1")
+                .arg(text.trimmed())
+                .toStdString());
     quint32 lastNumber = first;
     if (m.hasCaptured(4) && !m.captured(4).isEmpty()) {
         lastNumber = m.captured(4).toUInt(&ok);
         if (!ok)
-            return makeError(ErrorKind::InvalidAddress,
-                             "Point number too large in " + text.trimmed().toStdString());
+            return makeError(
+                ErrorKind::InvalidAddress,
+                QCoreApplication::translate("Fatek::DiscreteRange", "Point number too large in %1")
+                    .arg(text.trimmed())
+                    .toStdString());
     }
     if (lastNumber < first) {
         return makeError(ErrorKind::InvalidAddress,
-                         "The range " + text.trimmed().toStdString() + " ends before it starts.");
+                         QCoreApplication::translate("Fatek::DiscreteRange",
+                                                     "The range %1 ends before it starts.")
+                             .arg(text.trimmed())
+                             .toStdString());
     }
     DiscreteRange range;
     range.start = Address{*type, first};
@@ -68,8 +88,11 @@ Result<QList<DiscreteRange>> DiscreteRange::parseList(const QString &text)
     const QStringList parts
         = normalized.split(QRegularExpression(QStringLiteral(R"([\s,;]+)")), Qt::SkipEmptyParts);
     if (parts.isEmpty())
-        return makeError(ErrorKind::InvalidAddress,
-                         "No range given; write for example X0-255, Y0-255.");
+        return makeError(
+            ErrorKind::InvalidAddress,
+            QCoreApplication::translate("Fatek::DiscreteRange",
+                                        "No range given; write for example X0-255, Y0-255.")
+                .toStdString());
     QList<DiscreteRange> ranges;
     for (const QString &part : parts) {
         const Result<DiscreteRange> r = parse(part);

@@ -1,5 +1,6 @@
 #include "forcedpointsview.h"
 
+#include "coretext.h"
 #include "discretecontrolbatch.h"
 #include "discreterange.h"
 #include "requesttracker.h"
@@ -131,8 +132,8 @@ void ForcedPointsView::scan()
                 if (generation != m_generation)
                     return;
                 if (!result.ok()) {
-                    state->errors << QStringLiteral("%1: %2").arg(chunk.toString(),
-                                                                  result.errorText());
+                    state->errors << tr("%1: %2").arg(chunk.toString(),
+                                                      CoreText::message(result.errorText()));
                 } else {
                     const auto &flags = result.response().values;
                     for (std::size_t i = 0; i < flags.size(); ++i) {

@@ -1,5 +1,6 @@
 #include "forcingpanel.h"
 
+#include "coretext.h"
 #include "discretecontrolbatch.h"
 #include "discretetablemodel.h"
 #include "forcedpointsview.h"
@@ -44,12 +45,11 @@ ForcingPanel::ForcingPanel(QWidget *parent)
     for (ElementType t : {ElementType::X, ElementType::Y, ElementType::M, ElementType::S,
                           ElementType::T, ElementType::C}) {
         const ElementInfo &info = elementInfo(t);
-        m_type->addItem(
-            QStringLiteral("%1 \u2013 %2")
-                .arg(QString::fromUtf8(info.symbol.data(),
-                                       static_cast<qsizetype>(info.symbol.size())),
-                     QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size()))),
-            static_cast<int>(t));
+        m_type->addItem(tr("%1 \u2013 %2")
+                            .arg(QString::fromUtf8(info.symbol.data(),
+                                                   static_cast<qsizetype>(info.symbol.size())),
+                                 CoreText::elementName(t)),
+                        static_cast<int>(t));
     }
     m_type->setCurrentIndex(1); // Y: outputs are what gets forced most
     m_start = new QSpinBox(table);
@@ -203,7 +203,7 @@ void ForcingPanel::applyRangeFromControls()
                           static_cast<quint32>(m_start->value())};
     range.count = static_cast<quint32>(m_count->value());
     if (const Status s = validateSpan(range.start, range.count); !s) {
-        ToolPalette::showMessage(m_message, QString::fromStdString(s.error().message), true);
+        ToolPalette::showMessage(m_message, CoreText::message(s.error().message), true);
         return;
     }
     ++m_generation;
@@ -229,8 +229,9 @@ void ForcingPanel::refresh()
             if (r.ok())
                 values = r.response().values;
             else
-                ToolPalette::showMessage(m_message, tr("Could not read: %1").arg(r.errorText()),
-                                         true);
+                ToolPalette::showMessage(
+                    m_message, tr("Could not read: %1").arg(CoreText::message(r.errorText())),
+                    true);
             if (states)
                 m_model->setStates(values);
             else

@@ -1,5 +1,6 @@
 #include "frametext.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 namespace Fatek {
@@ -54,15 +55,24 @@ Result<QByteArray> FrameText::parseHex(const QString &text)
     const QRegularExpressionMatch bad = nonHex.match(digits);
     if (bad.hasMatch()) {
         return makeError(ErrorKind::InvalidRequest,
-                         "\u201c" + bad.captured().toStdString()
-                             + "\u201d is not a hex digit; type bytes like 01 46 03 52 00 0C.");
+                         QCoreApplication::translate(
+                             "Fatek::FrameText", "\u201c%1\u201d is not a hex digit; type bytes "
+                                                 "like 01 46 03 52 00 0C.")
+                             .arg(bad.captured())
+                             .toStdString());
     }
     if (digits.isEmpty())
         return makeError(ErrorKind::InvalidRequest,
-                         "Nothing to send: type the frame's bytes in hex.");
+                         QCoreApplication::translate(
+                             "Fatek::FrameText", "Nothing to send: type the frame's bytes in hex.")
+                             .toStdString());
     if (digits.size() % 2 != 0)
-        return makeError(ErrorKind::InvalidRequest,
-                         "Odd number of hex digits: each byte needs two (0C, not C).");
+        return makeError(
+            ErrorKind::InvalidRequest,
+            QCoreApplication::translate("Fatek::FrameText",
+                                        "Odd number of hex digits: each byte needs two (0C, "
+                                        "not C).")
+                .toStdString());
     return QByteArray::fromHex(digits.toLatin1());
 }
 
@@ -96,14 +106,20 @@ Result<QByteArray> FrameText::parseAscii(const QString &text)
             }
         }
         if (c.unicode() < 32 || c.unicode() > 126) {
-            return makeError(ErrorKind::InvalidRequest,
-                             "Only printable ASCII can be typed; write control characters as "
-                             "<STX>, <ETX> or <0D>.");
+            return makeError(
+                ErrorKind::InvalidRequest,
+                QCoreApplication::translate("Fatek::FrameText",
+                                            "Only printable ASCII can be typed; write control "
+                                            "characters as <STX>, <ETX> or <0D>.")
+                    .toStdString());
         }
         out += static_cast<char>(c.unicode());
     }
     if (out.isEmpty())
-        return makeError(ErrorKind::InvalidRequest, "Nothing to send: type the frame.");
+        return makeError(
+            ErrorKind::InvalidRequest,
+            QCoreApplication::translate("Fatek::FrameText", "Nothing to send: type the frame.")
+                .toStdString());
     return out;
 }
 

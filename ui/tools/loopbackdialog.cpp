@@ -1,5 +1,6 @@
 #include "loopbackdialog.h"
 
+#include "coretext.h"
 #include "frametext.h"
 #include "requesttracker.h"
 #include "session.h"
@@ -217,7 +218,7 @@ void LoopbackDialog::start()
         return;
     const Result<Bytes> prepared = testData();
     if (!prepared) {
-        ToolPalette::showMessage(m_message, QString::fromStdString(prepared.error().message), true);
+        ToolPalette::showMessage(m_message, CoreText::message(prepared.error().message), true);
         return;
     }
     m_data = *prepared;
@@ -271,10 +272,10 @@ void LoopbackDialog::onAnswer(int run, const SessionResult &result, double rttMs
                    true);
     } else if (result.errorKind() == ErrorKind::Timeout) {
         m_stats.add(LoopbackStats::Outcome::Timeout);
-        appendLine(tr("%1  TIMEOUT   %2").arg(prefix, result.errorText()), true);
+        appendLine(tr("%1  TIMEOUT   %2").arg(prefix, CoreText::message(result.errorText())), true);
     } else {
         m_stats.add(LoopbackStats::Outcome::Error);
-        appendLine(tr("%1  ERROR     %2").arg(prefix, result.errorText()), true);
+        appendLine(tr("%1  ERROR     %2").arg(prefix, CoreText::message(result.errorText())), true);
     }
     ToolPalette::showMessage(m_totals, m_stats.summary(), m_stats.successes() != m_stats.runs());
     if (m_run >= m_repeat->value()) {

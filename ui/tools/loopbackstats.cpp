@@ -1,5 +1,6 @@
 #include "loopbackstats.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
 
@@ -50,14 +51,18 @@ double LoopbackStats::p99Ms() const
 
 QString LoopbackStats::summary() const
 {
-    QString text = QStringLiteral("%1 runs: %2 OK, %3 mismatch, %4 timeout, %5 other errors")
-                       .arg(runs())
-                       .arg(m_successes)
-                       .arg(m_mismatches)
-                       .arg(m_timeouts)
-                       .arg(m_errors);
+    QString text
+        = QCoreApplication::translate("Fatek::LoopbackStats",
+                                      "%1 runs: %2 OK, %3 mismatch, %4 timeout, %5 other errors")
+              .arg(runs())
+              .arg(m_successes)
+              .arg(m_mismatches)
+              .arg(m_timeouts)
+              .arg(m_errors);
     if (hasRoundTrips()) {
-        text += QStringLiteral(" \u2014 round trip min %1 / mean %2 / max %3 / p99 %4 ms")
+        text += QCoreApplication::translate(
+                    "Fatek::LoopbackStats",
+                    " \u2014 round trip min %1 / mean %2 / max %3 / p99 %4 ms")
                     .arg(minMs(), 0, 'f', 1)
                     .arg(meanMs(), 0, 'f', 1)
                     .arg(maxMs(), 0, 'f', 1)

@@ -1,5 +1,6 @@
 #include "plccontrolpanel.h"
 
+#include "coretext.h"
 #include "requesttracker.h"
 #include "session.h"
 #include "statusindicator.h"
@@ -256,8 +257,9 @@ void PlcControlPanel::requestMode(bool run)
             ToolPalette::showMessage(
                 m_outcomeLabel, tr("%1 accepted by station %2.").arg(mode).arg(m_station), false);
         else
-            ToolPalette::showMessage(m_outcomeLabel, tr("%1 refused: %2").arg(mode, r.errorText()),
-                                     true);
+            ToolPalette::showMessage(
+                m_outcomeLabel, tr("%1 refused: %2").arg(mode, CoreText::message(r.errorText())),
+                true);
         updateEnabled();
         refresh();
         refreshDetail(); // its STATUS1 changes too
@@ -270,11 +272,11 @@ void PlcControlPanel::onBriefStatus(const SessionResult &result)
     m_briefPending = false;
     if (!result.ok() || result.response().data.empty()) {
         showStatus(std::nullopt);
-        ToolPalette::showMessage(
-            m_refreshLabel,
-            tr("Status unknown: %1")
-                .arg(result.ok() ? tr("the PLC sent no status bytes.") : result.errorText()),
-            true);
+        ToolPalette::showMessage(m_refreshLabel,
+                                 tr("Status unknown: %1")
+                                     .arg(result.ok() ? tr("the PLC sent no status bytes.")
+                                                      : CoreText::message(result.errorText())),
+                                 true);
         return;
     }
     showStatus(PlcStatus::fromStatus1(result.response().data.front()));
@@ -291,7 +293,7 @@ void PlcControlPanel::onDetailStatus(const SessionResult &result)
     if (!result.ok()) {
         m_detail.reset();
         showDetail();
-        m_raw->setText(tr("Not available: %1").arg(result.errorText()));
+        m_raw->setText(tr("Not available: %1").arg(CoreText::message(result.errorText())));
         return;
     }
     m_detail = DetailStatus::decode(result.response().data);

@@ -1,5 +1,6 @@
 #include "rawconsole.h"
 
+#include "coretext.h"
 #include "rawsendbar.h"
 #include "session.h"
 #include "toolpalette.h"
@@ -56,11 +57,9 @@ RawConsole::RawConsole(QWidget *parent)
     for (int code = 0x40; code <= 0x53; ++code) {
         if (!isKnownCommand(static_cast<std::uint8_t>(code)))
             continue;
-        const std::string_view name = commandName(static_cast<Command>(code));
-        m_command->addItem(
-            QString::number(code, 16).toUpper() + QLatin1Char(' ')
-                + QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
-            code);
+        m_command->addItem(QString::number(code, 16).toUpper() + QLatin1Char(' ')
+                               + CoreText::commandName(static_cast<Command>(code)),
+                           code);
     }
     m_errorsOnly = new QCheckBox(tr("Errors only"), this);
     m_errorsOnly->setObjectName(QStringLiteral("errorsOnly"));

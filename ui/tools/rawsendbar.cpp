@@ -1,6 +1,7 @@
 #include "rawsendbar.h"
 
 #include "binarycodec.h"
+#include "coretext.h"
 #include "faconcodec.h"
 #include "frametext.h"
 #include "requesttracker.h"
@@ -142,7 +143,7 @@ void RawSendBar::send()
     const Result<QByteArray> typed
         = hex ? FrameText::parseHex(m_input->text()) : FrameText::parseAscii(m_input->text());
     if (!typed) {
-        ToolPalette::showMessage(m_result, QString::fromStdString(typed.error().message), true);
+        ToolPalette::showMessage(m_result, CoreText::message(typed.error().message), true);
         return;
     }
     const bool framing = m_framing->isChecked();
@@ -185,8 +186,9 @@ void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
     updateEnabled();
     const QString sentLine = tr("Sent    %1").arg(FrameText::toAscii(sent));
     if (!result.ok()) {
-        ToolPalette::showMessage(m_result, tr("%1\nFailed  %2").arg(sentLine, result.errorText()),
-                                 true);
+        ToolPalette::showMessage(
+            m_result, tr("%1\nFailed  %2").arg(sentLine, CoreText::message(result.errorText())),
+            true);
         return;
     }
     ++m_answers;

@@ -24,7 +24,7 @@ void StatusIndicator::setState(State state)
                               : state == State::Off ? tr("off")
                                                     : tr("unknown");
     setAccessibleDescription(stateText);
-    setToolTip(QStringLiteral("%1: %2").arg(m_text, stateText));
+    setToolTip(tr("%1: %2").arg(m_text, stateText));
     update();
 }
 

@@ -1,5 +1,6 @@
 #include "toolconfirmation.h"
 
+#include <QCoreApplication>
 #include <QMessageBox>
 
 namespace Fatek {
@@ -16,7 +17,10 @@ bool ToolConfirmation::ask(QWidget *parent, const QString &title, const QString 
 
 QString ToolConfirmation::target(quint8 station, const QString &connectionName)
 {
-    return QStringLiteral("station %1 on \u201c%2\u201d").arg(station).arg(connectionName);
+    //: How every question names its target: station 1 on “Line 3 (TCP 10.0.0.5:500)”.
+    return QCoreApplication::translate("Fatek::ToolConfirmation", "station %1 on \u201c%2\u201d")
+        .arg(station)
+        .arg(connectionName);
 }
 
 } // namespace Fatek

@@ -1,5 +1,6 @@
 #include "trafficlogmodel.h"
 
+#include "coretext.h"
 #include "toolpalette.h"
 
 #include <QFontDatabase>
@@ -93,8 +94,8 @@ QVariant TrafficLogModel::data(const QModelIndex &index, int role) const
         case StationColumn: return row.header ? QVariant(row.header->station) : QVariant();
         case HexColumn: return row.hex;
         case AsciiColumn: return row.ascii;
-        case MeaningColumn: return e.summary;
-        case ErrorColumn: return e.error;
+        case MeaningColumn: return CoreText::message(e.summary);
+        case ErrorColumn: return CoreText::message(e.error);
         default: return {};
         }
     case Qt::FontRole:

@@ -1,5 +1,6 @@
 #include "watchdelegate.h"
 
+#include "coretext.h"
 #include "watchtablemodel.h"
 
 #include <QComboBox>
@@ -14,7 +15,7 @@ QWidget *WatchDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem
         return QStyledItemDelegate::createEditor(parent, option, index);
     auto *combo = new QComboBox(parent);
     for (DisplayFormat f : model->availableFormats(index.row()))
-        combo->addItem(ValueFormat::name(f), static_cast<int>(f));
+        combo->addItem(CoreText::format(f), static_cast<int>(f));
     return combo;
 }
 

@@ -1,5 +1,7 @@
 #include "watchinput.h"
 
+#include "coretext.h"
+
 #include <QRegularExpression>
 
 namespace Fatek::WatchInput {
@@ -9,21 +11,26 @@ Result<QList<Address>> parseAddresses(const QString &text)
     static const QRegularExpression separators(QStringLiteral("[\\s,;]+"));
     const QStringList tokens = text.split(separators, Qt::SkipEmptyParts);
     if (tokens.isEmpty())
-        return makeError(ErrorKind::InvalidAddress,
-                         "Type an address such as R100, or a range such as R100..R163.");
+        return makeError(
+            ErrorKind::InvalidAddress,
+            QCoreApplication::translate("Fatek::WatchInput",
+                                        "Type an address such as R100, or a range such as "
+                                        "R100..R163.")
+                .toStdString());
     QList<Address> all;
     for (const QString &token : tokens) {
         const auto addresses = WatchList::expandRange(token);
         if (!addresses) {
             return makeError(ErrorKind::InvalidAddress,
-                             QStringLiteral("\"%1\": %2")
-                                 .arg(token, QString::fromStdString(addresses.error().message))
+                             QCoreApplication::translate("Fatek::WatchInput", "\"%1\": %2")
+                                 .arg(token, CoreText::message(addresses.error().message))
                                  .toStdString());
         }
         all += *addresses;
         if (all.size() > WatchList::MaxRangeItems)
             return makeError(ErrorKind::LimitExceeded,
-                             QStringLiteral("Too many items at once: at most %1.")
+                             QCoreApplication::translate("Fatek::WatchInput",
+                                                         "Too many items at once: at most %1.")
                                  .arg(WatchList::MaxRangeItems)
                                  .toStdString());
     }

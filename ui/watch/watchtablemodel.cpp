@@ -1,5 +1,7 @@
 #include "watchtablemodel.h"
 
+#include "coretext.h"
+
 #include <QFont>
 #include <QGuiApplication>
 #include <QIcon>
@@ -215,7 +217,7 @@ QString WatchTableModel::qualityReason(int row) const
 {
     for (const Part &p : m_rows.at(row).parts) {
         if (p.quality != ValueQuality::Good && !p.error.isEmpty())
-            return p.error;
+            return CoreText::message(p.error);
     }
     return {};
 }
@@ -355,8 +357,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         case StationColumn: return spec.station;
         case ValueColumn: return have ? valueText(r) : QStringLiteral("…");
         case FormatColumn:
-            return spec.swapWords ? tr("%1, words swapped").arg(ValueFormat::name(spec.format))
-                                  : ValueFormat::name(spec.format);
+            return spec.swapWords ? tr("%1, words swapped").arg(CoreText::format(spec.format))
+                                  : CoreText::format(spec.format);
         case QualityColumn:
             return (!have && q != ValueQuality::Error) ? tr("waiting") : qualityName(q);
         case UpdatedColumn: {
@@ -406,7 +408,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                                                    .advanced(static_cast<std::uint32_t>(count - 1))
                                                    .toString()))
                                       .arg(count)
-                                : QString::fromStdString(std::string(spec.address.info().name)));
+                                : CoreText::elementName(spec.address.type));
         }
         return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
     }
@@ -503,7 +505,7 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
         if (!raw) {
             Q_EMIT inputRejected(
                 tr("%1: %2").arg(QString::fromStdString(row.spec.address.toString()),
-                                 QString::fromStdString(raw.error().message)));
+                                 CoreText::message(raw.error().message)));
             return false;
         }
         Q_EMIT writeRequested(r, *raw);
@@ -533,14 +535,14 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
         if (isInt && value.typeId() != QMetaType::QString)
             format = static_cast<DisplayFormat>(asInt);
         else
-            format = ValueFormat::fromName(value.toString());
+            format = CoreText::formatFromName(value.toString());
         if (!format) {
             Q_EMIT inputRejected(tr("Unknown format \"%1\".").arg(value.toString()));
             return false;
         }
         const Status s = setFormat(r, *format, row.spec.swapWords);
         if (!s) {
-            Q_EMIT inputRejected(QString::fromStdString(s.error().message));
+            Q_EMIT inputRejected(CoreText::message(s.error().message));
             return false;
         }
         return true;

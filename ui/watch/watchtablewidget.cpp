@@ -1,6 +1,7 @@
 #include "watchtablewidget.h"
 
 #include "connectionmanager.h"
+#include "coretext.h"
 #include "watchdelegate.h"
 #include "watchinput.h"
 #include "watchtablemodel.h"
@@ -115,6 +116,21 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     removeAction->setShortcut(QKeySequence::Delete);
     removeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_view->addActions({writeAction, m_swapAction, pasteAction, removeAction});
+    auto *trendAction = new QAction(tr("Add to &Trend"), m_view);
+    trendAction->setToolTip(tr("Plot the selected items over time in the trend view"));
+    m_view->addAction(trendAction);
+    connect(trendAction, &QAction::triggered, this, [this] {
+        QList<int> rows;
+        for (const QModelIndex &index : m_view->selectionModel()->selectedIndexes()) {
+            if (!rows.contains(index.row()))
+                rows.append(index.row());
+        }
+        if (rows.isEmpty() && m_view->currentIndex().isValid())
+            rows.append(m_view->currentIndex().row());
+        std::sort(rows.begin(), rows.end());
+        if (!rows.isEmpty())
+            Q_EMIT addToTrendRequested(rows);
+    });
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -207,8 +223,10 @@ void WatchTableWidget::setConnection(Connection *connection)
                     if (state == LinkState::Connected || state == LinkState::Connecting)
                         return;
                     m_model->markAllStale(
-                        reason.isEmpty() ? tr("link %1").arg(linkStateName(state))
-                                         : tr("link %1: %2").arg(linkStateName(state), reason));
+                        reason.isEmpty()
+                            ? tr("link %1").arg(CoreText::linkState(state))
+                            : tr("link %1: %2")
+                                  .arg(CoreText::linkState(state), CoreText::message(reason)));
                 });
         connect(connection->session(), &Session::finished, this, &WatchTableWidget::onFinished);
     } else {
@@ -308,7 +326,7 @@ bool WatchTableWidget::addFromText(const QString &text)
 {
     const auto addresses = WatchInput::parseAddresses(text);
     if (!addresses) {
-        showMessage(QString::fromStdString(addresses.error().message), true);
+        showMessage(CoreText::message(addresses.error().message), true);
         return false;
     }
     QList<WatchItemSpec> items;
@@ -329,8 +347,7 @@ bool WatchTableWidget::addFromPaste(const QString &text)
 {
     const auto items = WatchInput::parsePasted(text, defaultStation());
     if (!items) {
-        showMessage(tr("Cannot paste: %1").arg(QString::fromStdString(items.error().message)),
-                    true);
+        showMessage(tr("Cannot paste: %1").arg(CoreText::message(items.error().message)), true);
         return false;
     }
     m_model->addItems(*items);
@@ -372,14 +389,15 @@ void WatchTableWidget::onFinished(quint64 id, const SessionResult &result)
         return;
     const PendingWrite pending = it.value();
     m_pendingWrites.erase(it);
-    const QString outcome
-        = result.ok() ? tr("Wrote %1.").arg(pending.what)
-                      : tr("Write of %1 failed: %2").arg(pending.what, result.errorText());
+    const QString outcome = result.ok()
+                                ? tr("Wrote %1.").arg(pending.what)
+                                : tr("Write of %1 failed: %2")
+                                      .arg(pending.what, CoreText::message(result.errorText()));
     const int row = m_model->rowOfKey(pending.rowKey);
     if (row >= 0)
         m_model->setWriteOutcome(
-            row, QStringLiteral("%1 %2").arg(
-                     QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
+            row,
+            tr("%1 %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
     showMessage(outcome, !result.ok());
 }
 
@@ -404,7 +422,7 @@ void WatchTableWidget::writeDialog()
     const QString text = QInputDialog::getText(
         this, tr("Write Value"),
         tr("New value for %1 (%2; hex as 0x1A or 1Ah):")
-            .arg(QString::fromStdString(item.address.toString()), ValueFormat::name(item.format)),
+            .arg(QString::fromStdString(item.address.toString()), CoreText::format(item.format)),
         QLineEdit::Normal, m_model->valueText(row), &ok);
     if (ok)
         m_model->setData(m_model->index(row, WatchTableModel::ValueColumn), text);
@@ -416,7 +434,7 @@ void WatchTableWidget::toggleSwapWords()
         const WatchItemSpec item = m_model->item(index.row());
         const Status s = m_model->setFormat(index.row(), item.format, !item.swapWords);
         if (!s)
-            showMessage(QString::fromStdString(s.error().message), true);
+            showMessage(CoreText::message(s.error().message), true);
     }
 }
 

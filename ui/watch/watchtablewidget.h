@@ -72,6 +72,8 @@ public:
 Q_SIGNALS:
     void statusMessage(const QString &text);
     void nameChanged(const QString &name);
+    // "Add to Trend" on the selected rows (ascending row numbers).
+    void addToTrendRequested(const QList<int> &rows);
 
 private:
     void showMessage(const QString &text, bool error);

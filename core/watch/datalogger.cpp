@@ -1,0 +1,226 @@
+#include "datalogger.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QStringConverter>
+
+namespace Fatek {
+
+namespace {
+
+ProtocolError fileError(const QString &text)
+{
+    return makeError(ErrorKind::InvalidRequest, text.toStdString());
+}
+
+// The first line of an existing file, without its line end (and without a UTF-8 BOM).
+QString firstLine(QFile &file)
+{
+    QByteArray line = file.readLine(64 * 1024);
+    if (line.startsWith("\xEF\xBB\xBF"))
+        line.remove(0, 3);
+    while (line.endsWith('\n') || line.endsWith('\r'))
+        line.chop(1);
+    return QString::fromUtf8(line);
+}
+
+} // namespace
+
+DataLogger::~DataLogger()
+{
+    close();
+}
+
+QString DataLogger::timestampText(const QDateTime &time)
+{
+    const QDateTime local = time.toLocalTime();
+    const int offset = local.offsetFromUtc();
+    const int minutes = (offset < 0 ? -offset : offset) / 60;
+    return local.toString(QStringLiteral("yyyy-MM-ddTHH:mm:ss.zzz"))
+           + (offset < 0 ? QLatin1Char('-') : QLatin1Char('+'))
+           + QStringLiteral("%1:%2")
+                 .arg(minutes / 60, 2, 10, QLatin1Char('0'))
+                 .arg(minutes % 60, 2, 10, QLatin1Char('0'));
+}
+
+QString DataLogger::valueText(const WatchItemSpec &item, std::uint64_t raw)
+{
+    const int width = ValueFormat::valueWidth(item.address, item.format);
+    if (width == 1)
+        return (raw & 1u) ? QStringLiteral("1") : QStringLiteral("0");
+    return ValueFormat::format(raw, width, item.format, item.swapWords);
+}
+
+QString DataLogger::columnName(const WatchItemSpec &item)
+{
+    QString address = QString::fromStdString(item.address.toString());
+    if (item.station != 1)
+        address += QStringLiteral("@%1").arg(item.station);
+    const QString name = item.name.trimmed();
+    return name.isEmpty() ? address : QStringLiteral("%1 (%2)").arg(name, address);
+}
+
+QString DataLogger::csvCell(const QString &text)
+{
+    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"'))
+        && !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char('\r'))
+        && !text.contains(QLatin1Char(';')))
+        return text;
+    QString quoted = text;
+    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
+    return QLatin1Char('"') + quoted + QLatin1Char('"');
+}
+
+QString DataLogger::qualityName(Quality quality)
+{
+    switch (quality) {
+    case Quality::Good: return QStringLiteral("ok");
+    case Quality::Stale: return QStringLiteral("stale");
+    case Quality::Error: return QStringLiteral("error");
+    case Quality::Missing: return QStringLiteral("missing");
+    }
+    return QStringLiteral("missing");
+}
+
+QString DataLogger::headerLine(const QList<WatchItemSpec> &items)
+{
+    QStringList cells{QStringLiteral("timestamp")};
+    for (const WatchItemSpec &item : items)
+        cells << csvCell(columnName(item));
+    cells << QStringLiteral("status");
+    return cells.join(QLatin1Char(','));
+}
+
+QString DataLogger::rowLine(const QDateTime &time, const QList<WatchItemSpec> &items,
+                            const QList<Cell> &cells)
+{
+    QStringList out{timestampText(time)};
+    QStringList problems;
+    for (qsizetype i = 0; i < items.size(); ++i) {
+        const Cell cell = i < cells.size() ? cells.at(i) : Cell{};
+        if (cell.quality == Quality::Good) {
+            out << csvCell(valueText(items.at(i), cell.raw));
+            continue;
+        }
+        out << QString(); // never a stale value as if it were fresh
+        QString problem
+            = QStringLiteral("%1 %2").arg(qualityName(cell.quality), columnName(items.at(i)));
+        if (!cell.reason.isEmpty())
+            problem += QStringLiteral(" (%1)").arg(cell.reason);
+        problems << problem;
+    }
+    out << csvCell(problems.isEmpty() ? QStringLiteral("ok") : problems.join(QLatin1String("; ")));
+    return out.join(QLatin1Char(','));
+}
+
+Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
+{
+    close();
+    m_failure.reset();
+    m_rows = 0;
+    if (path.trimmed().isEmpty())
+        return fileError(QStringLiteral("No log file given."));
+    if (items.isEmpty())
+        return fileError(QStringLiteral("Nothing to log: the table has no items."));
+    for (const WatchItemSpec &item : items) {
+        if (ValueFormat::valueWidth(item.address, item.format) == 0)
+            return fileError(QStringLiteral("%1 cannot be shown as %2.")
+                                 .arg(columnName(item), ValueFormat::name(item.format)));
+    }
+    QStringList columns{QStringLiteral("timestamp")};
+    for (const WatchItemSpec &item : items)
+        columns << columnName(item);
+    columns << QStringLiteral("status");
+    const QString header = headerLine(items);
+
+    const QString native = QDir::toNativeSeparators(path);
+    const QFileInfo info(path);
+    if (info.isDir())
+        return fileError(QStringLiteral("%1 is a folder, not a file.").arg(native));
+    if (!info.absoluteDir().exists())
+        return fileError(
+            QStringLiteral("Cannot log to %1: the folder %2 does not exist.")
+                .arg(native, QDir::toNativeSeparators(info.absoluteDir().absolutePath())));
+
+    m_file.setFileName(path);
+    // Read+append: an existing log's header is checked before anything is added to it.
+    if (!m_file.open(QIODevice::ReadWrite | QIODevice::Append))
+        return fileError(
+            QStringLiteral("Cannot open %1 for writing: %2").arg(native, m_file.errorString()));
+    const bool isNew = m_file.size() == 0;
+    if (!isNew && m_file.isSequential() == false) {
+        m_file.seek(0);
+        const QString existing = firstLine(m_file);
+        if (existing != header) {
+            m_file.close();
+            return fileError(QStringLiteral("%1 already holds a log with other columns (\"%2\"); "
+                                            "choose a new file.")
+                                 .arg(native, existing.left(120)));
+        }
+        // Appending: a file whose last row lacks its line end gets one first.
+        m_file.seek(m_file.size() - 1);
+        char last = '\n';
+        m_file.getChar(&last);
+        m_file.seek(m_file.size());
+        if (last != '\n' && m_file.write("\n") != 1)
+            return fail(QStringLiteral("Cannot write to %1").arg(native));
+    }
+    m_path = path;
+    m_items = items;
+    m_columns = columns;
+    if (isNew && m_file.write((header + QLatin1Char('\n')).toUtf8()) < 0)
+        return fail(QStringLiteral("Cannot write to %1").arg(native));
+    // The header reaches the disk at once: an unwritable medium shows up at start, not later.
+    if (!m_file.flush())
+        return fail(QStringLiteral("Cannot write to %1").arg(native));
+    m_sinceFlush.start();
+    return Ok{};
+}
+
+Status DataLogger::writeRow(const QDateTime &time, const QList<Cell> &cells)
+{
+    if (m_failure)
+        return *m_failure;
+    if (!m_file.isOpen())
+        return fileError(QStringLiteral("The data log is not open."));
+    const QByteArray line = (rowLine(time, m_items, cells) + QLatin1Char('\n')).toUtf8();
+    if (m_file.write(line) != line.size())
+        return fail(QStringLiteral("Cannot write to %1").arg(QDir::toNativeSeparators(m_path)));
+    ++m_rows;
+    if (m_flushIntervalMs <= 0 || m_sinceFlush.elapsed() >= m_flushIntervalMs)
+        return flush();
+    return Ok{};
+}
+
+Status DataLogger::flush()
+{
+    if (m_failure)
+        return *m_failure;
+    if (!m_file.isOpen())
+        return Ok{};
+    m_sinceFlush.restart();
+    if (!m_file.flush())
+        return fail(QStringLiteral("Cannot write to %1").arg(QDir::toNativeSeparators(m_path)));
+    return Ok{};
+}
+
+Status DataLogger::close()
+{
+    if (!m_file.isOpen())
+        return m_failure ? Status(*m_failure) : Status(Ok{});
+    const Status s = flush();
+    m_file.close();
+    return s;
+}
+
+Status DataLogger::fail(const QString &what)
+{
+    // QFile keeps the OS reason (e.g. "No space left on device").
+    m_failure
+        = fileError(QStringLiteral("%1: %2. Logging stopped.").arg(what, m_file.errorString()));
+    // Whatever the buffer still holds cannot be written either; drop it rather than retry.
+    m_file.close();
+    return *m_failure;
+}
+
+} // namespace Fatek

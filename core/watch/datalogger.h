@@ -1,0 +1,92 @@
+#pragma once
+
+#include "result.h"
+#include "watchlist.h"
+
+#include <QDateTime>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+#include <cstdint>
+#include <optional>
+
+namespace Fatek {
+
+// Writes watch values to a CSV data log, one row per poll cycle:
+//
+//   timestamp,Sine (R1),R0,Y0,status
+//   2026-11-23T10:35:31.458+01:00,-309,50,1,ok
+//   2026-11-23T10:35:31.958+01:00,,100,0,stale: Sine (R1) (timeout)
+//
+// - timestamp: ISO 8601 local time with milliseconds and the UTC offset (no ambiguity at DST).
+// - one column per item, headed "name (address)" or the address alone; a station other than 1
+//   is added as "address@station".
+// - values in the item's display format (signed, hex, float, ...); bits as 1/0 so spreadsheets
+//   can plot them.
+// - a value that is not fresh (stale, refused, not read) is never written: its cell stays empty
+//   and the last column, status, says which item and why; "ok" when every cell is fresh.
+//
+// The file is opened for appending: an empty or new file gets the header; an existing log must
+// have the same header (else open() refuses rather than mixing columns). Rows go through the
+// QFile buffer (bounded) and are flushed every flushIntervalMs; a failed write (disk full,
+// removed medium) closes the log and every later call returns that error.
+class DataLogger
+{
+public:
+    enum class Quality { Good, Stale, Error, Missing };
+    struct Cell
+    {
+        std::uint64_t raw = 0;
+        Quality quality = Quality::Missing;
+        QString reason; // why not Good (optional)
+    };
+
+    DataLogger() = default;
+    ~DataLogger();
+    DataLogger(const DataLogger &) = delete;
+    DataLogger &operator=(const DataLogger &) = delete;
+
+    Status open(const QString &path, const QList<WatchItemSpec> &items);
+    // One row; cells in the order of the items given to open(). Fewer cells count as Missing.
+    Status writeRow(const QDateTime &time, const QList<Cell> &cells);
+    Status flush();
+    // Flushes and closes; returns the flush's outcome. Harmless when not open.
+    Status close();
+
+    bool isOpen() const { return m_file.isOpen(); }
+    QString path() const { return m_path; }
+    qint64 rowCount() const { return m_rows; }
+    QStringList columns() const { return m_columns; }
+    // 0: flush after every row.
+    void setFlushIntervalMs(int ms) { m_flushIntervalMs = ms; }
+
+    // "2026-11-23T10:35:31.458+01:00" (local time with its offset).
+    static QString timestampText(const QDateTime &time);
+    // The text of one value: bits as 1/0, else ValueFormat::format.
+    static QString valueText(const WatchItemSpec &item, std::uint64_t raw);
+    static QString columnName(const WatchItemSpec &item);
+    static QString csvCell(const QString &text);
+    static QString qualityName(Quality quality);
+    // The header line and one row line (without line end), as open() and writeRow() write them;
+    // for output that is not a file (fatek-cli monitor --csv on stdout).
+    static QString headerLine(const QList<WatchItemSpec> &items);
+    static QString rowLine(const QDateTime &time, const QList<WatchItemSpec> &items,
+                           const QList<Cell> &cells);
+
+private:
+    Status fail(const QString &what);
+
+    QFile m_file;
+    QString m_path;
+    QList<WatchItemSpec> m_items;
+    QStringList m_columns;
+    qint64 m_rows = 0;
+    int m_flushIntervalMs = 1000;
+    QElapsedTimer m_sinceFlush;
+    std::optional<ProtocolError> m_failure;
+};
+
+} // namespace Fatek

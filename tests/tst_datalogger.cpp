@@ -1,0 +1,207 @@
+// DataLogger: the CSV data log of watch values (header, formats, quality, append, file errors).
+#include "datalogger.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Fatek;
+
+namespace {
+
+WatchItemSpec item(const char *address, DisplayFormat format, const QString &name = {},
+                   quint8 station = 1)
+{
+    WatchItemSpec s;
+    s.address = Address::parse(address).value();
+    s.format = format;
+    s.name = name;
+    s.station = station;
+    return s;
+}
+
+DataLogger::Cell good(std::uint64_t raw)
+{
+    return {raw, DataLogger::Quality::Good, {}};
+}
+
+QStringList readLines(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+
+} // namespace
+
+class TestDataLogger : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void timestampHasMillisecondsAndOffset();
+    void headerAndFormattedValues();
+    void staleValuesAreNeverWrittenAsFresh();
+    void appendKeepsHeaderOnce();
+    void appendRefusesOtherColumns();
+    void quotesCellsWithSeparators();
+    void unwritablePaths();
+    void diskFull();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestDataLogger::timestampHasMillisecondsAndOffset()
+{
+    const QDateTime utc(QDate(2026, 11, 23), QTime(9, 35, 31, 458), Qt::UTC);
+    const QString text = DataLogger::timestampText(utc);
+    static const QRegularExpression iso(
+        QStringLiteral("^\\d{4}-\\d\\d-\\d\\dT\\d\\d:\\d\\d:\\d\\d\\.458[+-]\\d\\d:\\d\\d$"));
+    QVERIFY2(iso.match(text).hasMatch(), qPrintable(text));
+    // The text names the same instant.
+    QCOMPARE(QDateTime::fromString(text, Qt::ISODateWithMs).toUTC(), utc);
+}
+
+void TestDataLogger::headerAndFormattedValues()
+{
+    const QString path = m_dir.filePath(QStringLiteral("values.csv"));
+    DataLogger log;
+    const QList<WatchItemSpec> items{item("R1", DisplayFormat::Signed, QStringLiteral("Sine")),
+                                     item("R2", DisplayFormat::Hex), item("Y0", DisplayFormat::Bit),
+                                     item("R10", DisplayFormat::Float32, {}, 3)};
+    QVERIFY(log.open(path, items));
+    QCOMPARE(log.columns().size(), 6);
+    const QDateTime t0 = QDateTime::currentDateTime();
+    // 1.5f = 0x3FC00000: R10 holds the low word, R11 the high word.
+    QVERIFY(log.writeRow(t0, {good(0xFFFF), good(0x1A), good(1), good(0x3FC00000)}));
+    QVERIFY(log.writeRow(t0.addMSecs(500), {good(1000), good(0xFFFF), good(0), good(0)}));
+    QCOMPARE(log.rowCount(), 2);
+    QVERIFY(log.close());
+
+    const QStringList lines = readLines(path);
+    QCOMPARE(lines.size(), 3);
+    QCOMPARE(lines.at(0), QStringLiteral("timestamp,Sine (R1),R2,Y0,R10@3,status"));
+    QCOMPARE(lines.at(1).section(QLatin1Char(','), 1), QStringLiteral("-1,0x001A,1,1.5,ok"));
+    QCOMPARE(lines.at(2).section(QLatin1Char(','), 1), QStringLiteral("1000,0xFFFF,0,0,ok"));
+    QCOMPARE(lines.at(1).section(QLatin1Char(','), 0, 0), DataLogger::timestampText(t0));
+}
+
+void TestDataLogger::staleValuesAreNeverWrittenAsFresh()
+{
+    const QString path = m_dir.filePath(QStringLiteral("stale.csv"));
+    DataLogger log;
+    QVERIFY(
+        log.open(path, {item("R0", DisplayFormat::Unsigned), item("R1", DisplayFormat::Signed)}));
+    const QDateTime now = QDateTime::currentDateTime();
+    QVERIFY(
+        log.writeRow(now, {good(5), {77, DataLogger::Quality::Stale, QStringLiteral("timeout")}}));
+    QVERIFY(log.writeRow(now, {{3, DataLogger::Quality::Error, QStringLiteral("PLC error A")}}));
+    QVERIFY(log.close());
+    const QStringList lines = readLines(path);
+    QCOMPARE(lines.size(), 3);
+    QCOMPARE(lines.at(1).section(QLatin1Char(','), 1), QStringLiteral("5,,stale R1 (timeout)"));
+    QVERIFY(!lines.at(1).contains(QLatin1String("77")));
+    // Several problems: the status cell holds a ';' and is quoted for semicolon-locale
+    // spreadsheets.
+    QCOMPARE(lines.at(2).section(QLatin1Char(','), 1),
+             QStringLiteral(",,\"error R0 (PLC error A); missing R1\""));
+}
+
+void TestDataLogger::appendKeepsHeaderOnce()
+{
+    const QString path = m_dir.filePath(QStringLiteral("append.csv"));
+    const QList<WatchItemSpec> items{item("D5", DisplayFormat::Unsigned)};
+    for (int run = 0; run < 2; ++run) {
+        DataLogger log;
+        QVERIFY(log.open(path, items));
+        QVERIFY(
+            log.writeRow(QDateTime::currentDateTime(), {good(static_cast<std::uint64_t>(run))}));
+    } // the destructor flushes and closes
+    const QStringList lines = readLines(path);
+    QCOMPARE(lines.size(), 3);
+    QCOMPARE(lines.at(0), QStringLiteral("timestamp,D5,status"));
+    QVERIFY(lines.at(1).endsWith(QLatin1String(",0,ok")));
+    QVERIFY(lines.at(2).endsWith(QLatin1String(",1,ok")));
+}
+
+void TestDataLogger::appendRefusesOtherColumns()
+{
+    const QString path = m_dir.filePath(QStringLiteral("other.csv"));
+    {
+        DataLogger log;
+        QVERIFY(log.open(path, {item("R0", DisplayFormat::Signed)}));
+    }
+    DataLogger log;
+    const Status s = log.open(path, {item("R1", DisplayFormat::Signed)});
+    QVERIFY(!s);
+    QVERIFY2(QString::fromStdString(s.error().message).contains(QLatin1String("other columns")),
+             s.error().message.c_str());
+    QVERIFY(!log.isOpen());
+    QCOMPARE(readLines(path).size(), 1);
+}
+
+void TestDataLogger::quotesCellsWithSeparators()
+{
+    const QString path = m_dir.filePath(QStringLiteral("quoted.csv"));
+    DataLogger log;
+    QVERIFY(log.open(path, {item("R0", DisplayFormat::Ascii, QStringLiteral("Tank, \"A\""))}));
+    QVERIFY(log.writeRow(QDateTime::currentDateTime(), {good(0x2C41)})); // ",A"
+    QVERIFY(log.close());
+    const QStringList lines = readLines(path);
+    QCOMPARE(lines.at(0), QStringLiteral("timestamp,\"Tank, \"\"A\"\" (R0)\",status"));
+    QVERIFY2(lines.at(1).endsWith(QLatin1String(",\",A\",ok")), qPrintable(lines.at(1)));
+}
+
+void TestDataLogger::unwritablePaths()
+{
+    DataLogger log;
+    const QList<WatchItemSpec> items{item("R0", DisplayFormat::Signed)};
+    Status s = log.open(m_dir.filePath(QStringLiteral("missing/dir/x.csv")), items);
+    QVERIFY(!s);
+    QVERIFY(QString::fromStdString(s.error().message).contains(QLatin1String("does not exist")));
+    s = log.open(m_dir.path(), items);
+    QVERIFY(!s);
+    QVERIFY(QString::fromStdString(s.error().message).contains(QLatin1String("folder")));
+    s = log.open(m_dir.filePath(QStringLiteral("empty.csv")), {});
+    QVERIFY(!s);
+    // Writing without an open log is an error, not a crash.
+    QVERIFY(!log.writeRow(QDateTime::currentDateTime(), {good(1)}));
+#ifdef Q_OS_UNIX
+    const QString readOnly = m_dir.filePath(QStringLiteral("readonly.csv"));
+    {
+        QFile f(readOnly);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+    }
+    QFile::setPermissions(readOnly, QFileDevice::ReadOwner);
+    if (QFileInfo(readOnly).isWritable())
+        QSKIP("running as root: permissions are not enforced");
+    s = log.open(readOnly, items);
+    QVERIFY(!s);
+    QVERIFY(QString::fromStdString(s.error().message).contains(QLatin1String("Cannot open")));
+#endif
+}
+
+void TestDataLogger::diskFull()
+{
+#ifdef Q_OS_LINUX
+    if (!QFileInfo::exists(QStringLiteral("/dev/full")))
+        QSKIP("no /dev/full");
+    DataLogger log;
+    const Status s = log.open(QStringLiteral("/dev/full"), {item("R0", DisplayFormat::Signed)});
+    // The header flush already fails: the error names the cause and the log is closed.
+    QVERIFY(!s);
+    QVERIFY2(QString::fromStdString(s.error().message).contains(QLatin1String("Logging stopped")),
+             s.error().message.c_str());
+    QVERIFY(!log.isOpen());
+    QVERIFY(!log.writeRow(QDateTime::currentDateTime(), {good(1)}));
+#else
+    QSKIP("needs /dev/full");
+#endif
+}
+
+QTEST_GUILESS_MAIN(TestDataLogger)
+#include "tst_datalogger.moc"

@@ -1,0 +1,2406 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en_US">
+    <context>
+        <name>Fatek::ConnectionDialog</name>
+        <message>
+            <source>New Connection</source>
+            <translation>New Connection</translation>
+        </message>
+        <message>
+            <source>(new)</source>
+            <translation>(new)</translation>
+        </message>
+        <message>
+            <source>%1 — %2</source>
+            <translation>%1 — %2</translation>
+        </message>
+        <message>
+            <source>e.g. Pump station</source>
+            <translation>e.g. Pump station</translation>
+        </message>
+        <message>
+            <source>Serial (RS-232 / RS-485)</source>
+            <translation>Serial (RS-232 / RS-485)</translation>
+        </message>
+        <message>
+            <source>TCP</source>
+            <translation>TCP</translation>
+        </message>
+        <message>
+            <source>UDP</source>
+            <translation>UDP</translation>
+        </message>
+        <message>
+            <source>Refresh</source>
+            <translation>Refresh</translation>
+        </message>
+        <message>
+            <source>&amp;Port:</source>
+            <translation>&amp;Port:</translation>
+        </message>
+        <message>
+            <source>&amp;Baud rate:</source>
+            <translation>&amp;Baud rate:</translation>
+        </message>
+        <message>
+            <source>&amp;Data bits:</source>
+            <translation>&amp;Data bits:</translation>
+        </message>
+        <message>
+            <source>None</source>
+            <translation>None</translation>
+        </message>
+        <message>
+            <source>Even</source>
+            <translation>Even</translation>
+        </message>
+        <message>
+            <source>Odd</source>
+            <translation>Odd</translation>
+        </message>
+        <message>
+            <source>Pa&amp;rity:</source>
+            <translation>Pa&amp;rity:</translation>
+        </message>
+        <message>
+            <source>&amp;Stop bits:</source>
+            <translation>&amp;Stop bits:</translation>
+        </message>
+        <message>
+            <source>Hardware (RTS/CTS)</source>
+            <translation>Hardware (RTS/CTS)</translation>
+        </message>
+        <message>
+            <source>Software (XON/XOFF)</source>
+            <translation>Software (XON/XOFF)</translation>
+        </message>
+        <message>
+            <source>&amp;Flow control:</source>
+            <translation>&amp;Flow control:</translation>
+        </message>
+        <message>
+            <source>&amp;Host:</source>
+            <translation>&amp;Host:</translation>
+        </message>
+        <message>
+            <source>P&amp;ort:</source>
+            <translation>P&amp;ort:</translation>
+        </message>
+        <message>
+            <source>FACON (ASCII)</source>
+            <translation>FACON (ASCII)</translation>
+        </message>
+        <message>
+            <source>Binary</source>
+            <translation>Binary</translation>
+        </message>
+        <message>
+            <source>Auto-detect</source>
+            <translation>Auto-detect</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>Re&amp;cent:</source>
+            <translation>Re&amp;cent:</translation>
+        </message>
+        <message>
+            <source>&amp;Name:</source>
+            <translation>&amp;Name:</translation>
+        </message>
+        <message>
+            <source>&amp;Link:</source>
+            <translation>&amp;Link:</translation>
+        </message>
+        <message>
+            <source>Pro&amp;tocol:</source>
+            <translation>Pro&amp;tocol:</translation>
+        </message>
+        <message>
+            <source>S&amp;tation:</source>
+            <translation>S&amp;tation:</translation>
+        </message>
+        <message>
+            <source>T&amp;imeout:</source>
+            <translation>T&amp;imeout:</translation>
+        </message>
+        <message>
+            <source>R&amp;etries:</source>
+            <translation>R&amp;etries:</translation>
+        </message>
+        <message>
+            <source>C&amp;onnect</source>
+            <translation>C&amp;onnect</translation>
+        </message>
+        <message>
+            <source>PLC</source>
+            <translation>PLC</translation>
+        </message>
+        <message>
+            <source>Give the connection a name.</source>
+            <translation>Give the connection a name.</translation>
+        </message>
+        <message>
+            <source>The baud rate must be a positive number.</source>
+            <translation>The baud rate must be a positive number.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ConnectionListModel</name>
+        <message>
+            <source>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries</source>
+            <translation>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries</translation>
+        </message>
+        <message>
+            <source>Round trip: last %1 ms, median %2 ms, 99% %3 ms</source>
+            <translation>Round trip: last %1 ms, median %2 ms, 99% %3 ms</translation>
+        </message>
+        <message>
+            <source>Station the tools act on; double-click to change</source>
+            <translation>Station the tools act on; double-click to change</translation>
+        </message>
+        <message>
+            <source>Station %1: %2 requests, %3 errors, RTT %4 ms</source>
+            <translation>Station %1: %2 requests, %3 errors, RTT %4 ms</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Link</translation>
+        </message>
+        <message>
+            <source>Station</source>
+            <translation>Station</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>State</translation>
+        </message>
+        <message>
+            <source>Req/s</source>
+            <translation>Req/s</translation>
+        </message>
+        <message>
+            <source>Errors</source>
+            <translation>Errors</translation>
+        </message>
+        <message>
+            <source>RTT</source>
+            <translation>RTT</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CoreText</name>
+        <message>
+            <source>link lost: %1</source>
+            <translation>link lost: %1</translation>
+        </message>
+        <message>
+            <source>%1; next attempt in %2 s</source>
+            <translation>%1; next attempt in %2 s</translation>
+        </message>
+        <message>
+            <source>No answer from station %1 within %2 ms (attempt %3 of %4).</source>
+            <translation>No answer from station %1 within %2 ms (attempt %3 of %4).</translation>
+        </message>
+        <message>
+            <source>No answer within %1 ms.</source>
+            <translation>No answer within %1 ms.</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is not open.</source>
+            <translation>Not sent: the link is not open.</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is down (%1).</source>
+            <translation>Not sent: the link is down (%1).</translation>
+        </message>
+        <message>
+            <source>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</source>
+            <translation>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</translation>
+        </message>
+        <message>
+            <source>Read-only mode: "%1" was not sent. Leave operator mode to change the PLC.</source>
+            <translation>Read-only mode: "%1" was not sent. Leave operator mode to change the PLC.</translation>
+        </message>
+        <message>
+            <source>Cancelled before it was sent.</source>
+            <translation>Cancelled before it was sent.</translation>
+        </message>
+        <message>
+            <source>the session was closed</source>
+            <translation>the session was closed</translation>
+        </message>
+        <message>
+            <source>closed</source>
+            <translation>closed</translation>
+        </message>
+        <message>
+            <source>connecting</source>
+            <translation>connecting</translation>
+        </message>
+        <message>
+            <source>connected</source>
+            <translation>connected</translation>
+        </message>
+        <message>
+            <source>lost</source>
+            <translation>lost</translation>
+        </message>
+        <message>
+            <source>reconnecting</source>
+            <translation>reconnecting</translation>
+        </message>
+        <message>
+            <source>The answer carries fewer values than asked.</source>
+            <translation>The answer carries fewer values than asked.</translation>
+        </message>
+        <message>
+            <source>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</source>
+            <translation>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</translation>
+        </message>
+        <message>
+            <source>Could not write to %1.</source>
+            <translation>Could not write to %1.</translation>
+        </message>
+        <message>
+            <source>no connection to %1 within %2 ms</source>
+            <translation>no connection to %1 within %2 ms</translation>
+        </message>
+        <message>
+            <source>%1 closed the connection</source>
+            <translation>%1 closed the connection</translation>
+        </message>
+        <message>
+            <source>cannot open %1: %2</source>
+            <translation>cannot open %1: %2</translation>
+        </message>
+        <message>
+            <source>Empty address: type an element such as R12 or X0.</source>
+            <translation>Empty address: type an element such as R12 or X0.</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": it must start with an element type such as R, X or DWM.</source>
+            <translation>Invalid address "%1": it must start with an element type such as R, X or DWM.</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": unknown element type "%2" (known: %3).</source>
+            <translation>Invalid address "%1": unknown element type "%2" (known: %3).</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": the element number is missing (e.g. %2).</source>
+            <translation>Invalid address "%1": the element number is missing (e.g. %2).</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": "%2" is not a decimal element number.</source>
+            <translation>Invalid address "%1": "%2" is not a decimal element number.</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": element number too large.</source>
+            <translation>Invalid address "%1": element number too large.</translation>
+        </message>
+        <message>
+            <source>Address %1 is out of range: %2 numbers go from 0 to %3.</source>
+            <translation>Address %1 is out of range: %2 numbers go from 0 to %3.</translation>
+        </message>
+        <message>
+            <source>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</source>
+            <translation>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</translation>
+        </message>
+        <message>
+            <source>%1 elements from %2 run past %3, the last %4.</source>
+            <translation>%1 elements from %2 run past %3, the last %4.</translation>
+        </message>
+        <message>
+            <source>Enter the PLC's IP address or host name.</source>
+            <translation>Enter the PLC's IP address or host name.</translation>
+        </message>
+        <message>
+            <source>Choose a serial port.</source>
+            <translation>Choose a serial port.</translation>
+        </message>
+        <message>
+            <source>Baud rate %1 is out of range (1200 to 921600).</source>
+            <translation>Baud rate %1 is out of range (1200 to 921600).</translation>
+        </message>
+        <message>
+            <source>Timeout %1 ms is out of range (1 to 60000 ms).</source>
+            <translation>Timeout %1 ms is out of range (1 to 60000 ms).</translation>
+        </message>
+        <message>
+            <source>Retries %1 is out of range (0 to 10).</source>
+            <translation>Retries %1 is out of range (0 to 10).</translation>
+        </message>
+        <message>
+            <source>no error</source>
+            <translation>no error</translation>
+        </message>
+        <message>
+            <source>illegal value</source>
+            <translation>illegal value</translation>
+        </message>
+        <message>
+            <source>write prohibited (ROM pack)</source>
+            <translation>write prohibited (ROM pack)</translation>
+        </message>
+        <message>
+            <source>illegal format, or command cannot execute</source>
+            <translation>illegal format, or command cannot execute</translation>
+        </message>
+        <message>
+            <source>cannot RUN: ladder checksum error</source>
+            <translation>cannot RUN: ladder checksum error</translation>
+        </message>
+        <message>
+            <source>cannot RUN: PLC ID differs from ladder ID</source>
+            <translation>cannot RUN: PLC ID differs from ladder ID</translation>
+        </message>
+        <message>
+            <source>cannot RUN: syntax check error</source>
+            <translation>cannot RUN: syntax check error</translation>
+        </message>
+        <message>
+            <source>cannot RUN: function not supported</source>
+            <translation>cannot RUN: function not supported</translation>
+        </message>
+        <message>
+            <source>illegal address</source>
+            <translation>illegal address</translation>
+        </message>
+        <message>
+            <source>unknown error code</source>
+            <translation>unknown error code</translation>
+        </message>
+        <message>
+            <source>bit</source>
+            <translation>bit</translation>
+        </message>
+        <message>
+            <source>unsigned</source>
+            <translation>unsigned</translation>
+        </message>
+        <message>
+            <source>signed</source>
+            <translation>signed</translation>
+        </message>
+        <message>
+            <source>hex</source>
+            <translation>hex</translation>
+        </message>
+        <message>
+            <source>binary</source>
+            <translation>binary</translation>
+        </message>
+        <message>
+            <source>BCD</source>
+            <translation>BCD</translation>
+        </message>
+        <message>
+            <source>float</source>
+            <translation>float</translation>
+        </message>
+        <message>
+            <source>ASCII</source>
+            <translation>ASCII</translation>
+        </message>
+        <message>
+            <source>double</source>
+            <translation>double</translation>
+        </message>
+        <message>
+            <source>auto-detect</source>
+            <translation>auto-detect</translation>
+        </message>
+        <message>
+            <source>%1, %2</source>
+            <extracomment>Link settings: medium (TCP 10.0.0.5:500, COM3 9600 7E1) and protocol.</extracomment>
+            <translation>%1, %2</translation>
+        </message>
+        <message>
+            <source>(no port)</source>
+            <translation>(no port)</translation>
+        </message>
+        <message>
+            <source>PLC error %1: %2</source>
+            <translation>PLC error %1: %2</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>input</source>
+            <translation>input</translation>
+        </message>
+        <message>
+            <source>output relay</source>
+            <translation>output relay</translation>
+        </message>
+        <message>
+            <source>internal relay</source>
+            <translation>internal relay</translation>
+        </message>
+        <message>
+            <source>step relay</source>
+            <translation>step relay</translation>
+        </message>
+        <message>
+            <source>timer contact</source>
+            <translation>timer contact</translation>
+        </message>
+        <message>
+            <source>counter contact</source>
+            <translation>counter contact</translation>
+        </message>
+        <message>
+            <source>inputs as 16-bit word</source>
+            <translation>inputs as 16-bit word</translation>
+        </message>
+        <message>
+            <source>outputs as 16-bit word</source>
+            <translation>outputs as 16-bit word</translation>
+        </message>
+        <message>
+            <source>internal relays as 16-bit word</source>
+            <translation>internal relays as 16-bit word</translation>
+        </message>
+        <message>
+            <source>step relays as 16-bit word</source>
+            <translation>step relays as 16-bit word</translation>
+        </message>
+        <message>
+            <source>timer contacts as 16-bit word</source>
+            <translation>timer contacts as 16-bit word</translation>
+        </message>
+        <message>
+            <source>counter contacts as 16-bit word</source>
+            <translation>counter contacts as 16-bit word</translation>
+        </message>
+        <message>
+            <source>timer register</source>
+            <translation>timer register</translation>
+        </message>
+        <message>
+            <source>counter register</source>
+            <translation>counter register</translation>
+        </message>
+        <message>
+            <source>data register</source>
+            <translation>data register</translation>
+        </message>
+        <message>
+            <source>file register</source>
+            <translation>file register</translation>
+        </message>
+        <message>
+            <source>inputs as 32-bit word</source>
+            <translation>inputs as 32-bit word</translation>
+        </message>
+        <message>
+            <source>outputs as 32-bit word</source>
+            <translation>outputs as 32-bit word</translation>
+        </message>
+        <message>
+            <source>internal relays as 32-bit word</source>
+            <translation>internal relays as 32-bit word</translation>
+        </message>
+        <message>
+            <source>step relays as 32-bit word</source>
+            <translation>step relays as 32-bit word</translation>
+        </message>
+        <message>
+            <source>timer contacts as 32-bit word</source>
+            <translation>timer contacts as 32-bit word</translation>
+        </message>
+        <message>
+            <source>counter contacts as 32-bit word</source>
+            <translation>counter contacts as 32-bit word</translation>
+        </message>
+        <message>
+            <source>timer register pair</source>
+            <translation>timer register pair</translation>
+        </message>
+        <message>
+            <source>counter register pair</source>
+            <translation>counter register pair</translation>
+        </message>
+        <message>
+            <source>data register pair</source>
+            <translation>data register pair</translation>
+        </message>
+        <message>
+            <source>file register pair</source>
+            <translation>file register pair</translation>
+        </message>
+        <message>
+            <source>read brief status</source>
+            <translation>read brief status</translation>
+        </message>
+        <message>
+            <source>RUN/STOP control</source>
+            <translation>RUN/STOP control</translation>
+        </message>
+        <message>
+            <source>single discrete control</source>
+            <translation>single discrete control</translation>
+        </message>
+        <message>
+            <source>read enable/disable flags</source>
+            <translation>read enable/disable flags</translation>
+        </message>
+        <message>
+            <source>read consecutive discretes</source>
+            <translation>read consecutive discretes</translation>
+        </message>
+        <message>
+            <source>write consecutive discretes</source>
+            <translation>write consecutive discretes</translation>
+        </message>
+        <message>
+            <source>read consecutive registers</source>
+            <translation>read consecutive registers</translation>
+        </message>
+        <message>
+            <source>write consecutive registers</source>
+            <translation>write consecutive registers</translation>
+        </message>
+        <message>
+            <source>mixed read</source>
+            <translation>mixed read</translation>
+        </message>
+        <message>
+            <source>mixed write</source>
+            <translation>mixed write</translation>
+        </message>
+        <message>
+            <source>loopback test</source>
+            <translation>loopback test</translation>
+        </message>
+        <message>
+            <source>read program page</source>
+            <translation>read program page</translation>
+        </message>
+        <message>
+            <source>write program page</source>
+            <translation>write program page</translation>
+        </message>
+        <message>
+            <source>read detail status</source>
+            <translation>read detail status</translation>
+        </message>
+        <message>
+            <source>invalid FACON frame (%1 bytes): %2</source>
+            <translation>invalid FACON frame (%1 bytes): %2</translation>
+        </message>
+        <message>
+            <source>bad binary frame (%1 bytes): %2</source>
+            <translation>bad binary frame (%1 bytes): %2</translation>
+        </message>
+        <message>
+            <source>answer: OK</source>
+            <translation>answer: OK</translation>
+        </message>
+        <message>
+            <source>answer: OK, %1 data chars "%2"</source>
+            <translation>answer: OK, %1 data chars "%2"</translation>
+        </message>
+        <message>
+            <source>answer: OK, %1 data bytes: %2</source>
+            <translation>answer: OK, %1 data bytes: %2</translation>
+        </message>
+        <message>
+            <source>answer: no error digit</source>
+            <translation>answer: no error digit</translation>
+        </message>
+        <message>
+            <source>answer: no error byte</source>
+            <translation>answer: no error byte</translation>
+        </message>
+        <message>
+            <source>answer: malformed "%1"</source>
+            <translation>answer: malformed "%1"</translation>
+        </message>
+        <message>
+            <source>answer: echo of %1 bytes</source>
+            <translation>answer: echo of %1 bytes</translation>
+        </message>
+        <message>
+            <source>unknown command, data "%1"</source>
+            <translation>unknown command, data "%1"</translation>
+        </message>
+        <message>
+            <source>%1 chars "%2"</source>
+            <translation>%1 chars "%2"</translation>
+        </message>
+        <message>
+            <source>STOP, or answer: no error</source>
+            <translation>STOP, or answer: no error</translation>
+        </message>
+        <message>
+            <source>link lost</source>
+            <translation>link lost</translation>
+        </message>
+        <message>
+            <source>stale bytes discarded</source>
+            <translation>stale bytes discarded</translation>
+        </message>
+        <message>
+            <source>received outside an answer</source>
+            <translation>received outside an answer</translation>
+        </message>
+        <message>
+            <source>unexpected bytes</source>
+            <translation>unexpected bytes</translation>
+        </message>
+        <message>
+            <source>no query pending</source>
+            <translation>no query pending</translation>
+        </message>
+        <message>
+            <source>echo of the query</source>
+            <translation>echo of the query</translation>
+        </message>
+        <message>
+            <source>raw answer</source>
+            <translation>raw answer</translation>
+        </message>
+        <message>
+            <source>raw frame</source>
+            <translation>raw frame</translation>
+        </message>
+        <message>
+            <source>no complete frame</source>
+            <translation>no complete frame</translation>
+        </message>
+        <message>
+            <source>more than %1 bytes: rest not read</source>
+            <translation>more than %1 bytes: rest not read</translation>
+        </message>
+        <message>
+            <source>no answer within %1 ms</source>
+            <translation>no answer within %1 ms</translation>
+        </message>
+        <message>
+            <source>protocol detected: %1</source>
+            <translation>protocol detected: %1</translation>
+        </message>
+        <message>
+            <source>%1 bytes, first %2 kept</source>
+            <translation>%1 bytes, first %2 kept</translation>
+        </message>
+        <message>
+            <source>answer: error %1 (%2)</source>
+            <translation>answer: error %1 (%2)</translation>
+        </message>
+        <message>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
+        </message>
+        <message>
+            <source>station %1, %2 %3</source>
+            <translation>station %1, %2 %3</translation>
+        </message>
+        <message>
+            <source>%1 elements%2</source>
+            <translation>%1 elements%2</translation>
+        </message>
+        <message>
+            <source>page %1</source>
+            <translation>page %1</translation>
+        </message>
+        <message>
+            <source>page %1, 64 words</source>
+            <translation>page %1, 64 words</translation>
+        </message>
+        <message>
+            <source>disable %1</source>
+            <translation>disable %1</translation>
+        </message>
+        <message>
+            <source>enable %1</source>
+            <translation>enable %1</translation>
+        </message>
+        <message>
+            <source>set %1</source>
+            <translation>set %1</translation>
+        </message>
+        <message>
+            <source>reset %1</source>
+            <translation>reset %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::DemoSimulator</name>
+        <message>
+            <source>Demo</source>
+            <translation>Demo</translation>
+        </message>
+        <message>
+            <source>Scan counter</source>
+            <translation>Scan counter</translation>
+        </message>
+        <message>
+            <source>counts ladder scans</source>
+            <translation>counts ladder scans</translation>
+        </message>
+        <message>
+            <source>Sine</source>
+            <translation>Sine</translation>
+        </message>
+        <message>
+            <source>±1000, 10 s period</source>
+            <translation>±1000, 10 s period</translation>
+        </message>
+        <message>
+            <source>Blink</source>
+            <translation>Blink</translation>
+        </message>
+        <message>
+            <source>1 Hz</source>
+            <translation>1 Hz</translation>
+        </message>
+        <message>
+            <source>Walking bit %1</source>
+            <translation>Walking bit %1</translation>
+        </message>
+        <message>
+            <source>one step per 250 ms</source>
+            <translation>one step per 250 ms</translation>
+        </message>
+        <message>
+            <source>Ramp</source>
+            <translation>Ramp</translation>
+        </message>
+        <message>
+            <source>0..99999, one step per 10 ms</source>
+            <translation>0..99999, one step per 10 ms</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::DiscreteControlBatch</name>
+        <message>
+            <source>Disable</source>
+            <translation>Disable</translation>
+        </message>
+        <message>
+            <source>Enable</source>
+            <translation>Enable</translation>
+        </message>
+        <message>
+            <source>Set ON</source>
+            <translation>Set ON</translation>
+        </message>
+        <message>
+            <source>Reset OFF</source>
+            <translation>Reset OFF</translation>
+        </message>
+        <message>
+            <source>Disabled</source>
+            <translation>Disabled</translation>
+        </message>
+        <message>
+            <source>Enabled</source>
+            <translation>Enabled</translation>
+        </message>
+        <message>
+            <source>Set ON</source>
+            <comment>past</comment>
+            <extracomment>Past tense, as in "Set ON 3 points."</extracomment>
+            <translation>Set ON</translation>
+        </message>
+        <message>
+            <source>Reset OFF</source>
+            <comment>past</comment>
+            <extracomment>Past tense, as in "Reset OFF 3 points."</extracomment>
+            <translation>Reset OFF</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
+        </message>
+        <message>
+            <source>%1: %2 done, %3 failed — %4</source>
+            <translation>%1: %2 done, %3 failed — %4</translation>
+        </message>
+        <message>
+            <source> (and %1 more)</source>
+            <translation> (and %1 more)</translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 %n points (%2, %3 … %4)</source>
+            <extracomment>%1 is the action (Disable, Set ON...), %2..%4 the first, second and last point.</extracomment>
+            <translation>
+                <numerusform>%1 %n points (%2, %3 … %4)</numerusform>
+                <numerusform>%1 %n points (%2, %3 … %4)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1 1 point.</source>
+            <extracomment>%1 is the past action (Disabled, Enabled, Set ON, Reset OFF).</extracomment>
+            <translation>%1 1 point.</translation>
+        </message>
+        <message>
+            <source>%1 %2 points.</source>
+            <translation>%1 %2 points.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::DiscreteRange</name>
+        <message>
+            <source>“%1” is not a range of discretes; write it like Y0-255 or M100.</source>
+            <translation>“%1” is not a range of discretes; write it like Y0-255 or M100.</translation>
+        </message>
+        <message>
+            <source>“%1” is not a discrete type; use X, Y, M, S, T or C.</source>
+            <translation>“%1” is not a discrete type; use X, Y, M, S, T or C.</translation>
+        </message>
+        <message>
+            <source>A range must stay within one type: %1</source>
+            <translation>A range must stay within one type: %1</translation>
+        </message>
+        <message>
+            <source>Point number too large in %1</source>
+            <translation>Point number too large in %1</translation>
+        </message>
+        <message>
+            <source>The range %1 ends before it starts.</source>
+            <translation>The range %1 ends before it starts.</translation>
+        </message>
+        <message>
+            <source>No range given; write for example X0-255, Y0-255.</source>
+            <translation>No range given; write for example X0-255, Y0-255.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::DiscreteTableModel</name>
+        <message>
+            <source>ON</source>
+            <translation>ON</translation>
+        </message>
+        <message>
+            <source>OFF</source>
+            <translation>OFF</translation>
+        </message>
+        <message>
+            <source>disabled (forced)</source>
+            <translation>disabled (forced)</translation>
+        </message>
+        <message>
+            <source>enabled</source>
+            <translation>enabled</translation>
+        </message>
+        <message>
+            <source>Point</source>
+            <translation>Point</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>State</translation>
+        </message>
+        <message>
+            <source>Forcing</source>
+            <translation>Forcing</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ForcedPointsView</name>
+        <message>
+            <source>Ranges:</source>
+            <translation>Ranges:</translation>
+        </message>
+        <message>
+            <source>Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999</source>
+            <translation>Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999</translation>
+        </message>
+        <message>
+            <source>Scan</source>
+            <translation>Scan</translation>
+        </message>
+        <message>
+            <source>Enable all</source>
+            <translation>Enable all</translation>
+        </message>
+        <message>
+            <source>Give every listed point back to the ladder</source>
+            <translation>Give every listed point back to the ladder</translation>
+        </message>
+        <message>
+            <source>Press Scan to list the forced points.</source>
+            <translation>Press Scan to list the forced points.</translation>
+        </message>
+        <message>
+            <source>No connection.</source>
+            <translation>No connection.</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: forcing is disabled.</source>
+            <translation>Read-only (operator) mode: forcing is disabled.</translation>
+        </message>
+        <message>
+            <source>Scanning %1 …</source>
+            <translation>Scanning %1 …</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>Scan incomplete — %1</source>
+            <translation>Scan incomplete — %1</translation>
+        </message>
+        <message>
+            <source>No forced points in %1.</source>
+            <translation>No forced points in %1.</translation>
+        </message>
+        <message>
+            <source>1 forced point: enable it before leaving the site.</source>
+            <translation>1 forced point: enable it before leaving the site.</translation>
+        </message>
+        <message>
+            <source>%1 forced points: enable them before leaving the site.</source>
+            <translation>%1 forced points: enable them before leaving the site.</translation>
+        </message>
+        <message>
+            <source>%1 on %2?</source>
+            <translation>%1 on %2?</translation>
+        </message>
+        <message>
+            <source>Enable all forced points</source>
+            <translation>Enable all forced points</translation>
+        </message>
+        <message>
+            <source>Enable all cancelled; the points stay forced.</source>
+            <translation>Enable all cancelled; the points stay forced.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ForcingPanel</name>
+        <message>
+            <source>Show</source>
+            <translation>Show</translation>
+        </message>
+        <message>
+            <source>Refresh every second</source>
+            <translation>Refresh every second</translation>
+        </message>
+        <message>
+            <source>Type:</source>
+            <translation>Type:</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>From:</translation>
+        </message>
+        <message>
+            <source>Points:</source>
+            <translation>Points:</translation>
+        </message>
+        <message>
+            <source>Disable (force)</source>
+            <translation>Disable (force)</translation>
+        </message>
+        <message>
+            <source>Enable</source>
+            <translation>Enable</translation>
+        </message>
+        <message>
+            <source>Set ON</source>
+            <translation>Set ON</translation>
+        </message>
+        <message>
+            <source>Reset OFF</source>
+            <translation>Reset OFF</translation>
+        </message>
+        <message>
+            <source>Discretes</source>
+            <translation>Discretes</translation>
+        </message>
+        <message>
+            <source>Forced points</source>
+            <translation>Forced points</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>Only X, Y, M, S, T and C points can be forced.</source>
+            <translation>Only X, Y, M, S, T and C points can be forced.</translation>
+        </message>
+        <message>
+            <source>Could not read: %1</source>
+            <translation>Could not read: %1</translation>
+        </message>
+        <message>
+            <source>Select the points first (Ctrl/Shift-click for several).</source>
+            <translation>Select the points first (Ctrl/Shift-click for several).</translation>
+        </message>
+        <message>
+            <source>%1 on %2?</source>
+            <translation>%1 on %2?</translation>
+        </message>
+        <message>
+            <source>Forcing</source>
+            <translation>Forcing</translation>
+        </message>
+        <message>
+            <source>Cancelled: nothing sent.</source>
+            <translation>Cancelled: nothing sent.</translation>
+        </message>
+        <message>
+            <source>%1 …</source>
+            <translation>%1 …</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: forcing is disabled.</source>
+            <translation>Read-only (operator) mode: forcing is disabled.</translation>
+        </message>
+        <message>
+            <source>%1 – %2</source>
+            <translation>%1 – %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::FrameText</name>
+        <message>
+            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
+            <translation>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame's bytes in hex.</source>
+            <translation>Nothing to send: type the frame's bytes in hex.</translation>
+        </message>
+        <message>
+            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
+            <translation>Odd number of hex digits: each byte needs two (0C, not C).</translation>
+        </message>
+        <message>
+            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
+            <translation>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame.</source>
+            <translation>Nothing to send: type the frame.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::LanguageMenu</name>
+        <message>
+            <source>&amp;Language</source>
+            <translation>&amp;Language</translation>
+        </message>
+        <message>
+            <source>System</source>
+            <translation>System</translation>
+        </message>
+        <message>
+            <source>Language</source>
+            <translation>Language</translation>
+        </message>
+        <message>
+            <source>The new language applies when FATEK Studio is started again.</source>
+            <translation>The new language applies when FATEK Studio is started again.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::LoopbackDialog</name>
+        <message>
+            <source>Loopback test</source>
+            <translation>Loopback test</translation>
+        </message>
+        <message>
+            <source>Text</source>
+            <translation>Text</translation>
+        </message>
+        <message>
+            <source>Hex bytes</source>
+            <translation>Hex bytes</translation>
+        </message>
+        <message>
+            <source>Generated pattern</source>
+            <translation>Generated pattern</translation>
+        </message>
+        <message>
+            <source> bytes</source>
+            <translation> bytes</translation>
+        </message>
+        <message>
+            <source>Test data:</source>
+            <translation>Test data:</translation>
+        </message>
+        <message>
+            <source>Repeat:</source>
+            <translation>Repeat:</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>Interval:</source>
+            <translation>Interval:</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>Start</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stop</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>Stopped: the target changed.</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>Running %1 loopback tests of %2 bytes …</source>
+            <translation>Running %1 loopback tests of %2 bytes …</translation>
+        </message>
+        <message>
+            <source>Stopped after %1 runs.</source>
+            <translation>Stopped after %1 runs.</translation>
+        </message>
+        <message>
+            <source>%1  OK        %2 ms</source>
+            <translation>%1  OK        %2 ms</translation>
+        </message>
+        <message>
+            <source>%1  MISMATCH  %2 ms: got %3</source>
+            <translation>%1  MISMATCH  %2 ms: got %3</translation>
+        </message>
+        <message>
+            <source>%1  TIMEOUT   %2</source>
+            <translation>%1  TIMEOUT   %2</translation>
+        </message>
+        <message>
+            <source>%1  ERROR     %2</source>
+            <translation>%1  ERROR     %2</translation>
+        </message>
+        <message>
+            <source>Done.</source>
+            <translation>Done.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::LoopbackStats</name>
+        <message>
+            <source>%1 runs: %2 OK, %3 mismatch, %4 timeout, %5 other errors</source>
+            <translation>%1 runs: %2 OK, %3 mismatch, %4 timeout, %5 other errors</translation>
+        </message>
+        <message>
+            <source> — round trip min %1 / mean %2 / max %3 / p99 %4 ms</source>
+            <translation> — round trip min %1 / mean %2 / max %3 / p99 %4 ms</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::MainWindow</name>
+        <message>
+            <source>FATEK Studio — Operator mode (read-only)</source>
+            <translation>FATEK Studio — Operator mode (read-only)</translation>
+        </message>
+        <message>
+            <source>FATEK Studio</source>
+            <translation>FATEK Studio</translation>
+        </message>
+        <message>
+            <source>Connections</source>
+            <translation>Connections</translation>
+        </message>
+        <message>
+            <source>No connection</source>
+            <translation>No connection</translation>
+        </message>
+        <message>
+            <source>Operator mode (read-only)</source>
+            <translation>Operator mode (read-only)</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>%1: %2 (%3)</source>
+            <translation>%1: %2 (%3)</translation>
+        </message>
+        <message>
+            <source>&amp;File</source>
+            <translation>&amp;File</translation>
+        </message>
+        <message>
+            <source>Main</source>
+            <translation>Main</translation>
+        </message>
+        <message>
+            <source>&amp;New Connection…</source>
+            <translation>&amp;New Connection…</translation>
+        </message>
+        <message>
+            <source>&amp;Recent Connections</source>
+            <translation>&amp;Recent Connections</translation>
+        </message>
+        <message>
+            <source>&amp;Close Connection</source>
+            <translation>&amp;Close Connection</translation>
+        </message>
+        <message>
+            <source>New &amp;Watch Table</source>
+            <translation>New &amp;Watch Table</translation>
+        </message>
+        <message>
+            <source>&amp;Open Watch List…</source>
+            <translation>&amp;Open Watch List…</translation>
+        </message>
+        <message>
+            <source>&amp;Save Watch List…</source>
+            <translation>&amp;Save Watch List…</translation>
+        </message>
+        <message>
+            <source>&amp;Import CSV…</source>
+            <translation>&amp;Import CSV…</translation>
+        </message>
+        <message>
+            <source>Reopen Last Watch List at Start</source>
+            <translation>Reopen Last Watch List at Start</translation>
+        </message>
+        <message>
+            <source>&amp;Quit</source>
+            <translation>&amp;Quit</translation>
+        </message>
+        <message>
+            <source>&amp;Watch</source>
+            <translation>&amp;Watch</translation>
+        </message>
+        <message>
+            <source>&amp;Add Items…</source>
+            <translation>&amp;Add Items…</translation>
+        </message>
+        <message>
+            <source>&amp;Pause Table</source>
+            <translation>&amp;Pause Table</translation>
+        </message>
+        <message>
+            <source>&amp;Close Table</source>
+            <translation>&amp;Close Table</translation>
+        </message>
+        <message>
+            <source>&amp;View</source>
+            <translation>&amp;View</translation>
+        </message>
+        <message>
+            <source>&amp;Tools</source>
+            <translation>&amp;Tools</translation>
+        </message>
+        <message>
+            <source>&amp;Help</source>
+            <translation>&amp;Help</translation>
+        </message>
+        <message>
+            <source>&amp;About FATEK Studio</source>
+            <translation>&amp;About FATEK Studio</translation>
+        </message>
+        <message>
+            <source>About FATEK Studio</source>
+            <translation>About FATEK Studio</translation>
+        </message>
+        <message>
+            <source>FATEK Studio %1
+Commissioning and monitoring tool for FATEK PLCs.</source>
+            <translation>FATEK Studio %1
+Commissioning and monitoring tool for FATEK PLCs.</translation>
+        </message>
+        <message>
+            <source>PLC Control</source>
+            <translation>PLC Control</translation>
+        </message>
+        <message>
+            <source>Forcing</source>
+            <translation>Forcing</translation>
+        </message>
+        <message>
+            <source>Raw Console</source>
+            <translation>Raw Console</translation>
+        </message>
+        <message>
+            <source>&amp;Loopback Test…</source>
+            <translation>&amp;Loopback Test…</translation>
+        </message>
+        <message>
+            <source>(commissioning tools not built)</source>
+            <translation>(commissioning tools not built)</translation>
+        </message>
+        <message>
+            <source>Connecting to %1 (%2)…</source>
+            <translation>Connecting to %1 (%2)…</translation>
+        </message>
+        <message>
+            <source>%1 — %2</source>
+            <translation>%1 — %2</translation>
+        </message>
+        <message>
+            <source>Watch %1</source>
+            <translation>Watch %1</translation>
+        </message>
+        <message>
+            <source>Rename Watch Table</source>
+            <translation>Rename Watch Table</translation>
+        </message>
+        <message>
+            <source>Name:</source>
+            <translation>Name:</translation>
+        </message>
+        <message>
+            <source>The last watch list %1 cannot be loaded: %2</source>
+            <translation>The last watch list %1 cannot be loaded: %2</translation>
+        </message>
+        <message>
+            <source>Reopened %1.</source>
+            <translation>Reopened %1.</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>Cannot open %1: %2</translation>
+        </message>
+        <message>
+            <source>Open Watch List</source>
+            <translation>Open Watch List</translation>
+        </message>
+        <message>
+            <source>Watch lists (*.json);;All files (*)</source>
+            <translation>Watch lists (*.json);;All files (*)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be loaded:
+%2</source>
+            <translation>%1 cannot be loaded:
+%2</translation>
+        </message>
+        <message>
+            <source>Loaded %1.</source>
+            <translation>Loaded %1.</translation>
+        </message>
+        <message>
+            <source>Save Watch List</source>
+            <translation>Save Watch List</translation>
+        </message>
+        <message>
+            <source>Watch lists (*.json)</source>
+            <translation>Watch lists (*.json)</translation>
+        </message>
+        <message>
+            <source>Saved %1.</source>
+            <translation>Saved %1.</translation>
+        </message>
+        <message>
+            <source>Import CSV</source>
+            <translation>Import CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv *.txt);;All files (*)</source>
+            <translation>CSV files (*.csv *.txt);;All files (*)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be imported:
+%2</source>
+            <translation>%1 cannot be imported:
+%2</translation>
+        </message>
+        <message>
+            <source>Imported %1.</source>
+            <translation>Imported %1.</translation>
+        </message>
+        <message>
+            <source>The demo simulator could not start: %1</source>
+            <translation>The demo simulator could not start: %1</translation>
+        </message>
+        <message>
+            <source>Demo PLC</source>
+            <translation>Demo PLC</translation>
+        </message>
+        <message>
+            <source>Starting the demo simulator…</source>
+            <translation>Starting the demo simulator…</translation>
+        </message>
+        <message>
+            <source>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</source>
+            <translation>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</translation>
+        </message>
+        <message>
+            <source>Trend</source>
+            <translation>Trend</translation>
+        </message>
+        <message>
+            <source>&amp;Trend</source>
+            <translation>&amp;Trend</translation>
+        </message>
+        <message>
+            <source>Start &amp;Data Logging…</source>
+            <translation>Start &amp;Data Logging…</translation>
+        </message>
+        <message>
+            <source>Write every value of the current watch table to a CSV file with timestamps</source>
+            <translation>Write every value of the current watch table to a CSV file with timestamps</translation>
+        </message>
+        <message>
+            <source>Sto&amp;p Data Logging</source>
+            <translation>Sto&amp;p Data Logging</translation>
+        </message>
+        <message>
+            <source>Data logging stopped: %1</source>
+            <translation>Data logging stopped: %1</translation>
+        </message>
+        <message>
+            <source>Data Logging</source>
+            <translation>Data Logging</translation>
+        </message>
+        <message>
+            <source>Data logging stopped:
+%1</source>
+            <translation>Data logging stopped:
+%1</translation>
+        </message>
+        <message>
+            <source>No watch table to log.</source>
+            <translation>No watch table to log.</translation>
+        </message>
+        <message>
+            <source>Logging %1 to %2.</source>
+            <translation>Logging %1 to %2.</translation>
+        </message>
+        <message numerus="yes">
+            <source>Logging stopped: %n row(s) in %1.</source>
+            <translation>
+                <numerusform>Logging stopped: %n row in %1.</numerusform>
+                <numerusform>Logging stopped: %n rows in %1.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Add items to a watch table first: logging writes the rows of the current table.</source>
+            <translation>Add items to a watch table first: logging writes the rows of the current table.</translation>
+        </message>
+        <message>
+            <source>Log Watch Table to CSV</source>
+            <translation>Log Watch Table to CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Logging to %1 (%n row(s))</source>
+            <translation>
+                <numerusform>Logging to %1 (%n row)</numerusform>
+                <numerusform>Logging to %1 (%n rows)</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::OperatorMode</name>
+        <message>
+            <source>&amp;Operator Mode (Read-Only)</source>
+            <translation>&amp;Operator Mode (Read-Only)</translation>
+        </message>
+        <message>
+            <source>Operator Mode &amp;Password…</source>
+            <translation>Operator Mode &amp;Password…</translation>
+        </message>
+        <message>
+            <source>Started with --read-only: operator mode stays on until the program is restarted without it.</source>
+            <translation>Started with --read-only: operator mode stays on until the program is restarted without it.</translation>
+        </message>
+        <message>
+            <source>Operator-mode password:</source>
+            <translation>Operator-mode password:</translation>
+        </message>
+        <message>
+            <source>Wrong operator-mode password: operator mode stays on.</source>
+            <translation>Wrong operator-mode password: operator mode stays on.</translation>
+        </message>
+        <message>
+            <source>Leave operator mode? Writes, forcing, RUN/STOP and raw frames will reach the PLC again.</source>
+            <translation>Leave operator mode? Writes, forcing, RUN/STOP and raw frames will reach the PLC again.</translation>
+        </message>
+        <message>
+            <source>Operator mode on: the PLC is read-only.</source>
+            <translation>Operator mode on: the PLC is read-only.</translation>
+        </message>
+        <message>
+            <source>Operator mode off.</source>
+            <translation>Operator mode off.</translation>
+        </message>
+        <message>
+            <source>Operator Mode</source>
+            <translation>Operator Mode</translation>
+        </message>
+        <message>
+            <source>New operator-mode password (empty: none):</source>
+            <translation>New operator-mode password (empty: none):</translation>
+        </message>
+        <message>
+            <source>Repeat the password:</source>
+            <translation>Repeat the password:</translation>
+        </message>
+        <message>
+            <source>The passwords differ: nothing changed.</source>
+            <translation>The passwords differ: nothing changed.</translation>
+        </message>
+        <message>
+            <source>Operator-mode password removed.</source>
+            <translation>Operator-mode password removed.</translation>
+        </message>
+        <message>
+            <source>Operator-mode password set.</source>
+            <translation>Operator-mode password set.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::PlcControlPanel</name>
+        <message>
+            <source>PLC status</source>
+            <translation>PLC status</translation>
+        </message>
+        <message>
+            <source>RUN</source>
+            <translation>RUN</translation>
+        </message>
+        <message>
+            <source>Battery low</source>
+            <translation>Battery low</translation>
+        </message>
+        <message>
+            <source>Ladder checksum error</source>
+            <translation>Ladder checksum error</translation>
+        </message>
+        <message>
+            <source>Memory card / ROM pack</source>
+            <translation>Memory card / ROM pack</translation>
+        </message>
+        <message>
+            <source>Watchdog error</source>
+            <translation>Watchdog error</translation>
+        </message>
+        <message>
+            <source>ID set</source>
+            <translation>ID set</translation>
+        </message>
+        <message>
+            <source>Emergency stop</source>
+            <translation>Emergency stop</translation>
+        </message>
+        <message>
+            <source>STOP</source>
+            <translation>STOP</translation>
+        </message>
+        <message>
+            <source>Refresh</source>
+            <translation>Refresh</translation>
+        </message>
+        <message>
+            <source>Detail status (53)</source>
+            <translation>Detail status (53)</translation>
+        </message>
+        <message>
+            <source>Model:</source>
+            <translation>Model:</translation>
+        </message>
+        <message>
+            <source>I/O points:</source>
+            <translation>I/O points:</translation>
+        </message>
+        <message>
+            <source>OS version:</source>
+            <translation>OS version:</translation>
+        </message>
+        <message>
+            <source>Program size:</source>
+            <translation>Program size:</translation>
+        </message>
+        <message>
+            <source>Digital inputs / outputs:</source>
+            <translation>Digital inputs / outputs:</translation>
+        </message>
+        <message>
+            <source>Analog inputs / outputs:</source>
+            <translation>Analog inputs / outputs:</translation>
+        </message>
+        <message>
+            <source>M / S / L relays:</source>
+            <translation>M / S / L relays:</translation>
+        </message>
+        <message>
+            <source>R / D registers:</source>
+            <translation>R / D registers:</translation>
+        </message>
+        <message>
+            <source>Timers / counters:</source>
+            <translation>Timers / counters:</translation>
+        </message>
+        <message>
+            <source>Raw bytes:</source>
+            <translation>Raw bytes:</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: RUN/STOP is disabled.</source>
+            <translation>Read-only (operator) mode: RUN/STOP is disabled.</translation>
+        </message>
+        <message>
+            <source>Put %1 into %2?</source>
+            <translation>Put %1 into %2?</translation>
+        </message>
+        <message>
+            <source>PLC %1</source>
+            <translation>PLC %1</translation>
+        </message>
+        <message>
+            <source>%1 not sent: cancelled.</source>
+            <translation>%1 not sent: cancelled.</translation>
+        </message>
+        <message>
+            <source>Sending %1…</source>
+            <translation>Sending %1…</translation>
+        </message>
+        <message>
+            <source>%1 accepted by station %2.</source>
+            <translation>%1 accepted by station %2.</translation>
+        </message>
+        <message>
+            <source>%1 refused: %2</source>
+            <translation>%1 refused: %2</translation>
+        </message>
+        <message>
+            <source>Status unknown: %1</source>
+            <translation>Status unknown: %1</translation>
+        </message>
+        <message>
+            <source>the PLC sent no status bytes.</source>
+            <translation>the PLC sent no status bytes.</translation>
+        </message>
+        <message>
+            <source>Status read at %1.</source>
+            <translation>Status read at %1.</translation>
+        </message>
+        <message>
+            <source>Not available: %1</source>
+            <translation>Not available: %1</translation>
+        </message>
+        <message>
+            <source>Mode unknown</source>
+            <translation>Mode unknown</translation>
+        </message>
+        <message>
+            <source>(no bytes)</source>
+            <translation>(no bytes)</translation>
+        </message>
+        <message>
+            <source>not documented for the binary protocol (see raw bytes)</source>
+            <translation>not documented for the binary protocol (see raw bytes)</translation>
+        </message>
+        <message>
+            <source>main unit MA/MU</source>
+            <translation>main unit MA/MU</translation>
+        </message>
+        <message>
+            <source>main unit MC</source>
+            <translation>main unit MC</translation>
+        </message>
+        <message>
+            <source>main unit type %1</source>
+            <translation>main unit type %1</translation>
+        </message>
+        <message>
+            <source>code %1</source>
+            <translation>code %1</translation>
+        </message>
+        <message>
+            <source>code 0x%1</source>
+            <translation>code 0x%1</translation>
+        </message>
+        <message>
+            <source>%1 words</source>
+            <translation>%1 words</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::RawConsole</name>
+        <message>
+            <source>All directions</source>
+            <translation>All directions</translation>
+        </message>
+        <message>
+            <source>Sent</source>
+            <translation>Sent</translation>
+        </message>
+        <message>
+            <source>Received</source>
+            <translation>Received</translation>
+        </message>
+        <message>
+            <source>Events</source>
+            <translation>Events</translation>
+        </message>
+        <message>
+            <source>All stations</source>
+            <translation>All stations</translation>
+        </message>
+        <message>
+            <source>Station </source>
+            <translation>Station </translation>
+        </message>
+        <message>
+            <source>All commands</source>
+            <translation>All commands</translation>
+        </message>
+        <message>
+            <source>Errors only</source>
+            <translation>Errors only</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <source>Clear</source>
+            <translation>Clear</translation>
+        </message>
+        <message>
+            <source>Copy</source>
+            <translation>Copy</translation>
+        </message>
+        <message>
+            <source>Save…</source>
+            <translation>Save…</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection to see its traffic.</source>
+            <translation>No connection: choose a connection to see its traffic.</translation>
+        </message>
+        <message>
+            <source>Traffic of “%1” (sending to station %2)</source>
+            <translation>Traffic of “%1” (sending to station %2)</translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>Resume</translation>
+        </message>
+        <message>
+            <source>Paused: new frames are kept in the log and shown on Resume.</source>
+            <translation>Paused: new frames are kept in the log and shown on Resume.</translation>
+        </message>
+        <message>
+            <source>%1 older frames were dropped from the log while paused.</source>
+            <translation>%1 older frames were dropped from the log while paused.</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>Cannot write %1: %2</translation>
+        </message>
+        <message>
+            <source>Save traffic</source>
+            <translation>Save traffic</translation>
+        </message>
+        <message>
+            <source>Tab-separated text (*.tsv *.txt)</source>
+            <translation>Tab-separated text (*.tsv *.txt)</translation>
+        </message>
+        <message>
+            <source>Saved to %1.</source>
+            <translation>Saved to %1.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::RawSendBar</name>
+        <message>
+            <source>Hex</source>
+            <translation>Hex</translation>
+        </message>
+        <message>
+            <source>ASCII</source>
+            <translation>ASCII</translation>
+        </message>
+        <message>
+            <source>Send</source>
+            <translation>Send</translation>
+        </message>
+        <message>
+            <source>No connection.</source>
+            <translation>No connection.</translation>
+        </message>
+        <message>
+            <source>Add STX, LRC, ETX (FACON)</source>
+            <translation>Add STX, LRC, ETX (FACON)</translation>
+        </message>
+        <message>
+            <source>Add header, length, CRC (binary)</source>
+            <translation>Add header, length, CRC (binary)</translation>
+        </message>
+        <message>
+            <source>body in hex, e.g. 30 31 34 30</source>
+            <translation>body in hex, e.g. 30 31 34 30</translation>
+        </message>
+        <message>
+            <source>body, e.g. 014603R00012</source>
+            <translation>body, e.g. 014603R00012</translation>
+        </message>
+        <message>
+            <source>payload, e.g. 01 46 03 52 00 0C</source>
+            <translation>payload, e.g. 01 46 03 52 00 0C</translation>
+        </message>
+        <message>
+            <source>payload as ASCII</source>
+            <translation>payload as ASCII</translation>
+        </message>
+        <message>
+            <source>whole frame in hex, e.g. 02 30 31 34 30 43 37 03</source>
+            <translation>whole frame in hex, e.g. 02 30 31 34 30 43 37 03</translation>
+        </message>
+        <message>
+            <source>whole frame, e.g. &lt;STX&gt;0140C7&lt;ETX&gt;</source>
+            <translation>whole frame, e.g. &lt;STX&gt;0140C7&lt;ETX&gt;</translation>
+        </message>
+        <message>
+            <source>command %1 to station %2</source>
+            <translation>command %1 to station %2</translation>
+        </message>
+        <message>
+            <source>an unrecognized frame</source>
+            <translation>an unrecognized frame</translation>
+        </message>
+        <message>
+            <source>Send %1 (%2) on %3? It may change the PLC.</source>
+            <translation>Send %1 (%2) on %3? It may change the PLC.</translation>
+        </message>
+        <message>
+            <source>Send raw frame</source>
+            <translation>Send raw frame</translation>
+        </message>
+        <message>
+            <source>Cancelled: nothing sent.</source>
+            <translation>Cancelled: nothing sent.</translation>
+        </message>
+        <message>
+            <source>Sent    %1
+waiting for the answer …</source>
+            <translation>Sent    %1
+waiting for the answer …</translation>
+        </message>
+        <message>
+            <source>Sent    %1</source>
+            <translation>Sent    %1</translation>
+        </message>
+        <message>
+            <source>%1
+Failed  %2</source>
+            <translation>%1
+Failed  %2</translation>
+        </message>
+        <message>
+            <source>%1
+Answer  %2
+        %3
+Meaning %4</source>
+            <translation>%1
+Answer  %2
+        %3
+Meaning %4</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::StatusIndicator</name>
+        <message>
+            <source>on</source>
+            <translation>on</translation>
+        </message>
+        <message>
+            <source>off</source>
+            <translation>off</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>unknown</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TableLogger</name>
+        <message>
+            <source>No watch table to log.</source>
+            <translation>No watch table to log.</translation>
+        </message>
+        <message>
+            <source>removed from the table</source>
+            <translation>removed from the table</translation>
+        </message>
+        <message>
+            <source>format changed</source>
+            <translation>format changed</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ToolConfirmation</name>
+        <message>
+            <source>station %1 on “%2”</source>
+            <extracomment>How every question names its target: station 1 on “Line 3 (TCP 10.0.0.5:500)”.</extracomment>
+            <translation>station %1 on “%2”</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrafficLogModel</name>
+        <message>
+            <source>sent</source>
+            <translation>sent</translation>
+        </message>
+        <message>
+            <source>received</source>
+            <translation>received</translation>
+        </message>
+        <message>
+            <source>event</source>
+            <translation>event</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>Time</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>Direction</translation>
+        </message>
+        <message>
+            <source>Station</source>
+            <translation>Station</translation>
+        </message>
+        <message>
+            <source>Bytes (hex)</source>
+            <translation>Bytes (hex)</translation>
+        </message>
+        <message>
+            <source>ASCII</source>
+            <translation>ASCII</translation>
+        </message>
+        <message>
+            <source>Meaning</source>
+            <translation>Meaning</translation>
+        </message>
+        <message>
+            <source>Error</source>
+            <translation>Error</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendView</name>
+        <message>
+            <source>Time</source>
+            <translation>Time</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Value</translation>
+        </message>
+        <message>
+            <source>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis</source>
+            <translation>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <source>Freeze the trend (no new points until resumed)</source>
+            <translation>Freeze the trend (no new points until resumed)</translation>
+        </message>
+        <message>
+            <source>How much time the trend shows</source>
+            <translation>How much time the trend shows</translation>
+        </message>
+        <message>
+            <source>10 s</source>
+            <translation>10 s</translation>
+        </message>
+        <message>
+            <source>1 min</source>
+            <translation>1 min</translation>
+        </message>
+        <message>
+            <source>10 min</source>
+            <translation>10 min</translation>
+        </message>
+        <message>
+            <source>1 h</source>
+            <translation>1 h</translation>
+        </message>
+        <message>
+            <source>Reset Zoom</source>
+            <translation>Reset Zoom</translation>
+        </message>
+        <message>
+            <source>Show the whole time window again and follow the present</source>
+            <translation>Show the whole time window again and follow the present</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>Remove</translation>
+        </message>
+        <message>
+            <source>Remove the selected item from the trend</source>
+            <translation>Remove the selected item from the trend</translation>
+        </message>
+        <message>
+            <source>&amp;Remove from Trend</source>
+            <translation>&amp;Remove from Trend</translation>
+        </message>
+        <message>
+            <source>Select rows in a watch table and choose "Add to Trend" from its context menu.</source>
+            <translation>Select rows in a watch table and choose "Add to Trend" from its context menu.</translation>
+        </message>
+        <message>
+            <source>Window:</source>
+            <translation>Window:</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1 (%2)</translation>
+        </message>
+        <message>
+            <source>No watch table row to trend.</source>
+            <translation>No watch table row to trend.</translation>
+        </message>
+        <message>
+            <source>%1 is already in the trend.</source>
+            <translation>%1 is already in the trend.</translation>
+        </message>
+        <message>
+            <source>%1 is shown as %2, which has no value to plot.</source>
+            <translation>%1 is shown as %2, which has no value to plot.</translation>
+        </message>
+        <message>
+            <source>%1 added to the trend.</source>
+            <translation>%1 added to the trend.</translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>Resume</translation>
+        </message>
+        <message>
+            <source>Station %1, %2</source>
+            <translation>Station %1, %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchInput</name>
+        <message>
+            <source>Type an address such as R100, or a range such as R100..R163.</source>
+            <translation>Type an address such as R100, or a range such as R100..R163.</translation>
+        </message>
+        <message>
+            <source>"%1": %2</source>
+            <translation>"%1": %2</translation>
+        </message>
+        <message>
+            <source>Too many items at once: at most %1.</source>
+            <translation>Too many items at once: at most %1.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableModel</name>
+        <message>
+            <source>good</source>
+            <translation>good</translation>
+        </message>
+        <message>
+            <source>stale</source>
+            <translation>stale</translation>
+        </message>
+        <message>
+            <source>error</source>
+            <translation>error</translation>
+        </message>
+        <message>
+            <source>%1, words swapped</source>
+            <translation>%1, words swapped</translation>
+        </message>
+        <message>
+            <source>waiting</source>
+            <translation>waiting</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>No value yet</source>
+            <translation>No value yet</translation>
+        </message>
+        <message>
+            <source>Click the box to toggle</source>
+            <translation>Click the box to toggle</translation>
+        </message>
+        <message>
+            <source>Double-click or F2 to write</source>
+            <translation>Double-click or F2 to write</translation>
+        </message>
+        <message>
+            <source>%1 .. %2 (%3 elements)</source>
+            <translation>%1 .. %2 (%3 elements)</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Address</source>
+            <translation>Address</translation>
+        </message>
+        <message>
+            <source>Station</source>
+            <translation>Station</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Value</translation>
+        </message>
+        <message>
+            <source>Format</source>
+            <translation>Format</translation>
+        </message>
+        <message>
+            <source>Quality</source>
+            <translation>Quality</translation>
+        </message>
+        <message>
+            <source>Last update</source>
+            <translation>Last update</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>Comment</translation>
+        </message>
+        <message>
+            <source>Station must be a number from 1 to 254.</source>
+            <translation>Station must be a number from 1 to 254.</translation>
+        </message>
+        <message>
+            <source>Unknown format "%1".</source>
+            <translation>Unknown format "%1".</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableWidget</name>
+        <message>
+            <source>Watch</source>
+            <translation>Watch</translation>
+        </message>
+        <message>
+            <source>Add: R100, R100..R163, X0..X15 — Enter</source>
+            <translation>Add: R100, R100..R163, X0..X15 — Enter</translation>
+        </message>
+        <message>
+            <source>Add</source>
+            <translation>Add</translation>
+        </message>
+        <message>
+            <source>Connection this table polls through</source>
+            <translation>Connection this table polls through</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>Poll interval of this table</source>
+            <translation>Poll interval of this table</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <source>Stop polling this table</source>
+            <translation>Stop polling this table</translation>
+        </message>
+        <message>
+            <source>Confirm writes</source>
+            <translation>Confirm writes</translation>
+        </message>
+        <message>
+            <source>Connection:</source>
+            <translation>Connection:</translation>
+        </message>
+        <message>
+            <source>Every</source>
+            <translation>Every</translation>
+        </message>
+        <message>
+            <source>&amp;Write Value…</source>
+            <translation>&amp;Write Value…</translation>
+        </message>
+        <message>
+            <source>&amp;Swap Words</source>
+            <translation>&amp;Swap Words</translation>
+        </message>
+        <message>
+            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
+            <translation>Low word first for 32- and 64-bit values (some HMIs store floats so)</translation>
+        </message>
+        <message>
+            <source>&amp;Paste Items</source>
+            <translation>&amp;Paste Items</translation>
+        </message>
+        <message>
+            <source>&amp;Remove</source>
+            <translation>&amp;Remove</translation>
+        </message>
+        <message>
+            <source>Add to &amp;Trend</source>
+            <translation>Add to &amp;Trend</translation>
+        </message>
+        <message>
+            <source>Plot the selected items over time in the trend view</source>
+            <translation>Plot the selected items over time in the trend view</translation>
+        </message>
+        <message>
+            <source>polling paused</source>
+            <translation>polling paused</translation>
+        </message>
+        <message>
+            <source>link %1</source>
+            <translation>link %1</translation>
+        </message>
+        <message>
+            <source>link %1: %2</source>
+            <translation>link %1: %2</translation>
+        </message>
+        <message>
+            <source>no connection</source>
+            <translation>no connection</translation>
+        </message>
+        <message numerus="yes">
+            <source>Added %n item(s).</source>
+            <translation>
+                <numerusform>Added %n item.</numerusform>
+                <numerusform>Added %n items.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Cannot paste: %1</source>
+            <translation>Cannot paste: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>Pasted %n item(s).</source>
+            <translation>
+                <numerusform>Pasted %n item.</numerusform>
+                <numerusform>Pasted %n items.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1 (station %2) = %3</source>
+            <translation>%1 (station %2) = %3</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: the table has no connection.</source>
+            <translation>Cannot write %1: the table has no connection.</translation>
+        </message>
+        <message>
+            <source>Write %1 to the PLC on %2?</source>
+            <translation>Write %1 to the PLC on %2?</translation>
+        </message>
+        <message>
+            <source>Write Value</source>
+            <translation>Write Value</translation>
+        </message>
+        <message>
+            <source>Write of %1 cancelled.</source>
+            <translation>Write of %1 cancelled.</translation>
+        </message>
+        <message>
+            <source>Writing %1 …</source>
+            <translation>Writing %1 …</translation>
+        </message>
+        <message>
+            <source>Wrote %1.</source>
+            <translation>Wrote %1.</translation>
+        </message>
+        <message>
+            <source>Write of %1 failed: %2</source>
+            <translation>Write of %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
+        </message>
+        <message>
+            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
+            <translation>New value for %1 (%2; hex as 0x1A or 1Ah):</translation>
+        </message>
+    </context>
+    <context>
+        <name>main</name>
+        <message>
+            <source>Commissioning and monitoring tool for FATEK PLCs.</source>
+            <translation>Commissioning and monitoring tool for FATEK PLCs.</translation>
+        </message>
+        <message>
+            <source>Start the embedded PLC simulator (demo ladder) and watch it.</source>
+            <translation>Start the embedded PLC simulator (demo ladder) and watch it.</translation>
+        </message>
+        <message>
+            <source>Operator mode: no writes, RUN/STOP or forcing.</source>
+            <translation>Operator mode: no writes, RUN/STOP or forcing.</translation>
+        </message>
+        <message>
+            <source>Render the main window to a PNG file after startup and exit.</source>
+            <translation>Render the main window to a PNG file after startup and exit.</translation>
+        </message>
+        <message>
+            <source>file</source>
+            <translation>file</translation>
+        </message>
+        <message>
+            <source>With --screenshot: open a commissioning tool first (control, forcing, console, loopback, trend).</source>
+            <translation>With --screenshot: open a commissioning tool first (control, forcing, console, loopback, trend).</translation>
+        </message>
+        <message>
+            <source>name</source>
+            <translation>name</translation>
+        </message>
+        <message>
+            <source>User interface language for this run: en or zh_TW (default: the View &gt; Language choice, else the system's).</source>
+            <translation>User interface language for this run: en or zh_TW (default: the View &gt; Language choice, else the system's).</translation>
+        </message>
+        <message>
+            <source>code</source>
+            <translation>code</translation>
+        </message>
+    </context>
+</TS>

@@ -1,0 +1,2401 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_TW">
+    <context>
+        <name>Fatek::ConnectionDialog</name>
+        <message>
+            <source>New Connection</source>
+            <translation>新增連線</translation>
+        </message>
+        <message>
+            <source>(new)</source>
+            <translation>（新增）</translation>
+        </message>
+        <message>
+            <source>%1 — %2</source>
+            <translation>%1 — %2</translation>
+        </message>
+        <message>
+            <source>e.g. Pump station</source>
+            <translation>例如：泵浦站</translation>
+        </message>
+        <message>
+            <source>Serial (RS-232 / RS-485)</source>
+            <translation>串列埠 (RS-232 / RS-485)</translation>
+        </message>
+        <message>
+            <source>TCP</source>
+            <translation>TCP</translation>
+        </message>
+        <message>
+            <source>UDP</source>
+            <translation>UDP</translation>
+        </message>
+        <message>
+            <source>Refresh</source>
+            <translation>重新整理</translation>
+        </message>
+        <message>
+            <source>&amp;Port:</source>
+            <translation>連接埠(&amp;P)：</translation>
+        </message>
+        <message>
+            <source>&amp;Baud rate:</source>
+            <translation>鮑率(&amp;B)：</translation>
+        </message>
+        <message>
+            <source>&amp;Data bits:</source>
+            <translation>資料位元(&amp;D)：</translation>
+        </message>
+        <message>
+            <source>None</source>
+            <translation>無</translation>
+        </message>
+        <message>
+            <source>Even</source>
+            <translation>偶同位</translation>
+        </message>
+        <message>
+            <source>Odd</source>
+            <translation>奇同位</translation>
+        </message>
+        <message>
+            <source>Pa&amp;rity:</source>
+            <translation>同位檢查(&amp;R)：</translation>
+        </message>
+        <message>
+            <source>&amp;Stop bits:</source>
+            <translation>停止位元(&amp;S)：</translation>
+        </message>
+        <message>
+            <source>Hardware (RTS/CTS)</source>
+            <translation>硬體 (RTS/CTS)</translation>
+        </message>
+        <message>
+            <source>Software (XON/XOFF)</source>
+            <translation>軟體 (XON/XOFF)</translation>
+        </message>
+        <message>
+            <source>&amp;Flow control:</source>
+            <translation>流量控制(&amp;F)：</translation>
+        </message>
+        <message>
+            <source>&amp;Host:</source>
+            <translation>主機(&amp;H)：</translation>
+        </message>
+        <message>
+            <source>P&amp;ort:</source>
+            <translation>埠號(&amp;O)：</translation>
+        </message>
+        <message>
+            <source>FACON (ASCII)</source>
+            <translation>FACON (ASCII)</translation>
+        </message>
+        <message>
+            <source>Binary</source>
+            <translation>二進位</translation>
+        </message>
+        <message>
+            <source>Auto-detect</source>
+            <translation>自動偵測</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>Re&amp;cent:</source>
+            <translation>最近使用(&amp;C)：</translation>
+        </message>
+        <message>
+            <source>&amp;Name:</source>
+            <translation>名稱(&amp;N)：</translation>
+        </message>
+        <message>
+            <source>&amp;Link:</source>
+            <translation>連線方式(&amp;L)：</translation>
+        </message>
+        <message>
+            <source>Pro&amp;tocol:</source>
+            <translation>通訊協定(&amp;T)：</translation>
+        </message>
+        <message>
+            <source>S&amp;tation:</source>
+            <translation>站號(&amp;T)：</translation>
+        </message>
+        <message>
+            <source>T&amp;imeout:</source>
+            <translation>逾時(&amp;I)：</translation>
+        </message>
+        <message>
+            <source>R&amp;etries:</source>
+            <translation>重試次數(&amp;E)：</translation>
+        </message>
+        <message>
+            <source>C&amp;onnect</source>
+            <translation>連線(&amp;O)</translation>
+        </message>
+        <message>
+            <source>PLC</source>
+            <translation>PLC</translation>
+        </message>
+        <message>
+            <source>Give the connection a name.</source>
+            <translation>請為此連線命名。</translation>
+        </message>
+        <message>
+            <source>The baud rate must be a positive number.</source>
+            <translation>鮑率必須是正數。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ConnectionListModel</name>
+        <message>
+            <source>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries</source>
+            <translation>逾時 %1 次，檢查碼錯誤 %2 次，PLC 錯誤 %3 次，重試 %4 次</translation>
+        </message>
+        <message>
+            <source>Round trip: last %1 ms, median %2 ms, 99% %3 ms</source>
+            <translation>往返時間：最近 %1 ms，中位數 %2 ms，99% %3 ms</translation>
+        </message>
+        <message>
+            <source>Station the tools act on; double-click to change</source>
+            <translation>工具作用的站號；按兩下可變更</translation>
+        </message>
+        <message>
+            <source>Station %1: %2 requests, %3 errors, RTT %4 ms</source>
+            <translation>站號 %1：%2 次請求，%3 次錯誤，RTT %4 ms</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名稱</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>連線</translation>
+        </message>
+        <message>
+            <source>Station</source>
+            <translation>站號</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>狀態</translation>
+        </message>
+        <message>
+            <source>Req/s</source>
+            <translation>請求/秒</translation>
+        </message>
+        <message>
+            <source>Errors</source>
+            <translation>錯誤</translation>
+        </message>
+        <message>
+            <source>RTT</source>
+            <translation>RTT</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CoreText</name>
+        <message>
+            <source>link lost: %1</source>
+            <translation>連線中斷：%1</translation>
+        </message>
+        <message>
+            <source>%1; next attempt in %2 s</source>
+            <translation>%1；%2 秒後重新連線</translation>
+        </message>
+        <message>
+            <source>No answer from station %1 within %2 ms (attempt %3 of %4).</source>
+            <translation>站號 %1 在 %2 ms 內沒有回應（第 %3 次，共 %4 次）。</translation>
+        </message>
+        <message>
+            <source>No answer within %1 ms.</source>
+            <translation>%1 ms 內沒有回應。</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is not open.</source>
+            <translation>未送出：連線尚未開啟。</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is down (%1).</source>
+            <translation>未送出：連線中斷（%1）。</translation>
+        </message>
+        <message>
+            <source>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</source>
+            <translation>未送出：此連線已有 %1 個請求在等待（PLC 回應的速度比請求送達慢）。</translation>
+        </message>
+        <message>
+            <source>Read-only mode: "%1" was not sent. Leave operator mode to change the PLC.</source>
+            <translation>唯讀模式：「%1」未送出。請離開操作員模式後再變更 PLC。</translation>
+        </message>
+        <message>
+            <source>Cancelled before it was sent.</source>
+            <translation>送出前已取消。</translation>
+        </message>
+        <message>
+            <source>the session was closed</source>
+            <translation>工作階段已關閉</translation>
+        </message>
+        <message>
+            <source>closed</source>
+            <translation>已關閉</translation>
+        </message>
+        <message>
+            <source>connecting</source>
+            <translation>連線中</translation>
+        </message>
+        <message>
+            <source>connected</source>
+            <translation>已連線</translation>
+        </message>
+        <message>
+            <source>lost</source>
+            <translation>已中斷</translation>
+        </message>
+        <message>
+            <source>reconnecting</source>
+            <translation>重新連線中</translation>
+        </message>
+        <message>
+            <source>The answer carries fewer values than asked.</source>
+            <translation>回應的數值比要求的少。</translation>
+        </message>
+        <message>
+            <source>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</source>
+            <translation>通訊協定自動偵測：站號 %1 對 FACON 與二進位協定皆無回應（%2）</translation>
+        </message>
+        <message>
+            <source>Could not write to %1.</source>
+            <translation>無法寫入 %1。</translation>
+        </message>
+        <message>
+            <source>no connection to %1 within %2 ms</source>
+            <translation>%2 ms 內無法連線到 %1</translation>
+        </message>
+        <message>
+            <source>%1 closed the connection</source>
+            <translation>%1 已關閉連線</translation>
+        </message>
+        <message>
+            <source>cannot open %1: %2</source>
+            <translation>無法開啟 %1：%2</translation>
+        </message>
+        <message>
+            <source>Empty address: type an element such as R12 or X0.</source>
+            <translation>位址空白：請輸入元件，例如 R12 或 X0。</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": it must start with an element type such as R, X or DWM.</source>
+            <translation>無效的位址「%1」：必須以元件類型開頭，例如 R、X 或 DWM。</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": unknown element type "%2" (known: %3).</source>
+            <translation>無效的位址「%1」：未知的元件類型「%2」（可用：%3）。</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": the element number is missing (e.g. %2).</source>
+            <translation>無效的位址「%1」：缺少元件編號（例如 %2）。</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": "%2" is not a decimal element number.</source>
+            <translation>無效的位址「%1」：「%2」不是十進位的元件編號。</translation>
+        </message>
+        <message>
+            <source>Invalid address "%1": element number too large.</source>
+            <translation>無效的位址「%1」：元件編號太大。</translation>
+        </message>
+        <message>
+            <source>Address %1 is out of range: %2 numbers go from 0 to %3.</source>
+            <translation>位址 %1 超出範圍：%2 的編號範圍是 0 到 %3。</translation>
+        </message>
+        <message>
+            <source>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</source>
+            <translation>位址 %1 未對齊：%2 必須從 %3 的倍數開始（例如 %4）。</translation>
+        </message>
+        <message>
+            <source>%1 elements from %2 run past %3, the last %4.</source>
+            <translation>從 %2 起的 %1 個元件超出 %3（最後一個 %4 元件）。</translation>
+        </message>
+        <message>
+            <source>Enter the PLC's IP address or host name.</source>
+            <translation>請輸入 PLC 的 IP 位址或主機名稱。</translation>
+        </message>
+        <message>
+            <source>Choose a serial port.</source>
+            <translation>請選擇串列埠。</translation>
+        </message>
+        <message>
+            <source>Baud rate %1 is out of range (1200 to 921600).</source>
+            <translation>鮑率 %1 超出範圍（1200 到 921600）。</translation>
+        </message>
+        <message>
+            <source>Timeout %1 ms is out of range (1 to 60000 ms).</source>
+            <translation>逾時 %1 ms 超出範圍（1 到 60000 ms）。</translation>
+        </message>
+        <message>
+            <source>Retries %1 is out of range (0 to 10).</source>
+            <translation>重試次數 %1 超出範圍（0 到 10）。</translation>
+        </message>
+        <message>
+            <source>no error</source>
+            <translation>無錯誤</translation>
+        </message>
+        <message>
+            <source>illegal value</source>
+            <translation>不合法的數值</translation>
+        </message>
+        <message>
+            <source>write prohibited (ROM pack)</source>
+            <translation>禁止寫入（ROM 卡匣）</translation>
+        </message>
+        <message>
+            <source>illegal format, or command cannot execute</source>
+            <translation>格式不合法，或命令無法執行</translation>
+        </message>
+        <message>
+            <source>cannot RUN: ladder checksum error</source>
+            <translation>無法執行：階梯圖檢查碼錯誤</translation>
+        </message>
+        <message>
+            <source>cannot RUN: PLC ID differs from ladder ID</source>
+            <translation>無法執行：PLC ID 與階梯圖 ID 不符</translation>
+        </message>
+        <message>
+            <source>cannot RUN: syntax check error</source>
+            <translation>無法執行：語法檢查錯誤</translation>
+        </message>
+        <message>
+            <source>cannot RUN: function not supported</source>
+            <translation>無法執行：不支援的功能</translation>
+        </message>
+        <message>
+            <source>illegal address</source>
+            <translation>不合法的位址</translation>
+        </message>
+        <message>
+            <source>unknown error code</source>
+            <translation>未知的錯誤碼</translation>
+        </message>
+        <message>
+            <source>bit</source>
+            <translation>位元</translation>
+        </message>
+        <message>
+            <source>unsigned</source>
+            <translation>無號整數</translation>
+        </message>
+        <message>
+            <source>signed</source>
+            <translation>有號整數</translation>
+        </message>
+        <message>
+            <source>hex</source>
+            <translation>十六進位</translation>
+        </message>
+        <message>
+            <source>binary</source>
+            <translation>二進位</translation>
+        </message>
+        <message>
+            <source>BCD</source>
+            <translation>BCD</translation>
+        </message>
+        <message>
+            <source>float</source>
+            <translation>浮點數</translation>
+        </message>
+        <message>
+            <source>ASCII</source>
+            <translation>ASCII</translation>
+        </message>
+        <message>
+            <source>double</source>
+            <translation>倍精度浮點數</translation>
+        </message>
+        <message>
+            <source>auto-detect</source>
+            <translation>自動偵測</translation>
+        </message>
+        <message>
+            <source>%1, %2</source>
+            <extracomment>Link settings: medium (TCP 10.0.0.5:500, COM3 9600 7E1) and protocol.</extracomment>
+            <translation>%1，%2</translation>
+        </message>
+        <message>
+            <source>(no port)</source>
+            <translation>（無連接埠）</translation>
+        </message>
+        <message>
+            <source>PLC error %1: %2</source>
+            <translation>PLC 錯誤 %1：%2</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>input</source>
+            <translation>輸入點</translation>
+        </message>
+        <message>
+            <source>output relay</source>
+            <translation>輸出繼電器</translation>
+        </message>
+        <message>
+            <source>internal relay</source>
+            <translation>內部繼電器</translation>
+        </message>
+        <message>
+            <source>step relay</source>
+            <translation>步進繼電器</translation>
+        </message>
+        <message>
+            <source>timer contact</source>
+            <translation>計時器接點</translation>
+        </message>
+        <message>
+            <source>counter contact</source>
+            <translation>計數器接點</translation>
+        </message>
+        <message>
+            <source>inputs as 16-bit word</source>
+            <translation>輸入點（16 位元字組）</translation>
+        </message>
+        <message>
+            <source>outputs as 16-bit word</source>
+            <translation>輸出點（16 位元字組）</translation>
+        </message>
+        <message>
+            <source>internal relays as 16-bit word</source>
+            <translation>內部繼電器（16 位元字組）</translation>
+        </message>
+        <message>
+            <source>step relays as 16-bit word</source>
+            <translation>步進繼電器（16 位元字組）</translation>
+        </message>
+        <message>
+            <source>timer contacts as 16-bit word</source>
+            <translation>計時器接點（16 位元字組）</translation>
+        </message>
+        <message>
+            <source>counter contacts as 16-bit word</source>
+            <translation>計數器接點（16 位元字組）</translation>
+        </message>
+        <message>
+            <source>timer register</source>
+            <translation>計時器暫存器</translation>
+        </message>
+        <message>
+            <source>counter register</source>
+            <translation>計數器暫存器</translation>
+        </message>
+        <message>
+            <source>data register</source>
+            <translation>資料暫存器</translation>
+        </message>
+        <message>
+            <source>file register</source>
+            <translation>檔案暫存器</translation>
+        </message>
+        <message>
+            <source>inputs as 32-bit word</source>
+            <translation>輸入點（32 位元雙字組）</translation>
+        </message>
+        <message>
+            <source>outputs as 32-bit word</source>
+            <translation>輸出點（32 位元雙字組）</translation>
+        </message>
+        <message>
+            <source>internal relays as 32-bit word</source>
+            <translation>內部繼電器（32 位元雙字組）</translation>
+        </message>
+        <message>
+            <source>step relays as 32-bit word</source>
+            <translation>步進繼電器（32 位元雙字組）</translation>
+        </message>
+        <message>
+            <source>timer contacts as 32-bit word</source>
+            <translation>計時器接點（32 位元雙字組）</translation>
+        </message>
+        <message>
+            <source>counter contacts as 32-bit word</source>
+            <translation>計數器接點（32 位元雙字組）</translation>
+        </message>
+        <message>
+            <source>timer register pair</source>
+            <translation>計時器暫存器對</translation>
+        </message>
+        <message>
+            <source>counter register pair</source>
+            <translation>計數器暫存器對</translation>
+        </message>
+        <message>
+            <source>data register pair</source>
+            <translation>資料暫存器對</translation>
+        </message>
+        <message>
+            <source>file register pair</source>
+            <translation>檔案暫存器對</translation>
+        </message>
+        <message>
+            <source>read brief status</source>
+            <translation>讀取簡要狀態</translation>
+        </message>
+        <message>
+            <source>RUN/STOP control</source>
+            <translation>RUN/STOP 控制</translation>
+        </message>
+        <message>
+            <source>single discrete control</source>
+            <translation>單一離散點控制</translation>
+        </message>
+        <message>
+            <source>read enable/disable flags</source>
+            <translation>讀取啟用/停用旗標</translation>
+        </message>
+        <message>
+            <source>read consecutive discretes</source>
+            <translation>讀取連續離散點</translation>
+        </message>
+        <message>
+            <source>write consecutive discretes</source>
+            <translation>寫入連續離散點</translation>
+        </message>
+        <message>
+            <source>read consecutive registers</source>
+            <translation>讀取連續暫存器</translation>
+        </message>
+        <message>
+            <source>write consecutive registers</source>
+            <translation>寫入連續暫存器</translation>
+        </message>
+        <message>
+            <source>mixed read</source>
+            <translation>混合讀取</translation>
+        </message>
+        <message>
+            <source>mixed write</source>
+            <translation>混合寫入</translation>
+        </message>
+        <message>
+            <source>loopback test</source>
+            <translation>迴路測試</translation>
+        </message>
+        <message>
+            <source>read program page</source>
+            <translation>讀取程式頁</translation>
+        </message>
+        <message>
+            <source>write program page</source>
+            <translation>寫入程式頁</translation>
+        </message>
+        <message>
+            <source>read detail status</source>
+            <translation>讀取詳細狀態</translation>
+        </message>
+        <message>
+            <source>invalid FACON frame (%1 bytes): %2</source>
+            <translation>無效的 FACON 訊框（%1 位元組）：%2</translation>
+        </message>
+        <message>
+            <source>bad binary frame (%1 bytes): %2</source>
+            <translation>錯誤的二進位訊框（%1 位元組）：%2</translation>
+        </message>
+        <message>
+            <source>answer: OK</source>
+            <translation>回應：正常</translation>
+        </message>
+        <message>
+            <source>answer: OK, %1 data chars "%2"</source>
+            <translation>回應：正常，%1 個資料字元「%2」</translation>
+        </message>
+        <message>
+            <source>answer: OK, %1 data bytes: %2</source>
+            <translation>回應：正常，%1 個資料位元組：%2</translation>
+        </message>
+        <message>
+            <source>answer: no error digit</source>
+            <translation>回應：缺少錯誤碼字元</translation>
+        </message>
+        <message>
+            <source>answer: no error byte</source>
+            <translation>回應：缺少錯誤碼位元組</translation>
+        </message>
+        <message>
+            <source>answer: malformed "%1"</source>
+            <translation>回應：格式錯誤「%1」</translation>
+        </message>
+        <message>
+            <source>answer: echo of %1 bytes</source>
+            <translation>回應：%1 位元組的回送</translation>
+        </message>
+        <message>
+            <source>unknown command, data "%1"</source>
+            <translation>未知的命令，資料「%1」</translation>
+        </message>
+        <message>
+            <source>%1 chars "%2"</source>
+            <translation>%1 個字元「%2」</translation>
+        </message>
+        <message>
+            <source>STOP, or answer: no error</source>
+            <translation>STOP，或回應：無錯誤</translation>
+        </message>
+        <message>
+            <source>link lost</source>
+            <translation>連線中斷</translation>
+        </message>
+        <message>
+            <source>stale bytes discarded</source>
+            <translation>已捨棄殘留的位元組</translation>
+        </message>
+        <message>
+            <source>received outside an answer</source>
+            <translation>在回應之外收到</translation>
+        </message>
+        <message>
+            <source>unexpected bytes</source>
+            <translation>非預期的位元組</translation>
+        </message>
+        <message>
+            <source>no query pending</source>
+            <translation>沒有等待中的查詢</translation>
+        </message>
+        <message>
+            <source>echo of the query</source>
+            <translation>查詢的回送</translation>
+        </message>
+        <message>
+            <source>raw answer</source>
+            <translation>原始回應</translation>
+        </message>
+        <message>
+            <source>raw frame</source>
+            <translation>原始訊框</translation>
+        </message>
+        <message>
+            <source>no complete frame</source>
+            <translation>沒有完整的訊框</translation>
+        </message>
+        <message>
+            <source>more than %1 bytes: rest not read</source>
+            <translation>超過 %1 位元組：其餘未讀取</translation>
+        </message>
+        <message>
+            <source>no answer within %1 ms</source>
+            <translation>%1 ms 內沒有回應</translation>
+        </message>
+        <message>
+            <source>protocol detected: %1</source>
+            <translation>偵測到通訊協定：%1</translation>
+        </message>
+        <message>
+            <source>%1 bytes, first %2 kept</source>
+            <translation>%1 位元組，保留前 %2 個</translation>
+        </message>
+        <message>
+            <source>answer: error %1 (%2)</source>
+            <translation>回應：錯誤 %1（%2）</translation>
+        </message>
+        <message>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
+        </message>
+        <message>
+            <source>station %1, %2 %3</source>
+            <translation>站號 %1，%2 %3</translation>
+        </message>
+        <message>
+            <source>%1 elements%2</source>
+            <translation>%1 個元件%2</translation>
+        </message>
+        <message>
+            <source>page %1</source>
+            <translation>第 %1 頁</translation>
+        </message>
+        <message>
+            <source>page %1, 64 words</source>
+            <translation>第 %1 頁，64 字組</translation>
+        </message>
+        <message>
+            <source>disable %1</source>
+            <translation>停用 %1</translation>
+        </message>
+        <message>
+            <source>enable %1</source>
+            <translation>啟用 %1</translation>
+        </message>
+        <message>
+            <source>set %1</source>
+            <translation>設為 ON %1</translation>
+        </message>
+        <message>
+            <source>reset %1</source>
+            <translation>復歸 OFF %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::DemoSimulator</name>
+        <message>
+            <source>Demo</source>
+            <translation>示範</translation>
+        </message>
+        <message>
+            <source>Scan counter</source>
+            <translation>掃描計數</translation>
+        </message>
+        <message>
+            <source>counts ladder scans</source>
+            <translation>計算階梯圖掃描次數</translation>
+        </message>
+        <message>
+            <source>Sine</source>
+            <translation>正弦波</translation>
+        </message>
+        <message>
+            <source>±1000, 10 s period</source>
+            <translation>±1000，週期 10 秒</translation>
+        </message>
+        <message>
+            <source>Blink</source>
+            <translation>閃爍</translation>
+        </message>
+        <message>
+            <source>1 Hz</source>
+            <translation>1 Hz</translation>
+        </message>
+        <message>
+            <source>Walking bit %1</source>
+            <translation>跑馬燈位元 %1</translation>
+        </message>
+        <message>
+            <source>one step per 250 ms</source>
+            <translation>每 250 ms 移動一步</translation>
+        </message>
+        <message>
+            <source>Ramp</source>
+            <translation>斜坡</translation>
+        </message>
+        <message>
+            <source>0..99999, one step per 10 ms</source>
+            <translation>0..99999，每 10 ms 加一</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::DiscreteControlBatch</name>
+        <message>
+            <source>Disable</source>
+            <translation>停用</translation>
+        </message>
+        <message>
+            <source>Enable</source>
+            <translation>啟用</translation>
+        </message>
+        <message>
+            <source>Set ON</source>
+            <translation>強制 ON</translation>
+        </message>
+        <message>
+            <source>Reset OFF</source>
+            <translation>強制 OFF</translation>
+        </message>
+        <message>
+            <source>Disabled</source>
+            <translation>已停用</translation>
+        </message>
+        <message>
+            <source>Enabled</source>
+            <translation>已啟用</translation>
+        </message>
+        <message>
+            <source>Set ON</source>
+            <comment>past</comment>
+            <extracomment>Past tense, as in "Set ON 3 points."</extracomment>
+            <translation>強制 ON</translation>
+        </message>
+        <message>
+            <source>Reset OFF</source>
+            <comment>past</comment>
+            <extracomment>Past tense, as in "Reset OFF 3 points."</extracomment>
+            <translation>強制 OFF</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
+        </message>
+        <message>
+            <source>%1: %2 done, %3 failed — %4</source>
+            <translation>%1：完成 %2 個，失敗 %3 個 — %4</translation>
+        </message>
+        <message>
+            <source> (and %1 more)</source>
+            <translation>（另有 %1 個）</translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 %n points (%2, %3 … %4)</source>
+            <extracomment>%1 is the action (Disable, Set ON...), %2..%4 the first, second and last point.</extracomment>
+            <translation>
+                <numerusform>%1 %n 個點（%2、%3 … %4）</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1 1 point.</source>
+            <extracomment>%1 is the past action (Disabled, Enabled, Set ON, Reset OFF).</extracomment>
+            <translation>%1 1 個點。</translation>
+        </message>
+        <message>
+            <source>%1 %2 points.</source>
+            <translation>%1 %2 個點。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::DiscreteRange</name>
+        <message>
+            <source>“%1” is not a range of discretes; write it like Y0-255 or M100.</source>
+            <translation>「%1」不是離散點範圍；請寫成 Y0-255 或 M100 的形式。</translation>
+        </message>
+        <message>
+            <source>“%1” is not a discrete type; use X, Y, M, S, T or C.</source>
+            <translation>「%1」不是離散點類型；請使用 X、Y、M、S、T 或 C。</translation>
+        </message>
+        <message>
+            <source>A range must stay within one type: %1</source>
+            <translation>範圍必須在同一類型內：%1</translation>
+        </message>
+        <message>
+            <source>Point number too large in %1</source>
+            <translation>%1 的點號太大</translation>
+        </message>
+        <message>
+            <source>The range %1 ends before it starts.</source>
+            <translation>範圍 %1 的結束點在起始點之前。</translation>
+        </message>
+        <message>
+            <source>No range given; write for example X0-255, Y0-255.</source>
+            <translation>未指定範圍；例如請輸入 X0-255, Y0-255。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::DiscreteTableModel</name>
+        <message>
+            <source>ON</source>
+            <translation>ON</translation>
+        </message>
+        <message>
+            <source>OFF</source>
+            <translation>OFF</translation>
+        </message>
+        <message>
+            <source>disabled (forced)</source>
+            <translation>已停用（強制中）</translation>
+        </message>
+        <message>
+            <source>enabled</source>
+            <translation>已啟用</translation>
+        </message>
+        <message>
+            <source>Point</source>
+            <translation>點</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>狀態</translation>
+        </message>
+        <message>
+            <source>Forcing</source>
+            <translation>強制</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ForcedPointsView</name>
+        <message>
+            <source>Ranges:</source>
+            <translation>範圍：</translation>
+        </message>
+        <message>
+            <source>Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999</source>
+            <translation>要掃描的離散點範圍，例如 X0-255, Y0-255, M0-999</translation>
+        </message>
+        <message>
+            <source>Scan</source>
+            <translation>掃描</translation>
+        </message>
+        <message>
+            <source>Enable all</source>
+            <translation>全部啟用</translation>
+        </message>
+        <message>
+            <source>Give every listed point back to the ladder</source>
+            <translation>將列出的每一點交還給階梯圖控制</translation>
+        </message>
+        <message>
+            <source>Press Scan to list the forced points.</source>
+            <translation>按「掃描」列出強制中的點。</translation>
+        </message>
+        <message>
+            <source>No connection.</source>
+            <translation>沒有連線。</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: forcing is disabled.</source>
+            <translation>唯讀（操作員）模式：已停用強制功能。</translation>
+        </message>
+        <message>
+            <source>Scanning %1 …</source>
+            <translation>正在掃描 %1 …</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>Scan incomplete — %1</source>
+            <translation>掃描未完成 — %1</translation>
+        </message>
+        <message>
+            <source>No forced points in %1.</source>
+            <translation>%1 中沒有強制中的點。</translation>
+        </message>
+        <message>
+            <source>1 forced point: enable it before leaving the site.</source>
+            <translation>有 1 個強制中的點：離開現場前請將它啟用。</translation>
+        </message>
+        <message>
+            <source>%1 forced points: enable them before leaving the site.</source>
+            <translation>有 %1 個強制中的點：離開現場前請將它們啟用。</translation>
+        </message>
+        <message>
+            <source>%1 on %2?</source>
+            <translation>要對 %2 執行「%1」嗎？</translation>
+        </message>
+        <message>
+            <source>Enable all forced points</source>
+            <translation>啟用所有強制中的點</translation>
+        </message>
+        <message>
+            <source>Enable all cancelled; the points stay forced.</source>
+            <translation>已取消全部啟用；這些點仍維持強制。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ForcingPanel</name>
+        <message>
+            <source>Show</source>
+            <translation>顯示</translation>
+        </message>
+        <message>
+            <source>Refresh every second</source>
+            <translation>每秒重新整理</translation>
+        </message>
+        <message>
+            <source>Type:</source>
+            <translation>類型：</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>起始：</translation>
+        </message>
+        <message>
+            <source>Points:</source>
+            <translation>點數：</translation>
+        </message>
+        <message>
+            <source>Disable (force)</source>
+            <translation>停用（強制）</translation>
+        </message>
+        <message>
+            <source>Enable</source>
+            <translation>啟用</translation>
+        </message>
+        <message>
+            <source>Set ON</source>
+            <translation>強制 ON</translation>
+        </message>
+        <message>
+            <source>Reset OFF</source>
+            <translation>強制 OFF</translation>
+        </message>
+        <message>
+            <source>Discretes</source>
+            <translation>離散點</translation>
+        </message>
+        <message>
+            <source>Forced points</source>
+            <translation>強制中的點</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>Only X, Y, M, S, T and C points can be forced.</source>
+            <translation>只有 X、Y、M、S、T 和 C 點可以強制。</translation>
+        </message>
+        <message>
+            <source>Could not read: %1</source>
+            <translation>無法讀取：%1</translation>
+        </message>
+        <message>
+            <source>Select the points first (Ctrl/Shift-click for several).</source>
+            <translation>請先選取點（按住 Ctrl 或 Shift 點選可選取多個）。</translation>
+        </message>
+        <message>
+            <source>%1 on %2?</source>
+            <translation>要對 %2 執行「%1」嗎？</translation>
+        </message>
+        <message>
+            <source>Forcing</source>
+            <translation>強制</translation>
+        </message>
+        <message>
+            <source>Cancelled: nothing sent.</source>
+            <translation>已取消：未送出任何資料。</translation>
+        </message>
+        <message>
+            <source>%1 …</source>
+            <translation>%1 …</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: forcing is disabled.</source>
+            <translation>唯讀（操作員）模式：已停用強制功能。</translation>
+        </message>
+        <message>
+            <source>%1 – %2</source>
+            <translation>%1 – %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::FrameText</name>
+        <message>
+            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
+            <translation>「%1」不是十六進位數字；請以 01 46 03 52 00 0C 的形式輸入位元組。</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame's bytes in hex.</source>
+            <translation>沒有可送出的內容：請以十六進位輸入訊框的位元組。</translation>
+        </message>
+        <message>
+            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
+            <translation>十六進位數字個數為奇數：每個位元組需要兩位數（0C，而非 C）。</translation>
+        </message>
+        <message>
+            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
+            <translation>只能輸入可列印的 ASCII 字元；控制字元請寫成 &lt;STX&gt;、&lt;ETX&gt; 或 &lt;0D&gt;。</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame.</source>
+            <translation>沒有可送出的內容：請輸入訊框。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::LanguageMenu</name>
+        <message>
+            <source>&amp;Language</source>
+            <translation>語言(&amp;L)</translation>
+        </message>
+        <message>
+            <source>System</source>
+            <translation>系統預設</translation>
+        </message>
+        <message>
+            <source>Language</source>
+            <translation>語言</translation>
+        </message>
+        <message>
+            <source>The new language applies when FATEK Studio is started again.</source>
+            <translation>新的語言會在下次啟動 FATEK Studio 時套用。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::LoopbackDialog</name>
+        <message>
+            <source>Loopback test</source>
+            <translation>迴路測試</translation>
+        </message>
+        <message>
+            <source>Text</source>
+            <translation>文字</translation>
+        </message>
+        <message>
+            <source>Hex bytes</source>
+            <translation>十六進位位元組</translation>
+        </message>
+        <message>
+            <source>Generated pattern</source>
+            <translation>自動產生的樣式</translation>
+        </message>
+        <message>
+            <source> bytes</source>
+            <translation> 位元組</translation>
+        </message>
+        <message>
+            <source>Test data:</source>
+            <translation>測試資料：</translation>
+        </message>
+        <message>
+            <source>Repeat:</source>
+            <translation>重複次數：</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>Interval:</source>
+            <translation>間隔：</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>開始</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>停止</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>已停止：目標已變更。</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>Running %1 loopback tests of %2 bytes …</source>
+            <translation>正在執行 %1 次 %2 位元組的迴路測試 …</translation>
+        </message>
+        <message>
+            <source>Stopped after %1 runs.</source>
+            <translation>執行 %1 次後停止。</translation>
+        </message>
+        <message>
+            <source>%1  OK        %2 ms</source>
+            <translation>%1  正常      %2 ms</translation>
+        </message>
+        <message>
+            <source>%1  MISMATCH  %2 ms: got %3</source>
+            <translation>%1  不符      %2 ms：收到 %3</translation>
+        </message>
+        <message>
+            <source>%1  TIMEOUT   %2</source>
+            <translation>%1  逾時      %2</translation>
+        </message>
+        <message>
+            <source>%1  ERROR     %2</source>
+            <translation>%1  錯誤      %2</translation>
+        </message>
+        <message>
+            <source>Done.</source>
+            <translation>完成。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::LoopbackStats</name>
+        <message>
+            <source>%1 runs: %2 OK, %3 mismatch, %4 timeout, %5 other errors</source>
+            <translation>執行 %1 次：正常 %2，不符 %3，逾時 %4，其他錯誤 %5</translation>
+        </message>
+        <message>
+            <source> — round trip min %1 / mean %2 / max %3 / p99 %4 ms</source>
+            <translation> — 往返時間 最小 %1 / 平均 %2 / 最大 %3 / p99 %4 ms</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::MainWindow</name>
+        <message>
+            <source>FATEK Studio — Operator mode (read-only)</source>
+            <translation>FATEK Studio — 操作員模式（唯讀）</translation>
+        </message>
+        <message>
+            <source>FATEK Studio</source>
+            <translation>FATEK Studio</translation>
+        </message>
+        <message>
+            <source>Connections</source>
+            <translation>連線</translation>
+        </message>
+        <message>
+            <source>No connection</source>
+            <translation>沒有連線</translation>
+        </message>
+        <message>
+            <source>Operator mode (read-only)</source>
+            <translation>操作員模式（唯讀）</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>%1: %2 (%3)</source>
+            <translation>%1：%2（%3）</translation>
+        </message>
+        <message>
+            <source>&amp;File</source>
+            <translation>檔案(&amp;F)</translation>
+        </message>
+        <message>
+            <source>Main</source>
+            <translation>主工具列</translation>
+        </message>
+        <message>
+            <source>&amp;New Connection…</source>
+            <translation>新增連線(&amp;N)…</translation>
+        </message>
+        <message>
+            <source>&amp;Recent Connections</source>
+            <translation>最近的連線(&amp;R)</translation>
+        </message>
+        <message>
+            <source>&amp;Close Connection</source>
+            <translation>關閉連線(&amp;C)</translation>
+        </message>
+        <message>
+            <source>New &amp;Watch Table</source>
+            <translation>新增監看表(&amp;W)</translation>
+        </message>
+        <message>
+            <source>&amp;Open Watch List…</source>
+            <translation>開啟監看清單(&amp;O)…</translation>
+        </message>
+        <message>
+            <source>&amp;Save Watch List…</source>
+            <translation>儲存監看清單(&amp;S)…</translation>
+        </message>
+        <message>
+            <source>&amp;Import CSV…</source>
+            <translation>匯入 CSV(&amp;I)…</translation>
+        </message>
+        <message>
+            <source>Reopen Last Watch List at Start</source>
+            <translation>啟動時重新開啟上次的監看清單</translation>
+        </message>
+        <message>
+            <source>&amp;Quit</source>
+            <translation>結束(&amp;Q)</translation>
+        </message>
+        <message>
+            <source>&amp;Watch</source>
+            <translation>監看(&amp;W)</translation>
+        </message>
+        <message>
+            <source>&amp;Add Items…</source>
+            <translation>加入項目(&amp;A)…</translation>
+        </message>
+        <message>
+            <source>&amp;Pause Table</source>
+            <translation>暫停監看表(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Close Table</source>
+            <translation>關閉監看表(&amp;C)</translation>
+        </message>
+        <message>
+            <source>&amp;View</source>
+            <translation>檢視(&amp;V)</translation>
+        </message>
+        <message>
+            <source>&amp;Tools</source>
+            <translation>工具(&amp;T)</translation>
+        </message>
+        <message>
+            <source>&amp;Help</source>
+            <translation>說明(&amp;H)</translation>
+        </message>
+        <message>
+            <source>&amp;About FATEK Studio</source>
+            <translation>關於 FATEK Studio(&amp;A)</translation>
+        </message>
+        <message>
+            <source>About FATEK Studio</source>
+            <translation>關於 FATEK Studio</translation>
+        </message>
+        <message>
+            <source>FATEK Studio %1
+Commissioning and monitoring tool for FATEK PLCs.</source>
+            <translation>FATEK Studio %1
+永宏 FATEK PLC 的試車與監控工具。</translation>
+        </message>
+        <message>
+            <source>PLC Control</source>
+            <translation>PLC 控制</translation>
+        </message>
+        <message>
+            <source>Forcing</source>
+            <translation>強制</translation>
+        </message>
+        <message>
+            <source>Raw Console</source>
+            <translation>原始訊框主控台</translation>
+        </message>
+        <message>
+            <source>&amp;Loopback Test…</source>
+            <translation>迴路測試(&amp;L)…</translation>
+        </message>
+        <message>
+            <source>(commissioning tools not built)</source>
+            <translation>（未建置試車工具）</translation>
+        </message>
+        <message>
+            <source>Connecting to %1 (%2)…</source>
+            <translation>正在連線到 %1（%2）…</translation>
+        </message>
+        <message>
+            <source>%1 — %2</source>
+            <translation>%1 — %2</translation>
+        </message>
+        <message>
+            <source>Watch %1</source>
+            <translation>監看表 %1</translation>
+        </message>
+        <message>
+            <source>Rename Watch Table</source>
+            <translation>重新命名監看表</translation>
+        </message>
+        <message>
+            <source>Name:</source>
+            <translation>名稱：</translation>
+        </message>
+        <message>
+            <source>The last watch list %1 cannot be loaded: %2</source>
+            <translation>無法載入上次的監看清單 %1：%2</translation>
+        </message>
+        <message>
+            <source>Reopened %1.</source>
+            <translation>已重新開啟 %1。</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>無法開啟 %1：%2</translation>
+        </message>
+        <message>
+            <source>Open Watch List</source>
+            <translation>開啟監看清單</translation>
+        </message>
+        <message>
+            <source>Watch lists (*.json);;All files (*)</source>
+            <translation>監看清單 (*.json);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be loaded:
+%2</source>
+            <translation>無法載入 %1：
+%2</translation>
+        </message>
+        <message>
+            <source>Loaded %1.</source>
+            <translation>已載入 %1。</translation>
+        </message>
+        <message>
+            <source>Save Watch List</source>
+            <translation>儲存監看清單</translation>
+        </message>
+        <message>
+            <source>Watch lists (*.json)</source>
+            <translation>監看清單 (*.json)</translation>
+        </message>
+        <message>
+            <source>Saved %1.</source>
+            <translation>已儲存 %1。</translation>
+        </message>
+        <message>
+            <source>Import CSV</source>
+            <translation>匯入 CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv *.txt);;All files (*)</source>
+            <translation>CSV 檔案 (*.csv *.txt);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be imported:
+%2</source>
+            <translation>無法匯入 %1：
+%2</translation>
+        </message>
+        <message>
+            <source>Imported %1.</source>
+            <translation>已匯入 %1。</translation>
+        </message>
+        <message>
+            <source>The demo simulator could not start: %1</source>
+            <translation>無法啟動示範模擬器：%1</translation>
+        </message>
+        <message>
+            <source>Demo PLC</source>
+            <translation>示範 PLC</translation>
+        </message>
+        <message>
+            <source>Starting the demo simulator…</source>
+            <translation>正在啟動示範模擬器…</translation>
+        </message>
+        <message>
+            <source>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</source>
+            <translation>%1：%2 · %3 請求/秒 · %4 個錯誤 · RTT %5 ms</translation>
+        </message>
+        <message>
+            <source>Trend</source>
+            <translation>趨勢圖</translation>
+        </message>
+        <message>
+            <source>&amp;Trend</source>
+            <translation>趨勢圖(&amp;T)</translation>
+        </message>
+        <message>
+            <source>Start &amp;Data Logging…</source>
+            <translation>開始資料記錄(&amp;D)…</translation>
+        </message>
+        <message>
+            <source>Write every value of the current watch table to a CSV file with timestamps</source>
+            <translation>將目前監看表的每個數值連同時間戳記寫入 CSV 檔</translation>
+        </message>
+        <message>
+            <source>Sto&amp;p Data Logging</source>
+            <translation>停止資料記錄(&amp;P)</translation>
+        </message>
+        <message>
+            <source>Data logging stopped: %1</source>
+            <translation>資料記錄已停止：%1</translation>
+        </message>
+        <message>
+            <source>Data Logging</source>
+            <translation>資料記錄</translation>
+        </message>
+        <message>
+            <source>Data logging stopped:
+%1</source>
+            <translation>資料記錄已停止：
+%1</translation>
+        </message>
+        <message>
+            <source>No watch table to log.</source>
+            <translation>沒有可記錄的監看表。</translation>
+        </message>
+        <message>
+            <source>Logging %1 to %2.</source>
+            <translation>正在將 %1 記錄到 %2。</translation>
+        </message>
+        <message numerus="yes">
+            <source>Logging stopped: %n row(s) in %1.</source>
+            <translation>
+                <numerusform>記錄已停止：%1 中共 %n 列。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Add items to a watch table first: logging writes the rows of the current table.</source>
+            <translation>請先在監看表中加入項目：資料記錄會寫入目前監看表的各列。</translation>
+        </message>
+        <message>
+            <source>Log Watch Table to CSV</source>
+            <translation>將監看表記錄到 CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 檔案 (*.csv)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Logging to %1 (%n row(s))</source>
+            <translation>
+                <numerusform>正在記錄到 %1（%n 列）</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::OperatorMode</name>
+        <message>
+            <source>&amp;Operator Mode (Read-Only)</source>
+            <translation>操作員模式（唯讀）(&amp;O)</translation>
+        </message>
+        <message>
+            <source>Operator Mode &amp;Password…</source>
+            <translation>操作員模式密碼(&amp;P)…</translation>
+        </message>
+        <message>
+            <source>Started with --read-only: operator mode stays on until the program is restarted without it.</source>
+            <translation>以 --read-only 啟動：在不帶此選項重新啟動程式之前，操作員模式會保持開啟。</translation>
+        </message>
+        <message>
+            <source>Operator-mode password:</source>
+            <translation>操作員模式密碼：</translation>
+        </message>
+        <message>
+            <source>Wrong operator-mode password: operator mode stays on.</source>
+            <translation>操作員模式密碼錯誤：操作員模式保持開啟。</translation>
+        </message>
+        <message>
+            <source>Leave operator mode? Writes, forcing, RUN/STOP and raw frames will reach the PLC again.</source>
+            <translation>要離開操作員模式嗎？寫入、強制、RUN/STOP 與原始訊框將再次送達 PLC。</translation>
+        </message>
+        <message>
+            <source>Operator mode on: the PLC is read-only.</source>
+            <translation>操作員模式已開啟：PLC 為唯讀。</translation>
+        </message>
+        <message>
+            <source>Operator mode off.</source>
+            <translation>操作員模式已關閉。</translation>
+        </message>
+        <message>
+            <source>Operator Mode</source>
+            <translation>操作員模式</translation>
+        </message>
+        <message>
+            <source>New operator-mode password (empty: none):</source>
+            <translation>新的操作員模式密碼（空白表示不設密碼）：</translation>
+        </message>
+        <message>
+            <source>Repeat the password:</source>
+            <translation>再次輸入密碼：</translation>
+        </message>
+        <message>
+            <source>The passwords differ: nothing changed.</source>
+            <translation>兩次輸入的密碼不同：未做任何變更。</translation>
+        </message>
+        <message>
+            <source>Operator-mode password removed.</source>
+            <translation>已移除操作員模式密碼。</translation>
+        </message>
+        <message>
+            <source>Operator-mode password set.</source>
+            <translation>已設定操作員模式密碼。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::PlcControlPanel</name>
+        <message>
+            <source>PLC status</source>
+            <translation>PLC 狀態</translation>
+        </message>
+        <message>
+            <source>RUN</source>
+            <translation>執行</translation>
+        </message>
+        <message>
+            <source>Battery low</source>
+            <translation>電池電量低</translation>
+        </message>
+        <message>
+            <source>Ladder checksum error</source>
+            <translation>階梯圖檢查碼錯誤</translation>
+        </message>
+        <message>
+            <source>Memory card / ROM pack</source>
+            <translation>記憶卡 / ROM 卡匣</translation>
+        </message>
+        <message>
+            <source>Watchdog error</source>
+            <translation>看門狗錯誤</translation>
+        </message>
+        <message>
+            <source>ID set</source>
+            <translation>已設定 ID</translation>
+        </message>
+        <message>
+            <source>Emergency stop</source>
+            <translation>緊急停止</translation>
+        </message>
+        <message>
+            <source>STOP</source>
+            <translation>停止</translation>
+        </message>
+        <message>
+            <source>Refresh</source>
+            <translation>重新整理</translation>
+        </message>
+        <message>
+            <source>Detail status (53)</source>
+            <translation>詳細狀態 (53)</translation>
+        </message>
+        <message>
+            <source>Model:</source>
+            <translation>機型：</translation>
+        </message>
+        <message>
+            <source>I/O points:</source>
+            <translation>I/O 點數：</translation>
+        </message>
+        <message>
+            <source>OS version:</source>
+            <translation>OS 版本：</translation>
+        </message>
+        <message>
+            <source>Program size:</source>
+            <translation>程式容量：</translation>
+        </message>
+        <message>
+            <source>Digital inputs / outputs:</source>
+            <translation>數位輸入 / 輸出：</translation>
+        </message>
+        <message>
+            <source>Analog inputs / outputs:</source>
+            <translation>類比輸入 / 輸出：</translation>
+        </message>
+        <message>
+            <source>M / S / L relays:</source>
+            <translation>M / S / L 繼電器：</translation>
+        </message>
+        <message>
+            <source>R / D registers:</source>
+            <translation>R / D 暫存器：</translation>
+        </message>
+        <message>
+            <source>Timers / counters:</source>
+            <translation>計時器 / 計數器：</translation>
+        </message>
+        <message>
+            <source>Raw bytes:</source>
+            <translation>原始位元組：</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: RUN/STOP is disabled.</source>
+            <translation>唯讀（操作員）模式：已停用 RUN/STOP。</translation>
+        </message>
+        <message>
+            <source>Put %1 into %2?</source>
+            <translation>要將 %1 切換為 %2 嗎？</translation>
+        </message>
+        <message>
+            <source>PLC %1</source>
+            <translation>PLC %1</translation>
+        </message>
+        <message>
+            <source>%1 not sent: cancelled.</source>
+            <translation>%1 未送出：已取消。</translation>
+        </message>
+        <message>
+            <source>Sending %1…</source>
+            <translation>正在送出 %1…</translation>
+        </message>
+        <message>
+            <source>%1 accepted by station %2.</source>
+            <translation>站號 %2 已接受 %1。</translation>
+        </message>
+        <message>
+            <source>%1 refused: %2</source>
+            <translation>%1 遭拒：%2</translation>
+        </message>
+        <message>
+            <source>Status unknown: %1</source>
+            <translation>狀態不明：%1</translation>
+        </message>
+        <message>
+            <source>the PLC sent no status bytes.</source>
+            <translation>PLC 未傳回狀態位元組。</translation>
+        </message>
+        <message>
+            <source>Status read at %1.</source>
+            <translation>狀態讀取時間：%1。</translation>
+        </message>
+        <message>
+            <source>Not available: %1</source>
+            <translation>無法取得：%1</translation>
+        </message>
+        <message>
+            <source>Mode unknown</source>
+            <translation>模式不明</translation>
+        </message>
+        <message>
+            <source>(no bytes)</source>
+            <translation>（無位元組）</translation>
+        </message>
+        <message>
+            <source>not documented for the binary protocol (see raw bytes)</source>
+            <translation>二進位協定未記載（請參閱原始位元組）</translation>
+        </message>
+        <message>
+            <source>main unit MA/MU</source>
+            <translation>主機 MA/MU</translation>
+        </message>
+        <message>
+            <source>main unit MC</source>
+            <translation>主機 MC</translation>
+        </message>
+        <message>
+            <source>main unit type %1</source>
+            <translation>主機類型 %1</translation>
+        </message>
+        <message>
+            <source>code %1</source>
+            <translation>代碼 %1</translation>
+        </message>
+        <message>
+            <source>code 0x%1</source>
+            <translation>代碼 0x%1</translation>
+        </message>
+        <message>
+            <source>%1 words</source>
+            <translation>%1 字組</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::RawConsole</name>
+        <message>
+            <source>All directions</source>
+            <translation>所有方向</translation>
+        </message>
+        <message>
+            <source>Sent</source>
+            <translation>已送出</translation>
+        </message>
+        <message>
+            <source>Received</source>
+            <translation>已接收</translation>
+        </message>
+        <message>
+            <source>Events</source>
+            <translation>事件</translation>
+        </message>
+        <message>
+            <source>All stations</source>
+            <translation>所有站號</translation>
+        </message>
+        <message>
+            <source>Station </source>
+            <translation>站號 </translation>
+        </message>
+        <message>
+            <source>All commands</source>
+            <translation>所有命令</translation>
+        </message>
+        <message>
+            <source>Errors only</source>
+            <translation>僅顯示錯誤</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>暫停</translation>
+        </message>
+        <message>
+            <source>Clear</source>
+            <translation>清除</translation>
+        </message>
+        <message>
+            <source>Copy</source>
+            <translation>複製</translation>
+        </message>
+        <message>
+            <source>Save…</source>
+            <translation>儲存…</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection to see its traffic.</source>
+            <translation>沒有連線：請選擇連線以檢視其通訊內容。</translation>
+        </message>
+        <message>
+            <source>Traffic of “%1” (sending to station %2)</source>
+            <translation>「%1」的通訊內容（送往站號 %2）</translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>繼續</translation>
+        </message>
+        <message>
+            <source>Paused: new frames are kept in the log and shown on Resume.</source>
+            <translation>已暫停：新的訊框會保留在記錄中，按「繼續」後顯示。</translation>
+        </message>
+        <message>
+            <source>%1 older frames were dropped from the log while paused.</source>
+            <translation>暫停期間已從記錄中捨棄 %1 個較舊的訊框。</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>無法寫入 %1：%2</translation>
+        </message>
+        <message>
+            <source>Save traffic</source>
+            <translation>儲存通訊內容</translation>
+        </message>
+        <message>
+            <source>Tab-separated text (*.tsv *.txt)</source>
+            <translation>定位字元分隔文字檔 (*.tsv *.txt)</translation>
+        </message>
+        <message>
+            <source>Saved to %1.</source>
+            <translation>已儲存到 %1。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::RawSendBar</name>
+        <message>
+            <source>Hex</source>
+            <translation>十六進位</translation>
+        </message>
+        <message>
+            <source>ASCII</source>
+            <translation>ASCII</translation>
+        </message>
+        <message>
+            <source>Send</source>
+            <translation>送出</translation>
+        </message>
+        <message>
+            <source>No connection.</source>
+            <translation>沒有連線。</translation>
+        </message>
+        <message>
+            <source>Add STX, LRC, ETX (FACON)</source>
+            <translation>加上 STX、LRC、ETX (FACON)</translation>
+        </message>
+        <message>
+            <source>Add header, length, CRC (binary)</source>
+            <translation>加上標頭、長度、CRC（二進位）</translation>
+        </message>
+        <message>
+            <source>body in hex, e.g. 30 31 34 30</source>
+            <translation>十六進位內容，例如 30 31 34 30</translation>
+        </message>
+        <message>
+            <source>body, e.g. 014603R00012</source>
+            <translation>內容，例如 014603R00012</translation>
+        </message>
+        <message>
+            <source>payload, e.g. 01 46 03 52 00 0C</source>
+            <translation>資料內容，例如 01 46 03 52 00 0C</translation>
+        </message>
+        <message>
+            <source>payload as ASCII</source>
+            <translation>ASCII 資料內容</translation>
+        </message>
+        <message>
+            <source>whole frame in hex, e.g. 02 30 31 34 30 43 37 03</source>
+            <translation>完整訊框（十六進位），例如 02 30 31 34 30 43 37 03</translation>
+        </message>
+        <message>
+            <source>whole frame, e.g. &lt;STX&gt;0140C7&lt;ETX&gt;</source>
+            <translation>完整訊框，例如 &lt;STX&gt;0140C7&lt;ETX&gt;</translation>
+        </message>
+        <message>
+            <source>command %1 to station %2</source>
+            <translation>送往站號 %2 的命令 %1</translation>
+        </message>
+        <message>
+            <source>an unrecognized frame</source>
+            <translation>無法辨識的訊框</translation>
+        </message>
+        <message>
+            <source>Send %1 (%2) on %3? It may change the PLC.</source>
+            <translation>要在 %3 上送出 %1（%2）嗎？這可能會變更 PLC。</translation>
+        </message>
+        <message>
+            <source>Send raw frame</source>
+            <translation>送出原始訊框</translation>
+        </message>
+        <message>
+            <source>Cancelled: nothing sent.</source>
+            <translation>已取消：未送出任何資料。</translation>
+        </message>
+        <message>
+            <source>Sent    %1
+waiting for the answer …</source>
+            <translation>已送出  %1
+等待回應 …</translation>
+        </message>
+        <message>
+            <source>Sent    %1</source>
+            <translation>已送出  %1</translation>
+        </message>
+        <message>
+            <source>%1
+Failed  %2</source>
+            <translation>%1
+失敗    %2</translation>
+        </message>
+        <message>
+            <source>%1
+Answer  %2
+        %3
+Meaning %4</source>
+            <translation>%1
+回應    %2
+        %3
+意義    %4</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::StatusIndicator</name>
+        <message>
+            <source>on</source>
+            <translation>開</translation>
+        </message>
+        <message>
+            <source>off</source>
+            <translation>關</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>不明</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TableLogger</name>
+        <message>
+            <source>No watch table to log.</source>
+            <translation>沒有可記錄的監看表。</translation>
+        </message>
+        <message>
+            <source>removed from the table</source>
+            <translation>已從監看表移除</translation>
+        </message>
+        <message>
+            <source>format changed</source>
+            <translation>格式已變更</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ToolConfirmation</name>
+        <message>
+            <source>station %1 on “%2”</source>
+            <extracomment>How every question names its target: station 1 on “Line 3 (TCP 10.0.0.5:500)”.</extracomment>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrafficLogModel</name>
+        <message>
+            <source>sent</source>
+            <translation>送出</translation>
+        </message>
+        <message>
+            <source>received</source>
+            <translation>接收</translation>
+        </message>
+        <message>
+            <source>event</source>
+            <translation>事件</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>時間</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>方向</translation>
+        </message>
+        <message>
+            <source>Station</source>
+            <translation>站號</translation>
+        </message>
+        <message>
+            <source>Bytes (hex)</source>
+            <translation>位元組（十六進位）</translation>
+        </message>
+        <message>
+            <source>ASCII</source>
+            <translation>ASCII</translation>
+        </message>
+        <message>
+            <source>Meaning</source>
+            <translation>意義</translation>
+        </message>
+        <message>
+            <source>Error</source>
+            <translation>錯誤</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendView</name>
+        <message>
+            <source>Time</source>
+            <translation>時間</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>數值</translation>
+        </message>
+        <message>
+            <source>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis</source>
+            <translation>拖曳矩形可放大，按右鍵可縮小，滾輪可縮放時間軸</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>暫停</translation>
+        </message>
+        <message>
+            <source>Freeze the trend (no new points until resumed)</source>
+            <translation>凍結趨勢圖（繼續之前不加入新的點）</translation>
+        </message>
+        <message>
+            <source>How much time the trend shows</source>
+            <translation>趨勢圖顯示的時間長度</translation>
+        </message>
+        <message>
+            <source>10 s</source>
+            <translation>10 秒</translation>
+        </message>
+        <message>
+            <source>1 min</source>
+            <translation>1 分鐘</translation>
+        </message>
+        <message>
+            <source>10 min</source>
+            <translation>10 分鐘</translation>
+        </message>
+        <message>
+            <source>1 h</source>
+            <translation>1 小時</translation>
+        </message>
+        <message>
+            <source>Reset Zoom</source>
+            <translation>重設縮放</translation>
+        </message>
+        <message>
+            <source>Show the whole time window again and follow the present</source>
+            <translation>重新顯示整個時間範圍並跟隨目前時間</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>移除</translation>
+        </message>
+        <message>
+            <source>Remove the selected item from the trend</source>
+            <translation>從趨勢圖移除選取的項目</translation>
+        </message>
+        <message>
+            <source>&amp;Remove from Trend</source>
+            <translation>從趨勢圖移除(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Select rows in a watch table and choose "Add to Trend" from its context menu.</source>
+            <translation>請在監看表中選取列，然後從右鍵選單選擇「加入趨勢圖」。</translation>
+        </message>
+        <message>
+            <source>Window:</source>
+            <translation>時間範圍：</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1（%2）</translation>
+        </message>
+        <message>
+            <source>No watch table row to trend.</source>
+            <translation>沒有可加入趨勢圖的監看表列。</translation>
+        </message>
+        <message>
+            <source>%1 is already in the trend.</source>
+            <translation>%1 已在趨勢圖中。</translation>
+        </message>
+        <message>
+            <source>%1 is shown as %2, which has no value to plot.</source>
+            <translation>%1 以%2顯示，沒有可繪製的數值。</translation>
+        </message>
+        <message>
+            <source>%1 added to the trend.</source>
+            <translation>已將 %1 加入趨勢圖。</translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>繼續</translation>
+        </message>
+        <message>
+            <source>Station %1, %2</source>
+            <translation>站號 %1，%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchInput</name>
+        <message>
+            <source>Type an address such as R100, or a range such as R100..R163.</source>
+            <translation>請輸入位址（例如 R100）或範圍（例如 R100..R163）。</translation>
+        </message>
+        <message>
+            <source>"%1": %2</source>
+            <translation>「%1」：%2</translation>
+        </message>
+        <message>
+            <source>Too many items at once: at most %1.</source>
+            <translation>一次加入的項目太多：最多 %1 個。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableModel</name>
+        <message>
+            <source>good</source>
+            <translation>良好</translation>
+        </message>
+        <message>
+            <source>stale</source>
+            <translation>過時</translation>
+        </message>
+        <message>
+            <source>error</source>
+            <translation>錯誤</translation>
+        </message>
+        <message>
+            <source>%1, words swapped</source>
+            <translation>%1，字組對調</translation>
+        </message>
+        <message>
+            <source>waiting</source>
+            <translation>等待中</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>No value yet</source>
+            <translation>尚無數值</translation>
+        </message>
+        <message>
+            <source>Click the box to toggle</source>
+            <translation>按一下方塊可切換</translation>
+        </message>
+        <message>
+            <source>Double-click or F2 to write</source>
+            <translation>按兩下或按 F2 寫入</translation>
+        </message>
+        <message>
+            <source>%1 .. %2 (%3 elements)</source>
+            <translation>%1 .. %2（%3 個元件）</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名稱</translation>
+        </message>
+        <message>
+            <source>Address</source>
+            <translation>位址</translation>
+        </message>
+        <message>
+            <source>Station</source>
+            <translation>站號</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>數值</translation>
+        </message>
+        <message>
+            <source>Format</source>
+            <translation>格式</translation>
+        </message>
+        <message>
+            <source>Quality</source>
+            <translation>品質</translation>
+        </message>
+        <message>
+            <source>Last update</source>
+            <translation>最後更新</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>註解</translation>
+        </message>
+        <message>
+            <source>Station must be a number from 1 to 254.</source>
+            <translation>站號必須是 1 到 254 之間的數字。</translation>
+        </message>
+        <message>
+            <source>Unknown format "%1".</source>
+            <translation>未知的格式「%1」。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableWidget</name>
+        <message>
+            <source>Watch</source>
+            <translation>監看</translation>
+        </message>
+        <message>
+            <source>Add: R100, R100..R163, X0..X15 — Enter</source>
+            <translation>加入：R100, R100..R163, X0..X15 — 按 Enter</translation>
+        </message>
+        <message>
+            <source>Add</source>
+            <translation>加入</translation>
+        </message>
+        <message>
+            <source>Connection this table polls through</source>
+            <translation>此監看表輪詢所用的連線</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>Poll interval of this table</source>
+            <translation>此監看表的輪詢間隔</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>暫停</translation>
+        </message>
+        <message>
+            <source>Stop polling this table</source>
+            <translation>停止輪詢此監看表</translation>
+        </message>
+        <message>
+            <source>Confirm writes</source>
+            <translation>寫入前確認</translation>
+        </message>
+        <message>
+            <source>Connection:</source>
+            <translation>連線：</translation>
+        </message>
+        <message>
+            <source>Every</source>
+            <translation>每隔</translation>
+        </message>
+        <message>
+            <source>&amp;Write Value…</source>
+            <translation>寫入數值(&amp;W)…</translation>
+        </message>
+        <message>
+            <source>&amp;Swap Words</source>
+            <translation>字組對調(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
+            <translation>32 與 64 位元數值低字組在前（部分人機介面如此儲存浮點數）</translation>
+        </message>
+        <message>
+            <source>&amp;Paste Items</source>
+            <translation>貼上項目(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Remove</source>
+            <translation>移除(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Add to &amp;Trend</source>
+            <translation>加入趨勢圖(&amp;T)</translation>
+        </message>
+        <message>
+            <source>Plot the selected items over time in the trend view</source>
+            <translation>在趨勢圖中繪製選取項目隨時間的變化</translation>
+        </message>
+        <message>
+            <source>polling paused</source>
+            <translation>輪詢已暫停</translation>
+        </message>
+        <message>
+            <source>link %1</source>
+            <translation>連線%1</translation>
+        </message>
+        <message>
+            <source>link %1: %2</source>
+            <translation>連線%1：%2</translation>
+        </message>
+        <message>
+            <source>no connection</source>
+            <translation>沒有連線</translation>
+        </message>
+        <message numerus="yes">
+            <source>Added %n item(s).</source>
+            <translation>
+                <numerusform>已加入 %n 個項目。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Cannot paste: %1</source>
+            <translation>無法貼上：%1</translation>
+        </message>
+        <message numerus="yes">
+            <source>Pasted %n item(s).</source>
+            <translation>
+                <numerusform>已貼上 %n 個項目。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1 (station %2) = %3</source>
+            <translation>%1（站號 %2）= %3</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: the table has no connection.</source>
+            <translation>無法寫入 %1：此監看表沒有連線。</translation>
+        </message>
+        <message>
+            <source>Write %1 to the PLC on %2?</source>
+            <translation>要將 %1 寫入 %2 上的 PLC 嗎？</translation>
+        </message>
+        <message>
+            <source>Write Value</source>
+            <translation>寫入數值</translation>
+        </message>
+        <message>
+            <source>Write of %1 cancelled.</source>
+            <translation>已取消寫入 %1。</translation>
+        </message>
+        <message>
+            <source>Writing %1 …</source>
+            <translation>正在寫入 %1 …</translation>
+        </message>
+        <message>
+            <source>Wrote %1.</source>
+            <translation>已寫入 %1。</translation>
+        </message>
+        <message>
+            <source>Write of %1 failed: %2</source>
+            <translation>寫入 %1 失敗：%2</translation>
+        </message>
+        <message>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
+        </message>
+        <message>
+            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
+            <translation>%1 的新數值（%2；十六進位請寫成 0x1A 或 1Ah）：</translation>
+        </message>
+    </context>
+    <context>
+        <name>main</name>
+        <message>
+            <source>Commissioning and monitoring tool for FATEK PLCs.</source>
+            <translation>永宏 FATEK PLC 的試車與監控工具。</translation>
+        </message>
+        <message>
+            <source>Start the embedded PLC simulator (demo ladder) and watch it.</source>
+            <translation>啟動內建的 PLC 模擬器（示範階梯圖）並監看。</translation>
+        </message>
+        <message>
+            <source>Operator mode: no writes, RUN/STOP or forcing.</source>
+            <translation>操作員模式：不允許寫入、RUN/STOP 或強制。</translation>
+        </message>
+        <message>
+            <source>Render the main window to a PNG file after startup and exit.</source>
+            <translation>啟動後將主視窗擷取為 PNG 檔，然後結束。</translation>
+        </message>
+        <message>
+            <source>file</source>
+            <translation>檔案</translation>
+        </message>
+        <message>
+            <source>With --screenshot: open a commissioning tool first (control, forcing, console, loopback, trend).</source>
+            <translation>搭配 --screenshot：先開啟一個試車工具（control、forcing、console、loopback、trend）。</translation>
+        </message>
+        <message>
+            <source>name</source>
+            <translation>名稱</translation>
+        </message>
+        <message>
+            <source>User interface language for this run: en or zh_TW (default: the View &gt; Language choice, else the system's).</source>
+            <translation>本次執行的介面語言：en 或 zh_TW（預設為「檢視 &gt; 語言」的選擇，否則依系統設定）。</translation>
+        </message>
+        <message>
+            <source>code</source>
+            <translation>代碼</translation>
+        </message>
+    </context>
+</TS>

@@ -1,0 +1,159 @@
+// The main window's trend dock and data logging actions (kept apart from mainwindow.cpp so the
+// trend and logging parts change in one place).
+#include "mainwindow.h"
+
+#include "tablelogger.h"
+#include "trendview.h"
+#include "watchtablemodel.h"
+
+#include <QAction>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTabWidget>
+
+namespace Fatek {
+
+void MainWindow::createTrendAndLogging()
+{
+    m_trendView = new TrendView(this);
+    auto *dock = new QDockWidget(tr("Trend"), this);
+    dock->setObjectName(QStringLiteral("trendDock"));
+    dock->setWidget(m_trendView);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    dock->hide(); // shown by Tools > Trend or "Add to Trend"
+    m_trendDock = dock;
+    QAction *toggle = dock->toggleViewAction();
+    toggle->setText(tr("&Trend"));
+    toggle->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G));
+    m_toolsMenu->addAction(toggle);
+    m_viewMenu->addAction(toggle);
+    connect(m_trendView, &TrendView::statusMessage, this, &MainWindow::showStatus);
+
+    m_tableLogger = new TableLogger(this);
+    m_loggingLabel = new QLabel(this);
+    m_loggingLabel->setObjectName(QStringLiteral("loggingStatus"));
+    m_loggingLabel->hide();
+    statusBar()->addPermanentWidget(m_loggingLabel);
+    m_startLoggingAction
+        = m_toolsMenu->addAction(QIcon(QStringLiteral(":/icons/save.svg")),
+                                 tr("Start &Data Logging…"), this, &MainWindow::startLoggingDialog);
+    m_startLoggingAction->setToolTip(tr("Write every value of the current watch table to a CSV "
+                                        "file with timestamps"));
+    m_stopLoggingAction
+        = m_toolsMenu->addAction(tr("Sto&p Data Logging"), this, &MainWindow::stopLogging);
+    m_stopLoggingAction->setEnabled(false);
+    m_toolsMenu->addSeparator();
+    connect(m_tableLogger, &TableLogger::rowWritten, this, &MainWindow::updateLoggingStatus);
+    connect(m_tableLogger, &TableLogger::stopped, this, [this](const QString &error) {
+        updateLoggingStatus();
+        if (!error.isEmpty()) {
+            showStatus(tr("Data logging stopped: %1").arg(error));
+            if (isVisible())
+                QMessageBox::warning(this, tr("Data Logging"),
+                                     tr("Data logging stopped:\n%1").arg(error));
+        }
+    });
+
+    // The demo shows its sine wave in the trend from the start.
+    connect(this, &MainWindow::demoReady, this, [this] {
+        WatchTableWidget *table = currentWatchTable();
+        if (!table)
+            return;
+        const WatchTableModel *model = table->model();
+        for (int r = 0; r < model->rowCount(); ++r) {
+            if (model->item(r).address.toString() == "R1") {
+                m_trendView->addItem(table->model(), r);
+                m_trendView->setWindowMs(60000);
+                break;
+            }
+        }
+    });
+}
+
+QWidget *MainWindow::showTrend()
+{
+    m_trendDock->show();
+    m_trendDock->raise();
+    return m_trendView;
+}
+
+void MainWindow::addToTrend(WatchTableWidget *table, const QList<int> &rows)
+{
+    if (!table)
+        return;
+    QStringList problems;
+    for (int row : rows) {
+        QString error;
+        if (!m_trendView->addItem(table->model(), row, &error))
+            problems << error;
+    }
+    showTrend();
+    if (!problems.isEmpty())
+        showStatus(problems.join(QLatin1Char(' ')));
+}
+
+Status MainWindow::startLogging(const QString &path)
+{
+    WatchTableWidget *table = currentWatchTable();
+    if (!table)
+        return makeError(ErrorKind::InvalidRequest, tr("No watch table to log.").toStdString());
+    if (const Status s = m_tableLogger->start(table->model(), path); !s)
+        return s;
+    updateLoggingStatus();
+    showStatus(tr("Logging %1 to %2.").arg(table->name(), QDir::toNativeSeparators(path)));
+    return Ok{};
+}
+
+void MainWindow::stopLogging()
+{
+    if (!m_tableLogger || !m_tableLogger->isLogging())
+        return;
+    const QString path = m_tableLogger->path();
+    const qint64 rows = m_tableLogger->rowCount();
+    m_tableLogger->stop();
+    showStatus(tr("Logging stopped: %n row(s) in %1.", nullptr, static_cast<int>(rows))
+                   .arg(QDir::toNativeSeparators(path)));
+}
+
+void MainWindow::startLoggingDialog()
+{
+    WatchTableWidget *table = currentWatchTable();
+    if (!table || table->model()->rowCount() == 0) {
+        QMessageBox::information(this, tr("Data Logging"),
+                                 tr("Add items to a watch table first: logging writes the rows of "
+                                    "the current table."));
+        return;
+    }
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Log Watch Table to CSV"), lastDirectory(), tr("CSV files (*.csv)"), nullptr,
+        QFileDialog::DontConfirmOverwrite); // an existing log is appended to, not replaced
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".csv");
+    setLastDirectory(path);
+    if (const Status s = startLogging(path); !s)
+        QMessageBox::warning(this, tr("Data Logging"), QString::fromStdString(s.error().message));
+}
+
+void MainWindow::updateLoggingStatus()
+{
+    const bool on = m_tableLogger->isLogging();
+    m_startLoggingAction->setEnabled(true);
+    m_stopLoggingAction->setEnabled(on);
+    m_loggingLabel->setVisible(on);
+    if (on) {
+        m_loggingLabel->setText(
+            tr("Logging to %1 (%n row(s))", nullptr, static_cast<int>(m_tableLogger->rowCount()))
+                .arg(QFileInfo(m_tableLogger->path()).fileName()));
+        m_loggingLabel->setToolTip(QDir::toNativeSeparators(m_tableLogger->path()));
+    }
+}
+
+} // namespace Fatek

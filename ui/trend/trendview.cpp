@@ -1,0 +1,509 @@
+#include "trendview.h"
+
+#include "coretext.h"
+#include "watchtablemodel.h"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QWheelEvent>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+#include <QtCharts/QDateTimeAxis>
+#include <QtCharts/QLegend>
+#include <QtCharts/QLegendMarker>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace Fatek {
+
+namespace {
+
+// Distinct on light and dark backgrounds.
+const QColor linePalette[]
+    = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c),
+       QColor(0xff, 0x7f, 0x0e), QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
+       QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf)};
+
+qint64 nowMs()
+{
+    return QDateTime::currentMSecsSinceEpoch();
+}
+
+} // namespace
+
+// The chart view: rubber band zoom from Qt Charts plus wheel zoom on the time axis around the
+// mouse; either one stops the window from following the present.
+class TrendChartView : public QChartView
+{
+public:
+    TrendChartView(QChart *chart, TrendView *owner)
+        : QChartView(chart, owner)
+        , m_owner(owner)
+    {
+        setRubberBand(QChartView::RectangleRubberBand);
+        setRenderHint(QPainter::Antialiasing);
+    }
+
+protected:
+    void wheelEvent(QWheelEvent *event) override
+    {
+        const int delta = event->angleDelta().y();
+        if (delta == 0)
+            return QChartView::wheelEvent(event);
+        const double factor = std::pow(1.0015, delta); // one notch (120) = about 20 %
+        const QRectF area = chart()->plotArea();
+        const double x = std::clamp(event->position().x(), area.left(), area.right());
+        QRectF zoomed = area;
+        zoomed.setWidth(area.width() / factor);
+        zoomed.moveLeft(x - (x - area.left()) / factor);
+        m_owner->userZoomed();
+        chart()->zoomIn(zoomed);
+        event->accept();
+    }
+    void mouseReleaseEvent(QMouseEvent *event) override
+    {
+        // A finished rubber band (or the right-click zoom out) changes the axes.
+        if (event->button() == Qt::LeftButton || event->button() == Qt::RightButton)
+            m_owner->userZoomed();
+        QChartView::mouseReleaseEvent(event);
+    }
+
+private:
+    TrendView *m_owner;
+};
+
+QList<qint64> TrendView::windowChoicesMs()
+{
+    return {10000, 60000, 600000, 3600000};
+}
+
+TrendView::TrendView(QWidget *parent)
+    : QWidget(parent)
+    , m_chart(new QChart)
+{
+    setObjectName(QStringLiteral("trendView"));
+    m_chart->legend()->setAlignment(Qt::AlignBottom);
+    m_chart->setMargins(QMargins(4, 4, 4, 4));
+    m_timeAxis = new QDateTimeAxis(m_chart);
+    m_timeAxis->setFormat(QStringLiteral("HH:mm:ss"));
+    m_timeAxis->setTitleText(tr("Time"));
+    m_timeAxis->setTickCount(7);
+    m_valueAxis = new QValueAxis(m_chart);
+    m_valueAxis->setTitleText(tr("Value"));
+    m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
+    m_chart->addAxis(m_valueAxis, Qt::AlignLeft);
+
+    m_chartView = new TrendChartView(m_chart, this);
+    m_chartView->setObjectName(QStringLiteral("trendChart"));
+    m_chartView->setToolTip(
+        tr("Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis"));
+
+    m_pauseButton = new QToolButton(this);
+    m_pauseButton->setObjectName(QStringLiteral("trendPause"));
+    m_pauseButton->setIcon(QIcon(QStringLiteral(":/icons/pause.svg")));
+    m_pauseButton->setText(tr("Pause"));
+    m_pauseButton->setToolTip(tr("Freeze the trend (no new points until resumed)"));
+    m_pauseButton->setCheckable(true);
+    m_pauseButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+
+    m_windowBox = new QComboBox(this);
+    m_windowBox->setObjectName(QStringLiteral("trendWindow"));
+    m_windowBox->setToolTip(tr("How much time the trend shows"));
+    m_windowBox->addItem(tr("10 s"), qint64(10000));
+    m_windowBox->addItem(tr("1 min"), qint64(60000));
+    m_windowBox->addItem(tr("10 min"), qint64(600000));
+    m_windowBox->addItem(tr("1 h"), qint64(3600000));
+    m_windowBox->setCurrentIndex(1);
+
+    m_resetZoomButton = new QToolButton(this);
+    m_resetZoomButton->setObjectName(QStringLiteral("trendResetZoom"));
+    m_resetZoomButton->setText(tr("Reset Zoom"));
+    m_resetZoomButton->setToolTip(tr("Show the whole time window again and follow the present"));
+
+    m_removeButton = new QToolButton(this);
+    m_removeButton->setObjectName(QStringLiteral("trendRemove"));
+    m_removeButton->setIcon(QIcon(QStringLiteral(":/icons/remove.svg")));
+    m_removeButton->setText(tr("Remove"));
+    m_removeButton->setToolTip(tr("Remove the selected item from the trend"));
+    m_removeButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+
+    m_itemList = new QListWidget(this);
+    m_itemList->setObjectName(QStringLiteral("trendItems"));
+    m_itemList->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_itemList->setMaximumWidth(220);
+    m_itemList->setContextMenuPolicy(Qt::ActionsContextMenu);
+    auto *removeAction = new QAction(tr("&Remove from Trend"), m_itemList);
+    removeAction->setShortcut(QKeySequence::Delete);
+    removeAction->setShortcutContext(Qt::WidgetShortcut);
+    m_itemList->addAction(removeAction);
+
+    m_emptyHint = new QLabel(
+        tr("Select rows in a watch table and choose \"Add to Trend\" from its context menu."),
+        this);
+    m_emptyHint->setWordWrap(true);
+
+    auto *bar = new QHBoxLayout;
+    bar->addWidget(m_pauseButton);
+    bar->addWidget(new QLabel(tr("Window:"), this));
+    bar->addWidget(m_windowBox);
+    bar->addWidget(m_resetZoomButton);
+    bar->addStretch(1);
+    bar->addWidget(m_removeButton);
+
+    auto *side = new QVBoxLayout;
+    side->addWidget(m_itemList, 1);
+    side->addWidget(m_emptyHint);
+    auto *body = new QHBoxLayout;
+    body->addLayout(side);
+    body->addWidget(m_chartView, 1);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(bar);
+    layout->addLayout(body, 1);
+
+    connect(m_pauseButton, &QToolButton::toggled, this, &TrendView::setPaused);
+    connect(m_windowBox, &QComboBox::currentIndexChanged, this,
+            [this](int index) { setWindowMs(m_windowBox->itemData(index).toLongLong()); });
+    connect(m_resetZoomButton, &QToolButton::clicked, this, &TrendView::resetZoom);
+    auto removeSelected = [this] {
+        std::vector<int> rows;
+        for (const QModelIndex &i : m_itemList->selectionModel()->selectedRows())
+            rows.push_back(i.row());
+        std::sort(rows.rbegin(), rows.rend());
+        for (int r : rows)
+            removeItem(r);
+    };
+    connect(m_removeButton, &QToolButton::clicked, this, removeSelected);
+    connect(removeAction, &QAction::triggered, this, removeSelected);
+    connect(m_timeAxis, &QDateTimeAxis::rangeChanged, this, [this] {
+        if (!m_settingRange)
+            userZoomed();
+    });
+
+    m_refreshTimer.setInterval(250);
+    connect(&m_refreshTimer, &QTimer::timeout, this, &TrendView::refresh);
+    m_refreshTimer.start();
+    rebuildItemList();
+    updateZoomUi();
+    refresh();
+}
+
+TrendView::~TrendView()
+{
+    m_refreshTimer.stop();
+    for (auto &item : m_items) {
+        if (item->model)
+            disconnect(item->model, nullptr, this, nullptr);
+    }
+}
+
+QString TrendView::displayName(const WatchItemSpec &spec)
+{
+    const QString address = QString::fromStdString(spec.address.toString());
+    return spec.name.trimmed().isEmpty() ? address
+                                         : tr("%1 (%2)").arg(spec.name.trimmed(), address);
+}
+
+bool TrendView::addItem(WatchTableModel *model, int row, QString *error)
+{
+    if (!model || row < 0 || row >= model->rowCount()) {
+        if (error)
+            *error = tr("No watch table row to trend.");
+        return false;
+    }
+    const WatchItemSpec spec = model->item(row);
+    const quint64 key = model->rowKey(row);
+    for (const auto &item : m_items) {
+        if (item->model == model && item->rowKey == key) {
+            if (error)
+                *error = tr("%1 is already in the trend.").arg(displayName(spec));
+            return false;
+        }
+    }
+    if (!trendValue(spec, 0)) {
+        if (error)
+            *error = tr("%1 is shown as %2, which has no value to plot.")
+                         .arg(displayName(spec), CoreText::format(spec.format));
+        return false;
+    }
+    auto item = std::make_unique<Item>();
+    item->spec = spec;
+    item->model = model;
+    item->rowKey = key;
+    item->color = linePalette[m_colorIndex++ % static_cast<int>(std::size(linePalette))];
+    // One connection per model: the first item of a model connects it.
+    const bool connected = std::any_of(m_items.cbegin(), m_items.cend(),
+                                       [model](const auto &i) { return i->model == model; });
+    m_items.push_back(std::move(item));
+    if (!connected) {
+        connect(model, &QAbstractItemModel::dataChanged, this,
+                [this, model](const QModelIndex &topLeft, const QModelIndex &bottomRight) {
+                    onDataChanged(model, topLeft.row(), bottomRight.row(), bottomRight.column());
+                });
+    }
+    sample(*m_items.back());
+    rebuildItemList();
+    refresh();
+    Q_EMIT statusMessage(tr("%1 added to the trend.").arg(displayName(spec)));
+    return true;
+}
+
+void TrendView::removeItem(int index)
+{
+    if (index < 0 || index >= itemCount())
+        return;
+    auto it = m_items.begin() + index;
+    for (QLineSeries *s : (*it)->series) {
+        m_chart->removeSeries(s);
+        delete s;
+    }
+    QPointer<WatchTableModel> model = (*it)->model;
+    m_items.erase(it);
+    if (model && std::none_of(m_items.cbegin(), m_items.cend(), [&model](const auto &i) {
+            return i->model == model;
+        }))
+        disconnect(model, nullptr, this, nullptr);
+    rebuildItemList();
+    refresh();
+}
+
+QString TrendView::itemName(int index) const
+{
+    return displayName(m_items.at(static_cast<std::size_t>(index))->spec);
+}
+
+const TrendBuffer &TrendView::buffer(int index) const
+{
+    return m_items.at(static_cast<std::size_t>(index))->buffer;
+}
+
+QList<QLineSeries *> TrendView::series(int index) const
+{
+    QList<QLineSeries *> list;
+    for (QLineSeries *s : m_items.at(static_cast<std::size_t>(index))->series) {
+        if (s->count() > 0)
+            list.append(s);
+    }
+    return list;
+}
+
+void TrendView::onDataChanged(WatchTableModel *model, int firstRow, int lastRow, int lastColumn)
+{
+    // Value batches and staleness touch the columns up to Updated; the end of a change highlight
+    // touches the value column only and brings nothing new.
+    if (m_paused || lastColumn < WatchTableModel::QualityColumn)
+        return;
+    for (auto &item : m_items) {
+        if (item->model != model)
+            continue;
+        const int row = model->rowOfKey(item->rowKey);
+        if (row >= firstRow && row <= lastRow)
+            sample(*item);
+    }
+}
+
+void TrendView::sample(Item &item)
+{
+    if (m_paused || !item.model)
+        return;
+    const qint64 now = nowMs();
+    const int row = item.model->rowOfKey(item.rowKey);
+    if (row < 0) {
+        item.buffer.appendGap(now);
+        return;
+    }
+    const WatchItemSpec spec = item.model->item(row);
+    std::optional<double> value;
+    // A changed format changes what the number means: the old line ends there.
+    if (spec.format == item.spec.format && spec.swapWords == item.spec.swapWords
+        && item.model->hasValue(row) && item.model->quality(row) == ValueQuality::Good)
+        value = trendValue(spec, item.model->rawValue(row));
+    if (value)
+        item.buffer.append(now, *value);
+    else
+        item.buffer.appendGap(now);
+}
+
+void TrendView::setPaused(bool paused)
+{
+    if (paused == m_paused)
+        return;
+    m_paused = paused;
+    const QSignalBlocker block(m_pauseButton);
+    m_pauseButton->setChecked(paused);
+    m_pauseButton->setText(paused ? tr("Resume") : tr("Pause"));
+    // Whatever happens while paused is not seen: the line must not bridge it.
+    if (paused) {
+        for (auto &item : m_items)
+            item->buffer.appendGap(nowMs());
+        m_refreshTimer.stop();
+    } else {
+        m_refreshTimer.start();
+        refresh();
+    }
+}
+
+void TrendView::setWindowMs(qint64 ms)
+{
+    m_windowMs = std::max<qint64>(ms, 1000);
+    const int index = m_windowBox->findData(m_windowMs);
+    if (index >= 0 && index != m_windowBox->currentIndex()) {
+        const QSignalBlocker block(m_windowBox);
+        m_windowBox->setCurrentIndex(index);
+    }
+    m_zoomed = false;
+    updateZoomUi();
+    refresh();
+}
+
+void TrendView::zoomBy(double factor)
+{
+    if (factor <= 0)
+        return;
+    userZoomed();
+    const QRectF area = m_chart->plotArea();
+    QRectF zoomed = area;
+    zoomed.setWidth(area.width() / factor);
+    zoomed.moveCenter(area.center());
+    m_chart->zoomIn(zoomed);
+    refresh();
+}
+
+void TrendView::resetZoom()
+{
+    m_zoomed = false;
+    updateZoomUi();
+    refresh();
+}
+
+void TrendView::userZoomed()
+{
+    if (m_zoomed)
+        return;
+    m_zoomed = true;
+    updateZoomUi();
+}
+
+void TrendView::updateZoomUi()
+{
+    m_resetZoomButton->setEnabled(m_zoomed);
+}
+
+qint64 TrendView::spanMs() const
+{
+    qint64 span = 0;
+    for (const auto &item : m_items) {
+        const TrendBuffer &b = item->buffer;
+        qint64 first = -1, last = -1;
+        for (qsizetype i = 0; i < b.size(); ++i) {
+            if (!b.at(i).gap) {
+                first = b.at(i).timeMs;
+                break;
+            }
+        }
+        for (qsizetype i = b.size() - 1; i >= 0; --i) {
+            if (!b.at(i).gap) {
+                last = b.at(i).timeMs;
+                break;
+            }
+        }
+        if (first >= 0)
+            span = std::max(span, last - first);
+    }
+    return span;
+}
+
+void TrendView::rebuildItemList()
+{
+    m_itemList->clear();
+    for (const auto &item : m_items) {
+        QPixmap swatch(12, 12);
+        swatch.fill(item->color);
+        auto *entry = new QListWidgetItem(QIcon(swatch), displayName(item->spec), m_itemList);
+        entry->setToolTip(
+            tr("Station %1, %2").arg(item->spec.station).arg(CoreText::format(item->spec.format)));
+    }
+    m_emptyHint->setVisible(m_items.empty());
+    m_removeButton->setEnabled(!m_items.empty());
+}
+
+void TrendView::setAxesRange(qint64 fromMs, qint64 toMs, double yMin, double yMax)
+{
+    m_settingRange = true;
+    m_timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(fromMs),
+                         QDateTime::fromMSecsSinceEpoch(toMs));
+    m_valueAxis->setRange(yMin, yMax);
+    m_settingRange = false;
+}
+
+void TrendView::refresh()
+{
+    qint64 fromMs = 0, toMs = 0;
+    if (m_zoomed) {
+        fromMs = m_timeAxis->min().toMSecsSinceEpoch();
+        toMs = m_timeAxis->max().toMSecsSinceEpoch();
+    } else {
+        toMs = nowMs();
+        // Paused: the picture stays where it stopped.
+        for (const auto &item : m_items) {
+            if (m_paused && !item->buffer.isEmpty())
+                toMs = std::min(toMs, item->buffer.last().timeMs);
+        }
+        fromMs = toMs - m_windowMs;
+    }
+    // About two points per pixel column: more cannot be seen.
+    const qsizetype maxPoints = std::max<qsizetype>(400, 2 * m_chartView->width());
+    double yMin = std::numeric_limits<double>::max();
+    double yMax = std::numeric_limits<double>::lowest();
+    for (auto &item : m_items) {
+        const QList<QList<QPointF>> pieces = item->buffer.segments(fromMs, toMs, maxPoints);
+        while (item->series.size() < static_cast<std::size_t>(pieces.size())) {
+            auto *s = new QLineSeries;
+            s->setName(displayName(item->spec));
+            QPen pen(item->color);
+            pen.setWidthF(1.8);
+            s->setPen(pen);
+            m_chart->addSeries(s);
+            s->attachAxis(m_timeAxis);
+            s->attachAxis(m_valueAxis);
+            // One legend entry per item, not per line piece.
+            const auto markers = m_chart->legend()->markers(s);
+            for (QLegendMarker *m : markers)
+                m->setVisible(item->series.empty());
+            item->series.push_back(s);
+        }
+        for (std::size_t i = 0; i < item->series.size(); ++i) {
+            if (i < static_cast<std::size_t>(pieces.size())) {
+                const QList<QPointF> &points = pieces.at(static_cast<qsizetype>(i));
+                item->series[i]->replace(points);
+                for (const QPointF &p : points) {
+                    if (p.x() < static_cast<double>(fromMs) || p.x() > static_cast<double>(toMs))
+                        continue;
+                    yMin = std::min(yMin, p.y());
+                    yMax = std::max(yMax, p.y());
+                }
+            } else if (item->series[i]->count() > 0) {
+                item->series[i]->clear();
+            }
+        }
+    }
+    if (m_zoomed)
+        return; // the user's ranges stay
+    if (yMin > yMax) {
+        yMin = 0;
+        yMax = 1;
+    }
+    const double margin = yMax > yMin ? (yMax - yMin) * 0.05 : std::max(1.0, std::abs(yMax) * 0.05);
+    setAxesRange(fromMs, toMs, yMin - margin, yMax + margin);
+}
+
+} // namespace Fatek
