@@ -5,8 +5,11 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config
     qt6-base-dev qt6-serialport-dev qt6-charts-dev qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libqt6svg6
-    libgl-dev libxkbcommon-dev fonts-dejavu-core
+    libgl-dev libxkbcommon-dev fonts-dejavu-core fonts-noto-cjk
     socat python3 git clang-format
+    qt6-svg-dev
+    # packaging and its install test (tools/package-test.sh)
+    dpkg-dev file desktop-file-utils groff-base man-db gzip
 )
 
 missing=()

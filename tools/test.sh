@@ -9,4 +9,6 @@ export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-$jobs}
 export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-$jobs}
 cmake --workflow --preset release
 cmake --workflow --preset asan
+# Install test of the .deb/.tar.gz built from the release build (see docs/packaging.md).
+tools/package-test.sh
 # EXTRA CI STEPS (keep this marker line)
