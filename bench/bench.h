@@ -1,0 +1,61 @@
+#pragma once
+
+#include <QString>
+
+#include <functional>
+#include <vector>
+
+namespace Fatek::Bench {
+
+// One line of the table: a measured figure next to what it is compared to (measured or computed
+// in the same run).
+struct Row
+{
+    QString figure;
+    QString value;
+    QString comparedTo;
+    QString ratio;
+    QString target;
+};
+
+// One RESULT line: a figure with a target, checked.
+struct Outcome
+{
+    QString name;
+    double value = 0;
+    QString target;
+    bool pass = false;
+};
+
+struct Report
+{
+    std::vector<Row> rows;
+    std::vector<Outcome> results;
+
+    void row(const QString &figure, const QString &value, const QString &comparedTo = {},
+             const QString &ratio = {}, const QString &target = {})
+    {
+        rows.push_back({figure, value, comparedTo, ratio, target});
+    }
+    void result(const QString &name, double value, const QString &target, bool pass)
+    {
+        results.push_back({name, value, target, pass});
+    }
+};
+
+struct Options
+{
+    bool quick = false; // shorter runs (sanitizer builds, smoke checks)
+};
+
+// The five figures of the bench; each adds its rows and results.
+void runPacking(const Options &options, Report &report);
+void runSerialCycle(const Options &options, Report &report);
+void runTcp(const Options &options, Report &report);
+void runUiLoad(const Options &options, Report &report);
+void runCodec(const Options &options, Report &report);
+
+QString fmt(double value, int decimals = 2);
+QString ratioText(double value, double base);
+
+} // namespace Fatek::Bench

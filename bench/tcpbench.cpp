@@ -1,0 +1,215 @@
+// Figure 3: TCP loopback throughput and round trip. The full Session (submit() in this thread,
+// the I/O on its worker thread, finished() back through a queued signal) against a bare
+// QTcpSocket ping-pong (blocking, in this thread, no session) on the same simulator, with the
+// same request, one transaction at a time.
+#include "bench.h"
+#include "simthread.h"
+
+#include "binarycodec.h"
+#include "binarydeframer.h"
+#include "faconcodec.h"
+#include "facondeframer.h"
+#include "sessionresult.h"
+
+#include <QElapsedTimer>
+#include <QTcpSocket>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+namespace Fatek::Bench {
+
+namespace {
+
+struct Latency
+{
+    bool ok = false;
+    double perSecond = 0;
+    double p50Us = 0;
+    double p99Us = 0;
+};
+
+Latency summarize(std::vector<double> samplesUs, double seconds)
+{
+    Latency l;
+    if (samplesUs.empty() || seconds <= 0)
+        return l;
+    std::sort(samplesUs.begin(), samplesUs.end());
+    auto pct = [&samplesUs](double p) {
+        const auto i = static_cast<std::size_t>(p * static_cast<double>(samplesUs.size() - 1));
+        return samplesUs[i];
+    };
+    l.ok = true;
+    l.perSecond = static_cast<double>(samplesUs.size()) / seconds;
+    l.p50Us = pct(0.50);
+    l.p99Us = pct(0.99);
+    return l;
+}
+
+Request benchRequest()
+{
+    return Request::readRegisters(1, {ElementType::R, 0}, 10);
+}
+
+// Round trips one at a time (submit() to finished(), in this thread), then throughput with
+// `depth` requests kept queued in the session, as a poll cycle queues its steps.
+Latency viaSession(quint16 port, Protocol protocol, int warmup, double seconds, int depth,
+                   double *closedLoopPerSecond)
+{
+    LinkSettings settings
+        = LinkSettings::tcp(QStringLiteral("127.0.0.1"), port, choiceOf(protocol));
+    Session session(settings);
+    if (!openAndWait(session))
+        return {};
+    const Request request = benchRequest();
+    std::vector<double> samples;
+    samples.reserve(200000);
+    QElapsedTimer clock;
+    QElapsedTimer run;
+    int done = 0;
+    bool failed = false;
+    bool pipelined = false;
+    qint64 runNs = 0;
+    QEventLoop loop;
+    QObject::connect(
+        &session, &Session::finished, &loop, [&](quint64, const SessionResult &result) {
+            const qint64 ns = clock.nsecsElapsed();
+            if (!result.ok()) {
+                failed = true;
+                loop.quit();
+                return;
+            }
+            if (++done == warmup)
+                run.start();
+            else if (done > warmup && !pipelined)
+                samples.push_back(static_cast<double>(ns) / 1000.0);
+            if (done > warmup && static_cast<double>(run.nsecsElapsed()) >= seconds * 1e9) {
+                runNs = run.nsecsElapsed();
+                loop.quit();
+                return;
+            }
+            clock.start();
+            session.submit(request);
+        });
+    clock.start();
+    session.submit(request);
+    loop.exec();
+    if (failed)
+        return {};
+    Latency latency = summarize(std::move(samples), static_cast<double>(runNs) / 1e9);
+    *closedLoopPerSecond = latency.perSecond;
+
+    // Throughput: `depth` in the queue at all times.
+    pipelined = true;
+    done = 0;
+    clock.start();
+    for (int i = 0; i < depth; ++i)
+        session.submit(request);
+    loop.exec();
+    // The requests still queued finish (or are dropped) when the session goes.
+    if (failed || runNs <= 0)
+        return {};
+    latency.perSecond = static_cast<double>(done - warmup) * 1e9 / static_cast<double>(runNs);
+    return latency;
+}
+
+Latency viaBareSocket(quint16 port, Protocol protocol, int warmup, double seconds)
+{
+    FaconCodec facon;
+    BinaryCodec binary;
+    const Codec &codec = protocol == Protocol::Facon ? static_cast<const Codec &>(facon)
+                                                     : static_cast<const Codec &>(binary);
+    std::unique_ptr<Deframer> deframer;
+    if (protocol == Protocol::Facon)
+        deframer = std::make_unique<FaconDeframer>();
+    else
+        deframer = std::make_unique<BinaryDeframer>();
+    QTcpSocket socket;
+    socket.connectToHost(QStringLiteral("127.0.0.1"), port);
+    if (!socket.waitForConnected(5000))
+        return {};
+    socket.setSocketOption(QAbstractSocket::LowDelayOption, 1);
+    const Request request = benchRequest();
+    const Bytes query = codec.encodeRequest(request).value();
+    const QByteArray out(reinterpret_cast<const char *>(query.data()),
+                         static_cast<qsizetype>(query.size()));
+    std::vector<double> samples;
+    samples.reserve(200000);
+    std::vector<DeframedItem> frames;
+    QElapsedTimer run;
+    for (int i = 0;; ++i) {
+        if (i == warmup)
+            run.start();
+        QElapsedTimer clock;
+        clock.start();
+        socket.write(out);
+        frames.clear();
+        while (frames.empty()) {
+            if (socket.bytesAvailable() == 0 && !socket.waitForReadyRead(5000))
+                return {};
+            const QByteArray in = socket.readAll();
+            deframer->feed(std::span(reinterpret_cast<const std::uint8_t *>(in.constData()),
+                                     static_cast<std::size_t>(in.size())),
+                           frames);
+        }
+        // Decoded like the session does, so both sides do the protocol work.
+        if (frames.front().error || !codec.decodeResponse(frames.front().frame, request))
+            return {};
+        if (i >= warmup)
+            samples.push_back(static_cast<double>(clock.nsecsElapsed()) / 1000.0);
+        if (i >= warmup && static_cast<double>(run.nsecsElapsed()) >= seconds * 1e9)
+            break;
+    }
+    return summarize(std::move(samples), static_cast<double>(run.nsecsElapsed()) / 1e9);
+}
+
+} // namespace
+
+void runTcp(const Options &options, Report &report)
+{
+    const double seconds = options.quick ? 0.3 : 2.0;
+    const int warmup = options.quick ? 50 : 500;
+    double worstRatio = 1e9;
+    double worstOverhead = 0;
+    bool ok = true;
+    SimThread sim;
+    for (Protocol protocol : {Protocol::Facon, Protocol::Binary}) {
+        const QString proto = QString::fromUtf8(protocolName(protocol).data());
+        const Latency bare = viaBareSocket(sim.port(), protocol, warmup, seconds);
+        double closedLoop = 0;
+        const Latency session = viaSession(sim.port(), protocol, warmup, seconds, 8, &closedLoop);
+        if (!bare.ok || !session.ok) {
+            ok = false;
+            report.row(QStringLiteral("tcp %1: transactions").arg(proto),
+                       QStringLiteral("failed (bare %1, session %2)")
+                           .arg(bare.ok ? QStringLiteral("ok") : QStringLiteral("failed"),
+                                session.ok ? QStringLiteral("ok") : QStringLiteral("failed")));
+            continue;
+        }
+        const double ratio = session.perSecond / bare.perSecond;
+        const double overhead = session.p99Us - bare.p99Us;
+        worstRatio = std::min(worstRatio, ratio);
+        worstOverhead = std::max(worstOverhead, overhead);
+        report.row(
+            QStringLiteral("tcp %1: session transactions/s, 8 queued (46 x 10 R)").arg(proto),
+            fmt(session.perSecond, 0), QStringLiteral("bare %1").arg(fmt(bare.perSecond, 0)),
+            fmt(ratio, 3), QStringLiteral(">= 0.6 x bare"));
+        report.row(QStringLiteral("tcp %1: session transactions/s, one at a time").arg(proto),
+                   fmt(closedLoop, 0), QStringLiteral("bare %1").arg(fmt(bare.perSecond, 0)),
+                   fmt(closedLoop / bare.perSecond, 3));
+        report.row(QStringLiteral("tcp %1: session RTT p50 (us)").arg(proto), fmt(session.p50Us, 1),
+                   QStringLiteral("bare %1").arg(fmt(bare.p50Us, 1)),
+                   QStringLiteral("+%1 us").arg(fmt(session.p50Us - bare.p50Us, 1)));
+        report.row(QStringLiteral("tcp %1: session RTT p99 (us)").arg(proto), fmt(session.p99Us, 1),
+                   QStringLiteral("bare %1").arg(fmt(bare.p99Us, 1)),
+                   QStringLiteral("+%1 us").arg(fmt(overhead, 1)),
+                   QStringLiteral("overhead < 200 us"));
+    }
+    report.result(QStringLiteral("tcp_session_vs_bare_throughput"), ok ? worstRatio : 0,
+                  QStringLiteral(">=0.6"), ok && worstRatio >= 0.6);
+    report.result(QStringLiteral("tcp_p99_overhead_us"), worstOverhead, QStringLiteral("<200"),
+                  ok && worstOverhead < 200);
+}
+
+} // namespace Fatek::Bench

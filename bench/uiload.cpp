@@ -1,0 +1,276 @@
+// Figure 4: UI under load. 10,000 watched items polled every 100 ms from the simulator (binary,
+// TCP loopback) through the real stack: ConnectionManager -> Connection -> Session (worker
+// thread) -> WatchTableWidget (WatchTableModel + QTableView), painted offscreen. The simulator
+// changes every register each 100 ms, so every batch changes (and flashes) most rows.
+// - UI thread busy share: CPU time of the UI thread (CLOCK_THREAD_CPUTIME_ID) / wall time.
+// - Longest stall: longest gap between two beats of a 1 ms timer on the UI thread, minus 1 ms.
+// - Memory per item in core: glibc mallinfo2() in-use bytes (all arenas) with the session
+//   polling the list, minus the same session idle with its traffic log already full, / items.
+#include "bench.h"
+#include "simthread.h"
+
+#include "connection.h"
+#include "connectionmanager.h"
+#include "linksettingsio.h"
+#include "watchlist.h"
+#include "watchtablemodel.h"
+#include "watchtablewidget.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QTableView>
+
+#include <malloc.h>
+#include <time.h>
+
+#include <algorithm>
+
+namespace Fatek::Bench {
+
+namespace {
+
+constexpr int itemCount = 10000;
+constexpr int refreshMs = 100;
+
+// 10,000 elements that exist on the simulated FBs: R0..R3839, D0..D2999, M0..M1999, X0..X255,
+// Y0..Y255, S0..S647.
+QList<WatchItemSpec> tenThousand()
+{
+    const std::pair<ElementType, std::uint32_t> ranges[] = {
+        {ElementType::R, 3840}, {ElementType::D, 3000}, {ElementType::M, 2000},
+        {ElementType::X, 256},  {ElementType::Y, 256},  {ElementType::S, 648},
+    };
+    QList<WatchItemSpec> items;
+    for (const auto &[type, count] : ranges) {
+        for (std::uint32_t n = 0; n < count; ++n) {
+            WatchItemSpec spec;
+            spec.address = {type, n};
+            spec.format = isDiscrete(type) ? DisplayFormat::Bit : DisplayFormat::Signed;
+            items.append(spec);
+        }
+    }
+    return items;
+}
+
+double threadCpuSeconds()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) / 1e9;
+}
+
+std::size_t heapInUse()
+{
+    return mallinfo2().uordblks;
+}
+
+// Runs the event loop for `ms`.
+void spin(int ms)
+{
+    QEventLoop loop;
+    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+    loop.exec();
+}
+
+// The simulated PLC's registers change every refresh.
+void churn(SimulatedPlc &plc, std::uint32_t tick)
+{
+    for (std::uint32_t n = 0; n < 3840; ++n)
+        plc.setValue({ElementType::R, n}, (n + tick) & 0xFFFF);
+    for (std::uint32_t n = 0; n < 3000; ++n)
+        plc.setValue({ElementType::D, n}, (n * 3 + tick) & 0xFFFF);
+    for (std::uint32_t n = 0; n < 2000; n += 7)
+        plc.setValue({ElementType::M, n}, tick & 1);
+}
+
+struct CoreMemory
+{
+    bool ok = false;
+    double bytesPerItem = 0;
+    double peakBytesPerItem = 0;
+};
+
+CoreMemory coreMemory(const Options &options)
+{
+    CoreMemory m;
+    SimThread sim;
+    QList<WatchEntry> entries;
+    const QList<WatchItemSpec> specs = tenThousand();
+    for (const WatchItemSpec &s : specs) {
+        WatchEntry e;
+        e.id = static_cast<std::uint64_t>(entries.size() + 1);
+        e.station = s.station;
+        e.address = s.address;
+        e.intervalMs = refreshMs;
+        entries.append(e);
+    }
+    Session session(LinkSettings::tcp(QStringLiteral("127.0.0.1"), sim.port(),
+                                      LinkSettings::ProtocolChoice::Binary));
+    if (!openAndWait(session))
+        return m;
+    // Fill the traffic log to its capacity with frames like the poll's, so that its (bounded,
+    // per-session) memory is in the baseline and not counted per item.
+    {
+        const int capacity = session.trafficLog()->capacity();
+        const Request fill = Request::readRegisters(1, {ElementType::R, 0}, 64);
+        int done = 0;
+        QEventLoop loop;
+        QObject::connect(&session, &Session::finished, &loop, [&](quint64, const SessionResult &) {
+            if (++done >= capacity / 2 + 16)
+                loop.quit();
+            else
+                session.submit(fill, Priority::User);
+        });
+        session.submit(fill, Priority::User);
+        loop.exec();
+    }
+    spin(100);
+    malloc_trim(0);
+    const std::size_t before = heapInUse();
+
+    int batches = 0;
+    QObject::connect(&session, &Session::values, &session,
+                     [&batches](const QList<WatchValue> &) { ++batches; });
+    session.setWatchList(entries);
+    QElapsedTimer clock;
+    clock.start();
+    while (batches < 3 && clock.elapsed() < 20000)
+        spin(10);
+    if (batches < 3)
+        return m;
+    // Samples spread over the cycle: the worker may be between or inside cycles.
+    std::vector<double> samples;
+    const int count = options.quick ? 5 : 20;
+    for (int i = 0; i < count; ++i) {
+        spin(37);
+        samples.push_back(static_cast<double>(heapInUse()) - static_cast<double>(before));
+    }
+    session.setWatchList({});
+    std::sort(samples.begin(), samples.end());
+    m.ok = true;
+    m.bytesPerItem = samples[samples.size() / 2] / itemCount;
+    m.peakBytesPerItem = samples.back() / itemCount;
+    return m;
+}
+
+struct UiLoad
+{
+    bool ok = false;
+    double busyShare = 0;
+    double longestStallMs = 0;
+    double batchesPerSecond = 0;
+    double valuesPerSecond = 0;
+};
+
+UiLoad uiLoad(const Options &options)
+{
+    UiLoad u;
+    SimThread sim;
+    ConnectionManager manager;
+    SavedConnection saved;
+    saved.name = QStringLiteral("bench");
+    saved.settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), sim.port(),
+                                       LinkSettings::ProtocolChoice::Binary);
+    Connection *connection = manager.open(saved);
+    if (!openAndWait(*connection->session()))
+        return u;
+
+    WatchTableWidget widget(&manager);
+    WatchTableSpec spec;
+    spec.name = QStringLiteral("load");
+    spec.intervalMs = refreshMs;
+    spec.items = tenThousand();
+    widget.setSpec(spec);
+    widget.resize(1280, 900);
+    widget.show();
+    widget.setConnection(connection);
+
+    // The simulator's memory changes every refresh, on the simulator's thread.
+    QTimer *churnTimer = nullptr;
+    std::uint32_t tick = 0;
+    QMetaObject::invokeMethod(
+        sim.context(),
+        [&] {
+            churnTimer = new QTimer(sim.context());
+            churnTimer->setInterval(refreshMs);
+            QObject::connect(churnTimer, &QTimer::timeout, sim.context(),
+                             [&] { churn(sim.plc(), ++tick); });
+            churnTimer->start();
+        },
+        Qt::BlockingQueuedConnection);
+
+    int batches = 0;
+    qint64 values = 0;
+    QObject::connect(connection, &Connection::values, &widget, [&](const QList<WatchValue> &v) {
+        ++batches;
+        values += v.size();
+    });
+    // Warm up: the first batches fill the table.
+    QElapsedTimer clock;
+    clock.start();
+    while (batches < 3 && clock.elapsed() < 20000)
+        spin(10);
+
+    // A 1 ms heartbeat on the UI thread: the longest gap between two beats is the longest time
+    // the event loop could not react (a stall), whatever kept it busy (model, view, painting).
+    QElapsedTimer beat;
+    qint64 longest = 0;
+    QTimer heartbeat;
+    heartbeat.setTimerType(Qt::PreciseTimer);
+    heartbeat.setInterval(1);
+    QObject::connect(&heartbeat, &QTimer::timeout, &widget, [&] {
+        longest = std::max(longest, beat.nsecsElapsed());
+        beat.start();
+    });
+    beat.start();
+    heartbeat.start();
+    const int startBatches = batches;
+    const qint64 startValues = values;
+    const double cpu0 = threadCpuSeconds();
+    QElapsedTimer wall;
+    wall.start();
+    spin(options.quick ? 2000 : 10000);
+    const double seconds = static_cast<double>(wall.nsecsElapsed()) / 1e9;
+    const double cpu = threadCpuSeconds() - cpu0;
+    heartbeat.stop();
+    QMetaObject::invokeMethod(
+        sim.context(), [&] { delete churnTimer; }, Qt::BlockingQueuedConnection);
+    widget.setConnection(nullptr);
+
+    u.ok = batches > startBatches;
+    u.busyShare = cpu / seconds;
+    // The heartbeat's own period is not a stall.
+    u.longestStallMs = std::max(0.0, static_cast<double>(longest) / 1e6 - 1.0);
+    u.batchesPerSecond = (batches - startBatches) / seconds;
+    u.valuesPerSecond = static_cast<double>(values - startValues) / seconds;
+    return u;
+}
+
+} // namespace
+
+void runUiLoad(const Options &options, Report &report)
+{
+    const CoreMemory memory = coreMemory(options);
+    const UiLoad ui = uiLoad(options);
+    report.row(QStringLiteral("ui 10k items @10 Hz: UI thread busy"),
+               ui.ok ? QStringLiteral("%1 %").arg(fmt(ui.busyShare * 100, 1))
+                     : QStringLiteral("failed"),
+               QStringLiteral("%1 batches/s, %2 values/s")
+                   .arg(fmt(ui.batchesPerSecond, 1))
+                   .arg(fmt(ui.valuesPerSecond, 0)),
+               {}, QStringLiteral("< 25 %"));
+    report.row(QStringLiteral("ui 10k items @10 Hz: longest event-loop stall (ms)"),
+               fmt(ui.longestStallMs), {}, {}, QStringLiteral("<= 16 ms"));
+    report.row(QStringLiteral("core memory per watched item (bytes, median)"),
+               memory.ok ? fmt(memory.bytesPerItem, 1) : QStringLiteral("failed"),
+               QStringLiteral("peak %1").arg(fmt(memory.peakBytesPerItem, 1)), {},
+               QStringLiteral("< 200 B"));
+    report.result(QStringLiteral("ui_busy_share"), ui.busyShare, QStringLiteral("<0.25"),
+                  ui.ok && ui.busyShare < 0.25);
+    report.result(QStringLiteral("ui_longest_stall_ms"), ui.longestStallMs, QStringLiteral("<=16"),
+                  ui.ok && ui.longestStallMs <= 16);
+    report.result(QStringLiteral("core_bytes_per_item"), memory.bytesPerItem,
+                  QStringLiteral("<200"), memory.ok && memory.bytesPerItem < 200);
+}
+
+} // namespace Fatek::Bench
