@@ -7,6 +7,7 @@
 #include <QMainWindow>
 #include <QPointer>
 
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QTabWidget;
@@ -123,7 +124,7 @@ private:
     bool m_toolsInitialised = false;
     int m_tableCounter = 0;
     TrendView *m_trendView = nullptr;
-    QWidget *m_trendDock = nullptr;
+    QDockWidget *m_trendDock = nullptr;
     TableLogger *m_tableLogger = nullptr;
     QLabel *m_loggingLabel = nullptr;
     QAction *m_startLoggingAction = nullptr;

@@ -16,6 +16,7 @@
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QTimer>
 
 namespace Fatek {
 
@@ -69,7 +70,8 @@ void MainWindow::createTrendAndLogging()
         for (int r = 0; r < model->rowCount(); ++r) {
             if (model->item(r).address.toString() == "R1") {
                 m_trendView->addItem(table->model(), r);
-                m_trendView->setWindowMs(60000);
+                // One sine period fills the window: the wave is visible within seconds.
+                m_trendView->setWindowMs(10000);
                 break;
             }
         }
@@ -78,8 +80,21 @@ void MainWindow::createTrendAndLogging()
 
 QWidget *MainWindow::showTrend()
 {
+    const bool wasHidden = m_trendDock->isHidden();
     m_trendDock->show();
     m_trendDock->raise();
+    // A chart needs room: on first showing, the trend becomes a tab of the bottom area (beside the
+    // connections and the console) with the full width and a good height; afterwards the user's
+    // arrangement stays.
+    auto *connectionsDock = findChild<QDockWidget *>(QStringLiteral("connectionsDock"));
+    if (wasHidden && connectionsDock && !connectionsDock->isHidden() && !m_trendDock->isFloating()
+        && dockWidgetArea(m_trendDock) == Qt::BottomDockWidgetArea
+        && dockWidgetArea(connectionsDock) == Qt::BottomDockWidgetArea
+        && tabifiedDockWidgets(m_trendDock).isEmpty()) {
+        tabifyDockWidget(connectionsDock, m_trendDock);
+        m_trendDock->raise();
+        resizeDocks({m_trendDock}, {height() * 2 / 5}, Qt::Vertical);
+    }
     return m_trendView;
 }
 
