@@ -102,6 +102,8 @@ int main(int argc, char *argv[])
     QApplication::setOrganizationName(QStringLiteral("FATEK Studio"));
     QApplication::setApplicationName(QStringLiteral("fatek-studio"));
     QApplication::setApplicationDisplayName(QStringLiteral("FATEK Studio"));
+    // Wayland and the task bar match the window to packaging/linux/fatek-studio.desktop.
+    QGuiApplication::setDesktopFileName(QStringLiteral("fatek-studio"));
     QApplication::setApplicationVersion(QStringLiteral(FATEK_VERSION));
 
     const QString language = languageArgument(QCoreApplication::arguments());

@@ -87,19 +87,7 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     m_linkStatus = new QLabel(tr("No connection"), this);
     m_linkStatus->setObjectName(QStringLiteral("linkStatus"));
     statusBar()->addPermanentWidget(m_linkStatus);
-    if (readOnly) {
-        m_modeLabel = new QLabel(tr("Operator mode (read-only)"), this);
-        m_modeLabel->setObjectName(QStringLiteral("modeLabel"));
-        QFont bold = m_modeLabel->font();
-        bold.setBold(true);
-        m_modeLabel->setFont(bold);
-        // Highlight colours of the palette: visible in light and dark themes alike.
-        m_modeLabel->setAutoFillBackground(true);
-        m_modeLabel->setBackgroundRole(QPalette::Highlight);
-        m_modeLabel->setForegroundRole(QPalette::HighlightedText);
-        m_modeLabel->setContentsMargins(6, 0, 6, 0);
-        statusBar()->addPermanentWidget(m_modeLabel);
-    }
+    updateModeLabel(readOnly);
 
     createActions();
     createTools();

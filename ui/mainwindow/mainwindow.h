@@ -103,6 +103,7 @@ private:
     // TRENDS AND LOGGING METHODS (keep this marker line)
     void createOperatorMode();
     void applyOperatorMode(bool active);
+    void updateModeLabel(bool active);
     // OPERATOR MODE METHODS (keep this marker line)
     // LANGUAGE METHODS (keep this marker line)
 

@@ -184,17 +184,15 @@ void MainWindow::createOperatorMode()
     applyOperatorMode(m_operatorMode->isActive());
 }
 
-void MainWindow::applyOperatorMode(bool active)
+void MainWindow::updateModeLabel(bool active)
 {
-    m_readOnly = active;
-    m_manager->setReadOnly(active); // every session, present and future: enforced there
-    setWindowTitle(active ? tr("FATEK Studio — Operator mode (read-only)") : tr("FATEK Studio"));
     if (!m_modeLabel && active) {
         m_modeLabel = new QLabel(tr("Operator mode (read-only)"), this);
         m_modeLabel->setObjectName(QStringLiteral("modeLabel"));
         QFont bold = m_modeLabel->font();
         bold.setBold(true);
         m_modeLabel->setFont(bold);
+        // Highlight colours of the palette: visible in light and dark themes alike.
         m_modeLabel->setAutoFillBackground(true);
         m_modeLabel->setBackgroundRole(QPalette::Highlight);
         m_modeLabel->setForegroundRole(QPalette::HighlightedText);
@@ -203,6 +201,14 @@ void MainWindow::applyOperatorMode(bool active)
     }
     if (m_modeLabel)
         m_modeLabel->setVisible(active);
+}
+
+void MainWindow::applyOperatorMode(bool active)
+{
+    m_readOnly = active;
+    m_manager->setReadOnly(active); // every session, present and future: enforced there
+    setWindowTitle(active ? tr("FATEK Studio — Operator mode (read-only)") : tr("FATEK Studio"));
+    updateModeLabel(active);
     m_toolsInitialised = false; // tools re-read the session's mode (their write buttons)
     updateToolTargets();
 }
