@@ -23,6 +23,12 @@
 
 using namespace Fatek;
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool builtWithAddressSanitizer = true;
+#else
+constexpr bool builtWithAddressSanitizer = false;
+#endif
+
 namespace {
 
 Address addr(const char *text)
@@ -272,7 +278,7 @@ void TestSoak::soak()
     // Memory: the traffic log stays within its bounds, the process does not keep growing.
     QVERIFY(session.trafficLog()->size() <= session.trafficLog()->capacity());
     QVERIFY(session.trafficLog()->bytesHeld() <= session.trafficLog()->byteBudget());
-    if (rssWarm > 0)
+    if (rssWarm > 0 && !builtWithAddressSanitizer)
         QVERIFY2(rssEnd - rssWarm < 64 * 1024, "memory grew by more than 64 MB during the soak");
 }
 
@@ -328,7 +334,9 @@ void TestSoak::floodingPeer()
     QVERIFY(stale > 0);                            // polling went on (and timed out)
     QVERIFY(st.bytesDiscarded > 10 * 1024 * 1024); // the flood really arrived
     QVERIFY(session.trafficLog()->bytesHeld() <= 1024 * 1024);
-    if (rssStart > 0)
+    // AddressSanitizer keeps freed blocks in a quarantine (256 MB by default), so resident memory
+    // says nothing about our buffers there; the bounds above still hold in that build.
+    if (rssStart > 0 && !builtWithAddressSanitizer)
         QVERIFY2(rssEnd - rssStart < 64 * 1024, "memory grew by more than 64 MB under a flood");
     qDeleteAll(clients);
 }
