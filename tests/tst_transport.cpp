@@ -6,6 +6,7 @@
 
 #include <QFile>
 #include <QNetworkDatagram>
+#include <QNetworkProxy>
 #include <QProcess>
 #include <QSerialPort>
 #include <QSignalSpy>
@@ -23,6 +24,7 @@ class TestTransport : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void initTestCase();
     void linkSettingsText();
     void linkSettingsValidation_data();
     void linkSettingsValidation();
@@ -34,6 +36,13 @@ private Q_SLOTS:
     void serialPty();
     void serialMissingPort();
 };
+
+void TestTransport::initTestCase()
+{
+    // The test's own peer sockets never go through a desktop proxy either (the transports set
+    // NoProxy themselves); it also keeps libproxy's thread out of ThreadSanitizer runs.
+    QNetworkProxy::setApplicationProxy(QNetworkProxy::NoProxy);
+}
 
 void TestTransport::linkSettingsText()
 {

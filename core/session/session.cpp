@@ -1,8 +1,9 @@
 #include "session.h"
 
+#include "crossthreadcall.h"
 #include "sessionworker.h"
 
-#include <QMutexLocker>
+#include <mutex>
 
 namespace Fatek {
 
@@ -43,11 +44,40 @@ Session::Session(const LinkSettings &settings, QObject *parent)
     m_worker->moveToThread(&m_thread);
     // The worker (and its sockets) is destroyed in its own thread when the thread ends.
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
-    connect(m_worker, &SessionWorker::finished, this, &Session::finished);
-    connect(m_worker, &SessionWorker::linkStateChanged, this, &Session::linkStateChanged);
-    connect(m_worker, &SessionWorker::statisticsChanged, this, &Session::statisticsChanged);
-    connect(m_worker, &SessionWorker::protocolDetected, this, &Session::protocolDetected);
-    connect(m_worker, &SessionWorker::values, this, &Session::values);
+    // The worker's signals are relayed to this object's thread through CrossThreadCall (a queued
+    // call ThreadSanitizer can follow), then emitted from here.
+    connect(
+        m_worker, &SessionWorker::finished, m_worker,
+        [this](quint64 id, const SessionResult &result) {
+            CrossThreadCall::post(this, [this, id, result] { Q_EMIT finished(id, result); });
+        },
+        Qt::DirectConnection);
+    connect(
+        m_worker, &SessionWorker::linkStateChanged, m_worker,
+        [this](LinkState state, const QString &reason) {
+            CrossThreadCall::post(
+                this, [this, state, reason] { Q_EMIT linkStateChanged(state, reason); });
+        },
+        Qt::DirectConnection);
+    connect(
+        m_worker, &SessionWorker::statisticsChanged, m_worker,
+        [this](const SessionStatistics &statistics) {
+            CrossThreadCall::post(this,
+                                  [this, statistics] { Q_EMIT statisticsChanged(statistics); });
+        },
+        Qt::DirectConnection);
+    connect(
+        m_worker, &SessionWorker::protocolDetected, m_worker,
+        [this](Protocol protocol) {
+            CrossThreadCall::post(this, [this, protocol] { Q_EMIT protocolDetected(protocol); });
+        },
+        Qt::DirectConnection);
+    connect(
+        m_worker, &SessionWorker::values, m_worker,
+        [this](const QList<WatchValue> &batch) {
+            CrossThreadCall::post(this, [this, batch] { Q_EMIT values(batch); });
+        },
+        Qt::DirectConnection);
     m_thread.start();
 }
 
@@ -55,16 +85,17 @@ Session::~Session()
 {
     m_thread.quit();
     m_thread.wait();
+    CrossThreadCall::threadEnded(m_shared.get());
 }
 
 void Session::open()
 {
-    QMetaObject::invokeMethod(m_worker, &SessionWorker::open, Qt::QueuedConnection);
+    CrossThreadCall::post(m_worker, [worker = m_worker] { worker->open(); });
 }
 
 void Session::close()
 {
-    QMetaObject::invokeMethod(m_worker, &SessionWorker::close, Qt::QueuedConnection);
+    CrossThreadCall::post(m_worker, [worker = m_worker] { worker->close(); });
 }
 
 quint64 Session::submit(const Request &request, Priority priority, RequestOptions options)
@@ -75,10 +106,9 @@ quint64 Session::submit(const Request &request, Priority priority, RequestOption
     job.priority = priority;
     job.options = options;
     const quint64 id = job.id;
-    QMetaObject::invokeMethod(
-        m_worker,
-        [worker = m_worker, job = std::move(job)]() mutable { worker->enqueue(std::move(job)); },
-        Qt::QueuedConnection);
+    CrossThreadCall::post(m_worker, [worker = m_worker, job = std::move(job)]() mutable {
+        worker->enqueue(std::move(job));
+    });
     return id;
 }
 
@@ -92,23 +122,26 @@ quint64 Session::sendRaw(const QByteArray &bytes, bool addFraming, RequestOption
     job.priority = Priority::User;
     job.options = options;
     const quint64 id = job.id;
-    QMetaObject::invokeMethod(
-        m_worker,
-        [worker = m_worker, job = std::move(job)]() mutable { worker->enqueue(std::move(job)); },
-        Qt::QueuedConnection);
+    CrossThreadCall::post(m_worker, [worker = m_worker, job = std::move(job)]() mutable {
+        worker->enqueue(std::move(job));
+    });
     return id;
 }
 
 void Session::cancel(quint64 id)
 {
-    QMetaObject::invokeMethod(
-        m_worker, [worker = m_worker, id] { worker->cancel(id); }, Qt::QueuedConnection);
+    CrossThreadCall::post(m_worker, [worker = m_worker, id] { worker->cancel(id); });
 }
 
 void Session::setReadOnly(bool readOnly)
 {
     // Atomic: effective for every request dispatched after this returns.
     m_shared->readOnly.store(readOnly);
+}
+
+bool Session::event(QEvent *event)
+{
+    return CrossThreadCall::deliver(this, event) || QObject::event(event);
 }
 
 bool Session::isReadOnly() const
@@ -137,20 +170,19 @@ LinkState Session::linkState() const
 
 SessionStatistics Session::statistics() const
 {
-    QMutexLocker locker(&m_shared->mutex);
+    const std::lock_guard locker(m_shared->mutex);
     return m_shared->statistics;
 }
 
 void Session::resetStatistics()
 {
-    QMetaObject::invokeMethod(m_worker, &SessionWorker::resetStatistics, Qt::QueuedConnection);
+    CrossThreadCall::post(m_worker, [worker = m_worker] { worker->resetStatistics(); });
 }
 
 void Session::setWatchList(const QList<WatchEntry> &entries)
 {
-    QMetaObject::invokeMethod(
-        m_worker, [worker = m_worker, entries] { worker->setWatchList(entries); },
-        Qt::QueuedConnection);
+    CrossThreadCall::post(m_worker,
+                          [worker = m_worker, entries] { worker->setWatchList(entries); });
 }
 
 } // namespace Fatek

@@ -68,6 +68,9 @@ public:
     // Polling: replaces the watch list (re-plans); an empty list stops polling.
     void setWatchList(const QList<WatchEntry> &entries);
 
+    // Runs the calls posted to this object (CrossThreadCall).
+    bool event(QEvent *event) override;
+
 Q_SIGNALS:
     void finished(quint64 id, const Fatek::SessionResult &result);
     void linkStateChanged(Fatek::LinkState state, const QString &reason);

@@ -2,12 +2,11 @@
 
 #include "binarycodec.h"
 #include "binarydeframer.h"
+#include "crossthreadcall.h"
 #include "faconcodec.h"
 #include "facondeframer.h"
 #include "trafficlog.h"
 #include "transport.h"
-
-#include <QMutexLocker>
 
 #include <algorithm>
 
@@ -98,9 +97,16 @@ SessionWorker::~SessionWorker()
     m_current.reset();
     if (m_transport)
         m_transport->close();
+    // The last the thread does with what the Session destroys after it (the traffic log).
+    CrossThreadCall::threadEnds(m_shared.get());
 }
 
 // ---- link -------------------------------------------------------------------------------------
+
+bool SessionWorker::event(QEvent *event)
+{
+    return CrossThreadCall::deliver(this, event) || QObject::event(event);
+}
 
 void SessionWorker::open()
 {
@@ -741,7 +747,7 @@ void SessionWorker::publishStatistics()
     if (!m_sharedStale)
         return;
     m_sharedStale = false;
-    QMutexLocker locker(&m_shared->mutex);
+    const std::lock_guard locker(m_shared->mutex);
     m_shared->statistics = m_statistics;
 }
 

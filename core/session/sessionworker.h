@@ -9,7 +9,6 @@
 #include "sessiontypes.h"
 
 #include <QElapsedTimer>
-#include <QMutex>
 #include <QObject>
 #include <QTimer>
 
@@ -17,6 +16,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 namespace Fatek {
@@ -30,7 +30,7 @@ struct SessionShared
     std::atomic<bool> readOnly{false};
     std::atomic<int> linkState{static_cast<int>(LinkState::Closed)};
     std::atomic<int> protocol{-1}; // Protocol value, -1 while auto-detect has not decided
-    mutable QMutex mutex;
+    mutable std::mutex mutex;
     SessionStatistics statistics; // under mutex
 };
 
@@ -72,6 +72,9 @@ public:
     void cancel(quint64 id);
     void resetStatistics();
     void setWatchList(const QList<WatchEntry> &entries);
+
+    // Runs the calls posted to this object (CrossThreadCall).
+    bool event(QEvent *event) override;
 
 Q_SIGNALS:
     void finished(quint64 id, const Fatek::SessionResult &result);

@@ -1,6 +1,8 @@
 #include "trafficlog.h"
 
-#include <QMutexLocker>
+#include "crossthreadcall.h"
+
+#include <QThread>
 
 #include <algorithm>
 
@@ -13,33 +15,33 @@ TrafficLog::TrafficLog(int capacity, QObject *parent)
 
 int TrafficLog::capacity() const
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     return m_capacity;
 }
 
 void TrafficLog::setCapacity(int capacity)
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     m_capacity = std::max(1, capacity);
     trimLocked();
 }
 
 qint64 TrafficLog::byteBudget() const
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     return m_byteBudget;
 }
 
 void TrafficLog::setByteBudget(qint64 bytes)
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     m_byteBudget = std::max<qint64>(maxEntryBytes, bytes);
     trimLocked();
 }
 
 qint64 TrafficLog::bytesHeld() const
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     return m_bytesHeld;
 }
 
@@ -58,7 +60,7 @@ quint64 TrafficLog::append(TrafficEntry::Direction direction, const QByteArray &
 {
     quint64 sequence = 0;
     {
-        QMutexLocker locker(&m_mutex);
+        const std::lock_guard locker(m_mutex);
         sequence = ++m_lastSequence;
         QString note = error;
         QByteArray kept = bytes;
@@ -70,17 +72,30 @@ quint64 TrafficLog::append(TrafficEntry::Direction direction, const QByteArray &
         }
         m_bytesHeld += kept.size();
         m_entries.push_back(
-            {sequence, QDateTime::currentDateTime(), direction, kept, summary, note});
+            {sequence, QDateTime::currentDateTimeUtc(), direction, kept, summary, note});
         trimLocked();
     }
     // Emitted outside the lock: a direct-connected slot may call entries().
-    Q_EMIT entriesAdded(sequence);
+    if (QThread::currentThread() == thread()) {
+        Q_EMIT entriesAdded(sequence);
+    } else if (!m_notifyPending.exchange(true)) {
+        // One notification in flight at most, however fast the worker appends.
+        CrossThreadCall::post(this, [this] {
+            m_notifyPending.store(false);
+            Q_EMIT entriesAdded(lastSequence());
+        });
+    }
     return sequence;
+}
+
+bool TrafficLog::event(QEvent *event)
+{
+    return CrossThreadCall::deliver(this, event) || QObject::event(event);
 }
 
 QList<TrafficEntry> TrafficLog::entries(quint64 after) const
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     QList<TrafficEntry> list;
     // Sequence numbers are consecutive, so the first wanted entry is found by arithmetic.
     if (m_entries.empty() || after >= m_lastSequence)
@@ -96,19 +111,19 @@ QList<TrafficEntry> TrafficLog::entries(quint64 after) const
 
 int TrafficLog::size() const
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     return static_cast<int>(m_entries.size());
 }
 
 quint64 TrafficLog::lastSequence() const
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     return m_lastSequence;
 }
 
 void TrafficLog::clear()
 {
-    QMutexLocker locker(&m_mutex);
+    const std::lock_guard locker(m_mutex);
     m_entries.clear();
     m_bytesHeld = 0;
 }

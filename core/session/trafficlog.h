@@ -4,11 +4,12 @@
 #include <QDateTime>
 #include <QList>
 #include <QMetaType>
-#include <QMutex>
 #include <QObject>
 #include <QString>
 
+#include <atomic>
 #include <deque>
+#include <mutex>
 
 namespace Fatek {
 
@@ -18,7 +19,7 @@ struct TrafficEntry
     enum class Direction { Out, In, Event };
 
     quint64 sequence = 0; // increasing from 1, never reused (survives clear())
-    QDateTime timestamp;
+    QDateTime timestamp;  // UTC: cheap to take per frame on the worker; shown in local time
     Direction direction = Direction::Event;
     QByteArray bytes; // raw frame (empty for events such as a timeout)
     QString summary;  // decoded: "46 read registers, station 1, 3 x R12"
@@ -26,8 +27,9 @@ struct TrafficEntry
 };
 
 // Every frame in and out of a session, bounded (oldest entries dropped). Written by the session's
-// worker thread, read by any thread: all access is under a mutex; entriesAdded() is emitted from
-// the writer's thread, so receivers in other threads get it queued.
+// worker thread, read by any thread: all access is under a mutex. entriesAdded() is emitted in
+// the log's own thread: at once for an append from that thread; appends from another thread are
+// gathered into one signal per turn of the log thread's event loop.
 class TrafficLog : public QObject
 {
     Q_OBJECT
@@ -55,12 +57,15 @@ public:
     quint64 lastSequence() const;
     void clear();
 
+    // Runs the notifications posted from other threads (CrossThreadCall).
+    bool event(QEvent *event) override;
+
 Q_SIGNALS:
     // New entries up to `lastSequence`; fetch them with entries(previous).
     void entriesAdded(quint64 lastSequence);
 
 private:
-    mutable QMutex m_mutex;
+    mutable std::mutex m_mutex;
     std::deque<TrafficEntry> m_entries;
     void trimLocked();
 
@@ -68,6 +73,7 @@ private:
     qint64 m_byteBudget = 16 * 1024 * 1024;
     qint64 m_bytesHeld = 0;
     quint64 m_lastSequence = 0;
+    std::atomic<bool> m_notifyPending{false};
 };
 
 } // namespace Fatek

@@ -1,7 +1,5 @@
 #include "simulatedplc.h"
 
-#include <QMutexLocker>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -50,43 +48,43 @@ SimulatedPlc::SimulatedPlc(const ModelProfile &profile)
 
 ModelProfile SimulatedPlc::profile() const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return m_memory.profile();
 }
 
 bool SimulatedPlc::isRunning() const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return m_running;
 }
 
 void SimulatedPlc::setRunning(bool running)
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     m_running = running;
 }
 
 void SimulatedPlc::setRunRefusalCode(std::uint8_t code)
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     m_runRefusal = code;
 }
 
 std::uint8_t SimulatedPlc::runRefusalCode() const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return m_runRefusal;
 }
 
 void SimulatedPlc::setStatusFlags(const PlcStatus &flags)
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     m_flags = flags;
 }
 
 PlcStatus SimulatedPlc::status() const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return PlcStatus::fromStatus1(status1Locked());
 }
 
@@ -99,26 +97,26 @@ std::uint8_t SimulatedPlc::status1Locked() const
 
 Bytes SimulatedPlc::briefStatusBytes() const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     const ModelProfile &p = m_memory.profile();
     return {status1Locked(), p.status2, p.status3};
 }
 
 Bytes SimulatedPlc::detailStatusBytes() const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return m_memory.profile().detailStatus(status1Locked());
 }
 
 std::uint64_t SimulatedPlc::scanCount() const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return m_scans;
 }
 
 std::optional<std::uint32_t> SimulatedPlc::value(const Address &address) const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     if (!m_memory.contains(address))
         return std::nullopt;
     return m_memory.read(address);
@@ -126,7 +124,7 @@ std::optional<std::uint32_t> SimulatedPlc::value(const Address &address) const
 
 bool SimulatedPlc::setValue(const Address &address, std::uint32_t v)
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     if (!m_memory.contains(address) || !valueFits(address, v))
         return false;
     m_memory.write(address, v);
@@ -135,7 +133,7 @@ bool SimulatedPlc::setValue(const Address &address, std::uint32_t v)
 
 std::optional<bool> SimulatedPlc::isDisabled(const Address &discrete) const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     if (!Fatek::isDiscrete(discrete.type) || !m_memory.contains(discrete))
         return std::nullopt;
     return m_memory.isDisabled(discrete.type, discrete.number);
@@ -143,7 +141,7 @@ std::optional<bool> SimulatedPlc::isDisabled(const Address &discrete) const
 
 bool SimulatedPlc::setDisabled(const Address &discrete, bool disabled)
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     if (!Fatek::isDiscrete(discrete.type) || !m_memory.contains(discrete))
         return false;
     m_memory.setDisabled(discrete.type, discrete.number, disabled);
@@ -152,7 +150,7 @@ bool SimulatedPlc::setDisabled(const Address &discrete, bool disabled)
 
 std::vector<std::uint32_t> SimulatedPlc::programPage(std::uint16_t page) const
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     const std::size_t first = std::size_t{page} * Limits::programPageWords;
     if (first + Limits::programPageWords > m_program.size())
         return {};
@@ -162,7 +160,7 @@ std::vector<std::uint32_t> SimulatedPlc::programPage(std::uint16_t page) const
 
 void SimulatedPlc::clear()
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     m_memory.clear();
     std::fill(m_program.begin(), m_program.end(), std::uint16_t{0});
     m_scans = 0;
@@ -170,7 +168,7 @@ void SimulatedPlc::clear()
 
 void SimulatedPlc::scan(std::int64_t ms)
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     if (!m_running)
         return;
     ++m_scans;
@@ -192,7 +190,7 @@ void SimulatedPlc::scan(std::int64_t ms)
 
 Response SimulatedPlc::execute(const Request &request, Protocol protocol)
 {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return executeLocked(request, protocol);
 }
 

@@ -6,9 +6,8 @@
 #include "request.h"
 #include "response.h"
 
-#include <QMutex>
-
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -58,7 +57,7 @@ private:
     Response executeLocked(const Request &request, Protocol protocol);
     std::uint8_t status1Locked() const;
 
-    mutable QMutex m_mutex;
+    mutable std::mutex m_mutex;
     PlcMemory m_memory;
     std::vector<std::uint16_t> m_program;
     PlcStatus m_flags;

@@ -1,14 +1,42 @@
 #include "demosimulator.h"
 
+#include "crossthreadcall.h"
 #include "simserver.h"
 #include "simulatedplc.h"
 
 namespace Fatek {
 
+namespace {
+
+// Lives in the server thread and owns the server; runs the calls posted to that thread.
+class DemoAnchor : public QObject
+{
+public:
+    explicit DemoAnchor(const DemoSimulator *owner)
+        : m_owner(owner)
+    {}
+    // Deleted last on the server thread, when it ends.
+    ~DemoAnchor() override
+    {
+        const QObjectList servers = children(); // the server goes before the mark
+        qDeleteAll(servers);
+        CrossThreadCall::threadEnds(m_owner);
+    }
+    bool event(QEvent *event) override
+    {
+        return CrossThreadCall::deliver(this, event) || QObject::event(event);
+    }
+
+private:
+    const DemoSimulator *m_owner;
+};
+
+} // namespace
+
 DemoSimulator::DemoSimulator(QObject *parent)
     : QObject(parent)
     , m_plc(std::make_unique<SimulatedPlc>(ModelProfile::fbs()))
-    , m_anchor(new QObject)
+    , m_anchor(new DemoAnchor(this))
 {
     m_thread.setObjectName(QStringLiteral("demo-plc"));
     m_anchor->moveToThread(&m_thread);
@@ -20,6 +48,12 @@ DemoSimulator::~DemoSimulator()
 {
     m_thread.quit();
     m_thread.wait();
+    CrossThreadCall::threadEnded(this); // before the PLC the server thread used goes
+}
+
+bool DemoSimulator::event(QEvent *event)
+{
+    return CrossThreadCall::deliver(this, event) || QObject::event(event);
 }
 
 void DemoSimulator::start()
@@ -28,22 +62,17 @@ void DemoSimulator::start()
     m_thread.start();
     SimulatedPlc *plc = m_plc.get();
     QObject *anchor = m_anchor;
-    QMetaObject::invokeMethod(
-        m_anchor,
-        [this, plc, anchor] {
-            auto *server = new SimServer(plc, anchor);
-            QString error;
-            if (!server->listenTcp(0, &error)) {
-                QMetaObject::invokeMethod(
-                    this, [this, error] { Q_EMIT failed(error); }, Qt::QueuedConnection);
-                return;
-            }
-            server->setDemoLadder(true);
-            const quint16 port = server->tcpPort();
-            QMetaObject::invokeMethod(
-                this, [this, port] { Q_EMIT ready(port); }, Qt::QueuedConnection);
-        },
-        Qt::QueuedConnection);
+    CrossThreadCall::post(m_anchor, [this, plc, anchor] {
+        auto *server = new SimServer(plc, anchor);
+        QString error;
+        if (!server->listenTcp(0, &error)) {
+            CrossThreadCall::post(this, [this, error] { Q_EMIT failed(error); });
+            return;
+        }
+        server->setDemoLadder(true);
+        const quint16 port = server->tcpPort();
+        CrossThreadCall::post(this, [this, port] { Q_EMIT ready(port); });
+    });
 }
 
 WatchTableSpec DemoSimulator::demoTable(quint8 station)

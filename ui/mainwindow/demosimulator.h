@@ -29,6 +29,9 @@ public:
     // The table the demo opens: the ladder's moving values, with names.
     static WatchTableSpec demoTable(quint8 station = 1);
 
+    // Runs the calls posted to this object (CrossThreadCall).
+    bool event(QEvent *event) override;
+
 Q_SIGNALS:
     void ready(quint16 port);
     void failed(const QString &reason);

@@ -47,8 +47,9 @@ void TrafficLogModel::append(const QList<TrafficEntry> &entries)
     beginInsertRows({}, first, first + static_cast<int>(incoming) - 1);
     for (qsizetype i = skip; i < entries.size(); ++i) {
         const TrafficEntry &e = entries.at(i);
-        m_rows.push_back(Row{e, FrameText::header(e.bytes), FrameText::toHex(e.bytes),
-                             FrameText::toAscii(e.bytes)});
+        m_rows.push_back(Row{e, FrameText::header(e.bytes),
+                             e.timestamp.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz")),
+                             FrameText::toHex(e.bytes), FrameText::toAscii(e.bytes)});
     }
     endInsertRows();
 }
@@ -89,7 +90,7 @@ QVariant TrafficLogModel::data(const QModelIndex &index, int role) const
     case Qt::DisplayRole:
     case Qt::ToolTipRole:
         switch (index.column()) {
-        case TimeColumn: return e.timestamp.toString(QStringLiteral("HH:mm:ss.zzz"));
+        case TimeColumn: return row.time;
         case DirectionColumn: return directionText(e.direction);
         case StationColumn: return row.header ? QVariant(row.header->station) : QVariant();
         case HexColumn: return row.hex;

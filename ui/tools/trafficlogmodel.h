@@ -59,6 +59,7 @@ private:
     {
         TrafficEntry entry;
         std::optional<FrameText::Header> header;
+        QString time; // local time, formatted once
         QString hex;
         QString ascii;
     };
