@@ -6,7 +6,9 @@
 #include "watchlist.h"
 #include "watchtablewidget.h"
 
+#include <QAction>
 #include <QFile>
+#include <QMenu>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
@@ -144,6 +146,39 @@ private Q_SLOTS:
         QCOMPARE(c.settings.port, quint16(500));
         const QString problem = c.settings.validate();
         QVERIFY2(problem.contains(QStringLiteral("Timeout")), qPrintable(problem));
+        QCOMPARE(manager.unreadableRecent(), 2);
+
+        // Saving a new connection keeps the unreadable entries as they were.
+        SavedConnection added;
+        added.name = QStringLiteral("New");
+        added.settings = LinkSettings::tcp(QStringLiteral("10.0.0.5"));
+        manager.addRecent(added);
+        const QVariantList stored
+            = QSettings().value(QStringLiteral("connections/recent")).toList();
+        QCOMPARE(stored.size(), 4);
+        QCOMPARE(stored.at(0).toMap().value(QStringLiteral("name")).toString(),
+                 QStringLiteral("New"));
+        QCOMPARE(stored.at(1).toMap().value(QStringLiteral("name")).toString(),
+                 QStringLiteral("Damaged"));
+        QCOMPARE(stored.at(2), QVariant(QStringLiteral("garbage")));
+        QCOMPARE(stored.at(3), QVariant(17));
+        QCOMPARE(manager.recent().size(), 2);
+        QCOMPARE(manager.unreadableRecent(), 2);
+
+        // The menu says so instead of hiding them.
+        MainWindow window;
+        QMenu *menu = window.findChild<QMenu *>(QStringLiteral("recentMenu"));
+        QVERIFY(menu);
+        QStringList texts;
+        for (QAction *action : menu->actions()) {
+            if (action->text().contains(QStringLiteral("could not be read"))) {
+                QVERIFY(!action->isEnabled());
+                texts << action->text();
+            }
+        }
+        QCOMPARE(texts.size(), 1);
+        QVERIFY2(texts.first().startsWith(QStringLiteral("2 saved connection")),
+                 qPrintable(texts.first()));
     }
 };
 

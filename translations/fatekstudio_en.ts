@@ -1514,6 +1514,13 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
                 <numerusform>Logging to %1 (%n rows)</numerusform>
             </translation>
         </message>
+        <message numerus="yes">
+            <source>%n saved connection(s) could not be read (kept unchanged)</source>
+            <translation>
+                <numerusform>%n saved connection could not be read (kept unchanged)</numerusform>
+                <numerusform>%n saved connections could not be read (kept unchanged)</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::OperatorMode</name>

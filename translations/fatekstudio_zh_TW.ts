@@ -1511,6 +1511,12 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
                 <numerusform>正在記錄到 %1（%n 列）</numerusform>
             </translation>
         </message>
+        <message numerus="yes">
+            <source>%n saved connection(s) could not be read (kept unchanged)</source>
+            <translation>
+                <numerusform>%n 個已儲存的連線無法讀取（保持原樣）</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::OperatorMode</name>

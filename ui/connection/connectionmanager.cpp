@@ -5,8 +5,27 @@
 namespace Fatek {
 
 namespace {
+
 const QString recentKey = QStringLiteral("connections/recent");
+
+// Splits the stored list into connections and entries that are not one (kept verbatim).
+QList<SavedConnection> readRecent(QVariantList *unreadable)
+{
+    QList<SavedConnection> list;
+    const QVariantList stored = QSettings().value(recentKey).toList();
+    for (const QVariant &v : stored) {
+        SavedConnection c;
+        if (v.typeId() == QMetaType::QVariantMap)
+            c = LinkSettingsIo::fromMap(v.toMap());
+        if (!c.name.isEmpty())
+            list.append(c);
+        else if (unreadable)
+            unreadable->append(v);
+    }
+    return list;
 }
+
+} // namespace
 
 ConnectionManager::ConnectionManager(QObject *parent)
     : QObject(parent)
@@ -85,19 +104,20 @@ void ConnectionManager::setReadOnly(bool readOnly)
 
 QList<SavedConnection> ConnectionManager::recent() const
 {
-    QList<SavedConnection> list;
-    const QVariantList stored = QSettings().value(recentKey).toList();
-    for (const QVariant &v : stored) {
-        SavedConnection c = LinkSettingsIo::fromMap(v.toMap());
-        if (!c.name.isEmpty())
-            list.append(c);
-    }
-    return list;
+    return readRecent(nullptr);
+}
+
+int ConnectionManager::unreadableRecent() const
+{
+    QVariantList unreadable;
+    readRecent(&unreadable);
+    return static_cast<int>(unreadable.size());
 }
 
 void ConnectionManager::addRecent(const SavedConnection &saved)
 {
-    QList<SavedConnection> list = recent();
+    QVariantList unreadable;
+    QList<SavedConnection> list = readRecent(&unreadable);
     list.removeIf([&](const SavedConnection &c) { return c.name == saved.name; });
     list.prepend(saved);
     while (list.size() > maxRecent)
@@ -105,6 +125,7 @@ void ConnectionManager::addRecent(const SavedConnection &saved)
     QVariantList stored;
     for (const SavedConnection &c : std::as_const(list))
         stored.append(LinkSettingsIo::toMap(c));
+    stored.append(unreadable); // after the connections, unchanged
     QSettings().setValue(recentKey, stored);
     Q_EMIT recentChanged();
 }

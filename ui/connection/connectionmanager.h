@@ -31,6 +31,9 @@ public:
 
     // Most recent first, at most maxRecent; stored in QSettings under "connections/recent".
     QList<SavedConnection> recent() const;
+    // Stored entries that are not a connection at all (damaged settings): not listed, and kept
+    // as they are when the list is saved again, never dropped silently.
+    int unreadableRecent() const;
     void addRecent(const SavedConnection &saved);
     static constexpr int maxRecent = 10;
 

@@ -152,6 +152,7 @@ void MainWindow::createActions()
                           this, &MainWindow::newConnectionDialog);
     connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     m_recentMenu = file->addMenu(tr("&Recent Connections"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     rebuildRecentMenu();
     auto *disconnectAction
         = file->addAction(QIcon(QStringLiteral(":/icons/disconnect.svg")), tr("&Close Connection"),
@@ -353,7 +354,14 @@ void MainWindow::rebuildRecentMenu()
         m_recentMenu->addAction(tr("%1 — %2").arg(c.name, CoreText::settings(c.settings)), this,
                                 [this, c] { openConnection(c); });
     }
-    m_recentMenu->setEnabled(!recent.isEmpty());
+    if (const int unreadable = m_manager->unreadableRecent(); unreadable > 0) {
+        m_recentMenu->addSeparator();
+        m_recentMenu
+            ->addAction(tr("%n saved connection(s) could not be read (kept unchanged)", nullptr,
+                           unreadable))
+            ->setEnabled(false);
+    }
+    m_recentMenu->setEnabled(!m_recentMenu->isEmpty());
 }
 
 WatchTableWidget *MainWindow::addWatchTable(const QString &name)
