@@ -257,6 +257,12 @@ void TestWatchList::loadErrors_data()
                                  << "table 1, item 1: \"name\" must be text";
     QTest::newRow("comment list") << fileWithItems(R"({"address":"R1","comment":[]})")
                                   << "table 1, item 1: \"comment\" must be text";
+    QByteArray many = R"({"address":"R1"})";
+    for (int i = 1; i <= WatchList::MaxTableItems; ++i)
+        many += R"(,{"address":"R1"})";
+    QTest::newRow("too many items")
+        << fileWithItems(many)
+        << "table 1: 65537 items are more than one table holds (at most 65536)";
 }
 
 void TestWatchList::loadErrors()
@@ -558,6 +564,9 @@ void TestWatchList::csvErrors_data()
         << QByteArray("\"R100\"x,1") << "line 1: unexpected text after the quoted field \"R100\"";
     QTest::newRow("missing address")
         << QByteArray("R1\n,1,signed") << "line 2: the address is missing";
+    QTest::newRow("too many items")
+        << QByteArray("R0..R1023\n").repeated(65)
+        << "line 65: 66560 items are more than one table holds (at most 65536)";
     QTest::newRow("reversed range")
         << QByteArray("R103..R100")
         << "line 1: range \"R103..R100\" runs backwards: write the lower address first "

@@ -50,6 +50,13 @@ QString tablePlace(qsizetype table)
     return QStringLiteral("table %1").arg(table + 1);
 }
 
+ProtocolError tooManyItems(qsizetype count)
+{
+    return fileError(QStringLiteral("%1 items are more than one table holds (at most %2)")
+                         .arg(count)
+                         .arg(MaxTableItems));
+}
+
 QString itemPlace(qsizetype table, qsizetype item)
 {
     return QStringLiteral("table %1, item %2").arg(table + 1).arg(item + 1);
@@ -190,6 +197,8 @@ Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index)
     if (!items.isArray())
         return atPlace(place, fileError(QStringLiteral("\"items\" must be a list")));
     const QJsonArray array = items.toArray();
+    if (array.size() > MaxTableItems)
+        return atPlace(place, tooManyItems(array.size()));
     for (qsizetype i = 0; i < array.size(); ++i) {
         auto entry = entryFromJson(array.at(i));
         if (!entry)
@@ -396,6 +405,8 @@ Status validate(const WatchListFile &file)
         const WatchTableSpec &table = file.tables.at(t);
         if (Status s = validateInterval(table.intervalMs); !s)
             return atPlace(tablePlace(t), s.error());
+        if (table.items.size() > MaxTableItems)
+            return atPlace(tablePlace(t), tooManyItems(table.items.size()));
         for (qsizetype i = 0; i < table.items.size(); ++i) {
             if (Status s = validateEntry(table.items.at(i)); !s)
                 return atPlace(itemPlace(t, i), s.error());
@@ -583,6 +594,8 @@ Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
         const auto addresses = expandRange(addressText);
         if (!addresses)
             return atPlace(place, addresses.error());
+        if (entries.size() + addresses->size() > MaxTableItems)
+            return atPlace(place, tooManyItems(entries.size() + addresses->size()));
 
         quint8 station = 1;
         if (!stationText.trimmed().isEmpty()) {

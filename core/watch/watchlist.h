@@ -55,6 +55,9 @@ inline constexpr int CurrentVersion = 1;
 inline constexpr int MinIntervalMs = 10;
 inline constexpr int MaxIntervalMs = 3600000;
 inline constexpr int MaxRangeItems = 1024;
+// One table (or one CSV import) holds at most this many items: more than every element of the
+// largest model, and a bound on what a damaged or hostile file can make the app hold.
+inline constexpr int MaxTableItems = 65536;
 
 // Station 1..254 (0 is broadcast: no answer to watch), the address exists, the format applies to it
 // and every register it spans exists (R65535 as float would need R65536).
