@@ -43,6 +43,7 @@ Session::Session(const LinkSettings &settings, QObject *parent)
     m_worker = new SessionWorker(settings, m_shared, m_log);
     m_worker->moveToThread(&m_thread);
     // The worker (and its sockets) is destroyed in its own thread when the thread ends.
+    connect(&m_thread, &QThread::started, m_worker, &SessionWorker::startTimers);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     // The worker's signals are relayed to this object's thread through CrossThreadCall (a queued
     // call ThreadSanitizer can follow), then emitted from here.

@@ -65,7 +65,6 @@ SessionWorker::SessionWorker(const LinkSettings &settings, std::shared_ptr<Sessi
         m_statsDirty = false;
         Q_EMIT statisticsChanged(m_statistics);
     });
-    m_statsTimer.start();
     m_lastActivity.start();
 
     m_poller = new Poller(
@@ -102,6 +101,11 @@ SessionWorker::~SessionWorker()
 }
 
 // ---- link -------------------------------------------------------------------------------------
+
+void SessionWorker::startTimers()
+{
+    m_statsTimer.start();
+}
 
 bool SessionWorker::event(QEvent *event)
 {

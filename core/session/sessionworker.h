@@ -66,6 +66,9 @@ public:
                   TrafficLog *log);
     ~SessionWorker() override;
 
+    // On the worker thread, when it starts. A timer already running when its object moves to
+    // another thread is re-registered there by a queued call that leaks if the thread ends first.
+    void startTimers();
     void open();
     void close();
     void enqueue(SessionJob job);
