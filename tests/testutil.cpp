@@ -1,9 +1,11 @@
 #include "testutil.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSettings>
 #include <QStringList>
 
 namespace TestUtil {
@@ -67,6 +69,14 @@ QString toFacon(std::span<const std::uint8_t> bytes)
             s += QChar(b);
     }
     return s;
+}
+
+void useTestSettings(const QString &directory, const QString &applicationName)
+{
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, directory);
+    QCoreApplication::setOrganizationName(QStringLiteral("fatek-studio-tests"));
+    QCoreApplication::setApplicationName(applicationName);
 }
 
 } // namespace TestUtil

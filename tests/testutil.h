@@ -29,4 +29,8 @@ QString toHex(std::span<const std::uint8_t> bytes);
 // Bytes -> "<STX>0140C7<ETX>".
 QString toFacon(std::span<const std::uint8_t> bytes);
 
+// Points QSettings at INI files in `directory` under the test's own application name, so the
+// developer's own settings never leak into a test (nor a test's into them).
+void useTestSettings(const QString &directory, const QString &applicationName);
+
 } // namespace TestUtil

@@ -3,6 +3,7 @@
 // closing the window).
 #include "connectionmanager.h"
 #include "mainwindow.h"
+#include "testutil.h"
 #include "watchlist.h"
 #include "watchtablewidget.h"
 
@@ -45,10 +46,7 @@ private Q_SLOTS:
     void initTestCase()
     {
         QVERIFY(m_dir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("fatek-studio-tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("tst_safefiles"));
+        TestUtil::useTestSettings(m_dir.path(), QStringLiteral("tst_safefiles"));
     }
     void init() { QSettings().clear(); }
 

@@ -7,6 +7,7 @@
 #include "mainwindow.h"
 #include "simserver.h"
 #include "simulatedplc.h"
+#include "testutil.h"
 #include "watchtablemodel.h"
 
 #include <QApplication>
@@ -101,10 +102,7 @@ private Q_SLOTS:
     {
         // Keep the developer's own settings out of the tests.
         QVERIFY(m_settingsDir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("fatek-studio-tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("tst_ui_mainwindow"));
+        TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_mainwindow"));
     }
 
     void connectAddAndWatchValuesChange()

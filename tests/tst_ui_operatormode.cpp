@@ -8,6 +8,7 @@
 #include "session.h"
 #include "simserver.h"
 #include "simulatedplc.h"
+#include "testutil.h"
 
 #include <QAction>
 #include <QLabel>
@@ -81,10 +82,7 @@ private Q_SLOTS:
     void initTestCase()
     {
         QVERIFY(m_settingsDir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("fatek-studio-tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("tst_ui_operatormode"));
+        TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_operatormode"));
         registerSessionMetaTypes();
     }
     void init() { QSettings().clear(); }

@@ -8,6 +8,7 @@
 
 #include "address.h"
 #include "protocolerror.h"
+#include "testutil.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
@@ -155,10 +156,7 @@ private Q_SLOTS:
     void initTestCase()
     {
         QVERIFY(m_settingsDir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("fatek-studio-tests"));
-        QCoreApplication::setApplicationName(QStringLiteral("tst_ui_translation"));
+        TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_translation"));
     }
 
     void tsFilesAreComplete_data()

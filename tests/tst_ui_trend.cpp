@@ -2,6 +2,7 @@
 // drives a sine of +-1000 with a 10 s period in R1).
 #include "mainwindow.h"
 #include "tablelogger.h"
+#include "testutil.h"
 #include "trendview.h"
 #include "watchtablemodel.h"
 
@@ -66,10 +67,7 @@ private:
 
 void TestUiTrend::initTestCase()
 {
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-    QCoreApplication::setOrganizationName(QStringLiteral("fatek-studio-tests"));
-    QCoreApplication::setApplicationName(QStringLiteral("tst_ui_trend"));
+    TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_trend"));
 }
 
 void TestUiTrend::init()
