@@ -241,6 +241,13 @@ void CliRunner::finish(int exitCode)
     Q_EMIT done(exitCode);
 }
 
+// {"address": ..., "station": ...}: how every JSON result names what it is about.
+QJsonObject CliRunner::itemJson(const Address &address) const
+{
+    return {{QStringLiteral("address"), addressText(address)},
+            {QStringLiteral("station"), m_options.station}};
+}
+
 QString CliRunner::stationText() const
 {
     return QString::number(m_options.station);
@@ -455,17 +462,13 @@ void CliRunner::runRead()
                                         : QStringList{addressText(a), v, valueHex(values[i], a)});
             all.append(static_cast<qint64>(values[i]));
             if (step().mixed) {
-                QJsonObject json;
-                json.insert(QStringLiteral("address"), addressText(a));
-                json.insert(QStringLiteral("station"), m_options.station);
+                QJsonObject json = itemJson(a);
                 json.insert(QStringLiteral("values"), QJsonArray{static_cast<qint64>(values[i])});
                 block.json << json;
             }
         }
         if (!step().mixed) {
-            QJsonObject json;
-            json.insert(QStringLiteral("address"), addressText(start));
-            json.insert(QStringLiteral("station"), m_options.station);
+            QJsonObject json = itemJson(start);
             json.insert(QStringLiteral("values"), all);
             block.json << json;
         }
@@ -493,9 +496,7 @@ void CliRunner::runWrite()
                                       QString::number(step().values[i])};
             all.append(static_cast<qint64>(step().values[i]));
         }
-        QJsonObject json;
-        json.insert(QStringLiteral("address"), addressText(start));
-        json.insert(QStringLiteral("station"), m_options.station);
+        QJsonObject json = itemJson(start);
         json.insert(QStringLiteral("written"), all);
         block.json << json;
         m_out.print(block);
@@ -518,9 +519,7 @@ void CliRunner::runControl()
             block.columns
                 = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("action")};
             block.rows << QStringList{stationText(), addressText(a), action};
-            QJsonObject json;
-            json.insert(QStringLiteral("address"), addressText(a));
-            json.insert(QStringLiteral("station"), m_options.station);
+            QJsonObject json = itemJson(a);
             json.insert(QStringLiteral("action"), action);
             json.insert(QStringLiteral("ok"), true);
             block.json << json;
@@ -550,9 +549,7 @@ void CliRunner::runForced()
                                                  : QString::number(values[i])};
                    all.append(static_cast<qint64>(values[i]));
                }
-               QJsonObject json;
-               json.insert(QStringLiteral("address"), addressText(start));
-               json.insert(QStringLiteral("station"), m_options.station);
+               QJsonObject json = itemJson(start);
                json.insert(QStringLiteral("forced"), all);
                block.json << json;
                m_out.print(block);

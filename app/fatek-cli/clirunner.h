@@ -71,6 +71,7 @@ private:
     void runScan();
 
     QString stationText() const;
+    QJsonObject itemJson(const Address &address) const;
 
     CliOptions m_options;
     CliOutput m_out;
