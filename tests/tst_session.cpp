@@ -7,6 +7,7 @@
 
 #include <QFile>
 #include <QProcess>
+#include <QSerialPort>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -102,6 +103,8 @@ private Q_SLOTS:
     void lateAnswerDiscarded();
     void stationScan();
     void destroyWhileBusy();
+    void serialMultiDrop_data();
+    void serialMultiDrop();
 
 private:
     // Opens the simulator endpoint for `transport` and fills `settings`; false (with QSKIP) if
@@ -1058,4 +1061,150 @@ void TestSession::destroyWhileBusy()
 }
 
 QTEST_GUILESS_MAIN(TestSession)
+namespace {
+
+// Starts `socat` with a pty pair linked at `a` and `b` (stopped when the last copy goes); null
+// when socat is missing or fails.
+std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b)
+{
+    const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
+    if (socat.isEmpty())
+        return nullptr;
+    std::shared_ptr<QProcess> process(new QProcess, [](QProcess *p) {
+        p->terminate();
+        p->waitForFinished(5000);
+        delete p;
+    });
+    process->start(socat, {QStringLiteral("pty,raw,echo=0,link=") + a,
+                           QStringLiteral("pty,raw,echo=0,link=") + b});
+    if (!process->waitForStarted(5000))
+        return nullptr;
+    QDeadlineTimer deadline(5000);
+    while (!(QFile::exists(a) && QFile::exists(b)) && !deadline.hasExpired())
+        QTest::qWait(10);
+    return QFile::exists(a) && QFile::exists(b) ? process : nullptr;
+}
+
+std::unique_ptr<QSerialPort> openRaw(const QString &name)
+{
+    auto port = std::make_unique<QSerialPort>(name);
+    if (!port->open(QIODevice::ReadWrite))
+        return nullptr;
+    port->setDataBits(QSerialPort::Data8);
+    port->setParity(QSerialPort::NoParity);
+    return port;
+}
+
+} // namespace
+
+void TestSession::serialMultiDrop_data()
+{
+    QTest::addColumn<int>("protocol");
+    QTest::addColumn<bool>("echo");
+    QTest::newRow("facon") << int(Protocol::Facon) << false;
+    QTest::newRow("binary") << int(Protocol::Binary) << false;
+    QTest::newRow("facon, 2-wire echo") << int(Protocol::Facon) << true;
+    QTest::newRow("binary, 2-wire echo") << int(Protocol::Binary) << true;
+}
+
+// An RS-485 multi-drop line with two PLCs: three socat pty pairs joined by a bus in this test
+// that passes every byte from the master to both PLCs and every answer back (with `echo`, the
+// master also hears its own query, as on a 2-wire bus). Each PLC sees the other's traffic and
+// must ignore it; the session must read and write both stations through one port and never
+// take one PLC's values for the other's.
+void TestSession::serialMultiDrop()
+{
+    QFETCH(int, protocol);
+    QFETCH(bool, echo);
+    m_dir = std::make_unique<QTemporaryDir>();
+    auto path = [this](const char *name) {
+        return m_dir->filePath(QString::fromLatin1(name));
+    };
+    auto master = startPtyPair(path("app"), path("bus"));
+    auto line1 = startPtyPair(path("drop1"), path("plc1"));
+    auto line2 = startPtyPair(path("drop2"), path("plc2"));
+    if (!master || !line1 || !line2)
+        QSKIP("socat is not available for serial pty pairs");
+
+    SimulatedPlc plc2(ModelProfile::fbs());
+    SimServer server2(&plc2);
+    m_server->setStation(1);
+    server2.setStation(2);
+    SerialSettings serial;
+    serial.portName = path("plc1");
+    QString error;
+    QVERIFY2(m_server->openSerial(serial, &error), qPrintable(error));
+    serial.portName = path("plc2");
+    QVERIFY2(server2.openSerial(serial, &error), qPrintable(error));
+
+    auto bus = openRaw(path("bus"));
+    auto drop1 = openRaw(path("drop1"));
+    auto drop2 = openRaw(path("drop2"));
+    QVERIFY(bus && drop1 && drop2);
+    connect(bus.get(), &QSerialPort::readyRead, this, [&] {
+        const QByteArray data = bus->readAll();
+        drop1->write(data);
+        drop2->write(data);
+        if (echo)
+            bus->write(data);
+    });
+    for (QSerialPort *drop : {drop1.get(), drop2.get()}) {
+        connect(drop, &QSerialPort::readyRead, this, [&, drop] {
+            const QByteArray data = drop->readAll();
+            bus->write(data);
+            // The other PLC hears the answer too.
+            (drop == drop1.get() ? drop2 : drop1)->write(data);
+        });
+    }
+
+    m_plc->setValue(addr("R0"), 1111);
+    plc2.setValue(addr("R0"), 2222);
+    m_plc->setValue(addr("Y3"), 1);
+    plc2.setValue(addr("Y3"), 0);
+    LinkSettings settings = LinkSettings::serial(path("app"), 9600,
+                                                 static_cast<Protocol>(protocol) == Protocol::Facon
+                                                     ? LinkSettings::ProtocolChoice::Facon
+                                                     : LinkSettings::ProtocolChoice::Binary);
+    settings.interFrameMs = 2;
+    settings.timeoutMs = 1000;
+    settings.retries = 1;
+    auto session = openSession(settings);
+    QCOMPARE(session->linkState(), LinkState::Connected);
+    Results results(session.get());
+
+    // One-off reads and a write reach the right PLC.
+    SessionResult r = run(*session, results, Request::readRegisters(2, addr("R0"), 1));
+    CHECK_OK(r);
+    QCOMPARE(r.response().values, std::vector<std::uint32_t>{2222});
+    CHECK_OK(run(*session, results, Request::writeRegisters(2, addr("R5"), {77})));
+    QCOMPARE(plc2.value(addr("R5")), std::optional<std::uint32_t>(77));
+    QCOMPARE(m_plc->value(addr("R5")), std::optional<std::uint32_t>(0));
+
+    // Polling both stations through one port.
+    QList<WatchValue> last;
+    connect(session.get(), &Session::values, this,
+            [&last](const QList<WatchValue> &v) { last = v; });
+    session->setWatchList({{1, 1, addr("R0"), 50},
+                           {2, 2, addr("R0"), 50},
+                           {3, 1, addr("Y3"), 50},
+                           {4, 2, addr("Y3"), 50}});
+    const std::map<std::uint64_t, std::uint32_t> expected{{1, 1111}, {2, 2222}, {3, 1}, {4, 0}};
+    QTRY_VERIFY_WITH_TIMEOUT(
+        last.size() == 4
+            && std::all_of(last.begin(), last.end(),
+                           [](const WatchValue &v) { return v.quality == ValueQuality::Good; }),
+        10000);
+    for (const WatchValue &v : last)
+        QCOMPARE(v.value, expected.at(v.itemId));
+    session->setWatchList({});
+
+    const SessionStatistics stats = session->statistics();
+    QVERIFY(stats.stations.value(1).answers > 0);
+    QVERIFY(stats.stations.value(2).answers > 0);
+    QCOMPARE(stats.total.timeouts, quint64(0));
+    // Both PLCs heard the frames meant for the other one and stayed silent.
+    QVERIFY(m_server->counters().otherStation > 0);
+    QVERIFY(server2.counters().otherStation > 0);
+}
+
 #include "tst_session.moc"

@@ -22,10 +22,16 @@ std::vector<SimConnection::Item> SimConnection::feed(const QByteArray &bytes)
 {
     std::vector<Item> items;
     std::vector<DeframedItem> out;
+    std::vector<DeframedItem> shadow;
+    auto deliver = [&](Protocol protocol, DeframedItem &item) {
+        m_lastFrameBytes = static_cast<qsizetype>(item.frame.size());
+        items.push_back({protocol, std::move(item)});
+    };
     // Byte by byte, so a FACON frame followed by a binary one in the same chunk reaches the
     // right deframer each (a deframer would skip the other protocol as garbage).
     for (char c : bytes) {
         const auto b = static_cast<std::uint8_t>(c);
+        const std::span<const std::uint8_t> one(&b, 1);
         if (!m_active) {
             if (b == FaconCodec::STX)
                 m_active = &m_facon;
@@ -35,16 +41,44 @@ std::vector<SimConnection::Item> SimConnection::feed(const QByteArray &bytes)
                 ++m_skipped;
                 continue;
             }
+        } else if (m_active == &m_facon && !m_binaryShadow && b == BinaryCodec::queryHeader) {
+            // A binary query header inside a FACON frame in progress. Usually that "frame" is
+            // noise (an STX byte in another station's binary answer on a multi-drop line) and a
+            // binary query starts here; but FACON loopback data may hold 'Q' too. Both deframers
+            // follow until one of them has a valid frame.
+            m_binaryShadow = true;
         }
         const Protocol protocol = m_active == &m_facon ? Protocol::Facon : Protocol::Binary;
         out.clear();
-        m_active->feed(std::span<const std::uint8_t>(&b, 1), out);
-        for (DeframedItem &item : out) {
-            m_lastFrameBytes = static_cast<qsizetype>(item.frame.size());
-            items.push_back({protocol, std::move(item)});
+        m_active->feed(one, out);
+        if (m_binaryShadow) {
+            shadow.clear();
+            m_binary.feed(one, shadow);
+            const auto valid = std::find_if(shadow.begin(), shadow.end(),
+                                            [](const DeframedItem &i) { return !i.error; });
+            if (valid != shadow.end()) {
+                // The binary query is real: the FACON partial frame was noise.
+                m_facon.reset();
+                m_binaryShadow = false;
+                m_active = &m_binary;
+                deliver(Protocol::Binary, *valid);
+                out.clear();
+            } else if (std::any_of(out.begin(), out.end(),
+                                   [](const DeframedItem &i) { return !i.error; })) {
+                // The FACON frame is real: the binary candidate inside it was its data.
+                m_binary.reset();
+                m_binaryShadow = false;
+            } else if (m_binary.bufferedBytes() == 0) {
+                m_binaryShadow = false; // the binary candidate died (its errors are not reported)
+            }
         }
-        if (m_active->bufferedBytes() == 0)
-            m_active = nullptr;
+        for (DeframedItem &item : out)
+            deliver(protocol, item);
+        if (m_active->bufferedBytes() == 0) {
+            // A FACON frame that ended in an error leaves a binary candidate to follow alone.
+            m_active = m_binaryShadow ? &m_binary : nullptr;
+            m_binaryShadow = false;
+        }
     }
     return items;
 }

@@ -67,6 +67,7 @@ private:
     FaconDeframer m_facon;
     BinaryDeframer m_binary{BinaryDeframer::Direction::Query};
     Deframer *m_active = nullptr;
+    bool m_binaryShadow = false; // m_binary also follows a FACON frame in progress
     std::size_t m_skipped = 0;
     QElapsedTimer m_clock;
     QTimer m_timer;
