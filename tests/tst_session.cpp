@@ -31,6 +31,28 @@ Bytes bytes(const char *text)
     return Bytes(s.begin(), s.end());
 }
 
+// Starts `socat` with a pty pair linked at `a` and `b` (stopped when the last copy goes); null
+// when socat is missing or fails.
+std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b)
+{
+    const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
+    if (socat.isEmpty())
+        return nullptr;
+    std::shared_ptr<QProcess> process(new QProcess, [](QProcess *p) {
+        p->terminate();
+        p->waitForFinished(5000);
+        delete p;
+    });
+    process->start(socat, {QStringLiteral("pty,raw,echo=0,link=") + a,
+                           QStringLiteral("pty,raw,echo=0,link=") + b});
+    if (!process->waitForStarted(5000))
+        return nullptr;
+    QDeadlineTimer deadline(5000);
+    while (!(QFile::exists(a) && QFile::exists(b)) && !deadline.hasExpired())
+        QTest::qWait(10);
+    return QFile::exists(a) && QFile::exists(b) ? process : nullptr;
+}
+
 // Collects every finished() of a session, in arrival order.
 class Results : public QObject
 {
@@ -117,7 +139,7 @@ private:
 
     std::unique_ptr<SimulatedPlc> m_plc;
     std::unique_ptr<SimServer> m_server;
-    std::unique_ptr<QProcess> m_socat;
+    std::shared_ptr<QProcess> m_socat;
     std::unique_ptr<QTemporaryDir> m_dir;
 };
 
@@ -132,11 +154,7 @@ void TestSession::cleanup()
     g_session = nullptr;
     m_server.reset();
     m_plc.reset();
-    if (m_socat) {
-        m_socat->terminate();
-        m_socat->waitForFinished(5000);
-        m_socat.reset();
-    }
+    m_socat.reset(); // stops socat
     m_dir.reset();
 }
 
@@ -153,20 +171,12 @@ bool TestSession::makeLink(const QString &transport, LinkSettings::ProtocolChoic
             qWarning() << error;
         settings = LinkSettings::udp(QStringLiteral("127.0.0.1"), m_server->udpPort(), protocol);
     } else {
-        const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
-        if (socat.isEmpty())
-            return false;
         m_dir = std::make_unique<QTemporaryDir>();
         const QString plcSide = m_dir->filePath(QStringLiteral("plc"));
         const QString appSide = m_dir->filePath(QStringLiteral("app"));
-        m_socat = std::make_unique<QProcess>();
-        m_socat->start(socat, {QStringLiteral("pty,raw,echo=0,link=") + plcSide,
-                               QStringLiteral("pty,raw,echo=0,link=") + appSide});
-        if (!m_socat->waitForStarted(5000))
+        m_socat = startPtyPair(plcSide, appSide);
+        if (!m_socat)
             return false;
-        QDeadlineTimer deadline(5000);
-        while (!(QFile::exists(plcSide) && QFile::exists(appSide)) && !deadline.hasExpired())
-            QTest::qWait(10);
         SerialSettings serial;
         serial.portName = plcSide;
         if (!m_server->openSerial(serial, &error)) {
@@ -1062,28 +1072,6 @@ void TestSession::destroyWhileBusy()
 
 QTEST_GUILESS_MAIN(TestSession)
 namespace {
-
-// Starts `socat` with a pty pair linked at `a` and `b` (stopped when the last copy goes); null
-// when socat is missing or fails.
-std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b)
-{
-    const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
-    if (socat.isEmpty())
-        return nullptr;
-    std::shared_ptr<QProcess> process(new QProcess, [](QProcess *p) {
-        p->terminate();
-        p->waitForFinished(5000);
-        delete p;
-    });
-    process->start(socat, {QStringLiteral("pty,raw,echo=0,link=") + a,
-                           QStringLiteral("pty,raw,echo=0,link=") + b});
-    if (!process->waitForStarted(5000))
-        return nullptr;
-    QDeadlineTimer deadline(5000);
-    while (!(QFile::exists(a) && QFile::exists(b)) && !deadline.hasExpired())
-        QTest::qWait(10);
-    return QFile::exists(a) && QFile::exists(b) ? process : nullptr;
-}
 
 std::unique_ptr<QSerialPort> openRaw(const QString &name)
 {
