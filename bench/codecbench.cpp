@@ -49,7 +49,10 @@ void runCodec(const Options &options, Report &report)
     for (const Codec *codec :
          {static_cast<const Codec *>(&facon), static_cast<const Codec *>(&binary)}) {
         const QString proto = QString::fromUtf8(protocolName(codec->protocol()).data());
-        for (const auto &[name, request] : requests) {
+        for (const auto &entry : requests) {
+            // Not a structured binding: clang before 16 cannot capture one in a lambda.
+            const auto &name = entry.first;
+            const auto &request = entry.second;
             Response response;
             response.station = request.station;
             response.command = request.command;

@@ -127,7 +127,10 @@ Cost exactOptimum(const std::vector<Element> &elements, const WireSizes &sizes)
     }
     Cost total;
     const std::size_t base = sizes.mixedBase();
-    for (auto &[station, stationChains] : chains) {
+    for (auto &stationEntry : chains) {
+        // Not a structured binding: clang before 16 cannot capture one in the lambda below.
+        const auto station = stationEntry.first;
+        auto &stationChains = stationEntry.second;
         std::vector<Cost> pool{Cost{}}; // pool[w]: best cost of the runs with w words pooled
         for (auto &[key, numbers] : stationChains) {
             std::sort(numbers.begin(), numbers.end());

@@ -421,7 +421,10 @@ Plan PollPlanner::plan(std::span<const WatchItem> items,
     }
 
     StationSolver solver(m_protocol);
-    for (const auto &[station, elements] : stations) {
+    for (const auto &stationEntry : stations) {
+        // Named references, not a structured binding: clang before 16 cannot capture a binding.
+        const std::uint8_t station = stationEntry.first;
+        const auto &elements = stationEntry.second;
         auto slotsFor
             = [&elements](const Address &a, std::uint32_t valueIndex, std::vector<PlanSlot> &out) {
                   const auto it = elements.find(a);

@@ -106,8 +106,10 @@ LanguageMenu::LanguageMenu(QWidget *parent)
         = {{QString(), tr("System")},
            {QStringLiteral("en"), QStringLiteral("English")},
            {QStringLiteral("zh_TW"), QStringLiteral("繁體中文")}};
-    for (const auto &[code, label] : entries) {
-        QAction *action = addAction(label);
+    for (const auto &entry : entries) {
+        // A copy, not a structured binding: clang before 16 cannot capture a binding.
+        const QString code = entry.first;
+        QAction *action = addAction(entry.second);
         action->setCheckable(true);
         action->setChecked(code == current);
         action->setData(code);

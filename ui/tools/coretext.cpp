@@ -352,17 +352,17 @@ QString CoreText::message(const QString &text)
                 return text;
             const QString english = QString::fromStdString(std::string(plcErrorText(code)));
             QString rest = m.captured(2);
-            QString context;
+            QString subject;
             if (rest.startsWith(english)) {
-                context = rest.mid(english.size()).trimmed();
-                if (context.startsWith(QLatin1Char(':')))
-                    context = context.mid(1).trimmed();
+                subject = rest.mid(english.size()).trimmed();
+                if (subject.startsWith(QLatin1Char(':')))
+                    subject = subject.mid(1).trimmed();
             }
             QString out = text.startsWith(QLatin1String("answer: "))
                               ? tr("answer: error %1 (%2)").arg(m.captured(1), plcCodeText(code))
                               : tr("PLC error %1: %2").arg(m.captured(1), plcCodeText(code));
-            if (!context.isEmpty())
-                out = tr("%1 %2").arg(out, message(context));
+            if (!subject.isEmpty())
+                out = tr("%1 %2").arg(out, message(subject));
             return out;
         }
         if (patterns[i].special == Special::Traffic) {
