@@ -23,7 +23,15 @@
 
 using namespace Fatek;
 
+// GCC defines __SANITIZE_ADDRESS__; clang only answers __has_feature.
 #if defined(__SANITIZE_ADDRESS__)
+#define FATEK_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FATEK_ASAN 1
+#endif
+#endif
+#ifdef FATEK_ASAN
 constexpr bool builtWithAddressSanitizer = true;
 #else
 constexpr bool builtWithAddressSanitizer = false;

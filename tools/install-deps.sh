@@ -1,13 +1,21 @@
 #!/usr/bin/env bash
-# Installs the Debian packages FATEK Studio needs to build, test and run (only the missing ones).
+# Installs the Debian 12 packages FATEK Studio needs to build, test, package and run the demo
+# (only the missing ones). This list is the only place anything is installed: tools/demo.sh and
+# tools/test.sh call it, and CI runs them on a fresh debootstrap root (tools/fresh-root.sh), so a
+# package missing here fails there. docs/packaging.md says why each one is here.
 set -euo pipefail
 
 packages=(
-    build-essential cmake ninja-build pkg-config
-    qt6-base-dev qt6-serialport-dev qt6-charts-dev qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libqt6svg6
-    libgl-dev libxkbcommon-dev fonts-dejavu-core fonts-noto-cjk
+    # compilers and build tools: GCC 12 (release, tsan) and clang-14 (asan, fuzz targets)
+    build-essential cmake ninja-build pkg-config clang-14 libclang-rt-14-dev
+    # Qt 6.4; qt6-charts-dev's CMake package needs Qt6OpenGL, which apt does not pull in
+    # without recommends, and Qt6Gui's needs the GL and xkbcommon headers
+    qt6-base-dev qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev qt6-svg-dev qt6-tools-dev
+    qt6-l10n-tools qt6-translations-l10n libgl-dev libxkbcommon-dev
+    # fonts for the offscreen UI tests and screenshots (Latin and Traditional Chinese)
+    fonts-dejavu-core fonts-noto-cjk
+    # tests: serial pty pairs, the independent Python reference; git for the format check
     socat python3 git clang-format
-    qt6-svg-dev
     # packaging and its install test (tools/package-test.sh)
     dpkg-dev file desktop-file-utils groff-base man-db gzip
 )

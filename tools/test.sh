@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds and runs every test: the release build, then the whole suite again under
-# AddressSanitizer + UndefinedBehaviorSanitizer, and again under ThreadSanitizer.
+# Builds and runs every test: the release build (GCC 12), then the whole suite again under
+# AddressSanitizer + UndefinedBehaviorSanitizer built with clang-14, again under ThreadSanitizer
+# (GCC 12), the install test of the packages, and a short run of each fuzz target (clang-14).
 # Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,4 +14,6 @@ cmake --workflow --preset asan
 cmake --workflow --preset tsan
 # Install test of the .deb/.tar.gz built from the release build (see docs/packaging.md).
 tools/package-test.sh
+# Builds the fuzz targets and runs each briefly on the seed corpus (long runs: docs/reliability.md).
+tools/fuzz.sh "${FATEK_FUZZ_SECONDS:-10}"
 # EXTRA CI STEPS (keep this marker line)

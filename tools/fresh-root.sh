@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# Runs a command of this checkout inside a brand-new Debian 12 root (debootstrap --variant=minbase
+# bookworm), as on a new user's machine: nothing is installed but what the command installs itself.
+#   tools/fresh-root.sh                  runs tools/test.sh
+#   tools/fresh-root.sh tools/demo.sh    any command, run from the checkout's copy in the root
+# Needs root (it re-runs itself with sudo) and debootstrap (installed when missing).
+#
+# The untouched debootstrap output is cached as a tarball in ~/.cache/fatek-studio/ and made again
+# when older than 30 days; the root itself is unpacked anew every run and removed afterwards
+# (FRESH_ROOT_KEEP=1 keeps it). The checkout (tracked and untracked files, not build/) and
+# ../shared are copied in, as a clean clone would be. /proc, /dev (with /dev/pts for the serial
+# ptys) and a tmpfs /tmp are mounted in a private mount and PID namespace: when the command ends,
+# or this script is stopped in any way, the namespace ends and the mounts and processes with it.
+set -euo pipefail
+
+if [ "${1:-}" = --inside ]; then
+    # Second stage, in the new namespaces: mount, then run the command as root of the new system.
+    root=$2 dest=$3
+    shift 3
+    mount -t proc proc "$root/proc"
+    mount --rbind /dev "$root/dev"
+    mount -t tmpfs -o mode=1777 tmpfs "$root/tmp"
+    exec chroot "$root" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+        HOME=/root LANG=C.UTF-8 TERM="${TERM:-dumb}" CI="${CI:-}" \
+        /bin/bash -c 'cd "$0" && exec "$@"' "$dest" "$@"
+fi
+
+[ $# -gt 0 ] || set -- tools/test.sh
+if [ "$(id -u)" -ne 0 ]; then
+    exec sudo --preserve-env=CI,FRESH_ROOT_KEEP,FRESH_ROOT_DIR "$0" "$@"
+fi
+repo=$(cd "$(dirname "$0")/.." && pwd)
+say() { echo "== fresh-root: $*"; }
+
+if ! command -v debootstrap >/dev/null; then
+    say "installing debootstrap on the host"
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap >/dev/null ||
+        { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap >/dev/null; }
+fi
+
+arch=$(dpkg --print-architecture)
+cache=${XDG_CACHE_HOME:-$HOME/.cache}/fatek-studio
+tarball=$cache/debootstrap-bookworm-minbase-$arch.tar
+mkdir -p "$cache"
+if [ -z "$(find "$tarball" -mtime -30 2>/dev/null)" ]; then
+    say "debootstrap --variant=minbase bookworm (cached in $tarball)"
+    fresh=$(mktemp -d "$cache/debootstrap.XXXXXX")
+    debootstrap --variant=minbase bookworm "$fresh" http://deb.debian.org/debian >"$fresh.log" 2>&1 ||
+        { tail -20 "$fresh.log" >&2; rm -rf --one-file-system "$fresh" "$fresh.log"; exit 1; }
+    tar -C "$fresh" -cf "$tarball.tmp" .
+    mv "$tarball.tmp" "$tarball"
+    rm -rf --one-file-system "$fresh" "$fresh.log"
+fi
+
+work=$(mktemp -d "${FRESH_ROOT_DIR:-/var/tmp}/fatek-fresh-root.XXXXXX")
+root=$work/root
+child=""
+cleanup() {
+    local status=$?
+    if [ -n "$child" ]; then
+        kill "$child" 2>/dev/null || true # --kill-child ends everything in the namespace
+        wait "$child" 2>/dev/null || true
+    fi
+    if findmnt -rno TARGET | grep -q "^$root/"; then
+        echo "fresh-root: something is still mounted under $root; not removing it" >&2
+        exit 1
+    fi
+    if [ "${FRESH_ROOT_KEEP:-0}" = 1 ]; then
+        say "kept $root"
+    else
+        rm -rf --one-file-system "$work"
+    fi
+    exit "$status"
+}
+trap cleanup EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
+
+say "unpacking a new root in $root ($(date -r "$tarball" +%F) debootstrap)"
+mkdir "$root"
+tar -C "$root" -xf "$tarball"
+cp /etc/resolv.conf "$root/etc/resolv.conf" # as DHCP would have set it on a new machine
+dest=/work/$(basename "$repo")
+mkdir -p "$root$dest"
+git -C "$repo" ls-files -z --cached --others --exclude-standard |
+    tar -C "$repo" --null --ignore-failed-read -T - -cf - 2>/dev/null | tar -C "$root$dest" -xf -
+if [ -d "$repo/../shared" ]; then
+    cp -a "$repo/../shared" "$root/work/shared"
+fi
+installed=$(chroot "$root" dpkg-query -W -f='${Package}\n' | wc -l)
+say "$installed Debian packages installed; running $* in $dest"
+
+unshare --mount --pid --fork --kill-child --propagation private -- "$0" --inside "$root" "$dest" "$@" &
+child=$!
+status=0
+wait "$child" || status=$?
+child=""
+exit "$status"
