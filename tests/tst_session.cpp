@@ -1,10 +1,12 @@
 // Sessions against the in-process simulator over TCP, UDP and a socat pty pair, in both protocols.
 #include "binarycodec.h"
+#include "faconcodec.h"
 #include "session.h"
 #include "simserver.h"
 #include "simulatedplc.h"
 #include "stationscanner.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QProcess>
 #include <QSerialPort>
@@ -127,6 +129,13 @@ private Q_SLOTS:
     void destroyWhileBusy();
     void serialMultiDrop_data();
     void serialMultiDrop();
+    void broadcastOnTheWireBeforeClose();
+    void closeSendsQueuedWrites();
+    void destroySendsQueuedWrites_data();
+    void destroySendsQueuedWrites();
+    void closeDrainIsBounded();
+    void retriedWriteReportedOnce();
+    void rawUnderAutoNeedsNoProbe();
 
 private:
     // Opens the simulator endpoint for `transport` and fills `settings`; false (with QSKIP) if
@@ -1193,6 +1202,255 @@ void TestSession::serialMultiDrop()
     // Both PLCs heard the frames meant for the other one and stayed silent.
     QVERIFY(m_server->counters().otherStation > 0);
     QVERIFY(server2.counters().otherStation > 0);
+}
+
+namespace {
+
+int countEntries(const Session &session, TrafficEntry::Direction direction, const QString &text)
+{
+    int n = 0;
+    for (const TrafficEntry &e : session.trafficLog()->entries())
+        n += e.direction == direction && (e.summary + e.error).contains(text) ? 1 : 0;
+    return n;
+}
+
+} // namespace
+
+// A broadcast gets no answer: it is done when its frame has left, not when it is queued, and a
+// frame the line does not take is reported as not sent and never leaves later. The test is the
+// PLC side of a pty pair and stops the session's output with XOFF (software flow control).
+void TestSession::broadcastOnTheWireBeforeClose()
+{
+    m_dir = std::make_unique<QTemporaryDir>();
+    const QString plcSide = m_dir->filePath(QStringLiteral("plc"));
+    const QString appSide = m_dir->filePath(QStringLiteral("app"));
+    m_socat = startPtyPair(plcSide, appSide);
+    if (!m_socat)
+        QSKIP("socat is not available for serial pty pairs");
+    auto peer = openRaw(plcSide);
+    QVERIFY(peer);
+    QByteArray received;
+    connect(peer.get(), &QSerialPort::readyRead, this, [&] { received += peer->readAll(); });
+    LinkSettings settings
+        = LinkSettings::serial(appSide, 9600, LinkSettings::ProtocolChoice::Facon);
+    settings.flowControl = LinkSettings::FlowControl::Software;
+    settings.interFrameMs = 0;
+    settings.reconnectMinMs = 50;
+    auto session = openSession(settings);
+    QCOMPARE(session->linkState(), LinkState::Connected);
+    Results results(session.get());
+    const QString unexpected = QStringLiteral("no query pending");
+    // A byte the session logs, then XOFF: once the byte is logged the XOFF took effect. (Qt sets
+    // IXANY: any byte restarts the output, so a stop always comes last.)
+    peer->write("a\x13");
+    QTRY_COMPARE_WITH_TIMEOUT(countEntries(*session, TrafficEntry::Direction::In, unexpected), 1,
+                              5000);
+
+    const Request first = Request::writeRegisters(0, addr("R6"), {1});
+    const quint64 waiting = session->submit(first);
+    QTRY_COMPARE_WITH_TIMEOUT(countEntries(*session, TrafficEntry::Direction::Out, {}), 1, 5000);
+    // A byte the session reads after it wrote the frame: a result due by then has been posted.
+    peer->write("b\x13");
+    QTRY_COMPARE_WITH_TIMEOUT(countEntries(*session, TrafficEntry::Direction::In, unexpected), 2,
+                              5000);
+    QCoreApplication::processEvents();
+    QVERIFY2(!results.map.contains(waiting), "broadcast reported done while its frame was held");
+    peer->write("\x11"); // XON: the frame leaves, then the broadcast is done
+    QVERIFY(results.waitFor(waiting));
+    CHECK_OK(results.map.value(waiting));
+    const Bytes firstFrame = FaconCodec().encodeRequest(first).value();
+    const QByteArray firstBytes(reinterpret_cast<const char *>(firstFrame.data()),
+                                static_cast<qsizetype>(firstFrame.size()));
+    QTRY_COMPARE_WITH_TIMEOUT(received, firstBytes, 5000);
+
+    // The line stops again and stays stopped: a bounded wait, then a clear error.
+    peer->write("c\x13");
+    QTRY_COMPARE_WITH_TIMEOUT(countEntries(*session, TrafficEntry::Direction::In, unexpected), 3,
+                              5000);
+    RequestOptions quick;
+    quick.timeoutMs = 200;
+    const quint64 stuck
+        = session->submit(Request::writeRegisters(0, addr("R6"), {2}), Priority::User, quick);
+    QVERIFY(results.waitFor(stuck));
+    const SessionResult notSent = results.map.value(stuck);
+    QCOMPARE(notSent.errorKind(), ErrorKind::LinkError);
+    QVERIFY2(notSent.errorText().startsWith(QStringLiteral("Not sent:")),
+             qPrintable(notSent.errorText()));
+    QCOMPARE(notSent.attempts(), 1); // never retried: a second copy could follow the first
+
+    // Reported as not sent, so it must never arrive: the session reset the link. After the
+    // reconnect and an XON, the next broadcast is the only frame the peer gets.
+    QTRY_COMPARE_WITH_TIMEOUT(session->linkState(), LinkState::Connected, 5000);
+    peer->write("\x11"
+                "d");
+    QTRY_COMPARE_WITH_TIMEOUT(countEntries(*session, TrafficEntry::Direction::In, unexpected), 4,
+                              5000);
+    const Request third = Request::writeRegisters(0, addr("R6"), {3});
+    CHECK_OK(run(*session, results, third));
+    const Bytes thirdFrame = FaconCodec().encodeRequest(third).value();
+    const QByteArray thirdBytes(reinterpret_cast<const char *>(thirdFrame.data()),
+                                static_cast<qsizetype>(thirdFrame.size()));
+    QTRY_COMPARE_WITH_TIMEOUT(received, firstBytes + thirdBytes, 5000);
+}
+
+// Writes accepted before close() reach the PLC; reads queued with them are cancelled.
+void TestSession::closeSendsQueuedWrites()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    auto session = openSession(settings);
+    Results results(session.get());
+    QList<quint64> writes;
+    for (int i = 0; i < 20; ++i)
+        writes.append(session->submit(
+            Request::writeRegisters(1, addr("R100").advanced(static_cast<std::uint32_t>(i)),
+                                    {static_cast<std::uint32_t>(i + 1)})));
+    const quint64 read = session->submit(Request::readRegisters(1, addr("R0"), 1));
+    session->close();
+    for (quint64 id : writes) {
+        QVERIFY(results.waitFor(id));
+        CHECK_OK(results.map.value(id));
+    }
+    QVERIFY(results.waitFor(read));
+    QCOMPARE(results.map.value(read).errorKind(), ErrorKind::Cancelled);
+    for (int i = 0; i < 20; ++i)
+        QCOMPARE(m_plc->value(addr("R100").advanced(static_cast<std::uint32_t>(i))),
+                 std::optional<std::uint32_t>(i + 1));
+    QTRY_COMPARE_WITH_TIMEOUT(session->linkState(), LinkState::Closed, 5000);
+    QCOMPARE(session->pendingWrites(), 0);
+    QCOMPARE(results.map.size(), 21); // exactly one result each
+    // Nothing new is taken once closed.
+    const SessionResult late = run(*session, results, Request::writeRegisters(1, addr("R0"), {1}));
+    QCOMPARE(late.errorKind(), ErrorKind::LinkError);
+}
+
+void TestSession::destroySendsQueuedWrites_data()
+{
+    QTest::addColumn<QString>("transport");
+    QTest::newRow("tcp") << QStringLiteral("tcp");
+    QTest::newRow("serial") << QStringLiteral("serial");
+}
+
+// Destroying a session (the CLI's exit, the GUI's quit) sends what it accepted first. Broadcasts,
+// as the simulator lives on this thread and cannot answer while the destructor waits.
+void TestSession::destroySendsQueuedWrites()
+{
+    QFETCH(QString, transport);
+    LinkSettings settings;
+    if (!makeLink(transport, LinkSettings::ProtocolChoice::Facon, settings))
+        QSKIP("socat is not available for serial pty pairs");
+    settings.interFrameMs = 0;
+    auto session = openSession(settings);
+    QCOMPARE(session->linkState(), LinkState::Connected);
+    for (int i = 0; i < 20; ++i)
+        session->submit(
+            Request::writeRegisters(0, addr("R200").advanced(static_cast<std::uint32_t>(i)),
+                                    {static_cast<std::uint32_t>(i + 1)}));
+    session.reset();
+    g_session = nullptr;
+    QTRY_COMPARE_WITH_TIMEOUT(m_server->counters().frames, quint64(20), 5000);
+    for (int i = 0; i < 20; ++i)
+        QCOMPARE(m_plc->value(addr("R200").advanced(static_cast<std::uint32_t>(i))),
+                 std::optional<std::uint32_t>(i + 1));
+}
+
+// A PLC that stops answering cannot hold a close for longer than the drain bound.
+void TestSession::closeDrainIsBounded()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    settings.timeoutMs = 2000;
+    settings.retries = 0;
+    FaultConfig faults;
+    faults.dropRate = 1.0;
+    m_server->setFaults(faults);
+    auto session = openSession(settings);
+    session->setCloseDrainMs(300);
+    QCOMPARE(session->closeDrainMs(), 300);
+    Results results(session.get());
+    QList<quint64> ids;
+    for (int i = 0; i < 3; ++i)
+        ids.append(session->submit(Request::writeRegisters(1, addr("R10"), {7})));
+    QElapsedTimer clock;
+    clock.start();
+    session->close();
+    // The first write went out and waits for its answer; the bound ends the wait.
+    QTRY_COMPARE_WITH_TIMEOUT(m_server->counters().frames, quint64(1), 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(session->linkState(), LinkState::Closed, 5000);
+    QVERIFY2(clock.elapsed() < 1500, qPrintable(QString::number(clock.elapsed())));
+    for (quint64 id : ids) {
+        QVERIFY(results.waitFor(id));
+        QCOMPARE(results.map.value(id).errorKind(), ErrorKind::Cancelled);
+        QVERIFY2(results.map.value(id).errorText().contains(QStringLiteral("300 ms")),
+                 qPrintable(results.map.value(id).errorText()));
+    }
+    QCOMPARE(results.map.size(), 3);
+    QCOMPARE(m_server->counters().frames, quint64(1));
+}
+
+// A write whose answer comes late is sent again; it is reported once, and the traffic log shows
+// both attempts.
+void TestSession::retriedWriteReportedOnce()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Facon, settings));
+    settings.timeoutMs = 100;
+    settings.retries = 2;
+    FaultConfig slow;
+    slow.latencyMs = 150;
+    m_server->setFaults(slow);
+    auto session = openSession(settings);
+    Results results(session.get());
+    const quint64 id = session->submit(Request::writeRegisters(1, addr("R300"), {5}));
+    QVERIFY(results.waitFor(id));
+    CHECK_OK(results.map.value(id));
+    QCOMPARE(results.map.value(id).attempts(), 2);
+    // The answer to the second attempt arrives after the result: logged as unexpected, not a
+    // second result.
+    QTRY_COMPARE_WITH_TIMEOUT(
+        countEntries(*session, TrafficEntry::Direction::In, QStringLiteral("no query pending")), 1,
+        5000);
+    QCoreApplication::processEvents();
+    QCOMPARE(results.order.count(id), 1);
+    QCOMPARE(results.map.size(), 1);
+    QCOMPARE(countEntries(*session, TrafficEntry::Direction::Out, {}), 2);
+    QCOMPARE(
+        countEntries(*session, TrafficEntry::Direction::Event, QStringLiteral("(attempt 1 of 3)")),
+        1);
+    QCOMPARE(m_server->counters().frames, quint64(2));
+    QCOMPARE(m_plc->value(addr("R300")), std::optional<std::uint32_t>(5));
+    QCOMPARE(session->statistics().total.requests, quint64(1));
+}
+
+// Raw frames under auto-detect: one sent as typed needs no probe; one the session frames is
+// preceded by a probe of the station it is for, not station 1.
+void TestSession::rawUnderAutoNeedsNoProbe()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Auto, settings));
+    m_server->setStation(9);
+    auto session = openSession(settings);
+    Results results(session.get());
+    const QByteArray status("\x02"
+                            "0940CF\x03");
+    quint64 id = session->sendRaw(status, false);
+    QVERIFY(results.waitFor(id));
+    CHECK_OK(results.map.value(id));
+    QVERIFY2(results.map.value(id).rawAnswer().startsWith("\x02"
+                                                          "0940"),
+             results.map.value(id).rawAnswer().constData());
+    QCOMPARE(m_server->counters().frames, quint64(1));
+    QVERIFY(!session->isProtocolKnown());
+
+    RequestOptions station9;
+    station9.station = 9;
+    id = session->sendRaw("0940", true, station9);
+    QVERIFY(results.waitFor(id));
+    CHECK_OK(results.map.value(id));
+    QVERIFY(session->isProtocolKnown());
+    QCOMPARE(session->protocol(), Protocol::Facon);
+    QCOMPARE(m_server->counters().frames, quint64(3)); // the probe of station 9, then the frame
+    QCOMPARE(m_server->counters().otherStation, quint64(0));
 }
 
 #include "tst_session.moc"

@@ -3,7 +3,8 @@
 // flood bytes or never answer must not grow memory.
 //
 // FATEK_SOAK_SECONDS=N runs the TCP soak for N seconds (default 20; UDP gets half of it). The
-// figures are printed with qInfo ("soak figures: ...").
+// figures are printed with qInfo ("soak figures: ..."). Any N runs: main() raises Qt Test's
+// per-function watchdog to fit.
 #include "session.h"
 #include "sessionworker.h"
 #include "simserver.h"
@@ -100,6 +101,21 @@ struct SoakFigures
 class TestSoak : public QObject
 {
     Q_OBJECT
+
+public:
+    // Before QTest starts (QTEST_GUILESS_MAIN calls it). Qt Test ends a test function that runs
+    // longer than QTEST_FUNCTION_TIMEOUT ms (5 min by default), read once when it starts: a long
+    // soak (TCP, then half of it over UDP, each settling a few seconds) raises it to fit, unless
+    // the caller gave more.
+    static void initMain()
+    {
+        const qint64 soakMs = qint64(soakSeconds()) * 1000;
+        const qint64 neededMs = soakMs + std::max<qint64>(5000, soakMs / 2) + 5 * 60 * 1000;
+        bool given = false;
+        const qint64 givenMs = qEnvironmentVariableIntValue("QTEST_FUNCTION_TIMEOUT", &given);
+        if (!given || givenMs < neededMs)
+            qputenv("QTEST_FUNCTION_TIMEOUT", QByteArray::number(neededMs));
+    }
 
 private Q_SLOTS:
     void initTestCase() { registerSessionMetaTypes(); }

@@ -14,6 +14,8 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -22,6 +24,7 @@
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include <memory>
 
@@ -456,6 +459,63 @@ private Q_SLOTS:
         const QString first = model->valueText(counter);
         QTRY_VERIFY_WITH_TIMEOUT(model->valueText(counter) != first, longWait);
         QVERIFY(window.hasValues());
+    }
+
+    void quitWithQueuedWrites_data()
+    {
+        QTest::addColumn<QString>("button");
+        QTest::newRow("wait") << QStringLiteral("waitButton");
+        QTest::newRow("drop") << QStringLiteral("dropButton");
+    }
+
+    // Quitting while writes wait for a slow PLC: the window says so; Wait sends them all before
+    // it closes, Drop closes at once and they never reach the PLC.
+    void quitWithQueuedWrites()
+    {
+        QFETCH(QString, button);
+        Plc plc;
+        FaultConfig slow;
+        slow.latencyMs = 150;
+        plc.server.setFaults(slow);
+        MainWindow window;
+        window.show();
+        Connection *c = connect(window, plc);
+        QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, longWait);
+        for (std::uint32_t i = 0; i < 4; ++i)
+            c->session()->submit(Request::writeRegisters(1, addr("R100").advanced(i), {i + 1}));
+        QTRY_VERIFY_WITH_TIMEOUT(c->session()->pendingWrites() > 0, longWait);
+
+        // The question is modal (its own event loop): click the real button once it shows.
+        QString question;
+        QTimer clicker;
+        clicker.setInterval(10);
+        QObject::connect(&clicker, &QTimer::timeout, &clicker, [&] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (!box || box->objectName() != QLatin1String("pendingWritesBox"))
+                return;
+            auto *target = box->findChild<QPushButton *>(button);
+            if (!target)
+                return;
+            question = box->text() + QLatin1Char(' ') + box->informativeText();
+            clicker.stop();
+            QTest::mouseClick(target, Qt::LeftButton);
+        });
+        clicker.start();
+        window.close();
+        clicker.stop();
+        QVERIFY2(question.contains(QStringLiteral("not been sent")), qPrintable(question));
+
+        if (button == QLatin1String("waitButton")) {
+            QVERIFY(window.isVisible()); // it closes when the links have drained
+            QTRY_VERIFY_WITH_TIMEOUT(!window.isVisible(), longWait);
+            for (std::uint32_t i = 0; i < 4; ++i)
+                QCOMPARE(plc.plc.value(addr("R100").advanced(i)).value_or(0), i + 1);
+        } else {
+            QVERIFY(!window.isVisible());
+            QTRY_COMPARE_WITH_TIMEOUT(c->session()->pendingWrites(), 0, longWait);
+            QCOMPARE(plc.plc.value(addr("R103")).value_or(0), 0u);
+        }
+        QCOMPARE(c->session()->pendingWrites(), 0);
     }
 };
 

@@ -238,6 +238,30 @@
             <translation>the session was closed</translation>
         </message>
         <message>
+            <source>the session was closed after waiting %1 ms for queued writes</source>
+            <translation>the session was closed after waiting %1 ms for queued writes</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is closing.</source>
+            <translation>Not sent: the link is closing.</translation>
+        </message>
+        <message>
+            <source>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</source>
+            <translation>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</translation>
+        </message>
+        <message>
+            <source>%1 does not take data</source>
+            <translation>%1 does not take data</translation>
+        </message>
+        <message>
+            <source>closing</source>
+            <translation>closing</translation>
+        </message>
+        <message>
+            <source>sending %1 queued write(s) first, at most %2 ms</source>
+            <translation>sending %1 queued write(s) first, at most %2 ms</translation>
+        </message>
+        <message>
             <source>closed</source>
             <translation>closed</translation>
         </message>
@@ -1216,6 +1240,46 @@
     </context>
     <context>
         <name>Fatek::MainWindow</name>
+        <message numerus="yes">
+            <source>Closing %1: sending %n queued write(s) first (at most %2 s)…</source>
+            <translation>
+                <numerusform>Closing %1: sending %n queued write first (at most %2 s)…</numerusform>
+                <numerusform>Closing %1: sending %n queued writes first (at most %2 s)…</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Writes not sent yet</source>
+            <translation>Writes not sent yet</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n write(s) to the PLC have not been sent yet.</source>
+            <translation>
+                <numerusform>%n write to the PLC has not been sent yet.</numerusform>
+                <numerusform>%n writes to the PLC have not been sent yet.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
+            <translation>
+                <numerusform>Wait for them (at most %n second), or drop them? Dropped writes never reach the PLC.</numerusform>
+                <numerusform>Wait for them (at most %n seconds), or drop them? Dropped writes never reach the PLC.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>&amp;Wait and Quit</source>
+            <translation>&amp;Wait and Quit</translation>
+        </message>
+        <message>
+            <source>&amp;Drop and Quit</source>
+            <translation>&amp;Drop and Quit</translation>
+        </message>
+        <message numerus="yes">
+            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
+            <translation>
+                <numerusform>Sending %n queued write before quitting (at most %1 s)…</numerusform>
+                <numerusform>Sending %n queued writes before quitting (at most %1 s)…</numerusform>
+            </translation>
+        </message>
         <message>
             <source>FATEK Studio — Operator mode (read-only)</source>
             <translation>FATEK Studio — Operator mode (read-only)</translation>

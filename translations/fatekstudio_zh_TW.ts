@@ -238,6 +238,30 @@
             <translation>工作階段已關閉</translation>
         </message>
         <message>
+            <source>the session was closed after waiting %1 ms for queued writes</source>
+            <translation>等候排隊中的寫入 %1 ms 後，工作階段已關閉</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is closing.</source>
+            <translation>未送出：連線正在關閉。</translation>
+        </message>
+        <message>
+            <source>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</source>
+            <translation>未送出：%1 在 %2 ms 內未接受訊框（%4 位元組中有 %3 個未送出）。</translation>
+        </message>
+        <message>
+            <source>%1 does not take data</source>
+            <translation>%1 不接受資料</translation>
+        </message>
+        <message>
+            <source>closing</source>
+            <translation>正在關閉</translation>
+        </message>
+        <message>
+            <source>sending %1 queued write(s) first, at most %2 ms</source>
+            <translation>先送出 %1 筆排隊中的寫入，最多 %2 ms</translation>
+        </message>
+        <message>
             <source>closed</source>
             <translation>已關閉</translation>
         </message>
@@ -1215,6 +1239,42 @@
     </context>
     <context>
         <name>Fatek::MainWindow</name>
+        <message numerus="yes">
+            <source>Closing %1: sending %n queued write(s) first (at most %2 s)…</source>
+            <translation>
+                <numerusform>正在關閉 %1：先送出 %n 筆排隊中的寫入（最多 %2 秒）…</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Writes not sent yet</source>
+            <translation>尚有寫入未送出</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n write(s) to the PLC have not been sent yet.</source>
+            <translation>
+                <numerusform>尚有 %n 筆寫入未送到 PLC。</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
+            <translation>
+                <numerusform>要等候送出（最多 %n 秒），還是捨棄？捨棄的寫入不會送到 PLC。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>&amp;Wait and Quit</source>
+            <translation>等候後結束(&amp;W)</translation>
+        </message>
+        <message>
+            <source>&amp;Drop and Quit</source>
+            <translation>捨棄並結束(&amp;D)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
+            <translation>
+                <numerusform>結束前正在送出 %n 筆排隊中的寫入（最多 %1 秒）…</numerusform>
+            </translation>
+        </message>
         <message>
             <source>FATEK Studio — Operator mode (read-only)</source>
             <translation>FATEK Studio — 操作員模式（唯讀）</translation>

@@ -244,7 +244,8 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
         s.command = CliCommand::Raw;
         if (forceHex && forceAscii)
             return fail(QStringLiteral("raw: give --hex or --ascii, not both."));
-        s.rawBytes = parseRawText(positional.join(QLatin1Char(' ')), forceHex, forceAscii, &err);
+        s.rawBytes = parseRawText(positional.join(QLatin1Char(' ')), forceHex, forceAscii, &err,
+                                  &s.rawHex);
         if (!err.isEmpty())
             return fail(err);
         s.rawFrame = frameGiven;
@@ -316,7 +317,9 @@ QString usageText()
         "                           data log (timestamp, values, status) to FILE\n"
         "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" "
         "ASCII);\n"
-        "                           --frame adds the protocol's framing and checksum\n"
+        "                           --frame adds the protocol's framing and checksum (under "
+        "auto:\n"
+        "                           binary framing for hex bytes, FACON for ASCII text)\n"
         "  scan [FROM..TO]          which stations answer (default 1..254)\n"
         "\n"
         "Exit codes: 0 ok, 2 usage, 3 link failure (timeout, no connection), 4 PLC error, 5 "
@@ -365,7 +368,8 @@ std::optional<std::uint32_t> parseValue(const QString &rawText, const Address &a
     return static_cast<std::uint32_t>(static_cast<quint64>(v) & static_cast<quint64>(maxUnsigned));
 }
 
-QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error)
+QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
+                        bool *isHex)
 {
     QString t = text.trimmed();
     bool hex = forceHex;
@@ -380,6 +384,8 @@ QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QSt
             t = t.mid(t.indexOf(QRegularExpression(QStringLiteral("[:xX]"))) + 1);
         }
     }
+    if (isHex)
+        *isHex = hex;
     if (hex) {
         QString digits = t;
         digits.remove(QRegularExpression(QStringLiteral("\\s")));

@@ -55,6 +55,7 @@ struct CliStep
     QByteArray loopbackData;
     QByteArray rawBytes;
     bool rawFrame = false;
+    bool rawHex = false; // typed as hex: binary bytes (--frame under auto: binary framing)
 
     int scanFirst = 1;
     int scanLast = 254;
@@ -104,6 +105,8 @@ QString usageText();
 std::optional<std::uint32_t> parseValue(const QString &text, const Address &address,
                                         QString *error);
 // "01 40 0A" (two-digit hex tokens, or one token starting 0x / hex:) -> bytes; else the ASCII text.
-QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error);
+// `hex` (if given) tells which of the two it was.
+QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
+                        bool *hex = nullptr);
 
 } // namespace Fatek

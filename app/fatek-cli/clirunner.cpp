@@ -797,11 +797,18 @@ void CliRunner::onValues(const QList<WatchValue> &values)
 
 void CliRunner::runRaw()
 {
-    auto send = [this] {
+    {
         const quint64 before = m_session->trafficLog()->entries().isEmpty()
                                    ? 0
                                    : m_session->trafficLog()->entries().constLast().sequence;
-        const quint64 id = m_session->sendRaw(step().rawBytes, step().rawFrame);
+        RequestOptions options;
+        options.station = m_options.station;
+        // Under auto-detect the bytes say which framing is meant (hex: binary bytes, text: FACON
+        // characters), so no status probe goes before the frame.
+        if (step().rawFrame && m_options.link.protocol == LinkSettings::ProtocolChoice::Auto
+            && !m_session->isProtocolKnown())
+            options.framing = step().rawHex ? Protocol::Binary : Protocol::Facon;
+        const quint64 id = m_session->sendRaw(step().rawBytes, step().rawFrame, options);
         armWatchdog(requestBudgetMs());
         m_handlers.insert(id, [this, before](const SessionResult &r) {
             if (!r.ok())
@@ -827,17 +834,7 @@ void CliRunner::runRaw()
             m_out.print(block);
             stepDone();
         });
-    };
-    if (step().rawFrame && !m_session->isProtocolKnown()) {
-        // The framing depends on the protocol: let a status query detect it first.
-        submit(Request::briefStatus(m_options.station), [this, send](const SessionResult &r) {
-            if (!r.ok())
-                return failWith(r);
-            send();
-        });
-        return;
     }
-    send();
 }
 
 // --- scan

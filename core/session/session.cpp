@@ -3,6 +3,9 @@
 #include "crossthreadcall.h"
 #include "sessionworker.h"
 
+#include <QDeadlineTimer>
+
+#include <algorithm>
 #include <mutex>
 
 namespace Fatek {
@@ -84,8 +87,15 @@ Session::Session(const LinkSettings &settings, QObject *parent)
 
 Session::~Session()
 {
-    m_thread.quit();
-    m_thread.wait();
+    // Writes already accepted leave before the link goes (bounded); then the thread ends.
+    QThread *thread = &m_thread;
+    CrossThreadCall::post(m_worker, [worker = m_worker, thread] {
+        worker->close(true, [thread] { thread->quit(); });
+    });
+    if (!m_thread.wait(QDeadlineTimer(m_shared->closeDrainMs.load() + 2000))) {
+        m_thread.quit();
+        m_thread.wait();
+    }
     CrossThreadCall::threadEnded(m_shared.get());
 }
 
@@ -94,9 +104,25 @@ void Session::open()
     CrossThreadCall::post(m_worker, [worker = m_worker] { worker->open(); });
 }
 
-void Session::close()
+void Session::close(CloseMode mode)
 {
-    CrossThreadCall::post(m_worker, [worker = m_worker] { worker->close(); });
+    const bool drain = mode == CloseMode::Drain;
+    CrossThreadCall::post(m_worker, [worker = m_worker, drain] { worker->close(drain); });
+}
+
+int Session::pendingWrites() const
+{
+    return m_shared->pendingWrites.load();
+}
+
+void Session::setCloseDrainMs(int ms)
+{
+    m_shared->closeDrainMs.store(std::max(0, ms));
+}
+
+int Session::closeDrainMs() const
+{
+    return m_shared->closeDrainMs.load();
 }
 
 quint64 Session::submit(const Request &request, Priority priority, RequestOptions options)

@@ -29,15 +29,25 @@ class Session : public QObject
 
 public:
     explicit Session(const LinkSettings &settings, QObject *parent = nullptr);
-    // Stops the worker thread; pending requests are dropped without a signal.
+    // Closes like close(CloseMode::Drain) (blocking at most closeDrainMs() and a little more),
+    // then stops the worker thread; results that come meanwhile are not signalled.
     ~Session() override;
 
     LinkSettings settings() const { return m_settings; }
 
     // Connects (and keeps reconnecting with backoff if the settings say so).
     void open();
-    // Disconnects; queued and running requests finish with ErrorKind::Cancelled.
-    void close();
+    // Disconnects. Drain: accepted writes (write commands, RUN/STOP, raw frames) and bytes not
+    // yet sent go first, bounded by closeDrainMs(); reads and polls finish with
+    // ErrorKind::Cancelled at once, as does what the bound cut off. linkStateChanged(Closed) comes
+    // when the link is closed. Discard: everything finishes with Cancelled at once.
+    void close(CloseMode mode = CloseMode::Drain);
+    // Writes accepted and not finished yet (queued, or on the wire waiting to leave or for the
+    // answer): what a close would wait for.
+    int pendingWrites() const;
+    // How long a close waits for pending writes [3000 ms].
+    void setCloseDrainMs(int ms);
+    int closeDrainMs() const;
 
     // Queues a request; returns its id (never 0). Requests submitted while the link is down
     // (and not connecting) finish at once with ErrorKind::LinkError.

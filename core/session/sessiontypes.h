@@ -1,7 +1,11 @@
 #pragma once
 
+#include "request.h"
+
 #include <QMetaType>
 #include <QString>
+
+#include <optional>
 
 namespace Fatek {
 
@@ -22,11 +26,23 @@ enum class Priority {
     Poll,       // cyclic reads of the watch list
 };
 
+// What closing a link does with writes already accepted.
+enum class CloseMode {
+    Drain,   // send them (and unsent bytes) first, for at most Session::closeDrainMs()
+    Discard, // cancel them at once
+};
+
 // Per-request overrides of the link's policy; negative means "use the session's setting".
 struct RequestOptions
 {
     int timeoutMs = -1;
     int retries = -1;
+    // Raw frames: the station they are meant for (statistics, and the station an auto-detect
+    // probe asks when the framing needs the protocol); -1: unknown (a probe asks station 1).
+    int station = -1;
+    // Raw frames with framing: the protocol whose framing to add. Unset: the link's protocol,
+    // detected first under auto-detect.
+    std::optional<Protocol> framing;
 };
 
 } // namespace Fatek

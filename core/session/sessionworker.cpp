@@ -56,6 +56,11 @@ SessionWorker::SessionWorker(const LinkSettings &settings, std::shared_ptr<Sessi
     connect(&m_timeoutTimer, &QTimer::timeout, this, &SessionWorker::onTimeout);
     connect(&m_silenceTimer, &QTimer::timeout, this, &SessionWorker::proceed);
     connect(&m_reconnectTimer, &QTimer::timeout, this, &SessionWorker::startConnect);
+    m_drainTimer.setSingleShot(true);
+    connect(&m_drainTimer, &QTimer::timeout, this, [this] {
+        closeNow(QStringLiteral("the session was closed after waiting %1 ms for queued writes")
+                     .arg(m_drainTimer.interval()));
+    });
     // Statistics go out at most 4 times a second, however busy the link.
     m_statsTimer.setInterval(250);
     connect(&m_statsTimer, &QTimer::timeout, this, [this] {
@@ -137,23 +142,108 @@ void SessionWorker::startConnect()
         connect(m_transport, &Transport::opened, this, &SessionWorker::onOpened);
         connect(m_transport, &Transport::disconnected, this, &SessionWorker::onDisconnected);
         connect(m_transport, &Transport::bytesReceived, this, &SessionWorker::onBytes);
+        connect(m_transport, &Transport::allSent, this, &SessionWorker::onAllSent);
     }
     setState(LinkState::Connecting, m_transport->describe());
     m_transport->open();
 }
 
-void SessionWorker::close()
+void SessionWorker::close(bool drain, std::function<void()> closed)
 {
+    if (closed)
+        m_whenClosed.push_back(std::move(closed));
     m_wantOpen = false;
+    m_reconnectTimer.stop();
+    const bool linkUp = m_state == LinkState::Connected || m_state == LinkState::Connecting;
+    if (!drain || !linkUp || !m_transport) {
+        closeNow(QStringLiteral("the session was closed"));
+        return;
+    }
+    if (!m_closing) {
+        // A write the caller was told is accepted must reach the PLC (or fail visibly): it goes
+        // before the link does, within a bound so that a dead line cannot hold the close.
+        m_closing = true;
+        m_poller->setLinkUp(false);
+        cancelReadsForClose();
+        const int bound = m_shared->closeDrainMs.load();
+        const int writes = m_shared->pendingWrites.load();
+        if (writes > 0 || m_transport->unsentBytes() > 0)
+            m_log->append(TrafficEntry::Direction::Event, {}, QStringLiteral("closing"),
+                          QStringLiteral("sending %1 queued write(s) first, at most %2 ms")
+                              .arg(writes)
+                              .arg(bound));
+        m_drainTimer.start(bound);
+    }
+    checkDrained();
+}
+
+void SessionWorker::cancelReadsForClose()
+{
+    // Reads and polls are pointless once the link goes: only what changes the PLC is drained.
+    // Probes stay: a queued write may wait for the protocol they detect.
+    std::vector<SessionJob> cancelled;
+    bool writesQueued = false;
+    for (auto *queue : {&m_userQueue, &m_backgroundQueue, &m_pollQueue}) {
+        std::deque<SessionJob> kept;
+        for (auto &job : *queue) {
+            if (isWriteJob(job) || job.probe) {
+                writesQueued = true;
+                kept.push_back(std::move(job));
+            } else {
+                cancelled.push_back(std::move(job));
+            }
+        }
+        queue->swap(kept);
+    }
+    for (auto &job : cancelled)
+        deliver(job, SessionResult::fromError(
+                         makeError(ErrorKind::Cancelled, "the session was closed"), {}, job.raw));
+    // A read on the wire holds the line only if a write must wait for its answer.
+    if (m_current && !writesQueued && !isWriteJob(*m_current) && !m_current->probe
+        && !m_awaitingSent)
+        finishCurrent(SessionResult::fromError(
+            makeError(ErrorKind::Cancelled, "the session was closed"), {}, m_current->raw));
+}
+
+void SessionWorker::checkDrained()
+{
+    if (!m_closing)
+        return;
+    if (m_current || !m_userQueue.empty() || !m_backgroundQueue.empty() || !m_pollQueue.empty())
+        return; // pump() calls again when the job finishes
+    if (m_transport && m_transport->isOpen() && m_transport->unsentBytes() > 0)
+        return; // allSent() calls again
+    closeNow(QStringLiteral("the session was closed"));
+}
+
+void SessionWorker::closeNow(const QString &reason)
+{
+    m_closing = false;
+    m_awaitingSent = false;
+    m_wantOpen = false;
+    m_drainTimer.stop();
     m_reconnectTimer.stop();
     m_silenceTimer.stop();
     m_timeoutTimer.stop();
     if (m_transport)
         m_transport->close();
     m_poller->setLinkUp(false);
-    failAll(ErrorKind::Cancelled, QStringLiteral("the session was closed"), true);
+    failAll(ErrorKind::Cancelled, reason, true);
     if (m_state != LinkState::Closed)
         setState(LinkState::Closed, QStringLiteral("closed"));
+    const auto whenClosed = std::exchange(m_whenClosed, {});
+    for (const auto &callback : whenClosed)
+        callback();
+}
+
+void SessionWorker::onAllSent()
+{
+    if (m_awaitingSent && m_current) {
+        m_awaitingSent = false;
+        m_timeoutTimer.stop();
+        finishBroadcast();
+    }
+    checkDrained();
 }
 
 void SessionWorker::onOpened()
@@ -190,6 +280,8 @@ void SessionWorker::onDisconnected(const QString &reason)
     } else {
         m_wantOpen = false;
         setState(LinkState::Closed, reason);
+        if (m_closing || !m_whenClosed.empty())
+            closeNow(QStringLiteral("the session was closed"));
     }
 }
 
@@ -243,6 +335,12 @@ void SessionWorker::enqueue(SessionJob job)
                          {}, job.raw));
         return;
     }
+    if (m_closing) {
+        deliver(job, SessionResult::fromError(
+                         makeError(ErrorKind::LinkError, "Not sent: the link is closing."), {},
+                         job.raw));
+        return;
+    }
     if (m_state != LinkState::Connected && m_state != LinkState::Connecting) {
         const QString why
             = m_state == LinkState::Closed
@@ -267,8 +365,17 @@ void SessionWorker::enqueue(SessionJob job)
                          {}, job.raw));
         return;
     }
+    if (!job.pendingWrite && isWriteJob(job)) {
+        job.pendingWrite = true;
+        m_shared->pendingWrites.fetch_add(1);
+    }
     queue.push_back(std::move(job));
     schedulePump();
+}
+
+bool SessionWorker::isWriteJob(const SessionJob &job)
+{
+    return !job.probe && (job.raw || isWriteCommand(job.request.command));
 }
 
 void SessionWorker::cancel(quint64 id)
@@ -335,8 +442,17 @@ void SessionWorker::pump()
 {
     while (!m_current && m_state == LinkState::Connected) {
         SessionJob job;
-        if (!takeNext(job))
+        if (!takeNext(job)) {
+            checkDrained();
             return;
+        }
+        if (m_closing && !isWriteJob(job) && !job.probe) {
+            // A read that waited for a protocol probe while the link began to close.
+            deliver(job,
+                    SessionResult::fromError(
+                        makeError(ErrorKind::Cancelled, "the session was closed"), {}, job.raw));
+            continue;
+        }
         if (prepare(job)) {
             m_current = std::move(job);
             proceed();
@@ -350,7 +466,9 @@ bool SessionWorker::prepare(SessionJob &job)
         enqueue(std::move(job)); // refuses it with the read-only message
         return false;
     }
-    if (!m_protocol && !job.probe) {
+    // A raw frame goes as typed, or in the framing the caller chose: it needs no protocol.
+    const bool needsProtocol = !job.raw || (job.addFraming && !job.options.framing);
+    if (!m_protocol && !job.probe && needsProtocol) {
         // Auto-detect: ask the job's station for its status in FACON, then binary.
         const quint8 station = stationOf(job) == 0 ? 1 : stationOf(job);
         auto waiting = std::make_shared<SessionJob>(std::move(job));
@@ -424,7 +542,11 @@ int SessionWorker::retriesFor(const SessionJob &job) const
 
 quint8 SessionWorker::stationOf(const SessionJob &job) const
 {
-    return job.raw ? 0 : job.request.station;
+    if (job.raw)
+        return job.options.station > 0 && job.options.station <= Limits::maxStation
+                   ? static_cast<quint8>(job.options.station)
+                   : quint8(0);
+    return job.request.station;
 }
 
 // ---- one query on the wire ----------------------------------------------------------------------
@@ -451,9 +573,12 @@ void SessionWorker::proceed()
 void SessionWorker::startAttempt()
 {
     SessionJob &job = *m_current;
+    const std::optional<Protocol> chosen = job.probe ? job.probe
+                                           : job.raw ? job.options.framing
+                                                     : std::nullopt;
     const Codec *activeCodec
-        = job.probe ? (*job.probe == Protocol::Facon ? m_faconCodec.get() : m_binaryCodec.get())
-                    : codec();
+        = chosen ? (*chosen == Protocol::Facon ? m_faconCodec.get() : m_binaryCodec.get())
+                 : codec();
 
     // Stale bytes (a late answer to a timed-out query, noise) must not join the next answer.
     const QByteArray stale = m_transport->takePending();
@@ -508,14 +633,25 @@ void SessionWorker::startAttempt()
     m_log->append(TrafficEntry::Direction::Out, frame, summarize(frame));
 
     if (!job.raw && job.request.station == Limits::broadcastStation) {
-        // Broadcast: every PLC acts and none answers.
-        Response response;
-        response.station = 0;
-        response.command = job.request.command;
-        finishCurrent(SessionResult(Result<Response>(response)));
+        // Broadcast: every PLC acts and none answers. Done once the frame has left this machine,
+        // not when it is only queued: a close right after the result must not lose it.
+        if (m_transport->unsentBytes() > 0) {
+            m_awaitingSent = true;
+            m_timeoutTimer.start(timeoutFor(job));
+            return;
+        }
+        finishBroadcast();
         return;
     }
     m_timeoutTimer.start(timeoutFor(job));
+}
+
+void SessionWorker::finishBroadcast()
+{
+    Response response;
+    response.station = 0;
+    response.command = m_current->request.command;
+    finishCurrent(SessionResult(Result<Response>(response)));
 }
 
 QString SessionWorker::summarize(const QByteArray &frame) const
@@ -532,7 +668,7 @@ QString SessionWorker::summarize(const QByteArray &frame) const
 void SessionWorker::onBytes(const QByteArray &bytes)
 {
     m_lastActivity.start();
-    if (!m_current || !m_timeoutTimer.isActive()) {
+    if (!m_current || !m_timeoutTimer.isActive() || m_awaitingSent) {
         // Nothing asked: a late answer or noise. Dropped now, logged, and counted.
         m_log->append(TrafficEntry::Direction::In, bytes, QStringLiteral("unexpected bytes"),
                       QStringLiteral("no query pending"));
@@ -619,12 +755,18 @@ void SessionWorker::onRawBytes(const QByteArray &bytes)
         finishCurrent(SessionResult::fromRaw(m_answer));
         return;
     }
-    // End early once a complete frame of the link's protocol came back; otherwise collect until
-    // the timeout.
-    if (!m_protocol)
+    // End early once a complete frame of the link's protocol came back (or of the protocol the
+    // frame was framed in, or looks like); otherwise collect until the timeout.
+    std::optional<Protocol> protocol = m_protocol;
+    if (!protocol)
+        protocol = m_current->options.framing;
+    if (!protocol && !m_sentFrame.isEmpty()
+        && static_cast<quint8>(m_sentFrame.at(0)) == FaconCodec::STX)
+        protocol = Protocol::Facon;
+    if (!protocol)
         return;
     Deframer *deframer
-        = *m_protocol == Protocol::Facon ? m_faconDeframer.get() : m_binaryDeframer.get();
+        = *protocol == Protocol::Facon ? m_faconDeframer.get() : m_binaryDeframer.get();
     std::vector<DeframedItem> items;
     deframer->feed(bytesOf(bytes), items);
     // Bytes around a console answer are the answer, not noise.
@@ -651,6 +793,25 @@ void SessionWorker::onTimeout()
         return;
     SessionJob &job = *m_current;
     const int timeout = timeoutFor(job);
+    if (m_awaitingSent) {
+        // Never retried: the stuck copy may still leave, and the PLC would act twice.
+        m_awaitingSent = false;
+        const QString link = m_transport->describe();
+        const QString message
+            = QStringLiteral("Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes "
+                             "unsent).")
+                  .arg(link)
+                  .arg(timeout)
+                  .arg(std::min<qint64>(m_transport->unsentBytes(), m_sentFrame.size()))
+                  .arg(m_sentFrame.size());
+        m_log->append(TrafficEntry::Direction::Event, {},
+                      QString::fromStdString(job.request.describe()), message);
+        finishCurrent(SessionResult::fromError(makeError(ErrorKind::LinkError, toStd(message))));
+        // Reported as not sent, so it must never leave later: drop the link and what it holds.
+        m_transport->close();
+        onDisconnected(QStringLiteral("%1 does not take data").arg(link));
+        return;
+    }
     if (job.raw) {
         if (m_answer.isEmpty()) {
             countForStation(0, [](StationStatistics &s) { ++s.timeouts; });
@@ -694,6 +855,7 @@ void SessionWorker::retryOrFail(ProtocolError error)
 void SessionWorker::finishCurrent(SessionResult result)
 {
     m_timeoutTimer.stop();
+    m_awaitingSent = false;
     m_faconDeframer->reset();
     m_binaryDeframer->reset();
     SessionJob job = std::move(*m_current);
@@ -708,6 +870,10 @@ void SessionWorker::finishCurrent(SessionResult result)
 
 void SessionWorker::deliver(SessionJob &job, SessionResult result)
 {
+    if (job.pendingWrite) {
+        job.pendingWrite = false;
+        m_shared->pendingWrites.fetch_sub(1);
+    }
     if (job.done) {
         auto done = std::move(job.done);
         done(result);

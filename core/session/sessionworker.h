@@ -30,6 +30,10 @@ struct SessionShared
     std::atomic<bool> readOnly{false};
     std::atomic<int> linkState{static_cast<int>(LinkState::Closed)};
     std::atomic<int> protocol{-1}; // Protocol value, -1 while auto-detect has not decided
+    // Accepted writes (write commands, RUN/STOP, raw frames) not finished yet, queued or on the
+    // wire: what closing the link waits for.
+    std::atomic<int> pendingWrites{0};
+    std::atomic<int> closeDrainMs{3000}; // how long a close waits for them
     mutable std::mutex mutex;
     SessionStatistics statistics; // under mutex
 };
@@ -47,6 +51,7 @@ struct SessionJob
     std::optional<Protocol> probe; // protocol auto-detect probe in this protocol
     std::function<void(const SessionResult &)> done;
     int attempts = 0;
+    bool pendingWrite = false; // counted in SessionShared::pendingWrites
 };
 
 // The session's engine, living on its worker thread: one query on the wire at a time, priority
@@ -70,7 +75,10 @@ public:
     // another thread is re-registered there by a queued call that leaks if the thread ends first.
     void startTimers();
     void open();
-    void close();
+    // Closes the link. With `drain`, accepted writes and unsent bytes go out first (at most
+    // SessionShared::closeDrainMs; reads and polls are cancelled at once); without, they are
+    // cancelled. `closed` runs once the link is closed.
+    void close(bool drain = true, std::function<void()> closed = {});
     void enqueue(SessionJob job);
     void cancel(quint64 id);
     void resetStatistics();
@@ -101,6 +109,12 @@ private:
     void finishCurrent(SessionResult result);
     void deliver(SessionJob &job, SessionResult result);
     void failAll(ErrorKind kind, const QString &reason, bool includePolls);
+    static bool isWriteJob(const SessionJob &job);
+    void finishBroadcast();
+    void onAllSent();
+    void cancelReadsForClose();
+    void checkDrained();
+    void closeNow(const QString &reason);
 
     void onOpened();
     void onDisconnected(const QString &reason);
@@ -134,6 +148,12 @@ private:
     QByteArray m_sentFrame;
     QByteArray m_answer; // bytes of the current attempt's answer
     bool m_pumpScheduled = false;
+    // The current job needs no answer and waits for its frame to leave (Transport::allSent).
+    bool m_awaitingSent = false;
+    // close(drain) in progress: writes still go, nothing new is accepted.
+    bool m_closing = false;
+    std::vector<std::function<void()>> m_whenClosed;
+    QTimer m_drainTimer{this};
 
     LinkState m_state = LinkState::Closed;
     bool m_wantOpen = false;

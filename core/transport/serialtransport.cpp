@@ -4,12 +4,22 @@
 #include <QSerialPortInfo>
 #include <QTimer>
 
+#include <algorithm>
+
+#ifdef Q_OS_UNIX
+#include <sys/ioctl.h>
+#include <termios.h>
+#endif
+
 namespace Fatek {
 
 SerialTransport::SerialTransport(const LinkSettings &settings, QObject *parent)
     : Transport(parent)
     , m_settings(settings)
-{}
+{
+    m_drainTimer.setSingleShot(true);
+    connect(&m_drainTimer, &QTimer::timeout, this, &SerialTransport::checkSent);
+}
 
 SerialTransport::~SerialTransport()
 {
@@ -57,6 +67,7 @@ void SerialTransport::open()
         QTimer::singleShot(0, this, [this, reason] { Q_EMIT disconnected(reason); });
         return;
     }
+    connect(m_port, &QSerialPort::bytesWritten, this, &SerialTransport::checkSent);
     connect(m_port, &QSerialPort::readyRead, this, [this] {
         const QByteArray bytes = m_port->readAll();
         if (!bytes.isEmpty())
@@ -82,8 +93,13 @@ void SerialTransport::open()
 
 void SerialTransport::close()
 {
+    m_drainTimer.stop();
     if (QSerialPort *port = std::exchange(m_port, nullptr)) {
         port->disconnect(this);
+        // What is still queued here is what the session gave up on (a stopped line): dropped, so
+        // that closing does not wait for the driver to send it.
+        if (port->isOpen() && port->bytesToWrite() > 0)
+            port->clear(QSerialPort::Output);
         if (port->isOpen())
             port->close();
         port->deleteLater();
@@ -100,6 +116,39 @@ bool SerialTransport::write(const QByteArray &bytes)
     if (!isOpen())
         return false;
     return m_port->write(bytes) == bytes.size();
+}
+
+qint64 SerialTransport::driverQueue() const
+{
+#ifdef Q_OS_UNIX
+    int queued = 0;
+    if (m_port && m_port->isOpen() && ::ioctl(m_port->handle(), TIOCOUTQ, &queued) == 0)
+        return queued;
+#endif
+    return 0;
+}
+
+qint64 SerialTransport::unsentBytes() const
+{
+    if (!isOpen())
+        return 0;
+    return m_port->bytesToWrite() + driverQueue();
+}
+
+void SerialTransport::checkSent()
+{
+    if (!isOpen() || m_port->bytesToWrite() > 0)
+        return; // bytesWritten() comes again
+    const qint64 queued = driverQueue();
+    if (queued == 0) {
+        Q_EMIT allSent();
+        return;
+    }
+    // The driver sends at the baud rate: look again when it should be done.
+    const qint64 bitsPerChar = 1 + m_settings.dataBits + m_settings.stopBits
+                               + (m_settings.parity == LinkSettings::Parity::None ? 0 : 1);
+    const qint64 ms = queued * bitsPerChar * 1000 / std::max(1, m_settings.baudRate) + 1;
+    m_drainTimer.start(static_cast<int>(std::min<qint64>(ms, 100)));
 }
 
 QByteArray SerialTransport::takePending()

@@ -3,6 +3,7 @@
 #include "transport.h"
 
 #include <QList>
+#include <QTimer>
 
 class QSerialPort;
 
@@ -32,12 +33,19 @@ public:
     void close() override;
     bool isOpen() const override;
     bool write(const QByteArray &bytes) override;
+    qint64 unsentBytes() const override;
     QByteArray takePending() override;
     QString describe() const override;
 
 private:
+    // Bytes the driver still holds for the line (0 where the system does not tell).
+    qint64 driverQueue() const;
+    void checkSent();
+
     LinkSettings m_settings;
     QSerialPort *m_port = nullptr;
+    // Re-checks the driver's queue until the line has sent it (no signal says so).
+    QTimer m_drainTimer{this};
 };
 
 } // namespace Fatek

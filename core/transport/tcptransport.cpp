@@ -35,6 +35,10 @@ void TcpTransport::open()
         m_socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         Q_EMIT opened();
     });
+    connect(m_socket, &QTcpSocket::bytesWritten, this, [this] {
+        if (m_socket->bytesToWrite() == 0)
+            Q_EMIT allSent();
+    });
     connect(m_socket, &QTcpSocket::readyRead, this, [this] {
         const QByteArray bytes = m_socket->readAll();
         if (!bytes.isEmpty())
@@ -66,7 +70,12 @@ void TcpTransport::close()
     m_open = false;
     if (QTcpSocket *socket = std::exchange(m_socket, nullptr)) {
         socket->disconnect(this);
-        socket->abort();
+        // Graceful (FIN after what the kernel holds) once Qt's buffer is empty; what is still in
+        // it here is what the session gave up on, and disconnectFromHost() would wait for it.
+        if (socket->state() == QAbstractSocket::ConnectedState && socket->bytesToWrite() == 0)
+            socket->disconnectFromHost();
+        else
+            socket->abort();
         socket->deleteLater();
     }
 }
@@ -81,6 +90,11 @@ bool TcpTransport::write(const QByteArray &bytes)
     if (!m_open)
         return false;
     return m_socket->write(bytes) == bytes.size();
+}
+
+qint64 TcpTransport::unsentBytes() const
+{
+    return m_socket ? m_socket->bytesToWrite() : 0;
 }
 
 QByteArray TcpTransport::takePending()

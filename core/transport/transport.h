@@ -21,11 +21,15 @@ public:
     static Transport *create(const LinkSettings &settings, QObject *parent = nullptr);
 
     virtual void open() = 0;
-    // Closes without emitting disconnected().
+    // Closes without emitting disconnected(), gracefully (TCP: FIN, not RST). Bytes still unsent
+    // are dropped: the session drains them first (unsentBytes(), allSent()) when it may.
     virtual void close() = 0;
     virtual bool isOpen() const = 0;
     // Queues bytes for sending; false (and nothing sent) if the link is not open.
     virtual bool write(const QByteArray &bytes) = 0;
+    // Bytes write() accepted that have not left this machine yet: Qt's buffer, and on a serial
+    // port the driver's output queue where the system tells. 0 when everything is on the wire.
+    virtual qint64 unsentBytes() const = 0;
     // Reads and returns bytes already received but not yet delivered (stale bytes before a query).
     virtual QByteArray takePending() = 0;
     // "TCP 127.0.0.1:500" for messages.
@@ -35,6 +39,8 @@ Q_SIGNALS:
     void opened();
     void disconnected(const QString &reason);
     void bytesReceived(const QByteArray &bytes);
+    // unsentBytes() fell to 0 (emitted after a write() that could not finish at once).
+    void allSent();
 };
 
 } // namespace Fatek

@@ -70,6 +70,12 @@ bool UdpTransport::write(const QByteArray &bytes)
     return m_socket->write(bytes) == bytes.size();
 }
 
+qint64 UdpTransport::unsentBytes() const
+{
+    // A connected UDP socket is unbuffered: write() hands the datagram to the system at once.
+    return 0;
+}
+
 QByteArray UdpTransport::readDatagrams()
 {
     QByteArray all;

@@ -20,6 +20,7 @@ public:
     void close() override;
     bool isOpen() const override;
     bool write(const QByteArray &bytes) override;
+    qint64 unsentBytes() const override;
     QByteArray takePending() override;
     QString describe() const override;
 

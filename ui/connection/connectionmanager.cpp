@@ -92,7 +92,18 @@ void ConnectionManager::remove(Connection *connection)
     Q_EMIT connectionAboutToBeRemoved(connection);
     m_connections.removeAt(index);
     Q_EMIT connectionRemoved(connection);
-    delete connection;
+    if (connection->session()->pendingWrites() == 0
+        || connection->linkState() == LinkState::Closed) {
+        delete connection;
+        return;
+    }
+    // Writes it accepted leave first (bounded by the session's drain time); the window does not
+    // wait for them.
+    connect(connection, &Connection::linkStateChanged, connection, [connection](LinkState state) {
+        if (state == LinkState::Closed)
+            connection->deleteLater();
+    });
+    connection->close();
 }
 
 void ConnectionManager::setReadOnly(bool readOnly)

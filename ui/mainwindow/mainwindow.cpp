@@ -23,12 +23,15 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QTableView>
 #include <QToolBar>
+
+#include <algorithm>
 
 #if defined(FATEK_HAVE_UITOOLS)                                                                    \
     && __has_include(                                                                              \
@@ -342,8 +345,15 @@ void MainWindow::newConnectionDialog()
 
 void MainWindow::closeCurrentConnection()
 {
-    if (Connection *c = currentConnection())
-        m_manager->remove(c);
+    Connection *c = currentConnection();
+    if (!c)
+        return;
+    if (const int pending = c->session()->pendingWrites(); pending > 0)
+        showStatus(
+            tr("Closing %1: sending %n queued write(s) first (at most %2 s)…", nullptr, pending)
+                .arg(c->name())
+                .arg((c->session()->closeDrainMs() + 999) / 1000));
+    m_manager->remove(c);
 }
 
 void MainWindow::rebuildRecentMenu()
@@ -618,8 +628,72 @@ void MainWindow::showStatus(const QString &text)
     statusBar()->showMessage(text, 10000);
 }
 
+bool MainWindow::settlePendingWritesBeforeQuit()
+{
+    const QList<Connection *> connections = m_manager->connections();
+    int pending = 0;
+    int drainMs = 0;
+    for (Connection *c : connections) {
+        pending += c->session()->pendingWrites();
+        drainMs = std::max(drainMs, c->session()->closeDrainMs());
+    }
+    if (pending == 0)
+        return true;
+    const int seconds = (drainMs + 999) / 1000;
+    QMessageBox box(QMessageBox::Warning, tr("Writes not sent yet"),
+                    tr("%n write(s) to the PLC have not been sent yet.", nullptr, pending),
+                    QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("pendingWritesBox"));
+    box.setInformativeText(tr("Wait for them (at most %n second(s)), or drop them? Dropped writes "
+                              "never reach the PLC.",
+                              nullptr, seconds));
+    QPushButton *wait = box.addButton(tr("&Wait and Quit"), QMessageBox::AcceptRole);
+    wait->setObjectName(QStringLiteral("waitButton"));
+    QPushButton *drop = box.addButton(tr("&Drop and Quit"), QMessageBox::DestructiveRole);
+    drop->setObjectName(QStringLiteral("dropButton"));
+    QPushButton *cancel = box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(wait);
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() == drop) {
+        for (Connection *c : connections)
+            c->session()->close(CloseMode::Discard);
+        return true;
+    }
+    if (box.clickedButton() != wait)
+        return false;
+    // Non-blocking: the links drain while the window stays responsive; it closes when they are
+    // all closed (each bounded by its drain time).
+    m_quitting = true;
+    showStatus(tr("Sending %n queued write(s) before quitting (at most %1 s)…", nullptr, pending)
+                   .arg(seconds));
+    for (Connection *c : connections) {
+        connect(c, &Connection::linkStateChanged, this, [this](LinkState state) {
+            if (state != LinkState::Closed)
+                return;
+            const QList<Connection *> all = m_manager->connections();
+            if (std::all_of(all.begin(), all.end(), [](const Connection *other) {
+                    return other->linkState() == LinkState::Closed;
+                }))
+                close();
+        });
+        c->close();
+    }
+    return false;
+}
+
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    const QList<Connection *> connections = m_manager->connections();
+    const bool quitNow
+        = m_quitting
+              ? std::all_of(connections.begin(), connections.end(),
+                            [](Connection *c) { return c->linkState() == LinkState::Closed; })
+              : settlePendingWritesBeforeQuit();
+    if (!quitNow) {
+        event->ignore();
+        return;
+    }
     stopLogging(); // the log file is complete when the window goes
     QSettings settings;
     settings.setValue(geometryKey, saveGeometry());

@@ -69,6 +69,8 @@ protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
+    // Quitting with writes not sent yet: asks to wait for them or drop them; false: stay open.
+    bool settlePendingWritesBeforeQuit();
     void createActions();
     void createTools();
     void newConnectionDialog();
@@ -108,6 +110,8 @@ private:
     // LANGUAGE METHODS (keep this marker line)
 
     bool m_readOnly;
+    // Quit chosen, links draining their queued writes: the window closes once they are closed.
+    bool m_quitting = false;
     ConnectionManager *m_manager;
     ConnectionsPanel *m_connectionsPanel;
     QTabWidget *m_tabs;

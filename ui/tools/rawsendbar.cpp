@@ -176,8 +176,11 @@ void RawSendBar::send()
     ToolPalette::showMessage(
         m_result, tr("Sent    %1\nwaiting for the answer \u2026").arg(FrameText::toAscii(frame)),
         false);
-    m_requests->sendRaw(*typed, framing,
-                        [this, frame](const SessionResult &r) { onAnswer(frame, r); });
+    // The station a protocol probe asks when auto-detect has not decided yet.
+    RequestOptions options;
+    options.station = m_station;
+    m_requests->sendRaw(
+        *typed, framing, [this, frame](const SessionResult &r) { onAnswer(frame, r); }, options);
 }
 
 void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
