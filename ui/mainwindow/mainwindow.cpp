@@ -589,7 +589,7 @@ void MainWindow::updateLinkStatus()
     }
     const StationStatistics &t = c->statistics().total;
     m_linkStatus->setText(tr("%1: %2 · %3 req/s · %4 errors · RTT %5 ms")
-                              .arg(c->name(), CoreText::linkState(c->linkState()))
+                              .arg(c->name(), c->stateText())
                               .arg(c->requestsPerSecond(), 0, 'f', 1)
                               .arg(c->errorCount())
                               .arg(t.rttMeanMs, 0, 'f', 1));
