@@ -70,8 +70,7 @@ QString Connection::stateText() const
     QStringList numbers;
     for (quint8 s : silent)
         numbers << QString::number(s);
-    return tr("%1, no answer from station %2", nullptr, static_cast<int>(silent.size()))
-        .arg(state, numbers.join(QStringLiteral(", ")));
+    return tr("%1, no answer from station %2").arg(state, numbers.join(QStringLiteral(", ")));
 }
 
 void Connection::open()
