@@ -2238,8 +2238,12 @@ Meaning %4</translation>
             <translation>Unknown format "%1".</translation>
         </message>
         <message>
-            <source>no answer from station %1</source>
-            <translation>no answer from station %1</translation>
+            <source>no answer</source>
+            <translation>no answer</translation>
+        </message>
+        <message>
+            <source>No answer from station %1: check the station number, the PLC's power and the cable.</source>
+            <translation>No answer from station %1: check the station number, the PLC's power and the cable.</translation>
         </message>
         <message>
             <source>Forced: disabled from the ladder, it keeps the value written to it (Tools ▸ Forcing lists and enables forced points).</source>

@@ -2234,8 +2234,12 @@ Meaning %4</source>
             <translation>未知的格式「%1」。</translation>
         </message>
         <message>
-            <source>no answer from station %1</source>
-            <translation>站號 %1 沒有回應</translation>
+            <source>no answer</source>
+            <translation>沒有回應</translation>
+        </message>
+        <message>
+            <source>No answer from station %1: check the station number, the PLC's power and the cable.</source>
+            <translation>站號 %1 沒有回應：請檢查站號、PLC 電源與線路。</translation>
         </message>
         <message>
             <source>Forced: disabled from the ladder, it keeps the value written to it (Tools ▸ Forcing lists and enables forced points).</source>

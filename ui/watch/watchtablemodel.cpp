@@ -426,8 +426,9 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             return spec.swapWords ? tr("%1, words swapped").arg(CoreText::format(spec.format))
                                   : CoreText::format(spec.format);
         case QualityColumn:
+            // Short enough for the column; the station is beside it and in the tooltip.
             if (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
-                return tr("no answer from station %1").arg(spec.station);
+                return tr("no answer");
             return (!have && q != ValueQuality::Error) ? tr("waiting") : qualityName(q);
         case UpdatedColumn: {
             QDateTime latest;
@@ -458,6 +459,10 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         QStringList lines;
         const QString reason = qualityReason(r);
         if (index.column() == ValueColumn || index.column() == QualityColumn) {
+            if (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
+                lines << tr("No answer from station %1: check the station number, the PLC's "
+                            "power and the cable.")
+                             .arg(spec.station);
             if (q != ValueQuality::Good && !reason.isEmpty())
                 lines << tr("%1: %2").arg(qualityName(q), reason);
             else if (!have)
@@ -487,7 +492,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         if (index.column() == ValueColumn && row.forced.value_or(false))
             return m_forcedIcon;
         if (index.column() == QualityColumn) {
-            if (q == ValueQuality::Error)
+            if (q == ValueQuality::Error
+                || (q == ValueQuality::Stale && m_silentStations.contains(spec.station)))
                 return m_errorIcon;
             if (q == ValueQuality::Stale && have)
                 return m_staleIcon;
