@@ -16,10 +16,12 @@
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPointer>
+#include <QScopeGuard>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -151,6 +153,49 @@ private Q_SLOTS:
     {
         m_window.reset();
         m_questions.clear();
+    }
+
+    // Issue 16.5: with every tool open the window still fits a 1366x768 laptop, and 1920x1080 at
+    // 150 % (1280x720 logical), title bar and task bar taken off; also with a 1.5x larger font.
+    void windowFitsALaptop_data()
+    {
+        QTest::addColumn<double>("fontScale");
+        QTest::addColumn<QSize>("screen");
+        QTest::newRow("1366x768") << 1.0 << QSize(1366, 768);
+        QTest::newRow("1920x1080 at 150 %") << 1.0 << QSize(1280, 720);
+        QTest::newRow("larger system font") << 1.5 << QSize(1366, 768);
+    }
+    void windowFitsALaptop()
+    {
+        QFETCH(double, fontScale);
+        QFETCH(QSize, screen);
+        const QFont original = QApplication::font();
+        QFont font = original;
+        font.setPointSizeF(font.pointSizeF() * fontScale);
+        QApplication::setFont(font);
+        const auto restore = qScopeGuard([&original] { QApplication::setFont(original); });
+        m_window = std::make_unique<MainWindow>();
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        for (const char *tool : {"control", "forcing", "console", "trend"})
+            QVERIFY2(m_window->openTool(QString::fromLatin1(tool)), tool);
+        const QSize usable = screen - QSize(0, 70); // title bar and task bar
+        m_window->resize(usable);
+        QTRY_COMPARE(m_window->size(), usable);
+        const QSize minimum = m_window->minimumSizeHint().expandedTo(m_window->minimumSize());
+        qInfo("minimum %dx%d", minimum.width(), minimum.height());
+        QVERIFY2(minimum.width() <= usable.width() && minimum.height() <= usable.height(),
+                 qPrintable(QStringLiteral("%1x%2").arg(minimum.width()).arg(minimum.height())));
+        // Every tool dock is on screen, none squeezed to nothing.
+        for (QDockWidget *dock : m_window->findChildren<QDockWidget *>()) {
+            // A tab behind another tab in the same group is not on screen by design.
+            if (!dock->isVisible()
+                || (dock->visibleRegion().isEmpty()
+                    && !m_window->tabifiedDockWidgets(dock).isEmpty()))
+                continue;
+            QVERIFY2(m_window->rect().contains(dock->geometry()), qPrintable(dock->objectName()));
+            QVERIFY2(dock->width() > 100 && dock->height() > 60, qPrintable(dock->objectName()));
+        }
     }
 
     // Issue 16.1: double-click the sine's value, type 55 at a person's pace while polls come,

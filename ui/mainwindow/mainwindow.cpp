@@ -23,6 +23,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
@@ -234,7 +235,14 @@ void MainWindow::createTools()
                           Qt::DockWidgetArea area) {
         auto *dock = new QDockWidget(title, this);
         dock->setObjectName(name);
-        dock->setWidget(tool);
+        // In a scroll area a tool's own minimum (rows of controls, long status lines) no longer
+        // sets the window's: with every tool open it still fits 1366x768, or 1920x1080 at 150 %.
+        auto *scroll = new QScrollArea(dock);
+        scroll->setObjectName(name + QStringLiteral("Scroll"));
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidget(tool);
+        dock->setWidget(scroll);
         addDockWidget(area, dock);
         m_toolsMenu->addAction(dock->toggleViewAction());
         m_viewMenu->addAction(dock->toggleViewAction());
@@ -301,7 +309,8 @@ QWidget *MainWindow::openTool(const QString &name)
             return nullptr;
         dock->show();
         dock->raise();
-        return dock->widget();
+        auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+        return scroll ? scroll->widget() : dock->widget();
     }
     if (name == QLatin1String("loopback")) {
         for (QAction *action : m_toolsMenu->actions()) {

@@ -41,12 +41,12 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     m_addEdit->setObjectName(QStringLiteral("addressEdit"));
     m_addEdit->setPlaceholderText(tr("Add: R100, R100..R163, X0..X15 — Enter"));
     m_addEdit->setClearButtonEnabled(true);
-    m_addEdit->setMinimumWidth(m_addEdit->fontMetrics().horizontalAdvance(QLatin1Char('M')) * 16);
+    m_addEdit->setMinimumWidth(m_addEdit->fontMetrics().horizontalAdvance(QLatin1Char('M')) * 10);
     auto *addButton = new QPushButton(tr("Add"), this);
 
     m_connectionCombo = new QComboBox(this);
     m_connectionCombo->setObjectName(QStringLiteral("connectionCombo"));
-    m_connectionCombo->setMinimumContentsLength(12);
+    m_connectionCombo->setMinimumContentsLength(8);
     m_connectionCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_connectionCombo->setToolTip(tr("Connection this table polls through"));
 
