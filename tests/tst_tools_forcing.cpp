@@ -7,7 +7,10 @@
 #include "tst_tools_fixture.h"
 
 #include <QItemSelectionModel>
+#include <QListWidget>
 #include <QPushButton>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTest>
 
@@ -30,6 +33,7 @@ private Q_SLOTS:
     void setResetMultiSelect();
     void declinedConfirmationSendsNothing();
     void refusedPointShownInWords();
+    void scanCoversEveryPointOfThePlc();
     void noConnection();
     void operatorModeDisablesForcing();
 
@@ -263,6 +267,46 @@ void TestToolsForcing::refusedPointShownInWords()
     forced->setRanges(QStringLiteral("Y0-R5"));
     forced->scan();
     QVERIFY2(forced->messageText().contains(QStringLiteral("one type")),
+             qPrintable(forced->messageText()));
+}
+
+// Issue 16.3: points beyond the old default ranges (M0-1023, S0-255) are found and enabled, with
+// the mouse, and the view says what it scanned.
+void TestToolsForcing::scanCoversEveryPointOfThePlc()
+{
+    for (const char *a : {"M1500", "M2001", "S900", "X3"})
+        m_rig.plc->setDisabled(addr(a), true);
+    auto *tabs = m_panel->findChild<QTabWidget *>();
+    QVERIFY(tabs);
+    ForcedPointsView *forced = m_panel->forcedPointsView();
+    QTabBar *bar = tabs->tabBar();
+    QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(tabs->indexOf(forced)).center(), 200);
+    QTRY_VERIFY(forced->isVisible());
+    auto *scan = forced->findChild<QPushButton *>(QStringLiteral("scanButton"));
+    auto *enableAll = forced->findChild<QPushButton *>(QStringLiteral("enableAllButton"));
+    QVERIFY(scan && enableAll);
+    QTest::mouseClick(scan, Qt::LeftButton, {}, {}, 200);
+    QTRY_COMPARE_WITH_TIMEOUT(forced->scanCount(), 1, 10000);
+    const QList<Address> expected{addr("X3"), addr("M1500"), addr("M2001"), addr("S900")};
+    QCOMPARE(forced->forcedPoints(), expected);
+    QCOMPARE(forced->findChild<QListWidget *>()->count(), 4);
+    // The sizes come from the PLC's 53 answer (FBs: M0-2001, S0-999).
+    QCOMPARE(forced->scannedText(),
+             QStringLiteral("X0-255, Y0-255, M0-2001, S0-999, T0-255, C0-255"));
+    QVERIFY2(forced->messageText().contains(QStringLiteral("Scanned X0-255, Y0-255, M0-2001, "
+                                                           "S0-999, T0-255, C0-255")),
+             qPrintable(forced->messageText()));
+    QVERIFY2(forced->messageText().contains(QStringLiteral("4 forced points")),
+             qPrintable(forced->messageText()));
+
+    QTRY_VERIFY(enableAll->isEnabled());
+    QTest::mouseClick(enableAll, Qt::LeftButton, {}, {}, 200);
+    QCOMPARE(m_rig.questions.size(), 1);
+    QTRY_COMPARE_WITH_TIMEOUT(forced->scanCount(), 2, 10000);
+    for (const char *a : {"M1500", "M2001", "S900", "X3"})
+        QCOMPARE(m_rig.plc->isDisabled(addr(a)), std::optional<bool>(false));
+    QVERIFY(forced->forcedPoints().isEmpty());
+    QVERIFY2(forced->messageText().contains(QStringLiteral("no forced points")),
              qPrintable(forced->messageText()));
 }
 

@@ -120,13 +120,59 @@ private Q_SLOTS:
         const QList<WatchEntry> entries = model.pollEntries(500);
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         QSignalSpy reset(&model, &QAbstractItemModel::modelReset);
-        model.applyValues(
-            {good(entries.at(0).id, 1), good(entries.at(1).id, 2), good(entries.at(3).id, 4)});
+        // Every signal covers one column and a run of rows; "column,first,last" per signal.
+        const auto ranges = [&changed] {
+            QStringList list;
+            for (const QList<QVariant> &args : std::as_const(changed)) {
+                const QModelIndex first = args.at(0).toModelIndex();
+                const QModelIndex last = args.at(1).toModelIndex();
+                if (first.column() != last.column())
+                    return QStringList{QStringLiteral("several columns")};
+                list << QStringLiteral("%1,%2,%3")
+                            .arg(first.column())
+                            .arg(first.row())
+                            .arg(last.row());
+            }
+            list.sort();
+            changed.clear();
+            return list;
+        };
+        const int value = WatchTableModel::ValueColumn;
+        const int quality = WatchTableModel::QualityColumn;
+        const int updated = WatchTableModel::UpdatedColumn;
+        auto expected = [](std::initializer_list<int> columns, const QStringList &runs) {
+            QStringList list;
+            for (int c : columns) {
+                for (const QString &run : runs)
+                    list << QStringLiteral("%1,%2").arg(c).arg(run);
+            }
+            list.sort();
+            return list;
+        };
+        QDateTime t = QDateTime::currentDateTimeUtc();
+        auto at = [&t](WatchValue v) {
+            v.timestamp = t;
+            return v;
+        };
+        // First values: value, quality ("waiting" ends) and time change, rows 0..1 and row 3.
+        model.applyValues({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 2)),
+                           at(good(entries.at(3).id, 4))});
         QCOMPARE(reset.count(), 0);
-        QCOMPARE(changed.count(), 2); // rows 0..1, row 3
-        QCOMPARE(changed.at(0).at(0).toModelIndex().row(), 0);
-        QCOMPARE(changed.at(0).at(1).toModelIndex().row(), 1);
-        QCOMPARE(changed.at(1).at(0).toModelIndex().row(), 3);
+        QCOMPARE(ranges(), expected({value, quality, updated}, {"0,1", "3,3"}));
+        // The same values later: only the time changes (no format, name or value cell is touched).
+        t = t.addMSecs(500);
+        model.applyValues({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 2)),
+                           at(good(entries.at(3).id, 4))});
+        QCOMPARE(ranges(), expected({updated}, {"0,1", "3,3"}));
+        // One value moves: its value cell and the times.
+        t = t.addMSecs(500);
+        model.applyValues({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 3)),
+                           at(good(entries.at(3).id, 4))});
+        QStringList moved{QStringLiteral("%1,1,1").arg(value),
+                          QStringLiteral("%1,0,1").arg(updated),
+                          QStringLiteral("%1,3,3").arg(updated)};
+        moved.sort();
+        QCOMPARE(ranges(), moved);
     }
 
     void staleKeepsValueWithReason()

@@ -943,10 +943,6 @@
             <translation>Ranges:</translation>
         </message>
         <message>
-            <source>Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999</source>
-            <translation>Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999</translation>
-        </message>
-        <message>
             <source>Scan</source>
             <translation>Scan</translation>
         </message>
@@ -983,18 +979,6 @@
             <translation>Scan incomplete — %1</translation>
         </message>
         <message>
-            <source>No forced points in %1.</source>
-            <translation>No forced points in %1.</translation>
-        </message>
-        <message>
-            <source>1 forced point: enable it before leaving the site.</source>
-            <translation>1 forced point: enable it before leaving the site.</translation>
-        </message>
-        <message>
-            <source>%1 forced points: enable them before leaving the site.</source>
-            <translation>%1 forced points: enable them before leaving the site.</translation>
-        </message>
-        <message>
             <source>%1 on %2?</source>
             <translation>%1 on %2?</translation>
         </message>
@@ -1005,6 +989,38 @@
         <message>
             <source>Enable all cancelled; the points stay forced.</source>
             <translation>Enable all cancelled; the points stay forced.</translation>
+        </message>
+        <message>
+            <source>All points of the PLC</source>
+            <translation>All points of the PLC</translation>
+        </message>
+        <message>
+            <source>Empty: every X Y M S T C point the PLC reports in its status. Or type ranges to scan, e.g. X0-255, Y0-255, M0-999</source>
+            <translation>Empty: every X Y M S T C point the PLC reports in its status. Or type ranges to scan, e.g. X0-255, Y0-255, M0-999</translation>
+        </message>
+        <message>
+            <source>Reading the PLC's sizes …</source>
+            <translation>Reading the PLC's sizes …</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its sizes (%1): default ranges scanned.</source>
+            <translation>The PLC did not report its sizes (%1): default ranges scanned.</translation>
+        </message>
+        <message>
+            <source>The PLC did not report how many %1 it has: default ranges scanned for them.</source>
+            <translation>The PLC did not report how many %1 it has: default ranges scanned for them.</translation>
+        </message>
+        <message>
+            <source>Scanned %1: no forced points.</source>
+            <translation>Scanned %1: no forced points.</translation>
+        </message>
+        <message>
+            <source>Scanned %1: 1 forced point; enable it before leaving the site.</source>
+            <translation>Scanned %1: 1 forced point; enable it before leaving the site.</translation>
+        </message>
+        <message>
+            <source>Scanned %1: %2 forced points; enable them before leaving the site.</source>
+            <translation>Scanned %1: %2 forced points; enable them before leaving the site.</translation>
         </message>
     </context>
     <context>
@@ -2285,6 +2301,18 @@ Meaning %4</translation>
             <source>Unknown format "%1".</source>
             <translation>Unknown format "%1".</translation>
         </message>
+        <message>
+            <source>no answer</source>
+            <translation>no answer</translation>
+        </message>
+        <message>
+            <source>No answer from station %1: check the station number, the PLC's power and the cable.</source>
+            <translation>No answer from station %1: check the station number, the PLC's power and the cable.</translation>
+        </message>
+        <message>
+            <source>Forced: disabled from the ladder, it keeps the value written to it (Tools ▸ Forcing lists and enables forced points).</source>
+            <translation>Forced: disabled from the ladder, it keeps the value written to it (Tools ▸ Forcing lists and enables forced points).</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableWidget</name>
@@ -2472,6 +2500,13 @@ Meaning %4</translation>
         <message>
             <source>code</source>
             <translation>code</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::Connection</name>
+        <message>
+            <source>%1, no answer from station %2</source>
+            <translation>%1, no answer from station %2</translation>
         </message>
     </context>
 </TS>

@@ -942,10 +942,6 @@
             <translation>範圍：</translation>
         </message>
         <message>
-            <source>Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999</source>
-            <translation>要掃描的離散點範圍，例如 X0-255, Y0-255, M0-999</translation>
-        </message>
-        <message>
             <source>Scan</source>
             <translation>掃描</translation>
         </message>
@@ -982,18 +978,6 @@
             <translation>掃描未完成 — %1</translation>
         </message>
         <message>
-            <source>No forced points in %1.</source>
-            <translation>%1 中沒有強制中的點。</translation>
-        </message>
-        <message>
-            <source>1 forced point: enable it before leaving the site.</source>
-            <translation>有 1 個強制中的點：離開現場前請將它啟用。</translation>
-        </message>
-        <message>
-            <source>%1 forced points: enable them before leaving the site.</source>
-            <translation>有 %1 個強制中的點：離開現場前請將它們啟用。</translation>
-        </message>
-        <message>
             <source>%1 on %2?</source>
             <translation>要對 %2 執行「%1」嗎？</translation>
         </message>
@@ -1004,6 +988,38 @@
         <message>
             <source>Enable all cancelled; the points stay forced.</source>
             <translation>已取消全部啟用；這些點仍維持強制。</translation>
+        </message>
+        <message>
+            <source>All points of the PLC</source>
+            <translation>PLC 的所有點</translation>
+        </message>
+        <message>
+            <source>Empty: every X Y M S T C point the PLC reports in its status. Or type ranges to scan, e.g. X0-255, Y0-255, M0-999</source>
+            <translation>留空：掃描 PLC 在其狀態中回報的每個 X Y M S T C 點。或輸入要掃描的範圍，例如 X0-255, Y0-255, M0-999</translation>
+        </message>
+        <message>
+            <source>Reading the PLC's sizes …</source>
+            <translation>正在讀取 PLC 的點數 …</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its sizes (%1): default ranges scanned.</source>
+            <translation>PLC 沒有回報點數（%1）：已掃描預設範圍。</translation>
+        </message>
+        <message>
+            <source>The PLC did not report how many %1 it has: default ranges scanned for them.</source>
+            <translation>PLC 沒有回報 %1 的點數：這些已掃描預設範圍。</translation>
+        </message>
+        <message>
+            <source>Scanned %1: no forced points.</source>
+            <translation>已掃描 %1：沒有強制中的點。</translation>
+        </message>
+        <message>
+            <source>Scanned %1: 1 forced point; enable it before leaving the site.</source>
+            <translation>已掃描 %1：有 1 個強制中的點；離開現場前請將它啟用。</translation>
+        </message>
+        <message>
+            <source>Scanned %1: %2 forced points; enable them before leaving the site.</source>
+            <translation>已掃描 %1：有 %2 個強制中的點；離開現場前請將它們啟用。</translation>
         </message>
     </context>
     <context>
@@ -2277,6 +2293,18 @@ Meaning %4</source>
             <source>Unknown format "%1".</source>
             <translation>未知的格式「%1」。</translation>
         </message>
+        <message>
+            <source>no answer</source>
+            <translation>沒有回應</translation>
+        </message>
+        <message>
+            <source>No answer from station %1: check the station number, the PLC's power and the cable.</source>
+            <translation>站號 %1 沒有回應：請檢查站號、PLC 電源與線路。</translation>
+        </message>
+        <message>
+            <source>Forced: disabled from the ladder, it keeps the value written to it (Tools ▸ Forcing lists and enables forced points).</source>
+            <translation>強制中：已脫離階梯圖控制，保持寫入的值（工具 ▸ 強制 可列出並啟用強制中的點）。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableWidget</name>
@@ -2462,6 +2490,13 @@ Meaning %4</source>
         <message>
             <source>code</source>
             <translation>代碼</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::Connection</name>
+        <message>
+            <source>%1, no answer from station %2</source>
+            <translation>%1，站號 %2 沒有回應</translation>
         </message>
     </context>
 </TS>

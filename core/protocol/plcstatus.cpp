@@ -58,6 +58,19 @@ DetailStatus DetailStatus::decode(std::span<const std::uint8_t> b)
     return d;
 }
 
+std::optional<std::uint16_t> DetailStatus::discreteCount(ElementType type) const
+{
+    switch (type) {
+    case ElementType::X: return discreteInputs;
+    case ElementType::Y: return discreteOutputs;
+    case ElementType::M: return mRelays;
+    case ElementType::S: return sRelays;
+    case ElementType::T: return timers;
+    case ElementType::C: return counters;
+    default: return std::nullopt;
+    }
+}
+
 std::string DetailStatus::summary() const
 {
     std::string s;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "element.h"
+
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -39,6 +41,9 @@ struct DetailStatus
         counters;
 
     static DetailStatus decode(std::span<const std::uint8_t> statusBytes);
+    // How many points of a discrete kind (X Y M S T C) the PLC reports, numbered from 0; nothing
+    // when the answer is too short to say or the kind is not a discrete.
+    std::optional<std::uint16_t> discreteCount(ElementType type) const;
     // "FBs-MC, 28 points, OS V3.1, program 13184 words" as far as known.
     std::string summary() const;
 };

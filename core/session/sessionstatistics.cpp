@@ -38,7 +38,8 @@ bool StationStatistics::operator==(const StationStatistics &other) const
     return requests == other.requests && answers == other.answers && timeouts == other.timeouts
            && checksumErrors == other.checksumErrors && plcErrors == other.plcErrors
            && frameErrors == other.frameErrors && retries == other.retries
-           && bytesOut == other.bytesOut && bytesIn == other.bytesIn && rttLastMs == other.rttLastMs
+           && unanswered == other.unanswered && bytesOut == other.bytesOut
+           && bytesIn == other.bytesIn && rttLastMs == other.rttLastMs
            && rttMeanMs == other.rttMeanMs;
 }
 

@@ -19,6 +19,9 @@ struct StationStatistics
     quint64 plcErrors = 0;      // answers carrying a non-zero PLC error code
     quint64 frameErrors = 0;    // answer frames rejected for broken framing or content
     quint64 retries = 0;        // attempts beyond the first
+    // Requests in a row that got no answer at all (every attempt timed out); 0 again at the next
+    // answer. Non-zero: the station is silent (wrong station number, PLC off, cable).
+    quint64 unanswered = 0;
     quint64 bytesOut = 0;
     quint64 bytesIn = 0;
     double rttLastMs = 0; // query written -> answer complete, last good answer

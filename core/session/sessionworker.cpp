@@ -732,6 +732,7 @@ void SessionWorker::onBytes(const QByteArray &bytes)
         const bool malformed = !decoded && !plcError;
         countForStation(station, [rtt, plcError, malformed](StationStatistics &s) {
             ++s.answers;
+            s.unanswered = 0;
             s.addRoundTrip(rtt);
             if (plcError)
                 ++s.plcErrors;
@@ -863,6 +864,9 @@ void SessionWorker::finishCurrent(SessionResult result)
     result.setAttempts(job.attempts);
     if (!job.probe)
         countForStation(stationOf(job), [](StationStatistics &s) { ++s.requests; });
+    // Probes count too: with auto-detect a silent station never gets past them.
+    if (!job.raw && !result.ok() && result.errorKind() == ErrorKind::Timeout)
+        countForStation(stationOf(job), [](StationStatistics &s) { ++s.unanswered; });
     publishStatistics(); // before the result, so statistics() already counts it
     deliver(job, std::move(result));
     schedulePump();

@@ -1,5 +1,7 @@
 #include "connection.h"
 
+#include "coretext.h"
+
 namespace Fatek {
 
 Connection::Connection(const SavedConnection &saved, QObject *parent)
@@ -45,6 +47,30 @@ quint64 Connection::errorCount() const
 {
     const StationStatistics &t = m_statistics.total;
     return t.timeouts + t.checksumErrors + t.plcErrors;
+}
+
+QList<quint8> Connection::silentStations() const
+{
+    QList<quint8> silent;
+    if (m_state != LinkState::Connected)
+        return silent; // a link that is down says so itself
+    for (auto it = m_statistics.stations.cbegin(); it != m_statistics.stations.cend(); ++it) {
+        if (it.value().unanswered > 0 && it.key() != 0)
+            silent << it.key();
+    }
+    return silent;
+}
+
+QString Connection::stateText() const
+{
+    const QString state = CoreText::linkState(m_state);
+    const QList<quint8> silent = silentStations();
+    if (silent.isEmpty())
+        return state;
+    QStringList numbers;
+    for (quint8 s : silent)
+        numbers << QString::number(s);
+    return tr("%1, no answer from station %2").arg(state, numbers.join(QStringLiteral(", ")));
 }
 
 void Connection::open()

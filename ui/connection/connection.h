@@ -34,6 +34,10 @@ public:
     double requestsPerSecond() const { return m_rate; }
     // Timeouts, checksum errors and PLC error answers.
     quint64 errorCount() const;
+    // While the link is up: stations whose last request got no answer at all (ascending).
+    QList<quint8> silentStations() const;
+    // "connected", or "connected, no answer from station 5" when a station is silent.
+    QString stateText() const;
 
     void open();
     void close();

@@ -8,6 +8,7 @@ namespace Fatek {
 ConnectionListModel::ConnectionListModel(ConnectionManager *manager, QObject *parent)
     : QAbstractTableModel(parent)
     , m_manager(manager)
+    , m_silentIcon(QStringLiteral(":/icons/error.svg"))
 {
     // The manager signals before/after; rows map 1:1 to manager->connections().
     connect(manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
@@ -53,7 +54,7 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         case NameColumn: return c->name();
         case LinkColumn: return CoreText::settings(c->settings());
         case StationColumn: return c->station();
-        case StateColumn: return CoreText::linkState(c->linkState());
+        case StateColumn: return c->stateText();
         case RateColumn: return QString::number(c->requestsPerSecond(), 'f', 1);
         case ErrorsColumn: return QString::number(c->errorCount());
         case RttColumn:
@@ -95,6 +96,10 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         }
         }
     }
+    // A silent station is a fault, not a healthy link: it gets the error mark of the tables.
+    if (role == Qt::DecorationRole && index.column() == StateColumn
+        && !c->silentStations().isEmpty())
+        return m_silentIcon;
     if (role == Qt::TextAlignmentRole && index.column() >= StationColumn
         && index.column() != StateColumn)
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QAbstractTableModel>
+#include <QIcon>
 
 namespace Fatek {
 
@@ -38,6 +39,7 @@ public:
 
 private:
     ConnectionManager *m_manager;
+    QIcon m_silentIcon; // loaded once, not per paint
 };
 
 } // namespace Fatek

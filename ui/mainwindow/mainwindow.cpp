@@ -24,6 +24,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
@@ -237,7 +238,14 @@ void MainWindow::createTools()
                           Qt::DockWidgetArea area) {
         auto *dock = new QDockWidget(title, this);
         dock->setObjectName(name);
-        dock->setWidget(tool);
+        // In a scroll area a tool's own minimum (rows of controls, long status lines) no longer
+        // sets the window's: with every tool open it still fits 1366x768, or 1920x1080 at 150 %.
+        auto *scroll = new QScrollArea(dock);
+        scroll->setObjectName(name + QStringLiteral("Scroll"));
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidget(tool);
+        dock->setWidget(scroll);
         addDockWidget(area, dock);
         m_toolsMenu->addAction(dock->toggleViewAction());
         m_viewMenu->addAction(dock->toggleViewAction());
@@ -304,7 +312,8 @@ QWidget *MainWindow::openTool(const QString &name)
             return nullptr;
         dock->show();
         dock->raise();
-        return dock->widget();
+        auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+        return scroll ? scroll->widget() : dock->widget();
     }
     if (name == QLatin1String("loopback")) {
         for (QAction *action : m_toolsMenu->actions()) {
@@ -599,7 +608,7 @@ void MainWindow::updateLinkStatus()
     }
     const StationStatistics &t = c->statistics().total;
     m_linkStatus->setText(tr("%1: %2 · %3 req/s · %4 errors · RTT %5 ms")
-                              .arg(c->name(), CoreText::linkState(c->linkState()))
+                              .arg(c->name(), c->stateText())
                               .arg(c->requestsPerSecond(), 0, 'f', 1)
                               .arg(c->errorCount())
                               .arg(t.rttMeanMs, 0, 'f', 1));

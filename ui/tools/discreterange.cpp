@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 
+#include <algorithm>
+
 namespace Fatek {
 
 QString DiscreteRange::toString() const
@@ -99,6 +101,40 @@ Result<QList<DiscreteRange>> DiscreteRange::parseList(const QString &text)
         if (!r)
             return r.error();
         ranges << *r;
+    }
+    return ranges;
+}
+
+QString DiscreteRange::listText(const QList<DiscreteRange> &ranges)
+{
+    QStringList parts;
+    for (const DiscreteRange &r : ranges)
+        parts << r.toString();
+    return parts.join(QStringLiteral(", "));
+}
+
+QList<DiscreteRange> DiscreteRange::defaults()
+{
+    return {{{ElementType::X, 0}, 256}, {{ElementType::Y, 0}, 256}, {{ElementType::M, 0}, 1024},
+            {{ElementType::S, 0}, 256}, {{ElementType::T, 0}, 256}, {{ElementType::C, 0}, 256}};
+}
+
+QList<DiscreteRange> DiscreteRange::wholePlc(const DetailStatus &status,
+                                             QList<ElementType> *unreported)
+{
+    QList<DiscreteRange> ranges;
+    for (const DiscreteRange &fallback : defaults()) {
+        const ElementType type = fallback.start.type;
+        const std::optional<std::uint16_t> count = status.discreteCount(type);
+        if (!count) {
+            if (unreported)
+                *unreported << type;
+            ranges << fallback;
+        } else if (*count > 0) {
+            // Never beyond what the protocol can address, whatever a PLC reports.
+            const quint32 max = elementInfo(type).maxNumber + 1;
+            ranges << DiscreteRange{{type, 0}, std::min<quint32>(*count, max)};
+        }
     }
     return ranges;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "address.h"
+#include "plcstatus.h"
 
 #include <QList>
 #include <QString>
@@ -21,6 +22,15 @@ struct DiscreteRange
     static Result<DiscreteRange> parse(const QString &text);
     // Several, separated by commas, semicolons or spaces: "X0-255, Y0-255 M0-999".
     static Result<QList<DiscreteRange>> parseList(const QString &text);
+    // "X0-255, Y0-255, M0-2001" for a list.
+    static QString listText(const QList<DiscreteRange> &ranges);
+
+    // What a scan covers when the PLC's sizes are unknown: X/Y 0-255, M 0-1023, S/T/C 0-255.
+    static QList<DiscreteRange> defaults();
+    // Every X Y M S T C point the PLC has, from the sizes of its detail status (53). Kinds whose
+    // size the answer does not carry keep their default range and are listed in `unreported`.
+    static QList<DiscreteRange> wholePlc(const DetailStatus &status,
+                                         QList<ElementType> *unreported = nullptr);
 };
 
 } // namespace Fatek

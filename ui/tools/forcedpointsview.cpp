@@ -3,6 +3,8 @@
 #include "coretext.h"
 #include "discretecontrolbatch.h"
 #include "discreterange.h"
+#include "element.h"
+#include "plcstatus.h"
 #include "requesttracker.h"
 #include "session.h"
 #include "toolpalette.h"
@@ -26,10 +28,12 @@ ForcedPointsView::ForcedPointsView(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     auto *row = new QHBoxLayout;
     row->addWidget(new QLabel(tr("Ranges:"), this));
-    m_ranges
-        = new QLineEdit(QStringLiteral("X0-255, Y0-255, M0-1023, S0-255, T0-255, C0-255"), this);
+    m_ranges = new QLineEdit(this);
     m_ranges->setObjectName(QStringLiteral("forcedRanges"));
-    m_ranges->setToolTip(tr("Discrete ranges to scan, e.g. X0-255, Y0-255, M0-999"));
+    m_ranges->setClearButtonEnabled(true);
+    m_ranges->setPlaceholderText(tr("All points of the PLC"));
+    m_ranges->setToolTip(tr("Empty: every X Y M S T C point the PLC reports in its status. Or "
+                            "type ranges to scan, e.g. X0-255, Y0-255, M0-999"));
     row->addWidget(m_ranges, 1);
     m_scanButton = new QPushButton(tr("Scan"), this);
     m_scanButton->setObjectName(QStringLiteral("scanButton"));
@@ -69,6 +73,9 @@ void ForcedPointsView::setTarget(Session *session, quint8 station, const QString
     m_scans = 0;
     m_prefix.clear();
     m_prefixIsError = false;
+    m_scanned.clear();
+    m_plcRanges.reset();
+    m_plcNote.clear();
     m_forced.clear();
     showList();
     ToolPalette::showMessage(
@@ -102,14 +109,57 @@ void ForcedPointsView::scan()
 {
     if (!m_session || m_scanning || m_enabling)
         return;
-    const Result<QList<DiscreteRange>> ranges = DiscreteRange::parseList(m_ranges->text());
-    if (!ranges) {
-        ToolPalette::showMessage(m_message, QString::fromStdString(ranges.error().message), true);
+    if (!m_ranges->text().trimmed().isEmpty()) {
+        const Result<QList<DiscreteRange>> ranges = DiscreteRange::parseList(m_ranges->text());
+        if (!ranges) {
+            ToolPalette::showMessage(m_message, QString::fromStdString(ranges.error().message),
+                                     true);
+            return;
+        }
+        scanRanges(*ranges, {});
         return;
     }
+    if (m_plcRanges) {
+        scanRanges(*m_plcRanges, m_plcNote);
+        return;
+    }
+    // Every point the PLC has: its detail status (53) says how many of each kind.
+    const quint64 generation = ++m_generation;
+    m_scanning = true;
+    ToolPalette::showMessage(m_message, tr("Reading the PLC's sizes \u2026"), false);
+    updateEnabled();
+    m_requests->submit(Request::detailStatus(m_station), [this,
+                                                          generation](const SessionResult &result) {
+        if (generation != m_generation)
+            return;
+        m_scanning = false;
+        if (!result.ok()) {
+            // Not remembered: the next scan asks again.
+            scanRanges(DiscreteRange::defaults(),
+                       tr("The PLC did not report its sizes (%1): default ranges scanned.")
+                           .arg(CoreText::message(result.errorText())));
+            return;
+        }
+        QList<ElementType> unreported;
+        m_plcRanges
+            = DiscreteRange::wholePlc(DetailStatus::decode(result.response().data), &unreported);
+        QStringList kinds;
+        for (ElementType t : std::as_const(unreported))
+            kinds << QString::fromUtf8(elementInfo(t).symbol.data(),
+                                       static_cast<qsizetype>(elementInfo(t).symbol.size()));
+        m_plcNote = kinds.isEmpty() ? QString()
+                                    : tr("The PLC did not report how many %1 it has: default "
+                                         "ranges scanned for them.")
+                                          .arg(kinds.join(QStringLiteral(", ")));
+        scanRanges(*m_plcRanges, m_plcNote);
+    });
+}
+
+void ForcedPointsView::scanRanges(const QList<DiscreteRange> &ranges, const QString &note)
+{
     // One 43 per 256 points.
     QList<DiscreteRange> chunks;
-    for (const DiscreteRange &r : *ranges) {
+    for (const DiscreteRange &r : ranges) {
         for (quint32 done = 0; done < r.count; done += Limits::maxDiscretes)
             chunks << DiscreteRange{r.start.advanced(done),
                                     std::min<quint32>(Limits::maxDiscretes, r.count - done)};
@@ -122,13 +172,14 @@ void ForcedPointsView::scan()
     };
     auto state = std::make_shared<ScanState>(ScanState{chunks.size(), {}, {}});
     const quint64 generation = ++m_generation;
+    const QString scanned = DiscreteRange::listText(ranges);
     m_scanning = true;
-    ToolPalette::showMessage(m_message, tr("Scanning %1 \u2026").arg(m_ranges->text()), false);
+    ToolPalette::showMessage(m_message, tr("Scanning %1 \u2026").arg(scanned), false);
     updateEnabled();
     for (const DiscreteRange &chunk : chunks) {
         m_requests->submit(
             Request::readEnableFlags(m_station, chunk.start, chunk.count),
-            [this, state, chunk, generation](const SessionResult &result) {
+            [this, state, chunk, generation, scanned, note](const SessionResult &result) {
                 if (generation != m_generation)
                     return;
                 if (!result.ok()) {
@@ -145,18 +196,23 @@ void ForcedPointsView::scan()
                     return;
                 m_scanning = false;
                 ++m_scans;
+                m_scanned = scanned;
                 m_forced = state->forced;
                 std::sort(m_forced.begin(), m_forced.end());
                 showList();
-                const QString text
+                QString text
                     = !state->errors.isEmpty() ? tr("Scan incomplete \u2014 %1")
                                                      .arg(state->errors.join(QStringLiteral("; ")))
-                      : m_forced.isEmpty()
-                          ? tr("No forced points in %1.").arg(m_ranges->text())
-                          : (m_forced.size() == 1
-                                 ? tr("1 forced point: enable it before leaving the site.")
-                                 : tr("%1 forced points: enable them before leaving the site.")
-                                       .arg(m_forced.size()));
+                      : m_forced.isEmpty() ? tr("Scanned %1: no forced points.").arg(scanned)
+                      : m_forced.size() == 1
+                          ? tr("Scanned %1: 1 forced point; enable it before leaving the site.")
+                                .arg(scanned)
+                          : tr("Scanned %1: %2 forced points; enable them before leaving the "
+                               "site.")
+                                .arg(scanned)
+                                .arg(m_forced.size());
+                if (!note.isEmpty())
+                    text += QLatin1Char(' ') + note;
                 // Keep the outcome of an Enable all visible in front of the new list.
                 ToolPalette::showMessage(m_message, (m_prefix + QLatin1Char(' ') + text).trimmed(),
                                          m_prefixIsError || !state->errors.isEmpty());

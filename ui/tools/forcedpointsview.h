@@ -1,10 +1,13 @@
 #pragma once
 
 #include "address.h"
+#include "discreterange.h"
 #include "toolconfirmation.h"
 
 #include <QPointer>
 #include <QWidget>
+
+#include <optional>
 
 class QLabel;
 class QLineEdit;
@@ -16,8 +19,9 @@ namespace Fatek {
 class RequestTracker;
 class Session;
 
-// Scans chosen ranges with 43 and lists every disabled (forced) point, with a confirmed
-// "Enable all" so nothing stays forced when the engineer leaves the site.
+// Scans with 43 and lists every disabled (forced) point, with a confirmed "Enable all" so nothing
+// stays forced when the engineer leaves the site. With no ranges typed it scans every discrete the
+// PLC has (sizes from its detail status, 53), and it always says what it scanned.
 class ForcedPointsView : public QWidget
 {
     Q_OBJECT
@@ -34,6 +38,8 @@ public:
     // Completed scans since the target was set (tests wait for the next one).
     int scanCount() const { return m_scans; }
     QString messageText() const;
+    // The ranges the last scan covered, "X0-255, Y0-255, M0-2001, ...".
+    QString scannedText() const { return m_scanned; }
 
 public Q_SLOTS:
     void scan();
@@ -44,6 +50,7 @@ Q_SIGNALS:
     void pointsChanged();
 
 private:
+    void scanRanges(const QList<DiscreteRange> &ranges, const QString &note);
     void showList();
     void updateEnabled();
 
@@ -56,6 +63,9 @@ private:
     bool m_scanning = false;
     bool m_enabling = false;
     int m_scans = 0;
+    QString m_scanned;
+    std::optional<QList<DiscreteRange>> m_plcRanges; // every point of the target, once known
+    QString m_plcNote;                               // what of it is a guess
     QString m_prefix; // outcome of the last Enable all, shown with the next scan result
     bool m_prefixIsError = false;
     quint64 m_generation = 0; // answers of an older scan are ignored

@@ -19,11 +19,12 @@ void RequestTracker::setSession(Session *session)
         m_connection = connect(session, &Session::finished, this, &RequestTracker::onFinished);
 }
 
-quint64 RequestTracker::submit(const Request &request, Callback callback, RequestOptions options)
+quint64 RequestTracker::submit(const Request &request, Callback callback, RequestOptions options,
+                               Priority priority)
 {
     if (!m_session)
         return 0;
-    const quint64 id = m_session->submit(request, Priority::User, options);
+    const quint64 id = m_session->submit(request, priority, options);
     m_pending.insert(id, std::move(callback));
     return id;
 }

@@ -27,7 +27,8 @@ public:
     Session *session() const { return m_session.data(); }
 
     // Returns the request id, or 0 when there is no session (the callback is then not called).
-    quint64 submit(const Request &request, Callback callback, RequestOptions options = {});
+    quint64 submit(const Request &request, Callback callback, RequestOptions options = {},
+                   Priority priority = Priority::User);
     quint64 sendRaw(const QByteArray &bytes, bool addFraming, Callback callback,
                     RequestOptions options = {});
     // Forgets the callbacks of the requests still pending (their answers are ignored).

@@ -16,11 +16,24 @@ QWidget *WatchDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem
     auto *combo = new QComboBox(parent);
     for (DisplayFormat f : model->availableFormats(index.row()))
         combo->addItem(CoreText::format(f), static_cast<int>(f));
+    // A pick (mouse or keyboard) is the whole edit: apply it now rather than when focus leaves.
+    auto *self = const_cast<WatchDelegate *>(this);
+    connect(combo, &QComboBox::activated, self, [self, combo] {
+        Q_EMIT self->commitData(combo);
+        Q_EMIT self->closeEditor(combo);
+    });
     return combo;
 }
 
 void WatchDelegate::setEditorData(QWidget *editor, const QModelIndex &index) const
 {
+    // The view calls this again for every dataChanged over an open editor, and polls change the
+    // row several times a second: only the first call fills it, later ones would overwrite what
+    // the user is typing or choosing.
+    static constexpr char filled[] = "fatekEditorFilled";
+    if (editor->property(filled).toBool())
+        return;
+    editor->setProperty(filled, true);
     if (auto *combo = qobject_cast<QComboBox *>(editor)) {
         const int i = combo->findData(index.data(Qt::EditRole).toInt());
         combo->setCurrentIndex(std::max(0, i));

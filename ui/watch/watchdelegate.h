@@ -4,8 +4,9 @@
 
 namespace Fatek {
 
-// Format column: a combo with the formats that fit the row's element; other columns: default
-// editors.
+// Format column: a combo with the formats that fit the row's element, applied as soon as one is
+// picked; other columns: default editors. An open editor is filled once and never refreshed by
+// later model changes (polls).
 class WatchDelegate : public QStyledItemDelegate
 {
     Q_OBJECT

@@ -42,6 +42,7 @@ WatchTableModel::WatchTableModel(QObject *parent)
     , m_goodIcon(QStringLiteral(":/icons/good.svg"))
     , m_staleIcon(QStringLiteral(":/icons/stale.svg"))
     , m_errorIcon(QStringLiteral(":/icons/error.svg"))
+    , m_forcedIcon(QStringLiteral(":/icons/forced.svg"))
 {
     m_clock.start();
     m_flashTimer.setInterval(100);
@@ -248,8 +249,11 @@ QList<WatchEntry> WatchTableModel::pollEntries(int intervalMs) const
 
 void WatchTableModel::applyValues(const QList<WatchValue> &values)
 {
-    std::vector<int> touched;
-    std::vector<int> flashed;
+    // Only the cells that really change are reported: an open editor (name, format, a value being
+    // typed) must not be disturbed, and unchanged cells need no repaint.
+    std::vector<int> valueRows;
+    std::vector<int> qualityRows;
+    std::vector<int> updatedRows;
     const qint64 now = m_clock.elapsed();
     QHash<int, std::uint64_t> before;
     for (const WatchValue &v : values) {
@@ -261,44 +265,106 @@ void WatchTableModel::applyValues(const QList<WatchValue> &values)
         if (!before.contains(r))
             before.insert(r, received(row) ? combine(row) : ~std::uint64_t(0));
         Part &part = row.parts[static_cast<std::size_t>(it->second)];
+        const bool good = v.quality == ValueQuality::Good;
+        const bool qualityChanged = part.quality != v.quality || part.error != v.error;
+        const bool valueChanged = good && (!part.received || part.value != v.value);
+        const bool updatedChanged = good && part.timestamp != v.timestamp;
+        if (qualityChanged || (good && !part.received))
+            qualityRows.push_back(r); // "waiting" becomes a quality with the first value
+        if (qualityChanged || valueChanged)
+            valueRows.push_back(r); // the value's font, colour and tooltip follow the quality
+        if (updatedChanged)
+            updatedRows.push_back(r);
         part.quality = v.quality;
         part.error = v.error;
-        if (v.quality == ValueQuality::Good) {
+        if (good) {
             part.value = v.value;
             part.timestamp = v.timestamp;
             part.received = true;
         }
-        touched.push_back(r);
     }
+    bool flashed = false;
     for (auto it = before.cbegin(); it != before.cend(); ++it) {
         Row &row = m_rows[it.key()];
         if (received(row) && combine(row) != it.value()) {
             row.flashUntil = now + flashMs;
-            flashed.push_back(it.key());
+            flashed = true;
         }
     }
-    if (!flashed.empty() && !m_flashTimer.isActive())
+    if (flashed && !m_flashTimer.isActive())
         m_flashTimer.start();
-    emitRowsChanged(std::move(touched), ValueColumn, UpdatedColumn);
+    emitRowsChanged(std::move(valueRows), ValueColumn, ValueColumn);
+    emitRowsChanged(std::move(qualityRows), QualityColumn, QualityColumn);
+    emitRowsChanged(std::move(updatedRows), UpdatedColumn, UpdatedColumn);
 }
 
 void WatchTableModel::markAllStale(const QString &reason)
 {
     std::vector<int> touched;
     for (int r = 0; r < m_rows.size(); ++r) {
+        bool changed = false;
         for (Part &p : m_rows[r].parts) {
+            changed = changed || p.quality != ValueQuality::Stale || p.error != reason;
             p.quality = ValueQuality::Stale;
             p.error = reason;
         }
-        touched.push_back(r);
+        if (changed)
+            touched.push_back(r);
     }
-    emitRowsChanged(std::move(touched), ValueColumn, UpdatedColumn);
+    emitRowsChanged(touched, ValueColumn, ValueColumn);
+    emitRowsChanged(std::move(touched), QualityColumn, QualityColumn);
 }
 
 void WatchTableModel::setWriteOutcome(int row, const QString &text)
 {
     m_rows[row].writeOutcome = text;
     Q_EMIT dataChanged(index(row, ValueColumn), index(row, ValueColumn), {Qt::ToolTipRole});
+}
+
+void WatchTableModel::setForcedFlags(quint8 station, const Address &start,
+                                     const std::vector<std::uint32_t> &flags)
+{
+    std::vector<int> changed;
+    for (int r = 0; r < m_rows.size(); ++r) {
+        Row &row = m_rows[r];
+        const Address &a = row.spec.address;
+        if (row.spec.station != station || a.type != start.type || a.number < start.number
+            || a.number - start.number >= flags.size())
+            continue;
+        const bool forced = flags[a.number - start.number] != 0;
+        if (row.forced != forced) {
+            row.forced = forced;
+            changed.push_back(r);
+        }
+    }
+    emitRowsChanged(std::move(changed), ValueColumn, ValueColumn);
+}
+
+void WatchTableModel::clearForced()
+{
+    std::vector<int> changed;
+    for (int r = 0; r < m_rows.size(); ++r) {
+        if (m_rows[r].forced) {
+            m_rows[r].forced.reset();
+            changed.push_back(r);
+        }
+    }
+    emitRowsChanged(std::move(changed), ValueColumn, ValueColumn);
+}
+
+void WatchTableModel::setSilentStations(const QList<quint8> &stations)
+{
+    if (stations == m_silentStations)
+        return;
+    // Rows of a station that fell silent or answers again change their quality text.
+    std::vector<int> changed;
+    for (int r = 0; r < m_rows.size(); ++r) {
+        const quint8 s = m_rows.at(r).spec.station;
+        if (stations.contains(s) != m_silentStations.contains(s))
+            changed.push_back(r);
+    }
+    m_silentStations = stations;
+    emitRowsChanged(std::move(changed), QualityColumn, QualityColumn);
 }
 
 void WatchTableModel::emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn)
@@ -360,6 +426,9 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             return spec.swapWords ? tr("%1, words swapped").arg(CoreText::format(spec.format))
                                   : CoreText::format(spec.format);
         case QualityColumn:
+            // Short enough for the column; the station is beside it and in the tooltip.
+            if (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
+                return tr("no answer");
             return (!have && q != ValueQuality::Error) ? tr("waiting") : qualityName(q);
         case UpdatedColumn: {
             QDateTime latest;
@@ -390,12 +459,19 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         QStringList lines;
         const QString reason = qualityReason(r);
         if (index.column() == ValueColumn || index.column() == QualityColumn) {
+            if (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
+                lines << tr("No answer from station %1: check the station number, the PLC's "
+                            "power and the cable.")
+                             .arg(spec.station);
             if (q != ValueQuality::Good && !reason.isEmpty())
                 lines << tr("%1: %2").arg(qualityName(q), reason);
             else if (!have)
                 lines << tr("No value yet");
             if (!row.writeOutcome.isEmpty())
                 lines << row.writeOutcome;
+            if (index.column() == ValueColumn && row.forced.value_or(false))
+                lines << tr("Forced: disabled from the ladder, it keeps the value written to it "
+                            "(Tools \u25b8 Forcing lists and enables forced points).");
             if (index.column() == ValueColumn)
                 lines << (discrete ? tr("Click the box to toggle")
                                    : tr("Double-click or F2 to write"));
@@ -413,8 +489,11 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
     }
     case Qt::DecorationRole:
+        if (index.column() == ValueColumn && row.forced.value_or(false))
+            return m_forcedIcon;
         if (index.column() == QualityColumn) {
-            if (q == ValueQuality::Error)
+            if (q == ValueQuality::Error
+                || (q == ValueQuality::Stale && m_silentStations.contains(spec.station)))
                 return m_errorIcon;
             if (q == ValueQuality::Stale && have)
                 return m_staleIcon;

@@ -9,6 +9,7 @@
 #include <QIcon>
 #include <QTimer>
 
+#include <optional>
 #include <vector>
 
 namespace Fatek {
@@ -76,6 +77,18 @@ public:
     int rowOfKey(quint64 key) const;
     void setWriteOutcome(int row, const QString &text);
 
+    // Forcing: whether a discrete row is disabled from the ladder (43 flags); nothing for
+    // registers and before the first read.
+    std::optional<bool> isForced(int row) const { return m_rows.at(row).forced; }
+    // Flags of `flags.size()` points from `start` on `station`, as 43 answered them.
+    void setForcedFlags(quint8 station, const Address &start,
+                        const std::vector<std::uint32_t> &flags);
+    void clearForced();
+
+    // Stations that answer nothing at present (every attempt of their last request timed out):
+    // their rows say "no answer from station N" instead of "waiting" or "stale".
+    void setSilentStations(const QList<quint8> &stations);
+
 Q_SIGNALS:
     void writeRequested(int row, quint64 raw);
     void inputRejected(const QString &message);
@@ -99,6 +112,7 @@ private:
         std::vector<Part> parts;
         QString writeOutcome;
         qint64 flashUntil = 0;
+        std::optional<bool> forced;
     };
 
     void allocateIds(Row &row);
@@ -116,6 +130,8 @@ private:
     QIcon m_goodIcon;
     QIcon m_staleIcon;
     QIcon m_errorIcon;
+    QIcon m_forcedIcon;
+    QList<quint8> m_silentStations;
 };
 
 } // namespace Fatek

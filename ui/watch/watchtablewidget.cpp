@@ -2,6 +2,7 @@
 
 #include "connectionmanager.h"
 #include "coretext.h"
+#include "forcedmarks.h"
 #include "watchdelegate.h"
 #include "watchinput.h"
 #include "watchtablemodel.h"
@@ -34,17 +35,18 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     , m_name(tr("Watch"))
     , m_model(new WatchTableModel(this))
     , m_view(new QTableView(this))
+    , m_forcedMarks(new ForcedMarks(m_model, this))
 {
     m_addEdit = new QLineEdit(this);
     m_addEdit->setObjectName(QStringLiteral("addressEdit"));
     m_addEdit->setPlaceholderText(tr("Add: R100, R100..R163, X0..X15 — Enter"));
     m_addEdit->setClearButtonEnabled(true);
-    m_addEdit->setMinimumWidth(m_addEdit->fontMetrics().horizontalAdvance(QLatin1Char('M')) * 16);
+    m_addEdit->setMinimumWidth(m_addEdit->fontMetrics().horizontalAdvance(QLatin1Char('M')) * 10);
     auto *addButton = new QPushButton(tr("Add"), this);
 
     m_connectionCombo = new QComboBox(this);
     m_connectionCombo->setObjectName(QStringLiteral("connectionCombo"));
-    m_connectionCombo->setMinimumContentsLength(12);
+    m_connectionCombo->setMinimumContentsLength(8);
     m_connectionCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_connectionCombo->setToolTip(tr("Connection this table polls through"));
 
@@ -181,6 +183,12 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     connect(manager, &ConnectionManager::connectionRemoved, this,
             &WatchTableWidget::refreshConnections);
 
+    // Forced marks cost bus time: only for a table someone can see, that polls a live link.
+    m_forcedMarks->setActiveCheck([this] {
+        return isVisible() && !isPaused() && m_connection
+               && m_connection->linkState() == LinkState::Connected;
+    });
+
     refreshConnections();
     if (!manager->connections().isEmpty())
         setConnection(manager->connections().constFirst());
@@ -229,9 +237,14 @@ void WatchTableWidget::setConnection(Connection *connection)
                                   .arg(CoreText::linkState(state), CoreText::message(reason)));
                 });
         connect(connection->session(), &Session::finished, this, &WatchTableWidget::onFinished);
+        connect(connection, &Connection::changed, m_model,
+                [this] { m_model->setSilentStations(m_connection->silentStations()); });
+        m_model->setSilentStations(connection->silentStations());
     } else {
+        m_model->setSilentStations({});
         m_model->markAllStale(tr("no connection"));
     }
+    m_forcedMarks->setSession(connection ? connection->session() : nullptr);
     m_connectionCombo->setCurrentIndex(m_manager->indexOf(connection));
     pushPollList();
 }

@@ -22,6 +22,7 @@ namespace Fatek {
 
 class Connection;
 class ConnectionManager;
+class ForcedMarks;
 class SessionResult;
 class WatchTableModel;
 
@@ -98,6 +99,7 @@ private:
     QLabel *m_message;
     QAction *m_swapAction;
     ConfirmHandler m_confirm;
+    ForcedMarks *m_forcedMarks;
     struct PendingWrite
     {
         quint64 rowKey;
