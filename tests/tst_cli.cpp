@@ -7,6 +7,10 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+
+#ifdef Q_OS_UNIX
+#include <csignal>
+#endif
 #include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -86,6 +90,7 @@ private Q_SLOTS:
     void simLoopback();
     void simMonitorThreeCycles();
     void simMonitorTable();
+    void simMonitorStopsOnInterrupt();
     void simRawFrame();
     void simJsonShape();
     void simCsvShape();
@@ -350,6 +355,35 @@ void TestCli::simMonitorThreeCycles()
         QVERIFY(v.at(0).toInteger() >= lastScans);
         lastScans = v.at(0).toInteger();
     }
+}
+
+// Ctrl-C (or SIGTERM) ends a monitor cleanly: exit 0, every row shown is in the data log. Also when
+// the program was started by a script without job control, where SIGINT arrives ignored.
+void TestCli::simMonitorStopsOnInterrupt()
+{
+#ifdef Q_OS_UNIX
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("log.csv"));
+    QProcess p;
+    p.setChildProcessModifier([] { ::signal(SIGINT, SIG_IGN); });
+    p.start(QStringLiteral(FATEK_CLI_PATH),
+            sim({QStringLiteral("--csv"), QStringLiteral("monitor"), QStringLiteral("R0"),
+                 QStringLiteral("--interval"), QStringLiteral("100"), QStringLiteral("--output"),
+                 path}));
+    QVERIFY(p.waitForStarted(10000));
+    QByteArray out;
+    QTRY_VERIFY_WITH_TIMEOUT((out += p.readAllStandardOutput()).count('\n') >= 4, 20000);
+    ::kill(static_cast<pid_t>(p.processId()), SIGINT);
+    QVERIFY2(p.waitForFinished(10000), "fatek-cli kept running after Ctrl-C");
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(p.exitCode(), 0);
+    out += p.readAllStandardOutput();
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), out);
+#else
+    QSKIP("Unix signals");
+#endif
 }
 
 void TestCli::simMonitorTable()

@@ -8,7 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-6}
 log=$(mktemp "${TMPDIR:-/tmp}/fatek-demo-check.XXXXXX")
-set -m # the demo runs in its own process group, so SIGINT reaches it as a Ctrl-C would
+# Started in the background without job control, the demo inherits an ignored SIGINT: fatek-cli
+# installs its own handler, since a Ctrl-C must stop it however it was started.
 env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM tools/demo.sh >"$log" 2>&1 &
 demo=$!
 trap 'kill -INT "$demo" 2>/dev/null || true; rm -f "$log"' EXIT
@@ -24,6 +25,16 @@ until grep -qE '^1 +[0-9:.]+ ' "$log"; do
 done
 sleep "$seconds"
 kill -INT "$demo"
+# A clean stop takes well under a second; give it 15 s before calling it hung.
+for _ in $(seq 150); do
+    kill -0 "$demo" 2>/dev/null || break
+    sleep 0.1
+done
+if kill -0 "$demo" 2>/dev/null; then
+    kill -KILL "$demo" 2>/dev/null || true
+    echo "demo-check: FAIL: the monitor kept running 15 s after Ctrl-C" >&2
+    exit 1
+fi
 rc=0
 wait "$demo" || rc=$?
 sed -n '/^cycle /,$p' "$log"

@@ -58,7 +58,9 @@ child=""
 cleanup() {
     local status=$?
     if [ -n "$child" ]; then
-        kill "$child" 2>/dev/null || true # --kill-child ends everything in the namespace
+        # unshare ignores SIGINT/SIGTERM while it waits for its child: SIGKILL it, and --kill-child
+        # kills the namespace's first process, which takes every process in the namespace along.
+        kill -KILL "$child" 2>/dev/null || true
         wait "$child" 2>/dev/null || true
     fi
     if findmnt -rno TARGET | grep -q "^$root/"; then

@@ -22,6 +22,8 @@ inline constexpr int Usage = 2;    // bad command line, or a request that cannot
 inline constexpr int Link = 3;     // timeout, no connection, broken answers
 inline constexpr int Plc = 4;      // the PLC answered with an error code
 inline constexpr int ReadOnly = 5; // refused by --read-only
+inline constexpr int Interrupted
+    = 130; // Ctrl-C / SIGTERM before the command finished (128 + SIGINT)
 } // namespace ExitCode
 
 enum class CliCommand {

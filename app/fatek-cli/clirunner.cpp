@@ -227,6 +227,24 @@ void CliRunner::failWith(const SessionResult &result)
     finish(code);
 }
 
+void CliRunner::interrupt()
+{
+    if (m_done)
+        return;
+    if (m_monitoring && step().command == CliCommand::Monitor) {
+        m_monitoring = false;
+        if (m_monitorErrors)
+            m_out.note(QStringLiteral("Some elements were refused by the PLC (see above)."));
+        if (const Status s = m_logger.close(); !s) {
+            m_out.error(QString::fromStdString(s.error().message), ExitCode::Internal);
+            return finish(ExitCode::Internal);
+        }
+        return finish(m_monitorErrors ? ExitCode::Plc : ExitCode::Ok);
+    }
+    m_out.error(QStringLiteral("Interrupted."), ExitCode::Interrupted);
+    finish(ExitCode::Interrupted);
+}
+
 void CliRunner::finish(int exitCode)
 {
     if (m_done)

@@ -34,6 +34,10 @@ public:
 
     // Call once the event loop runs (done() may follow at once).
     void start();
+    // Ctrl-C / SIGTERM: a monitor ends as if its last cycle had come (exit 0, the data log
+    // closed); any other command ends with ExitCode::Interrupted. Writes already accepted are
+    // still sent when the session closes.
+    void interrupt();
 
 Q_SIGNALS:
     void done(int exitCode);

@@ -1,11 +1,14 @@
 #include "clioptions.h"
 #include "clirunner.h"
+#include "quitsignal.h"
 
 #include <QCoreApplication>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
 #include <QTimer>
+
+#include <cstdlib>
 
 using namespace Fatek;
 
@@ -41,6 +44,14 @@ int main(int argc, char *argv[])
     QObject::connect(
         &runner, &CliRunner::done, &app, [](int code) { QCoreApplication::exit(code); },
         Qt::QueuedConnection);
+    // The first Ctrl-C ends the command cleanly (a monitor keeps its log, queued writes are sent);
+    // a second one, while that is still going on, ends the program at once.
+    onQuitSignal(&runner, [&runner, asked = false]() mutable {
+        if (asked)
+            std::_Exit(ExitCode::Interrupted);
+        asked = true;
+        runner.interrupt();
+    });
     QTimer::singleShot(0, &runner, &CliRunner::start);
     return app.exec();
 }

@@ -1,6 +1,7 @@
 // fatek-sim: a simulated FATEK PLC on TCP, UDP and/or a serial port, both protocols everywhere.
 
 #include "modelprofile.h"
+#include "quitsignal.h"
 #include "simserver.h"
 #include "simulatedplc.h"
 
@@ -9,15 +10,6 @@
 #include <QTextStream>
 
 #include <cstdio>
-
-#ifdef Q_OS_UNIX
-#include <QSocketNotifier>
-#include <csignal>
-#include <unistd.h>
-#endif
-#ifdef Q_OS_WIN
-#include <windows.h>
-#endif
 
 using namespace Fatek;
 
@@ -34,44 +26,6 @@ QTextStream &err()
     static QTextStream stream(stderr);
     return stream;
 }
-
-#ifdef Q_OS_UNIX
-// Self-pipe: the handler only writes a byte, the event loop quits when it reads it.
-int g_signalPipe[2] = {-1, -1};
-
-void onSignal(int)
-{
-    const char c = 1;
-    [[maybe_unused]] const auto n = ::write(g_signalPipe[1], &c, 1);
-}
-
-void installQuitOnSignals(QCoreApplication &app)
-{
-    if (::pipe(g_signalPipe) != 0)
-        return;
-    auto *notifier = new QSocketNotifier(g_signalPipe[0], QSocketNotifier::Read, &app);
-    QObject::connect(notifier, &QSocketNotifier::activated, &app, [] { QCoreApplication::quit(); });
-    struct sigaction action = {};
-    action.sa_handler = onSignal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
-}
-#elif defined(Q_OS_WIN)
-BOOL WINAPI onConsoleControl(DWORD)
-{
-    QMetaObject::invokeMethod(QCoreApplication::instance(), &QCoreApplication::quit,
-                              Qt::QueuedConnection);
-    return TRUE;
-}
-
-void installQuitOnSignals(QCoreApplication &)
-{
-    SetConsoleCtrlHandler(onConsoleControl, TRUE);
-}
-#else
-void installQuitOnSignals(QCoreApplication &) {}
-#endif
 
 bool parseInt(const QString &text, int min, int max, int *value)
 {
@@ -344,7 +298,7 @@ int main(int argc, char *argv[])
           << (server.demoLadder() ? ", demo ladder" : "") << ", faults: " << faults.describe()
           << Qt::endl;
 
-    installQuitOnSignals(app);
+    onQuitSignal(&app, [] { QCoreApplication::quit(); });
     const int rc = app.exec();
     server.close();
     out() << "stopped" << Qt::endl;

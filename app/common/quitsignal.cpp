@@ -1,0 +1,82 @@
+#include "quitsignal.h"
+
+#include <QCoreApplication>
+#include <QMetaObject>
+#include <QObject>
+#include <QPointer>
+
+#ifdef Q_OS_UNIX
+#include <QSocketNotifier>
+#include <csignal>
+#include <unistd.h>
+#endif
+#ifdef Q_OS_WIN
+#include <windows.h>
+#endif
+
+namespace Fatek {
+
+namespace {
+std::function<void()> g_onQuit;
+QPointer<QObject> g_context;
+} // namespace
+
+#ifdef Q_OS_UNIX
+namespace {
+// Self-pipe: the handler only writes a byte (async-signal-safe), the event loop reads it.
+int g_signalPipe[2] = {-1, -1};
+
+void onSignal(int)
+{
+    const char c = 1;
+    [[maybe_unused]] const auto n = ::write(g_signalPipe[1], &c, 1);
+}
+} // namespace
+
+void onQuitSignal(QObject *context, std::function<void()> onQuit)
+{
+    if (g_signalPipe[0] >= 0 || ::pipe(g_signalPipe) != 0)
+        return;
+    g_onQuit = std::move(onQuit);
+    g_context = context;
+    auto *notifier = new QSocketNotifier(g_signalPipe[0], QSocketNotifier::Read, context);
+    QObject::connect(notifier, &QSocketNotifier::activated, context, [] {
+        char c = 0;
+        [[maybe_unused]] const auto n = ::read(g_signalPipe[0], &c, 1);
+        if (g_onQuit)
+            g_onQuit();
+    });
+    struct sigaction action = {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+#elif defined(Q_OS_WIN)
+namespace {
+BOOL WINAPI onConsoleControl(DWORD)
+{
+    // Runs on a thread of its own: hand over to the context's thread.
+    if (g_context)
+        QMetaObject::invokeMethod(
+            g_context.data(),
+            [] {
+                if (g_onQuit)
+                    g_onQuit();
+            },
+            Qt::QueuedConnection);
+    return TRUE;
+}
+} // namespace
+
+void onQuitSignal(QObject *context, std::function<void()> onQuit)
+{
+    g_onQuit = std::move(onQuit);
+    g_context = context;
+    SetConsoleCtrlHandler(onConsoleControl, TRUE);
+}
+#else
+void onQuitSignal(QObject *, std::function<void()>) {}
+#endif
+
+} // namespace Fatek
