@@ -14,6 +14,9 @@ packages=(
     qt6-l10n-tools qt6-translations-l10n libgl-dev libxkbcommon-dev
     # fonts for the offscreen UI tests and screenshots (Latin and Traditional Chinese)
     fonts-dejavu-core fonts-noto-cjk
+    # ThreadSanitizer names glibc's own functions (and tools/tsan.supp matches them) only with
+    # glibc's symbols
+    libc6-dbg
     # tests: serial pty pairs, the independent Python reference; git for the format check
     socat python3 git clang-format
     # packaging and its install test (tools/package-test.sh)

@@ -140,7 +140,7 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
     if (it == m_groups.end() || it->second.generation != generation)
         return; // the watch list changed meanwhile
     Group &group = it->second;
-    const QDateTime now = QDateTime::currentDateTime();
+    const QDateTime now = QDateTime::currentDateTimeUtc();
 
     if (result.ok()) {
         const Response &response = result.response();
@@ -210,7 +210,7 @@ void Poller::finishCycle(Group &group)
     batch.reserve(static_cast<qsizetype>(group.items.size()));
     for (const UnplannableItem &item : group.plan.unplannable)
         group.cycleValues.insert(item.itemId,
-                                 {item.itemId, 0, QDateTime::currentDateTime(), ValueQuality::Error,
+                                 {item.itemId, 0, QDateTime::currentDateTimeUtc(), ValueQuality::Error,
                                   QString::fromStdString(item.reason)});
     for (const WatchItem &item : group.items) {
         auto it = group.cycleValues.constFind(item.id);
