@@ -160,7 +160,8 @@ void TestToolsControl::detailStatusDecoded()
     QVERIFY2(shown.contains(QStringLiteral("%1 words").arg(profile.programWords)),
              qPrintable(shown));
     QVERIFY2(shown.contains(QStringLiteral("V3.1")), qPrintable(shown));
-    QVERIFY2(shown.contains(QStringLiteral("main unit MC")), qPrintable(shown));
+    // The model as printed on the unit, not "main unit MC".
+    QVERIFY2(shown.contains(QStringLiteral("FBs-28MC")), qPrintable(shown));
     auto *raw = m_panel->findChild<QLabel *>(QStringLiteral("rawDetail"));
     QVERIFY(raw->text().startsWith(QStringLiteral("01 "))); // STATUS1: RUN
 }

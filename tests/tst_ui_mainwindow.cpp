@@ -14,6 +14,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
@@ -418,18 +419,33 @@ private Q_SLOTS:
         dialog.setConnection(udp);
         QCOMPARE(dialog.connection(), udp);
 
-        // Opened connections are remembered, most recent first, across windows (QSettings).
+        // Connections that came up are remembered, most recent first, across windows
+        // (QSettings), with the station; one that never connected (no such port) is not.
+        Plc plc;
+        SavedConnection tcp = savedFor(plc.port);
+        tcp.name = QStringLiteral("Line 3");
+        tcp.station = 12;
+        plc.server.setStation(12);
         {
             MainWindow window;
-            window.openConnection(serial);
-            window.openConnection(udp);
+            Connection *failing = window.openConnection(serial);
+            Connection *working = window.openConnection(tcp);
+            QTRY_COMPARE_WITH_TIMEOUT(working->linkState(), LinkState::Connected, longWait);
+            QTRY_VERIFY_WITH_TIMEOUT(failing->linkFailures() > 0, longWait);
             QCOMPARE(window.connections()->connections().size(), 2);
+            auto *menu = window.findChild<QMenu *>(QStringLiteral("recentMenu"));
+            QVERIFY(menu);
+            QStringList labels;
+            for (QAction *a : menu->actions())
+                labels << a->text();
+            QVERIFY2(labels.join(u'|').contains(QStringLiteral("station 12")),
+                     qPrintable(labels.join(u'|')));
         }
         MainWindow window;
         const QList<SavedConnection> recent = window.connections()->recent();
-        QVERIFY(recent.size() >= 2);
-        QCOMPARE(recent.at(0), udp);
-        QCOMPARE(recent.at(1), serial);
+        QVERIFY(!recent.isEmpty());
+        QCOMPARE(recent.at(0), tcp);
+        QVERIFY(!recent.contains(serial));
     }
 
     void toolsFollowTheCurrentConnection()

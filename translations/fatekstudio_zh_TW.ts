@@ -818,11 +818,11 @@
         </message>
         <message>
             <source>Set ON</source>
-            <translation>強制 ON</translation>
+            <translation>設為 ON</translation>
         </message>
         <message>
             <source>Reset OFF</source>
-            <translation>強制 OFF</translation>
+            <translation>復歸 OFF</translation>
         </message>
         <message>
             <source>Disabled</source>
@@ -836,13 +836,13 @@
             <source>Set ON</source>
             <comment>past</comment>
             <extracomment>Past tense, as in "Set ON 3 points."</extracomment>
-            <translation>強制 ON</translation>
+            <translation>已設為 ON</translation>
         </message>
         <message>
             <source>Reset OFF</source>
             <comment>past</comment>
             <extracomment>Past tense, as in "Reset OFF 3 points."</extracomment>
-            <translation>強制 OFF</translation>
+            <translation>已復歸 OFF</translation>
         </message>
         <message>
             <source>%1: %2</source>
@@ -1054,11 +1054,11 @@
         </message>
         <message>
             <source>Set ON</source>
-            <translation>強制 ON</translation>
+            <translation>設為 ON</translation>
         </message>
         <message>
             <source>Reset OFF</source>
-            <translation>強制 OFF</translation>
+            <translation>復歸 OFF</translation>
         </message>
         <message>
             <source>Discretes</source>

@@ -71,6 +71,18 @@ std::optional<std::uint16_t> DetailStatus::discreteCount(ElementType type) const
     }
 }
 
+std::optional<std::string> DetailStatus::modelName() const
+{
+    static const char *const points[] = {nullptr, "20", "28", "40", "60"};
+    if (!mainUnitType || !ioPointsCode || *ioPointsCode < 1 || *ioPointsCode > 4)
+        return std::nullopt;
+    switch (*mainUnitType) {
+    case 0: return std::string("FBs-") + points[*ioPointsCode] + "MA/MU";
+    case 1: return std::string("FBs-") + points[*ioPointsCode] + "MC";
+    default: return std::nullopt;
+    }
+}
+
 std::string DetailStatus::summary() const
 {
     std::string s;
@@ -79,14 +91,16 @@ std::string DetailStatus::summary() const
             s += ", ";
         s += part;
     };
-    if (mainUnitType) {
+    if (const std::optional<std::string> model = modelName())
+        add(*model);
+    else if (mainUnitType) {
         switch (*mainUnitType) {
         case 0: add("main unit MA/MU"); break;
         case 1: add("main unit MC"); break;
         default: add("main unit type " + std::to_string(*mainUnitType)); break;
         }
     }
-    if (ioPointsCode) {
+    if (ioPointsCode && !modelName()) {
         static const char *points[] = {nullptr, "20", "28", "40", "60"};
         if (*ioPointsCode >= 1 && *ioPointsCode <= 4)
             add(std::string(points[*ioPointsCode]) + " I/O points");

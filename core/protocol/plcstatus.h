@@ -44,7 +44,10 @@ struct DetailStatus
     // How many points of a discrete kind (X Y M S T C) the PLC reports, numbered from 0; nothing
     // when the answer is too short to say or the kind is not a discrete.
     std::optional<std::uint16_t> discreteCount(ElementType type) const;
-    // "FBs-MC, 28 points, OS V3.1, program 13184 words" as far as known.
+    // The model as printed on the unit ("FBs-28MC", "FBs-20MA/MU"), when STATUS2 and STATUS3 say
+    // it; only the FACON answer has them.
+    std::optional<std::string> modelName() const;
+    // "FBs-28MC, OS V3.1, program 13184 words" as far as known.
     std::string summary() const;
 };
 

@@ -1,6 +1,9 @@
 #include "connection.h"
 
 #include "coretext.h"
+#include "requesttracker.h"
+
+#include <QSet>
 
 namespace Fatek {
 
@@ -8,11 +11,31 @@ Connection::Connection(const SavedConnection &saved, QObject *parent)
     : QObject(parent)
     , m_saved(saved)
     , m_session(new Session(saved.settings, this))
+    , m_plcRequests(new RequestTracker(this))
 {
+    m_plcRequests->setSession(m_session);
+    m_statusTimer.setInterval(plcStatusIntervalMs);
+    connect(&m_statusTimer, &QTimer::timeout, this, &Connection::readStatus);
     connect(m_session, &Session::linkStateChanged, this,
             [this](LinkState state, const QString &reason) {
+                // Every failed attempt and every broken link passes through Lost once.
+                if (state == LinkState::Lost)
+                    ++m_linkFailures;
+                if (state == LinkState::Connected)
+                    m_hasConnected = true;
+                const bool cameUp = state == LinkState::Connected && m_state != state;
                 m_state = state;
                 m_reason = reason;
+                if (cameUp) {
+                    readIdentity();
+                    m_statusTimer.start();
+                } else if (state != LinkState::Connected) {
+                    // Down: RUN/STOP is unknown, not "the last we saw".
+                    m_statusTimer.stop();
+                    m_plcRequests->forgetPending();
+                    m_statusPending = false;
+                    m_plcStatus.reset();
+                }
                 Q_EMIT linkStateChanged(state, reason);
                 Q_EMIT changed();
             });
@@ -40,13 +63,20 @@ void Connection::setStation(quint8 station)
     if (m_saved.station == station)
         return;
     m_saved.station = station;
+    // Another station is another PLC: forget what the last one said and ask this one.
+    m_detail.reset();
+    m_plcStatus.reset();
+    m_plcRequests->forgetPending();
+    m_statusPending = false;
+    if (m_state == LinkState::Connected)
+        readIdentity();
     Q_EMIT changed();
 }
 
 quint64 Connection::errorCount() const
 {
     const StationStatistics &t = m_statistics.total;
-    return t.timeouts + t.checksumErrors + t.plcErrors;
+    return t.timeouts + t.checksumErrors + t.plcErrors + m_linkFailures;
 }
 
 QList<quint8> Connection::silentStations() const
@@ -54,8 +84,14 @@ QList<quint8> Connection::silentStations() const
     QList<quint8> silent;
     if (m_state != LinkState::Connected)
         return silent; // a link that is down says so itself
+    // Only stations someone uses: a station scan leaves every empty address unanswered.
+    QSet<quint8> used{m_saved.station};
+    for (const QList<WatchEntry> &entries : m_pollEntries) {
+        for (const WatchEntry &e : entries)
+            used.insert(e.station);
+    }
     for (auto it = m_statistics.stations.cbegin(); it != m_statistics.stations.cend(); ++it) {
-        if (it.value().unanswered > 0 && it.key() != 0)
+        if (it.value().unanswered > 0 && it.key() != 0 && used.contains(it.key()))
             silent << it.key();
     }
     return silent;
@@ -73,9 +109,73 @@ QString Connection::stateText() const
     return tr("%1, no answer from station %2").arg(state, numbers.join(QStringLiteral(", ")));
 }
 
+QString Connection::plcText() const
+{
+    QStringList parts;
+    if (m_detail) {
+        if (const std::optional<std::string> model = m_detail->modelName())
+            parts << QString::fromStdString(*model);
+    }
+    if (m_plcStatus)
+        parts << (m_plcStatus->running ? QStringLiteral("RUN") : QStringLiteral("STOP"));
+    return parts.join(QStringLiteral(" · "));
+}
+
+void Connection::readIdentity()
+{
+    const quint8 station = m_saved.station;
+    m_statusPending = true;
+    m_plcRequests->submit(
+        Request::detailStatus(station),
+        [this, station](const SessionResult &result) {
+            m_statusPending = false;
+            if (station != m_saved.station || !result.ok())
+                return; // a silent station shows as such; the status timer asks again
+            const DetailStatus detail = DetailStatus::decode(result.response().data);
+            m_detail = detail;
+            m_plcStatus = detail.status;
+            Q_EMIT changed();
+        },
+        {}, Priority::Poll);
+}
+
+void Connection::readStatus()
+{
+    if (m_statusPending || m_state != LinkState::Connected)
+        return; // one question at a time, whatever the line's speed
+    if (!m_detail) {
+        readIdentity();
+        return;
+    }
+    const quint8 station = m_saved.station;
+    m_statusPending = true;
+    m_plcRequests->submit(
+        Request::briefStatus(station),
+        [this, station](const SessionResult &result) {
+            m_statusPending = false;
+            if (station != m_saved.station)
+                return;
+            std::optional<PlcStatus> status;
+            if (result.ok() && !result.response().data.empty())
+                status = PlcStatus::fromStatus1(result.response().data.front());
+            if (status != m_plcStatus) {
+                m_plcStatus = status;
+                Q_EMIT changed();
+            }
+        },
+        {}, Priority::Poll);
+}
+
 void Connection::open()
 {
     m_session->open();
+}
+
+void Connection::reconnectNow()
+{
+    if (m_state == LinkState::Connected || m_state == LinkState::Connecting)
+        return;
+    m_session->open(); // during a backoff the worker connects at once
 }
 
 void Connection::close()

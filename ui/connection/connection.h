@@ -1,12 +1,15 @@
 #pragma once
 
 #include "linksettingsio.h"
+#include "plcstatus.h"
 #include "session.h"
 
 #include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
 #include <QTimer>
+
+#include <optional>
 
 namespace Fatek {
 
@@ -32,15 +35,28 @@ public:
     QString linkReason() const { return m_reason; }
     SessionStatistics statistics() const { return m_statistics; }
     double requestsPerSecond() const { return m_rate; }
-    // Timeouts, checksum errors and PLC error answers.
+    // Timeouts, checksum errors, PLC error answers and link failures.
     quint64 errorCount() const;
+    // Connection attempts that failed and open links that broke (refused port, cable pulled).
+    quint64 linkFailures() const { return m_linkFailures; }
+    // Whether the link ever came up since open().
+    bool hasConnected() const { return m_hasConnected; }
     // While the link is up: stations whose last request got no answer at all (ascending).
     QList<quint8> silentStations() const;
     // "connected", or "connected, no answer from station 5" when a station is silent.
     QString stateText() const;
+    // What the PLC at station() says it is (53, read when the link comes up and when the station
+    // changes) and its RUN/STOP state (40, every plcStatusIntervalMs while the link is up).
+    std::optional<DetailStatus> plcDetail() const { return m_detail; }
+    std::optional<PlcStatus> plcStatus() const { return m_plcStatus; }
+    // "FBs-28MC · RUN"; "RUN" alone when the model is unknown; empty before the first answer.
+    QString plcText() const;
+    static constexpr int plcStatusIntervalMs = 3000;
 
     void open();
     void close();
+    // Connects at once when the link is down (skips the reconnect backoff).
+    void reconnectNow();
 
     // Replaces what `owner` polls (an empty list removes it).
     void setPollEntries(const QObject *owner, const QList<WatchEntry> &entries);
@@ -53,10 +69,19 @@ Q_SIGNALS:
 private:
     void updateRate();
     void pushWatchList();
+    void readIdentity();
+    void readStatus();
 
     SavedConnection m_saved;
     Session *m_session;
     LinkState m_state = LinkState::Closed;
+    quint64 m_linkFailures = 0;
+    class RequestTracker *m_plcRequests;
+    QTimer m_statusTimer;
+    std::optional<DetailStatus> m_detail;
+    std::optional<PlcStatus> m_plcStatus;
+    bool m_statusPending = false;
+    bool m_hasConnected = false;
     QString m_reason;
     SessionStatistics m_statistics;
     QHash<const QObject *, QList<WatchEntry>> m_pollEntries;

@@ -54,6 +54,10 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         case NameColumn: return c->name();
         case LinkColumn: return CoreText::settings(c->settings());
         case StationColumn: return c->station();
+        case PlcColumn: {
+            const QString text = c->plcText();
+            return text.isEmpty() ? QStringLiteral("–") : text;
+        }
         case StateColumn: return c->stateText();
         case RateColumn: return QString::number(c->requestsPerSecond(), 'f', 1);
         case ErrorsColumn: return QString::number(c->errorCount());
@@ -69,17 +73,27 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
             return c->linkReason().isEmpty() ? CoreText::linkState(c->linkState())
                                              : CoreText::message(c->linkReason());
         case ErrorsColumn:
-            return tr("%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries")
+            return tr("%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries, %5 link "
+                      "failures")
                 .arg(t.timeouts)
                 .arg(t.checksumErrors)
                 .arg(t.plcErrors)
-                .arg(t.retries);
+                .arg(t.retries)
+                .arg(c->linkFailures());
         case RttColumn:
             return tr("Round trip: last %1 ms, median %2 ms, 99% %3 ms")
                 .arg(t.rttLastMs, 0, 'f', 1)
                 .arg(t.rttP50Ms, 0, 'f', 1)
                 .arg(t.rttP99Ms, 0, 'f', 1);
         case StationColumn: return tr("Station the tools act on; double-click to change");
+        case PlcColumn: {
+            const std::optional<DetailStatus> detail = c->plcDetail();
+            return detail ? tr("Station %1: %2 (RUN/STOP read every %3 s)")
+                                .arg(c->station())
+                                .arg(QString::fromStdString(detail->summary()))
+                                .arg(Connection::plcStatusIntervalMs / 1000)
+                          : tr("The PLC has not said what it is yet");
+        }
         default: {
             // Per station: several PLCs on one RS-485 line share a connection.
             QStringList lines{CoreText::settings(c->settings())};
@@ -101,7 +115,7 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         && !c->silentStations().isEmpty())
         return m_silentIcon;
     if (role == Qt::TextAlignmentRole && index.column() >= StationColumn
-        && index.column() != StateColumn)
+        && index.column() != StateColumn && index.column() != PlcColumn)
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     return {};
 }
@@ -114,6 +128,7 @@ QVariant ConnectionListModel::headerData(int section, Qt::Orientation orientatio
     case NameColumn: return tr("Name");
     case LinkColumn: return tr("Link");
     case StationColumn: return tr("Station");
+    case PlcColumn: return tr("PLC");
     case StateColumn: return tr("State");
     case RateColumn: return tr("Req/s");
     case ErrorsColumn: return tr("Errors");

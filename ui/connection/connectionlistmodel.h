@@ -18,6 +18,7 @@ public:
         NameColumn,
         LinkColumn,
         StationColumn,
+        PlcColumn,
         StateColumn,
         RateColumn,
         ErrorsColumn,

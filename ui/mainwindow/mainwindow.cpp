@@ -8,6 +8,7 @@
 #include "coretext.h"
 #include "demosimulator.h"
 #include "languagemenu.h"
+#include "stationscandialog.h"
 #include "tablelogger.h"
 #include "trendview.h"
 #include "watchtablemodel.h"
@@ -33,6 +34,7 @@
 #include <QToolBar>
 
 #include <algorithm>
+#include <memory>
 
 #if defined(FATEK_HAVE_UITOOLS)                                                                    \
     && __has_include(                                                                              \
@@ -70,7 +72,6 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     initStudioResources();
     setObjectName(QStringLiteral("mainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/icons/fatek-studio.svg")));
-    setWindowTitle(readOnly ? tr("FATEK Studio — Operator mode (read-only)") : tr("FATEK Studio"));
     m_manager->setReadOnly(readOnly);
 
     m_tabs = new QTabWidget(this);
@@ -80,6 +81,11 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     m_tabs->setDocumentMode(true);
     setCentralWidget(m_tabs);
     connect(m_tabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeWatchTable);
+    // The tools act on the table in front: its connection becomes the current one.
+    connect(m_tabs, &QTabWidget::currentChanged, this, [this] {
+        if (WatchTableWidget *t = currentWatchTable())
+            followTable(t->connection());
+    });
     connect(m_tabs->tabBar(), &QTabBar::tabBarDoubleClicked, this, &MainWindow::renameWatchTable);
 
     m_connectionsPanel = new ConnectionsPanel(m_manager, this);
@@ -96,6 +102,7 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     createActions();
     createTools();
     addWatchTable();
+    markWatchListSaved({});
 
     connect(m_connectionsPanel, &ConnectionsPanel::currentConnectionChanged, this, [this] {
         updateLinkStatus();
@@ -133,6 +140,7 @@ MainWindow::~MainWindow()
     // the manager, the manager owns the sessions.
     disconnect(m_connectionsPanel, nullptr, this, nullptr);
     disconnect(m_manager, nullptr, this, nullptr);
+    disconnect(m_tabs, nullptr, this, nullptr);
     for (const auto &setTarget : std::as_const(m_toolTargets))
         setTarget(nullptr, 1, QString());
     while (m_tabs->count() > 0) {
@@ -162,6 +170,17 @@ void MainWindow::createActions()
         = file->addAction(QIcon(QStringLiteral(":/icons/disconnect.svg")), tr("&Close Connection"),
                           this, &MainWindow::closeCurrentConnection);
     disconnectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
+    m_reconnectAction = file->addAction(tr("&Reconnect Now"), this, [this] {
+        if (Connection *c = currentConnection()) {
+            showStatus(tr("Reconnecting %1 now…").arg(c->name()));
+            c->reconnectNow();
+        }
+    });
+    m_reconnectAction->setObjectName(QStringLiteral("reconnectNowAction"));
+    m_reconnectAction->setShortcut(QKeySequence(Qt::Key_F5));
+    m_reconnectAction->setToolTip(tr("Try the current connection again at once instead of "
+                                     "waiting for the next attempt"));
+    m_reconnectAction->setEnabled(false);
     file->addSeparator();
     auto *newTable
         = file->addAction(QIcon(QStringLiteral(":/icons/table.svg")), tr("New &Watch Table"), this,
@@ -183,7 +202,8 @@ void MainWindow::createActions()
     connect(reopen, &QAction::toggled, this, [](bool on) { QSettings().setValue(reopenKey, on); });
     file->addSeparator();
     auto *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
+    // QKeySequence::Quit is empty on Windows and in some desktop themes.
+    quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
 
     QMenu *watch = menuBar()->addMenu(tr("&Watch"));
     auto *focusAdd = watch->addAction(tr("&Add Items…"), this, [this] {
@@ -235,7 +255,7 @@ void MainWindow::createTools()
 {
 #ifdef FATEK_WITH_TOOLS
     auto addDock = [this](auto *tool, const QString &title, const QString &name,
-                          Qt::DockWidgetArea area) {
+                          Qt::DockWidgetArea area, const QKeySequence &shortcut) {
         auto *dock = new QDockWidget(title, this);
         dock->setObjectName(name);
         // In a scroll area a tool's own minimum (rows of controls, long status lines) no longer
@@ -247,22 +267,23 @@ void MainWindow::createTools()
         scroll->setWidget(tool);
         dock->setWidget(scroll);
         addDockWidget(area, dock);
-        m_toolsMenu->addAction(dock->toggleViewAction());
-        m_viewMenu->addAction(dock->toggleViewAction());
+        QAction *action = dockAction(dock, shortcut);
+        m_toolsMenu->addAction(action);
+        m_viewMenu->addAction(action);
         m_toolTargets.append([tool](Session *session, quint8 station, const QString &connection) {
             tool->setTarget(session, station, connection);
         });
         return dock;
     };
     QDockWidget *control = addDock(new PlcControlPanel(this), tr("PLC Control"),
-                                   QStringLiteral("plcControlDock"), Qt::RightDockWidgetArea);
+                                   QStringLiteral("plcControlDock"), Qt::RightDockWidgetArea,
+                                   QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
     QDockWidget *forcing = addDock(new ForcingPanel(this), tr("Forcing"),
-                                   QStringLiteral("forcingDock"), Qt::RightDockWidgetArea);
+                                   QStringLiteral("forcingDock"), Qt::RightDockWidgetArea,
+                                   QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
     QDockWidget *console = addDock(new RawConsole(this), tr("Raw Console"),
-                                   QStringLiteral("rawConsoleDock"), Qt::BottomDockWidgetArea);
-    control->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
-    forcing->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
-    console->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+                                   QStringLiteral("rawConsoleDock"), Qt::BottomDockWidgetArea,
+                                   QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
     tabifyDockWidget(control, forcing);
     // The watch tables own the width: the side tools start hidden (Tools menu, shortcuts above);
     // the console shares the bottom area with the connections as a tab. QSettings keeps what the
@@ -294,7 +315,45 @@ void MainWindow::createTools()
 #else
     m_toolsMenu->addAction(tr("(commissioning tools not built)"))->setEnabled(false);
 #endif
+    auto *scan = m_toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
+        Connection *c = currentConnection();
+        if (!c) {
+            showStatus(tr("Scan Stations: open a connection first."));
+            return;
+        }
+        auto *dialog = new StationScanDialog(c, this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+        dialog->start();
+    });
+    scan->setObjectName(QStringLiteral("scanStationsAction"));
+    scan->setToolTip(tr("Find the PLCs that answer on the current connection's link"));
     updateToolTargets();
+}
+
+QAction *MainWindow::dockAction(QDockWidget *dock, const QKeySequence &shortcut)
+{
+    // The dock's own toggle action hides a dock that is open but behind another tab: this one
+    // brings it to the front first, and hides it only when it is already in front.
+    auto *action = new QAction(dock->windowTitle(), this);
+    action->setObjectName(dock->objectName() + QStringLiteral("Action"));
+    action->setCheckable(true);
+    action->setChecked(!dock->isHidden());
+    action->setShortcut(shortcut);
+    connect(dock->toggleViewAction(), &QAction::toggled, action, &QAction::setChecked);
+    connect(dock, &QDockWidget::windowTitleChanged, action, &QAction::setText);
+    connect(action, &QAction::triggered, dock, [dock, action] {
+        if (dock->isHidden()) {
+            dock->show();
+            dock->raise();
+        } else if (!dock->isVisible() || dock->visibleRegion().isEmpty()) {
+            dock->raise(); // open, but another tab is in front
+        } else {
+            dock->hide();
+        }
+        action->setChecked(!dock->isHidden());
+    });
+    return action;
 }
 
 QWidget *MainWindow::openTool(const QString &name)
@@ -338,9 +397,21 @@ Connection *MainWindow::currentConnection() const
 
 Connection *MainWindow::openConnection(const SavedConnection &saved, bool remember)
 {
-    if (remember)
-        m_manager->addRecent(saved);
     Connection *c = m_manager->open(saved);
+    if (remember) {
+        // Only a link that came up is worth remembering: a typo in the address or a refused
+        // port must not fill Recent.
+        auto once = std::make_shared<QMetaObject::Connection>();
+        *once = connect(c, &Connection::linkStateChanged, this,
+                        [this, c, saved, once](LinkState state) {
+                            if (state != LinkState::Connected)
+                                return;
+                            QObject::disconnect(*once);
+                            SavedConnection remembered = saved;
+                            remembered.station = c->station();
+                            m_manager->addRecent(remembered);
+                        });
+    }
     showStatus(tr("Connecting to %1 (%2)…").arg(c->name(), CoreText::settings(c->settings())));
     return c;
 }
@@ -370,8 +441,10 @@ void MainWindow::rebuildRecentMenu()
     m_recentMenu->clear();
     const QList<SavedConnection> recent = m_manager->recent();
     for (const SavedConnection &c : recent) {
-        m_recentMenu->addAction(tr("%1 — %2").arg(c.name, CoreText::settings(c.settings)), this,
-                                [this, c] { openConnection(c); });
+        m_recentMenu->addAction(tr("%1 — %2, station %3")
+                                    .arg(c.name, CoreText::settings(c.settings))
+                                    .arg(c.station),
+                                this, [this, c] { openConnection(c); });
     }
     if (const int unreadable = m_manager->unreadableRecent(); unreadable > 0) {
         m_recentMenu->addSeparator();
@@ -396,6 +469,10 @@ WatchTableWidget *MainWindow::addWatchTable(const QString &name)
             [this, table](const QList<int> &rows) { addToTrend(table, rows); });
     connect(table, &WatchTableWidget::nameChanged, this, [this, table](const QString &text) {
         m_tabs->setTabText(m_tabs->indexOf(table), text);
+    });
+    connect(table, &WatchTableWidget::connectionChanged, this, [this, table](Connection *c) {
+        if (table == currentWatchTable())
+            followTable(c);
     });
     m_tabs->addTab(table, QIcon(QStringLiteral(":/icons/table.svg")), table->name());
     return table;
@@ -443,8 +520,10 @@ Status MainWindow::saveWatchList(const QString &path) const
     for (WatchTableWidget *t : watchTables())
         file.tables.append(t->spec());
     Status s = WatchList::saveToFile(file, path);
-    if (s)
+    if (s) {
         QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
+        const_cast<MainWindow *>(this)->markWatchListSaved(path);
+    }
     return s;
 }
 
@@ -460,6 +539,7 @@ Status MainWindow::loadWatchList(const QString &path)
     if (m_tabs->count() == 0)
         addWatchTable();
     QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
+    markWatchListSaved(path);
     return Ok{};
 }
 
@@ -509,20 +589,90 @@ void MainWindow::openWatchListDialog()
     showStatus(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
 }
 
-void MainWindow::saveWatchListDialog()
+bool MainWindow::saveWatchListDialog()
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Watch List"), lastDirectory(),
-                                                tr("Watch lists (*.json)"));
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Watch List"), m_listPath.isEmpty() ? lastDirectory() : m_listPath,
+        tr("Watch lists (*.json)"));
     if (path.isEmpty())
-        return;
+        return false;
     if (QFileInfo(path).suffix().isEmpty())
         path += QStringLiteral(".json");
     setLastDirectory(path);
     if (const Status s = saveWatchList(path); !s) {
         QMessageBox::warning(this, tr("Save Watch List"), CoreText::message(s.error().message));
-        return;
+        return false;
     }
     showStatus(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+WatchListFile MainWindow::currentWatchList() const
+{
+    WatchListFile file;
+    for (WatchTableWidget *t : watchTables())
+        file.tables.append(t->spec());
+    return file;
+}
+
+void MainWindow::markWatchListSaved(const QString &path)
+{
+    m_listPath = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+    m_savedList = currentWatchList();
+    updateWindowTitle();
+}
+
+bool MainWindow::isWatchListModified() const
+{
+    return currentWatchList() != m_savedList;
+}
+
+void MainWindow::updateWindowTitle()
+{
+    // The platform adds the application name ("… — FATEK Studio"): the title names the document.
+    const QString list
+        = m_listPath.isEmpty() ? tr("Untitled") : QFileInfo(m_listPath).fileName();
+    setWindowTitle(m_readOnly ? tr("%1 — Operator mode (read-only)").arg(list) : list);
+    setWindowFilePath(m_listPath);
+}
+
+bool MainWindow::confirmQuit()
+{
+    const bool unsaved = isWatchListModified();
+    const bool logging = m_tableLogger && m_tableLogger->isLogging();
+    if (!unsaved && !logging)
+        return true;
+    QStringList what;
+    if (unsaved)
+        what << tr("The watch list %1 has changes that are not saved.")
+                    .arg(m_listPath.isEmpty() ? tr("(untitled)")
+                                              : QDir::toNativeSeparators(m_listPath));
+    if (logging)
+        what << tr("Data logging to %1 is running; quitting stops it.")
+                    .arg(QDir::toNativeSeparators(m_tableLogger->path()));
+    QMessageBox box(QMessageBox::Question, tr("Quit FATEK Studio"), what.join(QLatin1Char('\n')),
+                    QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("quitQuestionBox"));
+    QPushButton *save = nullptr;
+    if (unsaved) {
+        save = box.addButton(tr("&Save and Quit"), QMessageBox::AcceptRole);
+        save->setObjectName(QStringLiteral("saveButton"));
+    }
+    QPushButton *quit
+        = box.addButton(unsaved ? tr("Quit &Without Saving") : tr("Stop Logging and &Quit"),
+                        QMessageBox::DestructiveRole);
+    quit->setObjectName(QStringLiteral("quitButton"));
+    QPushButton *cancel = box.addButton(QMessageBox::Cancel);
+    cancel->setObjectName(QStringLiteral("cancelButton"));
+    // The safe answer is the default: Enter saves, or keeps the window open.
+    box.setDefaultButton(save ? save : cancel);
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() == quit)
+        return true;
+    if (save && box.clickedButton() == save)
+        return m_listPath.isEmpty() ? saveWatchListDialog() : bool(saveWatchList(m_listPath));
+    return false;
 }
 
 void MainWindow::importCsvDialog()
@@ -573,6 +723,7 @@ void MainWindow::startDemo()
         table->setConnection(c);
         table->setSpec(DemoSimulator::demoTable(saved.station));
         m_tabs->setCurrentWidget(table);
+        markWatchListSaved({}); // the demo's own table: nothing of the user's to save yet
         Q_EMIT demoReady();
     });
     m_demo->start();
@@ -602,20 +753,42 @@ void MainWindow::updateLinkStatus()
 {
     const Connection *c = currentConnection();
     if (!c) {
+        m_reconnectAction->setEnabled(false);
         m_linkStatus->setText(tr("No connection"));
         m_linkStatus->setToolTip({});
         return;
     }
     const StationStatistics &t = c->statistics().total;
-    m_linkStatus->setText(tr("%1: %2 · %3 req/s · %4 errors · RTT %5 ms")
-                              .arg(c->name(), c->stateText())
-                              .arg(c->requestsPerSecond(), 0, 'f', 1)
-                              .arg(c->errorCount())
-                              .arg(t.rttMeanMs, 0, 'f', 1));
+    const LinkState state = c->linkState();
+    m_reconnectAction->setEnabled(state != LinkState::Connected
+                                  && state != LinkState::Connecting);
+    if (state != LinkState::Connected) {
+        // A link that is down has no rate or round trip worth showing: say why and how often.
+        QString text = tr("%1: %2").arg(c->name(), c->stateText());
+        if (c->linkFailures() > 0)
+            text += tr(" · %n failed attempt(s)", nullptr, static_cast<int>(c->linkFailures()));
+        if (state == LinkState::Reconnecting || state == LinkState::Lost)
+            text += tr(" · F5 reconnects now");
+        m_linkStatus->setText(text);
+    } else {
+        m_linkStatus->setText(
+            tr("%1: %2 · %3 req/s · %4 errors · RTT %5")
+                .arg(c->name(), c->stateText())
+                .arg(c->requestsPerSecond(), 0, 'f', 1)
+                .arg(c->errorCount())
+                .arg(t.answers ? tr("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–")));
+    }
     m_linkStatus->setToolTip(c->linkReason().isEmpty()
                                  ? CoreText::settings(c->settings())
                                  : CoreText::settings(c->settings()) + QLatin1Char('\n')
                                        + CoreText::message(c->linkReason()));
+}
+
+void MainWindow::followTable(Connection *connection)
+{
+    // A table without a connection leaves the choice as it is (new tables take the current one).
+    if (connection && connection != currentConnection())
+        m_connectionsPanel->setCurrentConnection(connection);
 }
 
 void MainWindow::updateToolTargets()
@@ -693,6 +866,14 @@ bool MainWindow::settlePendingWritesBeforeQuit()
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    // Unsaved tables and a running log first, as editors do; then writes not sent yet.
+    if (!m_quitting && !m_quitConfirmed) {
+        if (!confirmQuit()) {
+            event->ignore();
+            return;
+        }
+        m_quitConfirmed = true;
+    }
     const QList<Connection *> connections = m_manager->connections();
     const bool quitNow
         = m_quitting
@@ -700,6 +881,8 @@ void MainWindow::closeEvent(QCloseEvent *event)
                             [](Connection *c) { return c->linkState() == LinkState::Closed; })
               : settlePendingWritesBeforeQuit();
     if (!quitNow) {
+        if (!m_quitting)
+            m_quitConfirmed = false; // Cancel on the writes question: ask again next time
         event->ignore();
         return;
     }

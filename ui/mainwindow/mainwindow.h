@@ -8,6 +8,7 @@
 #include <QPointer>
 
 class QDockWidget;
+class QKeySequence;
 class QLabel;
 class QMenu;
 class QTabWidget;
@@ -73,16 +74,29 @@ private:
     bool settlePendingWritesBeforeQuit();
     void createActions();
     void createTools();
+    // A Tools/View menu entry with a shortcut that shows and raises `dock`, or hides it when it
+    // is already in front.
+    QAction *dockAction(QDockWidget *dock, const QKeySequence &shortcut);
     void newConnectionDialog();
     void closeCurrentConnection();
     void rebuildRecentMenu();
     void closeWatchTable(int index);
     void renameWatchTable(int index);
     void openWatchListDialog();
-    void saveWatchListDialog();
+    // false when cancelled or failed
+    bool saveWatchListDialog();
+    WatchListFile currentWatchList() const;
+    // The tables as saved to (or loaded from) `path` (empty: untitled); the title follows.
+    void markWatchListSaved(const QString &path);
+    bool isWatchListModified() const;
+    void updateWindowTitle();
+    // Asks before quitting with unsaved tables or a running data log; false: stay open.
+    bool confirmQuit();
     void importCsvDialog();
     void updateLinkStatus();
     void updateToolTargets();
+    // Makes the connection of the table in front the current one (the tools' target).
+    void followTable(Connection *connection);
     void showStatus(const QString &text);
     QString lastDirectory() const;
     void setLastDirectory(const QString &path);
@@ -112,12 +126,17 @@ private:
     bool m_readOnly;
     // Quit chosen, links draining their queued writes: the window closes once they are closed.
     bool m_quitting = false;
+    // The unsaved-tables/logging question was answered for this quit.
+    bool m_quitConfirmed = false;
+    QString m_listPath;
+    WatchListFile m_savedList;
     ConnectionManager *m_manager;
     ConnectionsPanel *m_connectionsPanel;
     QTabWidget *m_tabs;
     QLabel *m_linkStatus;
     QLabel *m_modeLabel = nullptr;
     QMenu *m_recentMenu = nullptr;
+    QAction *m_reconnectAction = nullptr;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_toolsMenu = nullptr;
     DemoSimulator *m_demo = nullptr;

@@ -207,7 +207,7 @@ void MainWindow::applyOperatorMode(bool active)
 {
     m_readOnly = active;
     m_manager->setReadOnly(active); // every session, present and future: enforced there
-    setWindowTitle(active ? tr("FATEK Studio — Operator mode (read-only)") : tr("FATEK Studio"));
+    updateWindowTitle();
     updateModeLabel(active);
     m_toolsInitialised = false; // tools re-read the session's mode (their write buttons)
     updateToolTargets();

@@ -1,5 +1,7 @@
 #include "forcedpointsview.h"
 
+#include "messageline.h"
+
 #include "coretext.h"
 #include "discretecontrolbatch.h"
 #include "discreterange.h"
@@ -45,9 +47,9 @@ ForcedPointsView::ForcedPointsView(QWidget *parent)
     layout->addWidget(m_list, 1);
 
     auto *bottom = new QHBoxLayout;
-    m_message = new QLabel(this);
+    // Two lines reserved: the list and "Enable all" stay where they are whatever it says.
+    m_message = new MessageLine(2, this);
     m_message->setObjectName(QStringLiteral("forcedMessage"));
-    m_message->setWordWrap(true);
     bottom->addWidget(m_message, 1);
     m_enableAllButton = new QPushButton(tr("Enable all"), this);
     m_enableAllButton->setObjectName(QStringLiteral("enableAllButton"));
@@ -78,8 +80,7 @@ void ForcedPointsView::setTarget(Session *session, quint8 station, const QString
     m_plcNote.clear();
     m_forced.clear();
     showList();
-    ToolPalette::showMessage(
-        m_message, session ? tr("Press Scan to list the forced points.") : tr("No connection."),
+    m_message->setMessage(session ? tr("Press Scan to list the forced points.") : tr("No connection."),
         false);
     updateEnabled();
 }
@@ -112,7 +113,7 @@ void ForcedPointsView::scan()
     if (!m_ranges->text().trimmed().isEmpty()) {
         const Result<QList<DiscreteRange>> ranges = DiscreteRange::parseList(m_ranges->text());
         if (!ranges) {
-            ToolPalette::showMessage(m_message, QString::fromStdString(ranges.error().message),
+            m_message->setMessage(QString::fromStdString(ranges.error().message),
                                      true);
             return;
         }
@@ -126,7 +127,7 @@ void ForcedPointsView::scan()
     // Every point the PLC has: its detail status (53) says how many of each kind.
     const quint64 generation = ++m_generation;
     m_scanning = true;
-    ToolPalette::showMessage(m_message, tr("Reading the PLC's sizes \u2026"), false);
+    m_message->setMessage(tr("Reading the PLC's sizes \u2026"), false);
     updateEnabled();
     m_requests->submit(Request::detailStatus(m_station), [this,
                                                           generation](const SessionResult &result) {
@@ -174,7 +175,7 @@ void ForcedPointsView::scanRanges(const QList<DiscreteRange> &ranges, const QStr
     const quint64 generation = ++m_generation;
     const QString scanned = DiscreteRange::listText(ranges);
     m_scanning = true;
-    ToolPalette::showMessage(m_message, tr("Scanning %1 \u2026").arg(scanned), false);
+    m_message->setMessage(tr("Scanning %1 \u2026").arg(scanned), false);
     updateEnabled();
     for (const DiscreteRange &chunk : chunks) {
         m_requests->submit(
@@ -214,7 +215,7 @@ void ForcedPointsView::scanRanges(const QList<DiscreteRange> &ranges, const QStr
                 if (!note.isEmpty())
                     text += QLatin1Char(' ') + note;
                 // Keep the outcome of an Enable all visible in front of the new list.
-                ToolPalette::showMessage(m_message, (m_prefix + QLatin1Char(' ') + text).trimmed(),
+                m_message->setMessage((m_prefix + QLatin1Char(' ') + text).trimmed(),
                                          m_prefixIsError || !state->errors.isEmpty());
                 m_prefix.clear();
                 m_prefixIsError = false;
@@ -231,7 +232,7 @@ void ForcedPointsView::enableAll()
                                  .arg(DiscreteControlBatch::describe(DiscreteOp::Enable, m_forced),
                                       ToolConfirmation::target(m_station, m_connectionName));
     if (!ToolConfirmation::ask(this, tr("Enable all forced points"), question, m_confirmer)) {
-        ToolPalette::showMessage(m_message, tr("Enable all cancelled; the points stay forced."),
+        m_message->setMessage(tr("Enable all cancelled; the points stay forced."),
                                  false);
         return;
     }

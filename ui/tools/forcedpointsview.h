@@ -74,7 +74,7 @@ private:
     QPushButton *m_scanButton;
     QPushButton *m_enableAllButton;
     QListWidget *m_list;
-    QLabel *m_message;
+    class MessageLine *m_message;
 };
 
 } // namespace Fatek

@@ -1,5 +1,7 @@
 #include "forcingpanel.h"
 
+#include "messageline.h"
+
 #include "coretext.h"
 #include "discretecontrolbatch.h"
 #include "discretetablemodel.h"
@@ -107,10 +109,9 @@ ForcingPanel::ForcingPanel(QWidget *parent)
     }
     actions->addStretch(1);
     layout->addLayout(actions);
-    m_message = new QLabel(table);
+    // Two lines reserved: an outcome that comes and goes never moves the buttons and rows.
+    m_message = new MessageLine(2, table);
     m_message->setObjectName(QStringLiteral("forcingMessage"));
-    m_message->setWordWrap(true);
-    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_message);
     tabs->addTab(table, tr("Discretes"));
 
@@ -148,7 +149,7 @@ void ForcingPanel::setTarget(Session *session, quint8 station, const QString &co
     m_pendingReads = 0;
     m_reads = 0;
     m_acting = false;
-    ToolPalette::showMessage(m_message, {}, false);
+    m_message->setMessage({}, false);
     if (!session) {
         m_targetLabel->setText(tr("No connection: choose a connection and a station."));
         m_timer.stop();
@@ -171,7 +172,7 @@ void ForcingPanel::showRange(ElementType type, quint32 start, quint32 count)
 {
     const int index = m_type->findData(static_cast<int>(type));
     if (index < 0) {
-        ToolPalette::showMessage(m_message, tr("Only X, Y, M, S, T and C points can be forced."),
+        m_message->setMessage(tr("Only X, Y, M, S, T and C points can be forced."),
                                  true);
         return;
     }
@@ -203,14 +204,14 @@ void ForcingPanel::applyRangeFromControls()
                           static_cast<quint32>(m_start->value())};
     range.count = static_cast<quint32>(m_count->value());
     if (const Status s = validateSpan(range.start, range.count); !s) {
-        ToolPalette::showMessage(m_message, CoreText::message(s.error().message), true);
+        m_message->setMessage(CoreText::message(s.error().message), true);
         return;
     }
     ++m_generation;
     m_pendingReads = 0;
     m_reads = 0;
     m_model->setRange(range);
-    ToolPalette::showMessage(m_message, {}, false);
+    m_message->setMessage({}, false);
     refresh();
 }
 
@@ -229,8 +230,8 @@ void ForcingPanel::refresh()
             if (r.ok())
                 values = r.response().values;
             else
-                ToolPalette::showMessage(
-                    m_message, tr("Could not read: %1").arg(CoreText::message(r.errorText())),
+                m_message->setMessage(
+                    tr("Could not read: %1").arg(CoreText::message(r.errorText())),
                     true);
             if (states)
                 m_model->setStates(values);
@@ -257,8 +258,8 @@ void ForcingPanel::applyToSelection(DiscreteOp op)
         rows << index.row();
     std::sort(rows.begin(), rows.end());
     if (rows.isEmpty()) {
-        ToolPalette::showMessage(
-            m_message, tr("Select the points first (Ctrl/Shift-click for several)."), false);
+        m_message->setMessage(
+            tr("Select the points first (Ctrl/Shift-click for several)."), false);
         return;
     }
     QList<Address> points;
@@ -268,17 +269,17 @@ void ForcingPanel::applyToSelection(DiscreteOp op)
     const QString question
         = tr("%1 on %2?").arg(action, ToolConfirmation::target(m_station, m_connectionName));
     if (!ToolConfirmation::ask(this, tr("Forcing"), question, m_confirmer)) {
-        ToolPalette::showMessage(m_message, tr("Cancelled: nothing sent."), false);
+        m_message->setMessage(tr("Cancelled: nothing sent."), false);
         return;
     }
     m_acting = true;
     updateEnabled();
-    ToolPalette::showMessage(m_message, tr("%1 \u2026").arg(action), false);
+    m_message->setMessage(tr("%1 \u2026").arg(action), false);
     DiscreteControlBatch::run(m_requests, m_station, op, points,
                               [this, op](const DiscreteControlBatch::Outcome &outcome) {
                                   m_acting = false;
-                                  ToolPalette::showMessage(
-                                      m_message, DiscreteControlBatch::outcomeText(op, outcome),
+                                  m_message->setMessage(
+                                      DiscreteControlBatch::outcomeText(op, outcome),
                                       !outcome.errors.isEmpty());
                                   updateEnabled();
                                   refresh();

@@ -80,7 +80,7 @@ private:
     QCheckBox *m_autoRefresh;
     QTableView *m_view;
     QList<QPushButton *> m_actionButtons;
-    QLabel *m_message;
+    class MessageLine *m_message;
     ForcedPointsView *m_forced;
 };
 

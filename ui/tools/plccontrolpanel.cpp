@@ -332,7 +332,9 @@ void PlcControlPanel::showDetail()
         m_model->setText(tr("not documented for the binary protocol (see raw bytes)"));
         return;
     }
-    if (d.mainUnitType) {
+    if (const std::optional<std::string> model = d.modelName()) {
+        m_model->setText(QString::fromStdString(*model)); // as printed on the unit
+    } else if (d.mainUnitType) {
         m_model->setText(*d.mainUnitType == 0   ? tr("main unit MA/MU")
                          : *d.mainUnitType == 1 ? tr("main unit MC")
                                                 : tr("main unit type %1").arg(*d.mainUnitType));

@@ -158,11 +158,19 @@ void RawSendBar::send()
     const auto header = FrameText::header(frame);
     const bool harmless = header && isKnownCommand(header->command)
                           && !isWriteCommand(static_cast<Command>(header->command));
-    if (!harmless) {
-        const QString what = header ? tr("command %1 to station %2")
-                                          .arg(header->command, 2, 16, QLatin1Char('0'))
-                                          .arg(header->station)
-                                    : tr("an unrecognized frame");
+    // In operator mode the session refuses it with its own message: no question first.
+    if (!harmless && !m_session->isReadOnly()) {
+        // Name the command as the PLC manual does ("RUN/STOP control"), with its code.
+        const QString what
+            = header ? (isKnownCommand(header->command)
+                            ? tr("%1 (command %2) to station %3")
+                                  .arg(CoreText::commandName(static_cast<Command>(header->command)))
+                                  .arg(QString::number(header->command, 16).toUpper())
+                                  .arg(header->station)
+                            : tr("unknown command %1 to station %2")
+                                  .arg(QString::number(header->command, 16).toUpper())
+                                  .arg(header->station))
+                     : tr("an unrecognized frame");
         const QString question = tr("Send %1 (%2) on %3? It may change the PLC.")
                                      .arg(what, FrameText::toAscii(frame),
                                           ToolConfirmation::target(m_station, m_connectionName));

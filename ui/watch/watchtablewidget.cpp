@@ -3,6 +3,8 @@
 #include "connectionmanager.h"
 #include "coretext.h"
 #include "forcedmarks.h"
+#include "messageline.h"
+#include "toolconfirmation.h"
 #include "watchdelegate.h"
 #include "watchinput.h"
 #include "watchtablemodel.h"
@@ -19,7 +21,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableView>
@@ -80,11 +81,10 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     bar->addWidget(m_pause);
     bar->addWidget(m_confirmBox);
 
-    m_message = new QLabel(this);
+    // One line, always there: a message that comes and goes never shifts the rows under the
+    // pointer. The whole text is in the tooltip and in the status bar.
+    m_message = new MessageLine(1, this);
     m_message->setObjectName(QStringLiteral("messageLabel"));
-    m_message->setWordWrap(true);
-    m_message->setVisible(false);
-    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     m_view->setObjectName(QStringLiteral("watchView"));
     m_view->setModel(m_model);
@@ -247,6 +247,7 @@ void WatchTableWidget::setConnection(Connection *connection)
     m_forcedMarks->setSession(connection ? connection->session() : nullptr);
     m_connectionCombo->setCurrentIndex(m_manager->indexOf(connection));
     pushPollList();
+    Q_EMIT connectionChanged(connection);
 }
 
 void WatchTableWidget::pushPollList()
@@ -326,12 +327,7 @@ QString WatchTableWidget::message() const
 
 void WatchTableWidget::showMessage(const QString &text, bool error)
 {
-    m_message->setText(text);
-    m_message->setVisible(!text.isEmpty());
-    // The palette's own role for attention-worthy text keeps light and dark themes readable.
-    m_message->setForegroundRole(error ? QPalette::HighlightedText : QPalette::WindowText);
-    m_message->setBackgroundRole(error ? QPalette::Highlight : QPalette::Window);
-    m_message->setAutoFillBackground(error);
+    m_message->setMessage(text, error);
     Q_EMIT statusMessage(text);
 }
 
@@ -342,17 +338,43 @@ bool WatchTableWidget::addFromText(const QString &text)
         showMessage(CoreText::message(addresses.error().message), true);
         return false;
     }
+    QList<Address> wanted = *addresses;
+    QList<Address> present;
+    for (const WatchItemSpec &item : m_model->items())
+        present << item.address;
     QList<WatchItemSpec> items;
-    for (const Address &address : *addresses) {
+    int companions = 0;
+    auto append = [&](const Address &address) {
         WatchItemSpec item;
         item.address = address;
         item.station = defaultStation();
         item.format = ValueFormat::defaultFormat(address);
         items.append(item);
+    };
+    for (const Address &address : std::as_const(wanted)) {
+        append(address);
+        // A timer's or counter's contact alone says little: its current value goes beside it
+        // (RT0 with T0; RC with 16-bit counters C0-C199), unless the table or the input has it.
+        std::optional<Address> value;
+        if (address.type == ElementType::T)
+            value = Address{ElementType::RT, address.number};
+        else if (address.type == ElementType::C && address.number < 200)
+            value = Address{ElementType::RC, address.number};
+        if (value && !present.contains(*value) && !wanted.contains(*value)) {
+            append(*value);
+            present << *value;
+            ++companions;
+        }
     }
     m_model->addItems(items);
     m_addEdit->clear();
-    showMessage(tr("Added %n item(s).", nullptr, static_cast<int>(items.size())), false);
+    const int typed = static_cast<int>(items.size()) - companions;
+    showMessage(companions == 0
+                    ? tr("Added %n item(s).", nullptr, typed)
+                    : tr("Added %n item(s), each timer and counter contact with its current "
+                         "value (RT/RC) beside it.",
+                         nullptr, typed),
+                false);
     return true;
 }
 
@@ -382,9 +404,10 @@ void WatchTableWidget::write(int row, quint64 raw)
     // In operator mode the session refuses the write with its own message: no question first.
     if (confirmWrites() && !m_connection->session()->isReadOnly()) {
         const QString question = tr("Write %1 to the PLC on %2?").arg(what, m_connection->name());
+        // One rule for every question before the PLC changes: the safe answer is the default,
+        // so a second Enter after typing the value does not write.
         const bool go = m_confirm ? m_confirm(this, question)
-                                  : QMessageBox::question(this, tr("Write Value"), question)
-                                        == QMessageBox::Yes;
+                                  : ToolConfirmation::ask(this, tr("Write Value"), question, {});
         if (!go) {
             showMessage(tr("Write of %1 cancelled.").arg(what), false);
             return;
@@ -431,6 +454,13 @@ void WatchTableWidget::writeDialog()
         return;
     const int row = current.row();
     const WatchItemSpec item = m_model->item(row);
+    // Operator mode: say so at once instead of asking for a value that will be refused.
+    if (m_connection && m_connection->session()->isReadOnly()) {
+        showMessage(tr("Operator mode (read-only): %1 cannot be written.")
+                        .arg(QString::fromStdString(item.address.toString())),
+                    true);
+        return;
+    }
     bool ok = false;
     const QString text = QInputDialog::getText(
         this, tr("Write Value"),

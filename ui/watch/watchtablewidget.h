@@ -73,6 +73,8 @@ public:
 Q_SIGNALS:
     void statusMessage(const QString &text);
     void nameChanged(const QString &name);
+    // The table polls through another connection (nullptr: none).
+    void connectionChanged(Fatek::Connection *connection);
     // "Add to Trend" on the selected rows (ascending row numbers).
     void addToTrendRequested(const QList<int> &rows);
 
@@ -96,7 +98,7 @@ private:
     QSpinBox *m_interval;
     QToolButton *m_pause;
     QCheckBox *m_confirmBox;
-    QLabel *m_message;
+    class MessageLine *m_message;
     QAction *m_swapAction;
     ConfirmHandler m_confirm;
     ForcedMarks *m_forcedMarks;

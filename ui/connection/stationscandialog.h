@@ -1,0 +1,50 @@
+#pragma once
+
+#include <QDialog>
+#include <QPointer>
+
+class QLabel;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace Fatek {
+
+class Connection;
+class StationScanner;
+
+// Tools > Scan Stations: asks every station of a range on the current connection's link (an
+// RS-485 bus, typically) who answers, lists them with RUN/STOP, and makes the chosen one the
+// connection's station. The asking is core's StationScanner, as for `fatek-cli scan`.
+class StationScanDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    explicit StationScanDialog(Connection *connection, QWidget *parent = nullptr);
+
+    void start();
+    bool isScanning() const;
+    // Stations that answered, in order.
+    QList<int> foundStations() const;
+
+private:
+    void onFound(int station, bool running);
+    void onFinished();
+    void useSelected();
+    void updateButtons();
+
+    QPointer<Connection> m_connection;
+    StationScanner *m_scanner = nullptr;
+    QSpinBox *m_first;
+    QSpinBox *m_last;
+    QSpinBox *m_timeout;
+    QPushButton *m_start;
+    QPushButton *m_use;
+    QProgressBar *m_progress;
+    QListWidget *m_list;
+    QLabel *m_status;
+};
+
+} // namespace Fatek
