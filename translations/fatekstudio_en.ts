@@ -2501,6 +2501,10 @@ Meaning %4</translation>
             <source>code</source>
             <translation>code</translation>
         </message>
+        <message>
+            <source>Watch list to open (.json); with a link option its tables watch that connection.</source>
+            <translation>Watch list to open (.json); with a link option its tables watch that connection.</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::Connection</name>

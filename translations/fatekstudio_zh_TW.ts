@@ -2491,6 +2491,10 @@ Meaning %4</source>
             <source>code</source>
             <translation>代碼</translation>
         </message>
+        <message>
+            <source>Watch list to open (.json); with a link option its tables watch that connection.</source>
+            <translation>要開啟的監看清單（.json）；搭配連線選項時，其表格監看該連線。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::Connection</name>
