@@ -3,6 +3,7 @@
 #include "request.h"
 
 #include <QCommandLineParser>
+#include <QCoreApplication>
 
 namespace Fatek {
 
@@ -47,19 +48,22 @@ struct OptionText
     const char *description;
 };
 
-// The help texts of commandLineOptions(), in the order of names().
+// The help texts of commandLineOptions(), in the order of names(); fatek-studio shows them in
+// its language (context "main", scanned by lupdate with app/fatek-studio/main.cpp).
 const OptionText optionTexts[] = {
-    {"tcp", "host[:port]", "Open a FATEK link over TCP (port 500 if not given)."},
-    {"udp", "host[:port]", "Open a FATEK link over UDP (port 500 if not given)."},
-    {"serial", "device", "Open a FATEK link on a serial line."},
-    {"baud", "n", "With --serial: speed (9600)."},
-    {"parity", "N|E|O", "With --serial: parity (E)."},
-    {"data", "7|8", "With --serial: data bits (7)."},
-    {"stop", "1|2", "With --serial: stop bits (1)."},
-    {"protocol", "facon|binary|auto", "Protocol on the link (auto)."},
-    {"station", "n", "Station number of the link (1)."},
-    {"timeout", "ms", "Answer timeout per attempt (1000)."},
-    {"retries", "n", "Extra attempts after a timeout (2)."},
+    {"tcp", "host[:port]",
+     QT_TRANSLATE_NOOP("main", "Open a FATEK link over TCP (port 500 if not given).")},
+    {"udp", "host[:port]",
+     QT_TRANSLATE_NOOP("main", "Open a FATEK link over UDP (port 500 if not given).")},
+    {"serial", "device", QT_TRANSLATE_NOOP("main", "Open a FATEK link on a serial line.")},
+    {"baud", "n", QT_TRANSLATE_NOOP("main", "With --serial: speed (9600).")},
+    {"parity", "N|E|O", QT_TRANSLATE_NOOP("main", "With --serial: parity (E).")},
+    {"data", "7|8", QT_TRANSLATE_NOOP("main", "With --serial: data bits (7).")},
+    {"stop", "1|2", QT_TRANSLATE_NOOP("main", "With --serial: stop bits (1).")},
+    {"protocol", "facon|binary|auto", QT_TRANSLATE_NOOP("main", "Protocol on the link (auto).")},
+    {"station", "n", QT_TRANSLATE_NOOP("main", "Station number of the link (1).")},
+    {"timeout", "ms", QT_TRANSLATE_NOOP("main", "Answer timeout per attempt (1000).")},
+    {"retries", "n", QT_TRANSLATE_NOOP("main", "Extra attempts after a timeout (2).")},
 };
 
 } // namespace
@@ -121,7 +125,8 @@ QList<QCommandLineOption> LinkArguments::commandLineOptions()
 {
     QList<QCommandLineOption> options;
     for (const OptionText &o : optionTexts)
-        options << QCommandLineOption(QLatin1String(o.name), QLatin1String(o.description),
+        options << QCommandLineOption(QLatin1String(o.name),
+                                      QCoreApplication::translate("main", o.description),
                                       QLatin1String(o.valueName));
     return options;
 }
