@@ -2,6 +2,7 @@
 # CTest packaging_files: the packaged text files are valid and the man pages are complete.
 # Usage: check-files.sh FATEK_CLI FATEK_SIM FATEK_STUDIO
 #  - the desktop file passes desktop-file-validate (when installed);
+#  - the watch-list MIME type XML is valid and registered by update-mime-database (when installed);
 #  - every man page renders with groff -man -ww without a warning;
 #  - every long option a program's --help lists is in its man page (so a new option cannot
 #    ship undocumented).
@@ -14,6 +15,34 @@ if command -v desktop-file-validate >/dev/null; then
     desktop-file-validate "$here/linux/fatek-studio.desktop" || status=1
 else
     echo "desktop-file-validate not installed: desktop file not checked"
+fi
+
+# The watch-list MIME type: well-formed XML that update-mime-database accepts and that recognises
+# a saved watch list (by content: it keeps the .json extension).
+mime_xml="$here/linux/fatek-studio.xml"
+if command -v xmllint >/dev/null; then
+    xmllint --noout "$mime_xml" || status=1
+else
+    echo "xmllint not installed: MIME XML well-formedness not checked"
+fi
+grep -q '^MimeType=application/x-fatek-watchlist;$' "$here/linux/fatek-studio.desktop" ||
+    { echo "fatek-studio.desktop does not open application/x-fatek-watchlist" >&2; status=1; }
+grep -q 'type="application/x-fatek-watchlist"' "$mime_xml" ||
+    { echo "$mime_xml does not define application/x-fatek-watchlist" >&2; status=1; }
+if command -v update-mime-database >/dev/null; then
+    mime_tmp=$(mktemp -d)
+    mkdir -p "$mime_tmp/mime/packages"
+    cp "$mime_xml" "$mime_tmp/mime/packages/"
+    if ! XDG_DATA_HOME="$mime_tmp" update-mime-database "$mime_tmp/mime" 2>"$mime_tmp/err" || [ -s "$mime_tmp/err" ]; then
+        echo "update-mime-database refuses $mime_xml:" >&2
+        cat "$mime_tmp/err" >&2
+        status=1
+    fi
+    grep -q '^application/x-fatek-watchlist$' "$mime_tmp/mime/types" 2>/dev/null ||
+        { echo "update-mime-database did not register application/x-fatek-watchlist" >&2; status=1; }
+    rm -rf "$mime_tmp"
+else
+    echo "update-mime-database not installed: MIME type not checked"
 fi
 
 check_page() {
@@ -40,5 +69,5 @@ check_page() {
 check_page "$1" "$here/man/fatek-cli.1"
 check_page "$2" "$here/man/fatek-sim.1"
 check_page "$3" "$here/man/fatek-studio.1"
-[ $status -eq 0 ] && echo "desktop file and man pages OK"
+[ $status -eq 0 ] && echo "desktop file, MIME type and man pages OK"
 exit $status

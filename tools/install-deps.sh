@@ -21,6 +21,8 @@ packages=(
     socat python3 git clang-format
     # packaging and its install test (tools/package-test.sh)
     dpkg-dev file desktop-file-utils groff-base man-db gzip
+    # the watch-list MIME type: update-mime-database, xmllint, gio (content sniffing)
+    shared-mime-info libxml2-utils libglib2.0-bin
 )
 
 missing=()

@@ -70,6 +70,7 @@ dpkg-deb -c "$deb" | awk '{print $1, $6}' >"$work/contents.txt"
 expected=(
     ./usr/bin/fatek-studio ./usr/bin/fatek-cli ./usr/bin/fatek-sim
     ./usr/share/applications/fatek-studio.desktop
+    ./usr/share/mime/packages/fatek-studio.xml
     ./usr/share/icons/hicolor/scalable/apps/fatek-studio.svg
     ./usr/share/man/man1/fatek-cli.1.gz ./usr/share/man/man1/fatek-sim.1.gz
     ./usr/share/man/man1/fatek-studio.1.gz
@@ -90,6 +91,7 @@ fi
 echo "$(wc -l <"$work/contents.txt") entries, all expected files present"
 tar -tzf "$tgz" >"$work/tgz.txt"
 for f in bin/fatek-studio bin/fatek-cli bin/fatek-sim share/applications/fatek-studio.desktop \
+    share/mime/packages/fatek-studio.xml \
     share/man/man1/fatek-cli.1.gz share/icons/hicolor/48x48/apps/fatek-studio.png; do
     grep -q "/$f\$" "$work/tgz.txt" || fail "the .tar.gz lacks $f"
 done
@@ -100,6 +102,33 @@ root="$work/root"
 dpkg-deb -x "$deb" "$root"
 if command -v desktop-file-validate >/dev/null; then
     desktop-file-validate "$root/usr/share/applications/fatek-studio.desktop" || fail "invalid .desktop file"
+fi
+# The desktop entry opens watch lists (a file argument, their MIME type), and that type is
+# installed and registered by update-mime-database (what dpkg's shared-mime-info trigger runs).
+grep -qx 'Exec=fatek-studio %f' "$root/usr/share/applications/fatek-studio.desktop" ||
+    fail "the .desktop Exec= takes no file argument"
+grep -qx 'MimeType=application/x-fatek-watchlist;' "$root/usr/share/applications/fatek-studio.desktop" ||
+    fail "the .desktop file does not list application/x-fatek-watchlist"
+mime_xml="$root/usr/share/mime/packages/fatek-studio.xml"
+[ -s "$mime_xml" ] || fail "the .deb lacks the watch-list MIME type"
+if command -v update-mime-database >/dev/null; then
+    mkdir -p "$work/xdg/mime/packages"
+    cp "$mime_xml" "$work/xdg/mime/packages/"
+    XDG_DATA_HOME="$work/xdg" update-mime-database "$work/xdg/mime" ||
+        fail "update-mime-database refuses the installed MIME type"
+    grep -qx 'application/x-fatek-watchlist' "$work/xdg/mime/types" ||
+        fail "update-mime-database did not register application/x-fatek-watchlist"
+    if command -v gio >/dev/null; then
+        # A saved watch list (it keeps .json) is told from other JSON by its content.
+        printf '{\n    "format": "fatek-studio-watchlist",\n    "tables": [\n    ],\n    "version": 1\n}\n' \
+            >"$work/line3.json"
+        echo '{"other": 1}' >"$work/other.json"
+        XDG_DATA_HOME="$work/xdg" gio info -a standard::content-type "$work/line3.json" |
+            grep -q 'application/x-fatek-watchlist' || fail "a saved watch list is not recognised"
+        XDG_DATA_HOME="$work/xdg" gio info -a standard::content-type "$work/other.json" |
+            grep -q 'application/json' || fail "other JSON is taken for a watch list"
+    fi
+    echo "MIME type application/x-fatek-watchlist registered"
 fi
 for page in fatek-cli fatek-sim fatek-studio; do
     warnings=$(zcat "$root/usr/share/man/man1/$page.1.gz" | groff -man -Tutf8 -ww -z 2>&1 || true)
@@ -142,6 +171,17 @@ check_tree() {
     echo "\$ fatek-cli --tcp 127.0.0.1:$port --protocol binary read R100 2"
     "$bin/fatek-cli" --tcp "127.0.0.1:$port" --protocol binary read R100 2 ||
         fail "fatek-cli could not read from fatek-sim"
+    # The operator's shortcut: a link and a watch list given at start, values shown from fatek-sim.
+    printf '{"format": "fatek-studio-watchlist", "version": 1, "tables": [{"name": "Line", "items": [{"address": "R100"}, {"address": "M0"}]}]}\n' \
+        >"$work/startup.json"
+    echo "\$ fatek-studio --tcp 127.0.0.1:$port startup.json --screenshot"
+    local err
+    err=$(HOME="$work/home" XDG_RUNTIME_DIR="$work/run" QT_QPA_PLATFORM=offscreen \
+        timeout 120 "$bin/fatek-studio" --tcp "127.0.0.1:$port" --station 1 "$work/startup.json" \
+        --screenshot "$work/startup.png" 2>&1 >/dev/null) ||
+        fail "fatek-studio --tcp ... FILE --screenshot failed: $err"
+    ! grep -q "no values arrived" <<<"$err" || fail "fatek-studio showed no values from fatek-sim: $err"
+    file "$work/startup.png" | grep -q "PNG image data" || fail "no screenshot of the start-up list"
     kill "$sim_pid"
     wait "$sim_pid" || true
     sim_pid=""

@@ -2501,6 +2501,54 @@ Meaning %4</translation>
             <source>code</source>
             <translation>code</translation>
         </message>
+        <message>
+            <source>Watch list to open (.json); with a link option its tables watch that connection.</source>
+            <translation>Watch list to open (.json); with a link option its tables watch that connection.</translation>
+        </message>
+        <message>
+            <source>Open a FATEK link over TCP (port 500 if not given).</source>
+            <translation>Open a FATEK link over TCP (port 500 if not given).</translation>
+        </message>
+        <message>
+            <source>Open a FATEK link over UDP (port 500 if not given).</source>
+            <translation>Open a FATEK link over UDP (port 500 if not given).</translation>
+        </message>
+        <message>
+            <source>Open a FATEK link on a serial line.</source>
+            <translation>Open a FATEK link on a serial line.</translation>
+        </message>
+        <message>
+            <source>With --serial: speed (9600).</source>
+            <translation>With --serial: speed (9600).</translation>
+        </message>
+        <message>
+            <source>With --serial: parity (E).</source>
+            <translation>With --serial: parity (E).</translation>
+        </message>
+        <message>
+            <source>With --serial: data bits (7).</source>
+            <translation>With --serial: data bits (7).</translation>
+        </message>
+        <message>
+            <source>With --serial: stop bits (1).</source>
+            <translation>With --serial: stop bits (1).</translation>
+        </message>
+        <message>
+            <source>Protocol on the link (auto).</source>
+            <translation>Protocol on the link (auto).</translation>
+        </message>
+        <message>
+            <source>Station number of the link (1).</source>
+            <translation>Station number of the link (1).</translation>
+        </message>
+        <message>
+            <source>Answer timeout per attempt (1000).</source>
+            <translation>Answer timeout per attempt (1000).</translation>
+        </message>
+        <message>
+            <source>Extra attempts after a timeout (2).</source>
+            <translation>Extra attempts after a timeout (2).</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::Connection</name>

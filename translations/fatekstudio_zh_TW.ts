@@ -2491,6 +2491,54 @@ Meaning %4</source>
             <source>code</source>
             <translation>代碼</translation>
         </message>
+        <message>
+            <source>Watch list to open (.json); with a link option its tables watch that connection.</source>
+            <translation>要開啟的監看清單（.json）；搭配連線選項時，其表格監看該連線。</translation>
+        </message>
+        <message>
+            <source>Open a FATEK link over TCP (port 500 if not given).</source>
+            <translation>以 TCP 開啟 FATEK 連線（未指定時埠號為 500）。</translation>
+        </message>
+        <message>
+            <source>Open a FATEK link over UDP (port 500 if not given).</source>
+            <translation>以 UDP 開啟 FATEK 連線（未指定時埠號為 500）。</translation>
+        </message>
+        <message>
+            <source>Open a FATEK link on a serial line.</source>
+            <translation>在序列埠上開啟 FATEK 連線。</translation>
+        </message>
+        <message>
+            <source>With --serial: speed (9600).</source>
+            <translation>搭配 --serial：鮑率（9600）。</translation>
+        </message>
+        <message>
+            <source>With --serial: parity (E).</source>
+            <translation>搭配 --serial：同位檢查（E）。</translation>
+        </message>
+        <message>
+            <source>With --serial: data bits (7).</source>
+            <translation>搭配 --serial：資料位元（7）。</translation>
+        </message>
+        <message>
+            <source>With --serial: stop bits (1).</source>
+            <translation>搭配 --serial：停止位元（1）。</translation>
+        </message>
+        <message>
+            <source>Protocol on the link (auto).</source>
+            <translation>連線使用的通訊協定（auto）。</translation>
+        </message>
+        <message>
+            <source>Station number of the link (1).</source>
+            <translation>連線的站號（1）。</translation>
+        </message>
+        <message>
+            <source>Answer timeout per attempt (1000).</source>
+            <translation>每次嘗試的回應逾時（1000）。</translation>
+        </message>
+        <message>
+            <source>Extra attempts after a timeout (2).</source>
+            <translation>逾時後的額外重試次數（2）。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::Connection</name>

@@ -1,5 +1,6 @@
 #include "clioptions.h"
 
+#include "linkarguments.h"
 #include "request.h"
 #include "watchlist.h"
 
@@ -10,48 +11,6 @@ namespace Fatek {
 namespace {
 
 using Kind = LinkSettings::Kind;
-
-bool parseInt(const QString &text, qint64 min, qint64 max, qint64 *out)
-{
-    bool ok = false;
-    const qint64 v = text.trimmed().toLongLong(&ok, 10);
-    if (!ok || v < min || v > max)
-        return false;
-    *out = v;
-    return true;
-}
-
-// "plc1:502", "plc1" (port 500), "[::1]:502".
-bool parseHostPort(const QString &text, QString *host, quint16 *port)
-{
-    QString h = text.trimmed();
-    QString p;
-    if (h.startsWith(QLatin1Char('['))) {
-        const qsizetype close = h.indexOf(QLatin1Char(']'));
-        if (close < 0)
-            return false;
-        const QString rest = h.mid(close + 1);
-        if (rest.startsWith(QLatin1Char(':')))
-            p = rest.mid(1);
-        else if (!rest.isEmpty())
-            return false;
-        h = h.mid(1, close - 1);
-    } else if (h.count(QLatin1Char(':')) == 1) {
-        p = h.section(QLatin1Char(':'), 1);
-        h = h.section(QLatin1Char(':'), 0, 0);
-    }
-    if (h.isEmpty())
-        return false;
-    *host = h;
-    *port = 500;
-    if (!p.isEmpty()) {
-        qint64 v = 0;
-        if (!parseInt(p, 1, 65535, &v))
-            return false;
-        *port = static_cast<quint16>(v);
-    }
-    return true;
-}
 
 Result<Address> parseAddress(const QString &text)
 {
@@ -103,7 +62,7 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
     };
     auto countArg = [&](const QString &text, std::uint32_t max, std::uint32_t *out) -> QString {
         qint64 c = 0;
-        if (!parseInt(text, 1, max, &c))
+        if (!parseIntInRange(text, 1, max, &c))
             return QStringLiteral("%1: COUNT must be 1..%2, not \"%3\".")
                 .arg(cmd)
                 .arg(max)
@@ -257,9 +216,9 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
             static const QRegularExpression range(QStringLiteral("^(\\d+)(?:\\.\\.(\\d+))?$"));
             const auto m = range.match(positional.at(0).trimmed());
             qint64 first = 0, last = 0;
-            if (!m.hasMatch() || !parseInt(m.captured(1), 1, Limits::maxStation, &first)
-                || !parseInt(m.captured(2).isEmpty() ? m.captured(1) : m.captured(2), 1,
-                             Limits::maxStation, &last)
+            if (!m.hasMatch() || !parseIntInRange(m.captured(1), 1, Limits::maxStation, &first)
+                || !parseIntInRange(m.captured(2).isEmpty() ? m.captured(1) : m.captured(2), 1,
+                                    Limits::maxStation, &last)
                 || last < first)
                 return fail(
                     QStringLiteral("scan takes a station range like 1..16 (1..254), not \"%1\".")
@@ -416,23 +375,19 @@ CliParseResult parseCommandLine(const QStringList &arguments)
 {
     CliOptions o;
     QStringList positional;
-    QString tcp, udp, serial, protocol, baud, parity, data, stop;
+    LinkArguments link;
     bool linkCount = false;
-    int links = 0;
     bool forceHex = false, forceAscii = false;
     bool countGiven = false, intervalGiven = false, cyclesGiven = false, frameGiven = false;
-    QString countText, intervalText, cyclesText, stationText, timeoutText, retriesText;
+    QString countText, intervalText, cyclesText;
     auto fail = [](const QString &message) {
         return CliParseResult{std::nullopt, message};
     };
 
-    const QStringList valued
-        = {QStringLiteral("tcp"),      QStringLiteral("udp"),      QStringLiteral("serial"),
-           QStringLiteral("baud"),     QStringLiteral("parity"),   QStringLiteral("data"),
-           QStringLiteral("stop"),     QStringLiteral("protocol"), QStringLiteral("station"),
-           QStringLiteral("timeout"),  QStringLiteral("retries"),  QStringLiteral("count"),
-           QStringLiteral("interval"), QStringLiteral("cycles"),   QStringLiteral("output"),
-           QStringLiteral("format")};
+    const QStringList valued = LinkArguments::names()
+                               + QStringList{QStringLiteral("count"), QStringLiteral("interval"),
+                                             QStringLiteral("cycles"), QStringLiteral("output"),
+                                             QStringLiteral("format")};
     bool onlyPositional = false;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
         const QString &arg = arguments.at(i);
@@ -467,32 +422,9 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                     return fail(QStringLiteral("--%1 needs a value.").arg(name));
                 value = arguments.at(++i);
             }
-            if (name == QLatin1String("tcp")) {
-                tcp = value;
-                ++links;
-            } else if (name == QLatin1String("udp")) {
-                udp = value;
-                ++links;
-            } else if (name == QLatin1String("serial")) {
-                serial = value;
-                ++links;
-            } else if (name == QLatin1String("baud"))
-                baud = value;
-            else if (name == QLatin1String("parity"))
-                parity = value;
-            else if (name == QLatin1String("data"))
-                data = value;
-            else if (name == QLatin1String("stop"))
-                stop = value;
-            else if (name == QLatin1String("protocol"))
-                protocol = value;
-            else if (name == QLatin1String("station"))
-                stationText = value;
-            else if (name == QLatin1String("timeout"))
-                timeoutText = value;
-            else if (name == QLatin1String("retries"))
-                retriesText = value;
-            else if (name == QLatin1String("count")) {
+            if (link.set(name, value))
+                continue;
+            if (name == QLatin1String("count")) {
                 countText = value;
                 countGiven = true;
             } else if (name == QLatin1String("interval")) {
@@ -541,88 +473,20 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         return {o, {}};
 
     // The link.
-    if (links + (linkCount ? 1 : 0) == 0)
-        return fail(QStringLiteral(
-            "No link given: use --tcp HOST[:PORT], --udp HOST[:PORT], --serial DEV or --sim."));
-    if (links + (linkCount ? 1 : 0) > 1)
-        return fail(QStringLiteral("Give only one of --tcp, --udp, --serial and --sim."));
-    if (serial.isEmpty()
-        && !(baud.isEmpty() && parity.isEmpty() && data.isEmpty() && stop.isEmpty()))
-        return fail(QStringLiteral("--baud, --parity, --data and --stop only apply to --serial."));
-    if (!tcp.isEmpty() || !udp.isEmpty()) {
-        QString host;
-        quint16 port = 500;
-        const QString &text = tcp.isEmpty() ? udp : tcp;
-        if (!parseHostPort(text, &host, &port))
-            return fail(
-                QStringLiteral("--%1 needs HOST or HOST:PORT (port 1..65535), not \"%2\".")
-                    .arg(tcp.isEmpty() ? QStringLiteral("udp") : QStringLiteral("tcp"), text));
-        o.link = tcp.isEmpty() ? LinkSettings::udp(host, port) : LinkSettings::tcp(host, port);
-    } else if (!serial.isEmpty()) {
-        o.link = LinkSettings::serial(serial);
-        qint64 v = 0;
-        if (!baud.isEmpty()) {
-            if (!parseInt(baud, 50, 10000000, &v))
-                return fail(
-                    QStringLiteral("--baud needs a speed like 9600, not \"%1\".").arg(baud));
-            o.link.baudRate = static_cast<qint32>(v);
-        }
-        if (!parity.isEmpty()) {
-            const QString p = parity.toUpper();
-            if (p == QLatin1String("N") || p == QLatin1String("NONE"))
-                o.link.parity = LinkSettings::Parity::None;
-            else if (p == QLatin1String("E") || p == QLatin1String("EVEN"))
-                o.link.parity = LinkSettings::Parity::Even;
-            else if (p == QLatin1String("O") || p == QLatin1String("ODD"))
-                o.link.parity = LinkSettings::Parity::Odd;
-            else
-                return fail(QStringLiteral("--parity takes N, E or O, not \"%1\".").arg(parity));
-        }
-        if (!data.isEmpty()) {
-            if (!parseInt(data, 7, 8, &v))
-                return fail(QStringLiteral("--data takes 7 or 8, not \"%1\".").arg(data));
-            o.link.dataBits = static_cast<int>(v);
-        }
-        if (!stop.isEmpty()) {
-            if (!parseInt(stop, 1, 2, &v))
-                return fail(QStringLiteral("--stop takes 1 or 2, not \"%1\".").arg(stop));
-            o.link.stopBits = static_cast<int>(v);
-        }
-    }
-    o.link.autoReconnect = false; // a script wants the failure, not a retry loop
-    o.link.protocol
+    LinkArgumentRules rules;
+    rules.alternative = QStringLiteral("--sim");
+    rules.alternativeGiven = linkCount;
+    rules.defaultProtocol
         = o.sim ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Auto;
-    if (!protocol.isEmpty()) {
-        const QString p = protocol.toLower();
-        o.protocolGiven = true;
-        if (p == QLatin1String("facon"))
-            o.link.protocol = LinkSettings::ProtocolChoice::Facon;
-        else if (p == QLatin1String("binary"))
-            o.link.protocol = LinkSettings::ProtocolChoice::Binary;
-        else if (p == QLatin1String("auto"))
-            o.link.protocol = LinkSettings::ProtocolChoice::Auto;
-        else
-            return fail(QStringLiteral("--protocol takes facon, binary or auto, not \"%1\".")
-                            .arg(protocol));
-    }
+    const LinkArgumentsResult resolved = resolveLinkArguments(link, rules);
+    if (!resolved.error.isEmpty())
+        return fail(resolved.error);
+    o.link = resolved.link;
+    o.link.autoReconnect = false; // a script wants the failure, not a retry loop
+    o.protocolGiven = resolved.protocolGiven;
+    o.timeoutGiven = resolved.timeoutGiven;
+    o.station = resolved.station;
     qint64 v = 0;
-    if (!stationText.isEmpty()) {
-        if (!parseInt(stationText, 0, Limits::maxStation, &v))
-            return fail(QStringLiteral("--station takes 0..254, not \"%1\".").arg(stationText));
-        o.station = static_cast<std::uint8_t>(v);
-    }
-    if (!timeoutText.isEmpty()) {
-        if (!parseInt(timeoutText, 10, 60000, &v))
-            return fail(
-                QStringLiteral("--timeout takes 10..60000 ms, not \"%1\".").arg(timeoutText));
-        o.link.timeoutMs = static_cast<int>(v);
-        o.timeoutGiven = true;
-    }
-    if (!retriesText.isEmpty()) {
-        if (!parseInt(retriesText, 0, 10, &v))
-            return fail(QStringLiteral("--retries takes 0..10, not \"%1\".").arg(retriesText));
-        o.link.retries = static_cast<int>(v);
-    }
 
     // The commands, separated by --then.
     if (positional.isEmpty())
@@ -654,12 +518,12 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     if ((frameGiven || forceHex || forceAscii) && !uses("raw"))
         return fail(QStringLiteral("--frame, --hex and --ascii only apply to raw."));
     if (countGiven) {
-        if (!parseInt(countText, 1, 100000, &v))
+        if (!parseIntInRange(countText, 1, 100000, &v))
             return fail(QStringLiteral("--count takes 1..100000, not \"%1\".").arg(countText));
         o.loopbackCount = static_cast<int>(v);
     }
     if (intervalGiven) {
-        if (!parseInt(intervalText, WatchList::MinIntervalMs, WatchList::MaxIntervalMs, &v))
+        if (!parseIntInRange(intervalText, WatchList::MinIntervalMs, WatchList::MaxIntervalMs, &v))
             return fail(QStringLiteral("--interval takes %1..%2 ms, not \"%3\".")
                             .arg(WatchList::MinIntervalMs)
                             .arg(WatchList::MaxIntervalMs)
@@ -667,7 +531,7 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         o.intervalMs = static_cast<int>(v);
     }
     if (cyclesGiven) {
-        if (!parseInt(cyclesText, 1, 100000000, &v))
+        if (!parseIntInRange(cyclesText, 1, 100000000, &v))
             return fail(
                 QStringLiteral("--cycles takes a positive number, not \"%1\".").arg(cyclesText));
         o.cycles = static_cast<int>(v);

@@ -1,8 +1,11 @@
 // fatek-studio: the GUI. Options: --demo (embedded simulator and a ready watch table),
 // --read-only (operator mode), --screenshot FILE (render the window to PNG after startup, exit),
-// --language CODE (en, zh_TW: overrides the system locale and the View > Language choice).
+// --language CODE (en, zh_TW: overrides the system locale and the View > Language choice), the
+// link options of fatek-cli (--tcp, --udp, --serial, ... : open that connection at start) and a
+// watch-list FILE (opened at start, its tables bound to that connection).
 #include "connectionmanager.h"
 #include "languagemenu.h"
+#include "linkarguments.h"
 #include "mainwindow.h"
 
 #include <QApplication>
@@ -31,6 +34,10 @@ void scheduleScreenshot(Fatek::MainWindow *window, const QString &path, bool dem
             if (!deadline->hasExpired() && (*settle)-- > 0)
                 return;
             timer->stop();
+            if (!window->hasValues() && !window->connections()->connections().isEmpty())
+                std::fprintf(stderr,
+                             "fatek-studio: no values arrived within 15 s; the screenshot shows "
+                             "the table without them\n");
             // A tool opened for the picture gets a few settle ticks to show its first answers.
             QWidget *target = window;
             if (!tool.isEmpty()) {
@@ -94,6 +101,27 @@ QString languageArgument(const QStringList &arguments)
     return {};
 }
 
+// The name a connection opened from the command line gets: "plc1:500", "plc1:500 (UDP)",
+// "/dev/ttyUSB0".
+QString connectionName(const Fatek::LinkSettings &link)
+{
+    switch (link.kind) {
+    case Fatek::LinkSettings::Kind::Tcp:
+        return QStringLiteral("%1:%2").arg(link.host).arg(link.port);
+    case Fatek::LinkSettings::Kind::Udp:
+        return QStringLiteral("%1:%2 (UDP)").arg(link.host).arg(link.port);
+    case Fatek::LinkSettings::Kind::Serial: break;
+    }
+    return link.portName;
+}
+
+int usageError(const QString &message)
+{
+    std::fprintf(stderr, "fatek-studio: %s\n", qPrintable(message));
+    std::fprintf(stderr, "Try 'fatek-studio --help' for more information.\n");
+    return 2;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -143,16 +171,61 @@ int main(int argc, char *argv[])
                                             "system's)."),
         QCoreApplication::translate("main", "code"));
     parser.addOptions({demoOpt, readOnlyOpt, screenshotOpt, toolOpt, languageOpt});
+    // The link options of fatek-cli: the same names, texts and checks (app/common).
+    parser.addOptions(Fatek::LinkArguments::commandLineOptions());
+    parser.addPositionalArgument(
+        QStringLiteral("file"),
+        QCoreApplication::translate("main", "Watch list to open (.json); with a link option its "
+                                            "tables watch that connection."),
+        QStringLiteral("[file]"));
+    // A bad command line is a usage error (exit 2) before any window shows; process() then only
+    // handles --help, --help-all and --version.
+    if (!parser.parse(QCoreApplication::arguments()))
+        return usageError(parser.errorText());
     parser.process(app);
+
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1)
+        return usageError(QStringLiteral("give at most one watch-list file, not %1 (\"%2\").")
+                              .arg(files.size())
+                              .arg(files.join(QStringLiteral("\", \""))));
+    const bool demo = parser.isSet(demoOpt);
+    const Fatek::LinkArguments linkArguments = Fatek::LinkArguments::fromParser(parser);
+    Fatek::LinkArgumentRules rules;
+    rules.alternative = QStringLiteral("--demo");
+    rules.alternativeGiven = demo;
+    rules.linkRequired = false;
+    rules.minStation = 1; // a window watches values: station 0 (broadcast) never answers
+    rules.defaultProtocol = Fatek::LinkSettings::ProtocolChoice::Auto; // as fatek-cli
+    const Fatek::LinkArgumentsResult link = Fatek::resolveLinkArguments(linkArguments, rules);
+    if (!link.error.isEmpty())
+        return usageError(link.error);
+    if (demo && linkArguments.any())
+        return usageError(QStringLiteral("--demo runs its own simulator: the link options "
+                                         "(--protocol, --station, --timeout, --retries) do not "
+                                         "apply to it."));
+    std::optional<Fatek::SavedConnection> connection;
+    if (link.hasLink) {
+        connection = Fatek::SavedConnection{};
+        connection->name = connectionName(link.link);
+        connection->settings = link.link; // autoReconnect on, as in File > New Connection
+        connection->station = link.station;
+    }
+    const QString file = files.value(0);
 
     Fatek::MainWindow window(parser.isSet(readOnlyOpt));
     if (parser.isSet(screenshotOpt))
         window.resize(1280, 800); // the same picture whatever layout was saved last time
     window.show();
-    if (parser.isSet(demoOpt))
-        window.startDemo();
-    else if (!parser.isSet(screenshotOpt))
+    if (file.isEmpty() && !demo && !parser.isSet(screenshotOpt))
         window.restoreLastWatchList();
+    if (connection || !file.isEmpty()) {
+        if (const Fatek::Status s = window.openAtStartup(connection, file); !s)
+            std::fprintf(stderr, "fatek-studio: %s cannot be loaded: %s\n", qPrintable(file),
+                         s.error().message.c_str());
+    }
+    if (demo)
+        window.startDemo();
     if (parser.isSet(screenshotOpt))
         scheduleScreenshot(&window, parser.value(screenshotOpt), parser.isSet(demoOpt),
                            parser.value(toolOpt));

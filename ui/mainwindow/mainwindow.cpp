@@ -558,6 +558,33 @@ bool MainWindow::restoreLastWatchList()
     return true;
 }
 
+Status MainWindow::openAtStartup(const std::optional<SavedConnection> &connection,
+                                 const QString &path)
+{
+    Connection *c = connection ? openConnection(*connection) : nullptr;
+    Status loaded = Ok{};
+    if (!path.isEmpty()) {
+        loaded = loadWatchList(path);
+        if (!loaded) {
+            // The words of File > Open; not modal, so the window (and --screenshot) carries on.
+            auto *box = new QMessageBox(
+                QMessageBox::Warning, tr("Open Watch List"),
+                tr("%1 cannot be loaded:\n%2")
+                    .arg(QFileInfo(path).fileName(), CoreText::message(loaded.error().message)),
+                QMessageBox::Ok, this);
+            box->setAttribute(Qt::WA_DeleteOnClose);
+            box->open();
+        } else {
+            showStatus(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
+        }
+    }
+    if (c) {
+        for (WatchTableWidget *t : watchTables())
+            t->setConnection(c);
+    }
+    return loaded;
+}
+
 Status MainWindow::importCsv(const QString &path)
 {
     QFile f(path);

@@ -7,6 +7,8 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <optional>
+
 class QDockWidget;
 class QKeySequence;
 class QLabel;
@@ -51,6 +53,11 @@ public:
     Status importCsv(const QString &path);
     // Opens the watch list saved or opened last (when that preference is on); false if none.
     bool restoreLastWatchList();
+    // Start-up from the command line (fatek-studio --tcp ... FILE): opens `connection` (if given)
+    // as File > New Connection does, loads the watch list `path` (if not empty) as File > Open
+    // does, and binds every table to that connection. A file that cannot be loaded is reported in
+    // the window as File > Open reports it (without blocking) and returned.
+    Status openAtStartup(const std::optional<SavedConnection> &connection, const QString &path);
 
     // Starts the embedded simulator and opens the demo table on it; demoReady() when connected.
     void startDemo();
