@@ -464,6 +464,16 @@ void TestCli::simCsvShape()
     // The data log format (docs/trends.md): timestamp, one column per item, status.
     QCOMPARE(m.lines().at(0), QStringLiteral("timestamp,R20,Y1,status"));
     QVERIFY(m.lines().at(2).endsWith(QLatin1String(",0,0,ok")));
+
+    // R20 as a number and as hex: the same header as the GUI's log, each column names its format.
+    const Run two
+        = runCli(sim({QStringLiteral("--csv"), QStringLiteral("monitor"), QStringLiteral("R20"),
+                      QStringLiteral("R20:hex"), QStringLiteral("--interval"), QStringLiteral("50"),
+                      QStringLiteral("--cycles"), QStringLiteral("1")}));
+    RUN_OK(two);
+    QCOMPARE(two.lines().size(), 2);
+    QCOMPARE(two.lines().at(0), QStringLiteral("timestamp,R20 [signed],R20 [hex],status"));
+    QVERIFY(two.lines().at(1).endsWith(QLatin1String(",0,0x0000,ok")));
 }
 
 void TestCli::simMixedRead()
@@ -713,7 +723,8 @@ void TestCli::referenceMonitorCsvLog()
     RUN_OK(r);
     const QStringList l = r.lines();
     QCOMPARE(l.size(), 5);
-    QCOMPARE(l.at(0), QStringLiteral("timestamp,R400,R402,R403,R402,status"));
+    // R402 twice, in two formats: each column says which (docs/trends.md).
+    QCOMPARE(l.at(0), QStringLiteral("timestamp,R400,R402 [signed],R403,R402 [unsigned],status"));
     QDateTime previous;
     for (int i = 1; i < 5; ++i) {
         const QStringList cells = l.at(i).split(QLatin1Char(','));

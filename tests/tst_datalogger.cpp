@@ -4,6 +4,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -45,6 +46,8 @@ private Q_SLOTS:
     void timestampHasMillisecondsAndOffset();
     void headerAndFormattedValues();
     void staleValuesAreNeverWrittenAsFresh();
+    void sameAddressInTwoFormatsHasTwoHeaders();
+    void outageRowNamesTheReasonOnce();
     void appendKeepsHeaderOnce();
     void appendRefusesOtherColumns();
     void quotesCellsWithSeparators();
@@ -109,6 +112,58 @@ void TestDataLogger::staleValuesAreNeverWrittenAsFresh()
     // spreadsheets.
     QCOMPARE(lines.at(2).section(QLatin1Char(','), 1),
              QStringLiteral(",,\"error R0 (PLC error A); missing R1\""));
+}
+
+void TestDataLogger::sameAddressInTwoFormatsHasTwoHeaders()
+{
+    // A technician watches R0 as a number and as hex: the columns must not both read "R0".
+    const QList<WatchItemSpec> items{
+        item("R0", DisplayFormat::Signed), item("R0", DisplayFormat::Hex),
+        item("R1", DisplayFormat::Signed), item("R1", DisplayFormat::Signed),
+        item("R0", DisplayFormat::Hex, QStringLiteral("Level"))};
+    const QString header = DataLogger::headerLine(items);
+    QCOMPARE(header, QStringLiteral("timestamp,R0 [signed],R0 [hex],R1 [signed],R1 [signed] #2,"
+                                    "Level (R0),status"));
+    const QStringList cells = header.split(QLatin1Char(','));
+    QCOMPARE(QSet<QString>(cells.cbegin(), cells.cend()).size(), cells.size());
+
+    const QString path = m_dir.filePath(QStringLiteral("formats.csv"));
+    DataLogger log;
+    QVERIFY(log.open(path, items.mid(0, 2)));
+    QCOMPARE(log.columns(), (QStringList{QStringLiteral("timestamp"), QStringLiteral("R0 [signed]"),
+                                         QStringLiteral("R0 [hex]"), QStringLiteral("status")}));
+    QVERIFY(log.writeRow(QDateTime::currentDateTime(), {good(0xFFFE), good(0xFFFE)}));
+    QVERIFY(log.close());
+    const QStringList lines = readLines(path);
+    QCOMPARE(lines.size(), 2);
+    QCOMPARE(lines.at(0), QStringLiteral("timestamp,R0 [signed],R0 [hex],status"));
+    QCOMPARE(lines.at(1).section(QLatin1Char(','), 1), QStringLiteral("-2,0xFFFE,ok"));
+    // No clash, no change: one item per address keeps the plain header.
+    QCOMPARE(
+        DataLogger::headerLine({item("R0", DisplayFormat::Hex), item("R1", DisplayFormat::Bcd)}),
+        QStringLiteral("timestamp,R0,R1,status"));
+}
+
+void TestDataLogger::outageRowNamesTheReasonOnce()
+{
+    const QList<WatchItemSpec> items{
+        item("R0", DisplayFormat::Signed), item("R0", DisplayFormat::Hex),
+        item("R1", DisplayFormat::Signed), item("Y0", DisplayFormat::Bit)};
+    const QString down = QStringLiteral("no link: connection refused");
+    const QDateTime now = QDateTime::currentDateTime();
+    // The link is down: every item stale for one reason; the reason is written once.
+    QList<DataLogger::Cell> cells(4, DataLogger::Cell{7, DataLogger::Quality::Stale, down});
+    const QString row = DataLogger::rowLine(now, items, cells);
+    QCOMPARE(row.section(QLatin1Char(','), 1),
+             QStringLiteral(",,,,stale all items (no link: connection refused)"));
+    QCOMPARE(row.count(down), 1);
+    // Two items late for one reason, one refused: each cause once, naming its items.
+    cells = {good(5),
+             {0, DataLogger::Quality::Stale, QStringLiteral("timeout")},
+             {0, DataLogger::Quality::Stale, QStringLiteral("timeout")},
+             {0, DataLogger::Quality::Error, QStringLiteral("PLC error A")}};
+    QCOMPARE(DataLogger::rowLine(now, items, cells).section(QLatin1Char(','), 1),
+             QStringLiteral("5,,,,\"stale R0 [hex], R1 (timeout); error Y0 (PLC error A)\""));
 }
 
 void TestDataLogger::appendKeepsHeaderOnce()

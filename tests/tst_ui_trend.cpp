@@ -1,6 +1,9 @@
 // The trend view and data logging in the main window, against the --demo simulator (its ladder
 // drives a sine of +-1000 with a 10 s period in R1).
+#include "connectionmanager.h"
 #include "mainwindow.h"
+#include "simserver.h"
+#include "simulatedplc.h"
 #include "tablelogger.h"
 #include "testutil.h"
 #include "trendview.h"
@@ -8,15 +11,20 @@
 
 #include <QAction>
 #include <QChart>
+#include <QChartView>
 #include <QDateTimeAxis>
 #include <QFile>
 #include <QLabel>
 #include <QLineSeries>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTranslator>
+#include <QValueAxis>
 
 using namespace Fatek;
 
@@ -41,6 +49,64 @@ QList<QPointF> allPoints(const TrendView *view, int item)
     return points;
 }
 
+QAction *addToTrendAction(WatchTableWidget *table)
+{
+    for (QAction *a : table->view()->actions()) {
+        if (a->text() == QLatin1String("Add to &Trend"))
+            return a;
+    }
+    return nullptr;
+}
+
+void selectRows(WatchTableWidget *table, const QList<int> &rows)
+{
+    table->view()->clearSelection();
+    for (int r : rows)
+        table->view()->selectionModel()->select(
+            table->model()->index(r, 0), QItemSelectionModel::Select | QItemSelectionModel::Rows);
+}
+
+// True when the tick distance of `ticks` is 1, 2 or 5 times a power of ten and every tick is a
+// whole multiple of it.
+bool niceTicks(const QList<double> &ticks, QString *why)
+{
+    if (ticks.size() < 2) {
+        *why = QStringLiteral("%1 tick(s)").arg(ticks.size());
+        return false;
+    }
+    const double step = ticks.at(1) - ticks.at(0);
+    const double power = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+    const double mantissa = step / power;
+    if (std::abs(mantissa - 1) > 1e-6 && std::abs(mantissa - 2) > 1e-6
+        && std::abs(mantissa - 5) > 1e-6) {
+        *why = QStringLiteral("step %1").arg(step);
+        return false;
+    }
+    for (double t : ticks) {
+        if (std::abs(t / step - std::round(t / step)) > 1e-6) {
+            *why = QStringLiteral("tick %1 with step %2").arg(t).arg(step);
+            return false;
+        }
+    }
+    return true;
+}
+
+// The lowest and highest value drawn for an item inside the time axis (a line also holds the
+// sample just outside each end, so that it reaches the edge).
+QPair<double, double> rangeOf(const TrendView *view, int item)
+{
+    const double from = static_cast<double>(view->timeAxis()->min().toMSecsSinceEpoch());
+    const double to = static_cast<double>(view->timeAxis()->max().toMSecsSinceEpoch());
+    double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+    for (const QPointF &p : allPoints(view, item)) {
+        if (p.x() < from || p.x() > to)
+            continue;
+        lo = std::min(lo, p.y());
+        hi = std::max(hi, p.y());
+    }
+    return {lo, hi};
+}
+
 } // namespace
 
 class TestUiTrend : public QObject
@@ -57,17 +123,26 @@ private Q_SLOTS:
     void pauseStopsAddingPoints();
     void windowLimitsTimeAxis();
     void stalePeriodMakesGap();
+    void seriesWithDifferentRangesGetTheirOwnAxes();
+    void cursorReadoutShowsValuesUnderTheMouse();
+    void addingSeveralItemsNamesThemAll();
     void loggingWritesRows();
+    void loggingTwoFormatsAndAnOutage();
     void bufferDecimationKeepsPeaks();
+    void doubleWordsPlotAsTheTableShowsThem();
 
 private:
     QTemporaryDir m_settingsDir;
+    QTranslator m_english;
     MainWindow *m_window = nullptr;
 };
 
 void TestUiTrend::initTestCase()
 {
     TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_trend"));
+    // English as the studio runs it: its file carries the plural forms ("5 items").
+    QVERIFY(m_english.load(QStringLiteral(":/i18n/fatekstudio_en.qm")));
+    QCoreApplication::installTranslator(&m_english);
 }
 
 void TestUiTrend::init()
@@ -89,9 +164,10 @@ void TestUiTrend::cleanup()
 void TestUiTrend::demoSineInTrend()
 {
     TrendView *trend = m_window->trendView();
-    // The demo puts its sine into the trend by itself.
-    QCOMPARE(trend->itemCount(), 1);
+    // The demo puts its sine and its ramp into the trend by itself.
+    QCOMPARE(trend->itemCount(), 2);
     QCOMPARE(trend->itemName(0), QStringLiteral("Sine (R1)"));
+    QCOMPARE(trend->itemName(1), QStringLiteral("Ramp (DR10)"));
     // 12 s of samples (polled every 200 ms) cover more than one 10 s period.
     QTRY_VERIFY_WITH_TIMEOUT(trend->spanMs() >= 12000, 30000);
     trend->refresh();
@@ -131,19 +207,19 @@ void TestUiTrend::addFromWatchTableAndRemove()
     }
     QVERIFY(add);
     add->trigger();
-    QCOMPARE(trend->itemCount(), 2);
-    QCOMPARE(trend->itemName(1), QStringLiteral("Blink (Y0)"));
+    QCOMPARE(trend->itemCount(), 3);
+    QCOMPARE(trend->itemName(2), QStringLiteral("Blink (Y0)"));
     // Twice is refused, not duplicated.
     add->trigger();
-    QCOMPARE(trend->itemCount(), 2);
-    QTRY_VERIFY_WITH_TIMEOUT(trend->buffer(1).countIn(0, std::numeric_limits<qint64>::max()) >= 5,
+    QCOMPARE(trend->itemCount(), 3);
+    QTRY_VERIFY_WITH_TIMEOUT(trend->buffer(2).countIn(0, std::numeric_limits<qint64>::max()) >= 5,
                              longWait);
     trend->refresh();
-    for (const QPointF &p : allPoints(trend, 1))
+    for (const QPointF &p : allPoints(trend, 2))
         QVERIFY(p.y() == 0 || p.y() == 1);
     trend->removeItem(0);
-    QCOMPARE(trend->itemCount(), 1);
-    QCOMPARE(trend->itemName(0), QStringLiteral("Blink (Y0)"));
+    QCOMPARE(trend->itemCount(), 2);
+    QCOMPARE(trend->itemName(1), QStringLiteral("Blink (Y0)"));
     QVERIFY(trend->chart()->series().size() >= 1);
 }
 
@@ -218,6 +294,147 @@ void TestUiTrend::stalePeriodMakesGap()
     }
 }
 
+void TestUiTrend::seriesWithDifferentRangesGetTheirOwnAxes()
+{
+    TrendView *trend = m_window->trendView();
+    WatchTableWidget *table = m_window->currentWatchTable();
+    const int blink = rowOf(table->model(), "Y0");
+    QVERIFY(blink >= 0);
+    // The demo trends the sine (+-1000) and the ramp (0..99999, about 1000 in 10 s, far from 0);
+    // the technician adds a bit.
+    QCOMPARE(trend->itemName(1), QStringLiteral("Ramp (DR10)"));
+    selectRows(table, {blink});
+    addToTrendAction(table)->trigger();
+    QCOMPARE(trend->itemCount(), 3);
+    QTRY_VERIFY_WITH_TIMEOUT(trend->spanMs() >= 3000
+                                 && trend->buffer(2).countIn(0, std::numeric_limits<qint64>::max())
+                                        >= 5,
+                             longWait);
+    trend->setPaused(true);
+    trend->refresh();
+    QVERIFY(trend->hasSeparateAxes());
+    QValueAxis *sineAxis = trend->valueAxis(0);
+    QValueAxis *rampAxis = trend->valueAxis(1);
+    QValueAxis *bitAxis = trend->valueAxis(2);
+    QVERIFY(sineAxis && rampAxis && bitAxis);
+    QVERIFY(sineAxis != rampAxis && sineAxis != bitAxis && rampAxis != bitAxis);
+    // Each analog axis spans its own line, and not much more: the sine is not squashed flat.
+    for (int i : {0, 1}) {
+        const auto [lo, hi] = rangeOf(trend, i);
+        QValueAxis *axis = trend->valueAxis(i);
+        const QString what = QStringLiteral("%1: data %2..%3, axis %4..%5")
+                                 .arg(trend->itemName(i))
+                                 .arg(lo)
+                                 .arg(hi)
+                                 .arg(axis->min())
+                                 .arg(axis->max());
+        QVERIFY2(axis->min() <= lo && axis->max() >= hi, qPrintable(what));
+        QVERIFY2(axis->max() - axis->min() <= std::max(2.0, 1.2 * (hi - lo)), qPrintable(what));
+        QString why;
+        QVERIFY2(niceTicks(TrendView::tickValues(axis), &why), qPrintable(what + ": " + why));
+    }
+    const auto [sineLo, sineHi] = rangeOf(trend, 0);
+    QVERIFY2(sineHi - sineLo > 100, qPrintable(QStringLiteral("%1..%2").arg(sineLo).arg(sineHi)));
+    // The bit has its own 0/1 axis, ticks at 0 and 1.
+    QCOMPARE(TrendView::tickValues(bitAxis), (QList<double>{0.0, 1.0}));
+    for (const QPointF &p : allPoints(trend, 2))
+        QVERIFY(p.y() >= bitAxis->min() && p.y() <= bitAxis->max());
+
+    // Shared: the analog items on one axis spanning both, the bit still on its own.
+    trend->setSeparateAxes(false);
+    trend->refresh();
+    QCOMPARE(trend->valueAxis(0), trend->valueAxis(1));
+    QVERIFY(trend->valueAxis(2) != trend->valueAxis(0));
+    QCOMPARE(trend->valueAxes().size(), 2);
+    const auto [rampLo, rampHi] = rangeOf(trend, 1);
+    QVERIFY(trend->valueAxis(0)->min() <= std::min(sineLo, rampLo));
+    QVERIFY(trend->valueAxis(0)->max() >= std::max(sineHi, rampHi));
+    QString why;
+    QVERIFY2(niceTicks(TrendView::tickValues(trend->valueAxis(0)), &why), qPrintable(why));
+    // Zooming (rubber band) keeps the ticks round in the new range.
+    trend->setSeparateAxes(true);
+    trend->refresh();
+    QVERIFY(trend->chart()->series().size() >= 3);
+    trend->chart()->zoomIn(trend->chart()->plotArea().adjusted(30, 17, -50, -23));
+    for (QValueAxis *axis : trend->valueAxes()) {
+        if (axis == trend->valueAxis(2))
+            continue;
+        QVERIFY2(niceTicks(TrendView::tickValues(axis), &why),
+                 qPrintable(axis->titleText() + ": " + why));
+    }
+}
+
+void TestUiTrend::cursorReadoutShowsValuesUnderTheMouse()
+{
+    TrendView *trend = m_window->trendView();
+    QTRY_VERIFY_WITH_TIMEOUT(trend->spanMs() >= 3000, longWait);
+    trend->setPaused(true); // the picture (and the time under the mouse) stays
+    trend->refresh();
+    auto *view = trend->findChild<QChartView *>(QStringLiteral("trendChart"));
+    QVERIFY(view);
+    QTRY_VERIFY(view->isVisible() && trend->chart()->plotArea().width() > 50);
+    QCOMPARE(trend->readoutText(), QString());
+    const QRectF area = trend->chart()->plotArea();
+    // Near the right end, where the sine has been sampled.
+    const QPointF inChart(area.left() + area.width() * 0.9, area.center().y());
+    const QPoint at = view->mapFromScene(trend->chart()->mapToScene(inChart));
+    QTest::mouseMove(view->viewport(), at);
+    const QString text = trend->readoutText();
+    QVERIFY2(!text.isEmpty(), "no read-out under the mouse");
+    const QStringList lines = text.split(QLatin1Char('\n'));
+    QCOMPARE(lines.size(), 3); // the time, Sine (R1), Ramp (DR10)
+    // The time under the mouse ...
+    const QTime shown = QTime::fromString(lines.at(0), QStringLiteral("HH:mm:ss.zzz"));
+    QVERIFY2(shown.isValid(), qPrintable(lines.at(0)));
+    const qint64 fromMs = trend->timeAxis()->min().toMSecsSinceEpoch();
+    const qint64 toMs = trend->timeAxis()->max().toMSecsSinceEpoch();
+    const qint64 expectedMs = fromMs + (toMs - fromMs) * 9 / 10;
+    const QTime expected = QDateTime::fromMSecsSinceEpoch(expectedMs).time();
+    QVERIFY2(std::abs(expected.msecsTo(shown)) <= (toMs - fromMs) / 100,
+             qPrintable(lines.at(0) + QStringLiteral(" vs ") + expected.toString()));
+    // ... and the sine's value there: the last sample at or before that time.
+    static const QRegularExpression valueLine(QStringLiteral("^Sine \\(R1\\): (-?\\d+)$"));
+    const QRegularExpressionMatch m = valueLine.match(lines.at(1));
+    QVERIFY2(m.hasMatch(), qPrintable(lines.at(1)));
+    const TrendBuffer &b = trend->buffer(0);
+    const QDateTime shownAt(QDateTime::fromMSecsSinceEpoch(expectedMs).date(), shown);
+    double before = std::numeric_limits<double>::quiet_NaN();
+    for (qsizetype i = 0; i < b.size() && b.at(i).timeMs <= shownAt.toMSecsSinceEpoch(); ++i)
+        before = b.at(i).value;
+    QCOMPARE(m.captured(1).toDouble(), before);
+    QVERIFY2(lines.at(2).startsWith(QLatin1String("Ramp (DR10): ")), qPrintable(lines.at(2)));
+    // Off the plot, the read-out goes.
+    QTest::mouseMove(view->viewport(), QPoint(1, 1));
+    QCOMPARE(trend->readoutText(), QString());
+}
+
+void TestUiTrend::addingSeveralItemsNamesThemAll()
+{
+    TrendView *trend = m_window->trendView();
+    WatchTableWidget *table = m_window->currentWatchTable();
+    const int counter = rowOf(table->model(), "R0");
+    const int blink = rowOf(table->model(), "Y0");
+    const int sine = rowOf(table->model(), "R1");
+    QSignalSpy status(trend, &TrendView::statusMessage);
+    QCOMPARE(trend->itemCount(), 2); // the demo's sine and ramp
+    selectRows(table, {counter, blink});
+    addToTrendAction(table)->trigger();
+    QCOMPARE(trend->itemCount(), 4);
+    QCOMPARE(status.size(), 1);
+    QCOMPARE(m_window->statusBar()->currentMessage(),
+             QStringLiteral("Scan counter (R0), Blink (Y0) added to the trend."));
+    // Five walking bits: counted; the sine already there is said so.
+    QList<int> rows{sine};
+    for (int i = 0; i < 5; ++i)
+        rows << rowOf(table->model(), QStringLiteral("X%1").arg(i).toLatin1().constData());
+    selectRows(table, rows);
+    addToTrendAction(table)->trigger();
+    QCOMPARE(trend->itemCount(), 9);
+    QCOMPARE(status.size(), 2);
+    QCOMPARE(m_window->statusBar()->currentMessage(),
+             QStringLiteral("5 items added to the trend. Sine (R1) is already in the trend."));
+}
+
 void TestUiTrend::loggingWritesRows()
 {
     QTemporaryDir dir;
@@ -274,6 +491,74 @@ void TestUiTrend::loggingWritesRows()
     QCOMPARE(QFile(path).size(), f.size());
 }
 
+void TestUiTrend::loggingTwoFormatsAndAnOutage()
+{
+    // A PLC of its own, so the test can pull its plug.
+    SimulatedPlc plc;
+    SimServer server(&plc);
+    QString error;
+    QVERIFY2(server.listenTcp(0, &error), qPrintable(error));
+    plc.setValue(*Address::parse("R0"), 0xFFFE);
+    plc.setValue(*Address::parse("R1"), 7);
+    SavedConnection saved;
+    saved.name = QStringLiteral("Test PLC");
+    saved.settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), server.tcpPort());
+    saved.settings.timeoutMs = 300;
+    saved.settings.retries = 0;
+    saved.station = 1;
+    MainWindow window;
+    window.show();
+    Connection *c = window.openConnection(saved, false);
+    QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, longWait);
+    WatchTableWidget *table = window.currentWatchTable();
+    QCOMPARE(table->connection(), c);
+    WatchTableModel *model = table->model();
+    auto spec = [](const char *address, DisplayFormat format) {
+        WatchItemSpec s;
+        s.address = *Address::parse(address);
+        s.format = format;
+        return s;
+    };
+    // R0 as a number and as hex, beside R1.
+    model->addItems({spec("R0", DisplayFormat::Signed), spec("R0", DisplayFormat::Hex),
+                     spec("R1", DisplayFormat::Unsigned)});
+    QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(0) && model->hasValue(1) && model->hasValue(2),
+                             longWait);
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("outage.csv"));
+    QVERIFY(window.startLogging(path));
+    TableLogger *logger = window.tableLogger();
+    QTRY_VERIFY_WITH_TIMEOUT(logger->rowCount() >= 3, longWait);
+    // The link goes down while logging.
+    server.close();
+    QTRY_COMPARE_WITH_TIMEOUT(model->quality(0) == ValueQuality::Good, false, longWait);
+    const qint64 before = logger->rowCount();
+    QTRY_VERIFY_WITH_TIMEOUT(logger->rowCount() > before, longWait);
+    window.stopLogging();
+
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QStringList lines
+        = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(lines.at(0), QStringLiteral("timestamp,R0 [signed],R0 [hex],R1,status"));
+    QCOMPARE(lines.at(1).section(QLatin1Char(','), 1), QStringLiteral("-2,0xFFFE,7,ok"));
+    int outageRows = 0;
+    static const QRegularExpression oneReason(
+        QStringLiteral("^,,,\"?(stale|error|missing) all items \\((.+)\\)\"?$"));
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const QString afterTime = lines.at(i).section(QLatin1Char(','), 1);
+        if (afterTime.endsWith(QLatin1String(",ok")))
+            continue;
+        ++outageRows;
+        // Item cells empty, the reason once.
+        const QRegularExpressionMatch m = oneReason.match(afterTime);
+        QVERIFY2(m.hasMatch(), qPrintable(lines.at(i)));
+        QCOMPARE(afterTime.count(m.captured(2)), 1);
+    }
+    QVERIFY2(outageRows >= 1, qPrintable(lines.join(QLatin1Char('\n'))));
+}
+
 void TestUiTrend::bufferDecimationKeepsPeaks()
 {
     TrendBuffer buffer(1000);
@@ -296,6 +581,21 @@ void TestUiTrend::bufferDecimationKeepsPeaks()
     buffer.append(12020, 3.0);
     QCOMPARE(buffer.segments(11000, 12020).size(), 2);
     QCOMPARE(buffer.segments(12005, 12020).constLast().size(), 2);
+}
+
+void TestUiTrend::doubleWordsPlotAsTheTableShowsThem()
+{
+    // DR10 = 1220 (low word 1220, high word 0): the trend plots 1220, not the swapped 0x04C40000.
+    WatchItemSpec ramp;
+    ramp.address = *Address::parse("DR10");
+    ramp.format = DisplayFormat::Unsigned;
+    QCOMPARE(trendValue(ramp, 1220), std::optional<double>(1220.0));
+    ramp.format = DisplayFormat::Signed;
+    QCOMPARE(trendValue(ramp, 0xFFFFFFFE), std::optional<double>(-2.0));
+    // Shown with swapped words in the table: swapped in the trend too.
+    ramp.format = DisplayFormat::Unsigned;
+    ramp.swapWords = true;
+    QCOMPARE(trendValue(ramp, 0x00010002), std::optional<double>(double(0x00020001)));
 }
 
 QTEST_MAIN(TestUiTrend)

@@ -2203,6 +2203,33 @@ Meaning %4</translation>
             <source>Station %1, %2</source>
             <translation>Station %1, %2</translation>
         </message>
+        <message>
+            <source>Separate Axes</source>
+            <translation>Separate Axes</translation>
+        </message>
+        <message>
+            <source>Give every item its own value axis (bits share one); off: one value axis for all items except bits</source>
+            <translation>Give every item its own value axis (bits share one); off: one value axis for all items except bits</translation>
+        </message>
+        <message>
+            <source>Bits</source>
+            <translation>Bits</translation>
+        </message>
+        <message>
+            <source>no value</source>
+            <translation>no value</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n item(s) added to the trend.</source>
+            <translation>
+                <numerusform>%n item added to the trend.</numerusform>
+                <numerusform>%n items added to the trend.</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchInput</name>

@@ -2195,6 +2195,32 @@ Meaning %4</source>
             <source>Station %1, %2</source>
             <translation>站號 %1，%2</translation>
         </message>
+        <message>
+            <source>Separate Axes</source>
+            <translation>分開座標軸</translation>
+        </message>
+        <message>
+            <source>Give every item its own value axis (bits share one); off: one value axis for all items except bits</source>
+            <translation>每個項目各有自己的數值軸（位元共用一軸）；關閉：除位元外所有項目共用一個數值軸</translation>
+        </message>
+        <message>
+            <source>Bits</source>
+            <translation>位元</translation>
+        </message>
+        <message>
+            <source>no value</source>
+            <translation>無數值</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n item(s) added to the trend.</source>
+            <translation>
+                <numerusform>已將 %n 個項目加入趨勢圖。</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchInput</name>

@@ -4,6 +4,8 @@
 #include <QFileInfo>
 #include <QStringConverter>
 
+#include <algorithm>
+
 namespace Fatek {
 
 namespace {
@@ -60,6 +62,32 @@ QString DataLogger::columnName(const WatchItemSpec &item)
     return name.isEmpty() ? address : QStringLiteral("%1 (%2)").arg(name, address);
 }
 
+QStringList DataLogger::columnNames(const QList<WatchItemSpec> &items)
+{
+    QStringList names;
+    for (const WatchItemSpec &item : items)
+        names << columnName(item);
+    // The same column twice (one address in two formats): each of them says its format.
+    QStringList unique = names;
+    for (qsizetype i = 0; i < names.size(); ++i) {
+        if (names.count(names.at(i)) > 1)
+            unique[i]
+                = QStringLiteral("%1 [%2]").arg(names.at(i), ValueFormat::name(items.at(i).format));
+    }
+    // Still twice (the same item in the same format): the later ones are numbered.
+    for (qsizetype i = 0; i < unique.size(); ++i) {
+        int n = 1;
+        for (qsizetype j = 0; j < i; ++j) {
+            if (unique.at(j) == unique.at(i)
+                || unique.at(j).startsWith(unique.at(i) + QStringLiteral(" #")))
+                ++n;
+        }
+        if (n > 1)
+            unique[i] += QStringLiteral(" #%1").arg(n);
+    }
+    return unique;
+}
+
 QString DataLogger::csvCell(const QString &text)
 {
     if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"'))
@@ -85,8 +113,8 @@ QString DataLogger::qualityName(Quality quality)
 QString DataLogger::headerLine(const QList<WatchItemSpec> &items)
 {
     QStringList cells{QStringLiteral("timestamp")};
-    for (const WatchItemSpec &item : items)
-        cells << csvCell(columnName(item));
+    for (const QString &name : columnNames(items))
+        cells << csvCell(name);
     cells << QStringLiteral("status");
     return cells.join(QLatin1Char(','));
 }
@@ -95,7 +123,16 @@ QString DataLogger::rowLine(const QDateTime &time, const QList<WatchItemSpec> &i
                             const QList<Cell> &cells)
 {
     QStringList out{timestampText(time)};
-    QStringList problems;
+    // Items that are not fresh for the same cause share one note: "stale R1, R2 (timeout)";
+    // when no item is fresh for one cause (the link is down), "error all items (reason)".
+    struct Problem
+    {
+        Quality quality;
+        QString reason;
+        QStringList columns;
+    };
+    QList<Problem> problems;
+    const QStringList names = columnNames(items);
     for (qsizetype i = 0; i < items.size(); ++i) {
         const Cell cell = i < cells.size() ? cells.at(i) : Cell{};
         if (cell.quality == Quality::Good) {
@@ -103,13 +140,25 @@ QString DataLogger::rowLine(const QDateTime &time, const QList<WatchItemSpec> &i
             continue;
         }
         out << QString(); // never a stale value as if it were fresh
-        QString problem
-            = QStringLiteral("%1 %2").arg(qualityName(cell.quality), columnName(items.at(i)));
-        if (!cell.reason.isEmpty())
-            problem += QStringLiteral(" (%1)").arg(cell.reason);
-        problems << problem;
+        auto same = std::find_if(problems.begin(), problems.end(), [&cell](const Problem &p) {
+            return p.quality == cell.quality && p.reason == cell.reason;
+        });
+        if (same == problems.end())
+            problems.append({cell.quality, cell.reason, {names.at(i)}});
+        else
+            same->columns << names.at(i);
     }
-    out << csvCell(problems.isEmpty() ? QStringLiteral("ok") : problems.join(QLatin1String("; ")));
+    QStringList notes;
+    for (const Problem &p : problems) {
+        const QString which = p.columns.size() > 1 && p.columns.size() == items.size()
+                                  ? QStringLiteral("all items")
+                                  : p.columns.join(QLatin1String(", "));
+        QString note = QStringLiteral("%1 %2").arg(qualityName(p.quality), which);
+        if (!p.reason.isEmpty())
+            note += QStringLiteral(" (%1)").arg(p.reason);
+        notes << note;
+    }
+    out << csvCell(notes.isEmpty() ? QStringLiteral("ok") : notes.join(QLatin1String("; ")));
     return out.join(QLatin1Char(','));
 }
 
@@ -127,10 +176,8 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
             return fileError(QStringLiteral("%1 cannot be shown as %2.")
                                  .arg(columnName(item), ValueFormat::name(item.format)));
     }
-    QStringList columns{QStringLiteral("timestamp")};
-    for (const WatchItemSpec &item : items)
-        columns << columnName(item);
-    columns << QStringLiteral("status");
+    const QStringList columns = QStringList{QStringLiteral("timestamp")} + columnNames(items)
+                                + QStringList{QStringLiteral("status")};
     const QString header = headerLine(items);
 
     const QString native = QDir::toNativeSeparators(path);

@@ -19,15 +19,20 @@ namespace Fatek {
 //
 //   timestamp,Sine (R1),R0,Y0,status
 //   2026-11-23T10:35:31.458+01:00,-309,50,1,ok
-//   2026-11-23T10:35:31.958+01:00,,100,0,stale: Sine (R1) (timeout)
+//   2026-11-23T10:35:31.958+01:00,,100,0,stale Sine (R1) (timeout)
+//   2026-11-23T10:35:32.458+01:00,,,,error all items (no link: connection refused)
 //
 // - timestamp: ISO 8601 local time with milliseconds and the UTC offset (no ambiguity at DST).
 // - one column per item, headed "name (address)" or the address alone; a station other than 1
 //   is added as "address@station".
 // - values in the item's display format (signed, hex, float, ...); bits as 1/0 so spreadsheets
 //   can plot them.
+// - the same address twice (two formats): those columns say their format, "R0 [signed]",
+//   "R0 [hex]"; without such a clash the header is as above.
 // - a value that is not fresh (stale, refused, not read) is never written: its cell stays empty
-//   and the last column, status, says which item and why; "ok" when every cell is fresh.
+//   and the last column, status, says which items and why, each cause once per row:
+//   "stale R1, R2 (timeout); error R9 (PLC error A)", or "error all items (reason)" when no
+//   item is fresh for one cause (the link is down); "ok" when every cell is fresh.
 //
 // The file is opened for appending: an empty or new file gets the header; an existing log must
 // have the same header (else open() refuses rather than mixing columns). Rows go through the
@@ -68,6 +73,10 @@ public:
     // The text of one value: bits as 1/0, else ValueFormat::format.
     static QString valueText(const WatchItemSpec &item, std::uint64_t raw);
     static QString columnName(const WatchItemSpec &item);
+    // The item columns' headers: columnName, unless two items would get the same header (one
+    // address in two formats): then each of those says its format, "R0 [signed]", "R0 [hex]"
+    // (and the same item twice in one format is numbered: "R0 [hex] #2").
+    static QStringList columnNames(const QList<WatchItemSpec> &items);
     static QString csvCell(const QString &text);
     static QString qualityName(Quality quality);
     // The header line and one row line (without line end), as open() and writeRow() write them;

@@ -61,20 +61,25 @@ void MainWindow::createTrendAndLogging()
         }
     });
 
-    // The demo shows its sine wave in the trend from the start.
+    // The demo shows its sine wave (+-1000) and its ramp (0..99999) in the trend from the start:
+    // two ranges far apart, each on its own axis.
     connect(this, &MainWindow::demoReady, this, [this] {
         WatchTableWidget *table = currentWatchTable();
         if (!table)
             return;
         const WatchTableModel *model = table->model();
-        for (int r = 0; r < model->rowCount(); ++r) {
-            if (model->item(r).address.toString() == "R1") {
-                m_trendView->addItem(table->model(), r);
-                // One sine period fills the window: the wave is visible within seconds.
-                m_trendView->setWindowMs(10000);
-                break;
+        QList<int> rows;
+        for (const char *address : {"R1", "DR10"}) {
+            for (int r = 0; r < model->rowCount(); ++r) {
+                if (model->item(r).address.toString() == address)
+                    rows << r;
             }
         }
+        if (rows.isEmpty())
+            return;
+        m_trendView->addItems(table->model(), rows);
+        // One sine period fills the window: the wave is visible within seconds.
+        m_trendView->setWindowMs(10000);
     });
 }
 
@@ -102,15 +107,9 @@ void MainWindow::addToTrend(WatchTableWidget *table, const QList<int> &rows)
 {
     if (!table)
         return;
-    QStringList problems;
-    for (int row : rows) {
-        QString error;
-        if (!m_trendView->addItem(table->model(), row, &error))
-            problems << error;
-    }
+    // One status message names everything added (and refused).
+    m_trendView->addItems(table->model(), rows);
     showTrend();
-    if (!problems.isEmpty())
-        showStatus(problems.join(QLatin1Char(' ')));
 }
 
 Status MainWindow::startLogging(const QString &path)

@@ -13,7 +13,9 @@ std::optional<double> trendValue(const WatchItemSpec &item, std::uint64_t raw)
     if (width == 0 || !ValueFormat::isAvailable(item.format, width))
         return std::nullopt;
     const std::uint64_t mask = width >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << width) - 1;
-    std::uint64_t v = ValueFormat::swapWords(raw & mask, width) & mask;
+    // Words swapped only for an item shown swapped (as the table shows it).
+    const std::uint64_t v
+        = (item.swapWords ? ValueFormat::swapWords(raw & mask, width) : raw) & mask;
     switch (item.format) {
     case DisplayFormat::Bit: return (v & 1u) ? 1.0 : 0.0;
     case DisplayFormat::Unsigned:

@@ -9,9 +9,13 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QChart;
+class QGraphicsLineItem;
+class QGraphicsRectItem;
+class QGraphicsTextItem;
 class QComboBox;
 class QDateTimeAxis;
 class QLabel;
@@ -26,6 +30,11 @@ class TrendChartView;
 class WatchTableModel;
 
 // A trend of watch table items over time (Qt Charts): one line per item in a shared time axis.
+// Value axes by scale group: bits (0/1) share one axis of their own; each other item gets its own
+// axis in its colour, alternately left and right (Separate Axes, the default), or they all share
+// one "Value" axis. Ticks fall on round numbers (1, 2 or 5 times a power of ten) of the visible
+// range. Moving the mouse over the chart shows a cursor line and a read-out: the time and each
+// item's value there.
 // Samples come from the watch table models as their values arrive; a value that is not fresh
 // (stale, refused, polling paused, trend paused) ends the line, so a gap shows where nothing
 // fresh was read. Pause freezes the picture; the time window (10 s .. 1 h) follows the present
@@ -46,6 +55,9 @@ public:
     // Trends the row of `model` (followed by its row key while rows move). False, with `error`,
     // for a value that has no height (ASCII) or an item already in the trend.
     bool addItem(WatchTableModel *model, int row, QString *error = nullptr);
+    // Adds several rows; one status message names what was added ("Sine (R1), Blink (Y0) added
+    // to the trend.", or a count for more than three) and what was refused. Returns how many.
+    int addItems(WatchTableModel *model, const QList<int> &rows);
     void removeItem(int index);
     int itemCount() const { return static_cast<int>(m_items.size()); }
     QString itemName(int index) const;
@@ -64,7 +76,21 @@ public:
 
     QChart *chart() const { return m_chart; }
     QDateTimeAxis *timeAxis() const { return m_timeAxis; }
-    QValueAxis *valueAxis() const { return m_valueAxis; }
+    // The value axis of an item (the first axis when there is no such item).
+    QValueAxis *valueAxis(int index = 0) const;
+    QList<QValueAxis *> valueAxes() const;
+    // True (the default): every analog item has its own value axis; false: they share one.
+    bool hasSeparateAxes() const { return m_separateAxes; }
+    void setSeparateAxes(bool separate);
+    // The distance of the ticks on a value axis showing `range`: 1, 2 or 5 times a power of ten,
+    // about `targetTicks` ticks.
+    static double niceStep(double range, int targetTicks = 5);
+    // The ticks a value axis shows (round numbers in its range).
+    static QList<double> tickValues(const QValueAxis *axis);
+
+    // The cursor read-out (mouse over the chart): its text, one line for the time and one per
+    // item ("Sine (R1): -309"); empty while hidden.
+    QString readoutText() const;
     qint64 spanMs() const;
 
     // Redraws now (the view also redraws four times a second while not paused).
@@ -82,13 +108,21 @@ private:
         QColor color;
         TrendBuffer buffer;
         std::vector<QLineSeries *> series;
+        QValueAxis *axis = nullptr;
+        bool discrete = false; // 0/1: the bit axis
     };
     friend class TrendChartView;
+
+    bool addOne(WatchTableModel *model, int row, QString *error);
+    void rebuildAxes();
+    // The mouse over the chart (viewport coordinates); nothing: it left.
+    void hoverAt(std::optional<QPointF> viewportPos);
+    void updateReadout();
 
     void onDataChanged(WatchTableModel *model, int firstRow, int lastRow, int lastColumn);
     void sample(Item &item);
     void rebuildItemList();
-    void setAxesRange(qint64 fromMs, qint64 toMs, double yMin, double yMax);
+    void setTimeRange(qint64 fromMs, qint64 toMs);
     void userZoomed();
     void updateZoomUi();
     static QString displayName(const WatchItemSpec &spec);
@@ -97,7 +131,14 @@ private:
     QChart *m_chart;
     TrendChartView *m_chartView;
     QDateTimeAxis *m_timeAxis;
-    QValueAxis *m_valueAxis;
+    std::vector<QValueAxis *> m_valueAxes;
+    QValueAxis *m_bitAxis = nullptr;
+    QGraphicsLineItem *m_cursorLine;
+    QGraphicsRectItem *m_readoutBox;
+    QGraphicsTextItem *m_readout;
+    std::optional<QPointF> m_hoverPos;
+    QString m_readoutText;
+    QToolButton *m_axesButton;
     QListWidget *m_itemList;
     QToolButton *m_pauseButton;
     QToolButton *m_resetZoomButton;
@@ -108,6 +149,7 @@ private:
     qint64 m_windowMs = 60000;
     bool m_paused = false;
     bool m_zoomed = false;
+    bool m_separateAxes = true;
     bool m_settingRange = false;
     int m_colorIndex = 0;
 };
