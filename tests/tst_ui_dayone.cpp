@@ -115,7 +115,8 @@ QString answerModal(const std::function<void()> &action,
     hand.start();
     action();
     // The question may open after the action returns (a queued write): wait for the hand.
-    QTest::qWaitFor([&] { return answered; }, 10000);
+    if (!QTest::qWaitFor([&] { return answered; }, 10000))
+        qWarning("no question showed up");
     hand.stop();
     return seen;
 }
@@ -203,7 +204,8 @@ private Q_SLOTS:
         MainWindow window;
         window.resize(1280, 720);
         window.show();
-        Connection *a = window.openConnection(savedFor(first.port, QStringLiteral("Press 1")), false);
+        Connection *a
+            = window.openConnection(savedFor(first.port, QStringLiteral("Press 1")), false);
         WatchTableWidget *tableA = window.currentWatchTable();
         tableA->setConnection(a);
         Connection *b
@@ -256,8 +258,7 @@ private Q_SLOTS:
                                   3 * Connection::plcStatusIntervalMs);
         // The link goes down: RUN/STOP is unknown, not the last thing seen.
         plc.server.close();
-        QTRY_VERIFY_WITH_TIMEOUT(!cell.data().toString().contains(QStringLiteral("RUN")),
-                                 longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(!cell.data().toString().contains(QStringLiteral("RUN")), longWait);
     }
 
     // Tools > Scan Stations finds the PLC on station 7 of the link, and Use Station makes the
@@ -418,13 +419,14 @@ private Q_SLOTS:
                      qPrintable(status->text()));
         QVERIFY2(!status->text().contains(QStringLiteral("RTT")), qPrintable(status->text()));
         QVERIFY(c->errorCount() >= 1);
-        QVERIFY(!window.connections()->recent().contains(saved));
+        for (const SavedConnection &r : window.connections()->recent())
+            QVERIFY(r.name != QLatin1String("Press 9"));
 
         auto *reconnect = window.findChild<QAction *>(QStringLiteral("reconnectNowAction"));
         QVERIFY(reconnect);
         QVERIFY(reconnect->isEnabled());
         QTest::keyClick(&window, Qt::Key_F5);
-        QTRY_VERIFY2_WITH_TIMEOUT(status->text().contains(QStringLiteral("2 failed attempts")),
+        QTRY_VERIFY2_WITH_TIMEOUT(status->text().contains(QStringLiteral("2 failed attempt")),
                                   qPrintable(status->text()), 5000);
 
         // The PLC is back on that port: F5 connects now, and now it is worth remembering.
@@ -432,7 +434,14 @@ private Q_SLOTS:
         QCOMPARE(plc.port, port);
         QTest::keyClick(&window, Qt::Key_F5);
         QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, 5000);
-        QTRY_VERIFY(window.connections()->recent().contains(saved));
+        auto remembered = [&window] {
+            for (const SavedConnection &r : window.connections()->recent()) {
+                if (r.name == QLatin1String("Press 9"))
+                    return true;
+            }
+            return false;
+        };
+        QTRY_VERIFY(remembered());
         QVERIFY(!reconnect->isEnabled());
     }
 
@@ -472,10 +481,10 @@ private Q_SLOTS:
         const qsizetype before = runStopFrames();
         QTest::mouseClick(send, Qt::LeftButton);
         QCOMPARE(questions.size(), 1);
-        QTRY_VERIFY2(bar->resultText().contains(QStringLiteral("read-only"), Qt::CaseInsensitive)
-                         || bar->resultText().contains(QStringLiteral("operator"),
-                                                       Qt::CaseInsensitive),
-                     qPrintable(bar->resultText()));
+        QTRY_VERIFY2(
+            bar->resultText().contains(QStringLiteral("read-only"), Qt::CaseInsensitive)
+                || bar->resultText().contains(QStringLiteral("operator"), Qt::CaseInsensitive),
+            qPrintable(bar->resultText()));
         QTest::qWait(300);
         QCOMPARE(runStopFrames(), before);
 

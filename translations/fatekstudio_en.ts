@@ -194,6 +194,22 @@
             <source>RTT</source>
             <translation>RTT</translation>
         </message>
+        <message>
+            <source>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries, %5 link failures</source>
+            <translation>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries, %5 link failures</translation>
+        </message>
+        <message>
+            <source>Station %1: %2 (RUN/STOP read every %3 s)</source>
+            <translation>Station %1: %2 (RUN/STOP read every %3 s)</translation>
+        </message>
+        <message>
+            <source>The PLC has not said what it is yet</source>
+            <translation>The PLC has not said what it is yet</translation>
+        </message>
+        <message>
+            <source>PLC</source>
+            <translation>PLC</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::CoreText</name>
@@ -1601,6 +1617,89 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
                 <numerusform>%n saved connections could not be read (kept unchanged)</numerusform>
             </translation>
         </message>
+        <message>
+            <source>&amp;Reconnect Now</source>
+            <translation>&amp;Reconnect Now</translation>
+        </message>
+        <message>
+            <source>Reconnecting %1 now…</source>
+            <translation>Reconnecting %1 now…</translation>
+        </message>
+        <message>
+            <source>Try the current connection again at once instead of waiting for the next attempt</source>
+            <translation>Try the current connection again at once instead of waiting for the next attempt</translation>
+        </message>
+        <message>
+            <source>Scan &amp;Stations…</source>
+            <translation>Scan &amp;Stations…</translation>
+        </message>
+        <message>
+            <source>Scan Stations: open a connection first.</source>
+            <translation>Scan Stations: open a connection first.</translation>
+        </message>
+        <message>
+            <source>Find the PLCs that answer on the current connection's link</source>
+            <translation>Find the PLCs that answer on the current connection's link</translation>
+        </message>
+        <message>
+            <source>%1 — %2, station %3</source>
+            <translation>%1 — %2, station %3</translation>
+        </message>
+        <message>
+            <source>Untitled</source>
+            <translation>Untitled</translation>
+        </message>
+        <message>
+            <source>%1 — Operator mode (read-only)</source>
+            <translation>%1 — Operator mode (read-only)</translation>
+        </message>
+        <message>
+            <source>The watch list %1 has changes that are not saved.</source>
+            <translation>The watch list %1 has changes that are not saved.</translation>
+        </message>
+        <message>
+            <source>(untitled)</source>
+            <translation>(untitled)</translation>
+        </message>
+        <message>
+            <source>Data logging to %1 is running; quitting stops it.</source>
+            <translation>Data logging to %1 is running; quitting stops it.</translation>
+        </message>
+        <message>
+            <source>Quit FATEK Studio</source>
+            <translation>Quit FATEK Studio</translation>
+        </message>
+        <message>
+            <source>&amp;Save and Quit</source>
+            <translation>&amp;Save and Quit</translation>
+        </message>
+        <message>
+            <source>Quit &amp;Without Saving</source>
+            <translation>Quit &amp;Without Saving</translation>
+        </message>
+        <message>
+            <source>Stop Logging and &amp;Quit</source>
+            <translation>Stop Logging and &amp;Quit</translation>
+        </message>
+        <message numerus="yes">
+            <source> · %n failed attempt(s)</source>
+            <translation>
+                <numerusform> · %n failed attempt</numerusform>
+                <numerusform> · %n failed attempts</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source> · F5 reconnects now</source>
+            <translation> · F5 reconnects now</translation>
+        </message>
+        <message>
+            <source>%1: %2 · %3 req/s · %4 errors · RTT %5</source>
+            <translation>%1: %2 · %3 req/s · %4 errors · RTT %5</translation>
+        </message>
+        <message>
+            <source>%1 ms</source>
+            <translation>%1 ms</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::OperatorMode</name>
@@ -2018,6 +2117,14 @@ Meaning %4</source>
 Answer  %2
         %3
 Meaning %4</translation>
+        </message>
+        <message>
+            <source>%1 (command %2) to station %3</source>
+            <translation>%1 (command %2) to station %3</translation>
+        </message>
+        <message>
+            <source>unknown command %1 to station %2</source>
+            <translation>unknown command %1 to station %2</translation>
         </message>
     </context>
     <context>
@@ -2489,6 +2596,17 @@ Meaning %4</translation>
             <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
             <translation>New value for %1 (%2; hex as 0x1A or 1Ah):</translation>
         </message>
+        <message numerus="yes">
+            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
+            <translation>
+                <numerusform>Added %n item, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
+                <numerusform>Added %n items, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Operator mode (read-only): %1 cannot be written.</source>
+            <translation>Operator mode (read-only): %1 cannot be written.</translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -2582,6 +2700,84 @@ Meaning %4</translation>
         <message>
             <source>%1, no answer from station %2</source>
             <translation>%1, no answer from station %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::StationScanDialog</name>
+        <message>
+            <source>Scan Stations</source>
+            <translation>Scan Stations</translation>
+        </message>
+        <message>
+            <source>Asks each station on “%1” for its status (command 40), one at a time, and lists who answers.</source>
+            <translation>Asks each station on “%1” for its status (command 40), one at a time, and lists who answers.</translation>
+        </message>
+        <message>
+            <source>No connection: open one first.</source>
+            <translation>No connection: open one first.</translation>
+        </message>
+        <message>
+            <source>to</source>
+            <translation>to</translation>
+        </message>
+        <message>
+            <source>Stations:</source>
+            <translation>Stations:</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>How long each station has to answer (no retries). 100 ms suits 9600 baud and above; a modem or radio link needs more.</source>
+            <translation>How long each station has to answer (no retries). 100 ms suits 9600 baud and above; a modem or radio link needs more.</translation>
+        </message>
+        <message>
+            <source>Wait per station:</source>
+            <translation>Wait per station:</translation>
+        </message>
+        <message>
+            <source>&amp;Scan</source>
+            <translation>&amp;Scan</translation>
+        </message>
+        <message>
+            <source>&amp;Use Station</source>
+            <translation>&amp;Use Station</translation>
+        </message>
+        <message>
+            <source>Make the selected station the one the tools and new tables use</source>
+            <translation>Make the selected station the one the tools and new tables use</translation>
+        </message>
+        <message>
+            <source>Scanning stations %1 to %2 …</source>
+            <translation>Scanning stations %1 to %2 …</translation>
+        </message>
+        <message>
+            <source>Station %1 — %2</source>
+            <translation>Station %1 — %2</translation>
+        </message>
+        <message>
+            <source> (in use)</source>
+            <translation> (in use)</translation>
+        </message>
+        <message>
+            <source>No station answered. Check the cable, the baud rate and parity, and that the PLCs are powered.</source>
+            <translation>No station answered. Check the cable, the baud rate and parity, and that the PLCs are powered.</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n station(s) answered.</source>
+            <translation>
+                <numerusform>%n station answered.</numerusform>
+                <numerusform>%n stations answered.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>“%1” now uses station %2.</source>
+            <translation>“%1” now uses station %2.</translation>
+        </message>
+        <message>
+            <source>&amp;Cancel Scan</source>
+            <translation>&amp;Cancel Scan</translation>
         </message>
     </context>
 </TS>

@@ -194,6 +194,22 @@
             <source>RTT</source>
             <translation>RTT</translation>
         </message>
+        <message>
+            <source>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries, %5 link failures</source>
+            <translation>%1 次逾時、%2 次檢查碼錯誤、%3 次 PLC 錯誤、%4 次重試、%5 次連線失敗</translation>
+        </message>
+        <message>
+            <source>Station %1: %2 (RUN/STOP read every %3 s)</source>
+            <translation>站號 %1：%2（每 %3 秒讀取 RUN/STOP）</translation>
+        </message>
+        <message>
+            <source>The PLC has not said what it is yet</source>
+            <translation>PLC 尚未回報其機型</translation>
+        </message>
+        <message>
+            <source>PLC</source>
+            <translation>PLC</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::CoreText</name>
@@ -1593,6 +1609,88 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
                 <numerusform>%n 個已儲存的連線無法讀取（保持原樣）</numerusform>
             </translation>
         </message>
+        <message>
+            <source>&amp;Reconnect Now</source>
+            <translation>立即重新連線(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Reconnecting %1 now…</source>
+            <translation>正在立即重新連線 %1…</translation>
+        </message>
+        <message>
+            <source>Try the current connection again at once instead of waiting for the next attempt</source>
+            <translation>立即重試目前的連線，不等待下一次嘗試</translation>
+        </message>
+        <message>
+            <source>Scan &amp;Stations…</source>
+            <translation>掃描站號(&amp;S)…</translation>
+        </message>
+        <message>
+            <source>Scan Stations: open a connection first.</source>
+            <translation>掃描站號：請先開啟連線。</translation>
+        </message>
+        <message>
+            <source>Find the PLCs that answer on the current connection's link</source>
+            <translation>找出目前連線上有回應的 PLC</translation>
+        </message>
+        <message>
+            <source>%1 — %2, station %3</source>
+            <translation>%1 — %2，站號 %3</translation>
+        </message>
+        <message>
+            <source>Untitled</source>
+            <translation>未命名</translation>
+        </message>
+        <message>
+            <source>%1 — Operator mode (read-only)</source>
+            <translation>%1 — 操作員模式（唯讀）</translation>
+        </message>
+        <message>
+            <source>The watch list %1 has changes that are not saved.</source>
+            <translation>監看清單 %1 有尚未儲存的變更。</translation>
+        </message>
+        <message>
+            <source>(untitled)</source>
+            <translation>（未命名）</translation>
+        </message>
+        <message>
+            <source>Data logging to %1 is running; quitting stops it.</source>
+            <translation>正在記錄資料到 %1；結束程式會停止記錄。</translation>
+        </message>
+        <message>
+            <source>Quit FATEK Studio</source>
+            <translation>結束 FATEK Studio</translation>
+        </message>
+        <message>
+            <source>&amp;Save and Quit</source>
+            <translation>儲存並結束(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Quit &amp;Without Saving</source>
+            <translation>不儲存直接結束(&amp;W)</translation>
+        </message>
+        <message>
+            <source>Stop Logging and &amp;Quit</source>
+            <translation>停止記錄並結束(&amp;Q)</translation>
+        </message>
+        <message numerus="yes">
+            <source> · %n failed attempt(s)</source>
+            <translation>
+                <numerusform> · 失敗 %n 次</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source> · F5 reconnects now</source>
+            <translation> · 按 F5 立即重新連線</translation>
+        </message>
+        <message>
+            <source>%1: %2 · %3 req/s · %4 errors · RTT %5</source>
+            <translation>%1：%2 · %3 次請求/秒 · %4 個錯誤 · RTT %5</translation>
+        </message>
+        <message>
+            <source>%1 ms</source>
+            <translation>%1 ms</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::OperatorMode</name>
@@ -2010,6 +2108,14 @@ Meaning %4</source>
 回應    %2
         %3
 意義    %4</translation>
+        </message>
+        <message>
+            <source>%1 (command %2) to station %3</source>
+            <translation>%1（命令 %2）至站號 %3</translation>
+        </message>
+        <message>
+            <source>unknown command %1 to station %2</source>
+            <translation>未知命令 %1 至站號 %2</translation>
         </message>
     </context>
     <context>
@@ -2478,6 +2584,16 @@ Meaning %4</source>
             <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
             <translation>%1 的新數值（%2；十六進位請寫成 0x1A 或 1Ah）：</translation>
         </message>
+        <message numerus="yes">
+            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
+            <translation>
+                <numerusform>已加入 %n 個項目，每個計時器與計數器接點旁附上其目前值（RT/RC）。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Operator mode (read-only): %1 cannot be written.</source>
+            <translation>操作員模式（唯讀）：無法寫入 %1。</translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -2571,6 +2687,83 @@ Meaning %4</source>
         <message>
             <source>%1, no answer from station %2</source>
             <translation>%1，站號 %2 沒有回應</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::StationScanDialog</name>
+        <message>
+            <source>Scan Stations</source>
+            <translation>掃描站號</translation>
+        </message>
+        <message>
+            <source>Asks each station on “%1” for its status (command 40), one at a time, and lists who answers.</source>
+            <translation>逐一詢問「%1」上每個站號的狀態（命令 40），並列出有回應的站號。</translation>
+        </message>
+        <message>
+            <source>No connection: open one first.</source>
+            <translation>沒有連線：請先開啟連線。</translation>
+        </message>
+        <message>
+            <source>to</source>
+            <translation>至</translation>
+        </message>
+        <message>
+            <source>Stations:</source>
+            <translation>站號：</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>How long each station has to answer (no retries). 100 ms suits 9600 baud and above; a modem or radio link needs more.</source>
+            <translation>每個站號的回應等待時間（不重試）。鮑率 9600 以上用 100 毫秒即可；數據機或無線電連線需要更長。</translation>
+        </message>
+        <message>
+            <source>Wait per station:</source>
+            <translation>每站等待：</translation>
+        </message>
+        <message>
+            <source>&amp;Scan</source>
+            <translation>掃描(&amp;S)</translation>
+        </message>
+        <message>
+            <source>&amp;Use Station</source>
+            <translation>使用此站號(&amp;U)</translation>
+        </message>
+        <message>
+            <source>Make the selected station the one the tools and new tables use</source>
+            <translation>讓工具與新的表格使用所選的站號</translation>
+        </message>
+        <message>
+            <source>Scanning stations %1 to %2 …</source>
+            <translation>正在掃描站號 %1 至 %2 …</translation>
+        </message>
+        <message>
+            <source>Station %1 — %2</source>
+            <translation>站號 %1 — %2</translation>
+        </message>
+        <message>
+            <source> (in use)</source>
+            <translation>（使用中）</translation>
+        </message>
+        <message>
+            <source>No station answered. Check the cable, the baud rate and parity, and that the PLCs are powered.</source>
+            <translation>沒有站號回應。請檢查線路、鮑率與同位元，以及 PLC 是否已通電。</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n station(s) answered.</source>
+            <translation>
+                <numerusform>有 %n 個站號回應。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>“%1” now uses station %2.</source>
+            <translation>「%1」現在使用站號 %2。</translation>
+        </message>
+        <message>
+            <source>&amp;Cancel Scan</source>
+            <translation>取消掃描(&amp;C)</translation>
         </message>
     </context>
 </TS>

@@ -88,11 +88,14 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         case StationColumn: return tr("Station the tools act on; double-click to change");
         case PlcColumn: {
             const std::optional<DetailStatus> detail = c->plcDetail();
-            return detail ? tr("Station %1: %2 (RUN/STOP read every %3 s)")
-                                .arg(c->station())
-                                .arg(QString::fromStdString(detail->summary()))
-                                .arg(Connection::plcStatusIntervalMs / 1000)
-                          : tr("The PLC has not said what it is yet");
+            const std::optional<std::string> model
+                = detail ? detail->modelName() : std::optional<std::string>();
+            // More about the PLC (OS, program size) is in Tools > PLC Control.
+            return model ? tr("Station %1: %2 (RUN/STOP read every %3 s)")
+                               .arg(c->station())
+                               .arg(QString::fromStdString(*model))
+                               .arg(Connection::plcStatusIntervalMs / 1000)
+                         : tr("The PLC has not said what it is yet");
         }
         default: {
             // Per station: several PLCs on one RS-485 line share a connection.

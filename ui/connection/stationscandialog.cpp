@@ -92,10 +92,9 @@ StationScanDialog::StationScanDialog(Connection *connection, QWidget *parent)
 
     if (connection) {
         m_scanner = new StationScanner(connection->session(), this);
-        connect(m_scanner, &StationScanner::stationFound, this,
-                [this](const StationScanner::Hit &hit) {
-                    onFound(hit.station, hit.status.running);
-                });
+        connect(
+            m_scanner, &StationScanner::stationFound, this,
+            [this](const StationScanner::Hit &hit) { onFound(hit.station, hit.status.running); });
         connect(m_scanner, &StationScanner::progress, this, [this](int done, int total) {
             m_progress->setMaximum(total);
             m_progress->setValue(done);
@@ -134,10 +133,11 @@ void StationScanDialog::start()
 
 void StationScanDialog::onFound(int station, bool running)
 {
-    auto *item = new QListWidgetItem(
-        tr("Station %1 \u2014 %2").arg(station).arg(running ? QStringLiteral("RUN")
-                                                              : QStringLiteral("STOP")),
-        m_list);
+    auto *item
+        = new QListWidgetItem(tr("Station %1 \u2014 %2")
+                                  .arg(station)
+                                  .arg(running ? QStringLiteral("RUN") : QStringLiteral("STOP")),
+                              m_list);
     item->setData(Qt::UserRole, station);
     if (m_connection && station == m_connection->station())
         item->setText(item->text() + tr(" (in use)"));
@@ -161,9 +161,8 @@ void StationScanDialog::useSelected()
         return;
     const int station = selected.first()->data(Qt::UserRole).toInt();
     m_connection->setStation(static_cast<quint8>(station));
-    m_status->setText(tr("\u201c%1\u201d now uses station %2.")
-                          .arg(m_connection->name())
-                          .arg(station));
+    m_status->setText(
+        tr("\u201c%1\u201d now uses station %2.").arg(m_connection->name()).arg(station));
 }
 
 void StationScanDialog::updateButtons()

@@ -275,15 +275,15 @@ void MainWindow::createTools()
         });
         return dock;
     };
-    QDockWidget *control = addDock(new PlcControlPanel(this), tr("PLC Control"),
-                                   QStringLiteral("plcControlDock"), Qt::RightDockWidgetArea,
-                                   QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
-    QDockWidget *forcing = addDock(new ForcingPanel(this), tr("Forcing"),
-                                   QStringLiteral("forcingDock"), Qt::RightDockWidgetArea,
-                                   QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
-    QDockWidget *console = addDock(new RawConsole(this), tr("Raw Console"),
-                                   QStringLiteral("rawConsoleDock"), Qt::BottomDockWidgetArea,
-                                   QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    QDockWidget *control
+        = addDock(new PlcControlPanel(this), tr("PLC Control"), QStringLiteral("plcControlDock"),
+                  Qt::RightDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    QDockWidget *forcing
+        = addDock(new ForcingPanel(this), tr("Forcing"), QStringLiteral("forcingDock"),
+                  Qt::RightDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    QDockWidget *console
+        = addDock(new RawConsole(this), tr("Raw Console"), QStringLiteral("rawConsoleDock"),
+                  Qt::BottomDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
     tabifyDockWidget(control, forcing);
     // The watch tables own the width: the side tools start hidden (Tools menu, shortcuts above);
     // the console shares the bottom area with the connections as a tab. QSettings keeps what the
@@ -441,10 +441,9 @@ void MainWindow::rebuildRecentMenu()
     m_recentMenu->clear();
     const QList<SavedConnection> recent = m_manager->recent();
     for (const SavedConnection &c : recent) {
-        m_recentMenu->addAction(tr("%1 — %2, station %3")
-                                    .arg(c.name, CoreText::settings(c.settings))
-                                    .arg(c.station),
-                                this, [this, c] { openConnection(c); });
+        m_recentMenu->addAction(
+            tr("%1 — %2, station %3").arg(c.name, CoreText::settings(c.settings)).arg(c.station),
+            this, [this, c] { openConnection(c); });
     }
     if (const int unreadable = m_manager->unreadableRecent(); unreadable > 0) {
         m_recentMenu->addSeparator();
@@ -618,9 +617,9 @@ void MainWindow::openWatchListDialog()
 
 bool MainWindow::saveWatchListDialog()
 {
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Save Watch List"), m_listPath.isEmpty() ? lastDirectory() : m_listPath,
-        tr("Watch lists (*.json)"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Watch List"),
+                                                m_listPath.isEmpty() ? lastDirectory() : m_listPath,
+                                                tr("Watch lists (*.json)"));
     if (path.isEmpty())
         return false;
     if (QFileInfo(path).suffix().isEmpty())
@@ -657,8 +656,7 @@ bool MainWindow::isWatchListModified() const
 void MainWindow::updateWindowTitle()
 {
     // The platform adds the application name ("… — FATEK Studio"): the title names the document.
-    const QString list
-        = m_listPath.isEmpty() ? tr("Untitled") : QFileInfo(m_listPath).fileName();
+    const QString list = m_listPath.isEmpty() ? tr("Untitled") : QFileInfo(m_listPath).fileName();
     setWindowTitle(m_readOnly ? tr("%1 — Operator mode (read-only)").arg(list) : list);
     setWindowFilePath(m_listPath);
 }
@@ -787,8 +785,7 @@ void MainWindow::updateLinkStatus()
     }
     const StationStatistics &t = c->statistics().total;
     const LinkState state = c->linkState();
-    m_reconnectAction->setEnabled(state != LinkState::Connected
-                                  && state != LinkState::Connecting);
+    m_reconnectAction->setEnabled(state != LinkState::Connected && state != LinkState::Connecting);
     if (state != LinkState::Connected) {
         // A link that is down has no rate or round trip worth showing: say why and how often.
         QString text = tr("%1: %2").arg(c->name(), c->stateText());
@@ -913,7 +910,8 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore();
         return;
     }
-    stopLogging(); // the log file is complete when the window goes
+    m_quitConfirmed = false; // a window shown again asks again
+    stopLogging();           // the log file is complete when the window goes
     QSettings settings;
     settings.setValue(geometryKey, saveGeometry());
     settings.setValue(stateKey, saveState());

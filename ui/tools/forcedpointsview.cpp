@@ -80,8 +80,8 @@ void ForcedPointsView::setTarget(Session *session, quint8 station, const QString
     m_plcNote.clear();
     m_forced.clear();
     showList();
-    m_message->setMessage(session ? tr("Press Scan to list the forced points.") : tr("No connection."),
-        false);
+    m_message->setMessage(
+        session ? tr("Press Scan to list the forced points.") : tr("No connection."), false);
     updateEnabled();
 }
 
@@ -113,8 +113,7 @@ void ForcedPointsView::scan()
     if (!m_ranges->text().trimmed().isEmpty()) {
         const Result<QList<DiscreteRange>> ranges = DiscreteRange::parseList(m_ranges->text());
         if (!ranges) {
-            m_message->setMessage(QString::fromStdString(ranges.error().message),
-                                     true);
+            m_message->setMessage(QString::fromStdString(ranges.error().message), true);
             return;
         }
         scanRanges(*ranges, {});
@@ -216,7 +215,7 @@ void ForcedPointsView::scanRanges(const QList<DiscreteRange> &ranges, const QStr
                     text += QLatin1Char(' ') + note;
                 // Keep the outcome of an Enable all visible in front of the new list.
                 m_message->setMessage((m_prefix + QLatin1Char(' ') + text).trimmed(),
-                                         m_prefixIsError || !state->errors.isEmpty());
+                                      m_prefixIsError || !state->errors.isEmpty());
                 m_prefix.clear();
                 m_prefixIsError = false;
                 updateEnabled();
@@ -232,8 +231,7 @@ void ForcedPointsView::enableAll()
                                  .arg(DiscreteControlBatch::describe(DiscreteOp::Enable, m_forced),
                                       ToolConfirmation::target(m_station, m_connectionName));
     if (!ToolConfirmation::ask(this, tr("Enable all forced points"), question, m_confirmer)) {
-        m_message->setMessage(tr("Enable all cancelled; the points stay forced."),
-                                 false);
+        m_message->setMessage(tr("Enable all cancelled; the points stay forced."), false);
         return;
     }
     m_enabling = true;

@@ -172,8 +172,7 @@ void ForcingPanel::showRange(ElementType type, quint32 start, quint32 count)
 {
     const int index = m_type->findData(static_cast<int>(type));
     if (index < 0) {
-        m_message->setMessage(tr("Only X, Y, M, S, T and C points can be forced."),
-                                 true);
+        m_message->setMessage(tr("Only X, Y, M, S, T and C points can be forced."), true);
         return;
     }
     m_type->setCurrentIndex(index);
@@ -231,8 +230,7 @@ void ForcingPanel::refresh()
                 values = r.response().values;
             else
                 m_message->setMessage(
-                    tr("Could not read: %1").arg(CoreText::message(r.errorText())),
-                    true);
+                    tr("Could not read: %1").arg(CoreText::message(r.errorText())), true);
             if (states)
                 m_model->setStates(values);
             else
@@ -258,8 +256,7 @@ void ForcingPanel::applyToSelection(DiscreteOp op)
         rows << index.row();
     std::sort(rows.begin(), rows.end());
     if (rows.isEmpty()) {
-        m_message->setMessage(
-            tr("Select the points first (Ctrl/Shift-click for several)."), false);
+        m_message->setMessage(tr("Select the points first (Ctrl/Shift-click for several)."), false);
         return;
     }
     QList<Address> points;
