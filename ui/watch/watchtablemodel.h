@@ -79,7 +79,9 @@ public:
     // none is lost (an element missing from a newer batch keeps its newest older value).
     void queueValues(const QList<WatchValue> &values);
     bool hasQueuedValues() const { return !m_queue.empty(); }
-    // Applies everything queued now (also done before any change of the rows or their quality).
+    // Applies everything queued now. markAllStale does so first: a good value queued before must
+    // not turn a row fresh after it. Rows may be added or removed meanwhile (values are found by
+    // poll id when applied; those of removed rows are dropped); setItems drops the queue.
     void flushValues();
     static constexpr int frameMs = 16;
     static constexpr int sliceBudgetMs = 3;
