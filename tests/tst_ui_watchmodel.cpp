@@ -283,6 +283,24 @@ private Q_SLOTS:
         QCOMPARE(model.quality(0), ValueQuality::Stale);
     }
 
+    void rowsChangedWhileValuesAreQueued()
+    {
+        // Queued values find their rows by poll id when applied: a row removed or re-spanned
+        // meanwhile gets nothing, the others get theirs.
+        WatchTableModel model;
+        model.addItems({item("R0", DisplayFormat::Unsigned), item("R1", DisplayFormat::Unsigned),
+                        item("R2", DisplayFormat::Unsigned)});
+        const QList<WatchEntry> entries = model.pollEntries(100);
+        model.queueValues(
+            {good(entries.at(0).id, 10), good(entries.at(1).id, 11), good(entries.at(2).id, 12)});
+        QVERIFY(model.removeRows(0, 1));
+        QVERIFY(model.setFormat(1, DisplayFormat::Float32, false).ok()); // R2 gets new poll ids
+        QTRY_VERIFY(!model.hasQueuedValues());
+        QCOMPARE(model.rowCount(), 2);
+        QCOMPARE(model.rawValue(0), std::uint64_t(11));
+        QVERIFY(!model.hasValue(1));
+    }
+
     void staleKeepsValueWithReason()
     {
         WatchTableModel model;
