@@ -175,6 +175,132 @@ private Q_SLOTS:
         QCOMPARE(ranges(), moved);
     }
 
+    void queuedBurstEndsWithNewestValues()
+    {
+        // Six rows, the last a float over two registers. 40 batches come at once (a UI thread that
+        // fell behind): batch k reads every element as k at t0 + k s, except that the newest
+        // batch lacks row 4 and says row 3 is stale (timeout): rows 3 and 4 must keep their newest
+        // good value (38 and 38 at t0 + 38 s) and row 3 must not look fresh.
+        WatchTableModel model;
+        model.addItems({item("R0", DisplayFormat::Unsigned), item("R1", DisplayFormat::Unsigned),
+                        item("R2", DisplayFormat::Unsigned), item("R3", DisplayFormat::Unsigned),
+                        item("R4", DisplayFormat::Unsigned), item("R5", DisplayFormat::Float32)});
+        const QList<WatchEntry> entries = model.pollEntries(100);
+        QCOMPARE(entries.size(), 7);
+        const QDateTime t0 = QDateTime::currentDateTimeUtc();
+        const auto time = [&t0](int k) {
+            return t0.addSecs(k);
+        };
+        const int batches = 40;
+        for (int k = 1; k <= batches; ++k) {
+            QList<WatchValue> batch;
+            for (int e = 0; e < entries.size(); ++e) {
+                WatchValue v = good(entries.at(e).id, static_cast<std::uint32_t>(k));
+                v.timestamp = time(k);
+                if (k == batches && e == 4)
+                    continue;
+                if (k == batches && e == 3) {
+                    v.quality = ValueQuality::Stale;
+                    v.value = static_cast<std::uint32_t>(k - 1); // the poller's last good value
+                    v.timestamp = time(k - 1);
+                    v.error = QStringLiteral("timeout after 1000 ms");
+                }
+                batch.append(v);
+            }
+            model.queueValues(batch);
+        }
+        QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+        QSignalSpy reset(&model, &QAbstractItemModel::modelReset);
+        // Nothing is applied inside the caller's slot: the event loop applies it.
+        QVERIFY(model.hasQueuedValues());
+        QVERIFY(!model.hasValue(0));
+        QTRY_VERIFY(!model.hasQueuedValues());
+
+        const auto text = [&model](int row, int column) {
+            return model.data(model.index(row, column)).toString();
+        };
+        const auto shown = [](const QDateTime &t) {
+            return t.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz"));
+        };
+        for (int row = 0; row < 3; ++row) {
+            QCOMPARE(model.rawValue(row), std::uint64_t(batches));
+            QCOMPARE(model.quality(row), ValueQuality::Good);
+            QCOMPARE(text(row, WatchTableModel::UpdatedColumn), shown(time(batches)));
+        }
+        QCOMPARE(model.rawValue(3), std::uint64_t(batches - 1));
+        QCOMPARE(model.quality(3), ValueQuality::Stale);
+        QCOMPARE(text(3, WatchTableModel::QualityColumn), QStringLiteral("stale"));
+        QCOMPARE(text(3, WatchTableModel::UpdatedColumn), shown(time(batches - 1)));
+        QCOMPARE(model.rawValue(4), std::uint64_t(batches - 1));
+        QCOMPARE(model.quality(4), ValueQuality::Good);
+        QCOMPARE(text(4, WatchTableModel::UpdatedColumn), shown(time(batches - 1)));
+        QCOMPARE(model.rawValue(5), (std::uint64_t(batches) << 16) | std::uint64_t(batches));
+
+        // Coalesced: one signal per changed column over the run of rows 0..5, not one per batch.
+        // The newest batch comes first and older ones only fill rows 3 and 4 (it lacks their
+        // values) in the same slice: a slice applies 64 values before it looks at the clock.
+        QCOMPARE(reset.count(), 0);
+        QStringList ranges;
+        for (const QList<QVariant> &args : std::as_const(changed)) {
+            const QModelIndex first = args.at(0).toModelIndex();
+            const QModelIndex last = args.at(1).toModelIndex();
+            ranges << QStringLiteral("%1:%2,%3:%4")
+                          .arg(first.column())
+                          .arg(first.row())
+                          .arg(last.column())
+                          .arg(last.row());
+        }
+        ranges.sort();
+        QStringList expected;
+        for (int column : {WatchTableModel::ValueColumn, WatchTableModel::QualityColumn,
+                           WatchTableModel::UpdatedColumn})
+            expected << QStringLiteral("%1:0,%1:5").arg(column);
+        expected.sort();
+        QCOMPARE(ranges, expected);
+
+        // A batch applied now (applyValues) also takes what is still queued, newest last.
+        QList<WatchValue> older{good(entries.at(0).id, 1000)};
+        QList<WatchValue> newer{good(entries.at(0).id, 2000)};
+        model.queueValues(older);
+        model.applyValues(newer);
+        QVERIFY(!model.hasQueuedValues());
+        QCOMPARE(model.rawValue(0), std::uint64_t(2000));
+    }
+
+    void staleMarkingWaitsForNothingQueued()
+    {
+        // Values delivered before the link went down are applied first, then marked stale: a
+        // queued good value must never turn a row fresh after markAllStale.
+        WatchTableModel model;
+        model.addItems({item("R0", DisplayFormat::Unsigned)});
+        const quint64 id = model.pollEntries(100).at(0).id;
+        model.queueValues({good(id, 7)});
+        model.markAllStale(QStringLiteral("link down"));
+        QVERIFY(!model.hasQueuedValues());
+        QCOMPARE(model.rawValue(0), std::uint64_t(7));
+        QCOMPARE(model.quality(0), ValueQuality::Stale);
+        QTest::qWait(2 * WatchTableModel::frameMs);
+        QCOMPARE(model.quality(0), ValueQuality::Stale);
+    }
+
+    void rowsChangedWhileValuesAreQueued()
+    {
+        // Queued values find their rows by poll id when applied: a row removed or re-spanned
+        // meanwhile gets nothing, the others get theirs.
+        WatchTableModel model;
+        model.addItems({item("R0", DisplayFormat::Unsigned), item("R1", DisplayFormat::Unsigned),
+                        item("R2", DisplayFormat::Unsigned)});
+        const QList<WatchEntry> entries = model.pollEntries(100);
+        model.queueValues(
+            {good(entries.at(0).id, 10), good(entries.at(1).id, 11), good(entries.at(2).id, 12)});
+        QVERIFY(model.removeRows(0, 1));
+        QVERIFY(model.setFormat(1, DisplayFormat::Float32, false).ok()); // R2 gets new poll ids
+        QTRY_VERIFY(!model.hasQueuedValues());
+        QCOMPARE(model.rowCount(), 2);
+        QCOMPARE(model.rawValue(0), std::uint64_t(11));
+        QVERIFY(!model.hasValue(1));
+    }
+
     void staleKeepsValueWithReason()
     {
         WatchTableModel model;

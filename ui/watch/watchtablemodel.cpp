@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <utility>
 
 namespace Fatek {
 
@@ -47,6 +48,18 @@ WatchTableModel::WatchTableModel(QObject *parent)
     m_clock.start();
     m_flashTimer.setInterval(100);
     connect(&m_flashTimer, &QTimer::timeout, this, &WatchTableModel::expireFlashes);
+    m_sliceTimer.setSingleShot(true);
+    connect(&m_sliceTimer, &QTimer::timeout, this, [this] {
+        if (!m_inRound) {
+            m_inRound = true;
+            m_roundStart.start();
+        }
+        applySlice(qint64(sliceBudgetMs) * 1000000);
+        if (m_queue.empty())
+            m_inRound = false;
+        else
+            scheduleSlice();
+    });
 }
 
 int WatchTableModel::rowCount(const QModelIndex &parent) const
@@ -64,6 +77,7 @@ void WatchTableModel::allocateIds(Row &row)
     const int count = std::max(1, ValueFormat::elementCount(row.spec.address, row.spec.format));
     row.ids.clear();
     row.parts.assign(static_cast<std::size_t>(count), Part{});
+    row.complete = false;
     for (int i = 0; i < count; ++i)
         row.ids.push_back(nextPollId++);
 }
@@ -99,6 +113,10 @@ void WatchTableModel::addItems(const QList<WatchItemSpec> &items)
 void WatchTableModel::setItems(const QList<WatchItemSpec> &items)
 {
     beginResetModel();
+    // Values queued for the old rows have nowhere to go.
+    m_queue.clear();
+    m_sliceTimer.stop();
+    m_inRound = false;
     m_rows.clear();
     m_index.clear();
     endResetModel();
@@ -179,8 +197,7 @@ int WatchTableModel::valueWidth(int row) const
 
 bool WatchTableModel::received(const Row &row) const
 {
-    return std::all_of(row.parts.cbegin(), row.parts.cend(),
-                       [](const Part &p) { return p.received; });
+    return row.complete;
 }
 
 bool WatchTableModel::hasValue(int row) const
@@ -249,57 +266,143 @@ QList<WatchEntry> WatchTableModel::pollEntries(int intervalMs) const
 
 void WatchTableModel::applyValues(const QList<WatchValue> &values)
 {
+    queueValues(values);
+    flushValues();
+}
+
+void WatchTableModel::queueValues(const QList<WatchValue> &values)
+{
+    if (values.isEmpty())
+        return;
+    m_queue.push_back({values, ++m_batchSequence, 0});
+    scheduleSlice();
+}
+
+void WatchTableModel::scheduleSlice()
+{
+    if (m_queue.empty() || m_sliceTimer.isActive())
+        return;
+    if (m_inRound) {
+        m_sliceTimer.start(0); // the round goes on once the event loop has had its turn
+        return;
+    }
+    // A new round starts at most once per frame: batches that come faster wait and coalesce.
+    const qint64 sinceRound = m_roundStart.isValid() ? m_roundStart.elapsed() : frameMs;
+    m_sliceTimer.start(static_cast<int>(std::clamp<qint64>(frameMs - sinceRound, 0, frameMs)));
+}
+
+void WatchTableModel::flushValues()
+{
+    m_sliceTimer.stop();
+    applySlice(-1);
+    m_inRound = false;
+}
+
+void WatchTableModel::applySlice(qint64 budgetNs)
+{
+    QElapsedTimer clock;
+    clock.start();
+    ++m_slice;
+    int sinceCheck = 0;
+    bool outOfTime = false;
+    // Newest batch first: an element it sets is skipped in the older ones, so that a burst of
+    // batches costs one apply per element, and an element only older batches carry still gets
+    // its newest value.
+    while (!m_queue.empty() && !outOfTime) {
+        Batch &batch = m_queue.back();
+        const WatchValue *values = std::as_const(batch.values).constData();
+        const qsizetype count = batch.values.size();
+        while (batch.next < count) {
+            applyOne(values[batch.next++], batch.sequence);
+            if (budgetNs >= 0 && ++sinceCheck == 64) {
+                sinceCheck = 0;
+                if (clock.nsecsElapsed() >= budgetNs) {
+                    outOfTime = true;
+                    break;
+                }
+            }
+        }
+        if (batch.next >= count)
+            m_queue.pop_back();
+    }
+    finishSlice();
+}
+
+void WatchTableModel::applyOne(const WatchValue &v, quint64 batch)
+{
+    const auto it = m_index.constFind(v.itemId);
+    if (it == m_index.cend())
+        return;
+    const int r = it->first;
+    Row &row = m_rows[r];
+    Part &part = row.parts[static_cast<std::size_t>(it->second)];
+    // The quality comes from the newest batch that has the element, the value and its time from
+    // the newest one that read it (a newer "stale" keeps an older good value, as in order).
+    const bool good = v.quality == ValueQuality::Good;
+    const bool newerQuality = batch >= part.qualityBatch;
+    const bool newerValue = good && batch >= part.valueBatch;
+    if (!newerQuality && !newerValue)
+        return; // newer batches have set it
+    if (row.slice != m_slice) {
+        row.slice = m_slice;
+        row.hadValue = row.complete;
+        row.before = row.complete ? combine(row) : 0;
+        m_touchedRows.push_back(r);
+    }
     // Only the cells that really change are reported: an open editor (name, format, a value being
     // typed) must not be disturbed, and unchanged cells need no repaint.
-    std::vector<int> valueRows;
-    std::vector<int> qualityRows;
-    std::vector<int> updatedRows;
-    const qint64 now = m_clock.elapsed();
-    QHash<int, std::uint64_t> before;
-    for (const WatchValue &v : values) {
-        const auto it = m_index.constFind(v.itemId);
-        if (it == m_index.cend())
-            continue;
-        const int r = it->first;
-        Row &row = m_rows[r];
-        if (!before.contains(r))
-            before.insert(r, received(row) ? combine(row) : ~std::uint64_t(0));
-        Part &part = row.parts[static_cast<std::size_t>(it->second)];
-        const bool good = v.quality == ValueQuality::Good;
-        const bool qualityChanged = part.quality != v.quality || part.error != v.error;
-        const bool valueChanged = good && (!part.received || part.value != v.value);
-        const bool updatedChanged = good && part.timestamp != v.timestamp;
-        if (qualityChanged || (good && !part.received))
-            qualityRows.push_back(r); // "waiting" becomes a quality with the first value
-        if (qualityChanged || valueChanged)
-            valueRows.push_back(r); // the value's font, colour and tooltip follow the quality
-        if (updatedChanged)
-            updatedRows.push_back(r);
-        part.quality = v.quality;
-        part.error = v.error;
-        if (good) {
-            part.value = v.value;
-            part.timestamp = v.timestamp;
-            part.received = true;
+    const bool qualityChanged
+        = newerQuality && (part.quality != v.quality || part.error != v.error);
+    const bool valueChanged = newerValue && (!part.received || part.value != v.value);
+    const bool updatedChanged = newerValue && part.timestamp != v.timestamp;
+    if (qualityChanged || (newerValue && !part.received))
+        m_qualityRows.push_back(r); // "waiting" becomes a quality with the first value
+    if (qualityChanged || valueChanged)
+        m_valueRows.push_back(r); // the value's font, colour and tooltip follow the quality
+    if (updatedChanged)
+        m_updatedRows.push_back(r);
+    if (newerQuality) {
+        part.qualityBatch = batch;
+        if (qualityChanged) {
+            part.quality = v.quality;
+            part.error = v.error;
         }
     }
+    if (newerValue) {
+        part.valueBatch = batch;
+        part.value = v.value;
+        part.timestamp = v.timestamp;
+        if (!part.received) {
+            part.received = true;
+            row.complete = std::all_of(row.parts.cbegin(), row.parts.cend(),
+                                       [](const Part &p) { return p.received; });
+        }
+    }
+}
+
+void WatchTableModel::finishSlice()
+{
+    const qint64 now = m_clock.elapsed();
     bool flashed = false;
-    for (auto it = before.cbegin(); it != before.cend(); ++it) {
-        Row &row = m_rows[it.key()];
-        if (received(row) && combine(row) != it.value()) {
+    for (int r : m_touchedRows) {
+        Row &row = m_rows[r];
+        if (row.complete && (!row.hadValue || combine(row) != row.before)) {
             row.flashUntil = now + flashMs;
             flashed = true;
         }
     }
+    m_touchedRows.clear();
     if (flashed && !m_flashTimer.isActive())
         m_flashTimer.start();
-    emitRowsChanged(std::move(valueRows), ValueColumn, ValueColumn);
-    emitRowsChanged(std::move(qualityRows), QualityColumn, QualityColumn);
-    emitRowsChanged(std::move(updatedRows), UpdatedColumn, UpdatedColumn);
+    emitRowsChanged(std::exchange(m_valueRows, {}), ValueColumn, ValueColumn);
+    emitRowsChanged(std::exchange(m_qualityRows, {}), QualityColumn, QualityColumn);
+    emitRowsChanged(std::exchange(m_updatedRows, {}), UpdatedColumn, UpdatedColumn);
 }
 
 void WatchTableModel::markAllStale(const QString &reason)
 {
+    // What was delivered before goes in first: it must not turn a row good again afterwards.
+    flushValues();
     std::vector<int> touched;
     for (int r = 0; r < m_rows.size(); ++r) {
         bool changed = false;
@@ -371,7 +474,8 @@ void WatchTableModel::emitRowsChanged(std::vector<int> rows, int firstColumn, in
 {
     // One dataChanged per run of consecutive rows: a 100-row table polled every 100 ms must not
     // cost 100 signals per batch.
-    std::sort(rows.begin(), rows.end());
+    if (!std::is_sorted(rows.cbegin(), rows.cend()))
+        std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
     std::size_t i = 0;
     while (i < rows.size()) {

@@ -17,7 +17,9 @@ namespace Fatek {
 // Rows of one watch table: what to watch (WatchItemSpec) plus the latest value, its quality and
 // time. Every item spans one or more elements (a float over R100 is R100+R101); each element is a
 // poll entry with its own id, and the model joins them back into one raw value.
-// Values arrive in batches (applyValues); changed rows are reported with coalesced dataChanged.
+// Values arrive in batches (applyValues, or queueValues while polling); changed rows are reported
+// with coalesced dataChanged, one per run of rows and changed column. Values are formatted in
+// data(), that is only for the rows a view asks about (the visible ones).
 class WatchTableModel : public QAbstractTableModel
 {
     Q_OBJECT
@@ -68,7 +70,21 @@ public:
 
     // What the session polls for this table.
     QList<WatchEntry> pollEntries(int intervalMs) const;
+    // Applies a batch now: every value is in the model when this returns.
     void applyValues(const QList<WatchValue> &values);
+    // Polling: the batch is kept and applied from the event loop, in slices of at most
+    // sliceBudgetMs and at most one round of slices started per frameMs, so that a batch of
+    // 10,000 values (or a burst of batches) never holds the UI thread for a frame. Batches queued
+    // meanwhile are coalesced: the newest value of each element wins, older ones are skipped,
+    // none is lost (an element missing from a newer batch keeps its newest older value).
+    void queueValues(const QList<WatchValue> &values);
+    bool hasQueuedValues() const { return !m_queue.empty(); }
+    // Applies everything queued now. markAllStale does so first: a good value queued before must
+    // not turn a row fresh after it. Rows may be added or removed meanwhile (values are found by
+    // poll id when applied; those of removed rows are dropped); setItems drops the queue.
+    void flushValues();
+    static constexpr int frameMs = 16;
+    static constexpr int sliceBudgetMs = 3;
     // No values are coming (no connection, paused): every row keeps its value, marked stale.
     void markAllStale(const QString &reason);
 
@@ -103,6 +119,10 @@ private:
         QString error;
         QDateTime timestamp;
         bool received = false;
+        // Sequence numbers of the batches that set the quality and the value: a newer batch wins,
+        // so applying queued batches newest first ends as applying them in order would.
+        quint64 qualityBatch = 0;
+        quint64 valueBatch = 0;
     };
     struct Row
     {
@@ -113,11 +133,25 @@ private:
         QString writeOutcome;
         qint64 flashUntil = 0;
         std::optional<bool> forced;
+        bool complete = false;    // every part has received a value
+        quint64 slice = 0;        // last apply slice that touched the row
+        std::uint64_t before = 0; // the row's value when that slice first touched it
+        bool hadValue = false;    // and whether it had one
+    };
+    struct Batch
+    {
+        QList<WatchValue> values;
+        quint64 sequence = 0;
+        qsizetype next = 0; // values before this one are applied or skipped
     };
 
     void allocateIds(Row &row);
     void rebuildIndex();
     void emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn);
+    void scheduleSlice();
+    void applySlice(qint64 budgetNs);
+    void applyOne(const WatchValue &v, quint64 batch);
+    void finishSlice();
     void expireFlashes();
     bool received(const Row &row) const;
     std::uint64_t combine(const Row &row) const;
@@ -132,6 +166,20 @@ private:
     QIcon m_errorIcon;
     QIcon m_forcedIcon;
     QList<quint8> m_silentStations;
+
+    // Queued batches, oldest first; applied newest first (older values of an element that a
+    // newer batch already set are skipped).
+    std::vector<Batch> m_queue;
+    quint64 m_batchSequence = 0;
+    QTimer m_sliceTimer;
+    QElapsedTimer m_roundStart; // start of the last round of slices
+    bool m_inRound = false;     // slices follow each other until the queue is empty
+    // The slice under way: its number and the rows whose cells it changed.
+    quint64 m_slice = 0;
+    std::vector<int> m_touchedRows;
+    std::vector<int> m_valueRows;
+    std::vector<int> m_qualityRows;
+    std::vector<int> m_updatedRows;
 };
 
 } // namespace Fatek

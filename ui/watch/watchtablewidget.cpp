@@ -8,6 +8,7 @@
 #include "watchdelegate.h"
 #include "watchinput.h"
 #include "watchtablemodel.h"
+#include "watchtableview.h"
 #include "writerequest.h"
 
 #include <QAction>
@@ -35,7 +36,7 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     , m_manager(manager)
     , m_name(tr("Watch"))
     , m_model(new WatchTableModel(this))
-    , m_view(new QTableView(this))
+    , m_view(new WatchTableView(this))
     , m_forcedMarks(new ForcedMarks(m_model, this))
 {
     m_addEdit = new QLineEdit(this);
@@ -221,9 +222,10 @@ void WatchTableWidget::setConnection(Connection *connection)
     m_connection = connection;
     if (connection) {
         // A paused table is frozen: a cycle already under way when it paused must not update it.
+        // Batches are applied in time slices, coalesced per frame (WatchTableModel::queueValues).
         connect(connection, &Connection::values, m_model, [this](const QList<WatchValue> &values) {
             if (!isPaused())
-                m_model->applyValues(values);
+                m_model->queueValues(values);
         });
         // The session stops polling while its link is down (no batches come): mark the rows here.
         connect(connection, &Connection::linkStateChanged, m_model,
