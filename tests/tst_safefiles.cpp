@@ -4,6 +4,7 @@
 #include "connectionmanager.h"
 #include "mainwindow.h"
 #include "testutil.h"
+#include "uitestutil.h"
 #include "watchlist.h"
 #include "watchtablewidget.h"
 
@@ -118,7 +119,11 @@ private Q_SLOTS:
             QVERIFY(!window.loadWatchList(path).ok());
             QCOMPARE(window.watchTables().size(), 1);
             QCOMPARE(window.currentWatchTable()->spec(), before);
-            window.close();
+            // The tables were changed by hand: quitting asks, and not saving leaves the file alone.
+            const QString question = UiTestUtil::answerModal([&] { window.close(); },
+                                                             UiTestUtil::clickButton("quitButton"));
+            QVERIFY2(question.contains(QStringLiteral("not saved")), qPrintable(question));
+            QTRY_VERIFY(!window.isVisible());
         }
         QCOMPARE(readAll(path), corrupt);
     }

@@ -15,6 +15,7 @@
 #include "simulatedplc.h"
 #include "stationscandialog.h"
 #include "testutil.h"
+#include "uitestutil.h"
 #include "watchtablemodel.h"
 
 #include <QApplication>
@@ -36,6 +37,8 @@
 #include <functional>
 
 using namespace Fatek;
+using UiTestUtil::answerModal;
+using UiTestUtil::clickButton;
 
 namespace {
 
@@ -90,35 +93,6 @@ void typeSlowly(QWidget *widget, const QString &text)
 {
     for (const QChar ch : text)
         QTest::keyClicks(widget, QString(ch), Qt::NoModifier, keyDelayMs);
-}
-
-// Runs `answer` on the first modal dialog that shows up while `action` runs (modal dialogs have
-// their own event loop, so the answer must come from a timer, as a person's hand would).
-QString answerModal(const std::function<void()> &action,
-                    const std::function<void(QWidget *)> &answer)
-{
-    QString seen;
-    bool answered = false;
-    QTimer hand;
-    hand.setInterval(50);
-    QObject::connect(&hand, &QTimer::timeout, &hand, [&] {
-        QWidget *modal = QApplication::activeModalWidget();
-        if (!modal || answered)
-            return;
-        hand.stop();
-        if (auto *box = qobject_cast<QMessageBox *>(modal))
-            seen = box->text();
-        QTest::qWait(300); // reading the question
-        answered = true;
-        answer(modal);
-    });
-    hand.start();
-    action();
-    // The question may open after the action returns (a queued write): wait for the hand.
-    if (!QTest::qWaitFor([&] { return answered; }, 10000))
-        qWarning("no question showed up");
-    hand.stop();
-    return seen;
 }
 
 } // namespace
@@ -346,13 +320,6 @@ private Q_SLOTS:
         typeSlowly(table->addressEdit(), QStringLiteral("R0 R1"));
         QTest::keyClick(table->addressEdit(), Qt::Key_Return);
         QCOMPARE(table->model()->rowCount(), 2);
-        auto clickButton = [](const char *name) {
-            return [name](QWidget *modal) {
-                auto *button = modal->findChild<QPushButton *>(QLatin1String(name));
-                QVERIFY2(button, name);
-                QTest::mouseClick(button, Qt::LeftButton);
-            };
-        };
         QString question
             = answerModal([&] { QTest::keyClick(&window, Qt::Key_Q, Qt::ControlModifier); },
                           clickButton("cancelButton"));

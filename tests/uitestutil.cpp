@@ -1,0 +1,50 @@
+#include "uitestutil.h"
+
+#include <QApplication>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTest>
+#include <QTimer>
+
+namespace UiTestUtil {
+
+QString answerModal(const std::function<void()> &action,
+                    const std::function<void(QWidget *)> &answer)
+{
+    QString seen;
+    bool answered = false;
+    QTimer hand;
+    hand.setInterval(50);
+    QObject::connect(&hand, &QTimer::timeout, &hand, [&] {
+        QWidget *modal = QApplication::activeModalWidget();
+        if (!modal || answered)
+            return;
+        hand.stop();
+        if (auto *box = qobject_cast<QMessageBox *>(modal))
+            seen = box->text();
+        QTest::qWait(300); // reading the question
+        answered = true;
+        answer(modal);
+    });
+    hand.start();
+    action();
+    // The question may open after the action returns (a queued write): wait for the hand.
+    if (!QTest::qWaitFor([&] { return answered; }, 10000))
+        qWarning("no question showed up");
+    hand.stop();
+    return seen;
+}
+
+std::function<void(QWidget *)> clickButton(const char *objectName)
+{
+    return [objectName](QWidget *modal) {
+        auto *button = modal->findChild<QPushButton *>(QLatin1String(objectName));
+        if (!button) {
+            qWarning("the dialog has no button %s", objectName);
+            return;
+        }
+        QTest::mouseClick(button, Qt::LeftButton);
+    };
+}
+
+} // namespace UiTestUtil
