@@ -451,12 +451,10 @@ private Q_SLOTS:
     void toolsFollowTheCurrentConnection()
     {
         MainWindow window;
-#ifdef FATEK_HAVE_UITOOLS
         for (const char *name : {"plcControlDock", "forcingDock", "rawConsoleDock"}) {
             auto *dock = window.findChild<QDockWidget *>(QLatin1String(name));
             QVERIFY2(dock && dock->widget(), name);
         }
-#endif
         QVERIFY(window.findChild<QDockWidget *>(QStringLiteral("connectionsDock")));
     }
 

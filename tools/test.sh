@@ -16,4 +16,3 @@ cmake --workflow --preset tsan
 tools/package-test.sh
 # Builds the fuzz targets and runs each briefly on the seed corpus (long runs: docs/reliability.md).
 tools/fuzz.sh "${FATEK_FUZZ_SECONDS:-10}"
-# EXTRA CI STEPS (keep this marker line)

@@ -1443,10 +1443,6 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>&amp;Loopback Test…</translation>
         </message>
         <message>
-            <source>(commissioning tools not built)</source>
-            <translation>(commissioning tools not built)</translation>
-        </message>
-        <message>
             <source>Connecting to %1 (%2)…</source>
             <translation>Connecting to %1 (%2)…</translation>
         </message>

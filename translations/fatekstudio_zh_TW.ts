@@ -1438,10 +1438,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>迴路測試(&amp;L)…</translation>
         </message>
         <message>
-            <source>(commissioning tools not built)</source>
-            <translation>（未建置試車工具）</translation>
-        </message>
-        <message>
             <source>Connecting to %1 (%2)…</source>
             <translation>正在連線到 %1（%2）…</translation>
         </message>

@@ -1,13 +1,15 @@
 #include "mainwindow.h"
 
-#include <QHash>
-
 #include "connectiondialog.h"
 #include "connectionmanager.h"
 #include "connectionspanel.h"
 #include "coretext.h"
 #include "demosimulator.h"
+#include "forcingpanel.h"
 #include "languagemenu.h"
+#include "loopbackdialog.h"
+#include "plccontrolpanel.h"
+#include "rawconsole.h"
 #include "stationscandialog.h"
 #include "tablelogger.h"
 #include "trendview.h"
@@ -20,6 +22,7 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHash>
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
@@ -35,18 +38,6 @@
 
 #include <algorithm>
 #include <memory>
-
-#if defined(FATEK_HAVE_UITOOLS)                                                                    \
-    && __has_include(                                                                              \
-        "plccontrolpanel.h")                                                                       \
-        && __has_include("forcingpanel.h")                                                         \
-                         && __has_include("loopbackdialog.h") && __has_include("rawconsole.h")
-#define FATEK_WITH_TOOLS 1
-#include "forcingpanel.h"
-#include "loopbackdialog.h"
-#include "plccontrolpanel.h"
-#include "rawconsole.h"
-#endif
 
 // Q_INIT_RESOURCE must be called from the global namespace.
 static void initStudioResources()
@@ -228,12 +219,9 @@ void MainWindow::createActions()
 
     m_toolsMenu = menuBar()->addMenu(tr("&Tools"));
     createTrendAndLogging();
-    // TRENDS AND LOGGING ACTIONS (keep this marker line)
     createOperatorMode();
-    // OPERATOR MODE ACTIONS (keep this marker line)
     m_viewMenu->addSeparator();
     m_viewMenu->addMenu(new LanguageMenu(m_viewMenu));
-    // LANGUAGE MENU (keep this marker line)
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About FATEK Studio"), this, [this] {
@@ -253,7 +241,6 @@ void MainWindow::createActions()
 
 void MainWindow::createTools()
 {
-#ifdef FATEK_WITH_TOOLS
     auto addDock = [this](auto *tool, const QString &title, const QString &name,
                           Qt::DockWidgetArea area, const QKeySequence &shortcut) {
         auto *dock = new QDockWidget(title, this);
@@ -312,9 +299,6 @@ void MainWindow::createTools()
         dialog->show();
     });
     loopback->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
-#else
-    m_toolsMenu->addAction(tr("(commissioning tools not built)"))->setEnabled(false);
-#endif
     auto *scan = m_toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
         Connection *c = currentConnection();
         if (!c) {
@@ -360,7 +344,6 @@ QWidget *MainWindow::openTool(const QString &name)
 {
     if (name == QLatin1String("trend"))
         return showTrend();
-#ifdef FATEK_WITH_TOOLS
     static const QHash<QString, QString> docks
         = {{QStringLiteral("control"), QStringLiteral("plcControlDock")},
            {QStringLiteral("forcing"), QStringLiteral("forcingDock")},
@@ -384,9 +367,6 @@ QWidget *MainWindow::openTool(const QString &name)
             dialog->start();
         return dialog;
     }
-#else
-    Q_UNUSED(name)
-#endif
     return nullptr;
 }
 

@@ -123,12 +123,9 @@ private:
     QWidget *showTrend();
     void startLoggingDialog();
     void updateLoggingStatus();
-    // TRENDS AND LOGGING METHODS (keep this marker line)
     void createOperatorMode();
     void applyOperatorMode(bool active);
     void updateModeLabel(bool active);
-    // OPERATOR MODE METHODS (keep this marker line)
-    // LANGUAGE METHODS (keep this marker line)
 
     bool m_readOnly;
     // Quit chosen, links draining their queued writes: the window closes once they are closed.
@@ -160,10 +157,7 @@ private:
     QLabel *m_loggingLabel = nullptr;
     QAction *m_startLoggingAction = nullptr;
     QAction *m_stopLoggingAction = nullptr;
-    // TRENDS AND LOGGING MEMBERS (keep this marker line)
     class OperatorMode *m_operatorMode = nullptr;
-    // OPERATOR MODE MEMBERS (keep this marker line)
-    // LANGUAGE MEMBERS (keep this marker line)
 };
 
 } // namespace Fatek
