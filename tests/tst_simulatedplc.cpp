@@ -342,6 +342,21 @@ void TestSimulatedPlc::detailStatus()
     QCOMPARE(d.rRegisters, std::optional<std::uint16_t>{3840});
     QCOMPARE(d.dRegisters, std::optional<std::uint16_t>{3000});
     QCOMPARE(plc.detailStatusBytes(), r.data);
+    // One reading of STATUS2..4 for the GUI, the CLI and the summary.
+    QCOMPARE(d.ioPoints(), std::optional<int>{28});
+    QCOMPARE(d.osVersionText(), std::optional<std::string>{"V3.1"});
+    QCOMPARE(d.modelName(), std::optional<std::string>{"FBs-28MC"});
+    QCOMPARE(d.summary(), std::string("FBs-28MC, OS V3.1, program 13184 words"));
+    DetailStatus odd = d;
+    odd.osVersion = 0x4A; // not BCD
+    odd.ioPointsCode = 7;
+    QCOMPARE(odd.osVersionText(), std::nullopt);
+    QCOMPARE(odd.ioPoints(), std::nullopt);
+    QCOMPARE(odd.modelName(), std::nullopt);
+    QCOMPARE(odd.summary(),
+             std::string("main unit MC, I/O code 7, OS code 74, program 13184 words"));
+    odd.osVersion = 0x25;
+    QCOMPARE(odd.osVersionText(), std::optional<std::string>{"V2.5"});
 }
 
 void TestSimulatedPlc::forcing()

@@ -381,8 +381,10 @@ void CliRunner::runStatus()
                 opt8(QStringLiteral("I/O points code"), QStringLiteral("ioPointsCode"),
                      d.ioPointsCode);
                 if (d.osVersion) {
+                    const std::optional<std::string> text = d.osVersionText();
                     const QString os
-                        = QStringLiteral("V%1.%2").arg(*d.osVersion >> 4).arg(*d.osVersion & 0xF);
+                        = text ? QString::fromStdString(*text)
+                               : QStringLiteral("0x%1").arg(*d.osVersion, 2, 16, QLatin1Char('0'));
                     block.rows << QStringList{QStringLiteral("OS version"), os};
                     dj.insert(QStringLiteral("osVersion"), os);
                 }

@@ -71,14 +71,33 @@ std::optional<std::uint16_t> DetailStatus::discreteCount(ElementType type) const
     }
 }
 
+std::optional<int> DetailStatus::ioPoints() const
+{
+    static const int points[] = {0, 20, 28, 40, 60};
+    if (!ioPointsCode || *ioPointsCode < 1 || *ioPointsCode > 4)
+        return std::nullopt;
+    return points[*ioPointsCode];
+}
+
+std::optional<std::string> DetailStatus::osVersionText() const
+{
+    if (!osVersion)
+        return std::nullopt;
+    const int major = *osVersion >> 4;
+    const int minor = *osVersion & 0x0F;
+    if (major < 1 || major > 9 || minor > 9)
+        return std::nullopt;
+    return "V" + std::to_string(major) + "." + std::to_string(minor);
+}
+
 std::optional<std::string> DetailStatus::modelName() const
 {
-    static const char *const points[] = {nullptr, "20", "28", "40", "60"};
-    if (!mainUnitType || !ioPointsCode || *ioPointsCode < 1 || *ioPointsCode > 4)
+    const std::optional<int> points = ioPoints();
+    if (!mainUnitType || !points)
         return std::nullopt;
     switch (*mainUnitType) {
-    case 0: return std::string("FBs-") + points[*ioPointsCode] + "MA/MU";
-    case 1: return std::string("FBs-") + points[*ioPointsCode] + "MC";
+    case 0: return "FBs-" + std::to_string(*points) + "MA/MU";
+    case 1: return "FBs-" + std::to_string(*points) + "MC";
     default: return std::nullopt;
     }
 }
@@ -101,19 +120,15 @@ std::string DetailStatus::summary() const
         }
     }
     if (ioPointsCode && !modelName()) {
-        static const char *points[] = {nullptr, "20", "28", "40", "60"};
-        if (*ioPointsCode >= 1 && *ioPointsCode <= 4)
-            add(std::string(points[*ioPointsCode]) + " I/O points");
+        if (const std::optional<int> points = ioPoints())
+            add(std::to_string(*points) + " I/O points");
         else
             add("I/O code " + std::to_string(*ioPointsCode));
     }
-    if (osVersion) {
-        const int v = *osVersion;
-        if (v >= 0x30 && v <= 0x39)
-            add("OS V" + std::to_string(3) + "." + std::to_string(v - 0x30));
-        else
-            add("OS code " + std::to_string(v));
-    }
+    if (const std::optional<std::string> os = osVersionText())
+        add("OS " + *os);
+    else if (osVersion)
+        add("OS code " + std::to_string(*osVersion));
     if (ladderSize)
         add("program " + std::to_string(*ladderSize) + " words");
     if (raw.empty())

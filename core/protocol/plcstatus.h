@@ -47,6 +47,10 @@ struct DetailStatus
     // The model as printed on the unit ("FBs-28MC", "FBs-20MA/MU"), when STATUS2 and STATUS3 say
     // it; only the FACON answer has them.
     std::optional<std::string> modelName() const;
+    // I/O points of the main unit (20, 28, 40, 60) from STATUS3's code.
+    std::optional<int> ioPoints() const;
+    // "V3.1" from STATUS4 (0x31: one BCD digit each); nothing when absent or not BCD.
+    std::optional<std::string> osVersionText() const;
     // "FBs-28MC, OS V3.1, program 13184 words" as far as known.
     std::string summary() const;
 };

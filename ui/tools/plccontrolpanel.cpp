@@ -340,17 +340,13 @@ void PlcControlPanel::showDetail()
                                                 : tr("main unit type %1").arg(*d.mainUnitType));
     }
     if (d.ioPointsCode) {
-        static const char *const points[] = {nullptr, "20", "28", "40", "60"};
-        const int code = *d.ioPointsCode;
-        m_io->setText(code >= 1 && code <= 4 ? QString::fromLatin1(points[code])
-                                             : tr("code %1").arg(code));
+        const std::optional<int> points = d.ioPoints();
+        m_io->setText(points ? QString::number(*points) : tr("code %1").arg(*d.ioPointsCode));
     }
     if (d.osVersion) {
-        const int v = *d.osVersion;
-        // Version digits are BCD-like: 0x31 means V3.1.
-        m_os->setText(v >= 0x10 && (v & 0x0F) <= 9
-                          ? QStringLiteral("V%1.%2").arg(v >> 4).arg(v & 0x0F)
-                          : tr("code 0x%1").arg(v, 2, 16, QLatin1Char('0')));
+        const std::optional<std::string> os = d.osVersionText();
+        m_os->setText(os ? QString::fromStdString(*os)
+                         : tr("code 0x%1").arg(*d.osVersion, 2, 16, QLatin1Char('0')));
     }
     if (d.ladderSize)
         m_program->setText(tr("%1 words").arg(*d.ladderSize));
