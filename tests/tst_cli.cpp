@@ -85,6 +85,7 @@ private Q_SLOTS:
     void usageErrors();
     void simStatus();
     void simWriteReadRoundTrip();
+    void simWriteTypedValues();
     void simDiscreteSetThenRead();
     void simDisableForced();
     void simLoopback();
@@ -103,6 +104,7 @@ private Q_SLOTS:
     void reference();
     void referenceAutoDetect();
     void referenceReadOnlyKeepsValue();
+    void referenceWriteTypedValues();
     void referenceMonitorCsvLog();
 
 private:
@@ -204,6 +206,18 @@ void TestCli::usageErrors_data()
     QTest::newRow("discrete value")
         << sim({QStringLiteral("write"), QStringLiteral("Y0"), QStringLiteral("2")})
         << QStringLiteral("0, 1, on or off");
+    QTest::newRow("float into an integer register")
+        << sim({QStringLiteral("write"), QStringLiteral("R100"), QStringLiteral("1.5")})
+        << QStringLiteral("R100: \"1.5\" is not a number");
+    QTest::newRow("unknown write format")
+        << sim({QStringLiteral("write"), QStringLiteral("R100:real"), QStringLiteral("1.5")})
+        << QStringLiteral("Unknown format \"real\"");
+    QTest::newRow("write format that does not fit")
+        << sim({QStringLiteral("write"), QStringLiteral("Y0:float"), QStringLiteral("1.5")})
+        << QStringLiteral("does not apply to Y0");
+    QTest::newRow("float past the last register")
+        << sim({QStringLiteral("write"), QStringLiteral("R65535:float"), QStringLiteral("1.5")})
+        << QStringLiteral("needs 2 elements");
     QTest::newRow("count too big")
         << sim({QStringLiteral("read"), QStringLiteral("R0"), QStringLiteral("65")})
         << QStringLiteral("1..64");
@@ -288,6 +302,43 @@ void TestCli::simWriteReadRoundTrip()
     RUN_OK(dr);
     // -100000 = 0xFFFE7960: low word first in R200.
     QCOMPARE(dr.json(1).value(QStringLiteral("values")).toArray(), ints({0x7960, 0xFFFE}));
+}
+
+// Values are typed as in a watch table (ValueFormat::parse): 1Ah, 0b101, -0x2, floats for float
+// items. Read back from the simulator, so each one reached the PLC as the words expected.
+void TestCli::simWriteTypedValues()
+{
+    // The demo ladder drives R0 in RUN; stopped, R0 keeps what is written to it.
+    const Run r = runCli(
+        sim({QStringLiteral("--json"),   QStringLiteral("stop"),     QStringLiteral("--then"),
+             QStringLiteral("write"),    QStringLiteral("R0"),       QStringLiteral("1Ah"),
+             QStringLiteral("--then"),   QStringLiteral("write"),    QStringLiteral("R1"),
+             QStringLiteral("0b101"),    QStringLiteral("-0x2"),     QStringLiteral("--then"),
+             QStringLiteral("write"),    QStringLiteral("R3:float"), QStringLiteral("1.5"),
+             QStringLiteral("-2.5"),     QStringLiteral("--then"),   QStringLiteral("write"),
+             QStringLiteral("DR20:hex"), QStringLiteral("BEEF"),     QStringLiteral("--then"),
+             QStringLiteral("write"),    QStringLiteral("Y2"),       QStringLiteral("true"),
+             QStringLiteral("--then"),   QStringLiteral("read"),     QStringLiteral("R0"),
+             QStringLiteral("7"),        QStringLiteral("--then"),   QStringLiteral("read"),
+             QStringLiteral("DR20"),     QStringLiteral("--then"),   QStringLiteral("read"),
+             QStringLiteral("Y2"),       QStringLiteral("--then"),   QStringLiteral("monitor"),
+             QStringLiteral("R3:float"), QStringLiteral("R5:float"), QStringLiteral("--interval"),
+             QStringLiteral("50"),       QStringLiteral("--cycles"), QStringLiteral("1")}));
+    RUN_OK(r);
+    QCOMPARE(r.lines().size(), 10);
+    QCOMPARE(r.json(1).value(QStringLiteral("written")).toArray(), ints({26}));
+    QCOMPARE(r.json(2).value(QStringLiteral("written")).toArray(), ints({5, 65534}));
+    // 1.5f = 0x3FC00000, -2.5f = 0xC0200000: low word first, two registers per value.
+    QCOMPARE(r.json(3).value(QStringLiteral("written")).toArray(), ints({0, 0x3FC0, 0, 0xC020}));
+    QCOMPARE(r.json(4).value(QStringLiteral("written")).toArray(), ints({0xBEEF}));
+    QCOMPARE(r.json(5).value(QStringLiteral("written")).toArray(), ints({1}));
+    QCOMPARE(r.json(6).value(QStringLiteral("values")).toArray(),
+             ints({26, 5, 65534, 0, 0x3FC0, 0, 0xC020}));
+    QCOMPARE(r.json(7).value(QStringLiteral("values")).toArray(), ints({0xBEEF}));
+    QCOMPARE(r.json(8).value(QStringLiteral("values")).toArray(), ints({1}));
+    // The monitor joins the registers back into the floats typed.
+    QCOMPARE(r.json(9).value(QStringLiteral("text")).toArray(),
+             (QJsonArray{QStringLiteral("1.5"), QStringLiteral("-2.5")}));
 }
 
 void TestCli::simDiscreteSetThenRead()
@@ -696,6 +747,24 @@ void TestCli::referenceReadOnlyKeepsValue()
     r = runCli(link + QStringList{QStringLiteral("read"), QStringLiteral("R2000")});
     RUN_OK(r);
     QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({11}));
+}
+
+// The typed forms against the independent reference PLC: what it holds is what was meant.
+void TestCli::referenceWriteTypedValues()
+{
+    if (!m_refProblem.isEmpty())
+        QSKIP(qPrintable(m_refProblem));
+    const QStringList link = ref(QStringLiteral("tcp"), QStringLiteral("facon"));
+    Run r = runCli(link
+                   + QStringList{QStringLiteral("write"), QStringLiteral("R2100"),
+                                 QStringLiteral("1Ah"), QStringLiteral("0b1010"),
+                                 QStringLiteral("--then"), QStringLiteral("write"),
+                                 QStringLiteral("R2102:float"), QStringLiteral("-2.5")});
+    RUN_OK(r);
+    r = runCli(link
+               + QStringList{QStringLiteral("read"), QStringLiteral("R2100"), QStringLiteral("4")});
+    RUN_OK(r);
+    QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({26, 10, 0, 0xC020}));
 }
 
 void TestCli::referenceMonitorCsvLog()

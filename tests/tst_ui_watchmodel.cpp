@@ -1,8 +1,8 @@
 // The watch table model and the typed-input parsing, without a window or a PLC: values arrive as
 // the session would deliver them.
+#include "itemvalues.h"
 #include "watchinput.h"
 #include "watchtablemodel.h"
-#include "writerequest.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -366,13 +366,13 @@ private Q_SLOTS:
     void writeRequestCoversEverySpannedRegister()
     {
         WatchItemSpec f = item("R20", DisplayFormat::Float32, 2);
-        const Request r = makeWriteRequest(f, 0x3FC00000);
+        const Request r = ItemValues(f).writeRequest(0x3FC00000);
         QCOMPARE(r.command, Command::WriteRegisters);
         QCOMPARE(r.station, std::uint8_t(2));
         QCOMPARE(r.values, (std::vector<std::uint32_t>{0x0000, 0x3FC0}));
-        const Request d = makeWriteRequest(item("DR4", DisplayFormat::Unsigned), 99999);
+        const Request d = ItemValues(item("DR4", DisplayFormat::Unsigned)).writeRequest(99999);
         QCOMPARE(d.values, (std::vector<std::uint32_t>{99999}));
-        const Request b = makeWriteRequest(item("Y1", DisplayFormat::Bit), 1);
+        const Request b = ItemValues(item("Y1", DisplayFormat::Bit)).writeRequest(1);
         QCOMPARE(b.command, Command::WriteDiscretes);
         QCOMPARE(b.values, (std::vector<std::uint32_t>{1}));
     }

@@ -1,5 +1,6 @@
 #include "clioptions.h"
 
+#include "itemvalues.h"
 #include "linkarguments.h"
 #include "request.h"
 #include "watchlist.h"
@@ -131,18 +132,49 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
         if (!(err = argCount(2, -1)).isEmpty())
             return fail(err);
         s.command = CliCommand::Write;
-        auto a = parseAddress(positional.at(0));
+        // "R100:float 1.5": the values are typed in FORMAT, each one an item of as many elements
+        // as the format spans (R100 and R101 here); without it, in the element's default format.
+        const QString &target = positional.at(0);
+        const qsizetype colon = target.indexOf(QLatin1Char(':'));
+        auto a = parseAddress(colon >= 0 ? target.left(colon) : target);
         if (!a)
             return fail(errorOf(a.error()));
-        s.addresses = {a.value()};
+        WatchItemSpec item;
+        item.address = a.value();
+        item.format = ValueFormat::defaultFormat(item.address);
+        if (colon >= 0) {
+            const auto format = ValueFormat::fromName(target.mid(colon + 1).trimmed());
+            if (!format)
+                return fail(QStringLiteral("Unknown format \"%1\" in %2 (%3).")
+                                .arg(target.mid(colon + 1), target, formatNames()));
+            item.format = *format;
+            if (const Status valid = WatchList::validateEntry(item); !valid)
+                return fail(errorOf(valid.error()));
+        }
+        s.addresses = {item.address};
+        // Several values go to consecutive items; validateSpan below checks that they all exist.
+        const auto elements = static_cast<std::uint32_t>(ItemValues(item).elementCount());
         for (qsizetype i = 1; i < positional.size(); ++i) {
-            const auto value = parseValue(positional.at(i), a.value(), &err);
-            if (!value)
-                return fail(err);
-            s.values.push_back(*value);
+            const QString &text = positional.at(i);
+            item.address
+                = s.addresses.first().advanced(static_cast<std::uint32_t>(i - 1) * elements);
+            const ItemValues values(item);
+            const auto raw = values.parse(text);
+            if (!raw) {
+                // Discretes keep the sentence fatek-cli has always given them.
+                if (isDiscrete(item.address.type))
+                    return fail(
+                        QStringLiteral("%1 is a discrete: write 0, 1, on or off, not "
+                                       "\"%2\".")
+                            .arg(QString::fromStdString(item.address.toString()), text.trimmed()));
+                return fail(QStringLiteral("%1: %2").arg(
+                    QString::fromStdString(item.address.toString()), errorOf(raw.error())));
+            }
+            const std::vector<std::uint32_t> words = values.split(*raw);
+            s.values.insert(s.values.end(), words.cbegin(), words.cend());
         }
         s.count = static_cast<std::uint32_t>(s.values.size());
-        const Status span = validateSpan(a.value(), s.count);
+        const Status span = validateSpan(s.addresses.first(), s.count);
         if (!span)
             return fail(errorOf(span.error()));
     } else if (cmd == QLatin1String("set") || cmd == QLatin1String("reset")
@@ -262,8 +294,10 @@ QString usageText()
         "  run | stop               switch the PLC to RUN / STOP\n"
         "  read ADDR [COUNT]        consecutive elements (ADDR may be a range R0..R9)\n"
         "  read ADDR ADDR...        a mixed list (48)\n"
-        "  write ADDR VALUE...      decimal, -decimal or 0x-hex; discretes 0/1/on/off; several = "
-        "consecutive\n"
+        "  write ADDR[:FORMAT] VALUE...   typed as in a watch table: 12, -5, 0x1A, 1Ah, 0b1010;\n"
+        "                           discretes 0/1/on/off; R0:float 1.5 writes R0 and R1; several "
+        "=\n"
+        "                           consecutive items\n"
         "  set|reset|enable|disable ADDR   discrete control (42)\n"
         "  forced ADDR [COUNT]      which discretes are disabled (forced) (43)\n"
         "  loopback [TEXT] [--count N]     round trips: min/mean/max, mismatches, timeouts\n"
@@ -283,48 +317,6 @@ QString usageText()
         "\n"
         "Exit codes: 0 ok, 2 usage, 3 link failure (timeout, no connection), 4 PLC error, 5 "
         "refused by --read-only.\n");
-}
-
-std::optional<std::uint32_t> parseValue(const QString &rawText, const Address &address,
-                                        QString *error)
-{
-    const QString text = rawText.trimmed();
-    const QString lower = text.toLower();
-    const QString name = QString::fromStdString(address.toString());
-    if (isDiscrete(address.type)) {
-        if (lower == QLatin1String("1") || lower == QLatin1String("on"))
-            return 1u;
-        if (lower == QLatin1String("0") || lower == QLatin1String("off"))
-            return 0u;
-        *error = QStringLiteral("%1 is a discrete: write 0, 1, on or off, not \"%2\".")
-                     .arg(name, text);
-        return std::nullopt;
-    }
-    const bool wide = isDoubleWord(address.type);
-    const qint64 maxUnsigned = wide ? 0xFFFFFFFFLL : 0xFFFFLL;
-    const qint64 minSigned = wide ? -2147483648LL : -32768LL;
-    bool ok = false;
-    qint64 v = 0;
-    if (lower.startsWith(QLatin1String("0x"))) {
-        const qulonglong u = lower.mid(2).toULongLong(&ok, 16);
-        ok = ok && !lower.mid(2).isEmpty() && u <= static_cast<qulonglong>(maxUnsigned);
-        v = static_cast<qint64>(u);
-    } else {
-        v = text.toLongLong(&ok, 10);
-        ok = ok && v >= minSigned && v <= maxUnsigned;
-    }
-    if (!ok) {
-        *error
-            = QStringLiteral("%1 is a %2-bit register: give a value %3..%4 or 0x-hex, not \"%5\".")
-                  .arg(name)
-                  .arg(wide ? 32 : 16)
-                  .arg(minSigned)
-                  .arg(maxUnsigned)
-                  .arg(text);
-        return std::nullopt;
-    }
-    // Negative values go out as two's complement of the element's width.
-    return static_cast<std::uint32_t>(static_cast<quint64>(v) & static_cast<quint64>(maxUnsigned));
 }
 
 QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,

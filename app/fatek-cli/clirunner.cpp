@@ -10,6 +10,7 @@
 #include <QJsonArray>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace Fatek {
@@ -61,9 +62,6 @@ QString yesNo(bool b)
 {
     return b ? QStringLiteral("yes") : QStringLiteral("no");
 }
-
-// Poll ids of monitor items: item * monitorPartsMax + element (a double spans four registers).
-constexpr std::uint64_t monitorPartsMax = 4;
 
 QString ms(double v)
 {
@@ -672,21 +670,17 @@ void CliRunner::runMonitor()
     QStringList columns{QStringLiteral("cycle"), QStringLiteral("time")};
     QList<int> widths{5, 12};
     const QList<WatchItemSpec> &items = step().items;
+    m_monitorItems.clear();
+    m_monitorIds.clear();
     for (qsizetype i = 0; i < items.size(); ++i) {
         const WatchItemSpec &item = items.at(i);
-        // A float over R100 polls R100 and R101: one entry per element, id = item * 4 + part.
-        const int parts = std::max(1, ValueFormat::elementCount(item.address, item.format));
-        for (int part = 0; part < parts; ++part) {
-            WatchEntry e;
-            e.id = static_cast<std::uint64_t>(i) * monitorPartsMax
-                   + static_cast<std::uint64_t>(part);
-            e.station = m_options.station;
-            e.address = item.address.advanced(static_cast<std::uint32_t>(part));
-            e.intervalMs = m_options.intervalMs;
-            entries << e;
-        }
+        // A float over R100 polls R100 and R101: one entry per element.
+        const ItemValues &values = m_monitorItems.emplace_back(item);
+        for (const std::uint64_t id : values.pollIds())
+            m_monitorIds.insert(id, i);
+        entries += values.pollEntries(m_options.intervalMs);
         columns << addressText(item.address);
-        const int width = ValueFormat::valueWidth(item.address, item.format);
+        const int width = values.width();
         widths << (width == 1 ? 1 : width <= 16 ? 6 : 12);
     }
     if (!m_options.outputPath.isEmpty() && !m_logger.isOpen()) {
@@ -715,18 +709,21 @@ void CliRunner::onValues(const QList<WatchValue> &values)
     // Join the elements of each item back into one value; its quality is the worst part's.
     QList<DataLogger::Cell> cells(items.size());
     QList<int> partsSeen(items.size(), 0);
+    std::vector<std::array<std::uint32_t, ItemValues::MaxElements>> words(
+        static_cast<std::size_t>(items.size()));
     for (DataLogger::Cell &c : cells)
         c.quality = DataLogger::Quality::Good;
     for (const WatchValue &v : values) {
-        const auto item = static_cast<qsizetype>(v.itemId / monitorPartsMax);
-        const auto part = static_cast<int>(v.itemId % monitorPartsMax);
-        if (item >= items.size())
+        const qsizetype item = m_monitorIds.value(v.itemId, -1);
+        const int part
+            = item < 0 || item >= items.size()
+                  ? -1
+                  : m_monitorItems.at(static_cast<std::size_t>(item)).elementOf(v.itemId);
+        if (part < 0)
             continue;
         DataLogger::Cell &cell = cells[item];
         ++partsSeen[item];
-        const Address &a = items.at(item).address;
-        const int bits = isDiscrete(a.type) ? 1 : isDoubleWord(a.type) ? 32 : 16;
-        cell.raw |= static_cast<std::uint64_t>(v.value) << (part * bits);
+        words[static_cast<std::size_t>(item)][static_cast<std::size_t>(part)] = v.value;
         if (v.quality == ValueQuality::Error) {
             cell.quality = DataLogger::Quality::Error;
             cell.reason = v.error;
@@ -743,8 +740,10 @@ void CliRunner::onValues(const QList<WatchValue> &values)
     for (qsizetype i = 0; i < items.size(); ++i) {
         DataLogger::Cell &cell = cells[i];
         const WatchItemSpec &item = items.at(i);
-        const int parts = std::max(1, ValueFormat::elementCount(item.address, item.format));
-        if (partsSeen.at(i) < parts && cell.quality == DataLogger::Quality::Good) {
+        const ItemValues &itemValues = m_monitorItems.at(static_cast<std::size_t>(i));
+        cell.raw = itemValues.join(words[static_cast<std::size_t>(i)]);
+        if (partsSeen.at(i) < itemValues.elementCount()
+            && cell.quality == DataLogger::Quality::Good) {
             cell.quality = DataLogger::Quality::Missing;
             cell.reason = QStringLiteral("no value this cycle");
         }

@@ -3,6 +3,7 @@
 #include "clioptions.h"
 #include "clioutput.h"
 #include "datalogger.h"
+#include "itemvalues.h"
 #include "request.h"
 #include "session.h"
 #include "stationscanner.h"
@@ -15,6 +16,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace Fatek {
 
@@ -104,7 +106,9 @@ private:
     int m_staleCycles = 0;
     bool m_monitorErrors = false;
     QSet<QString> m_reported;
-    DataLogger m_logger; // --output
+    DataLogger m_logger;                          // --output
+    std::vector<ItemValues> m_monitorItems;       // step().items with their poll ids
+    QHash<std::uint64_t, qsizetype> m_monitorIds; // poll id -> item
 };
 
 } // namespace Fatek

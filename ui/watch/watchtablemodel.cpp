@@ -8,23 +8,16 @@
 #include <QPalette>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <span>
 #include <utility>
 
 namespace Fatek {
 
 namespace {
 
-// Poll ids are unique across every table: tables sharing a connection share one session watch list.
-std::atomic<quint64> nextPollId{1};
 std::atomic<quint64> nextRowKey{1};
-
-int elementBits(const Address &address)
-{
-    if (isDiscrete(address.type))
-        return 1;
-    return isDoubleWord(address.type) ? 32 : 16;
-}
 
 QString qualityName(ValueQuality quality)
 {
@@ -72,23 +65,19 @@ int WatchTableModel::columnCount(const QModelIndex &parent) const
     return parent.isValid() ? 0 : ColumnCount;
 }
 
-void WatchTableModel::allocateIds(Row &row)
+void WatchTableModel::resetParts(Row &row)
 {
-    const int count = std::max(1, ValueFormat::elementCount(row.spec.address, row.spec.format));
-    row.ids.clear();
-    row.parts.assign(static_cast<std::size_t>(count), Part{});
+    row.parts.assign(static_cast<std::size_t>(row.values.elementCount()), Part{});
     row.complete = false;
-    for (int i = 0; i < count; ++i)
-        row.ids.push_back(nextPollId++);
 }
 
 void WatchTableModel::rebuildIndex()
 {
     m_index.clear();
     for (int r = 0; r < m_rows.size(); ++r) {
-        const Row &row = m_rows.at(r);
-        for (std::size_t p = 0; p < row.ids.size(); ++p)
-            m_index.insert(row.ids[p], {r, static_cast<int>(p)});
+        const std::span<const std::uint64_t> ids = m_rows.at(r).values.pollIds();
+        for (std::size_t p = 0; p < ids.size(); ++p)
+            m_index.insert(ids[p], {r, static_cast<int>(p)});
     }
 }
 
@@ -100,9 +89,9 @@ void WatchTableModel::addItems(const QList<WatchItemSpec> &items)
     beginInsertRows({}, first, first + static_cast<int>(items.size()) - 1);
     for (const WatchItemSpec &spec : items) {
         Row row;
-        row.spec = spec;
+        row.values = ItemValues(spec);
         row.key = nextRowKey++;
-        allocateIds(row);
+        resetParts(row);
         m_rows.append(std::move(row));
     }
     rebuildIndex();
@@ -130,7 +119,7 @@ QList<WatchItemSpec> WatchTableModel::items() const
     QList<WatchItemSpec> list;
     list.reserve(m_rows.size());
     for (const Row &row : m_rows)
-        list.append(row.spec);
+        list.append(row.spec());
     return list;
 }
 
@@ -158,7 +147,7 @@ int WatchTableModel::rowOfKey(quint64 key) const
 QList<DisplayFormat> WatchTableModel::availableFormats(int row) const
 {
     QList<DisplayFormat> list;
-    const Address address = m_rows.at(row).spec.address;
+    const Address address = m_rows.at(row).spec().address;
     for (DisplayFormat f : ValueFormat::allFormats()) {
         const int width = ValueFormat::valueWidth(address, f);
         if (width > 0 && ValueFormat::isAvailable(f, width))
@@ -169,17 +158,15 @@ QList<DisplayFormat> WatchTableModel::availableFormats(int row) const
 
 Status WatchTableModel::setFormat(int row, DisplayFormat format, bool swapWords)
 {
-    WatchItemSpec spec = m_rows.at(row).spec;
+    WatchItemSpec spec = m_rows.at(row).spec();
     spec.format = format;
     spec.swapWords = swapWords;
     if (Status s = WatchList::validateEntry(spec); !s)
         return s;
     Row &r = m_rows[row];
-    const bool spanChanged = ValueFormat::elementCount(r.spec.address, r.spec.format)
-                             != ValueFormat::elementCount(spec.address, format);
-    r.spec = spec;
+    const bool spanChanged = r.values.setItem(spec);
     if (spanChanged) {
-        allocateIds(r);
+        resetParts(r);
         rebuildIndex();
     }
     Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
@@ -190,9 +177,7 @@ Status WatchTableModel::setFormat(int row, DisplayFormat format, bool swapWords)
 
 int WatchTableModel::valueWidth(int row) const
 {
-    const WatchItemSpec &spec = m_rows.at(row).spec;
-    const int width = ValueFormat::valueWidth(spec.address, spec.format);
-    return width > 0 ? width : elementBits(spec.address);
+    return m_rows.at(row).values.width();
 }
 
 bool WatchTableModel::received(const Row &row) const
@@ -205,13 +190,13 @@ bool WatchTableModel::hasValue(int row) const
     return received(m_rows.at(row));
 }
 
-std::uint64_t WatchTableModel::combine(const Row &row) const
+std::uint64_t WatchTableModel::combine(const Row &row)
 {
-    const int bits = elementBits(row.spec.address);
-    std::uint64_t raw = 0;
-    for (std::size_t i = 0; i < row.parts.size(); ++i)
-        raw |= static_cast<std::uint64_t>(row.parts[i].value) << (static_cast<int>(i) * bits);
-    return raw;
+    std::array<std::uint32_t, ItemValues::MaxElements> words{};
+    const std::size_t count = std::min(row.parts.size(), words.size());
+    for (std::size_t i = 0; i < count; ++i)
+        words[i] = row.parts[i].value;
+    return row.values.join(std::span(words).first(count));
 }
 
 std::uint64_t WatchTableModel::rawValue(int row) const
@@ -245,22 +230,14 @@ QString WatchTableModel::valueText(int row) const
     const Row &r = m_rows.at(row);
     if (!received(r))
         return {};
-    return ValueFormat::format(combine(r), valueWidth(row), r.spec.format, r.spec.swapWords);
+    return r.values.text(combine(r));
 }
 
 QList<WatchEntry> WatchTableModel::pollEntries(int intervalMs) const
 {
     QList<WatchEntry> entries;
-    for (const Row &row : m_rows) {
-        for (std::size_t i = 0; i < row.ids.size(); ++i) {
-            WatchEntry e;
-            e.id = row.ids[i];
-            e.station = row.spec.station;
-            e.address = row.spec.address.advanced(static_cast<std::uint32_t>(i));
-            e.intervalMs = intervalMs;
-            entries.append(e);
-        }
-    }
+    for (const Row &row : m_rows)
+        entries += row.values.pollEntries(intervalMs);
     return entries;
 }
 
@@ -430,8 +407,8 @@ void WatchTableModel::setForcedFlags(quint8 station, const Address &start,
     std::vector<int> changed;
     for (int r = 0; r < m_rows.size(); ++r) {
         Row &row = m_rows[r];
-        const Address &a = row.spec.address;
-        if (row.spec.station != station || a.type != start.type || a.number < start.number
+        const Address &a = row.spec().address;
+        if (row.spec().station != station || a.type != start.type || a.number < start.number
             || a.number - start.number >= flags.size())
             continue;
         const bool forced = flags[a.number - start.number] != 0;
@@ -462,7 +439,7 @@ void WatchTableModel::setSilentStations(const QList<quint8> &stations)
     // Rows of a station that fell silent or answers again change their quality text.
     std::vector<int> changed;
     for (int r = 0; r < m_rows.size(); ++r) {
-        const quint8 s = m_rows.at(r).spec.station;
+        const quint8 s = m_rows.at(r).spec().station;
         if (stations.contains(s) != m_silentStations.contains(s))
             changed.push_back(r);
     }
@@ -514,7 +491,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         return {};
     const int r = index.row();
     const Row &row = m_rows.at(r);
-    const WatchItemSpec &spec = row.spec;
+    const WatchItemSpec &spec = row.spec();
     const bool have = received(row);
     const ValueQuality q = quality(r);
     const bool discrete = isDiscrete(spec.address.type);
@@ -580,7 +557,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                 lines << (discrete ? tr("Click the box to toggle")
                                    : tr("Double-click or F2 to write"));
         } else if (index.column() == AddressColumn) {
-            const int count = static_cast<int>(row.ids.size());
+            const int count = row.values.elementCount();
             lines << (count > 1 ? tr("%1 .. %2 (%3 elements)")
                                       .arg(QString::fromStdString(spec.address.toString()),
                                            QString::fromStdString(
@@ -655,7 +632,7 @@ Qt::ItemFlags WatchTableModel::flags(const QModelIndex &index) const
     Qt::ItemFlags f = QAbstractTableModel::flags(index);
     if (!index.isValid())
         return f;
-    const bool discrete = isDiscrete(m_rows.at(index.row()).spec.address.type);
+    const bool discrete = isDiscrete(m_rows.at(index.row()).spec().address.type);
     switch (index.column()) {
     case NameColumn:
     case StationColumn:
@@ -673,7 +650,7 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
     const int r = index.row();
     Row &row = m_rows[r];
     if (index.column() == ValueColumn) {
-        if (role == Qt::CheckStateRole && isDiscrete(row.spec.address.type)) {
+        if (role == Qt::CheckStateRole && isDiscrete(row.spec().address.type)) {
             const bool on = value.toInt() == Qt::Checked;
             Q_EMIT writeRequested(r, on ? 1u : 0u);
             return false; // shown when the PLC reports it
@@ -683,11 +660,10 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
         const QString text = value.toString().trimmed();
         if (text.isEmpty() || text == valueText(r))
             return false;
-        const auto raw
-            = ValueFormat::parse(text, valueWidth(r), row.spec.format, row.spec.swapWords);
+        const auto raw = row.values.parse(text);
         if (!raw) {
             Q_EMIT inputRejected(
-                tr("%1: %2").arg(QString::fromStdString(row.spec.address.toString()),
+                tr("%1: %2").arg(QString::fromStdString(row.spec().address.toString()),
                                  CoreText::message(raw.error().message)));
             return false;
         }
@@ -696,9 +672,17 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
     }
     if (role != Qt::EditRole)
         return false;
+    // Name, comment and station leave the elements as they are: the poll ids stay.
+    WatchItemSpec spec = row.spec();
     switch (index.column()) {
-    case NameColumn: row.spec.name = value.toString(); break;
-    case CommentColumn: row.spec.comment = value.toString(); break;
+    case NameColumn:
+        spec.name = value.toString();
+        row.values.setItem(spec);
+        break;
+    case CommentColumn:
+        spec.comment = value.toString();
+        row.values.setItem(spec);
+        break;
     case StationColumn: {
         bool ok = false;
         const int station = value.toInt(&ok);
@@ -706,7 +690,8 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
             Q_EMIT inputRejected(tr("Station must be a number from 1 to 254."));
             return false;
         }
-        row.spec.station = static_cast<quint8>(station);
+        spec.station = static_cast<quint8>(station);
+        row.values.setItem(spec);
         Q_EMIT dataChanged(index, index);
         Q_EMIT pollListChanged();
         return true;
@@ -723,7 +708,7 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
             Q_EMIT inputRejected(tr("Unknown format \"%1\".").arg(value.toString()));
             return false;
         }
-        const Status s = setFormat(r, *format, row.spec.swapWords);
+        const Status s = setFormat(r, *format, spec.swapWords);
         if (!s) {
             Q_EMIT inputRejected(CoreText::message(s.error().message));
             return false;

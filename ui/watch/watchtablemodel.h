@@ -1,5 +1,6 @@
 #pragma once
 
+#include "itemvalues.h"
 #include "watchlist.h"
 #include "watchvalue.h"
 
@@ -15,8 +16,8 @@
 namespace Fatek {
 
 // Rows of one watch table: what to watch (WatchItemSpec) plus the latest value, its quality and
-// time. Every item spans one or more elements (a float over R100 is R100+R101); each element is a
-// poll entry with its own id, and the model joins them back into one raw value.
+// time. Every item spans one or more elements (a float over R100 is R100+R101); ItemValues makes
+// them poll entries with their own ids and joins their words back into one raw value.
 // Values arrive in batches (applyValues, or queueValues while polling); changed rows are reported
 // with coalesced dataChanged, one per run of rows and changed column. Values are formatted in
 // data(), that is only for the rows a view asks about (the visible ones).
@@ -55,7 +56,7 @@ public:
     void addItems(const QList<WatchItemSpec> &items);
     void setItems(const QList<WatchItemSpec> &items);
     QList<WatchItemSpec> items() const;
-    WatchItemSpec item(int row) const { return m_rows.at(row).spec; }
+    WatchItemSpec item(int row) const { return m_rows.at(row).values.item(); }
     // Changes the format (and word order); refused with a message when it does not fit the item.
     Status setFormat(int row, DisplayFormat format, bool swapWords);
     QList<DisplayFormat> availableFormats(int row) const;
@@ -126,10 +127,9 @@ private:
     };
     struct Row
     {
-        WatchItemSpec spec;
+        ItemValues values; // the item, its poll ids (one per element) and their join
         quint64 key = 0;
-        std::vector<quint64> ids; // one poll id per element
-        std::vector<Part> parts;
+        std::vector<Part> parts; // one per element
         QString writeOutcome;
         qint64 flashUntil = 0;
         std::optional<bool> forced;
@@ -137,6 +137,8 @@ private:
         quint64 slice = 0;        // last apply slice that touched the row
         std::uint64_t before = 0; // the row's value when that slice first touched it
         bool hadValue = false;    // and whether it had one
+
+        const WatchItemSpec &spec() const { return values.item(); }
     };
     struct Batch
     {
@@ -145,7 +147,7 @@ private:
         qsizetype next = 0; // values before this one are applied or skipped
     };
 
-    void allocateIds(Row &row);
+    static void resetParts(Row &row);
     void rebuildIndex();
     void emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn);
     void scheduleSlice();
@@ -154,7 +156,7 @@ private:
     void finishSlice();
     void expireFlashes();
     bool received(const Row &row) const;
-    std::uint64_t combine(const Row &row) const;
+    static std::uint64_t combine(const Row &row);
 
     QList<Row> m_rows;
     QHash<quint64, std::pair<int, int>> m_index; // poll id -> row, part

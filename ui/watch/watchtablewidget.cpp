@@ -3,13 +3,13 @@
 #include "connectionmanager.h"
 #include "coretext.h"
 #include "forcedmarks.h"
+#include "itemvalues.h"
 #include "messageline.h"
 #include "toolconfirmation.h"
 #include "watchdelegate.h"
 #include "watchinput.h"
 #include "watchtablemodel.h"
 #include "watchtableview.h"
-#include "writerequest.h"
 
 #include <QAction>
 #include <QApplication>
@@ -415,7 +415,7 @@ void WatchTableWidget::write(int row, quint64 raw)
             return;
         }
     }
-    const quint64 id = m_connection->session()->submit(makeWriteRequest(item, raw));
+    const quint64 id = m_connection->session()->submit(ItemValues(item).writeRequest(raw));
     m_pendingWrites.insert(id, {m_model->rowKey(row), what});
     showMessage(tr("Writing %1 …").arg(what), false);
 }
