@@ -107,7 +107,7 @@ void TestLinkSettings::parts()
     QVERIFY(!LinkSettings::dataBitsFromText(QStringLiteral("seven")));
     QVERIFY(LinkSettings::stopBitsFromText(QStringLiteral("2")) == 2);
     QVERIFY(!LinkSettings::stopBitsFromText(QStringLiteral("0")));
-    QCOMPARE(LinkSettings::parityLetter(Parity::Odd), QLatin1Char('O'));
+    QCOMPARE(LinkSettings::parityLetter(Parity::Odd), QChar(u'O'));
 }
 
 QTEST_GUILESS_MAIN(TestLinkSettings)
