@@ -55,6 +55,8 @@ void TestFrameText::views()
              QStringLiteral("<02>0140C7<03>"));
     QCOMPARE(text(FrameText::toHex(frame)), QStringLiteral("02 30 31 34 30 43 37 03"));
     QCOMPARE(text(FrameText::toAscii(bytes("\x0d\xff"))), QStringLiteral("<CR><FF>"));
+    // Form feed's name is also the hex of FF: the view writes it in hex so it reads back.
+    QCOMPARE(text(FrameText::toAscii(bytes("\x0c\x1b"))), QStringLiteral("<0C><ESC>"));
     QCOMPARE(text(FrameText::toAscii(bytes("\x0d\xff"), FrameText::Controls::Hex)),
              QStringLiteral("<0D><FF>"));
     QCOMPARE(text(FrameText::toHex({})), QString());
@@ -69,6 +71,7 @@ void TestFrameText::parsing()
     QCOMPARE(*FrameText::parseAscii("<stx>01<0d>"), bytes("\x02"
                                                           "01\x0d"));
     QCOMPARE(*FrameText::parseAscii("a<b"), bytes("a<b"));
+    QCOMPARE(*FrameText::parseAscii("<FF><ff><0c><esc>"), bytes("\xff\xff\x0c\x1b"));
     QCOMPARE(*FrameText::parseAscii("<>"), bytes("<>"));
     QCOMPARE(*FrameText::parseAscii("<XYZ>"), bytes("<XYZ>"));
     QCOMPARE(*FrameText::parseHex("01 46 03 52 00 0C"), TestUtil::fromHex("01460352000C"));

@@ -31,6 +31,11 @@ int hexValue(char c)
     return -1;
 }
 
+bool isHexPair(std::string_view text)
+{
+    return text.size() == 2 && hexValue(text[0]) >= 0 && hexValue(text[1]) >= 0;
+}
+
 bool isBlank(char c)
 {
     return std::isspace(static_cast<unsigned char>(c)) != 0;
@@ -111,10 +116,10 @@ std::string FrameText::toAscii(std::span<const std::uint8_t> bytes, Controls con
             continue;
         }
         out += '<';
-        if (b < 32 && controls == Controls::Names)
+        if (b < 32 && controls == Controls::Names && !isHexPair(controlNames[b]))
             out += controlNames[b];
         else
-            appendHex(out, b);
+            appendHex(out, b); // also form feed: <FF> is the byte FF
         out += '>';
     }
     return out;
@@ -163,19 +168,18 @@ Result<Bytes> FrameText::parseAscii(std::string_view text)
             const std::size_t end = text.find('>', i + 1);
             if (end != std::string_view::npos && end > i + 1) {
                 const std::string name = upper(text.substr(i + 1, end - i - 1));
+                // Hex first: <FF> is the byte FF, as toAscii() writes it, not form feed.
                 bool found = false;
-                for (std::size_t code = 0; code < controlNames.size(); ++code) {
-                    if (name == controlNames[code]) {
-                        out.push_back(static_cast<std::uint8_t>(code));
-                        found = true;
-                        break;
-                    }
-                }
-                if (!found && name.size() == 2 && hexValue(name[0]) >= 0
-                    && hexValue(name[1]) >= 0) {
+                if (isHexPair(name)) {
                     out.push_back(
                         static_cast<std::uint8_t>(hexValue(name[0]) * 16 + hexValue(name[1])));
                     found = true;
+                }
+                for (std::size_t code = 0; !found && code < controlNames.size(); ++code) {
+                    if (name == controlNames[code]) {
+                        out.push_back(static_cast<std::uint8_t>(code));
+                        found = true;
+                    }
                 }
                 if (found) {
                     i = end;
