@@ -106,8 +106,8 @@ QString usageText();
 // "-5", "65535", "0x1F" for an element of `address`'s width; discretes also on/off.
 std::optional<std::uint32_t> parseValue(const QString &text, const Address &address,
                                         QString *error);
-// "01 40 0A" (two-digit hex tokens, or one token starting 0x / hex:) -> bytes; else the ASCII text.
-// `hex` (if given) tells which of the two it was.
+// "01 40 0A" (two-digit hex tokens, or one token starting 0x / hex:) -> bytes; else the ASCII text
+// with <02>/<STX> escapes (FrameText::parse). `hex` (if given) tells which of the two it was.
 QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
                         bool *hex = nullptr);
 
