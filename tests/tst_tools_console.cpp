@@ -1,7 +1,6 @@
 // RawConsole against the simulator: typed frames (ASCII and hex, with and without automatic
 // framing) get their decoded answers in the log; corrupted answers are error lines; filters, cap,
-// save.
-#include "frametext.h"
+// save. The frame text itself (views, parsing, header peek) is tested in tst_frametext.
 #include "rawconsole.h"
 #include "rawsendbar.h"
 #include "toolpalette.h"
@@ -26,9 +25,6 @@ class TestToolsConsole : public QObject
 private Q_SLOTS:
     void cleanup();
 
-    void frameText();
-    void parseErrors_data();
-    void parseErrors();
     void modelCapsRows();
     void errorColoursFollowThePalette();
     void typedFaconFrameDecoded();
@@ -77,67 +73,6 @@ int TestToolsConsole::findRow(TrafficEntry::Direction direction, const QString &
             return r;
     }
     return -1;
-}
-
-void TestToolsConsole::frameText()
-{
-    const QByteArray frame("\x02"
-                           "0140C7\x03",
-                           8);
-    QCOMPARE(FrameText::toAscii(frame), QStringLiteral("<STX>0140C7<ETX>"));
-    QCOMPARE(FrameText::toHex(frame), QStringLiteral("02 30 31 34 30 43 37 03"));
-    QCOMPARE(FrameText::toAscii(QByteArray("\x0d\xff", 2)), QStringLiteral("<CR><FF>"));
-    QCOMPARE(*FrameText::parseAscii(QStringLiteral("<STX>0140C7<ETX>")), frame);
-    QCOMPARE(*FrameText::parseAscii(QStringLiteral("<stx>01<0d>")), QByteArray("\x02"
-                                                                               "01\x0d"));
-    QCOMPARE(*FrameText::parseAscii(QStringLiteral("a<b")), QByteArray("a<b"));
-    QCOMPARE(*FrameText::parseHex(QStringLiteral("01 46 03 52 00 0C")),
-             QByteArray::fromHex("01460352000C"));
-    QCOMPARE(*FrameText::parseHex(QStringLiteral("0x01,0x46")), QByteArray::fromHex("0146"));
-    QCOMPARE(*FrameText::parseHex(QStringLiteral("014603")), QByteArray::fromHex("014603"));
-
-    const auto facon = FrameText::header(frame);
-    QVERIFY(facon);
-    QCOMPARE(facon->station, quint8(1));
-    QCOMPARE(facon->command, quint8(0x40));
-    const auto binary = FrameText::header(QByteArray::fromHex("51100002014 0A18455AA"));
-    QVERIFY(binary);
-    QCOMPARE(binary->station, quint8(1));
-    QCOMPARE(binary->command, quint8(0x40));
-    QVERIFY(!FrameText::header(QByteArray("hello")));
-    QVERIFY(!FrameText::header(QByteArray("\x02"
-                                          "0",
-                                          2)));
-    const auto body = FrameText::bodyHeader(QByteArray("014603R00012"), true);
-    QVERIFY(body);
-    QCOMPARE(body->command, quint8(0x46));
-}
-
-void TestToolsConsole::parseErrors_data()
-{
-    QTest::addColumn<bool>("hex");
-    QTest::addColumn<QString>("text");
-    QTest::addColumn<QString>("messagePart");
-    QTest::newRow("odd") << true << "01 4"
-                         << "Odd number";
-    QTest::newRow("not hex") << true << "01 G6"
-                             << "not a hex digit";
-    QTest::newRow("empty hex") << true << "  "
-                               << "Nothing to send";
-    QTest::newRow("non-ascii") << false << QStringLiteral("01\u00e940") << "printable ASCII";
-    QTest::newRow("empty ascii") << false << ""
-                                 << "Nothing to send";
-}
-
-void TestToolsConsole::parseErrors()
-{
-    QFETCH(bool, hex);
-    QFETCH(QString, text);
-    QFETCH(QString, messagePart);
-    const Result<QByteArray> r = hex ? FrameText::parseHex(text) : FrameText::parseAscii(text);
-    QVERIFY(!r);
-    QVERIFY2(QString::fromStdString(r.error().message).contains(messagePart),
-             r.error().message.c_str());
 }
 
 void TestToolsConsole::modelCapsRows()

@@ -7,8 +7,11 @@
 #include "watchtablemodel.h"
 
 #include "address.h"
+#include "addressrange.h"
+#include "frametext.h"
 #include "protocolerror.h"
 #include "testutil.h"
+#include "watchlist.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
@@ -259,6 +262,23 @@ private Q_SLOTS:
         QVERIFY(range);
         const QString span = CoreText::message(validateSpan(*range, 4).error().message);
         QVERIFY2(!hasEnglish(span), qPrintable(span));
+
+        // Range and typed-frame errors are made in core (AddressRange, WatchList, FrameText).
+        std::vector<std::string> typed;
+        for (const char *text : {"R0..", "X0-Y5", "Y10-2", "WY0-40"})
+            typed.push_back(AddressRange::parse(text).error().message);
+        typed.push_back(AddressRange::parseList(" , ").error().message);
+        typed.push_back(WatchList::expandRange(QStringLiteral("R0..R1024")).error().message);
+        typed.push_back(FrameText::parseHex("01 G6").error().message);
+        typed.push_back(FrameText::parseHex(" ").error().message);
+        typed.push_back(FrameText::parseHex("01 4").error().message);
+        typed.push_back(FrameText::parseAscii("01\t40").error().message);
+        typed.push_back(FrameText::parseAscii("").error().message);
+        for (const std::string &english : typed) {
+            const QString shown = CoreText::message(english);
+            QVERIFY2(!hasEnglish(shown), qPrintable(shown));
+            QVERIFY2(shown != QString::fromStdString(english), english.c_str());
+        }
 
         // A message no pattern knows is shown as core wrote it, not mangled.
         QCOMPARE(CoreText::message(QStringLiteral("something new")),

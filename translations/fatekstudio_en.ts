@@ -378,6 +378,50 @@
             <translation>Retries %1 is out of range (0 to 10).</translation>
         </message>
         <message>
+            <source>Incomplete range "%1": write it as first..last, e.g. R100..R163.</source>
+            <translation>Incomplete range "%1": write it as first..last, e.g. R100..R163.</translation>
+        </message>
+        <message>
+            <source>Range "%1" mixes %2 and %3: both ends must be the same element type.</source>
+            <translation>Range "%1" mixes %2 and %3: both ends must be the same element type.</translation>
+        </message>
+        <message>
+            <source>Range "%1" runs backwards: write the lower address first (%2).</source>
+            <translation>Range "%1" runs backwards: write the lower address first (%2).</translation>
+        </message>
+        <message>
+            <source>Range "%1" does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</source>
+            <translation>Range "%1" does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</translation>
+        </message>
+        <message>
+            <source>Range "%1" has %2 elements; at most %3 fit in one range.</source>
+            <translation>Range "%1" has %2 elements; at most %3 fit in one range.</translation>
+        </message>
+        <message>
+            <source>No range given; write for example X0-255, Y0-255.</source>
+            <translation>No range given; write for example X0-255, Y0-255.</translation>
+        </message>
+        <message>
+            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
+            <translation>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame's bytes in hex.</source>
+            <translation>Nothing to send: type the frame's bytes in hex.</translation>
+        </message>
+        <message>
+            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
+            <translation>Odd number of hex digits: each byte needs two (0C, not C).</translation>
+        </message>
+        <message>
+            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
+            <translation>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame.</source>
+            <translation>Nothing to send: type the frame.</translation>
+        </message>
+        <message>
             <source>no error</source>
             <translation>no error</translation>
         </message>
@@ -895,30 +939,10 @@
         </message>
     </context>
     <context>
-        <name>Fatek::DiscreteRange</name>
-        <message>
-            <source>“%1” is not a range of discretes; write it like Y0-255 or M100.</source>
-            <translation>“%1” is not a range of discretes; write it like Y0-255 or M100.</translation>
-        </message>
+        <name>Fatek::DiscreteScan</name>
         <message>
             <source>“%1” is not a discrete type; use X, Y, M, S, T or C.</source>
             <translation>“%1” is not a discrete type; use X, Y, M, S, T or C.</translation>
-        </message>
-        <message>
-            <source>A range must stay within one type: %1</source>
-            <translation>A range must stay within one type: %1</translation>
-        </message>
-        <message>
-            <source>Point number too large in %1</source>
-            <translation>Point number too large in %1</translation>
-        </message>
-        <message>
-            <source>The range %1 ends before it starts.</source>
-            <translation>The range %1 ends before it starts.</translation>
-        </message>
-        <message>
-            <source>No range given; write for example X0-255, Y0-255.</source>
-            <translation>No range given; write for example X0-255, Y0-255.</translation>
         </message>
     </context>
     <context>
@@ -1128,29 +1152,6 @@
         <message>
             <source>%1 – %2</source>
             <translation>%1 – %2</translation>
-        </message>
-    </context>
-    <context>
-        <name>Fatek::FrameText</name>
-        <message>
-            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
-            <translation>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</translation>
-        </message>
-        <message>
-            <source>Nothing to send: type the frame's bytes in hex.</source>
-            <translation>Nothing to send: type the frame's bytes in hex.</translation>
-        </message>
-        <message>
-            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
-            <translation>Odd number of hex digits: each byte needs two (0C, not C).</translation>
-        </message>
-        <message>
-            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
-            <translation>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</translation>
-        </message>
-        <message>
-            <source>Nothing to send: type the frame.</source>
-            <translation>Nothing to send: type the frame.</translation>
         </message>
     </context>
     <context>

@@ -378,6 +378,50 @@
             <translation>重試次數 %1 超出範圍（0 到 10）。</translation>
         </message>
         <message>
+            <source>Incomplete range "%1": write it as first..last, e.g. R100..R163.</source>
+            <translation>範圍「%1」不完整：請寫成 起點..終點，例如 R100..R163。</translation>
+        </message>
+        <message>
+            <source>Range "%1" mixes %2 and %3: both ends must be the same element type.</source>
+            <translation>範圍「%1」混用了 %2 與 %3：兩端必須是相同的元件類型。</translation>
+        </message>
+        <message>
+            <source>Range "%1" runs backwards: write the lower address first (%2).</source>
+            <translation>範圍「%1」的方向相反：請先寫較小的位址（%2）。</translation>
+        </message>
+        <message>
+            <source>Range "%1" does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</source>
+            <translation>範圍「%1」的結束點不在完整的元件上：%2 元件彼此相隔 %3（%4、%5、...）。</translation>
+        </message>
+        <message>
+            <source>Range "%1" has %2 elements; at most %3 fit in one range.</source>
+            <translation>範圍「%1」有 %2 個元件；一個範圍最多 %3 個。</translation>
+        </message>
+        <message>
+            <source>No range given; write for example X0-255, Y0-255.</source>
+            <translation>未指定範圍；例如請輸入 X0-255, Y0-255。</translation>
+        </message>
+        <message>
+            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
+            <translation>「%1」不是十六進位數字；請以 01 46 03 52 00 0C 的形式輸入位元組。</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame's bytes in hex.</source>
+            <translation>沒有可送出的內容：請以十六進位輸入訊框的位元組。</translation>
+        </message>
+        <message>
+            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
+            <translation>十六進位數字個數為奇數：每個位元組需要兩位數（0C，而非 C）。</translation>
+        </message>
+        <message>
+            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
+            <translation>只能輸入可列印的 ASCII 字元；控制字元請寫成 &lt;STX&gt;、&lt;ETX&gt; 或 &lt;0D&gt;。</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame.</source>
+            <translation>沒有可送出的內容：請輸入訊框。</translation>
+        </message>
+        <message>
             <source>no error</source>
             <translation>無錯誤</translation>
         </message>
@@ -894,30 +938,10 @@
         </message>
     </context>
     <context>
-        <name>Fatek::DiscreteRange</name>
-        <message>
-            <source>“%1” is not a range of discretes; write it like Y0-255 or M100.</source>
-            <translation>「%1」不是離散點範圍；請寫成 Y0-255 或 M100 的形式。</translation>
-        </message>
+        <name>Fatek::DiscreteScan</name>
         <message>
             <source>“%1” is not a discrete type; use X, Y, M, S, T or C.</source>
             <translation>「%1」不是離散點類型；請使用 X、Y、M、S、T 或 C。</translation>
-        </message>
-        <message>
-            <source>A range must stay within one type: %1</source>
-            <translation>範圍必須在同一類型內：%1</translation>
-        </message>
-        <message>
-            <source>Point number too large in %1</source>
-            <translation>%1 的點號太大</translation>
-        </message>
-        <message>
-            <source>The range %1 ends before it starts.</source>
-            <translation>範圍 %1 的結束點在起始點之前。</translation>
-        </message>
-        <message>
-            <source>No range given; write for example X0-255, Y0-255.</source>
-            <translation>未指定範圍；例如請輸入 X0-255, Y0-255。</translation>
         </message>
     </context>
     <context>
@@ -1127,29 +1151,6 @@
         <message>
             <source>%1 – %2</source>
             <translation>%1 – %2</translation>
-        </message>
-    </context>
-    <context>
-        <name>Fatek::FrameText</name>
-        <message>
-            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
-            <translation>「%1」不是十六進位數字；請以 01 46 03 52 00 0C 的形式輸入位元組。</translation>
-        </message>
-        <message>
-            <source>Nothing to send: type the frame's bytes in hex.</source>
-            <translation>沒有可送出的內容：請以十六進位輸入訊框的位元組。</translation>
-        </message>
-        <message>
-            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
-            <translation>十六進位數字個數為奇數：每個位元組需要兩位數（0C，而非 C）。</translation>
-        </message>
-        <message>
-            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
-            <translation>只能輸入可列印的 ASCII 字元；控制字元請寫成 &lt;STX&gt;、&lt;ETX&gt; 或 &lt;0D&gt;。</translation>
-        </message>
-        <message>
-            <source>Nothing to send: type the frame.</source>
-            <translation>沒有可送出的內容：請輸入訊框。</translation>
         </message>
     </context>
     <context>

@@ -196,26 +196,24 @@ LinkArgumentsResult resolveLinkArguments(const LinkArguments &a, const LinkArgum
                     QStringLiteral("--baud needs a speed like 9600, not \"%1\".").arg(a.baud));
             r.link.baudRate = static_cast<qint32>(v);
         }
+        // The parts of a serial format, read as LinkSettings reads "7E1".
         if (!a.parity.isEmpty()) {
-            const QString p = a.parity.toUpper();
-            if (p == QLatin1String("N") || p == QLatin1String("NONE"))
-                r.link.parity = LinkSettings::Parity::None;
-            else if (p == QLatin1String("E") || p == QLatin1String("EVEN"))
-                r.link.parity = LinkSettings::Parity::Even;
-            else if (p == QLatin1String("O") || p == QLatin1String("ODD"))
-                r.link.parity = LinkSettings::Parity::Odd;
-            else
+            const auto parity = LinkSettings::parityFromText(a.parity);
+            if (!parity)
                 return fail(QStringLiteral("--parity takes N, E or O, not \"%1\".").arg(a.parity));
+            r.link.parity = *parity;
         }
         if (!a.data.isEmpty()) {
-            if (!parseIntInRange(a.data, 7, 8, &v))
+            const auto bits = LinkSettings::dataBitsFromText(a.data);
+            if (!bits)
                 return fail(QStringLiteral("--data takes 7 or 8, not \"%1\".").arg(a.data));
-            r.link.dataBits = static_cast<int>(v);
+            r.link.dataBits = *bits;
         }
         if (!a.stop.isEmpty()) {
-            if (!parseIntInRange(a.stop, 1, 2, &v))
+            const auto bits = LinkSettings::stopBitsFromText(a.stop);
+            if (!bits)
                 return fail(QStringLiteral("--stop takes 1 or 2, not \"%1\".").arg(a.stop));
-            r.link.stopBits = static_cast<int>(v);
+            r.link.stopBits = *bits;
         }
     }
     r.link.protocol = rules.defaultProtocol;

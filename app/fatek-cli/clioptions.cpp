@@ -1,5 +1,6 @@
 #include "clioptions.h"
 
+#include "frametext.h"
 #include "itemvalues.h"
 #include "linkarguments.h"
 #include "request.h"
@@ -18,15 +19,10 @@ Result<Address> parseAddress(const QString &text)
     return Address::parse(text.toStdString());
 }
 
-// One address, or a range "R0..R9" (monitor, read).
+// One address, or a range "R0..R9" or "R0-9" (monitor, read).
 Result<QList<Address>> parseAddressOrRange(const QString &text)
 {
-    if (text.contains(QLatin1String("..")))
-        return WatchList::expandRange(text);
-    auto a = parseAddress(text);
-    if (!a)
-        return a.error();
-    return QList<Address>{a.value()};
+    return WatchList::expandRange(text);
 }
 
 QString errorOf(const ProtocolError &e)
@@ -322,45 +318,22 @@ QString usageText()
 QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
                         bool *isHex)
 {
-    QString t = text.trimmed();
-    bool hex = forceHex;
-    if (!forceAscii && !forceHex) {
-        static const QRegularExpression pairs(
-            QStringLiteral("^[0-9A-Fa-f]{2}(\\s+[0-9A-Fa-f]{2})+$"));
-        if (pairs.match(t).hasMatch())
-            hex = true;
-        else if (t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
-                 || t.startsWith(QLatin1String("hex:"), Qt::CaseInsensitive)) {
-            hex = true;
-            t = t.mid(t.indexOf(QRegularExpression(QStringLiteral("[:xX]"))) + 1);
-        }
-    }
-    if (isHex)
-        *isHex = hex;
-    if (hex) {
-        QString digits = t;
-        digits.remove(QRegularExpression(QStringLiteral("\\s")));
-        static const QRegularExpression hexOnly(QStringLiteral("^([0-9A-Fa-f]{2})+$"));
-        if (!hexOnly.match(digits).hasMatch()) {
-            *error = QStringLiteral(
-                         "\"%1\" is not hex bytes: write pairs of hex digits like \"01 40\".")
-                         .arg(text);
-            return {};
-        }
-        return QByteArray::fromHex(digits.toLatin1());
-    }
-    for (const QChar c : t) {
-        if (c.unicode() < 0x20 || c.unicode() > 0x7E) {
-            *error
-                = QStringLiteral(
-                      "\"%1\" has characters that are not printable ASCII: send such bytes as hex.")
-                      .arg(text);
-            return {};
-        }
-    }
-    if (t.isEmpty())
+    const QString t = text.trimmed();
+    if (t.isEmpty()) {
         *error = QStringLiteral("raw needs the bytes to send.");
-    return t.toLatin1();
+        return {};
+    }
+    const FrameText::Typed typed = forceHex     ? FrameText::Typed::Hex
+                                   : forceAscii ? FrameText::Typed::Ascii
+                                                : FrameText::Typed::Guess;
+    const Result<Bytes> bytes = FrameText::parse(t.toStdString(), typed, isHex);
+    if (!bytes) {
+        *error
+            = QStringLiteral("\"%1\": %2").arg(text, QString::fromStdString(bytes.error().message));
+        return {};
+    }
+    return QByteArray(reinterpret_cast<const char *>(bytes->data()),
+                      static_cast<qsizetype>(bytes->size()));
 }
 
 CliParseResult parseCommandLine(const QStringList &arguments)

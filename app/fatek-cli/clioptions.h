@@ -103,8 +103,8 @@ CliParseResult parseCommandLine(const QStringList &arguments);
 
 QString usageText();
 
-// "01 40 0A" (two-digit hex tokens, or one token starting 0x / hex:) -> bytes; else the ASCII text.
-// `hex` (if given) tells which of the two it was.
+// "01 40 0A" (two-digit hex tokens, or one token starting 0x / hex:) -> bytes; else the ASCII text
+// with <02>/<STX> escapes (FrameText::parse). `hex` (if given) tells which of the two it was.
 QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
                         bool *hex = nullptr);
 

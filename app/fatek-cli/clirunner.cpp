@@ -1,5 +1,6 @@
 #include "clirunner.h"
 
+#include "frametext.h"
 #include "modelprofile.h"
 #include "plcstatus.h"
 #include "simserver.h"
@@ -17,29 +18,26 @@ namespace Fatek {
 
 namespace {
 
-QString hexBytes(const QByteArray &bytes)
+std::span<const std::uint8_t> bytesOf(const QByteArray &bytes)
 {
-    return QString::fromLatin1(bytes.toHex(' ').toUpper());
+    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
+            static_cast<std::size_t>(bytes.size())};
 }
 
 QString hexBytes(const Bytes &bytes)
 {
-    return hexBytes(QByteArray(reinterpret_cast<const char *>(bytes.data()),
-                               static_cast<qsizetype>(bytes.size())));
+    return QString::fromStdString(FrameText::toHex(bytes));
 }
 
-// Printable view of an answer: control characters as <02>, <03> ...
+QString hexBytes(const QByteArray &bytes)
+{
+    return QString::fromStdString(FrameText::toHex(bytesOf(bytes)));
+}
+
+// Printable view of an answer: control characters as <02>, <03> ... (typed back, raw reads them).
 QString asciiView(const QByteArray &bytes)
 {
-    QString text;
-    for (const char c : bytes) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u >= 0x20 && u <= 0x7E)
-            text += QLatin1Char(c);
-        else
-            text += QStringLiteral("<%1>").arg(u, 2, 16, QLatin1Char('0')).toUpper();
-    }
-    return text;
+    return QString::fromStdString(FrameText::toAscii(bytesOf(bytes), FrameText::Controls::Hex));
 }
 
 QString addressText(const Address &address)

@@ -1,5 +1,6 @@
 // fatek-sim: a simulated FATEK PLC on TCP, UDP and/or a serial port, both protocols everywhere.
 
+#include "linksettings.h"
 #include "modelprofile.h"
 #include "quitsignal.h"
 #include "simserver.h"
@@ -47,28 +48,21 @@ bool parseRate(const QString &text, double *value)
     return true;
 }
 
-// "7E1" -> data bits, parity, stop bits.
-bool parseSerialFormat(const QString &text, SerialSettings *s)
+// "7E1" -> data bits, parity, stop bits, read by the one parser of LinkSettings; empty or the
+// reason it is not a serial format.
+QString parseSerialFormat(const QString &text, SerialSettings *s)
 {
-    if (text.size() != 3)
-        return false;
-    switch (text.at(0).toLatin1()) {
-    case '7': s->dataBits = QSerialPort::Data7; break;
-    case '8': s->dataBits = QSerialPort::Data8; break;
-    default: return false;
+    LinkSettings format;
+    if (QString error = format.setSerialFormat(text); !error.isEmpty())
+        return error;
+    s->dataBits = format.dataBits == 8 ? QSerialPort::Data8 : QSerialPort::Data7;
+    switch (format.parity) {
+    case LinkSettings::Parity::None: s->parity = QSerialPort::NoParity; break;
+    case LinkSettings::Parity::Even: s->parity = QSerialPort::EvenParity; break;
+    case LinkSettings::Parity::Odd: s->parity = QSerialPort::OddParity; break;
     }
-    switch (text.at(1).toUpper().toLatin1()) {
-    case 'N': s->parity = QSerialPort::NoParity; break;
-    case 'E': s->parity = QSerialPort::EvenParity; break;
-    case 'O': s->parity = QSerialPort::OddParity; break;
-    default: return false;
-    }
-    switch (text.at(2).toLatin1()) {
-    case '1': s->stopBits = QSerialPort::OneStop; break;
-    case '2': s->stopBits = QSerialPort::TwoStop; break;
-    default: return false;
-    }
-    return true;
+    s->stopBits = format.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop;
+    return {};
 }
 
 int fail(const QString &message)
@@ -285,9 +279,10 @@ int main(int argc, char *argv[])
             return fail(QStringLiteral("--serial-baud needs a speed, not \"%1\".")
                             .arg(parser.value(serialBaudOpt)));
         serial.baudRate = baud;
-        if (!parseSerialFormat(parser.value(serialFormatOpt), &serial))
-            return fail(QStringLiteral("--serial-format takes e.g. 7E1 or 8N1, not \"%1\".")
-                            .arg(parser.value(serialFormatOpt)));
+        if (const QString formatError = parseSerialFormat(parser.value(serialFormatOpt), &serial);
+            !formatError.isEmpty())
+            return fail(
+                QStringLiteral("--serial-format takes e.g. 7E1 or 8N1: %1").arg(formatError));
         if (!server.openSerial(serial, &error))
             return fail(error);
         out() << "listening on serial " << serial.portName << Qt::endl;

@@ -698,6 +698,15 @@ std::optional<FrameHeader> BinaryCodec::frameHeader(std::span<const std::uint8_t
     return FrameHeader{parsed->payload[0], parsed->payload[1]};
 }
 
+std::optional<FrameHeader> BinaryCodec::peekHeader(std::span<const std::uint8_t> frame) const
+{
+    // Header (51 query / 52 answer), ID, length (2), then station and command.
+    if (frame.size() < 6 || (frame[0] != queryHeader && frame[0] != responseHeader)
+        || frame[1] != frameId)
+        return std::nullopt;
+    return FrameHeader{frame[4], frame[5]};
+}
+
 Bytes BinaryCodec::wrap(std::span<const std::uint8_t> body, bool response) const
 {
     return frameOf(response ? responseHeader : queryHeader, body);

@@ -41,6 +41,9 @@ public:
 
     // Station and command of a checksum-valid frame, if it has them.
     virtual std::optional<FrameHeader> frameHeader(std::span<const std::uint8_t> frame) const = 0;
+    // Station and command where this protocol's frames carry them, checksum and length not
+    // checked (the raw console names broken frames too); empty unless the frame starts like one.
+    virtual std::optional<FrameHeader> peekHeader(std::span<const std::uint8_t> frame) const = 0;
 
     // Raw console: wraps a body in framing and checksum. FACON body: the ASCII between STX and
     // the LRC ("014603R00012"); binary body: the payload bytes (01 46 03 52 00 0C).

@@ -789,6 +789,18 @@ std::optional<FrameHeader> FaconCodec::frameHeader(std::span<const std::uint8_t>
     return FrameHeader{parsed->station, parsed->command};
 }
 
+std::optional<FrameHeader> FaconCodec::peekHeader(std::span<const std::uint8_t> frame) const
+{
+    if (frame.size() < 5 || frame.front() != STX)
+        return std::nullopt;
+    const std::string_view text(reinterpret_cast<const char *>(frame.data()), 5);
+    const auto station = parseHex(text.substr(1, 2));
+    const auto command = parseHex(text.substr(3, 2));
+    if (!station || !command)
+        return std::nullopt;
+    return FrameHeader{static_cast<std::uint8_t>(*station), static_cast<std::uint8_t>(*command)};
+}
+
 Bytes FaconCodec::wrap(std::span<const std::uint8_t> body, bool /*response*/) const
 {
     // Same framing both ways in FACON.

@@ -24,6 +24,7 @@ public:
     Bytes encodeResponse(const Request &request, const Response &response) const override;
     Bytes encodeErrorResponse(FrameHeader header, std::uint8_t errorCode) const override;
     std::optional<FrameHeader> frameHeader(std::span<const std::uint8_t> frame) const override;
+    std::optional<FrameHeader> peekHeader(std::span<const std::uint8_t> frame) const override;
     Bytes wrap(std::span<const std::uint8_t> body, bool response = false) const override;
     std::string summarize(std::span<const std::uint8_t> frame) const override;
 };

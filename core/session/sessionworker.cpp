@@ -5,6 +5,7 @@
 #include "crossthreadcall.h"
 #include "faconcodec.h"
 #include "facondeframer.h"
+#include "rawframe.h"
 #include "trafficlog.h"
 #include "transport.h"
 
@@ -597,11 +598,9 @@ void SessionWorker::startAttempt()
 
     QByteArray frame;
     if (job.raw) {
-        if (job.addFraming) {
-            frame = toQByteArray(activeCodec->wrap(bytesOf(job.rawBytes)));
-        } else {
-            frame = job.rawBytes;
-        }
+        frame = toQByteArray(RawFrame::frame(bytesOf(job.rawBytes),
+                                             job.addFraming ? std::optional(activeCodec->protocol())
+                                                            : std::nullopt));
     } else {
         const Result<Bytes> encoded = activeCodec->encodeRequest(job.request);
         if (!encoded) {
@@ -658,11 +657,8 @@ QString SessionWorker::summarize(const QByteArray &frame) const
 {
     if (const Codec *c = codec())
         return QString::fromStdString(c->summarize(bytesOf(frame)));
-    // Protocol not known yet: let the frame's shape choose.
-    const Codec *guess = !frame.isEmpty() && static_cast<quint8>(frame.at(0)) == FaconCodec::STX
-                             ? m_faconCodec.get()
-                             : m_binaryCodec.get();
-    return QString::fromStdString(guess->summarize(bytesOf(frame)));
+    // Protocol not known yet: the frame's first byte tells.
+    return QString::fromStdString(RawFrame::summarize(bytesOf(frame)));
 }
 
 void SessionWorker::onBytes(const QByteArray &bytes)
@@ -761,8 +757,7 @@ void SessionWorker::onRawBytes(const QByteArray &bytes)
     std::optional<Protocol> protocol = m_protocol;
     if (!protocol)
         protocol = m_current->options.framing;
-    if (!protocol && !m_sentFrame.isEmpty()
-        && static_cast<quint8>(m_sentFrame.at(0)) == FaconCodec::STX)
+    if (!protocol && RawFrame::protocolOf(bytesOf(m_sentFrame)) == Protocol::Facon)
         protocol = Protocol::Facon;
     if (!protocol)
         return;

@@ -39,14 +39,74 @@ QString protocolChoiceName(LinkSettings::ProtocolChoice choice)
     return {};
 }
 
-static QChar parityLetter(LinkSettings::Parity parity)
+QChar LinkSettings::parityLetter(Parity parity)
 {
     switch (parity) {
-    case LinkSettings::Parity::None: return QLatin1Char('N');
-    case LinkSettings::Parity::Even: return QLatin1Char('E');
-    case LinkSettings::Parity::Odd: return QLatin1Char('O');
+    case Parity::None: return QLatin1Char('N');
+    case Parity::Even: return QLatin1Char('E');
+    case Parity::Odd: return QLatin1Char('O');
     }
     return QLatin1Char('?');
+}
+
+std::optional<int> LinkSettings::dataBitsFromText(const QString &text)
+{
+    bool ok = false;
+    const int bits = text.trimmed().toInt(&ok);
+    if (!ok || (bits != 7 && bits != 8))
+        return std::nullopt;
+    return bits;
+}
+
+std::optional<LinkSettings::Parity> LinkSettings::parityFromText(const QString &text)
+{
+    const QString p = text.trimmed().toUpper();
+    if (p == QLatin1String("N") || p == QLatin1String("NONE"))
+        return Parity::None;
+    if (p == QLatin1String("E") || p == QLatin1String("EVEN"))
+        return Parity::Even;
+    if (p == QLatin1String("O") || p == QLatin1String("ODD"))
+        return Parity::Odd;
+    return std::nullopt;
+}
+
+std::optional<int> LinkSettings::stopBitsFromText(const QString &text)
+{
+    bool ok = false;
+    const int bits = text.trimmed().toInt(&ok);
+    if (!ok || (bits != 1 && bits != 2))
+        return std::nullopt;
+    return bits;
+}
+
+QString LinkSettings::setSerialFormat(const QString &text)
+{
+    const QString format = text.trimmed();
+    if (format.size() != 3)
+        return QStringLiteral("Serial format \"%1\" is not valid: write data bits, parity and "
+                              "stop bits, e.g. 7E1 or 8N1.")
+            .arg(text);
+    const std::optional<int> data = dataBitsFromText(format.mid(0, 1));
+    if (!data)
+        return QStringLiteral("Serial format \"%1\": data bits must be 7 or 8, not %2.")
+            .arg(text, format.mid(0, 1));
+    const std::optional<Parity> p = parityFromText(format.mid(1, 1));
+    if (!p)
+        return QStringLiteral("Serial format \"%1\": parity must be N, E or O, not %2.")
+            .arg(text, format.mid(1, 1));
+    const std::optional<int> stop = stopBitsFromText(format.mid(2, 1));
+    if (!stop)
+        return QStringLiteral("Serial format \"%1\": stop bits must be 1 or 2, not %2.")
+            .arg(text, format.mid(2, 1));
+    dataBits = *data;
+    parity = *p;
+    stopBits = *stop;
+    return {};
+}
+
+QString LinkSettings::serialFormat() const
+{
+    return QStringLiteral("%1%2%3").arg(dataBits).arg(parityLetter(parity)).arg(stopBits);
 }
 
 QString LinkSettings::toString() const
@@ -56,12 +116,10 @@ QString LinkSettings::toString() const
     case Kind::Tcp: medium = QStringLiteral("TCP %1:%2").arg(host).arg(port); break;
     case Kind::Udp: medium = QStringLiteral("UDP %1:%2").arg(host).arg(port); break;
     case Kind::Serial:
-        medium = QStringLiteral("%1 %2 %3%4%5")
+        medium = QStringLiteral("%1 %2 %3")
                      .arg(portName.isEmpty() ? QStringLiteral("(no port)") : portName)
                      .arg(baudRate)
-                     .arg(dataBits)
-                     .arg(parityLetter(parity))
-                     .arg(stopBits);
+                     .arg(serialFormat());
         if (flowControl == FlowControl::Hardware)
             medium += QStringLiteral(" RTS/CTS");
         else if (flowControl == FlowControl::Software)

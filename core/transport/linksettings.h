@@ -1,7 +1,10 @@
 #pragma once
 
+#include <QChar>
 #include <QMetaType>
 #include <QString>
+
+#include <optional>
 
 namespace Fatek {
 
@@ -45,6 +48,19 @@ struct LinkSettings
                             ProtocolChoice protocol = ProtocolChoice::Facon);
     static LinkSettings serial(const QString &portName, qint32 baudRate = 9600,
                                ProtocolChoice protocol = ProtocolChoice::Facon);
+
+    // Serial format as written on PLC manuals and command lines: "7E1", "8N1", "8o2" (data bits 7
+    // or 8, parity N/E/O in any case, stop bits 1 or 2). Sets the three fields and returns an
+    // empty string, or returns one sentence saying what is wrong and changes nothing.
+    QString setSerialFormat(const QString &text);
+    // "7E1"
+    QString serialFormat() const;
+    // The parts alone (fatek-cli's --data, --parity, --stop): "7"/"8"; "N", "E", "O" or "none",
+    // "even", "odd" in any case; "1"/"2". Surrounding blanks allowed.
+    static std::optional<int> dataBitsFromText(const QString &text);
+    static std::optional<Parity> parityFromText(const QString &text);
+    static std::optional<int> stopBitsFromText(const QString &text);
+    static QChar parityLetter(Parity parity);
 
     // "TCP 127.0.0.1:500, FACON", "UDP plc1:500, binary", "/dev/ttyUSB0 9600 7E1, auto-detect".
     QString toString() const;

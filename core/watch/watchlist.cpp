@@ -1,5 +1,7 @@
 #include "watchlist.h"
 
+#include "addressrange.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -640,76 +642,23 @@ Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
 
 Result<QList<Address>> expandRange(const QString &text)
 {
-    const QString trimmed = text.trimmed();
-    const qsizetype dots = trimmed.indexOf(QLatin1String(".."));
-    if (dots < 0) {
-        const auto single = Address::parse(trimmed.toStdString());
-        if (!single)
-            return single.error();
-        return QList<Address>{*single};
-    }
-
-    const QString left = trimmed.left(dots).trimmed();
-    QString right = trimmed.mid(dots + 2).trimmed();
-    if (left.isEmpty() || right.isEmpty()) {
+    const auto range = AddressRange::parse(text.toStdString());
+    if (!range)
+        return range.error();
+    // One range becomes that many watch rows: the grammar is AddressRange's, the limit ours.
+    if (range->count > static_cast<std::uint32_t>(MaxRangeItems)) {
         return makeError(
             ErrorKind::InvalidAddress,
-            QStringLiteral("Incomplete range \"%1\": write it as first..last, e.g. R100..R163.")
-                .arg(trimmed)
+            QStringLiteral("Range \"%1\" has %2 elements; at most %3 fit in one range.")
+                .arg(text.trimmed())
+                .arg(range->count)
+                .arg(MaxRangeItems)
                 .toStdString());
     }
-    const auto start = Address::parse(left.toStdString());
-    if (!start)
-        return start.error();
-    bool numberOnly = true;
-    for (QChar c : right)
-        numberOnly = numberOnly && c.isDigit();
-    if (numberOnly)
-        right.prepend(QString::fromLatin1(start->info().symbol.data(),
-                                          static_cast<qsizetype>(start->info().symbol.size())));
-    const auto end = Address::parse(right.toStdString());
-    if (!end)
-        return end.error();
-
-    const auto rangeError = [&](const QString &message) {
-        return makeError(ErrorKind::InvalidAddress, message.toStdString());
-    };
-    const QString first = QString::fromStdString(start->toString());
-    const QString last = QString::fromStdString(end->toString());
-    if (start->type != end->type) {
-        return rangeError(
-            QStringLiteral("Range \"%1\" mixes %2 and %3: both ends must be the same element type.")
-                .arg(trimmed, first, last));
-    }
-    if (end->number < start->number) {
-        return rangeError(
-            QStringLiteral("Range \"%1\" runs backwards: write the lower address first (%2..%3).")
-                .arg(trimmed, last, first));
-    }
-    const std::uint32_t step = start->info().step;
-    const std::uint32_t distance = end->number - start->number;
-    if (distance % step != 0) {
-        return rangeError(
-            QStringLiteral("Range \"%1\" does not end on a whole element: %2 elements are %3 apart "
-                           "(%4, %5, ...).")
-                .arg(trimmed,
-                     QString::fromLatin1(start->info().symbol.data(),
-                                         static_cast<qsizetype>(start->info().symbol.size())))
-                .arg(step)
-                .arg(first, QString::fromStdString(start->advanced(1).toString())));
-    }
-    const std::uint32_t count = distance / step + 1;
-    if (count > static_cast<std::uint32_t>(MaxRangeItems)) {
-        return rangeError(
-            QStringLiteral("Range \"%1\" has %2 elements; at most %3 fit in one range.")
-                .arg(trimmed)
-                .arg(count)
-                .arg(MaxRangeItems));
-    }
     QList<Address> addresses;
-    addresses.reserve(count);
-    for (std::uint32_t i = 0; i < count; ++i)
-        addresses.append(start->advanced(i));
+    addresses.reserve(range->count);
+    for (std::uint32_t i = 0; i < range->count; ++i)
+        addresses.append(range->start.advanced(i));
     return addresses;
 }
 

@@ -85,9 +85,9 @@ Status saveToFile(const WatchListFile &file, const QString &path);
 // Latin-1 (older spreadsheet exports).
 Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv);
 
-// "R100..R163" -> R100..R163 (64), "WY0..WY32" -> WY0, WY16, WY32, "DR0..DR4" -> DR0, DR2, DR4,
-// "R100..163" (number only after ..) and "R100" alone (1). Rejects mixed types, backwards ranges,
-// ends off the element step, and more than MaxRangeItems elements.
+// An AddressRange as its addresses: "R100..R163" -> R100..R163 (64), "WY0..WY32" -> WY0, WY16,
+// WY32, "DR0..DR4" -> DR0, DR2, DR4, "R100..163", "R100-163" and "R100" alone (1). Rejects what
+// AddressRange::parse rejects, and more than MaxRangeItems elements.
 Result<QList<Address>> expandRange(const QString &text);
 
 } // namespace WatchList

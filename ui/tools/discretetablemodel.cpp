@@ -12,7 +12,7 @@ DiscreteTableModel::DiscreteTableModel(QObject *parent)
     m_range.count = 0;
 }
 
-void DiscreteTableModel::setRange(const DiscreteRange &range)
+void DiscreteTableModel::setRange(const AddressRange &range)
 {
     beginResetModel();
     m_range = range;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "discreterange.h"
+#include "addressrange.h"
 
 #include <QAbstractTableModel>
 #include <QPalette>
@@ -21,8 +21,8 @@ public:
 
     explicit DiscreteTableModel(QObject *parent = nullptr);
 
-    void setRange(const DiscreteRange &range);
-    DiscreteRange range() const { return m_range; }
+    void setRange(const AddressRange &range);
+    AddressRange range() const { return m_range; }
     // Values of 44 / 43 for the whole range; a size mismatch or nullopt marks them unknown.
     void setStates(const std::optional<std::vector<std::uint32_t>> &values);
     void setDisabled(const std::optional<std::vector<std::uint32_t>> &values);
@@ -42,7 +42,7 @@ private:
     void assign(std::vector<std::optional<bool>> &target,
                 const std::optional<std::vector<std::uint32_t>> &values);
 
-    DiscreteRange m_range;
+    AddressRange m_range;
     std::vector<std::optional<bool>> m_states;
     std::vector<std::optional<bool>> m_disabled;
     QPalette m_palette;

@@ -4,7 +4,7 @@
 
 #include "coretext.h"
 #include "discretecontrolbatch.h"
-#include "discreterange.h"
+#include "discretescan.h"
 #include "element.h"
 #include "plcstatus.h"
 #include "requesttracker.h"
@@ -111,9 +111,9 @@ void ForcedPointsView::scan()
     if (!m_session || m_scanning || m_enabling)
         return;
     if (!m_ranges->text().trimmed().isEmpty()) {
-        const Result<QList<DiscreteRange>> ranges = DiscreteRange::parseList(m_ranges->text());
+        const Result<QList<AddressRange>> ranges = DiscreteScan::parse(m_ranges->text());
         if (!ranges) {
-            m_message->setMessage(QString::fromStdString(ranges.error().message), true);
+            m_message->setMessage(CoreText::message(ranges.error().message), true);
             return;
         }
         scanRanges(*ranges, {});
@@ -128,41 +128,41 @@ void ForcedPointsView::scan()
     m_scanning = true;
     m_message->setMessage(tr("Reading the PLC's sizes \u2026"), false);
     updateEnabled();
-    m_requests->submit(Request::detailStatus(m_station), [this,
-                                                          generation](const SessionResult &result) {
-        if (generation != m_generation)
-            return;
-        m_scanning = false;
-        if (!result.ok()) {
-            // Not remembered: the next scan asks again.
-            scanRanges(DiscreteRange::defaults(),
-                       tr("The PLC did not report its sizes (%1): default ranges scanned.")
-                           .arg(CoreText::message(result.errorText())));
-            return;
-        }
-        QList<ElementType> unreported;
-        m_plcRanges
-            = DiscreteRange::wholePlc(DetailStatus::decode(result.response().data), &unreported);
-        QStringList kinds;
-        for (ElementType t : std::as_const(unreported))
-            kinds << QString::fromUtf8(elementInfo(t).symbol.data(),
-                                       static_cast<qsizetype>(elementInfo(t).symbol.size()));
-        m_plcNote = kinds.isEmpty() ? QString()
-                                    : tr("The PLC did not report how many %1 it has: default "
-                                         "ranges scanned for them.")
-                                          .arg(kinds.join(QStringLiteral(", ")));
-        scanRanges(*m_plcRanges, m_plcNote);
-    });
+    m_requests->submit(
+        Request::detailStatus(m_station), [this, generation](const SessionResult &result) {
+            if (generation != m_generation)
+                return;
+            m_scanning = false;
+            if (!result.ok()) {
+                // Not remembered: the next scan asks again.
+                scanRanges(DiscreteScan::defaults(),
+                           tr("The PLC did not report its sizes (%1): default ranges scanned.")
+                               .arg(CoreText::message(result.errorText())));
+                return;
+            }
+            QList<ElementType> unreported;
+            m_plcRanges
+                = DiscreteScan::wholePlc(DetailStatus::decode(result.response().data), &unreported);
+            QStringList kinds;
+            for (ElementType t : std::as_const(unreported))
+                kinds << QString::fromUtf8(elementInfo(t).symbol.data(),
+                                           static_cast<qsizetype>(elementInfo(t).symbol.size()));
+            m_plcNote = kinds.isEmpty() ? QString()
+                                        : tr("The PLC did not report how many %1 it has: default "
+                                             "ranges scanned for them.")
+                                              .arg(kinds.join(QStringLiteral(", ")));
+            scanRanges(*m_plcRanges, m_plcNote);
+        });
 }
 
-void ForcedPointsView::scanRanges(const QList<DiscreteRange> &ranges, const QString &note)
+void ForcedPointsView::scanRanges(const QList<AddressRange> &ranges, const QString &note)
 {
     // One 43 per 256 points.
-    QList<DiscreteRange> chunks;
-    for (const DiscreteRange &r : ranges) {
+    QList<AddressRange> chunks;
+    for (const AddressRange &r : ranges) {
         for (quint32 done = 0; done < r.count; done += Limits::maxDiscretes)
-            chunks << DiscreteRange{r.start.advanced(done),
-                                    std::min<quint32>(Limits::maxDiscretes, r.count - done)};
+            chunks << AddressRange{r.start.advanced(done),
+                                   std::min<quint32>(Limits::maxDiscretes, r.count - done)};
     }
     struct ScanState
     {
@@ -172,18 +172,18 @@ void ForcedPointsView::scanRanges(const QList<DiscreteRange> &ranges, const QStr
     };
     auto state = std::make_shared<ScanState>(ScanState{chunks.size(), {}, {}});
     const quint64 generation = ++m_generation;
-    const QString scanned = DiscreteRange::listText(ranges);
+    const QString scanned = DiscreteScan::listText(ranges);
     m_scanning = true;
     m_message->setMessage(tr("Scanning %1 \u2026").arg(scanned), false);
     updateEnabled();
-    for (const DiscreteRange &chunk : chunks) {
+    for (const AddressRange &chunk : chunks) {
         m_requests->submit(
             Request::readEnableFlags(m_station, chunk.start, chunk.count),
             [this, state, chunk, generation, scanned, note](const SessionResult &result) {
                 if (generation != m_generation)
                     return;
                 if (!result.ok()) {
-                    state->errors << tr("%1: %2").arg(chunk.toString(),
+                    state->errors << tr("%1: %2").arg(QString::fromStdString(chunk.toString()),
                                                       CoreText::message(result.errorText()));
                 } else {
                     const auto &flags = result.response().values;

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "address.h"
-#include "discreterange.h"
+#include "discretescan.h"
 #include "toolconfirmation.h"
 
 #include <QPointer>
@@ -50,7 +50,7 @@ Q_SIGNALS:
     void pointsChanged();
 
 private:
-    void scanRanges(const QList<DiscreteRange> &ranges, const QString &note);
+    void scanRanges(const QList<AddressRange> &ranges, const QString &note);
     void showList();
     void updateEnabled();
 
@@ -64,8 +64,8 @@ private:
     bool m_enabling = false;
     int m_scans = 0;
     QString m_scanned;
-    std::optional<QList<DiscreteRange>> m_plcRanges; // every point of the target, once known
-    QString m_plcNote;                               // what of it is a guess
+    std::optional<QList<AddressRange>> m_plcRanges; // every point of the target, once known
+    QString m_plcNote;                              // what of it is a guess
     QString m_prefix; // outcome of the last Enable all, shown with the next scan result
     bool m_prefixIsError = false;
     quint64 m_generation = 0; // answers of an older scan are ignored

@@ -198,7 +198,7 @@ QString ForcingPanel::messageText() const
 
 void ForcingPanel::applyRangeFromControls()
 {
-    DiscreteRange range;
+    AddressRange range;
     range.start = Address{static_cast<ElementType>(m_type->currentData().toInt()),
                           static_cast<quint32>(m_start->value())};
     range.count = static_cast<quint32>(m_count->value());
@@ -219,7 +219,7 @@ void ForcingPanel::refresh()
     // Both reads of the previous refresh must be back first: a slow link must not pile up requests.
     if (!m_session || m_pendingReads > 0 || m_model->range().count == 0)
         return;
-    const DiscreteRange range = m_model->range();
+    const AddressRange range = m_model->range();
     const quint64 generation = m_generation;
     auto handle = [this, generation](bool states) {
         return [this, generation, states](const SessionResult &r) {

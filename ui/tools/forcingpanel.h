@@ -1,6 +1,6 @@
 #pragma once
 
-#include "discreterange.h"
+#include "addressrange.h"
 #include "request.h"
 #include "toolconfirmation.h"
 

@@ -21,15 +21,6 @@
 
 namespace Fatek {
 
-namespace {
-
-QByteArray toQByteArray(const Bytes &b)
-{
-    return QByteArray(reinterpret_cast<const char *>(b.data()), static_cast<qsizetype>(b.size()));
-}
-
-} // namespace
-
 LoopbackDialog::LoopbackDialog(QWidget *parent)
     : QDialog(parent)
     , m_requests(new RequestTracker(this))
@@ -191,10 +182,10 @@ Result<Bytes> LoopbackDialog::testData() const
     case DataMode::Hex: {
         if (m_text->text().trimmed().isEmpty())
             break; // no data is a valid loopback
-        const Result<QByteArray> bytes = FrameText::parseHex(m_text->text());
+        Result<Bytes> bytes = FrameText::parseHex(m_text->text().toStdString());
         if (!bytes)
             return bytes.error();
-        bytesOut.assign(bytes->begin(), bytes->end());
+        bytesOut = std::move(bytes).value();
         break;
     }
     case DataMode::Pattern: {
@@ -268,7 +259,7 @@ void LoopbackDialog::onAnswer(int run, const SessionResult &result, double rttMs
         appendLine(tr("%1  MISMATCH  %2 ms: got %3")
                        .arg(prefix)
                        .arg(rttMs, 0, 'f', 1)
-                       .arg(FrameText::toAscii(toQByteArray(result.response().data))),
+                       .arg(QString::fromStdString(FrameText::toAscii(result.response().data))),
                    true);
     } else if (result.errorKind() == ErrorKind::Timeout) {
         m_stats.add(LoopbackStats::Outcome::Timeout);

@@ -1,9 +1,8 @@
 #include "rawsendbar.h"
 
-#include "binarycodec.h"
 #include "coretext.h"
-#include "faconcodec.h"
 #include "frametext.h"
+#include "rawframe.h"
 #include "requesttracker.h"
 #include "session.h"
 #include "toolpalette.h"
@@ -20,14 +19,20 @@ namespace Fatek {
 
 namespace {
 
-std::vector<std::uint8_t> toBytes(const QByteArray &a)
+std::span<const std::uint8_t> bytesOf(const QByteArray &a)
 {
-    return {a.begin(), a.end()};
+    return {reinterpret_cast<const std::uint8_t *>(a.constData()),
+            static_cast<std::size_t>(a.size())};
 }
 
-QByteArray fromBytes(const std::vector<std::uint8_t> &b)
+QByteArray fromBytes(const Bytes &b)
 {
     return QByteArray(reinterpret_cast<const char *>(b.data()), static_cast<qsizetype>(b.size()));
+}
+
+QString asciiOf(const QByteArray &a)
+{
+    return QString::fromStdString(FrameText::toAscii(bytesOf(a)));
 }
 
 } // namespace
@@ -140,22 +145,20 @@ void RawSendBar::send()
     if (!m_session || m_busy)
         return;
     const bool hex = m_mode->currentIndex() == 0;
-    const Result<QByteArray> typed
-        = hex ? FrameText::parseHex(m_input->text()) : FrameText::parseAscii(m_input->text());
+    const Result<Bytes> typed = FrameText::parse(
+        m_input->text().toStdString(), hex ? FrameText::Typed::Hex : FrameText::Typed::Ascii);
     if (!typed) {
         ToolPalette::showMessage(m_result, CoreText::message(typed.error().message), true);
         return;
     }
     const bool framing = m_framing->isChecked();
-    const bool facon = framingIsFacon();
-    // What will go on the wire, to show it; the session does the same wrapping.
-    QByteArray frame = *typed;
-    if (framing) {
-        frame = facon ? fromBytes(FaconCodec().wrap(toBytes(*typed)))
-                      : fromBytes(BinaryCodec().wrap(toBytes(*typed)));
-    }
+    // The framing the label names is the one the session adds (it frames with RawFrame too), so
+    // the frame shown and confirmed is the frame sent.
+    const Protocol protocol = framingIsFacon() ? Protocol::Facon : Protocol::Binary;
+    const QByteArray frame
+        = fromBytes(RawFrame::frame(*typed, framing ? std::optional(protocol) : std::nullopt));
     // A raw frame can do anything: ask unless it is clearly a command that only reads.
-    const auto header = FrameText::header(frame);
+    const auto header = RawFrame::peek(bytesOf(frame));
     const bool harmless = header && isKnownCommand(header->command)
                           && !isWriteCommand(static_cast<Command>(header->command));
     // In operator mode the session refuses it with its own message: no question first.
@@ -171,9 +174,9 @@ void RawSendBar::send()
                                   .arg(QString::number(header->command, 16).toUpper())
                                   .arg(header->station))
                      : tr("an unrecognized frame");
-        const QString question = tr("Send %1 (%2) on %3? It may change the PLC.")
-                                     .arg(what, FrameText::toAscii(frame),
-                                          ToolConfirmation::target(m_station, m_connectionName));
+        const QString question
+            = tr("Send %1 (%2) on %3? It may change the PLC.")
+                  .arg(what, asciiOf(frame), ToolConfirmation::target(m_station, m_connectionName));
         if (!ToolConfirmation::ask(this, tr("Send raw frame"), question, m_confirmer)) {
             ToolPalette::showMessage(m_result, tr("Cancelled: nothing sent."), false);
             return;
@@ -182,20 +185,23 @@ void RawSendBar::send()
     m_busy = true;
     updateEnabled();
     ToolPalette::showMessage(
-        m_result, tr("Sent    %1\nwaiting for the answer \u2026").arg(FrameText::toAscii(frame)),
-        false);
-    // The station a protocol probe asks when auto-detect has not decided yet.
+        m_result, tr("Sent    %1\nwaiting for the answer \u2026").arg(asciiOf(frame)), false);
+    // The station the frame is for (the session's statistics); the framing is named, so no
+    // auto-detect probe goes first.
     RequestOptions options;
     options.station = m_station;
+    if (framing)
+        options.framing = protocol;
     m_requests->sendRaw(
-        *typed, framing, [this, frame](const SessionResult &r) { onAnswer(frame, r); }, options);
+        fromBytes(*typed), framing, [this, frame](const SessionResult &r) { onAnswer(frame, r); },
+        options);
 }
 
 void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
 {
     m_busy = false;
     updateEnabled();
-    const QString sentLine = tr("Sent    %1").arg(FrameText::toAscii(sent));
+    const QString sentLine = tr("Sent    %1").arg(asciiOf(sent));
     if (!result.ok()) {
         ToolPalette::showMessage(
             m_result, tr("%1\nFailed  %2").arg(sentLine, CoreText::message(result.errorText())),
@@ -204,16 +210,13 @@ void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
     }
     ++m_answers;
     m_lastAnswer = result.rawAnswer();
-    const std::vector<std::uint8_t> answer = toBytes(m_lastAnswer);
-    const bool facon
-        = !m_lastAnswer.isEmpty() && static_cast<quint8>(m_lastAnswer.at(0)) == FaconCodec::STX;
-    const QString meaning = facon ? QString::fromStdString(FaconCodec().summarize(answer))
-                                  : QString::fromStdString(BinaryCodec().summarize(answer));
-    ToolPalette::showMessage(m_result,
-                             tr("%1\nAnswer  %2\n        %3\nMeaning %4")
-                                 .arg(sentLine, FrameText::toAscii(m_lastAnswer),
-                                      FrameText::toHex(m_lastAnswer), meaning),
-                             false);
+    const QString meaning = QString::fromStdString(RawFrame::summarize(bytesOf(m_lastAnswer)));
+    ToolPalette::showMessage(
+        m_result,
+        tr("%1\nAnswer  %2\n        %3\nMeaning %4")
+            .arg(sentLine, asciiOf(m_lastAnswer),
+                 QString::fromStdString(FrameText::toHex(bytesOf(m_lastAnswer))), meaning),
+        false);
 }
 
 } // namespace Fatek

@@ -1,6 +1,7 @@
 #include "trafficlogmodel.h"
 
 #include "coretext.h"
+#include "frametext.h"
 #include "toolpalette.h"
 
 #include <QFontDatabase>
@@ -47,9 +48,12 @@ void TrafficLogModel::append(const QList<TrafficEntry> &entries)
     beginInsertRows({}, first, first + static_cast<int>(incoming) - 1);
     for (qsizetype i = skip; i < entries.size(); ++i) {
         const TrafficEntry &e = entries.at(i);
-        m_rows.push_back(Row{e, FrameText::header(e.bytes),
+        const auto bytes = std::span(reinterpret_cast<const std::uint8_t *>(e.bytes.constData()),
+                                     static_cast<std::size_t>(e.bytes.size()));
+        m_rows.push_back(Row{e, RawFrame::peek(bytes),
                              e.timestamp.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz")),
-                             FrameText::toHex(e.bytes), FrameText::toAscii(e.bytes)});
+                             QString::fromStdString(FrameText::toHex(bytes)),
+                             QString::fromStdString(FrameText::toAscii(bytes))});
     }
     endInsertRows();
 }

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "frametext.h"
+#include "rawframe.h"
 #include "trafficlog.h"
 
 #include <QAbstractTableModel>
@@ -58,7 +58,7 @@ private:
     struct Row
     {
         TrafficEntry entry;
-        std::optional<FrameText::Header> header;
+        std::optional<RawFrame::Peek> header;
         QString time; // local time, formatted once
         QString hex;
         QString ascii;
