@@ -1,5 +1,7 @@
 #include "address.h"
 
+#include "textscan.h"
+
 #include <cctype>
 
 namespace Fatek {
@@ -22,10 +24,7 @@ std::string Address::toFaconString() const
 
 Result<Address> Address::parse(std::string_view text)
 {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
-        text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-        text.remove_suffix(1);
+    text = TextScan::trimmed(text);
     const std::string shown(text);
     if (text.empty())
         return makeError(ErrorKind::InvalidAddress,

@@ -1,15 +1,15 @@
 #include "addressrange.h"
 
+#include "textscan.h"
+
 #include <cctype>
 
 namespace Fatek {
 
 namespace {
 
-bool isBlank(char c)
-{
-    return std::isspace(static_cast<unsigned char>(c)) != 0;
-}
+using TextScan::isBlank;
+using TextScan::trimmed;
 
 bool isLetter(char c)
 {
@@ -24,15 +24,6 @@ bool isDigit(char c)
 bool isSeparatorChar(char c)
 {
     return c == '-' || c == '.';
-}
-
-std::string_view trimmed(std::string_view text)
-{
-    while (!text.empty() && isBlank(text.front()))
-        text.remove_prefix(1);
-    while (!text.empty() && isBlank(text.back()))
-        text.remove_suffix(1);
-    return text;
 }
 
 // Drops blanks between an element type and its number ("Y 0" is Y0); other blanks stay, so

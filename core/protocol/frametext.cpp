@@ -1,11 +1,17 @@
 #include "frametext.h"
 
+#include "textscan.h"
+
 #include <array>
 #include <cctype>
 
 namespace Fatek {
 
 namespace {
+
+using TextScan::hexValue;
+using TextScan::isBlank;
+using TextScan::trimmed;
 
 constexpr std::array<std::string_view, 32> controlNames
     = {"NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS",  "HT",  "LF",
@@ -20,34 +26,9 @@ void appendHex(std::string &out, std::uint8_t b)
     out += hexDigits[b & 0xF];
 }
 
-int hexValue(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    return -1;
-}
-
 bool isHexPair(std::string_view text)
 {
     return text.size() == 2 && hexValue(text[0]) >= 0 && hexValue(text[1]) >= 0;
-}
-
-bool isBlank(char c)
-{
-    return std::isspace(static_cast<unsigned char>(c)) != 0;
-}
-
-std::string_view trimmed(std::string_view text)
-{
-    while (!text.empty() && isBlank(text.front()))
-        text.remove_prefix(1);
-    while (!text.empty() && isBlank(text.back()))
-        text.remove_suffix(1);
-    return text;
 }
 
 // The whole UTF-8 character starting at `at`, so a message quotes "é" and not half of it.
