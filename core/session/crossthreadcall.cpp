@@ -36,6 +36,42 @@ void acquire([[maybe_unused]] const void *channel)
 #endif
 }
 
+// The function given to QMetaObject::invokeMethod by invoke(). Qt moves it into its slot object,
+// the last copy the other thread reads: every construction ends with a release, so the last one
+// covers that copy (and the slot object's header, written before it). The call and the
+// destruction, on the receiving side (or wherever Qt drops the event), begin with an acquire.
+class MarkedFunction
+{
+public:
+    MarkedFunction(const void *channel, std::function<void()> function)
+        : m_channel(channel)
+        , m_function(std::move(function))
+    {
+        release(m_channel);
+    }
+    MarkedFunction(MarkedFunction &&other) noexcept
+        : m_channel(other.m_channel)
+        , m_function(std::move(other.m_function))
+    {
+        release(m_channel);
+    }
+    MarkedFunction(const MarkedFunction &) = delete;
+    MarkedFunction &operator=(const MarkedFunction &) = delete;
+    MarkedFunction &operator=(MarkedFunction &&) = delete;
+    ~MarkedFunction() { acquire(m_channel); }
+
+    void operator()()
+    {
+        acquire(m_channel);
+        if (m_function)
+            m_function();
+    }
+
+private:
+    const void *m_channel;
+    std::function<void()> m_function;
+};
+
 } // namespace
 
 CrossThreadCall::CrossThreadCall(const QObject *receiver, std::function<void()> function)
@@ -61,6 +97,12 @@ void CrossThreadCall::post(QObject *receiver, std::function<void()> function)
     auto *event = new CrossThreadCall(receiver, std::move(function));
     release(receiver);
     QCoreApplication::postEvent(receiver, event);
+}
+
+void CrossThreadCall::invoke(QObject *context, std::function<void()> function)
+{
+    QMetaObject::invokeMethod(context, MarkedFunction(context, std::move(function)),
+                              Qt::QueuedConnection);
 }
 
 void CrossThreadCall::threadEnds(const void *channel)
