@@ -36,39 +36,43 @@ void acquire([[maybe_unused]] const void *channel)
 #endif
 }
 
+// The channel of invoke()'s marks. Not the receiver's address, kept in the function: reading it
+// on the receiving side would come before the acquire.
+const char invokeChannel = 0;
+
 // The function given to QMetaObject::invokeMethod by invoke(). Qt moves it into its slot object,
 // the last copy the other thread reads: every construction ends with a release, so the last one
-// covers that copy (and the slot object's header, written before it). The call and the
-// destruction, on the receiving side (or wherever Qt drops the event), begin with an acquire.
+// covers that copy (and the slot object's header, written before it). The call begins with an
+// acquire and ends with a release, as the slot object is shared: whichever side drops the last
+// reference destroys it (the posting thread too, when the call ran first), and the destruction
+// begins with an acquire.
 class MarkedFunction
 {
 public:
-    MarkedFunction(const void *channel, std::function<void()> function)
-        : m_channel(channel)
-        , m_function(std::move(function))
+    explicit MarkedFunction(std::function<void()> function)
+        : m_function(std::move(function))
     {
-        release(m_channel);
+        release(&invokeChannel);
     }
     MarkedFunction(MarkedFunction &&other) noexcept
-        : m_channel(other.m_channel)
-        , m_function(std::move(other.m_function))
+        : m_function(std::move(other.m_function))
     {
-        release(m_channel);
+        release(&invokeChannel);
     }
     MarkedFunction(const MarkedFunction &) = delete;
     MarkedFunction &operator=(const MarkedFunction &) = delete;
     MarkedFunction &operator=(MarkedFunction &&) = delete;
-    ~MarkedFunction() { acquire(m_channel); }
+    ~MarkedFunction() { acquire(&invokeChannel); }
 
     void operator()()
     {
-        acquire(m_channel);
+        acquire(&invokeChannel);
         if (m_function)
             m_function();
+        release(&invokeChannel);
     }
 
 private:
-    const void *m_channel;
     std::function<void()> m_function;
 };
 
@@ -101,8 +105,7 @@ void CrossThreadCall::post(QObject *receiver, std::function<void()> function)
 
 void CrossThreadCall::invoke(QObject *context, std::function<void()> function)
 {
-    QMetaObject::invokeMethod(context, MarkedFunction(context, std::move(function)),
-                              Qt::QueuedConnection);
+    QMetaObject::invokeMethod(context, MarkedFunction(std::move(function)), Qt::QueuedConnection);
 }
 
 void CrossThreadCall::threadEnds(const void *channel)
