@@ -128,7 +128,7 @@ void CliRunner::start()
     m_session = std::make_unique<Session>(m_options.link);
     m_session->setReadOnly(m_options.readOnly);
     connect(m_session.get(), &Session::linkStateChanged, this, &CliRunner::onLinkState);
-    connect(m_session.get(), &Session::finished, this, &CliRunner::onFinished);
+    m_requests.setSession(m_session.get());
     connect(m_session.get(), &Session::values, this, &CliRunner::onValues);
     armWatchdog(m_options.link.connectTimeoutMs + 2000);
     m_session->open();
@@ -148,7 +148,7 @@ void CliRunner::onLinkState(LinkState state, const QString &reason)
     if (state == LinkState::Lost || (state == LinkState::Closed && !m_dispatched)) {
         // Requests in flight finish with LinkError and report it themselves; polling and a link
         // that never came up have nobody else to tell.
-        if (!m_dispatched || m_monitoring || m_handlers.isEmpty()) {
+        if (!m_dispatched || m_monitoring || m_requests.pendingCount() == 0) {
             m_out.error(
                 QStringLiteral("No connection to %1: %2").arg(m_options.link.toString(), reason),
                 ExitCode::Link);
@@ -173,23 +173,17 @@ void CliRunner::armWatchdog(int ms)
 
 void CliRunner::submit(const Request &request, Handler handler)
 {
-    const quint64 id = m_session->submit(request);
-    m_handlers.insert(id, std::move(handler));
+    m_requests.submit(request, watched(std::move(handler)));
     armWatchdog(requestBudgetMs());
 }
 
-void CliRunner::onFinished(quint64 id, const SessionResult &result)
+CliRunner::Handler CliRunner::watched(Handler handler)
 {
-    if (m_done)
-        return;
-    auto it = m_handlers.find(id);
-    if (it == m_handlers.end())
-        return; // the scanner's requests
-    Handler handler = std::move(it.value());
-    m_handlers.erase(it);
-    if (m_handlers.isEmpty())
-        m_watchdog.stop();
-    handler(result);
+    return [this, handler = std::move(handler)](const SessionResult &result) {
+        if (m_requests.pendingCount() == 0)
+            m_watchdog.stop();
+        handler(result);
+    };
 }
 
 int CliRunner::exitCodeFor(ErrorKind kind)
@@ -247,6 +241,7 @@ void CliRunner::finish(int exitCode)
         return;
     m_done = true;
     m_watchdog.stop();
+    m_requests.forgetPending(); // results that still come are not reported
     if (m_scanner)
         m_scanner->cancel();
     if (m_session)
@@ -578,40 +573,39 @@ void CliRunner::runForced()
 
 void CliRunner::runLoopback()
 {
-    m_loopSent = m_loopOk = m_loopMismatches = m_loopTimeouts = 0;
-    m_loopRtts.clear();
+    m_loopStats.reset();
     m_loopLastError.clear();
     loopbackNext();
 }
 
 void CliRunner::loopbackNext()
 {
-    if (m_loopSent >= m_options.loopbackCount) {
+    // One run at a time: every run sent so far has its outcome.
+    const int sent = m_loopStats.runs();
+    if (sent >= m_options.loopbackCount) {
         OutputBlock block;
         block.columns = {QStringLiteral("field"), QStringLiteral("value")};
         block.tableHeader = false;
-        double min = 0, max = 0, mean = 0;
-        if (!m_loopRtts.isEmpty()) {
-            min = *std::min_element(m_loopRtts.begin(), m_loopRtts.end());
-            max = *std::max_element(m_loopRtts.begin(), m_loopRtts.end());
-            for (double v : m_loopRtts)
-                mean += v;
-            mean /= static_cast<double>(m_loopRtts.size());
-        }
+        const double min = m_loopStats.minMs();
+        const double mean = m_loopStats.meanMs();
+        const double max = m_loopStats.maxMs();
+        const int ok = m_loopStats.successes();
         block.rows << QStringList{QStringLiteral("station"), stationText()}
-                   << QStringList{QStringLiteral("sent"), QString::number(m_loopSent)}
-                   << QStringList{QStringLiteral("ok"), QString::number(m_loopOk)}
-                   << QStringList{QStringLiteral("mismatches"), QString::number(m_loopMismatches)}
-                   << QStringList{QStringLiteral("timeouts"), QString::number(m_loopTimeouts)}
+                   << QStringList{QStringLiteral("sent"), QString::number(sent)}
+                   << QStringList{QStringLiteral("ok"), QString::number(ok)}
+                   << QStringList{QStringLiteral("mismatches"),
+                                  QString::number(m_loopStats.mismatches())}
+                   << QStringList{QStringLiteral("timeouts"),
+                                  QString::number(m_loopStats.timeouts())}
                    << QStringList{QStringLiteral("min ms"), ms(min)}
                    << QStringList{QStringLiteral("mean ms"), ms(mean)}
                    << QStringList{QStringLiteral("max ms"), ms(max)};
         QJsonObject json;
         json.insert(QStringLiteral("station"), m_options.station);
-        json.insert(QStringLiteral("sent"), m_loopSent);
-        json.insert(QStringLiteral("ok"), m_loopOk);
-        json.insert(QStringLiteral("mismatches"), m_loopMismatches);
-        json.insert(QStringLiteral("timeouts"), m_loopTimeouts);
+        json.insert(QStringLiteral("sent"), sent);
+        json.insert(QStringLiteral("ok"), ok);
+        json.insert(QStringLiteral("mismatches"), m_loopStats.mismatches());
+        json.insert(QStringLiteral("timeouts"), m_loopStats.timeouts());
         // Microsecond resolution is all a round trip measurement can claim.
         auto rounded = [](double v) {
             return std::round(v * 1000.0) / 1000.0;
@@ -621,32 +615,32 @@ void CliRunner::loopbackNext()
         json.insert(QStringLiteral("maxMs"), rounded(max));
         block.json << json;
         m_out.print(block);
-        if (m_loopOk == m_loopSent)
+        if (ok == sent)
             return stepDone();
         m_out.note(QStringLiteral("%1 of %2 round trips failed%3")
-                       .arg(m_loopSent - m_loopOk)
-                       .arg(m_loopSent)
+                       .arg(sent - ok)
+                       .arg(sent)
                        .arg(m_loopLastError.isEmpty()
                                 ? QString()
                                 : QStringLiteral(" (last: %1)").arg(m_loopLastError)));
         return finish(ExitCode::Link);
     }
-    ++m_loopSent;
     const Bytes data(step().loopbackData.begin(), step().loopbackData.end());
     submit(Request::loopback(m_options.station, data), [this, data](const SessionResult &r) {
         if (r.ok()) {
+            // The round trip on the wire (statistics are published before the result).
+            const double rttMs = m_session->statistics().total.rttLastMs;
             if (r.response().data == data) {
-                ++m_loopOk;
-                m_loopRtts << m_session->statistics().total.rttLastMs;
+                m_loopStats.add(LoopbackStats::Outcome::Success, rttMs);
             } else {
-                ++m_loopMismatches;
+                m_loopStats.add(LoopbackStats::Outcome::Mismatch, rttMs);
                 m_loopLastError = QStringLiteral("echo \"%1\" differs from what was sent")
                                       .arg(QString::fromLatin1(
                                           reinterpret_cast<const char *>(r.response().data.data()),
                                           static_cast<qsizetype>(r.response().data.size())));
             }
         } else if (r.errorKind() == ErrorKind::Timeout) {
-            ++m_loopTimeouts;
+            m_loopStats.add(LoopbackStats::Outcome::Timeout);
             m_loopLastError = r.errorText();
         } else {
             return failWith(r);
@@ -825,9 +819,7 @@ void CliRunner::runRaw()
         if (step().rawFrame && m_options.link.protocol == LinkSettings::ProtocolChoice::Auto
             && !m_session->isProtocolKnown())
             options.framing = step().rawHex ? Protocol::Binary : Protocol::Facon;
-        const quint64 id = m_session->sendRaw(step().rawBytes, step().rawFrame, options);
-        armWatchdog(requestBudgetMs());
-        m_handlers.insert(id, [this, before](const SessionResult &r) {
+        auto onResult = [this, before](const SessionResult &r) {
             if (!r.ok())
                 return failWith(r);
             // What actually went out (with framing and checksum when --frame was given).
@@ -850,7 +842,9 @@ void CliRunner::runRaw()
             block.json << json;
             m_out.print(block);
             stepDone();
-        });
+        };
+        m_requests.sendRaw(step().rawBytes, step().rawFrame, watched(std::move(onResult)), options);
+        armWatchdog(requestBudgetMs());
     }
 }
 

@@ -4,7 +4,9 @@
 #include "clioutput.h"
 #include "datalogger.h"
 #include "itemvalues.h"
+#include "loopbackstats.h"
 #include "request.h"
+#include "requesttracker.h"
 #include "session.h"
 #include "stationscanner.h"
 
@@ -45,11 +47,10 @@ Q_SIGNALS:
     void done(int exitCode);
 
 private:
-    using Handler = std::function<void(const SessionResult &)>;
+    using Handler = RequestTracker::Callback;
 
     bool startSimulator(QString *error);
     void onLinkState(LinkState state, const QString &reason);
-    void onFinished(quint64 id, const SessionResult &result);
     void onValues(const QList<WatchValue> &values);
     void dispatch();
     const CliStep &step() const;
@@ -57,6 +58,8 @@ private:
     void stepDone();
 
     void submit(const Request &request, Handler handler);
+    // The handler, after stopping the watchdog once no other request is pending.
+    Handler watched(Handler handler);
     void armWatchdog(int ms);
     int requestBudgetMs() const;
     void finish(int exitCode);
@@ -86,19 +89,15 @@ private:
     std::unique_ptr<SimServer> m_server;
     std::unique_ptr<Session> m_session;
     std::unique_ptr<StationScanner> m_scanner;
-    QHash<quint64, Handler> m_handlers;
+    RequestTracker m_requests; // the commands' own requests (not the scanner's)
     QTimer m_watchdog;
     qsizetype m_stepIndex = 0;
     bool m_dispatched = false;
     bool m_monitoring = false;
     bool m_done = false;
 
-    // loopback
-    int m_loopSent = 0;
-    int m_loopOk = 0;
-    int m_loopMismatches = 0;
-    int m_loopTimeouts = 0;
-    QList<double> m_loopRtts;
+    // loopback (counted as the GUI's loopback dialog counts)
+    LoopbackStats m_loopStats;
     QString m_loopLastError;
 
     // monitor

@@ -36,6 +36,46 @@ void acquire([[maybe_unused]] const void *channel)
 #endif
 }
 
+// The channel of invoke()'s marks. Not the receiver's address, kept in the function: reading it
+// on the receiving side would come before the acquire.
+const char invokeChannel = 0;
+
+// The function given to QMetaObject::invokeMethod by invoke(). Qt moves it into its slot object,
+// the last copy the other thread reads: every construction ends with a release, so the last one
+// covers that copy (and the slot object's header, written before it). The call begins with an
+// acquire and ends with a release, as the slot object is shared: whichever side drops the last
+// reference destroys it (the posting thread too, when the call ran first), and the destruction
+// begins with an acquire.
+class MarkedFunction
+{
+public:
+    explicit MarkedFunction(std::function<void()> function)
+        : m_function(std::move(function))
+    {
+        release(&invokeChannel);
+    }
+    MarkedFunction(MarkedFunction &&other) noexcept
+        : m_function(std::move(other.m_function))
+    {
+        release(&invokeChannel);
+    }
+    MarkedFunction(const MarkedFunction &) = delete;
+    MarkedFunction &operator=(const MarkedFunction &) = delete;
+    MarkedFunction &operator=(MarkedFunction &&) = delete;
+    ~MarkedFunction() { acquire(&invokeChannel); }
+
+    void operator()()
+    {
+        acquire(&invokeChannel);
+        if (m_function)
+            m_function();
+        release(&invokeChannel);
+    }
+
+private:
+    std::function<void()> m_function;
+};
+
 } // namespace
 
 CrossThreadCall::CrossThreadCall(const QObject *receiver, std::function<void()> function)
@@ -61,6 +101,11 @@ void CrossThreadCall::post(QObject *receiver, std::function<void()> function)
     auto *event = new CrossThreadCall(receiver, std::move(function));
     release(receiver);
     QCoreApplication::postEvent(receiver, event);
+}
+
+void CrossThreadCall::invoke(QObject *context, std::function<void()> function)
+{
+    QMetaObject::invokeMethod(context, MarkedFunction(std::move(function)), Qt::QueuedConnection);
 }
 
 void CrossThreadCall::threadEnds(const void *channel)

@@ -29,6 +29,12 @@ public:
     // CrossThreadCall, else returns false.
     static bool deliver(QObject *receiver, QEvent *event);
 
+    // Queues `function` for the thread of any QObject (one that does not forward its events to
+    // deliver()) through a queued QMetaObject::invokeMethod, with the same marks. If `context` is
+    // destroyed first, Qt drops the call with it. The caller makes sure `context` is not being
+    // destroyed while this runs.
+    static void invoke(QObject *context, std::function<void()> function);
+
     // The same marks for a hand-over Qt makes without an event: a thread's end, seen by
     // QThread::wait() (Qt's threads are detached, so TSan can't see the join). Call threadEnds()
     // last thing on the ending thread and threadEnded() after wait(), with the same channel.

@@ -4,11 +4,35 @@
 #include "sessionworker.h"
 
 #include <QDeadlineTimer>
+#include <QHash>
+#include <QPointer>
 
 #include <algorithm>
 #include <mutex>
 
 namespace Fatek {
+
+namespace {
+
+// The completion of one request. `context` is cleared, under `mutex`, when the context object is
+// destroyed (on its own thread), so the thread delivering the result never reaches a dead object:
+// it posts while holding `mutex`, and an event posted before the destruction goes with the object.
+struct PendingCompletion
+{
+    std::mutex mutex;
+    QObject *context = nullptr;
+    Session::Completion function;
+    QMetaObject::Connection watch; // context's destroyed()
+};
+
+} // namespace
+
+// Completions by request id, filled by submit() (any thread), emptied on the Session's thread.
+struct SessionCompletions
+{
+    std::mutex mutex;
+    QHash<quint64, std::shared_ptr<PendingCompletion>> pending;
+};
 
 QString linkStateName(LinkState state)
 {
@@ -40,6 +64,7 @@ Session::Session(const LinkSettings &settings, QObject *parent)
     , m_settings(settings)
     , m_shared(std::make_shared<SessionShared>())
     , m_log(new TrafficLog(10000, this))
+    , m_completions(std::make_unique<SessionCompletions>())
 {
     registerSessionMetaTypes();
     m_thread.setObjectName(QStringLiteral("session %1").arg(settings.toString()));
@@ -53,7 +78,13 @@ Session::Session(const LinkSettings &settings, QObject *parent)
     connect(
         m_worker, &SessionWorker::finished, m_worker,
         [this](quint64 id, const SessionResult &result) {
-            CrossThreadCall::post(this, [this, id, result] { Q_EMIT finished(id, result); });
+            CrossThreadCall::post(this, [this, id, result] {
+                // A receiver of finished() may delete this session: its completions go with it.
+                const QPointer<Session> self(this);
+                Q_EMIT finished(id, result);
+                if (self)
+                    complete(id, result);
+            });
         },
         Qt::DirectConnection);
     connect(
@@ -97,6 +128,11 @@ Session::~Session()
         m_thread.wait();
     }
     CrossThreadCall::threadEnded(m_shared.get());
+    // Results that did not come are not signalled, and their completions are dropped the same way.
+    const std::lock_guard locker(m_completions->mutex);
+    for (const auto &pending : std::as_const(m_completions->pending))
+        QObject::disconnect(pending->watch);
+    m_completions->pending.clear();
 }
 
 void Session::open()
@@ -127,37 +163,113 @@ int Session::closeDrainMs() const
 
 quint64 Session::submit(const Request &request, Priority priority, RequestOptions options)
 {
+    return submit(request, nullptr, {}, priority, options);
+}
+
+quint64 Session::submit(const Request &request, QObject *context, Completion completion,
+                        Priority priority, RequestOptions options)
+{
     SessionJob job;
-    job.id = m_nextId.fetch_add(1);
     job.request = request;
     job.priority = priority;
     job.options = options;
-    const quint64 id = job.id;
-    CrossThreadCall::post(m_worker, [worker = m_worker, job = std::move(job)]() mutable {
-        worker->enqueue(std::move(job));
-    });
-    return id;
+    return enqueue(job, context, std::move(completion));
 }
 
 quint64 Session::sendRaw(const QByteArray &bytes, bool addFraming, RequestOptions options)
 {
+    return sendRaw(bytes, addFraming, nullptr, {}, options);
+}
+
+quint64 Session::sendRaw(const QByteArray &bytes, bool addFraming, QObject *context,
+                         Completion completion, RequestOptions options)
+{
     SessionJob job;
-    job.id = m_nextId.fetch_add(1);
     job.raw = true;
     job.rawBytes = bytes;
     job.addFraming = addFraming;
     job.priority = Priority::User;
     job.options = options;
+    return enqueue(job, context, std::move(completion));
+}
+
+quint64 Session::enqueue(SessionJob &job, QObject *context, Completion completion)
+{
+    job.id = m_nextId.fetch_add(1);
     const quint64 id = job.id;
+    if (context && completion) {
+        // Registered before the job leaves: its result may come back before this returns.
+        auto pending = std::make_shared<PendingCompletion>();
+        pending->context = context;
+        pending->function = std::move(completion);
+        pending->watch = connect(
+            context, &QObject::destroyed, context,
+            [weak = std::weak_ptr<PendingCompletion>(pending)] {
+                if (const auto alive = weak.lock()) {
+                    const std::lock_guard locker(alive->mutex);
+                    alive->context = nullptr;
+                }
+            },
+            Qt::DirectConnection);
+        const std::lock_guard locker(m_completions->mutex);
+        m_completions->pending.insert(id, std::move(pending));
+    }
     CrossThreadCall::post(m_worker, [worker = m_worker, job = std::move(job)]() mutable {
         worker->enqueue(std::move(job));
     });
     return id;
 }
 
+void Session::complete(quint64 id, const SessionResult &result)
+{
+    std::shared_ptr<PendingCompletion> pending;
+    {
+        const std::lock_guard locker(m_completions->mutex);
+        pending = m_completions->pending.take(id);
+    }
+    if (!pending)
+        return;
+    std::unique_lock locker(pending->mutex);
+    QObject *context = pending->context;
+    if (context && context->thread() != QThread::currentThread()) {
+        // Posted under the lock: the context cannot finish dying until the call is queued, and
+        // Qt drops a queued call with its receiver.
+        CrossThreadCall::invoke(
+            context, [function = std::move(pending->function), result] { function(result); });
+        context = nullptr;
+    }
+    locker.unlock();
+    QObject::disconnect(pending->watch);
+    // Same thread: nothing else can destroy the context before the call (the call itself may).
+    if (context)
+        pending->function(result);
+}
+
 void Session::cancel(quint64 id)
 {
     CrossThreadCall::post(m_worker, [worker = m_worker, id] { worker->cancel(id); });
+}
+
+void Session::cancelAll(const QObject *context)
+{
+    if (!context)
+        return;
+    QList<quint64> ids;
+    {
+        const std::lock_guard locker(m_completions->mutex);
+        for (auto it = m_completions->pending.cbegin(); it != m_completions->pending.cend(); ++it) {
+            // A destroyed context's slot reads null: a new object at its address is not it.
+            const std::lock_guard contextLocker(it.value()->mutex);
+            if (it.value()->context == context)
+                ids.append(it.key());
+        }
+    }
+    if (ids.isEmpty())
+        return;
+    CrossThreadCall::post(m_worker, [worker = m_worker, ids] {
+        for (const quint64 id : ids)
+            worker->cancel(id);
+    });
 }
 
 void Session::setReadOnly(bool readOnly)

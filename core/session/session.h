@@ -12,22 +12,28 @@
 #include <QThread>
 
 #include <atomic>
+#include <functional>
 #include <memory>
 
 namespace Fatek {
 
 class SessionWorker;
+struct SessionCompletions;
+struct SessionJob;
 struct SessionShared;
 
 // One link (one transport, one protocol) serving one or several stations. The Session object
 // lives in the caller's thread; the I/O runs on a worker QThread it owns. Every public function
 // is thread-safe and returns at once; each submitted request gets exactly one finished() with its
-// id.
+// id, and, if it was submitted with a completion, one call of that completion.
 class Session : public QObject
 {
     Q_OBJECT
 
 public:
+    // What a request submitted with a context object is answered with (see submit()).
+    using Completion = std::function<void(const SessionResult &result)>;
+
     explicit Session(const LinkSettings &settings, QObject *parent = nullptr);
     // Closes like close(CloseMode::Drain) (blocking at most closeDrainMs() and a little more),
     // then stops the worker thread; results that come meanwhile are not signalled.
@@ -53,11 +59,21 @@ public:
     // (and not connecting) finish at once with ErrorKind::LinkError.
     quint64 submit(const Request &request, Priority priority = Priority::User,
                    RequestOptions options = {});
+    // The same, and `completion` is called once with the result on `context`'s thread, right after
+    // finished() (queued there if `context` lives in another thread): on success and on every
+    // error, cancel and close included. It is dropped, never called, if `context` is destroyed
+    // first, or if this Session is destroyed before the result comes (as finished() is).
+    quint64 submit(const Request &request, QObject *context, Completion completion,
+                   Priority priority = Priority::User, RequestOptions options = {});
     // Raw console: sends `bytes` as typed (or wrapped in the protocol's framing and checksum when
     // addFraming is set) and returns whatever comes back within the timeout.
     quint64 sendRaw(const QByteArray &bytes, bool addFraming, RequestOptions options = {});
+    quint64 sendRaw(const QByteArray &bytes, bool addFraming, QObject *context,
+                    Completion completion, RequestOptions options = {});
     // Drops a queued request (finished() with Cancelled); a request already on the wire completes.
     void cancel(quint64 id);
+    // cancel() for every request submitted with `context` and not finished yet.
+    void cancelAll(const QObject *context);
 
     // Operator mode: write commands and raw frames are refused (ErrorKind::ReadOnly) before the
     // wire.
@@ -91,12 +107,17 @@ Q_SIGNALS:
     void values(const QList<Fatek::WatchValue> &values);
 
 private:
+    quint64 enqueue(SessionJob &job, QObject *context, Completion completion);
+    // On this object's thread, after finished(id).
+    void complete(quint64 id, const SessionResult &result);
+
     LinkSettings m_settings;
     std::shared_ptr<SessionShared> m_shared;
     TrafficLog *m_log;
     QThread m_thread;
     SessionWorker *m_worker;
     std::atomic<quint64> m_nextId{1};
+    std::unique_ptr<SessionCompletions> m_completions;
 };
 
 void registerSessionMetaTypes();

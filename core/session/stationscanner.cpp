@@ -1,5 +1,6 @@
 #include "stationscanner.h"
 
+#include "requesttracker.h"
 #include "session.h"
 
 #include <algorithm>
@@ -8,20 +9,25 @@ namespace Fatek {
 
 StationScanner::StationScanner(Session *session, QObject *parent)
     : QObject(parent)
-    , m_session(session)
+    , m_requests(new RequestTracker(this))
 {
-    connect(m_session, &Session::finished, this, &StationScanner::onFinished);
+    m_requests->setSession(session);
 }
 
 StationScanner::~StationScanner()
 {
-    dropPending();
+    m_requests->cancelPending();
+}
+
+bool StationScanner::isRunning() const
+{
+    return m_requests->pendingCount() > 0;
 }
 
 void StationScanner::start(int first, int last, int timeoutMs)
 {
     cancel();
-    if (!m_session)
+    if (!m_requests->session())
         return;
     first = std::clamp(first, 1, static_cast<int>(Limits::maxStation));
     last = std::clamp(last, 1, static_cast<int>(Limits::maxStation));
@@ -37,37 +43,24 @@ void StationScanner::start(int first, int last, int timeoutMs)
     // actions still go first.
     for (int station = first; station <= last; ++station) {
         const auto s = static_cast<quint8>(station);
-        m_pending.insert(m_session->submit(Request::briefStatus(s), Priority::Background, options),
-                         s);
+        m_requests->submit(
+            Request::briefStatus(s), [this, s](const SessionResult &r) { onAnswer(s, r); }, options,
+            Priority::Background);
     }
     Q_EMIT progress(0, m_total);
 }
 
-void StationScanner::dropPending()
-{
-    if (m_session) {
-        for (auto it = m_pending.cbegin(); it != m_pending.cend(); ++it)
-            m_session->cancel(it.key());
-    }
-    // Late results of this scan are ignored from now on.
-    m_pending.clear();
-}
-
 void StationScanner::cancel()
 {
-    if (m_pending.isEmpty())
+    if (!isRunning())
         return;
-    dropPending();
+    // Late results of this scan are ignored from now on.
+    m_requests->cancelPending();
     Q_EMIT finished(m_hits);
 }
 
-void StationScanner::onFinished(quint64 id, const SessionResult &result)
+void StationScanner::onAnswer(quint8 station, const SessionResult &result)
 {
-    auto it = m_pending.find(id);
-    if (it == m_pending.end())
-        return;
-    const quint8 station = it.value();
-    m_pending.erase(it);
     ++m_done;
     // A PLC error is an answer: something lives at that station.
     const bool answered = result.ok() || result.errorKind() == ErrorKind::PlcError;
@@ -87,7 +80,7 @@ void StationScanner::onFinished(quint64 id, const SessionResult &result)
         Q_EMIT stationFound(hit);
     }
     Q_EMIT progress(m_done, m_total);
-    if (m_pending.isEmpty())
+    if (!isRunning())
         Q_EMIT finished(m_hits);
 }
 

@@ -5,11 +5,10 @@
 
 #include <QList>
 #include <QObject>
-#include <QPointer>
-#include <QSet>
 
 namespace Fatek {
 
+class RequestTracker;
 class Session;
 
 // Finds the PLCs on a link (typically an RS-485 bus): asks each station of a range for its brief
@@ -33,7 +32,7 @@ public:
     // Starts a scan of first..last (clamped to 1..254); a running scan is cancelled first.
     void start(int first = 1, int last = 254, int timeoutMs = 100);
     void cancel();
-    bool isRunning() const { return !m_pending.isEmpty(); }
+    bool isRunning() const;
     QList<Hit> hits() const { return m_hits; }
 
 Q_SIGNALS:
@@ -43,11 +42,9 @@ Q_SIGNALS:
     void finished(const QList<Fatek::StationScanner::Hit> &hits);
 
 private:
-    void onFinished(quint64 id, const SessionResult &result);
-    void dropPending();
+    void onAnswer(quint8 station, const SessionResult &result);
 
-    QPointer<Session> m_session;      // the scanner may outlive it
-    QHash<quint64, quint8> m_pending; // request id -> station
+    RequestTracker *m_requests; // the scanner may outlive the session
     QList<Hit> m_hits;
     int m_total = 0;
     int m_done = 0;

@@ -5,6 +5,7 @@
 #include "forcedmarks.h"
 #include "itemvalues.h"
 #include "messageline.h"
+#include "requesttracker.h"
 #include "toolconfirmation.h"
 #include "watchdelegate.h"
 #include "watchinput.h"
@@ -38,6 +39,7 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     , m_model(new WatchTableModel(this))
     , m_view(new WatchTableView(this))
     , m_forcedMarks(new ForcedMarks(m_model, this))
+    , m_writes(new RequestTracker(this))
 {
     m_addEdit = new QLineEdit(this);
     m_addEdit->setObjectName(QStringLiteral("addressEdit"));
@@ -216,9 +218,8 @@ void WatchTableWidget::setConnection(Connection *connection)
     if (m_connection) {
         m_connection->setPollEntries(this, {});
         disconnect(m_connection, nullptr, m_model, nullptr);
-        disconnect(m_connection->session(), nullptr, this, nullptr);
     }
-    m_pendingWrites.clear();
+    m_writes->setSession(connection ? connection->session() : nullptr);
     m_connection = connection;
     if (connection) {
         // A paused table is frozen: a cycle already under way when it paused must not update it.
@@ -238,7 +239,6 @@ void WatchTableWidget::setConnection(Connection *connection)
                             : tr("link %1: %2")
                                   .arg(CoreText::linkState(state), CoreText::message(reason)));
                 });
-        connect(connection->session(), &Session::finished, this, &WatchTableWidget::onFinished);
         connect(connection, &Connection::changed, m_model,
                 [this] { m_model->setSilentStations(m_connection->silentStations()); });
         m_model->setSilentStations(connection->silentStations());
@@ -415,23 +415,20 @@ void WatchTableWidget::write(int row, quint64 raw)
             return;
         }
     }
-    const quint64 id = m_connection->session()->submit(ItemValues(item).writeRequest(raw));
-    m_pendingWrites.insert(id, {m_model->rowKey(row), what});
+    m_writes->submit(ItemValues(item).writeRequest(raw),
+                     [this, rowKey = m_model->rowKey(row), what](const SessionResult &result) {
+                         onWritten(rowKey, what, result);
+                     });
     showMessage(tr("Writing %1 …").arg(what), false);
 }
 
-void WatchTableWidget::onFinished(quint64 id, const SessionResult &result)
+void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const SessionResult &result)
 {
-    const auto it = m_pendingWrites.constFind(id);
-    if (it == m_pendingWrites.cend())
-        return;
-    const PendingWrite pending = it.value();
-    m_pendingWrites.erase(it);
-    const QString outcome = result.ok()
-                                ? tr("Wrote %1.").arg(pending.what)
-                                : tr("Write of %1 failed: %2")
-                                      .arg(pending.what, CoreText::message(result.errorText()));
-    const int row = m_model->rowOfKey(pending.rowKey);
+    const QString outcome
+        = result.ok()
+              ? tr("Wrote %1.").arg(what)
+              : tr("Write of %1 failed: %2").arg(what, CoreText::message(result.errorText()));
+    const int row = m_model->rowOfKey(rowKey);
     if (row >= 0)
         m_model->setWriteOutcome(
             row,

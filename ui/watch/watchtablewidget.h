@@ -82,7 +82,7 @@ private:
     void showMessage(const QString &text, bool error);
     void pushPollList();
     void refreshConnections();
-    void onFinished(quint64 id, const SessionResult &result);
+    void onWritten(quint64 rowKey, const QString &what, const SessionResult &result);
     void removeSelected();
     void writeDialog();
     void toggleSwapWords();
@@ -102,12 +102,8 @@ private:
     QAction *m_swapAction;
     ConfirmHandler m_confirm;
     ForcedMarks *m_forcedMarks;
-    struct PendingWrite
-    {
-        quint64 rowKey;
-        QString what;
-    };
-    QHash<quint64, PendingWrite> m_pendingWrites;
+    // The table's writes; an outcome counts only while the table uses the connection written to.
+    class RequestTracker *m_writes;
 };
 
 } // namespace Fatek

@@ -6,7 +6,8 @@
 
 namespace Fatek {
 
-// Tally of a loopback test: outcomes and round-trip times (min / mean / max / p99).
+// Tally of a loopback test: outcomes and round-trip times (min / mean / max / p99). One tally for
+// the GUI's loopback dialog and `fatek-cli loopback`, so both count a series the same way.
 class LoopbackStats
 {
 public:
