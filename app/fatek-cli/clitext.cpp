@@ -1,0 +1,56 @@
+#include "clitext.h"
+
+#include "frametext.h"
+
+#include <span>
+
+namespace Fatek::CliText {
+
+std::span<const std::uint8_t> bytesOf(const QByteArray &bytes)
+{
+    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
+            static_cast<std::size_t>(bytes.size())};
+}
+
+QString hexBytes(const Bytes &bytes)
+{
+    return QString::fromStdString(FrameText::toHex(bytes));
+}
+
+QString hexBytes(const QByteArray &bytes)
+{
+    return QString::fromStdString(FrameText::toHex(bytesOf(bytes)));
+}
+
+QString asciiView(const QByteArray &bytes)
+{
+    return QString::fromStdString(FrameText::toAscii(bytesOf(bytes), FrameText::Controls::Hex));
+}
+
+QString addressText(const Address &address)
+{
+    return QString::fromStdString(address.toString());
+}
+
+QString valueHex(std::uint32_t value, const Address &address)
+{
+    if (isDiscrete(address.type))
+        return {};
+    const int digits = isDoubleWord(address.type) ? 8 : 4;
+    return QStringLiteral("0x%1")
+        .arg(value, digits, 16, QLatin1Char('0'))
+        .toUpper()
+        .replace(QLatin1String("0X"), QLatin1String("0x"));
+}
+
+QString yesNo(bool b)
+{
+    return b ? QStringLiteral("yes") : QStringLiteral("no");
+}
+
+QString ms(double v)
+{
+    return QString::number(v, 'f', 2);
+}
+
+} // namespace Fatek::CliText

@@ -1,0 +1,28 @@
+#pragma once
+
+// Text helpers shared by the fatek-cli commands.
+
+#include "address.h"
+#include "request.h"
+
+#include <QByteArray>
+#include <QString>
+
+#include <cstdint>
+#include <span>
+
+namespace Fatek::CliText {
+
+std::span<const std::uint8_t> bytesOf(const QByteArray &bytes);
+QString hexBytes(const Bytes &bytes);
+QString hexBytes(const QByteArray &bytes);
+// Printable view of an answer: control characters as <02>, <03> ... (typed back, raw reads them).
+QString asciiView(const QByteArray &bytes);
+QString addressText(const Address &address);
+// "0x000A" in the element's width; empty for a discrete.
+QString valueHex(std::uint32_t value, const Address &address);
+QString yesNo(bool b);
+// Milliseconds with two decimals.
+QString ms(double v);
+
+} // namespace Fatek::CliText
