@@ -3,6 +3,7 @@
 
 #include "clitext.h"
 #include "plcstatus.h"
+#include "qtbytes.h"
 
 #include <cmath>
 
@@ -74,9 +75,7 @@ void CliRunner::loopbackNext()
             } else {
                 m_loopStats.add(LoopbackStats::Outcome::Mismatch, rttMs);
                 m_loopLastError = QStringLiteral("echo \"%1\" differs from what was sent")
-                                      .arg(QString::fromLatin1(
-                                          reinterpret_cast<const char *>(r.response().data.data()),
-                                          static_cast<qsizetype>(r.response().data.size())));
+                                      .arg(QString::fromLatin1(toQByteArray(r.response().data)));
             }
         } else if (r.errorKind() == ErrorKind::Timeout) {
             m_loopStats.add(LoopbackStats::Outcome::Timeout);

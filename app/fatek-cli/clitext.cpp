@@ -1,16 +1,11 @@
 #include "clitext.h"
 
 #include "frametext.h"
+#include "qtbytes.h"
 
 #include <span>
 
 namespace Fatek::CliText {
-
-std::span<const std::uint8_t> bytesOf(const QByteArray &bytes)
-{
-    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
-            static_cast<std::size_t>(bytes.size())};
-}
 
 QString hexBytes(const Bytes &bytes)
 {

@@ -13,7 +13,6 @@
 
 namespace Fatek::CliText {
 
-std::span<const std::uint8_t> bytesOf(const QByteArray &bytes);
 QString hexBytes(const Bytes &bytes);
 QString hexBytes(const QByteArray &bytes);
 // Printable view of an answer: control characters as <02>, <03> ... (typed back, raw reads them).

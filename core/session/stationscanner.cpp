@@ -1,5 +1,6 @@
 #include "stationscanner.h"
 
+#include "qtbytes.h"
 #include "requesttracker.h"
 #include "session.h"
 
@@ -69,8 +70,7 @@ void StationScanner::onAnswer(quint8 station, const SessionResult &result)
         hit.station = station;
         if (result.ok()) {
             const Bytes &data = result.response().data;
-            hit.statusBytes = QByteArray(reinterpret_cast<const char *>(data.data()),
-                                         static_cast<qsizetype>(data.size()));
+            hit.statusBytes = toQByteArray(data);
             if (!data.empty())
                 hit.status = PlcStatus::fromStatus1(data.front());
         }

@@ -2,6 +2,7 @@
 
 #include "coretext.h"
 #include "frametext.h"
+#include "qtbytes.h"
 #include "rawframe.h"
 #include "requesttracker.h"
 #include "session.h"
@@ -18,17 +19,6 @@
 namespace Fatek {
 
 namespace {
-
-std::span<const std::uint8_t> bytesOf(const QByteArray &a)
-{
-    return {reinterpret_cast<const std::uint8_t *>(a.constData()),
-            static_cast<std::size_t>(a.size())};
-}
-
-QByteArray fromBytes(const Bytes &b)
-{
-    return QByteArray(reinterpret_cast<const char *>(b.data()), static_cast<qsizetype>(b.size()));
-}
 
 QString asciiOf(const QByteArray &a)
 {
@@ -156,7 +146,7 @@ void RawSendBar::send()
     // the frame shown and confirmed is the frame sent.
     const Protocol protocol = framingIsFacon() ? Protocol::Facon : Protocol::Binary;
     const QByteArray frame
-        = fromBytes(RawFrame::frame(*typed, framing ? std::optional(protocol) : std::nullopt));
+        = toQByteArray(RawFrame::frame(*typed, framing ? std::optional(protocol) : std::nullopt));
     // A raw frame can do anything: ask unless it is clearly a command that only reads.
     const auto header = RawFrame::peek(bytesOf(frame));
     const bool harmless = header && isKnownCommand(header->command)
@@ -193,8 +183,8 @@ void RawSendBar::send()
     if (framing)
         options.framing = protocol;
     m_requests->sendRaw(
-        fromBytes(*typed), framing, [this, frame](const SessionResult &r) { onAnswer(frame, r); },
-        options);
+        toQByteArray(*typed), framing,
+        [this, frame](const SessionResult &r) { onAnswer(frame, r); }, options);
 }
 
 void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)

@@ -2,6 +2,7 @@
 
 #include "coretext.h"
 #include "frametext.h"
+#include "qtbytes.h"
 #include "toolpalette.h"
 
 #include <QFontDatabase>
@@ -48,8 +49,7 @@ void TrafficLogModel::append(const QList<TrafficEntry> &entries)
     beginInsertRows({}, first, first + static_cast<int>(incoming) - 1);
     for (qsizetype i = skip; i < entries.size(); ++i) {
         const TrafficEntry &e = entries.at(i);
-        const auto bytes = std::span(reinterpret_cast<const std::uint8_t *>(e.bytes.constData()),
-                                     static_cast<std::size_t>(e.bytes.size()));
+        const std::span<const std::uint8_t> bytes = bytesOf(e.bytes);
         m_rows.push_back(Row{e, RawFrame::peek(bytes),
                              e.timestamp.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz")),
                              QString::fromStdString(FrameText::toHex(bytes)),

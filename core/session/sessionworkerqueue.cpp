@@ -1,0 +1,261 @@
+// SessionWorker, the queue: priorities, cancelling, choosing and preparing the next job.
+#include "sessionworker.h"
+
+#include "binarycodec.h"
+#include "binarydeframer.h"
+#include "crossthreadcall.h"
+#include "faconcodec.h"
+#include "facondeframer.h"
+#include "qtbytes.h"
+#include "rawframe.h"
+#include "trafficlog.h"
+#include "transport.h"
+
+#include <algorithm>
+
+namespace Fatek {
+
+// ---- queue ------------------------------------------------------------------------------------
+
+std::deque<SessionJob> &SessionWorker::queueFor(Priority priority)
+{
+    switch (priority) {
+    case Priority::User: return m_userQueue;
+    case Priority::Background: return m_backgroundQueue;
+    case Priority::Poll: return m_pollQueue;
+    }
+    return m_userQueue;
+}
+
+void SessionWorker::enqueue(SessionJob job)
+{
+    // Operator mode: refuse before anything can reach the wire (checked again when sent, in
+    // case the mode changed while the job waited).
+    if (m_shared->readOnly.load() && (job.raw || isWriteCommand(job.request.command))) {
+        const QString what = job.raw ? QStringLiteral("raw frame")
+                                     : QString::fromStdString(job.request.describe());
+        deliver(job, SessionResult::fromError(
+                         makeError(ErrorKind::ReadOnly,
+                                   (QStringLiteral("Read-only mode: \"%1\" was not sent. "
+                                                   "Leave operator mode to change the PLC.")
+                                        .arg(what))
+                                       .toStdString()),
+                         {}, job.raw));
+        return;
+    }
+    if (m_closing) {
+        deliver(job, SessionResult::fromError(
+                         makeError(ErrorKind::LinkError, "Not sent: the link is closing."), {},
+                         job.raw));
+        return;
+    }
+    if (m_state != LinkState::Connected && m_state != LinkState::Connecting) {
+        const QString why
+            = m_state == LinkState::Closed
+                  ? QStringLiteral("the link is not open")
+                  : QStringLiteral("the link is down (%1)").arg(linkStateName(m_state));
+        deliver(job, SessionResult::fromError(
+                         makeError(ErrorKind::LinkError,
+                                   (QStringLiteral("Not sent: %1.").arg(why)).toStdString()),
+                         {}, job.raw));
+        return;
+    }
+    std::deque<SessionJob> &queue = queueFor(job.priority);
+    // A caller that submits faster than the link answers must not grow memory without end. The
+    // poll queue holds at most one cycle per group and is not capped here.
+    if (job.priority != Priority::Poll && queue.size() >= maxQueuedRequests) {
+        deliver(job, SessionResult::fromError(
+                         makeError(ErrorKind::LimitExceeded,
+                                   (QStringLiteral("Not sent: %1 requests are already "
+                                                   "waiting on this link (the PLC answers "
+                                                   "slower than requests arrive).")
+                                        .arg(maxQueuedRequests))
+                                       .toStdString()),
+                         {}, job.raw));
+        return;
+    }
+    if (!job.pendingWrite && isWriteJob(job)) {
+        job.pendingWrite = true;
+        m_shared->pendingWrites.fetch_add(1);
+    }
+    queue.push_back(std::move(job));
+    schedulePump();
+}
+
+bool SessionWorker::isWriteJob(const SessionJob &job)
+{
+    return !job.probe && (job.raw || isWriteCommand(job.request.command));
+}
+
+void SessionWorker::cancel(quint64 id)
+{
+    for (auto *queue : {&m_userQueue, &m_backgroundQueue, &m_pollQueue}) {
+        auto it = std::find_if(queue->begin(), queue->end(),
+                               [id](const SessionJob &job) { return job.id == id; });
+        if (it != queue->end()) {
+            SessionJob job = std::move(*it);
+            queue->erase(it);
+            deliver(job, SessionResult::fromError(
+                             makeError(ErrorKind::Cancelled, "Cancelled before it was sent."), {},
+                             job.raw));
+            return;
+        }
+    }
+}
+
+bool SessionWorker::takeNext(SessionJob &job)
+{
+    for (auto *queue : {&m_userQueue, &m_backgroundQueue, &m_pollQueue}) {
+        if (!queue->empty()) {
+            job = std::move(queue->front());
+            queue->pop_front();
+            return true;
+        }
+    }
+    return false;
+}
+
+void SessionWorker::failAll(ErrorKind kind, const QString &reason, bool includePolls)
+{
+    std::vector<SessionJob> jobs;
+    if (m_current) {
+        jobs.push_back(std::move(*m_current));
+        m_current.reset();
+    }
+    for (auto *queue : {&m_userQueue, &m_backgroundQueue, &m_pollQueue}) {
+        if (queue == &m_pollQueue && !includePolls)
+            continue;
+        for (auto &job : *queue)
+            jobs.push_back(std::move(job));
+        queue->clear();
+    }
+    for (auto &job : jobs)
+        deliver(job, SessionResult::fromError(makeError(kind, reason.toStdString()), {}, job.raw));
+}
+
+void SessionWorker::schedulePump()
+{
+    if (m_pumpScheduled)
+        return;
+    m_pumpScheduled = true;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_pumpScheduled = false;
+            pump();
+        },
+        Qt::QueuedConnection);
+}
+
+void SessionWorker::pump()
+{
+    while (!m_current && m_state == LinkState::Connected) {
+        SessionJob job;
+        if (!takeNext(job)) {
+            checkDrained();
+            return;
+        }
+        if (m_closing && !isWriteJob(job) && !job.probe) {
+            // A read that waited for a protocol probe while the link began to close.
+            deliver(job,
+                    SessionResult::fromError(
+                        makeError(ErrorKind::Cancelled, "the session was closed"), {}, job.raw));
+            continue;
+        }
+        if (prepare(job)) {
+            m_current = std::move(job);
+            proceed();
+        }
+    }
+}
+
+bool SessionWorker::prepare(SessionJob &job)
+{
+    if (m_shared->readOnly.load() && (job.raw || isWriteCommand(job.request.command))) {
+        enqueue(std::move(job)); // refuses it with the read-only message
+        return false;
+    }
+    // A raw frame goes as typed, or in the framing the caller chose: it needs no protocol.
+    const bool needsProtocol = !job.raw || (job.addFraming && !job.options.framing);
+    if (!m_protocol && !job.probe && needsProtocol) {
+        // Auto-detect: ask the job's station for its status in FACON, then binary.
+        const quint8 station = stationOf(job) == 0 ? 1 : stationOf(job);
+        auto waiting = std::make_shared<SessionJob>(std::move(job));
+        using ProbeFn = std::function<void(Protocol)>;
+        auto probeIn = std::make_shared<ProbeFn>();
+        // The probe callback holds the function strongly, the function itself weakly: no cycle.
+        std::weak_ptr<ProbeFn> weakProbeIn = probeIn;
+        *probeIn = [this, station, waiting, weakProbeIn](Protocol protocol) {
+            SessionJob probe;
+            probe.request = Request::briefStatus(station);
+            probe.probe = protocol;
+            probe.options.retries = 0;
+            probe.done = [this, station, waiting, next = weakProbeIn.lock(),
+                          protocol](const SessionResult &result) {
+                // A PLC error is an answer too: the protocol is right.
+                const bool answered = result.ok() || result.errorKind() == ErrorKind::PlcError;
+                const bool linkDown = !result.ok()
+                                      && (result.errorKind() == ErrorKind::LinkError
+                                          || result.errorKind() == ErrorKind::Cancelled);
+                if (answered) {
+                    setProtocol(protocol);
+                    m_log->append(TrafficEntry::Direction::Event, {},
+                                  QStringLiteral("protocol detected: %1")
+                                      .arg(QString::fromUtf8(protocolName(protocol))));
+                    Q_EMIT protocolDetected(protocol);
+                    queueFor(waiting->priority).push_front(std::move(*waiting));
+                    schedulePump();
+                } else if (protocol == Protocol::Facon && !linkDown) {
+                    (*next)(Protocol::Binary);
+                } else {
+                    const ErrorKind kind = linkDown ? result.errorKind() : ErrorKind::Timeout;
+                    deliver(*waiting,
+                            SessionResult::fromError(
+                                makeError(kind, (QStringLiteral(
+                                                     "Protocol auto-detect: station %1 answered "
+                                                     "neither in FACON nor in binary (%2)")
+                                                     .arg(station)
+                                                     .arg(result.errorText()))
+                                                    .toStdString()),
+                                {}, waiting->raw));
+                }
+            };
+            m_userQueue.push_front(std::move(probe));
+            schedulePump();
+        };
+        (*probeIn)(Protocol::Facon);
+        return false;
+    }
+    if (!job.raw) {
+        const Protocol protocol = job.probe ? *job.probe : *m_protocol;
+        const Status valid = validateRequest(job.request, protocol);
+        if (!valid) {
+            deliver(job, SessionResult::fromError(valid.error()));
+            return false;
+        }
+    }
+    return true;
+}
+
+int SessionWorker::timeoutFor(const SessionJob &job) const
+{
+    return job.options.timeoutMs > 0 ? job.options.timeoutMs : m_settings.timeoutMs;
+}
+
+int SessionWorker::retriesFor(const SessionJob &job) const
+{
+    if (job.raw)
+        return 0; // a console frame is sent once, as typed
+    return job.options.retries >= 0 ? job.options.retries : m_settings.retries;
+}
+
+quint8 SessionWorker::stationOf(const SessionJob &job) const
+{
+    if (job.raw)
+        return job.options.station > 0 && job.options.station <= Limits::maxStation
+                   ? static_cast<quint8>(job.options.station)
+                   : quint8(0);
+    return job.request.station;
+}
+
+} // namespace Fatek
