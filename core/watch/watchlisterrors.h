@@ -1,0 +1,28 @@
+#pragma once
+
+// How watch list errors read, shared by validation (watchlist.cpp), the JSON file
+// (watchlistjson.cpp) and the CSV import (watchlistcsv.cpp): every message names its place
+// ("table 2, item 5: ...", "line 7: ...").
+
+#include "result.h"
+
+#include <QString>
+
+namespace Fatek::WatchList::Errors {
+
+ProtocolError fileError(const QString &message);
+// "Invalid address ..." becomes "invalid address ..." after "table 2, item 5: ". Acronyms ("BCD
+// ...") keep their case.
+QString lowerFirst(const QString &text);
+ProtocolError atPlace(const QString &place, const ProtocolError &error);
+
+// The display format names, for "unknown format" messages.
+QString knownFormats();
+ProtocolError tooManyItems(qsizetype count);
+
+// Places count from 1; table and item are indices.
+QString tablePlace(qsizetype table);
+QString itemPlace(qsizetype table, qsizetype item);
+QString linePlace(int line);
+
+} // namespace Fatek::WatchList::Errors

@@ -1,0 +1,266 @@
+#include "watchlist.h"
+
+// The watch list file: versioned JSON, read and written.
+
+#include "watchlisterrors.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+#include <QSaveFile>
+
+#include <cmath>
+
+namespace Fatek::WatchList {
+
+using namespace Errors;
+
+namespace {
+
+Result<QString> textMember(const QJsonObject &object, const QString &key, const QString &fallback)
+{
+    const QJsonValue value = object.value(key);
+    if (value.isUndefined())
+        return fallback;
+    if (!value.isString())
+        return fileError(QStringLiteral("\"%1\" must be text").arg(key));
+    return value.toString();
+}
+
+Result<bool> boolMember(const QJsonObject &object, const QString &key, bool fallback)
+{
+    const QJsonValue value = object.value(key);
+    if (value.isUndefined())
+        return fallback;
+    if (!value.isBool())
+        return fileError(QStringLiteral("\"%1\" must be true or false").arg(key));
+    return value.toBool();
+}
+
+Result<int> intMember(const QJsonObject &object, const QString &key, int fallback, int min, int max)
+{
+    const QJsonValue value = object.value(key);
+    if (value.isUndefined())
+        return fallback;
+    const double number = value.toDouble();
+    if (!value.isDouble() || std::floor(number) != number || number < min || number > max) {
+        return fileError(QStringLiteral("\"%1\" must be a whole number from %2 to %3")
+                             .arg(key)
+                             .arg(min)
+                             .arg(max));
+    }
+    return static_cast<int>(number);
+}
+
+Result<WatchItemSpec> entryFromJson(const QJsonValue &value)
+{
+    if (!value.isObject())
+        return fileError(QStringLiteral("an item must be a JSON object"));
+    const QJsonObject object = value.toObject();
+
+    WatchItemSpec entry;
+    const QJsonValue address = object.value(QStringLiteral("address"));
+    if (address.isUndefined())
+        return fileError(QStringLiteral("the \"address\" is missing"));
+    if (!address.isString())
+        return fileError(QStringLiteral("\"address\" must be text such as \"R100\""));
+    const auto parsed = Address::parse(address.toString().toStdString());
+    if (!parsed)
+        return parsed.error();
+    entry.address = *parsed;
+
+    const auto station = intMember(object, QStringLiteral("station"), 1, 1, 254);
+    if (!station)
+        return station.error();
+    entry.station = static_cast<quint8>(*station);
+
+    const auto formatName = textMember(object, QStringLiteral("format"), QString());
+    if (!formatName)
+        return formatName.error();
+    if (formatName->isEmpty()) {
+        entry.format = ValueFormat::defaultFormat(entry.address);
+    } else if (const auto format = ValueFormat::fromName(*formatName)) {
+        entry.format = *format;
+    } else {
+        return fileError(
+            QStringLiteral("unknown format \"%1\" (known: %2)").arg(*formatName, knownFormats()));
+    }
+
+    const auto swap = boolMember(object, QStringLiteral("swapWords"), false);
+    if (!swap)
+        return swap.error();
+    entry.swapWords = *swap;
+
+    const auto name = textMember(object, QStringLiteral("name"), QString());
+    if (!name)
+        return name.error();
+    entry.name = *name;
+    const auto comment = textMember(object, QStringLiteral("comment"), QString());
+    if (!comment)
+        return comment.error();
+    entry.comment = *comment;
+
+    if (Status s = validateEntry(entry); !s)
+        return s.error();
+    return entry;
+}
+
+Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index)
+{
+    const QString place = tablePlace(index);
+    if (!value.isObject())
+        return atPlace(place, fileError(QStringLiteral("a table must be a JSON object")));
+    const QJsonObject object = value.toObject();
+
+    WatchTableSpec table;
+    const auto name
+        = textMember(object, QStringLiteral("name"), QStringLiteral("Table %1").arg(index + 1));
+    if (!name)
+        return atPlace(place, name.error());
+    table.name = *name;
+    const auto interval
+        = intMember(object, QStringLiteral("intervalMs"), 500, MinIntervalMs, MaxIntervalMs);
+    if (!interval)
+        return atPlace(place, interval.error());
+    table.intervalMs = *interval;
+    const auto confirm = boolMember(object, QStringLiteral("confirmWrites"), true);
+    if (!confirm)
+        return atPlace(place, confirm.error());
+    table.confirmWrites = *confirm;
+
+    const QJsonValue items = object.value(QStringLiteral("items"));
+    if (items.isUndefined())
+        return table;
+    if (!items.isArray())
+        return atPlace(place, fileError(QStringLiteral("\"items\" must be a list")));
+    const QJsonArray array = items.toArray();
+    if (array.size() > MaxTableItems)
+        return atPlace(place, tooManyItems(array.size()));
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        auto entry = entryFromJson(array.at(i));
+        if (!entry)
+            return atPlace(itemPlace(index, i), entry.error());
+        table.items.append(std::move(entry).value());
+    }
+    return table;
+}
+
+} // namespace
+
+Result<WatchListFile> load(const QByteArray &json)
+{
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        // Offsets are bytes; lines and columns are what an editor shows.
+        const QByteArray before = json.left(parseError.offset);
+        const qsizetype line = before.count('\n') + 1;
+        const qsizetype column = parseError.offset - (before.lastIndexOf('\n') + 1) + 1;
+        return fileError(QStringLiteral("The file is not valid JSON: %1 at line %2, column %3.")
+                             .arg(parseError.errorString())
+                             .arg(line)
+                             .arg(column));
+    }
+    if (!document.isObject())
+        return fileError(
+            QStringLiteral("The file is not a FATEK Studio watch list: it holds no JSON object."));
+    const QJsonObject root = document.object();
+
+    if (root.value(QStringLiteral("format")).toString() != QLatin1String(FormatMarker)) {
+        return fileError(
+            QStringLiteral("The file is not a FATEK Studio watch list: \"format\" is not \"%1\".")
+                .arg(QLatin1String(FormatMarker)));
+    }
+    const QJsonValue version = root.value(QStringLiteral("version"));
+    const double versionNumber = version.toDouble();
+    if (!version.isDouble() || std::floor(versionNumber) != versionNumber || versionNumber < 1) {
+        return fileError(QStringLiteral("The watch list has no valid \"version\" (expected %1).")
+                             .arg(CurrentVersion));
+    }
+    if (versionNumber > CurrentVersion) {
+        return fileError(
+            QStringLiteral(
+                "The watch list is version %1, written by a newer FATEK Studio; this one "
+                "reads version %2.")
+                .arg(versionNumber)
+                .arg(CurrentVersion));
+    }
+
+    const QJsonValue tables = root.value(QStringLiteral("tables"));
+    if (!tables.isArray())
+        return fileError(QStringLiteral("The watch list has no \"tables\" list."));
+    WatchListFile file;
+    const QJsonArray array = tables.toArray();
+    for (qsizetype t = 0; t < array.size(); ++t) {
+        auto table = tableFromJson(array.at(t), t);
+        if (!table)
+            return table.error();
+        file.tables.append(std::move(table).value());
+    }
+    return file;
+}
+
+Result<WatchListFile> loadFromFile(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return fileError(QStringLiteral("Cannot open %1: %2").arg(path, f.errorString()));
+    auto file = load(f.readAll());
+    if (!file)
+        return atPlace(QFileInfo(path).fileName(), file.error());
+    return file;
+}
+
+QByteArray save(const WatchListFile &file)
+{
+    QJsonArray tables;
+    for (const WatchTableSpec &table : file.tables) {
+        QJsonArray items;
+        for (const WatchItemSpec &entry : table.items) {
+            items.append(QJsonObject{
+                {QStringLiteral("address"), QString::fromStdString(entry.address.toString())},
+                {QStringLiteral("station"), entry.station},
+                {QStringLiteral("format"), ValueFormat::name(entry.format)},
+                {QStringLiteral("swapWords"), entry.swapWords},
+                {QStringLiteral("name"), entry.name},
+                {QStringLiteral("comment"), entry.comment},
+            });
+        }
+        tables.append(QJsonObject{
+            {QStringLiteral("name"), table.name},
+            {QStringLiteral("intervalMs"), table.intervalMs},
+            {QStringLiteral("confirmWrites"), table.confirmWrites},
+            {QStringLiteral("items"), items},
+        });
+    }
+    const QJsonObject root{
+        {QStringLiteral("format"), QLatin1String(FormatMarker)},
+        {QStringLiteral("version"), CurrentVersion},
+        {QStringLiteral("tables"), tables},
+    };
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+Status saveToFile(const WatchListFile &file, const QString &path)
+{
+    // A file that could not be loaded again is not written at all.
+    if (Status s = validate(file); !s)
+        return atPlace(QStringLiteral("Not saved"), s.error());
+    const QByteArray data = save(file);
+    QSaveFile out(path);
+    if (!out.open(QIODevice::WriteOnly))
+        return fileError(QStringLiteral("Cannot write %1: %2").arg(path, out.errorString()));
+    if (out.write(data) != data.size()) {
+        const QString reason = out.errorString();
+        out.cancelWriting();
+        return fileError(QStringLiteral("Cannot write %1: %2").arg(path, reason));
+    }
+    if (!out.commit())
+        return fileError(QStringLiteral("Cannot write %1: %2").arg(path, out.errorString()));
+    return Ok{};
+}
+
+} // namespace Fatek::WatchList
