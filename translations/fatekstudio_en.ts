@@ -1174,6 +1174,36 @@
         </message>
     </context>
     <context>
+        <name>Fatek::LinkStatusLabel</name>
+        <message>
+            <source>No connection</source>
+            <translation>No connection</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message numerus="yes">
+            <source> · %n failed attempt(s)</source>
+            <translation>
+                <numerusform> · %n failed attempt</numerusform>
+                <numerusform> · %n failed attempts</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source> · F5 reconnects now</source>
+            <translation> · F5 reconnects now</translation>
+        </message>
+        <message>
+            <source>%1: %2 · %3 req/s · %4 errors · RTT %5</source>
+            <translation>%1: %2 · %3 req/s · %4 errors · RTT %5</translation>
+        </message>
+        <message>
+            <source>%1 ms</source>
+            <translation>%1 ms</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::LoopbackDialog</name>
         <message>
             <source>Loopback test</source>
@@ -1326,10 +1356,6 @@
             <translation>Connections</translation>
         </message>
         <message>
-            <source>No connection</source>
-            <translation>No connection</translation>
-        </message>
-        <message>
             <source>Operator mode (read-only)</source>
             <translation>Operator mode (read-only)</translation>
         </message>
@@ -1364,22 +1390,6 @@
         <message>
             <source>New &amp;Watch Table</source>
             <translation>New &amp;Watch Table</translation>
-        </message>
-        <message>
-            <source>&amp;Open Watch List…</source>
-            <translation>&amp;Open Watch List…</translation>
-        </message>
-        <message>
-            <source>&amp;Save Watch List…</source>
-            <translation>&amp;Save Watch List…</translation>
-        </message>
-        <message>
-            <source>&amp;Import CSV…</source>
-            <translation>&amp;Import CSV…</translation>
-        </message>
-        <message>
-            <source>Reopen Last Watch List at Start</source>
-            <translation>Reopen Last Watch List at Start</translation>
         </message>
         <message>
             <source>&amp;Quit</source>
@@ -1428,22 +1438,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
 Commissioning and monitoring tool for FATEK PLCs.</translation>
         </message>
         <message>
-            <source>PLC Control</source>
-            <translation>PLC Control</translation>
-        </message>
-        <message>
-            <source>Forcing</source>
-            <translation>Forcing</translation>
-        </message>
-        <message>
-            <source>Raw Console</source>
-            <translation>Raw Console</translation>
-        </message>
-        <message>
-            <source>&amp;Loopback Test…</source>
-            <translation>&amp;Loopback Test…</translation>
-        </message>
-        <message>
             <source>Connecting to %1 (%2)…</source>
             <translation>Connecting to %1 (%2)…</translation>
         </message>
@@ -1464,24 +1458,8 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>Name:</translation>
         </message>
         <message>
-            <source>The last watch list %1 cannot be loaded: %2</source>
-            <translation>The last watch list %1 cannot be loaded: %2</translation>
-        </message>
-        <message>
-            <source>Reopened %1.</source>
-            <translation>Reopened %1.</translation>
-        </message>
-        <message>
-            <source>Cannot open %1: %2</source>
-            <translation>Cannot open %1: %2</translation>
-        </message>
-        <message>
             <source>Open Watch List</source>
             <translation>Open Watch List</translation>
-        </message>
-        <message>
-            <source>Watch lists (*.json);;All files (*)</source>
-            <translation>Watch lists (*.json);;All files (*)</translation>
         </message>
         <message>
             <source>%1 cannot be loaded:
@@ -1492,36 +1470,6 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>Loaded %1.</source>
             <translation>Loaded %1.</translation>
-        </message>
-        <message>
-            <source>Save Watch List</source>
-            <translation>Save Watch List</translation>
-        </message>
-        <message>
-            <source>Watch lists (*.json)</source>
-            <translation>Watch lists (*.json)</translation>
-        </message>
-        <message>
-            <source>Saved %1.</source>
-            <translation>Saved %1.</translation>
-        </message>
-        <message>
-            <source>Import CSV</source>
-            <translation>Import CSV</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv *.txt);;All files (*)</source>
-            <translation>CSV files (*.csv *.txt);;All files (*)</translation>
-        </message>
-        <message>
-            <source>%1 cannot be imported:
-%2</source>
-            <translation>%1 cannot be imported:
-%2</translation>
-        </message>
-        <message>
-            <source>Imported %1.</source>
-            <translation>Imported %1.</translation>
         </message>
         <message>
             <source>The demo simulator could not start: %1</source>
@@ -1538,74 +1486,6 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</source>
             <translation>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</translation>
-        </message>
-        <message>
-            <source>Trend</source>
-            <translation>Trend</translation>
-        </message>
-        <message>
-            <source>&amp;Trend</source>
-            <translation>&amp;Trend</translation>
-        </message>
-        <message>
-            <source>Start &amp;Data Logging…</source>
-            <translation>Start &amp;Data Logging…</translation>
-        </message>
-        <message>
-            <source>Write every value of the current watch table to a CSV file with timestamps</source>
-            <translation>Write every value of the current watch table to a CSV file with timestamps</translation>
-        </message>
-        <message>
-            <source>Sto&amp;p Data Logging</source>
-            <translation>Sto&amp;p Data Logging</translation>
-        </message>
-        <message>
-            <source>Data logging stopped: %1</source>
-            <translation>Data logging stopped: %1</translation>
-        </message>
-        <message>
-            <source>Data Logging</source>
-            <translation>Data Logging</translation>
-        </message>
-        <message>
-            <source>Data logging stopped:
-%1</source>
-            <translation>Data logging stopped:
-%1</translation>
-        </message>
-        <message>
-            <source>No watch table to log.</source>
-            <translation>No watch table to log.</translation>
-        </message>
-        <message>
-            <source>Logging %1 to %2.</source>
-            <translation>Logging %1 to %2.</translation>
-        </message>
-        <message numerus="yes">
-            <source>Logging stopped: %n row(s) in %1.</source>
-            <translation>
-                <numerusform>Logging stopped: %n row in %1.</numerusform>
-                <numerusform>Logging stopped: %n rows in %1.</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>Add items to a watch table first: logging writes the rows of the current table.</source>
-            <translation>Add items to a watch table first: logging writes the rows of the current table.</translation>
-        </message>
-        <message>
-            <source>Log Watch Table to CSV</source>
-            <translation>Log Watch Table to CSV</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV files (*.csv)</translation>
-        </message>
-        <message numerus="yes">
-            <source>Logging to %1 (%n row(s))</source>
-            <translation>
-                <numerusform>Logging to %1 (%n row)</numerusform>
-                <numerusform>Logging to %1 (%n rows)</numerusform>
-            </translation>
         </message>
         <message numerus="yes">
             <source>%n saved connection(s) could not be read (kept unchanged)</source>
@@ -1627,28 +1507,8 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>Try the current connection again at once instead of waiting for the next attempt</translation>
         </message>
         <message>
-            <source>Scan &amp;Stations…</source>
-            <translation>Scan &amp;Stations…</translation>
-        </message>
-        <message>
-            <source>Scan Stations: open a connection first.</source>
-            <translation>Scan Stations: open a connection first.</translation>
-        </message>
-        <message>
-            <source>Find the PLCs that answer on the current connection's link</source>
-            <translation>Find the PLCs that answer on the current connection's link</translation>
-        </message>
-        <message>
             <source>%1 — %2, station %3</source>
             <translation>%1 — %2, station %3</translation>
-        </message>
-        <message>
-            <source>Untitled</source>
-            <translation>Untitled</translation>
-        </message>
-        <message>
-            <source>%1 — Operator mode (read-only)</source>
-            <translation>%1 — Operator mode (read-only)</translation>
         </message>
         <message>
             <source>The watch list %1 has changes that are not saved.</source>
@@ -1677,25 +1537,6 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>Stop Logging and &amp;Quit</source>
             <translation>Stop Logging and &amp;Quit</translation>
-        </message>
-        <message numerus="yes">
-            <source> · %n failed attempt(s)</source>
-            <translation>
-                <numerusform> · %n failed attempt</numerusform>
-                <numerusform> · %n failed attempts</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source> · F5 reconnects now</source>
-            <translation> · F5 reconnects now</translation>
-        </message>
-        <message>
-            <source>%1: %2 · %3 req/s · %4 errors · RTT %5</source>
-            <translation>%1: %2 · %3 req/s · %4 errors · RTT %5</translation>
-        </message>
-        <message>
-            <source>%1 ms</source>
-            <translation>%1 ms</translation>
         </message>
     </context>
     <context>
@@ -2167,6 +2008,37 @@ Meaning %4</translation>
         </message>
     </context>
     <context>
+        <name>Fatek::ToolDocks</name>
+        <message>
+            <source>PLC Control</source>
+            <translation>PLC Control</translation>
+        </message>
+        <message>
+            <source>Forcing</source>
+            <translation>Forcing</translation>
+        </message>
+        <message>
+            <source>Raw Console</source>
+            <translation>Raw Console</translation>
+        </message>
+        <message>
+            <source>&amp;Loopback Test…</source>
+            <translation>&amp;Loopback Test…</translation>
+        </message>
+        <message>
+            <source>Scan &amp;Stations…</source>
+            <translation>Scan &amp;Stations…</translation>
+        </message>
+        <message>
+            <source>Scan Stations: open a connection first.</source>
+            <translation>Scan Stations: open a connection first.</translation>
+        </message>
+        <message>
+            <source>Find the PLCs that answer on the current connection's link</source>
+            <translation>Find the PLCs that answer on the current connection's link</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::TrafficLogModel</name>
         <message>
             <source>sent</source>
@@ -2210,14 +2082,103 @@ Meaning %4</translation>
         </message>
     </context>
     <context>
-        <name>Fatek::TrendView</name>
+        <name>Fatek::TrendChartView</name>
         <message>
-            <source>Time</source>
-            <translation>Time</translation>
+            <source>no value</source>
+            <translation>no value</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendLogging</name>
+        <message>
+            <source>Trend</source>
+            <translation>Trend</translation>
+        </message>
+        <message>
+            <source>&amp;Trend</source>
+            <translation>&amp;Trend</translation>
+        </message>
+        <message>
+            <source>Start &amp;Data Logging…</source>
+            <translation>Start &amp;Data Logging…</translation>
+        </message>
+        <message>
+            <source>Write every value of the current watch table to a CSV file with timestamps</source>
+            <translation>Write every value of the current watch table to a CSV file with timestamps</translation>
+        </message>
+        <message>
+            <source>Sto&amp;p Data Logging</source>
+            <translation>Sto&amp;p Data Logging</translation>
+        </message>
+        <message>
+            <source>Data logging stopped: %1</source>
+            <translation>Data logging stopped: %1</translation>
+        </message>
+        <message>
+            <source>Data Logging</source>
+            <translation>Data Logging</translation>
+        </message>
+        <message>
+            <source>Data logging stopped:
+%1</source>
+            <translation>Data logging stopped:
+%1</translation>
+        </message>
+        <message>
+            <source>No watch table to log.</source>
+            <translation>No watch table to log.</translation>
+        </message>
+        <message>
+            <source>Logging %1 to %2.</source>
+            <translation>Logging %1 to %2.</translation>
+        </message>
+        <message numerus="yes">
+            <source>Logging stopped: %n row(s) in %1.</source>
+            <translation>
+                <numerusform>Logging stopped: %n row in %1.</numerusform>
+                <numerusform>Logging stopped: %n rows in %1.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Add items to a watch table first: logging writes the rows of the current table.</source>
+            <translation>Add items to a watch table first: logging writes the rows of the current table.</translation>
+        </message>
+        <message>
+            <source>Log Watch Table to CSV</source>
+            <translation>Log Watch Table to CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Logging to %1 (%n row(s))</source>
+            <translation>
+                <numerusform>Logging to %1 (%n row)</numerusform>
+                <numerusform>Logging to %1 (%n rows)</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendValueAxes</name>
+        <message>
+            <source>Bits</source>
+            <translation>Bits</translation>
         </message>
         <message>
             <source>Value</source>
             <translation>Value</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendView</name>
+        <message>
+            <source>Time</source>
+            <translation>Time</translation>
         </message>
         <message>
             <source>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis</source>
@@ -2315,18 +2276,6 @@ Meaning %4</translation>
             <source>Give every item its own value axis (bits share one); off: one value axis for all items except bits</source>
             <translation>Give every item its own value axis (bits share one); off: one value axis for all items except bits</translation>
         </message>
-        <message>
-            <source>Bits</source>
-            <translation>Bits</translation>
-        </message>
-        <message>
-            <source>no value</source>
-            <translation>no value</translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1: %2</translation>
-        </message>
         <message numerus="yes">
             <source>%n item(s) added to the trend.</source>
             <translation>
@@ -2348,6 +2297,93 @@ Meaning %4</translation>
         <message>
             <source>Too many items at once: at most %1.</source>
             <translation>Too many items at once: at most %1.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchListDocument</name>
+        <message>
+            <source>&amp;Open Watch List…</source>
+            <translation>&amp;Open Watch List…</translation>
+        </message>
+        <message>
+            <source>&amp;Save Watch List…</source>
+            <translation>&amp;Save Watch List…</translation>
+        </message>
+        <message>
+            <source>&amp;Import CSV…</source>
+            <translation>&amp;Import CSV…</translation>
+        </message>
+        <message>
+            <source>Reopen Last Watch List at Start</source>
+            <translation>Reopen Last Watch List at Start</translation>
+        </message>
+        <message>
+            <source>The last watch list %1 cannot be loaded: %2</source>
+            <translation>The last watch list %1 cannot be loaded: %2</translation>
+        </message>
+        <message>
+            <source>Reopened %1.</source>
+            <translation>Reopened %1.</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>Cannot open %1: %2</translation>
+        </message>
+        <message>
+            <source>Open Watch List</source>
+            <translation>Open Watch List</translation>
+        </message>
+        <message>
+            <source>Watch lists (*.json);;All files (*)</source>
+            <translation>Watch lists (*.json);;All files (*)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be loaded:
+%2</source>
+            <translation>%1 cannot be loaded:
+%2</translation>
+        </message>
+        <message>
+            <source>Loaded %1.</source>
+            <translation>Loaded %1.</translation>
+        </message>
+        <message>
+            <source>Save Watch List</source>
+            <translation>Save Watch List</translation>
+        </message>
+        <message>
+            <source>Watch lists (*.json)</source>
+            <translation>Watch lists (*.json)</translation>
+        </message>
+        <message>
+            <source>Saved %1.</source>
+            <translation>Saved %1.</translation>
+        </message>
+        <message>
+            <source>Import CSV</source>
+            <translation>Import CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv *.txt);;All files (*)</source>
+            <translation>CSV files (*.csv *.txt);;All files (*)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be imported:
+%2</source>
+            <translation>%1 cannot be imported:
+%2</translation>
+        </message>
+        <message>
+            <source>Imported %1.</source>
+            <translation>Imported %1.</translation>
+        </message>
+        <message>
+            <source>Untitled</source>
+            <translation>Untitled</translation>
+        </message>
+        <message>
+            <source>%1 — Operator mode (read-only)</source>
+            <translation>%1 — Operator mode (read-only)</translation>
         </message>
     </context>
     <context>

@@ -1173,6 +1173,35 @@
         </message>
     </context>
     <context>
+        <name>Fatek::LinkStatusLabel</name>
+        <message>
+            <source>No connection</source>
+            <translation>沒有連線</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message numerus="yes">
+            <source> · %n failed attempt(s)</source>
+            <translation>
+                <numerusform> · 失敗 %n 次</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source> · F5 reconnects now</source>
+            <translation> · 按 F5 立即重新連線</translation>
+        </message>
+        <message>
+            <source>%1: %2 · %3 req/s · %4 errors · RTT %5</source>
+            <translation>%1：%2 · %3 次請求/秒 · %4 個錯誤 · RTT %5</translation>
+        </message>
+        <message>
+            <source>%1 ms</source>
+            <translation>%1 ms</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::LoopbackDialog</name>
         <message>
             <source>Loopback test</source>
@@ -1321,10 +1350,6 @@
             <translation>連線</translation>
         </message>
         <message>
-            <source>No connection</source>
-            <translation>沒有連線</translation>
-        </message>
-        <message>
             <source>Operator mode (read-only)</source>
             <translation>操作員模式（唯讀）</translation>
         </message>
@@ -1359,22 +1384,6 @@
         <message>
             <source>New &amp;Watch Table</source>
             <translation>新增監看表(&amp;W)</translation>
-        </message>
-        <message>
-            <source>&amp;Open Watch List…</source>
-            <translation>開啟監看清單(&amp;O)…</translation>
-        </message>
-        <message>
-            <source>&amp;Save Watch List…</source>
-            <translation>儲存監看清單(&amp;S)…</translation>
-        </message>
-        <message>
-            <source>&amp;Import CSV…</source>
-            <translation>匯入 CSV(&amp;I)…</translation>
-        </message>
-        <message>
-            <source>Reopen Last Watch List at Start</source>
-            <translation>啟動時重新開啟上次的監看清單</translation>
         </message>
         <message>
             <source>&amp;Quit</source>
@@ -1423,22 +1432,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
 永宏 FATEK PLC 的試車與監控工具。</translation>
         </message>
         <message>
-            <source>PLC Control</source>
-            <translation>PLC 控制</translation>
-        </message>
-        <message>
-            <source>Forcing</source>
-            <translation>強制</translation>
-        </message>
-        <message>
-            <source>Raw Console</source>
-            <translation>原始訊框主控台</translation>
-        </message>
-        <message>
-            <source>&amp;Loopback Test…</source>
-            <translation>迴路測試(&amp;L)…</translation>
-        </message>
-        <message>
             <source>Connecting to %1 (%2)…</source>
             <translation>正在連線到 %1（%2）…</translation>
         </message>
@@ -1459,24 +1452,8 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>名稱：</translation>
         </message>
         <message>
-            <source>The last watch list %1 cannot be loaded: %2</source>
-            <translation>無法載入上次的監看清單 %1：%2</translation>
-        </message>
-        <message>
-            <source>Reopened %1.</source>
-            <translation>已重新開啟 %1。</translation>
-        </message>
-        <message>
-            <source>Cannot open %1: %2</source>
-            <translation>無法開啟 %1：%2</translation>
-        </message>
-        <message>
             <source>Open Watch List</source>
             <translation>開啟監看清單</translation>
-        </message>
-        <message>
-            <source>Watch lists (*.json);;All files (*)</source>
-            <translation>監看清單 (*.json);;所有檔案 (*)</translation>
         </message>
         <message>
             <source>%1 cannot be loaded:
@@ -1487,36 +1464,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>Loaded %1.</source>
             <translation>已載入 %1。</translation>
-        </message>
-        <message>
-            <source>Save Watch List</source>
-            <translation>儲存監看清單</translation>
-        </message>
-        <message>
-            <source>Watch lists (*.json)</source>
-            <translation>監看清單 (*.json)</translation>
-        </message>
-        <message>
-            <source>Saved %1.</source>
-            <translation>已儲存 %1。</translation>
-        </message>
-        <message>
-            <source>Import CSV</source>
-            <translation>匯入 CSV</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv *.txt);;All files (*)</source>
-            <translation>CSV 檔案 (*.csv *.txt);;所有檔案 (*)</translation>
-        </message>
-        <message>
-            <source>%1 cannot be imported:
-%2</source>
-            <translation>無法匯入 %1：
-%2</translation>
-        </message>
-        <message>
-            <source>Imported %1.</source>
-            <translation>已匯入 %1。</translation>
         </message>
         <message>
             <source>The demo simulator could not start: %1</source>
@@ -1533,72 +1480,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</source>
             <translation>%1：%2 · %3 請求/秒 · %4 個錯誤 · RTT %5 ms</translation>
-        </message>
-        <message>
-            <source>Trend</source>
-            <translation>趨勢圖</translation>
-        </message>
-        <message>
-            <source>&amp;Trend</source>
-            <translation>趨勢圖(&amp;T)</translation>
-        </message>
-        <message>
-            <source>Start &amp;Data Logging…</source>
-            <translation>開始資料記錄(&amp;D)…</translation>
-        </message>
-        <message>
-            <source>Write every value of the current watch table to a CSV file with timestamps</source>
-            <translation>將目前監看表的每個數值連同時間戳記寫入 CSV 檔</translation>
-        </message>
-        <message>
-            <source>Sto&amp;p Data Logging</source>
-            <translation>停止資料記錄(&amp;P)</translation>
-        </message>
-        <message>
-            <source>Data logging stopped: %1</source>
-            <translation>資料記錄已停止：%1</translation>
-        </message>
-        <message>
-            <source>Data Logging</source>
-            <translation>資料記錄</translation>
-        </message>
-        <message>
-            <source>Data logging stopped:
-%1</source>
-            <translation>資料記錄已停止：
-%1</translation>
-        </message>
-        <message>
-            <source>No watch table to log.</source>
-            <translation>沒有可記錄的監看表。</translation>
-        </message>
-        <message>
-            <source>Logging %1 to %2.</source>
-            <translation>正在將 %1 記錄到 %2。</translation>
-        </message>
-        <message numerus="yes">
-            <source>Logging stopped: %n row(s) in %1.</source>
-            <translation>
-                <numerusform>記錄已停止：%1 中共 %n 列。</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>Add items to a watch table first: logging writes the rows of the current table.</source>
-            <translation>請先在監看表中加入項目：資料記錄會寫入目前監看表的各列。</translation>
-        </message>
-        <message>
-            <source>Log Watch Table to CSV</source>
-            <translation>將監看表記錄到 CSV</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV 檔案 (*.csv)</translation>
-        </message>
-        <message numerus="yes">
-            <source>Logging to %1 (%n row(s))</source>
-            <translation>
-                <numerusform>正在記錄到 %1（%n 列）</numerusform>
-            </translation>
         </message>
         <message numerus="yes">
             <source>%n saved connection(s) could not be read (kept unchanged)</source>
@@ -1619,28 +1500,8 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>立即重試目前的連線，不等待下一次嘗試</translation>
         </message>
         <message>
-            <source>Scan &amp;Stations…</source>
-            <translation>掃描站號(&amp;S)…</translation>
-        </message>
-        <message>
-            <source>Scan Stations: open a connection first.</source>
-            <translation>掃描站號：請先開啟連線。</translation>
-        </message>
-        <message>
-            <source>Find the PLCs that answer on the current connection's link</source>
-            <translation>找出目前連線上有回應的 PLC</translation>
-        </message>
-        <message>
             <source>%1 — %2, station %3</source>
             <translation>%1 — %2，站號 %3</translation>
-        </message>
-        <message>
-            <source>Untitled</source>
-            <translation>未命名</translation>
-        </message>
-        <message>
-            <source>%1 — Operator mode (read-only)</source>
-            <translation>%1 — 操作員模式（唯讀）</translation>
         </message>
         <message>
             <source>The watch list %1 has changes that are not saved.</source>
@@ -1669,24 +1530,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>Stop Logging and &amp;Quit</source>
             <translation>停止記錄並結束(&amp;Q)</translation>
-        </message>
-        <message numerus="yes">
-            <source> · %n failed attempt(s)</source>
-            <translation>
-                <numerusform> · 失敗 %n 次</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source> · F5 reconnects now</source>
-            <translation> · 按 F5 立即重新連線</translation>
-        </message>
-        <message>
-            <source>%1: %2 · %3 req/s · %4 errors · RTT %5</source>
-            <translation>%1：%2 · %3 次請求/秒 · %4 個錯誤 · RTT %5</translation>
-        </message>
-        <message>
-            <source>%1 ms</source>
-            <translation>%1 ms</translation>
         </message>
     </context>
     <context>
@@ -2158,6 +2001,37 @@ Meaning %4</source>
         </message>
     </context>
     <context>
+        <name>Fatek::ToolDocks</name>
+        <message>
+            <source>PLC Control</source>
+            <translation>PLC 控制</translation>
+        </message>
+        <message>
+            <source>Forcing</source>
+            <translation>強制</translation>
+        </message>
+        <message>
+            <source>Raw Console</source>
+            <translation>原始訊框主控台</translation>
+        </message>
+        <message>
+            <source>&amp;Loopback Test…</source>
+            <translation>迴路測試(&amp;L)…</translation>
+        </message>
+        <message>
+            <source>Scan &amp;Stations…</source>
+            <translation>掃描站號(&amp;S)…</translation>
+        </message>
+        <message>
+            <source>Scan Stations: open a connection first.</source>
+            <translation>掃描站號：請先開啟連線。</translation>
+        </message>
+        <message>
+            <source>Find the PLCs that answer on the current connection's link</source>
+            <translation>找出目前連線上有回應的 PLC</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::TrafficLogModel</name>
         <message>
             <source>sent</source>
@@ -2201,14 +2075,101 @@ Meaning %4</source>
         </message>
     </context>
     <context>
-        <name>Fatek::TrendView</name>
+        <name>Fatek::TrendChartView</name>
         <message>
-            <source>Time</source>
-            <translation>時間</translation>
+            <source>no value</source>
+            <translation>無數值</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendLogging</name>
+        <message>
+            <source>Trend</source>
+            <translation>趨勢圖</translation>
+        </message>
+        <message>
+            <source>&amp;Trend</source>
+            <translation>趨勢圖(&amp;T)</translation>
+        </message>
+        <message>
+            <source>Start &amp;Data Logging…</source>
+            <translation>開始資料記錄(&amp;D)…</translation>
+        </message>
+        <message>
+            <source>Write every value of the current watch table to a CSV file with timestamps</source>
+            <translation>將目前監看表的每個數值連同時間戳記寫入 CSV 檔</translation>
+        </message>
+        <message>
+            <source>Sto&amp;p Data Logging</source>
+            <translation>停止資料記錄(&amp;P)</translation>
+        </message>
+        <message>
+            <source>Data logging stopped: %1</source>
+            <translation>資料記錄已停止：%1</translation>
+        </message>
+        <message>
+            <source>Data Logging</source>
+            <translation>資料記錄</translation>
+        </message>
+        <message>
+            <source>Data logging stopped:
+%1</source>
+            <translation>資料記錄已停止：
+%1</translation>
+        </message>
+        <message>
+            <source>No watch table to log.</source>
+            <translation>沒有可記錄的監看表。</translation>
+        </message>
+        <message>
+            <source>Logging %1 to %2.</source>
+            <translation>正在將 %1 記錄到 %2。</translation>
+        </message>
+        <message numerus="yes">
+            <source>Logging stopped: %n row(s) in %1.</source>
+            <translation>
+                <numerusform>記錄已停止：%1 中共 %n 列。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Add items to a watch table first: logging writes the rows of the current table.</source>
+            <translation>請先在監看表中加入項目：資料記錄會寫入目前監看表的各列。</translation>
+        </message>
+        <message>
+            <source>Log Watch Table to CSV</source>
+            <translation>將監看表記錄到 CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 檔案 (*.csv)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Logging to %1 (%n row(s))</source>
+            <translation>
+                <numerusform>正在記錄到 %1（%n 列）</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendValueAxes</name>
+        <message>
+            <source>Bits</source>
+            <translation>位元</translation>
         </message>
         <message>
             <source>Value</source>
             <translation>數值</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendView</name>
+        <message>
+            <source>Time</source>
+            <translation>時間</translation>
         </message>
         <message>
             <source>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis</source>
@@ -2306,18 +2267,6 @@ Meaning %4</source>
             <source>Give every item its own value axis (bits share one); off: one value axis for all items except bits</source>
             <translation>每個項目各有自己的數值軸（位元共用一軸）；關閉：除位元外所有項目共用一個數值軸</translation>
         </message>
-        <message>
-            <source>Bits</source>
-            <translation>位元</translation>
-        </message>
-        <message>
-            <source>no value</source>
-            <translation>無數值</translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1：%2</translation>
-        </message>
         <message numerus="yes">
             <source>%n item(s) added to the trend.</source>
             <translation>
@@ -2338,6 +2287,93 @@ Meaning %4</source>
         <message>
             <source>Too many items at once: at most %1.</source>
             <translation>一次加入的項目太多：最多 %1 個。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchListDocument</name>
+        <message>
+            <source>&amp;Open Watch List…</source>
+            <translation>開啟監看清單(&amp;O)…</translation>
+        </message>
+        <message>
+            <source>&amp;Save Watch List…</source>
+            <translation>儲存監看清單(&amp;S)…</translation>
+        </message>
+        <message>
+            <source>&amp;Import CSV…</source>
+            <translation>匯入 CSV(&amp;I)…</translation>
+        </message>
+        <message>
+            <source>Reopen Last Watch List at Start</source>
+            <translation>啟動時重新開啟上次的監看清單</translation>
+        </message>
+        <message>
+            <source>The last watch list %1 cannot be loaded: %2</source>
+            <translation>無法載入上次的監看清單 %1：%2</translation>
+        </message>
+        <message>
+            <source>Reopened %1.</source>
+            <translation>已重新開啟 %1。</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>無法開啟 %1：%2</translation>
+        </message>
+        <message>
+            <source>Open Watch List</source>
+            <translation>開啟監看清單</translation>
+        </message>
+        <message>
+            <source>Watch lists (*.json);;All files (*)</source>
+            <translation>監看清單 (*.json);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be loaded:
+%2</source>
+            <translation>無法載入 %1：
+%2</translation>
+        </message>
+        <message>
+            <source>Loaded %1.</source>
+            <translation>已載入 %1。</translation>
+        </message>
+        <message>
+            <source>Save Watch List</source>
+            <translation>儲存監看清單</translation>
+        </message>
+        <message>
+            <source>Watch lists (*.json)</source>
+            <translation>監看清單 (*.json)</translation>
+        </message>
+        <message>
+            <source>Saved %1.</source>
+            <translation>已儲存 %1。</translation>
+        </message>
+        <message>
+            <source>Import CSV</source>
+            <translation>匯入 CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv *.txt);;All files (*)</source>
+            <translation>CSV 檔案 (*.csv *.txt);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be imported:
+%2</source>
+            <translation>無法匯入 %1：
+%2</translation>
+        </message>
+        <message>
+            <source>Imported %1.</source>
+            <translation>已匯入 %1。</translation>
+        </message>
+        <message>
+            <source>Untitled</source>
+            <translation>未命名</translation>
+        </message>
+        <message>
+            <source>%1 — Operator mode (read-only)</source>
+            <translation>%1 — 操作員模式（唯讀）</translation>
         </message>
     </context>
     <context>

@@ -5,30 +5,21 @@
 #include "connectionspanel.h"
 #include "coretext.h"
 #include "demosimulator.h"
-#include "forcingpanel.h"
 #include "languagemenu.h"
-#include "loopbackdialog.h"
-#include "plccontrolpanel.h"
-#include "rawconsole.h"
-#include "stationscandialog.h"
+#include "linkstatuslabel.h"
 #include "tablelogger.h"
-#include "trendview.h"
 #include "watchtablemodel.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
-#include <QFile>
-#include <QFileDialog>
-#include <QFileInfo>
-#include <QHash>
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
@@ -50,15 +41,13 @@ namespace Fatek {
 namespace {
 const QString geometryKey = QStringLiteral("mainwindow/geometry");
 const QString stateKey = QStringLiteral("mainwindow/state");
-const QString directoryKey = QStringLiteral("preferences/lastDirectory");
-const QString lastListKey = QStringLiteral("preferences/lastWatchList");
-const QString reopenKey = QStringLiteral("preferences/reopenLastWatchList");
 } // namespace
 
 MainWindow::MainWindow(bool readOnly, QWidget *parent)
     : QMainWindow(parent)
     , m_readOnly(readOnly)
     , m_manager(new ConnectionManager(this))
+    , m_document(new WatchListDocument(this))
 {
     initStudioResources();
     setObjectName(QStringLiteral("mainWindow"));
@@ -85,15 +74,16 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     connectionsDock->setWidget(m_connectionsPanel);
     addDockWidget(Qt::BottomDockWidgetArea, connectionsDock);
 
-    m_linkStatus = new QLabel(tr("No connection"), this);
-    m_linkStatus->setObjectName(QStringLiteral("linkStatus"));
+    m_linkStatus = new LinkStatusLabel(this);
     statusBar()->addPermanentWidget(m_linkStatus);
     updateModeLabel(readOnly);
 
+    connect(m_document, &WatchListDocument::statusMessage, this, &MainWindow::showStatus);
     createActions();
-    createTools();
+    m_tools = new ToolDocks(this, m_toolsMenu, m_viewMenu);
+    connect(m_tools, &ToolDocks::statusMessage, this, &MainWindow::showStatus);
     addWatchTable();
-    markWatchListSaved({});
+    m_document->markSaved({});
 
     connect(m_connectionsPanel, &ConnectionsPanel::currentConnectionChanged, this, [this] {
         updateLinkStatus();
@@ -132,8 +122,7 @@ MainWindow::~MainWindow()
     disconnect(m_connectionsPanel, nullptr, this, nullptr);
     disconnect(m_manager, nullptr, this, nullptr);
     disconnect(m_tabs, nullptr, this, nullptr);
-    for (const auto &setTarget : std::as_const(m_toolTargets))
-        setTarget(nullptr, 1, QString());
+    m_tools->releaseTargets();
     while (m_tabs->count() > 0) {
         QWidget *w = m_tabs->widget(0);
         m_tabs->removeTab(0);
@@ -177,20 +166,7 @@ void MainWindow::createActions()
         = file->addAction(QIcon(QStringLiteral(":/icons/table.svg")), tr("New &Watch Table"), this,
                           [this] { m_tabs->setCurrentWidget(addWatchTable()); });
     newTable->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
-    auto *openAction
-        = file->addAction(QIcon(QStringLiteral(":/icons/open.svg")), tr("&Open Watch List…"), this,
-                          &MainWindow::openWatchListDialog);
-    openAction->setShortcut(QKeySequence::Open);
-    auto *saveAction
-        = file->addAction(QIcon(QStringLiteral(":/icons/save.svg")), tr("&Save Watch List…"), this,
-                          &MainWindow::saveWatchListDialog);
-    saveAction->setShortcut(QKeySequence::Save);
-    auto *importAction = file->addAction(tr("&Import CSV…"), this, &MainWindow::importCsvDialog);
-    importAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
-    auto *reopen = file->addAction(tr("Reopen Last Watch List at Start"));
-    reopen->setCheckable(true);
-    reopen->setChecked(QSettings().value(reopenKey, true).toBool());
-    connect(reopen, &QAction::toggled, this, [](bool on) { QSettings().setValue(reopenKey, on); });
+    m_document->addFileActions(file);
     file->addSeparator();
     auto *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     // QKeySequence::Quit is empty on Windows and in some desktop themes.
@@ -218,7 +194,8 @@ void MainWindow::createActions()
     m_viewMenu->addAction(toolBar->toggleViewAction());
 
     m_toolsMenu = menuBar()->addMenu(tr("&Tools"));
-    createTrendAndLogging();
+    m_trend = new TrendLogging(this, m_toolsMenu, m_viewMenu);
+    connect(m_trend, &TrendLogging::statusMessage, this, &MainWindow::showStatus);
     createOperatorMode();
     m_viewMenu->addSeparator();
     m_viewMenu->addMenu(new LanguageMenu(m_viewMenu));
@@ -234,140 +211,16 @@ void MainWindow::createActions()
     toolBar->addAction(disconnectAction);
     toolBar->addSeparator();
     toolBar->addAction(newTable);
-    toolBar->addAction(openAction);
-    toolBar->addAction(saveAction);
+    toolBar->addAction(m_document->openAction());
+    toolBar->addAction(m_document->saveAction());
     toolBar->addAction(pause);
-}
-
-void MainWindow::createTools()
-{
-    auto addDock = [this](auto *tool, const QString &title, const QString &name,
-                          Qt::DockWidgetArea area, const QKeySequence &shortcut) {
-        auto *dock = new QDockWidget(title, this);
-        dock->setObjectName(name);
-        // In a scroll area a tool's own minimum (rows of controls, long status lines) no longer
-        // sets the window's: with every tool open it still fits 1366x768, or 1920x1080 at 150 %.
-        auto *scroll = new QScrollArea(dock);
-        scroll->setObjectName(name + QStringLiteral("Scroll"));
-        scroll->setWidgetResizable(true);
-        scroll->setFrameShape(QFrame::NoFrame);
-        scroll->setWidget(tool);
-        dock->setWidget(scroll);
-        addDockWidget(area, dock);
-        QAction *action = dockAction(dock, shortcut);
-        m_toolsMenu->addAction(action);
-        m_viewMenu->addAction(action);
-        m_toolTargets.append([tool](Session *session, quint8 station, const QString &connection) {
-            tool->setTarget(session, station, connection);
-        });
-        return dock;
-    };
-    QDockWidget *control
-        = addDock(new PlcControlPanel(this), tr("PLC Control"), QStringLiteral("plcControlDock"),
-                  Qt::RightDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
-    QDockWidget *forcing
-        = addDock(new ForcingPanel(this), tr("Forcing"), QStringLiteral("forcingDock"),
-                  Qt::RightDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
-    QDockWidget *console
-        = addDock(new RawConsole(this), tr("Raw Console"), QStringLiteral("rawConsoleDock"),
-                  Qt::BottomDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
-    tabifyDockWidget(control, forcing);
-    // The watch tables own the width: the side tools start hidden (Tools menu, shortcuts above);
-    // the console shares the bottom area with the connections as a tab. QSettings keeps what the
-    // user arranges after that.
-    control->hide();
-    forcing->hide();
-    if (auto *connectionsDock = findChild<QDockWidget *>(QStringLiteral("connectionsDock"))) {
-        tabifyDockWidget(connectionsDock, console);
-        connectionsDock->raise();
-    }
-    m_toolsMenu->addSeparator();
-    auto *loopback = m_toolsMenu->addAction(tr("&Loopback Test…"), this, [this] {
-        auto *dialog = new LoopbackDialog(this);
-        dialog->setObjectName(QStringLiteral("loopbackDialog"));
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-        Connection *c = currentConnection();
-        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
-                          c ? c->name() : QString());
-        // Like the docks, an open dialog follows the current connection (and lets go of a closed
-        // one).
-        m_toolTargets.append([target = QPointer<LoopbackDialog>(dialog)](
-                                 Session *session, quint8 station, const QString &name) {
-            if (target)
-                target->setTarget(session, station, name);
-        });
-        dialog->show();
-    });
-    loopback->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
-    auto *scan = m_toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
-        Connection *c = currentConnection();
-        if (!c) {
-            showStatus(tr("Scan Stations: open a connection first."));
-            return;
-        }
-        auto *dialog = new StationScanDialog(c, this);
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-        dialog->show();
-        dialog->start();
-    });
-    scan->setObjectName(QStringLiteral("scanStationsAction"));
-    scan->setToolTip(tr("Find the PLCs that answer on the current connection's link"));
-    updateToolTargets();
-}
-
-QAction *MainWindow::dockAction(QDockWidget *dock, const QKeySequence &shortcut)
-{
-    // The dock's own toggle action hides a dock that is open but behind another tab: this one
-    // brings it to the front first, and hides it only when it is already in front.
-    auto *action = new QAction(dock->windowTitle(), this);
-    action->setObjectName(dock->objectName() + QStringLiteral("Action"));
-    action->setCheckable(true);
-    action->setChecked(!dock->isHidden());
-    action->setShortcut(shortcut);
-    connect(dock->toggleViewAction(), &QAction::toggled, action, &QAction::setChecked);
-    connect(dock, &QDockWidget::windowTitleChanged, action, &QAction::setText);
-    connect(action, &QAction::triggered, dock, [dock, action] {
-        if (dock->isHidden()) {
-            dock->show();
-            dock->raise();
-        } else if (!dock->isVisible() || dock->visibleRegion().isEmpty()) {
-            dock->raise(); // open, but another tab is in front
-        } else {
-            dock->hide();
-        }
-        action->setChecked(!dock->isHidden());
-    });
-    return action;
 }
 
 QWidget *MainWindow::openTool(const QString &name)
 {
     if (name == QLatin1String("trend"))
-        return showTrend();
-    static const QHash<QString, QString> docks
-        = {{QStringLiteral("control"), QStringLiteral("plcControlDock")},
-           {QStringLiteral("forcing"), QStringLiteral("forcingDock")},
-           {QStringLiteral("console"), QStringLiteral("rawConsoleDock")}};
-    if (docks.contains(name)) {
-        auto *dock = findChild<QDockWidget *>(docks.value(name));
-        if (!dock)
-            return nullptr;
-        dock->show();
-        dock->raise();
-        auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
-        return scroll ? scroll->widget() : dock->widget();
-    }
-    if (name == QLatin1String("loopback")) {
-        for (QAction *action : m_toolsMenu->actions()) {
-            if (action->shortcut() == QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L))
-                action->trigger();
-        }
-        auto *dialog = findChild<LoopbackDialog *>(QStringLiteral("loopbackDialog"));
-        if (dialog)
-            dialog->start();
-        return dialog;
-    }
-    return nullptr;
+        return m_trend->showTrend();
+    return m_tools->openTool(name);
 }
 
 Connection *MainWindow::currentConnection() const
@@ -445,7 +298,7 @@ WatchTableWidget *MainWindow::addWatchTable(const QString &name)
         table->setConfirmHandler(m_confirm);
     connect(table, &WatchTableWidget::statusMessage, this, &MainWindow::showStatus);
     connect(table, &WatchTableWidget::addToTrendRequested, this,
-            [this, table](const QList<int> &rows) { addToTrend(table, rows); });
+            [this, table](const QList<int> &rows) { m_trend->addToTrend(table, rows); });
     connect(table, &WatchTableWidget::nameChanged, this, [this, table](const QString &text) {
         m_tabs->setTabText(m_tabs->indexOf(table), text);
     });
@@ -493,48 +346,14 @@ void MainWindow::renameWatchTable(int index)
         table->setName(name.trimmed());
 }
 
-Status MainWindow::saveWatchList(const QString &path) const
+void MainWindow::replaceWatchTables(const QList<WatchTableSpec> &specs)
 {
-    WatchListFile file;
-    for (WatchTableWidget *t : watchTables())
-        file.tables.append(t->spec());
-    Status s = WatchList::saveToFile(file, path);
-    if (s) {
-        QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
-        const_cast<MainWindow *>(this)->markWatchListSaved(path);
-    }
-    return s;
-}
-
-Status MainWindow::loadWatchList(const QString &path)
-{
-    const auto file = WatchList::loadFromFile(path);
-    if (!file)
-        return file.error();
     while (m_tabs->count() > 0)
         closeWatchTable(0);
-    for (const WatchTableSpec &spec : file->tables)
+    for (const WatchTableSpec &spec : specs)
         addWatchTable(spec.name)->setSpec(spec);
     if (m_tabs->count() == 0)
         addWatchTable();
-    QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
-    markWatchListSaved(path);
-    return Ok{};
-}
-
-bool MainWindow::restoreLastWatchList()
-{
-    QSettings settings;
-    const QString path = settings.value(lastListKey).toString();
-    if (!settings.value(reopenKey, true).toBool() || path.isEmpty() || !QFileInfo::exists(path))
-        return false;
-    if (const Status s = loadWatchList(path); !s) {
-        showStatus(tr("The last watch list %1 cannot be loaded: %2")
-                       .arg(QDir::toNativeSeparators(path), CoreText::message(s.error().message)));
-        return false;
-    }
-    showStatus(tr("Reopened %1.").arg(QDir::toNativeSeparators(path)));
-    return true;
 }
 
 Status MainWindow::openAtStartup(const std::optional<SavedConnection> &connection,
@@ -543,7 +362,7 @@ Status MainWindow::openAtStartup(const std::optional<SavedConnection> &connectio
     Connection *c = connection ? openConnection(*connection) : nullptr;
     Status loaded = Ok{};
     if (!path.isEmpty()) {
-        loaded = loadWatchList(path);
+        loaded = m_document->load(path);
         if (!loaded) {
             // The words of File > Open; not modal, so the window (and --screenshot) carries on.
             auto *box = new QMessageBox(
@@ -564,97 +383,21 @@ Status MainWindow::openAtStartup(const std::optional<SavedConnection> &connectio
     return loaded;
 }
 
-Status MainWindow::importCsv(const QString &path)
-{
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return makeError(ErrorKind::InvalidRequest,
-                         tr("Cannot open %1: %2").arg(path, f.errorString()).toStdString());
-    const auto rows = WatchList::importCsv(f.readAll());
-    if (!rows)
-        return rows.error();
-    WatchTableWidget *table = currentWatchTable() ? currentWatchTable() : addWatchTable();
-    table->model()->addItems(*rows);
-    return Ok{};
-}
-
-void MainWindow::openWatchListDialog()
-{
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Watch List"), lastDirectory(),
-                                                      tr("Watch lists (*.json);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    setLastDirectory(path);
-    if (const Status s = loadWatchList(path); !s) {
-        QMessageBox::warning(
-            this, tr("Open Watch List"),
-            tr("%1 cannot be loaded:\n%2")
-                .arg(QFileInfo(path).fileName(), CoreText::message(s.error().message)));
-        return;
-    }
-    showStatus(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
-}
-
-bool MainWindow::saveWatchListDialog()
-{
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Watch List"),
-                                                m_listPath.isEmpty() ? lastDirectory() : m_listPath,
-                                                tr("Watch lists (*.json)"));
-    if (path.isEmpty())
-        return false;
-    if (QFileInfo(path).suffix().isEmpty())
-        path += QStringLiteral(".json");
-    setLastDirectory(path);
-    if (const Status s = saveWatchList(path); !s) {
-        QMessageBox::warning(this, tr("Save Watch List"), CoreText::message(s.error().message));
-        return false;
-    }
-    showStatus(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
-    return true;
-}
-
-WatchListFile MainWindow::currentWatchList() const
-{
-    WatchListFile file;
-    for (WatchTableWidget *t : watchTables())
-        file.tables.append(t->spec());
-    return file;
-}
-
-void MainWindow::markWatchListSaved(const QString &path)
-{
-    m_listPath = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
-    m_savedList = currentWatchList();
-    updateWindowTitle();
-}
-
-bool MainWindow::isWatchListModified() const
-{
-    return currentWatchList() != m_savedList;
-}
-
-void MainWindow::updateWindowTitle()
-{
-    // The platform adds the application name ("… — FATEK Studio"): the title names the document.
-    const QString list = m_listPath.isEmpty() ? tr("Untitled") : QFileInfo(m_listPath).fileName();
-    setWindowTitle(m_readOnly ? tr("%1 — Operator mode (read-only)").arg(list) : list);
-    setWindowFilePath(m_listPath);
-}
-
 bool MainWindow::confirmQuit()
 {
-    const bool unsaved = isWatchListModified();
-    const bool logging = m_tableLogger && m_tableLogger->isLogging();
+    const bool unsaved = m_document->isModified();
+    const bool logging = tableLogger()->isLogging();
     if (!unsaved && !logging)
         return true;
     QStringList what;
     if (unsaved)
         what << tr("The watch list %1 has changes that are not saved.")
-                    .arg(m_listPath.isEmpty() ? tr("(untitled)")
-                                              : QDir::toNativeSeparators(m_listPath));
+                    .arg(m_document->path().isEmpty()
+                             ? tr("(untitled)")
+                             : QDir::toNativeSeparators(m_document->path()));
     if (logging)
         what << tr("Data logging to %1 is running; quitting stops it.")
-                    .arg(QDir::toNativeSeparators(m_tableLogger->path()));
+                    .arg(QDir::toNativeSeparators(tableLogger()->path()));
     QMessageBox box(QMessageBox::Question, tr("Quit FATEK Studio"), what.join(QLatin1Char('\n')),
                     QMessageBox::NoButton, this);
     box.setObjectName(QStringLiteral("quitQuestionBox"));
@@ -676,35 +419,9 @@ bool MainWindow::confirmQuit()
     if (box.clickedButton() == quit)
         return true;
     if (save && box.clickedButton() == save)
-        return m_listPath.isEmpty() ? saveWatchListDialog() : bool(saveWatchList(m_listPath));
+        return m_document->path().isEmpty() ? m_document->saveDialog()
+                                            : bool(m_document->save(m_document->path()));
     return false;
-}
-
-void MainWindow::importCsvDialog()
-{
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import CSV"), lastDirectory(),
-                                                      tr("CSV files (*.csv *.txt);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    setLastDirectory(path);
-    if (const Status s = importCsv(path); !s) {
-        QMessageBox::warning(
-            this, tr("Import CSV"),
-            tr("%1 cannot be imported:\n%2")
-                .arg(QFileInfo(path).fileName(), CoreText::message(s.error().message)));
-        return;
-    }
-    showStatus(tr("Imported %1.").arg(QDir::toNativeSeparators(path)));
-}
-
-QString MainWindow::lastDirectory() const
-{
-    return QSettings().value(directoryKey).toString();
-}
-
-void MainWindow::setLastDirectory(const QString &path)
-{
-    QSettings().setValue(directoryKey, QFileInfo(path).absolutePath());
 }
 
 void MainWindow::startDemo()
@@ -728,7 +445,7 @@ void MainWindow::startDemo()
         table->setConnection(c);
         table->setSpec(DemoSimulator::demoTable(saved.station));
         m_tabs->setCurrentWidget(table);
-        markWatchListSaved({}); // the demo's own table: nothing of the user's to save yet
+        m_document->markSaved({}); // the demo's own table: nothing of the user's to save yet
         Q_EMIT demoReady();
     });
     m_demo->start();
@@ -757,35 +474,10 @@ void MainWindow::setConfirmHandler(ConfirmHandler handler)
 void MainWindow::updateLinkStatus()
 {
     const Connection *c = currentConnection();
-    if (!c) {
-        m_reconnectAction->setEnabled(false);
-        m_linkStatus->setText(tr("No connection"));
-        m_linkStatus->setToolTip({});
-        return;
-    }
-    const StationStatistics &t = c->statistics().total;
-    const LinkState state = c->linkState();
-    m_reconnectAction->setEnabled(state != LinkState::Connected && state != LinkState::Connecting);
-    if (state != LinkState::Connected) {
-        // A link that is down has no rate or round trip worth showing: say why and how often.
-        QString text = tr("%1: %2").arg(c->name(), c->stateText());
-        if (c->linkFailures() > 0)
-            text += tr(" · %n failed attempt(s)", nullptr, static_cast<int>(c->linkFailures()));
-        if (state == LinkState::Reconnecting || state == LinkState::Lost)
-            text += tr(" · F5 reconnects now");
-        m_linkStatus->setText(text);
-    } else {
-        m_linkStatus->setText(
-            tr("%1: %2 · %3 req/s · %4 errors · RTT %5")
-                .arg(c->name(), c->stateText())
-                .arg(c->requestsPerSecond(), 0, 'f', 1)
-                .arg(c->errorCount())
-                .arg(t.answers ? tr("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–")));
-    }
-    m_linkStatus->setToolTip(c->linkReason().isEmpty()
-                                 ? CoreText::settings(c->settings())
-                                 : CoreText::settings(c->settings()) + QLatin1Char('\n')
-                                       + CoreText::message(c->linkReason()));
+    const LinkState state = c ? c->linkState() : LinkState::Closed;
+    m_reconnectAction->setEnabled(c && state != LinkState::Connected
+                                  && state != LinkState::Connecting);
+    m_linkStatus->showConnection(c);
 }
 
 void MainWindow::followTable(Connection *connection)
@@ -797,16 +489,8 @@ void MainWindow::followTable(Connection *connection)
 
 void MainWindow::updateToolTargets()
 {
-    Connection *c = currentConnection();
-    const quint8 station = c ? c->station() : quint8(1);
-    if (m_toolsInitialised && c == m_toolConnection && station == m_toolStation)
-        return;
-    m_toolsInitialised = true;
-    m_toolConnection = c;
-    m_toolStation = station;
-    for (const auto &setTarget : std::as_const(m_toolTargets))
-        setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
-                  c ? c->name() : QString());
+    if (m_tools) // not yet while the menus are made
+        m_tools->setTarget(currentConnection());
 }
 
 void MainWindow::showStatus(const QString &text)

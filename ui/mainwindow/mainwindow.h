@@ -2,15 +2,15 @@
 
 #include "linksettingsio.h"
 #include "result.h"
+#include "tooldocks.h"
+#include "trendlogging.h"
+#include "watchlistdocument.h"
 #include "watchtablewidget.h"
 
 #include <QMainWindow>
-#include <QPointer>
 
 #include <optional>
 
-class QDockWidget;
-class QKeySequence;
 class QLabel;
 class QMenu;
 class QTabWidget;
@@ -21,11 +21,10 @@ class Connection;
 class ConnectionManager;
 class ConnectionsPanel;
 class DemoSimulator;
-class Session;
-class TableLogger;
-class TrendView;
+class LinkStatusLabel;
 
-// The main window composes: the connections panel, the watch table tabs, the tool docks, menus,
+// The main window composes: the connections panel, the watch table tabs and their file
+// (WatchListDocument), the tool docks (ToolDocks), trends and data logging (TrendLogging), menus,
 // shortcuts and the status bar. Polling, parsing and formatting live in the parts it composes.
 class MainWindow : public QMainWindow
 {
@@ -46,13 +45,14 @@ public:
     WatchTableWidget *currentWatchTable() const;
     QList<WatchTableWidget *> watchTables() const;
 
-    // Watch list files (all tables); load replaces the tables only if the file is valid.
-    Status saveWatchList(const QString &path) const;
-    Status loadWatchList(const QString &path);
-    // CSV rows into the current table.
-    Status importCsv(const QString &path);
-    // Opens the watch list saved or opened last (when that preference is on); false if none.
-    bool restoreLastWatchList();
+    // Replaces every table by tables made from `specs` (one empty table when there are none).
+    void replaceWatchTables(const QList<WatchTableSpec> &specs);
+
+    // Watch list files (all tables, see WatchListDocument).
+    Status saveWatchList(const QString &path) const { return m_document->save(path); }
+    Status loadWatchList(const QString &path) { return m_document->load(path); }
+    Status importCsv(const QString &path) { return m_document->importCsv(path); }
+    bool restoreLastWatchList() { return m_document->restoreLast(); }
     // Start-up from the command line (fatek-studio --tcp ... FILE): opens `connection` (if given)
     // as File > New Connection does, loads the watch list `path` (if not empty) as File > Open
     // does, and binds every table to that connection. A file that cannot be loaded is reported in
@@ -80,49 +80,28 @@ private:
     // Quitting with writes not sent yet: asks to wait for them or drop them; false: stay open.
     bool settlePendingWritesBeforeQuit();
     void createActions();
-    void createTools();
-    // A Tools/View menu entry with a shortcut that shows and raises `dock`, or hides it when it
-    // is already in front.
-    QAction *dockAction(QDockWidget *dock, const QKeySequence &shortcut);
     void newConnectionDialog();
     void closeCurrentConnection();
     void rebuildRecentMenu();
     void closeWatchTable(int index);
     void renameWatchTable(int index);
-    void openWatchListDialog();
-    // false when cancelled or failed
-    bool saveWatchListDialog();
-    WatchListFile currentWatchList() const;
-    // The tables as saved to (or loaded from) `path` (empty: untitled); the title follows.
-    void markWatchListSaved(const QString &path);
-    bool isWatchListModified() const;
-    void updateWindowTitle();
     // Asks before quitting with unsaved tables or a running data log; false: stay open.
     bool confirmQuit();
-    void importCsvDialog();
     void updateLinkStatus();
     void updateToolTargets();
     // Makes the connection of the table in front the current one (the tools' target).
     void followTable(Connection *connection);
     void showStatus(const QString &text);
-    QString lastDirectory() const;
-    void setLastDirectory(const QString &path);
 
 public:
-    // Trends and data logging (ui/trend, defined in ui/trend/mainwindowtrend.cpp).
-    TrendView *trendView() const { return m_trendView; }
-    TableLogger *tableLogger() const { return m_tableLogger; }
-    // Adds rows of a watch table to the trend and shows the trend.
-    void addToTrend(WatchTableWidget *table, const QList<int> &rows);
+    // Trends and data logging (see TrendLogging).
+    TrendView *trendView() const { return m_trend->trendView(); }
+    TableLogger *tableLogger() const { return m_trend->tableLogger(); }
     // Logs the current watch table to `path` (CSV, appended); a log already running stops first.
-    Status startLogging(const QString &path);
-    void stopLogging();
+    Status startLogging(const QString &path) { return m_trend->startLogging(path); }
+    void stopLogging() { m_trend->stopLogging(); }
 
 private:
-    void createTrendAndLogging();
-    QWidget *showTrend();
-    void startLoggingDialog();
-    void updateLoggingStatus();
     void createOperatorMode();
     void applyOperatorMode(bool active);
     void updateModeLabel(bool active);
@@ -132,12 +111,10 @@ private:
     bool m_quitting = false;
     // The unsaved-tables/logging question was answered for this quit.
     bool m_quitConfirmed = false;
-    QString m_listPath;
-    WatchListFile m_savedList;
     ConnectionManager *m_manager;
     ConnectionsPanel *m_connectionsPanel;
     QTabWidget *m_tabs;
-    QLabel *m_linkStatus;
+    LinkStatusLabel *m_linkStatus;
     QLabel *m_modeLabel = nullptr;
     QMenu *m_recentMenu = nullptr;
     QAction *m_reconnectAction = nullptr;
@@ -145,18 +122,10 @@ private:
     QMenu *m_toolsMenu = nullptr;
     DemoSimulator *m_demo = nullptr;
     ConfirmHandler m_confirm;
-    // Commissioning tools follow the current connection and station.
-    QList<std::function<void(Session *, quint8, const QString &)>> m_toolTargets;
-    QPointer<Connection> m_toolConnection;
-    quint8 m_toolStation = 1;
-    bool m_toolsInitialised = false;
+    WatchListDocument *m_document;
+    ToolDocks *m_tools = nullptr;
+    TrendLogging *m_trend = nullptr;
     int m_tableCounter = 0;
-    TrendView *m_trendView = nullptr;
-    QDockWidget *m_trendDock = nullptr;
-    TableLogger *m_tableLogger = nullptr;
-    QLabel *m_loggingLabel = nullptr;
-    QAction *m_startLoggingAction = nullptr;
-    QAction *m_stopLoggingAction = nullptr;
     class OperatorMode *m_operatorMode = nullptr;
 };
 

@@ -207,10 +207,10 @@ void MainWindow::applyOperatorMode(bool active)
 {
     m_readOnly = active;
     m_manager->setReadOnly(active); // every session, present and future: enforced there
-    updateWindowTitle();
+    m_document->updateWindowTitle();
     updateModeLabel(active);
-    m_toolsInitialised = false; // tools re-read the session's mode (their write buttons)
-    updateToolTargets();
+    if (m_tools) // tools re-read the session's mode (their write buttons)
+        m_tools->setTarget(currentConnection(), true);
 }
 
 } // namespace Fatek

@@ -1,23 +1,19 @@
 #include "trendview.h"
 
 #include "coretext.h"
+#include "trendchartview.h"
+#include "trendvalueaxes.h"
 #include "valueformat.h"
 #include "watchtablemodel.h"
 
 #include <QComboBox>
 #include <QDateTime>
-#include <QGraphicsLineItem>
-#include <QGraphicsRectItem>
-#include <QGraphicsTextItem>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
-#include <QMouseEvent>
 #include <QToolButton>
 #include <QVBoxLayout>
-#include <QWheelEvent>
 #include <QtCharts/QChart>
-#include <QtCharts/QChartView>
 #include <QtCharts/QDateTimeAxis>
 #include <QtCharts/QLegend>
 #include <QtCharts/QLegendMarker>
@@ -44,92 +40,7 @@ qint64 nowMs()
     return QDateTime::currentMSecsSinceEpoch();
 }
 
-// The bit axis: 0 and 1 with room above and below, so the line is never hidden by the frame.
-constexpr double bitAxisMin = -0.25;
-constexpr double bitAxisMax = 1.25;
-
-// Digits after the point that a tick step needs (0.25 -> 2, 5 -> 0).
-int decimalsFor(double step)
-{
-    if (!(step > 0) || step >= 1)
-        return 0;
-    return std::clamp(static_cast<int>(std::ceil(-std::log10(step) - 1e-9)), 0, 12);
-}
-
-// Ticks on round numbers for the visible range of an analog axis; labels with the digits the
-// step needs.
-void applyNiceTicks(QValueAxis *axis, double min, double max)
-{
-    const double step = TrendView::niceStep(max - min);
-    axis->setTickAnchor(0.0);
-    axis->setTickInterval(step);
-    axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimalsFor(step)));
-    axis->setTickType(QValueAxis::TicksDynamic);
-}
-
-// A value as the read-out shows it: whole numbers without a point, others with 7 digits.
-QString readoutValue(double v)
-{
-    if (std::abs(v) < 1e15 && v == std::round(v))
-        return QString::number(static_cast<qint64>(v));
-    return QString::number(v, 'g', 7);
-}
-
 } // namespace
-
-// The chart view: rubber band zoom from Qt Charts plus wheel zoom on the time axis around the
-// mouse; either one stops the window from following the present.
-class TrendChartView : public QChartView
-{
-public:
-    TrendChartView(QChart *chart, TrendView *owner)
-        : QChartView(chart, owner)
-        , m_owner(owner)
-    {
-        setRubberBand(QChartView::RectangleRubberBand);
-        setRenderHint(QPainter::Antialiasing);
-        // The cursor read-out follows the mouse without a button held.
-        setMouseTracking(true);
-        viewport()->setMouseTracking(true);
-    }
-
-protected:
-    void mouseMoveEvent(QMouseEvent *event) override
-    {
-        m_owner->hoverAt(event->position());
-        QChartView::mouseMoveEvent(event);
-    }
-    void leaveEvent(QEvent *event) override
-    {
-        m_owner->hoverAt(std::nullopt);
-        QChartView::leaveEvent(event);
-    }
-    void wheelEvent(QWheelEvent *event) override
-    {
-        const int delta = event->angleDelta().y();
-        if (delta == 0)
-            return QChartView::wheelEvent(event);
-        const double factor = std::pow(1.0015, delta); // one notch (120) = about 20 %
-        const QRectF area = chart()->plotArea();
-        const double x = std::clamp(event->position().x(), area.left(), area.right());
-        QRectF zoomed = area;
-        zoomed.setWidth(area.width() / factor);
-        zoomed.moveLeft(x - (x - area.left()) / factor);
-        m_owner->userZoomed();
-        chart()->zoomIn(zoomed); // the time axis only
-        event->accept();
-    }
-    void mouseReleaseEvent(QMouseEvent *event) override
-    {
-        // A finished rubber band (or the right-click zoom out) changes the axes.
-        if (event->button() == Qt::LeftButton || event->button() == Qt::RightButton)
-            m_owner->userZoomed();
-        QChartView::mouseReleaseEvent(event);
-    }
-
-private:
-    TrendView *m_owner;
-};
 
 QList<qint64> TrendView::windowChoicesMs()
 {
@@ -139,6 +50,7 @@ QList<qint64> TrendView::windowChoicesMs()
 TrendView::TrendView(QWidget *parent)
     : QWidget(parent)
     , m_chart(new QChart)
+    , m_valueAxes(m_chart)
 {
     setObjectName(QStringLiteral("trendView"));
     m_chart->legend()->setAlignment(Qt::AlignBottom);
@@ -149,20 +61,15 @@ TrendView::TrendView(QWidget *parent)
     m_timeAxis->setTickCount(7);
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
 
-    // The cursor: a vertical line and a read-out box, above the lines.
-    m_cursorLine = new QGraphicsLineItem(m_chart);
-    m_cursorLine->setPen(QPen(QColor(0x60, 0x60, 0x60), 1, Qt::DashLine));
-    m_cursorLine->setZValue(100);
-    m_cursorLine->hide();
-    m_readoutBox = new QGraphicsRectItem(m_chart);
-    m_readoutBox->setPen(QPen(QColor(0xa0, 0xa0, 0xa0)));
-    m_readoutBox->setBrush(QColor(255, 255, 255, 230));
-    m_readoutBox->setZValue(101);
-    m_readoutBox->hide();
-    m_readout = new QGraphicsTextItem(m_readoutBox);
-    m_readout->setDefaultTextColor(QColor(0x20, 0x20, 0x20));
-
-    m_chartView = new TrendChartView(m_chart, this);
+    m_chartView = new TrendChartView(
+        m_chart, m_timeAxis,
+        [this] {
+            std::vector<TrendChartView::CursorLine> lines;
+            for (const auto &item : m_items)
+                lines.push_back({displayName(item->spec), item->color, &item->buffer});
+            return lines;
+        },
+        this);
     m_chartView->setObjectName(QStringLiteral("trendChart"));
     m_chartView->setToolTip(
         tr("Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis"));
@@ -254,6 +161,7 @@ TrendView::TrendView(QWidget *parent)
     };
     connect(m_removeButton, &QToolButton::clicked, this, removeSelected);
     connect(removeAction, &QAction::triggered, this, removeSelected);
+    connect(m_chartView, &TrendChartView::userZoomed, this, &TrendView::userZoomed);
     connect(m_timeAxis, &QDateTimeAxis::rangeChanged, this, [this] {
         if (!m_settingRange)
             userZoomed();
@@ -546,49 +454,16 @@ void TrendView::setTimeRange(qint64 fromMs, qint64 toMs)
     m_settingRange = false;
 }
 
-double TrendView::niceStep(double range, int targetTicks)
-{
-    if (!(range > 0) || !std::isfinite(range))
-        return 1.0;
-    const double rough = range / std::max(1, targetTicks);
-    const double power = std::pow(10.0, std::floor(std::log10(rough)));
-    const double fraction = rough / power; // 1 <= fraction < 10
-    const double nice = fraction < 1.5 ? 1 : fraction < 3 ? 2 : fraction < 7 ? 5 : 10;
-    return nice * power;
-}
-
-QList<double> TrendView::tickValues(const QValueAxis *axis)
-{
-    QList<double> ticks;
-    if (!axis)
-        return ticks;
-    const double min = axis->min(), max = axis->max();
-    if (axis->tickType() == QValueAxis::TicksDynamic) {
-        const double step = axis->tickInterval();
-        if (!(step > 0) || (max - min) / step > 1000)
-            return ticks;
-        const double anchor = axis->tickAnchor();
-        for (double k = std::ceil((min - anchor) / step - 1e-9);
-             anchor + k * step <= max + 1e-9 * step; k += 1)
-            ticks << anchor + k * step;
-        return ticks;
-    }
-    const int count = axis->tickCount();
-    for (int i = 0; i < count && count > 1; ++i)
-        ticks << min + (max - min) * i / (count - 1);
-    return ticks;
-}
-
 QValueAxis *TrendView::valueAxis(int index) const
 {
     if (index >= 0 && index < itemCount())
         return m_items.at(static_cast<std::size_t>(index))->axis;
-    return m_valueAxes.empty() ? nullptr : m_valueAxes.front();
+    return m_valueAxes.axes().empty() ? nullptr : m_valueAxes.axes().front();
 }
 
 QList<QValueAxis *> TrendView::valueAxes() const
 {
-    return QList<QValueAxis *>(m_valueAxes.cbegin(), m_valueAxes.cend());
+    return QList<QValueAxis *>(m_valueAxes.axes().cbegin(), m_valueAxes.axes().cend());
 }
 
 void TrendView::setSeparateAxes(bool separate)
@@ -604,129 +479,20 @@ void TrendView::setSeparateAxes(bool separate)
 
 void TrendView::rebuildAxes()
 {
-    for (QValueAxis *axis : m_valueAxes) {
-        m_chart->removeAxis(axis); // detaches the series
-        delete axis;
+    std::vector<TrendValueAxes::Line> lines;
+    for (const auto &item : m_items)
+        lines.push_back({displayName(item->spec), item->color, item->discrete});
+    const std::vector<QValueAxis *> axes = m_valueAxes.rebuild(lines, m_separateAxes);
+    for (std::size_t i = 0; i < m_items.size(); ++i) {
+        m_items[i]->axis = axes[i];
+        for (QLineSeries *s : m_items[i]->series)
+            s->attachAxis(axes[i]);
     }
-    m_valueAxes.clear();
-    m_bitAxis = nullptr;
-    QValueAxis *shared = nullptr;
-    int analogAxes = 0;
-    auto make = [this, &analogAxes](const QString &title, const QColor &color, bool bits) {
-        auto *axis = new QValueAxis;
-        axis->setTitleText(title);
-        axis->setMinorTickCount(0);
-        if (color.isValid()) {
-            // The axis in its line's colour: which scale belongs to which line is plain.
-            QPen pen = axis->linePen();
-            pen.setColor(color);
-            axis->setLinePen(pen);
-            axis->setLabelsColor(color);
-            axis->setTitleBrush(color);
-        }
-        // Analog axes left, right, left, ...: the plot keeps its width in the middle; the bit
-        // axis on the right.
-        const bool left = !bits && analogAxes++ % 2 == 0;
-        m_chart->addAxis(axis, left ? Qt::AlignLeft : Qt::AlignRight);
-        axis->setProperty("fatekFresh", true); // ranged by the next refresh, also when zoomed
-        m_valueAxes.push_back(axis);
-        return axis;
-    };
-    for (auto &item : m_items) {
-        if (item->discrete) {
-            if (!m_bitAxis) {
-                m_bitAxis = make(tr("Bits"), QColor(), true);
-                m_bitAxis->setRange(bitAxisMin, bitAxisMax);
-                m_bitAxis->setTickAnchor(0);
-                m_bitAxis->setTickInterval(1);
-                m_bitAxis->setTickType(QValueAxis::TicksDynamic);
-                m_bitAxis->setLabelFormat(QStringLiteral("%.0f"));
-            }
-            item->axis = m_bitAxis;
-        } else if (m_separateAxes) {
-            item->axis = make(displayName(item->spec), item->color, false);
-        } else {
-            if (!shared)
-                shared = make(tr("Value"), QColor(), false);
-            item->axis = shared;
-        }
-        for (QLineSeries *s : item->series)
-            s->attachAxis(item->axis);
-    }
-    if (m_valueAxes.empty()) // an empty chart still has its value axis
-        make(tr("Value"), QColor(), false)->setRange(0, 1);
-    for (QValueAxis *axis : m_valueAxes) {
-        if (axis == m_bitAxis)
-            continue;
-        applyNiceTicks(axis, axis->min(), axis->max());
-        // A zoom (rubber band) changes the range: the ticks follow it.
-        connect(axis, &QValueAxis::rangeChanged, this,
-                [axis](qreal min, qreal max) { applyNiceTicks(axis, min, max); });
-    }
-}
-
-void TrendView::hoverAt(std::optional<QPointF> viewportPos)
-{
-    m_hoverPos = viewportPos;
-    updateReadout();
 }
 
 QString TrendView::readoutText() const
 {
-    return m_readoutText;
-}
-
-void TrendView::updateReadout()
-{
-    const QRectF area = m_chart->plotArea();
-    QPointF at;
-    if (m_hoverPos)
-        at = m_chart->mapFromScene(m_chartView->mapToScene(m_hoverPos->toPoint()));
-    if (!m_hoverPos || m_items.empty() || !area.contains(at) || area.width() <= 0) {
-        m_cursorLine->hide();
-        m_readoutBox->hide();
-        m_readoutText.clear();
-        return;
-    }
-    const qint64 fromMs = m_timeAxis->min().toMSecsSinceEpoch();
-    const qint64 toMs = m_timeAxis->max().toMSecsSinceEpoch();
-    const auto timeMs = fromMs
-                        + static_cast<qint64>(std::llround((at.x() - area.left()) / area.width()
-                                                           * static_cast<double>(toMs - fromMs)));
-    const QString time
-        = QDateTime::fromMSecsSinceEpoch(timeMs).toString(QStringLiteral("HH:mm:ss.zzz"));
-    QStringList lines{time};
-    QString html = QStringLiteral("<b>%1</b>").arg(time.toHtmlEscaped());
-    for (const auto &item : m_items) {
-        // The last sample at or before the cursor; a gap there means no fresh value.
-        const TrendBuffer &b = item->buffer;
-        qsizetype lo = 0, hi = b.size();
-        while (lo < hi) {
-            const qsizetype mid = (lo + hi) / 2;
-            if (b.at(mid).timeMs <= timeMs)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        const QString value
-            = lo == 0 || b.at(lo - 1).gap ? tr("no value") : readoutValue(b.at(lo - 1).value);
-        const QString name = displayName(item->spec);
-        lines << tr("%1: %2").arg(name, value);
-        html += QStringLiteral("<br><span style=\"color:%1\">&#9632;</span> %2")
-                    .arg(item->color.name(), tr("%1: %2").arg(name, value).toHtmlEscaped());
-    }
-    m_readoutText = lines.join(QLatin1Char('\n'));
-    m_readout->setHtml(html);
-    m_cursorLine->setLine(at.x(), area.top(), at.x(), area.bottom());
-    m_cursorLine->show();
-    const QRectF text = m_readout->boundingRect();
-    // Beside the line, on the side with room.
-    double x = at.x() + 8;
-    if (x + text.width() > area.right())
-        x = std::max(area.left(), at.x() - 8 - text.width());
-    m_readoutBox->setRect(0, 0, text.width(), text.height());
-    m_readoutBox->setPos(x, area.top() + 4);
-    m_readoutBox->show();
+    return m_chartView->readoutText();
 }
 
 void TrendView::refresh()
@@ -746,14 +512,9 @@ void TrendView::refresh()
     }
     // About two points per pixel column: more cannot be seen.
     const qsizetype maxPoints = std::max<qsizetype>(400, 2 * m_chartView->width());
-    struct Span
-    {
-        double min = std::numeric_limits<double>::max();
-        double max = std::numeric_limits<double>::lowest();
-    };
-    std::map<QValueAxis *, Span> spans;
+    std::map<QValueAxis *, TrendValueAxes::Span> spans;
     for (auto &item : m_items) {
-        Span &span = spans[item->axis];
+        TrendValueAxes::Span &span = spans[item->axis];
         const QList<QList<QPointF>> pieces = item->buffer.segments(fromMs, toMs, maxPoints);
         while (item->series.size() < static_cast<std::size_t>(pieces.size())) {
             auto *s = new QLineSeries;
@@ -785,32 +546,10 @@ void TrendView::refresh()
             }
         }
     }
-    for (QValueAxis *axis : m_valueAxes) {
-        // Zoomed, the user's ranges stay; an axis that came since gets one.
-        if (m_zoomed && !axis->property("fatekFresh").toBool())
-            continue;
-        if (axis == m_bitAxis) {
-            axis->setProperty("fatekFresh", false);
-            axis->setRange(bitAxisMin, bitAxisMax);
-            continue;
-        }
-        axis->setProperty("fatekFresh", false);
-        Span span = spans[axis];
-        if (span.min > span.max) {
-            span.min = 0;
-            span.max = 1;
-        }
-        const double margin = span.max > span.min ? (span.max - span.min) * 0.05
-                                                  : std::max(1.0, std::abs(span.max) * 0.05);
-        // The new range's step first: the axis lays its ticks out at once when the range
-        // changes, and the old step over a range 1000 times wider would be a million ticks.
-        applyNiceTicks(axis, span.min - margin, span.max + margin);
-        axis->setRange(span.min - margin, span.max + margin);
-    }
+    m_valueAxes.fit(std::move(spans), m_zoomed);
     if (!m_zoomed)
         setTimeRange(fromMs, toMs);
-    if (m_hoverPos)
-        updateReadout(); // the time under the mouse moved with the axis
+    m_chartView->updateReadout(); // the time under the mouse moved with the axis
 }
 
 } // namespace Fatek

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "trendbuffer.h"
+#include "trendvalueaxes.h"
 #include "watchlist.h"
 
 #include <QColor>
@@ -13,9 +14,6 @@
 #include <vector>
 
 class QChart;
-class QGraphicsLineItem;
-class QGraphicsRectItem;
-class QGraphicsTextItem;
 class QComboBox;
 class QDateTimeAxis;
 class QLabel;
@@ -82,11 +80,15 @@ public:
     // True (the default): every analog item has its own value axis; false: they share one.
     bool hasSeparateAxes() const { return m_separateAxes; }
     void setSeparateAxes(bool separate);
-    // The distance of the ticks on a value axis showing `range`: 1, 2 or 5 times a power of ten,
-    // about `targetTicks` ticks.
-    static double niceStep(double range, int targetTicks = 5);
-    // The ticks a value axis shows (round numbers in its range).
-    static QList<double> tickValues(const QValueAxis *axis);
+    // Tick steps and ticks of the value axes (see TrendValueAxes).
+    static double niceStep(double range, int targetTicks = 5)
+    {
+        return TrendValueAxes::niceStep(range, targetTicks);
+    }
+    static QList<double> tickValues(const QValueAxis *axis)
+    {
+        return TrendValueAxes::tickValues(axis);
+    }
 
     // The cursor read-out (mouse over the chart): its text, one line for the time and one per
     // item ("Sine (R1): -309"); empty while hidden.
@@ -111,13 +113,8 @@ private:
         QValueAxis *axis = nullptr;
         bool discrete = false; // 0/1: the bit axis
     };
-    friend class TrendChartView;
-
     bool addOne(WatchTableModel *model, int row, QString *error);
     void rebuildAxes();
-    // The mouse over the chart (viewport coordinates); nothing: it left.
-    void hoverAt(std::optional<QPointF> viewportPos);
-    void updateReadout();
 
     void onDataChanged(WatchTableModel *model, int firstRow, int lastRow, int lastColumn);
     void sample(Item &item);
@@ -131,13 +128,7 @@ private:
     QChart *m_chart;
     TrendChartView *m_chartView;
     QDateTimeAxis *m_timeAxis;
-    std::vector<QValueAxis *> m_valueAxes;
-    QValueAxis *m_bitAxis = nullptr;
-    QGraphicsLineItem *m_cursorLine;
-    QGraphicsRectItem *m_readoutBox;
-    QGraphicsTextItem *m_readout;
-    std::optional<QPointF> m_hoverPos;
-    QString m_readoutText;
+    TrendValueAxes m_valueAxes;
     QToolButton *m_axesButton;
     QListWidget *m_itemList;
     QToolButton *m_pauseButton;

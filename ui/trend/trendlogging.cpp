@@ -1,7 +1,7 @@
-// The main window's trend dock and data logging actions (kept apart from mainwindow.cpp so the
-// trend and logging parts change in one place).
-#include "mainwindow.h"
+#include "trendlogging.h"
 
+#include "lastdirectory.h"
+#include "mainwindow.h"
 #include "tablelogger.h"
 #include "trendview.h"
 #include "watchtablemodel.h"
@@ -20,51 +20,54 @@
 
 namespace Fatek {
 
-void MainWindow::createTrendAndLogging()
+TrendLogging::TrendLogging(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
+    : QObject(window)
+    , m_window(window)
 {
-    m_trendView = new TrendView(this);
-    auto *dock = new QDockWidget(tr("Trend"), this);
+    setObjectName(QStringLiteral("trendLogging"));
+    m_trendView = new TrendView(window);
+    auto *dock = new QDockWidget(tr("Trend"), window);
     dock->setObjectName(QStringLiteral("trendDock"));
     dock->setWidget(m_trendView);
-    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    window->addDockWidget(Qt::BottomDockWidgetArea, dock);
     dock->hide(); // shown by Tools > Trend or "Add to Trend"
     m_trendDock = dock;
     QAction *toggle = dock->toggleViewAction();
     toggle->setText(tr("&Trend"));
     toggle->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G));
-    m_toolsMenu->addAction(toggle);
-    m_viewMenu->addAction(toggle);
-    connect(m_trendView, &TrendView::statusMessage, this, &MainWindow::showStatus);
+    toolsMenu->addAction(toggle);
+    viewMenu->addAction(toggle);
+    connect(m_trendView, &TrendView::statusMessage, this, &TrendLogging::statusMessage);
 
     m_tableLogger = new TableLogger(this);
-    m_loggingLabel = new QLabel(this);
+    m_loggingLabel = new QLabel(window);
     m_loggingLabel->setObjectName(QStringLiteral("loggingStatus"));
     m_loggingLabel->hide();
-    statusBar()->addPermanentWidget(m_loggingLabel);
+    window->statusBar()->addPermanentWidget(m_loggingLabel);
     m_startLoggingAction
-        = m_toolsMenu->addAction(QIcon(QStringLiteral(":/icons/save.svg")),
-                                 tr("Start &Data Logging…"), this, &MainWindow::startLoggingDialog);
+        = toolsMenu->addAction(QIcon(QStringLiteral(":/icons/save.svg")),
+                               tr("Start &Data Logging…"), this, &TrendLogging::startLoggingDialog);
     m_startLoggingAction->setToolTip(tr("Write every value of the current watch table to a CSV "
                                         "file with timestamps"));
     m_stopLoggingAction
-        = m_toolsMenu->addAction(tr("Sto&p Data Logging"), this, &MainWindow::stopLogging);
+        = toolsMenu->addAction(tr("Sto&p Data Logging"), this, &TrendLogging::stopLogging);
     m_stopLoggingAction->setEnabled(false);
-    m_toolsMenu->addSeparator();
-    connect(m_tableLogger, &TableLogger::rowWritten, this, &MainWindow::updateLoggingStatus);
+    toolsMenu->addSeparator();
+    connect(m_tableLogger, &TableLogger::rowWritten, this, &TrendLogging::updateLoggingStatus);
     connect(m_tableLogger, &TableLogger::stopped, this, [this](const QString &error) {
         updateLoggingStatus();
         if (!error.isEmpty()) {
-            showStatus(tr("Data logging stopped: %1").arg(error));
-            if (isVisible())
-                QMessageBox::warning(this, tr("Data Logging"),
+            Q_EMIT statusMessage(tr("Data logging stopped: %1").arg(error));
+            if (m_window->isVisible())
+                QMessageBox::warning(m_window, tr("Data Logging"),
                                      tr("Data logging stopped:\n%1").arg(error));
         }
     });
 
     // The demo shows its sine wave (+-1000) and its ramp (0..99999) in the trend from the start:
     // two ranges far apart, each on its own axis.
-    connect(this, &MainWindow::demoReady, this, [this] {
-        WatchTableWidget *table = currentWatchTable();
+    connect(window, &MainWindow::demoReady, this, [this] {
+        WatchTableWidget *table = m_window->currentWatchTable();
         if (!table)
             return;
         const WatchTableModel *model = table->model();
@@ -83,7 +86,7 @@ void MainWindow::createTrendAndLogging()
     });
 }
 
-QWidget *MainWindow::showTrend()
+QWidget *TrendLogging::showTrend()
 {
     const bool wasHidden = m_trendDock->isHidden();
     m_trendDock->show();
@@ -91,19 +94,19 @@ QWidget *MainWindow::showTrend()
     // A chart needs room: on first showing, the trend becomes a tab of the bottom area (beside the
     // connections and the console) with the full width and a good height; afterwards the user's
     // arrangement stays.
-    auto *connectionsDock = findChild<QDockWidget *>(QStringLiteral("connectionsDock"));
+    auto *connectionsDock = m_window->findChild<QDockWidget *>(QStringLiteral("connectionsDock"));
     if (wasHidden && connectionsDock && !connectionsDock->isHidden() && !m_trendDock->isFloating()
-        && dockWidgetArea(m_trendDock) == Qt::BottomDockWidgetArea
-        && dockWidgetArea(connectionsDock) == Qt::BottomDockWidgetArea
-        && tabifiedDockWidgets(m_trendDock).isEmpty()) {
-        tabifyDockWidget(connectionsDock, m_trendDock);
+        && m_window->dockWidgetArea(m_trendDock) == Qt::BottomDockWidgetArea
+        && m_window->dockWidgetArea(connectionsDock) == Qt::BottomDockWidgetArea
+        && m_window->tabifiedDockWidgets(m_trendDock).isEmpty()) {
+        m_window->tabifyDockWidget(connectionsDock, m_trendDock);
         m_trendDock->raise();
-        resizeDocks({m_trendDock}, {height() * 2 / 5}, Qt::Vertical);
+        m_window->resizeDocks({m_trendDock}, {m_window->height() * 2 / 5}, Qt::Vertical);
     }
     return m_trendView;
 }
 
-void MainWindow::addToTrend(WatchTableWidget *table, const QList<int> &rows)
+void TrendLogging::addToTrend(WatchTableWidget *table, const QList<int> &rows)
 {
     if (!table)
         return;
@@ -112,40 +115,41 @@ void MainWindow::addToTrend(WatchTableWidget *table, const QList<int> &rows)
     showTrend();
 }
 
-Status MainWindow::startLogging(const QString &path)
+Status TrendLogging::startLogging(const QString &path)
 {
-    WatchTableWidget *table = currentWatchTable();
+    WatchTableWidget *table = m_window->currentWatchTable();
     if (!table)
         return makeError(ErrorKind::InvalidRequest, tr("No watch table to log.").toStdString());
     if (const Status s = m_tableLogger->start(table->model(), path); !s)
         return s;
     updateLoggingStatus();
-    showStatus(tr("Logging %1 to %2.").arg(table->name(), QDir::toNativeSeparators(path)));
+    Q_EMIT statusMessage(
+        tr("Logging %1 to %2.").arg(table->name(), QDir::toNativeSeparators(path)));
     return Ok{};
 }
 
-void MainWindow::stopLogging()
+void TrendLogging::stopLogging()
 {
     if (!m_tableLogger || !m_tableLogger->isLogging())
         return;
     const QString path = m_tableLogger->path();
     const qint64 rows = m_tableLogger->rowCount();
     m_tableLogger->stop();
-    showStatus(tr("Logging stopped: %n row(s) in %1.", nullptr, static_cast<int>(rows))
-                   .arg(QDir::toNativeSeparators(path)));
+    Q_EMIT statusMessage(tr("Logging stopped: %n row(s) in %1.", nullptr, static_cast<int>(rows))
+                             .arg(QDir::toNativeSeparators(path)));
 }
 
-void MainWindow::startLoggingDialog()
+void TrendLogging::startLoggingDialog()
 {
-    WatchTableWidget *table = currentWatchTable();
+    WatchTableWidget *table = m_window->currentWatchTable();
     if (!table || table->model()->rowCount() == 0) {
-        QMessageBox::information(this, tr("Data Logging"),
+        QMessageBox::information(m_window, tr("Data Logging"),
                                  tr("Add items to a watch table first: logging writes the rows of "
                                     "the current table."));
         return;
     }
     QString path = QFileDialog::getSaveFileName(
-        this, tr("Log Watch Table to CSV"), lastDirectory(), tr("CSV files (*.csv)"), nullptr,
+        m_window, tr("Log Watch Table to CSV"), lastDirectory(), tr("CSV files (*.csv)"), nullptr,
         QFileDialog::DontConfirmOverwrite); // an existing log is appended to, not replaced
     if (path.isEmpty())
         return;
@@ -153,10 +157,11 @@ void MainWindow::startLoggingDialog()
         path += QStringLiteral(".csv");
     setLastDirectory(path);
     if (const Status s = startLogging(path); !s)
-        QMessageBox::warning(this, tr("Data Logging"), QString::fromStdString(s.error().message));
+        QMessageBox::warning(m_window, tr("Data Logging"),
+                             QString::fromStdString(s.error().message));
 }
 
-void MainWindow::updateLoggingStatus()
+void TrendLogging::updateLoggingStatus()
 {
     const bool on = m_tableLogger->isLogging();
     m_startLoggingAction->setEnabled(true);

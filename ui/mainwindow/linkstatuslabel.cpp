@@ -1,0 +1,45 @@
+#include "linkstatuslabel.h"
+
+#include "connection.h"
+#include "coretext.h"
+
+namespace Fatek {
+
+LinkStatusLabel::LinkStatusLabel(QWidget *parent)
+    : QLabel(parent)
+{
+    setObjectName(QStringLiteral("linkStatus"));
+    showConnection(nullptr);
+}
+
+void LinkStatusLabel::showConnection(const Connection *c)
+{
+    if (!c) {
+        setText(tr("No connection"));
+        setToolTip({});
+        return;
+    }
+    const StationStatistics &t = c->statistics().total;
+    const LinkState state = c->linkState();
+    if (state != LinkState::Connected) {
+        // A link that is down has no rate or round trip worth showing: say why and how often.
+        QString text = tr("%1: %2").arg(c->name(), c->stateText());
+        if (c->linkFailures() > 0)
+            text += tr(" · %n failed attempt(s)", nullptr, static_cast<int>(c->linkFailures()));
+        if (state == LinkState::Reconnecting || state == LinkState::Lost)
+            text += tr(" · F5 reconnects now");
+        setText(text);
+    } else {
+        setText(
+            tr("%1: %2 · %3 req/s · %4 errors · RTT %5")
+                .arg(c->name(), c->stateText())
+                .arg(c->requestsPerSecond(), 0, 'f', 1)
+                .arg(c->errorCount())
+                .arg(t.answers ? tr("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–")));
+    }
+    setToolTip(c->linkReason().isEmpty() ? CoreText::settings(c->settings())
+                                         : CoreText::settings(c->settings()) + QLatin1Char('\n')
+                                               + CoreText::message(c->linkReason()));
+}
+
+} // namespace Fatek

@@ -1,0 +1,166 @@
+#include "tooldocks.h"
+
+#include "connection.h"
+#include "forcingpanel.h"
+#include "loopbackdialog.h"
+#include "mainwindow.h"
+#include "plccontrolpanel.h"
+#include "rawconsole.h"
+#include "stationscandialog.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QHash>
+#include <QMenu>
+#include <QScrollArea>
+
+namespace Fatek {
+
+ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
+    : QObject(window)
+    , m_window(window)
+{
+    auto addDock = [this, window, toolsMenu, viewMenu](auto *tool, const QString &title,
+                                                       const QString &name, Qt::DockWidgetArea area,
+                                                       const QKeySequence &shortcut) {
+        auto *dock = new QDockWidget(title, window);
+        dock->setObjectName(name);
+        // In a scroll area a tool's own minimum (rows of controls, long status lines) no longer
+        // sets the window's: with every tool open it still fits 1366x768, or 1920x1080 at 150 %.
+        auto *scroll = new QScrollArea(dock);
+        scroll->setObjectName(name + QStringLiteral("Scroll"));
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidget(tool);
+        dock->setWidget(scroll);
+        window->addDockWidget(area, dock);
+        QAction *action = dockAction(dock, shortcut, window);
+        toolsMenu->addAction(action);
+        viewMenu->addAction(action);
+        m_targets.append([tool](Session *session, quint8 station, const QString &connection) {
+            tool->setTarget(session, station, connection);
+        });
+        return dock;
+    };
+    QDockWidget *control
+        = addDock(new PlcControlPanel(window), tr("PLC Control"), QStringLiteral("plcControlDock"),
+                  Qt::RightDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    QDockWidget *forcing
+        = addDock(new ForcingPanel(window), tr("Forcing"), QStringLiteral("forcingDock"),
+                  Qt::RightDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    QDockWidget *console
+        = addDock(new RawConsole(window), tr("Raw Console"), QStringLiteral("rawConsoleDock"),
+                  Qt::BottomDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    window->tabifyDockWidget(control, forcing);
+    // The watch tables own the width: the side tools start hidden (Tools menu, shortcuts above);
+    // the console shares the bottom area with the connections as a tab. QSettings keeps what the
+    // user arranges after that.
+    control->hide();
+    forcing->hide();
+    if (auto *connectionsDock
+        = window->findChild<QDockWidget *>(QStringLiteral("connectionsDock"))) {
+        window->tabifyDockWidget(connectionsDock, console);
+        connectionsDock->raise();
+    }
+    toolsMenu->addSeparator();
+    m_loopbackAction = toolsMenu->addAction(tr("&Loopback Test…"), this, [this] {
+        auto *dialog = new LoopbackDialog(m_window);
+        dialog->setObjectName(QStringLiteral("loopbackDialog"));
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        Connection *c = m_window->currentConnection();
+        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
+                          c ? c->name() : QString());
+        // Like the docks, an open dialog follows the current connection (and lets go of a closed
+        // one).
+        m_targets.append([target = QPointer<LoopbackDialog>(dialog)](
+                             Session *session, quint8 station, const QString &name) {
+            if (target)
+                target->setTarget(session, station, name);
+        });
+        dialog->show();
+    });
+    m_loopbackAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
+    auto *scan = toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
+        Connection *c = m_window->currentConnection();
+        if (!c) {
+            Q_EMIT statusMessage(tr("Scan Stations: open a connection first."));
+            return;
+        }
+        auto *dialog = new StationScanDialog(c, m_window);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+        dialog->start();
+    });
+    scan->setObjectName(QStringLiteral("scanStationsAction"));
+    scan->setToolTip(tr("Find the PLCs that answer on the current connection's link"));
+    setTarget(window->currentConnection());
+}
+
+QAction *ToolDocks::dockAction(QDockWidget *dock, const QKeySequence &shortcut, QObject *parent)
+{
+    // The dock's own toggle action hides a dock that is open but behind another tab: this one
+    // brings it to the front first, and hides it only when it is already in front.
+    auto *action = new QAction(dock->windowTitle(), parent);
+    action->setObjectName(dock->objectName() + QStringLiteral("Action"));
+    action->setCheckable(true);
+    action->setChecked(!dock->isHidden());
+    action->setShortcut(shortcut);
+    connect(dock->toggleViewAction(), &QAction::toggled, action, &QAction::setChecked);
+    connect(dock, &QDockWidget::windowTitleChanged, action, &QAction::setText);
+    connect(action, &QAction::triggered, dock, [dock, action] {
+        if (dock->isHidden()) {
+            dock->show();
+            dock->raise();
+        } else if (!dock->isVisible() || dock->visibleRegion().isEmpty()) {
+            dock->raise(); // open, but another tab is in front
+        } else {
+            dock->hide();
+        }
+        action->setChecked(!dock->isHidden());
+    });
+    return action;
+}
+
+QWidget *ToolDocks::openTool(const QString &name)
+{
+    static const QHash<QString, QString> docks
+        = {{QStringLiteral("control"), QStringLiteral("plcControlDock")},
+           {QStringLiteral("forcing"), QStringLiteral("forcingDock")},
+           {QStringLiteral("console"), QStringLiteral("rawConsoleDock")}};
+    if (docks.contains(name)) {
+        auto *dock = m_window->findChild<QDockWidget *>(docks.value(name));
+        if (!dock)
+            return nullptr;
+        dock->show();
+        dock->raise();
+        auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+        return scroll ? scroll->widget() : dock->widget();
+    }
+    if (name == QLatin1String("loopback")) {
+        m_loopbackAction->trigger();
+        auto *dialog = m_window->findChild<LoopbackDialog *>(QStringLiteral("loopbackDialog"));
+        if (dialog)
+            dialog->start();
+        return dialog;
+    }
+    return nullptr;
+}
+
+void ToolDocks::setTarget(Connection *c, bool force)
+{
+    const quint8 station = c ? c->station() : quint8(1);
+    if (!force && c == m_connection && station == m_station)
+        return;
+    m_connection = c;
+    m_station = station;
+    for (const SetTarget &target : std::as_const(m_targets))
+        target(c ? c->session() : nullptr, station, c ? c->name() : QString());
+}
+
+void ToolDocks::releaseTargets()
+{
+    for (const SetTarget &target : std::as_const(m_targets))
+        target(nullptr, 1, QString());
+}
+
+} // namespace Fatek

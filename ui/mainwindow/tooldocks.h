@@ -1,0 +1,59 @@
+#pragma once
+
+#include <QList>
+#include <QObject>
+#include <QPointer>
+
+#include <functional>
+
+class QAction;
+class QDockWidget;
+class QKeySequence;
+class QMenu;
+class QWidget;
+
+namespace Fatek {
+
+class Connection;
+class MainWindow;
+class Session;
+
+// The commissioning tools of the main window: the PLC Control, Forcing and Raw Console docks, the
+// Loopback Test and Scan Stations dialogs, and their Tools/View menu entries. Every tool acts on
+// one target, the current connection and its station.
+class ToolDocks : public QObject
+{
+    Q_OBJECT
+
+public:
+    // Adds the docks to `window` (the side ones hidden) and the entries to the menus.
+    ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu);
+
+    // Opens a tool: "control", "forcing", "console" (docks) or "loopback" (dialog, started at
+    // once). Returns the tool's widget, or nullptr for another name.
+    QWidget *openTool(const QString &name);
+    // Points every tool (and open dialog) at `connection` (nullptr: none). Nothing happens when
+    // it is the target already with the same station, unless `force` (a tool re-reads the
+    // session's mode).
+    void setTarget(Connection *connection, bool force = false);
+    // Lets go of every session: the connections are about to go.
+    void releaseTargets();
+
+    // A Tools/View menu entry with a shortcut that shows and raises `dock`, or hides it when it
+    // is already in front.
+    static QAction *dockAction(QDockWidget *dock, const QKeySequence &shortcut, QObject *parent);
+
+Q_SIGNALS:
+    void statusMessage(const QString &text);
+
+private:
+    using SetTarget = std::function<void(Session *, quint8, const QString &)>;
+
+    MainWindow *m_window;
+    QAction *m_loopbackAction = nullptr;
+    QList<SetTarget> m_targets;
+    QPointer<Connection> m_connection;
+    quint8 m_station = 1;
+};
+
+} // namespace Fatek

@@ -1,0 +1,180 @@
+#include "watchlistdocument.h"
+
+#include "coretext.h"
+#include "lastdirectory.h"
+#include "mainwindow.h"
+#include "watchtablemodel.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+
+namespace Fatek {
+
+namespace {
+const QString lastListKey = QStringLiteral("preferences/lastWatchList");
+const QString reopenKey = QStringLiteral("preferences/reopenLastWatchList");
+} // namespace
+
+WatchListDocument::WatchListDocument(MainWindow *window)
+    : QObject(window)
+    , m_window(window)
+{}
+
+void WatchListDocument::addFileActions(QMenu *file)
+{
+    m_openAction = file->addAction(QIcon(QStringLiteral(":/icons/open.svg")),
+                                   tr("&Open Watch List…"), this, &WatchListDocument::openDialog);
+    m_openAction->setShortcut(QKeySequence::Open);
+    m_saveAction = file->addAction(QIcon(QStringLiteral(":/icons/save.svg")),
+                                   tr("&Save Watch List…"), this, &WatchListDocument::saveDialog);
+    m_saveAction->setShortcut(QKeySequence::Save);
+    auto *importAction
+        = file->addAction(tr("&Import CSV…"), this, &WatchListDocument::importCsvDialog);
+    importAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    auto *reopen = file->addAction(tr("Reopen Last Watch List at Start"));
+    reopen->setCheckable(true);
+    reopen->setChecked(QSettings().value(reopenKey, true).toBool());
+    connect(reopen, &QAction::toggled, this, [](bool on) { QSettings().setValue(reopenKey, on); });
+}
+
+Status WatchListDocument::save(const QString &path)
+{
+    Status s = WatchList::saveToFile(currentList(), path);
+    if (s) {
+        QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
+        markSaved(path);
+    }
+    return s;
+}
+
+Status WatchListDocument::load(const QString &path)
+{
+    const auto file = WatchList::loadFromFile(path);
+    if (!file)
+        return file.error();
+    m_window->replaceWatchTables(file->tables);
+    QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
+    markSaved(path);
+    return Ok{};
+}
+
+bool WatchListDocument::restoreLast()
+{
+    QSettings settings;
+    const QString path = settings.value(lastListKey).toString();
+    if (!settings.value(reopenKey, true).toBool() || path.isEmpty() || !QFileInfo::exists(path))
+        return false;
+    if (const Status s = load(path); !s) {
+        Q_EMIT statusMessage(
+            tr("The last watch list %1 cannot be loaded: %2")
+                .arg(QDir::toNativeSeparators(path), CoreText::message(s.error().message)));
+        return false;
+    }
+    Q_EMIT statusMessage(tr("Reopened %1.").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+Status WatchListDocument::importCsv(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return makeError(ErrorKind::InvalidRequest,
+                         tr("Cannot open %1: %2").arg(path, f.errorString()).toStdString());
+    const auto rows = WatchList::importCsv(f.readAll());
+    if (!rows)
+        return rows.error();
+    WatchTableWidget *table
+        = m_window->currentWatchTable() ? m_window->currentWatchTable() : m_window->addWatchTable();
+    table->model()->addItems(*rows);
+    return Ok{};
+}
+
+void WatchListDocument::openDialog()
+{
+    const QString path
+        = QFileDialog::getOpenFileName(m_window, tr("Open Watch List"), lastDirectory(),
+                                       tr("Watch lists (*.json);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    setLastDirectory(path);
+    if (const Status s = load(path); !s) {
+        QMessageBox::warning(
+            m_window, tr("Open Watch List"),
+            tr("%1 cannot be loaded:\n%2")
+                .arg(QFileInfo(path).fileName(), CoreText::message(s.error().message)));
+        return;
+    }
+    Q_EMIT statusMessage(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
+}
+
+bool WatchListDocument::saveDialog()
+{
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Save Watch List"),
+                                                m_path.isEmpty() ? lastDirectory() : m_path,
+                                                tr("Watch lists (*.json)"));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    setLastDirectory(path);
+    if (const Status s = save(path); !s) {
+        QMessageBox::warning(m_window, tr("Save Watch List"), CoreText::message(s.error().message));
+        return false;
+    }
+    Q_EMIT statusMessage(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+void WatchListDocument::importCsvDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Import CSV"), lastDirectory(),
+                                                      tr("CSV files (*.csv *.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    setLastDirectory(path);
+    if (const Status s = importCsv(path); !s) {
+        QMessageBox::warning(
+            m_window, tr("Import CSV"),
+            tr("%1 cannot be imported:\n%2")
+                .arg(QFileInfo(path).fileName(), CoreText::message(s.error().message)));
+        return;
+    }
+    Q_EMIT statusMessage(tr("Imported %1.").arg(QDir::toNativeSeparators(path)));
+}
+
+WatchListFile WatchListDocument::currentList() const
+{
+    WatchListFile file;
+    for (WatchTableWidget *t : m_window->watchTables())
+        file.tables.append(t->spec());
+    return file;
+}
+
+void WatchListDocument::markSaved(const QString &path)
+{
+    m_path = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+    m_saved = currentList();
+    updateWindowTitle();
+}
+
+bool WatchListDocument::isModified() const
+{
+    return currentList() != m_saved;
+}
+
+void WatchListDocument::updateWindowTitle()
+{
+    // The platform adds the application name ("… — FATEK Studio"): the title names the document.
+    const QString list = m_path.isEmpty() ? tr("Untitled") : QFileInfo(m_path).fileName();
+    m_window->setWindowTitle(m_window->isReadOnly() ? tr("%1 — Operator mode (read-only)").arg(list)
+                                                    : list);
+    m_window->setWindowFilePath(m_path);
+}
+
+} // namespace Fatek

@@ -1,0 +1,63 @@
+#pragma once
+
+#include "result.h"
+#include "watchlist.h"
+
+#include <QObject>
+#include <QString>
+
+class QAction;
+class QMenu;
+
+namespace Fatek {
+
+class MainWindow;
+
+// The watch list file of the main window: all its tables saved to or loaded from one file, CSV
+// rows imported into the current table, the last list reopened at start, and whether the tables
+// changed since they were saved. The window title names the file.
+class WatchListDocument : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit WatchListDocument(MainWindow *window);
+
+    // The file (absolute), empty while untitled.
+    QString path() const { return m_path; }
+    // Load replaces the tables only if the file is valid.
+    Status save(const QString &path);
+    Status load(const QString &path);
+    // CSV rows into the current table.
+    Status importCsv(const QString &path);
+    // Opens the watch list saved or opened last (when that preference is on); false if none.
+    bool restoreLast();
+
+    // Adds Open, Save, Import CSV and Reopen Last Watch List at Start to `file`.
+    void addFileActions(QMenu *file);
+    QAction *openAction() const { return m_openAction; }
+    QAction *saveAction() const { return m_saveAction; }
+
+    // false when cancelled or failed
+    bool saveDialog();
+    // The tables as saved to (or loaded from) `path` (empty: untitled); the title follows.
+    void markSaved(const QString &path);
+    bool isModified() const;
+    void updateWindowTitle();
+
+Q_SIGNALS:
+    void statusMessage(const QString &text);
+
+private:
+    void openDialog();
+    void importCsvDialog();
+    WatchListFile currentList() const;
+
+    MainWindow *m_window;
+    QString m_path;
+    WatchListFile m_saved;
+    QAction *m_openAction = nullptr;
+    QAction *m_saveAction = nullptr;
+};
+
+} // namespace Fatek

@@ -1,0 +1,163 @@
+#include "trendvalueaxes.h"
+
+#include <QtCharts/QChart>
+#include <QtCharts/QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+
+namespace Fatek {
+
+namespace {
+
+// The bit axis: 0 and 1 with room above and below, so the line is never hidden by the frame.
+constexpr double bitAxisMin = -0.25;
+constexpr double bitAxisMax = 1.25;
+
+// Digits after the point that a tick step needs (0.25 -> 2, 5 -> 0).
+int decimalsFor(double step)
+{
+    if (!(step > 0) || step >= 1)
+        return 0;
+    return std::clamp(static_cast<int>(std::ceil(-std::log10(step) - 1e-9)), 0, 12);
+}
+
+// Ticks on round numbers for the visible range of an analog axis; labels with the digits the
+// step needs.
+void applyNiceTicks(QValueAxis *axis, double min, double max)
+{
+    const double step = TrendValueAxes::niceStep(max - min);
+    axis->setTickAnchor(0.0);
+    axis->setTickInterval(step);
+    axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimalsFor(step)));
+    axis->setTickType(QValueAxis::TicksDynamic);
+}
+
+} // namespace
+
+TrendValueAxes::TrendValueAxes(QChart *chart)
+    : m_chart(chart)
+{}
+
+double TrendValueAxes::niceStep(double range, int targetTicks)
+{
+    if (!(range > 0) || !std::isfinite(range))
+        return 1.0;
+    const double rough = range / std::max(1, targetTicks);
+    const double power = std::pow(10.0, std::floor(std::log10(rough)));
+    const double fraction = rough / power; // 1 <= fraction < 10
+    const double nice = fraction < 1.5 ? 1 : fraction < 3 ? 2 : fraction < 7 ? 5 : 10;
+    return nice * power;
+}
+
+QList<double> TrendValueAxes::tickValues(const QValueAxis *axis)
+{
+    QList<double> ticks;
+    if (!axis)
+        return ticks;
+    const double min = axis->min(), max = axis->max();
+    if (axis->tickType() == QValueAxis::TicksDynamic) {
+        const double step = axis->tickInterval();
+        if (!(step > 0) || (max - min) / step > 1000)
+            return ticks;
+        const double anchor = axis->tickAnchor();
+        for (double k = std::ceil((min - anchor) / step - 1e-9);
+             anchor + k * step <= max + 1e-9 * step; k += 1)
+            ticks << anchor + k * step;
+        return ticks;
+    }
+    const int count = axis->tickCount();
+    for (int i = 0; i < count && count > 1; ++i)
+        ticks << min + (max - min) * i / (count - 1);
+    return ticks;
+}
+
+std::vector<QValueAxis *> TrendValueAxes::rebuild(const std::vector<Line> &lines, bool separate)
+{
+    for (QValueAxis *axis : m_axes) {
+        m_chart->removeAxis(axis); // detaches the series
+        delete axis;
+    }
+    m_axes.clear();
+    m_bitAxis = nullptr;
+    QValueAxis *shared = nullptr;
+    int analogAxes = 0;
+    auto make = [this, &analogAxes](const QString &title, const QColor &color, bool bits) {
+        auto *axis = new QValueAxis;
+        axis->setTitleText(title);
+        axis->setMinorTickCount(0);
+        if (color.isValid()) {
+            // The axis in its line's colour: which scale belongs to which line is plain.
+            QPen pen = axis->linePen();
+            pen.setColor(color);
+            axis->setLinePen(pen);
+            axis->setLabelsColor(color);
+            axis->setTitleBrush(color);
+        }
+        // Analog axes left, right, left, ...: the plot keeps its width in the middle; the bit
+        // axis on the right.
+        const bool left = !bits && analogAxes++ % 2 == 0;
+        m_chart->addAxis(axis, left ? Qt::AlignLeft : Qt::AlignRight);
+        axis->setProperty("fatekFresh", true); // ranged by the next fit, also when zoomed
+        m_axes.push_back(axis);
+        return axis;
+    };
+    std::vector<QValueAxis *> lineAxes;
+    for (const Line &line : lines) {
+        if (line.discrete) {
+            if (!m_bitAxis) {
+                m_bitAxis = make(tr("Bits"), QColor(), true);
+                m_bitAxis->setRange(bitAxisMin, bitAxisMax);
+                m_bitAxis->setTickAnchor(0);
+                m_bitAxis->setTickInterval(1);
+                m_bitAxis->setTickType(QValueAxis::TicksDynamic);
+                m_bitAxis->setLabelFormat(QStringLiteral("%.0f"));
+            }
+            lineAxes.push_back(m_bitAxis);
+        } else if (separate) {
+            lineAxes.push_back(make(line.title, line.color, false));
+        } else {
+            if (!shared)
+                shared = make(tr("Value"), QColor(), false);
+            lineAxes.push_back(shared);
+        }
+    }
+    if (m_axes.empty()) // an empty chart still has its value axis
+        make(tr("Value"), QColor(), false)->setRange(0, 1);
+    for (QValueAxis *axis : m_axes) {
+        if (axis == m_bitAxis)
+            continue;
+        applyNiceTicks(axis, axis->min(), axis->max());
+        // A zoom (rubber band) changes the range: the ticks follow it.
+        QObject::connect(axis, &QValueAxis::rangeChanged, axis,
+                         [axis](qreal min, qreal max) { applyNiceTicks(axis, min, max); });
+    }
+    return lineAxes;
+}
+
+void TrendValueAxes::fit(std::map<QValueAxis *, Span> spans, bool zoomed)
+{
+    for (QValueAxis *axis : m_axes) {
+        // Zoomed, the user's ranges stay; an axis that came since gets one.
+        if (zoomed && !axis->property("fatekFresh").toBool())
+            continue;
+        axis->setProperty("fatekFresh", false);
+        if (axis == m_bitAxis) {
+            axis->setRange(bitAxisMin, bitAxisMax);
+            continue;
+        }
+        Span span = spans[axis];
+        if (span.min > span.max) {
+            span.min = 0;
+            span.max = 1;
+        }
+        const double margin = span.max > span.min ? (span.max - span.min) * 0.05
+                                                  : std::max(1.0, std::abs(span.max) * 0.05);
+        // The new range's step first: the axis lays its ticks out at once when the range
+        // changes, and the old step over a range 1000 times wider would be a million ticks.
+        applyNiceTicks(axis, span.min - margin, span.max + margin);
+        axis->setRange(span.min - margin, span.max + margin);
+    }
+}
+
+} // namespace Fatek

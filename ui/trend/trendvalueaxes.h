@@ -1,0 +1,62 @@
+#pragma once
+
+#include <QColor>
+#include <QCoreApplication>
+#include <QList>
+#include <QString>
+
+#include <limits>
+#include <map>
+#include <vector>
+
+class QChart;
+class QValueAxis;
+
+namespace Fatek {
+
+// The value axes of the trend chart, by scale group: bits (0/1) share one axis of their own; each
+// other line gets its own axis in its colour, alternately left and right (separate axes), or they
+// all share one "Value" axis. Ticks fall on round numbers (1, 2 or 5 times a power of ten) of the
+// visible range, also after a zoom.
+class TrendValueAxes
+{
+    Q_DECLARE_TR_FUNCTIONS(Fatek::TrendValueAxes)
+
+public:
+    // What decides the axis of one line.
+    struct Line
+    {
+        QString title;
+        QColor color;
+        bool discrete = false; // 0/1: the bit axis
+    };
+    // The values a line shows in the visible time range (min > max: none).
+    struct Span
+    {
+        double min = std::numeric_limits<double>::max();
+        double max = std::numeric_limits<double>::lowest();
+    };
+
+    explicit TrendValueAxes(QChart *chart);
+
+    // Replaces the axes of the chart; returns the axis of each line. An empty chart still has
+    // one value axis.
+    std::vector<QValueAxis *> rebuild(const std::vector<Line> &lines, bool separate);
+    // Ranges every axis to the values of its lines (with a margin); `zoomed`: only axes that came
+    // since the last fit, the others keep the user's range.
+    void fit(std::map<QValueAxis *, Span> spans, bool zoomed);
+    const std::vector<QValueAxis *> &axes() const { return m_axes; }
+
+    // The distance of the ticks on a value axis showing `range`: 1, 2 or 5 times a power of ten,
+    // about `targetTicks` ticks.
+    static double niceStep(double range, int targetTicks = 5);
+    // The ticks a value axis shows (round numbers in its range).
+    static QList<double> tickValues(const QValueAxis *axis);
+
+private:
+    QChart *m_chart;
+    std::vector<QValueAxis *> m_axes;
+    QValueAxis *m_bitAxis = nullptr;
+};
+
+} // namespace Fatek
