@@ -2,8 +2,8 @@
 // for a 46 read of 32 registers and a 48 mixed read of 20 elements.
 #include "bench.h"
 
-#include "binarycodec.h"
-#include "faconcodec.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/faconcodec.h"
 
 #include <QElapsedTimer>
 

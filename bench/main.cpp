@@ -2,7 +2,7 @@
 // to, measured in the same run. Run through tools/bench.sh; never part of CTest.
 #include "bench.h"
 
-#include "session.h"
+#include "core/session/session.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

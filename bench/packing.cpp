@@ -5,9 +5,9 @@
 // size formulas.
 #include "bench.h"
 
-#include "binarycodec.h"
-#include "faconcodec.h"
-#include "pollplanner.h"
+#include "core/planner/pollplanner.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/faconcodec.h"
 
 #include <algorithm>
 #include <limits>

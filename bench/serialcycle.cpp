@@ -5,7 +5,7 @@
 #include "bench.h"
 #include "simthread.h"
 
-#include "pollplanner.h"
+#include "core/planner/pollplanner.h"
 
 #include <QElapsedTimer>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "faultconfig.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/sim/faultconfig.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 #include <QThread>
 
@@ -55,7 +55,7 @@ private:
 
 } // namespace Fatek::Bench
 
-#include "session.h"
+#include "core/session/session.h"
 
 #include <QEventLoop>
 #include <QTimer>

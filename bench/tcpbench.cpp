@@ -5,11 +5,11 @@
 #include "bench.h"
 #include "simthread.h"
 
-#include "binarycodec.h"
-#include "binarydeframer.h"
-#include "faconcodec.h"
-#include "facondeframer.h"
-#include "sessionresult.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/binarydeframer.h"
+#include "core/protocol/faconcodec.h"
+#include "core/protocol/facondeframer.h"
+#include "core/session/sessionresult.h"
 
 #include <QElapsedTimer>
 #include <QTcpSocket>

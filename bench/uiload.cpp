@@ -9,12 +9,12 @@
 #include "bench.h"
 #include "simthread.h"
 
-#include "connection.h"
-#include "connectionmanager.h"
-#include "linksettingsio.h"
-#include "watchlist.h"
-#include "watchtablemodel.h"
-#include "watchtablewidget.h"
+#include "core/watch/watchlist.h"
+#include "ui/connection/connection.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/connection/linksettingsio.h"
+#include "ui/watch/watchtablemodel.h"
+#include "ui/watch/watchtablewidget.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -2,8 +2,8 @@
 
 // Shared body of the codec fuzzers: every frame a deframer yields goes through the slave-side and
 // master-side decoders; a query the slave side accepts must re-encode as a valid request.
-#include "codec.h"
-#include "deframer.h"
+#include "core/protocol/codec.h"
+#include "core/protocol/deframer.h"
 
 #include <cstdlib>
 #include <initializer_list>

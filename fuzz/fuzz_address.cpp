@@ -1,5 +1,5 @@
 // Address::parse on arbitrary text: never crashes, and whatever it accepts formats back to itself.
-#include "address.h"
+#include "core/protocol/address.h"
 
 #include <cstdlib>
 #include <string_view>

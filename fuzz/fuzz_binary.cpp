@@ -1,6 +1,6 @@
 // Binary deframers (both directions) and codec on arbitrary bytes.
-#include "binarycodec.h"
-#include "binarydeframer.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/binarydeframer.h"
 #include "decoderfuzz.h"
 
 using namespace Fatek;

@@ -1,7 +1,7 @@
 // FACON deframer and codec on arbitrary bytes.
+#include "core/protocol/faconcodec.h"
+#include "core/protocol/facondeframer.h"
 #include "decoderfuzz.h"
-#include "faconcodec.h"
-#include "facondeframer.h"
 
 using namespace Fatek;
 

@@ -2,10 +2,10 @@
 // either protocol, the slave-side decoder turns them into requests and SimulatedPlc executes them,
 // as SimServer does. Whatever the simulator answers must be an answer its own master-side decoder
 // reads back (an error answer decodes to the PLC error, a good one to values).
-#include "binarycodec.h"
-#include "faconcodec.h"
-#include "simconnection.h"
-#include "simulatedplc.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/faconcodec.h"
+#include "core/sim/simconnection.h"
+#include "core/sim/simulatedplc.h"
 
 #include <cstdlib>
 

@@ -1,7 +1,7 @@
 // Watch list loaders on arbitrary bytes: the JSON loader, the CSV import and the range syntax.
 // The first byte picks the loader. Whatever the JSON loader accepts is valid and saves to a file
 // that loads back to the same tables; whatever the CSV import accepts is a valid watch row.
-#include "watchlist.h"
+#include "core/watch/watchlist.h"
 
 #include <cstdlib>
 

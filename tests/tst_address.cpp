@@ -1,5 +1,5 @@
-#include "address.h"
-#include "request.h"
+#include "core/protocol/address.h"
+#include "core/protocol/request.h"
 
 #include <QTest>
 

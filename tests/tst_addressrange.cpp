@@ -1,6 +1,6 @@
 // AddressRange: the one grammar for ranges of addresses, "R0..R9" (watch lists, fatek-cli) and
 // "Y0-255" (forcing tools), with its errors.
-#include "addressrange.h"
+#include "core/protocol/addressrange.h"
 
 #include <QTest>
 

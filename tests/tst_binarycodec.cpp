@@ -1,4 +1,4 @@
-#include "binarycodec.h"
+#include "core/protocol/binarycodec.h"
 #include "testutil.h"
 
 #include <QTest>

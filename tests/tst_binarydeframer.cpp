@@ -1,5 +1,5 @@
-#include "binarycodec.h"
-#include "binarydeframer.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/binarydeframer.h"
 #include "testutil.h"
 
 #include <QTest>

@@ -1,5 +1,5 @@
 // DataLogger: the CSV data log of watch values (header, formats, quality, append, file errors).
-#include "datalogger.h"
+#include "core/watch/datalogger.h"
 
 #include <QFile>
 #include <QFileInfo>

@@ -2,8 +2,8 @@
 // and over a socat pty pair, and every frame must be on the simulator's count. Also the raw
 // command under protocol auto-detect (no probe for a frame that needs none, the right station,
 // binary framing for hex bytes).
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 #include <QEventLoop>
 #include <QFile>

@@ -1,4 +1,4 @@
-#include "faconcodec.h"
+#include "core/protocol/faconcodec.h"
 #include "testutil.h"
 
 #include <QTest>

@@ -1,5 +1,5 @@
-#include "faconcodec.h"
-#include "facondeframer.h"
+#include "core/protocol/faconcodec.h"
+#include "core/protocol/facondeframer.h"
 #include "testutil.h"
 
 #include <QTest>

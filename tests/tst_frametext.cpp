@@ -1,9 +1,9 @@
 // FrameText (hex and ASCII views of frames, parsing typed bytes) and RawFrame (framing of typed
 // bodies, the lenient header peek) on the frames of tests/data/vectors.json and on broken input.
-#include "binarycodec.h"
-#include "faconcodec.h"
-#include "frametext.h"
-#include "rawframe.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/faconcodec.h"
+#include "core/protocol/frametext.h"
+#include "core/protocol/rawframe.h"
 #include "testutil.h"
 
 #include <QTest>

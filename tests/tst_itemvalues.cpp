@@ -1,7 +1,7 @@
 // ItemValues: a watch item split into poll entries and write requests, and the polled words joined
 // back into the item's value, for every kind of item (discretes, 16/32-bit registers, floats and
 // doubles over several registers, swapped word order).
-#include "itemvalues.h"
+#include "core/watch/itemvalues.h"
 
 #include <QTest>
 

@@ -1,6 +1,6 @@
 // LinkSettings' serial format ("7E1"): the one parser fatek-sim, fatek-cli (--data --parity
 // --stop) and the summary text share.
-#include "linksettings.h"
+#include "core/transport/linksettings.h"
 
 #include <QTest>
 

@@ -1,6 +1,6 @@
-#include "binarycodec.h"
-#include "faconcodec.h"
-#include "pollplanner.h"
+#include "core/planner/pollplanner.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/faconcodec.h"
 #include "testutil.h"
 
 #include <QTest>

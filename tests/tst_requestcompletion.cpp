@@ -1,10 +1,10 @@
 // Request completion in core (Session::submit/sendRaw with a context, RequestTracker), against the
 // simulator over loopback TCP: one call per request on every outcome, on the context's thread, and
 // none once the context, the tracker's interest or the session is gone.
-#include "requesttracker.h"
-#include "session.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 #include <QHash>
 #include <QPointer>

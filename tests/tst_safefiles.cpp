@@ -1,12 +1,12 @@
 // Safe files: watch lists and settings are validated on load; a corrupt file gives an error naming
 // it and is never overwritten silently (not by a failed save, not by reopening it at start, not by
 // closing the window).
-#include "connectionmanager.h"
-#include "mainwindow.h"
+#include "core/watch/watchlist.h"
 #include "testutil.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/watch/watchtablewidget.h"
 #include "uitestutil.h"
-#include "watchlist.h"
-#include "watchtablewidget.h"
 
 #include <QAction>
 #include <QFile>

@@ -1,10 +1,10 @@
 // Sessions against the in-process simulator over TCP, UDP and a socat pty pair, in both protocols.
-#include "binarycodec.h"
-#include "faconcodec.h"
-#include "session.h"
-#include "simserver.h"
-#include "simulatedplc.h"
-#include "stationscanner.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/faconcodec.h"
+#include "core/session/session.h"
+#include "core/session/stationscanner.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 #include <QElapsedTimer>
 #include <QFile>

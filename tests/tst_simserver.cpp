@@ -2,12 +2,12 @@
 // the project's codecs: every command of both protocols, error codes, station filter, broadcast
 // silence, bad checksums and each fault knob.
 
-#include "binarycodec.h"
-#include "binarydeframer.h"
-#include "faconcodec.h"
-#include "facondeframer.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/binarydeframer.h"
+#include "core/protocol/faconcodec.h"
+#include "core/protocol/facondeframer.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 #include "testutil.h"
 
 #include <QElapsedTimer>

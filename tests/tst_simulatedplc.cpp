@@ -1,8 +1,8 @@
 // SimulatedPlc, PlcMemory and ModelProfile without any wire: typed requests in, typed answers out.
 
-#include "modelprofile.h"
-#include "plcmemory.h"
-#include "simulatedplc.h"
+#include "core/sim/modelprofile.h"
+#include "core/sim/plcmemory.h"
+#include "core/sim/simulatedplc.h"
 
 #include <QTest>
 

@@ -5,10 +5,10 @@
 // FATEK_SOAK_SECONDS=N runs the TCP soak for N seconds (default 20; UDP gets half of it). The
 // figures are printed with qInfo ("soak figures: ..."). Any N runs: main() raises Qt Test's
 // per-function watchdog to fit.
-#include "session.h"
-#include "sessionworker.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/session/session.h"
+#include "core/session/sessionworker.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 #include <QElapsedTimer>
 #include <QFile>

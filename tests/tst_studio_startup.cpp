@@ -2,9 +2,9 @@
 // executable run with QProcess (offscreen) with fatek-cli's link options and a watch-list FILE,
 // against a simulator served over loopback TCP by this test. Also the usage errors (exit 2 before
 // any window) and a FILE that cannot be loaded (reported, the window carries on).
-#include "modelprofile.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/sim/modelprofile.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 #include <QFile>
 #include <QFileInfo>

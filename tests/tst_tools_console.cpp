@@ -1,12 +1,12 @@
 // RawConsole against the simulator: typed frames (ASCII and hex, with and without automatic
 // framing) get their decoded answers in the log; corrupted answers are error lines; filters, cap,
 // save. The frame text itself (views, parsing, header peek) is tested in tst_frametext.
-#include "rawconsole.h"
-#include "rawsendbar.h"
-#include "toolpalette.h"
-#include "trafficfilterproxy.h"
-#include "trafficlogmodel.h"
 #include "tst_tools_fixture.h"
+#include "ui/tools/rawconsole.h"
+#include "ui/tools/rawsendbar.h"
+#include "ui/tools/toolpalette.h"
+#include "ui/tools/trafficfilterproxy.h"
+#include "ui/tools/trafficlogmodel.h"
 
 #include <QCheckBox>
 #include <QFile>

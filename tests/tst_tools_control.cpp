@@ -1,8 +1,8 @@
 // PlcControlPanel against the in-process simulator: RUN/STOP with confirmation, refusals in words,
 // STATUS1 lamps and the decoded detail status.
-#include "plccontrolpanel.h"
-#include "statusindicator.h"
 #include "tst_tools_fixture.h"
+#include "ui/tools/plccontrolpanel.h"
+#include "ui/tools/statusindicator.h"
 
 #include <QLabel>
 #include <QPushButton>

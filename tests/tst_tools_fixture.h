@@ -1,9 +1,9 @@
 // Shared by the tst_tools_* tests: an in-process simulator on a free TCP port and a Session to it.
 #pragma once
 
-#include "session.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/session/session.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 #include <QStringList>
 #include <QTest>

@@ -1,10 +1,10 @@
 // ForcingPanel and its forced points view against the simulator running the demo ladder.
-#include "discretecontrolbatch.h"
-#include "discretescan.h"
-#include "discretetablemodel.h"
-#include "forcedpointsview.h"
-#include "forcingpanel.h"
 #include "tst_tools_fixture.h"
+#include "ui/tools/discretecontrolbatch.h"
+#include "ui/tools/discretescan.h"
+#include "ui/tools/discretetablemodel.h"
+#include "ui/tools/forcedpointsview.h"
+#include "ui/tools/forcingpanel.h"
 
 #include <QItemSelectionModel>
 #include <QListWidget>

@@ -1,12 +1,12 @@
 // Manual check aid: renders each tool, connected to the simulator, to /tmp/tools-*.png
 // (QWidget::grab) so a person can look at them. Also checks each picture was produced.
-#include "forcedpointsview.h"
-#include "forcingpanel.h"
-#include "loopbackdialog.h"
-#include "plccontrolpanel.h"
-#include "rawconsole.h"
-#include "rawsendbar.h"
 #include "tst_tools_fixture.h"
+#include "ui/tools/forcedpointsview.h"
+#include "ui/tools/forcingpanel.h"
+#include "ui/tools/loopbackdialog.h"
+#include "ui/tools/plccontrolpanel.h"
+#include "ui/tools/rawconsole.h"
+#include "ui/tools/rawsendbar.h"
 
 #include <QImage>
 #include <QTabWidget>

@@ -1,8 +1,8 @@
 // LoopbackDialog against the simulator: a clean series, a series through a lossy link (it must keep
 // going), data validation; LoopbackStats arithmetic.
-#include "loopbackdialog.h"
-#include "loopbackstats.h"
+#include "core/session/loopbackstats.h"
 #include "tst_tools_fixture.h"
+#include "ui/tools/loopbackdialog.h"
 
 #include <QLabel>
 #include <QPlainTextEdit>

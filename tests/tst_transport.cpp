@@ -1,8 +1,8 @@
 // Transports against plain peers written here (echo servers, a socat pty pair): no PLC logic.
-#include "linksettings.h"
-#include "serialtransport.h"
-#include "tcptransport.h"
-#include "udptransport.h"
+#include "core/transport/linksettings.h"
+#include "core/transport/serialtransport.h"
+#include "core/transport/tcptransport.h"
+#include "core/transport/udptransport.h"
 
 #include <QFile>
 #include <QNetworkDatagram>

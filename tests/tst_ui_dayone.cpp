@@ -3,20 +3,20 @@
 // table tabs with the mouse, messages that must not move the rows, quitting with unsaved work,
 // shortcuts, a refused port, the raw console's questions and operator mode.
 // What reached a PLC is checked on the simulator's side of the wire.
-#include "connection.h"
-#include "connectionlistmodel.h"
-#include "connectionmanager.h"
-#include "forcingpanel.h"
-#include "mainwindow.h"
-#include "messageline.h"
-#include "rawconsole.h"
-#include "rawsendbar.h"
-#include "simserver.h"
-#include "simulatedplc.h"
-#include "stationscandialog.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 #include "testutil.h"
+#include "ui/connection/connection.h"
+#include "ui/connection/connectionlistmodel.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/connection/stationscandialog.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/forcingpanel.h"
+#include "ui/tools/messageline.h"
+#include "ui/tools/rawconsole.h"
+#include "ui/tools/rawsendbar.h"
+#include "ui/watch/watchtablemodel.h"
 #include "uitestutil.h"
-#include "watchtablemodel.h"
 
 #include <QApplication>
 #include <QDockWidget>

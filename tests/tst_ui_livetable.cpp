@@ -2,16 +2,16 @@
 // sine, Y0 blinking) over loopback TCP: typing into the table's own editor while values change,
 // choosing a format with the mouse, forced points marked in the table, a wrong station number.
 // What reached the PLC is counted on the simulator's side of the wire (its request log).
-#include "connection.h"
-#include "connectionlistmodel.h"
-#include "connectionmanager.h"
-#include "connectionspanel.h"
-#include "coretext.h"
-#include "mainwindow.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 #include "testutil.h"
-#include "watchtablemodel.h"
+#include "ui/connection/connection.h"
+#include "ui/connection/connectionlistmodel.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/connection/connectionspanel.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/coretext.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QAbstractItemView>
 #include <QApplication>

@@ -1,14 +1,14 @@
 // The real main window against an in-process simulator: connect, add items by address and by
 // range, watch values arrive and change, write a register and a discrete, see stale marks when the
 // simulator stops, save and reload a watch list, reject bad input, operator mode, the demo.
-#include "connectiondialog.h"
-#include "connectionmanager.h"
-#include "demosimulator.h"
-#include "mainwindow.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 #include "testutil.h"
-#include "watchtablemodel.h"
+#include "ui/connection/connectiondialog.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/mainwindow/demosimulator.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QApplication>
 #include <QDockWidget>

@@ -1,14 +1,14 @@
 // Operator mode in the main window: a preference switched live, protected by a password or a
 // confirmation, locked by --read-only, and enforced below the UI: a refused write, force, RUN or
 // raw frame never reaches the wire (the simulator counts every byte it receives).
-#include "connection.h"
-#include "connectionmanager.h"
-#include "mainwindow.h"
-#include "operatormode.h"
-#include "session.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/session/session.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 #include "testutil.h"
+#include "ui/connection/connection.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/mainwindow/operatormode.h"
 
 #include <QAction>
 #include <QLabel>

@@ -1,17 +1,17 @@
 // Translations: every message of the .ts files is finished and keeps its placeholders; with the
 // zh_TW translator the main window running the demo (tables, connections, docks, menus, actions,
 // status bar) shows no English words; known core messages come out in Chinese.
-#include "coretext.h"
-#include "languagemenu.h"
-#include "mainwindow.h"
-#include "watchtablemodel.h"
+#include "ui/mainwindow/languagemenu.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/coretext.h"
+#include "ui/watch/watchtablemodel.h"
 
-#include "address.h"
-#include "addressrange.h"
-#include "frametext.h"
-#include "protocolerror.h"
+#include "core/protocol/address.h"
+#include "core/protocol/addressrange.h"
+#include "core/protocol/frametext.h"
+#include "core/protocol/protocolerror.h"
+#include "core/watch/watchlist.h"
 #include "testutil.h"
-#include "watchlist.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>

@@ -1,13 +1,13 @@
 // The trend view and data logging in the main window, against the --demo simulator (its ladder
 // drives a sine of +-1000 with a 10 s period in R1).
-#include "connectionmanager.h"
-#include "mainwindow.h"
-#include "simserver.h"
-#include "simulatedplc.h"
-#include "tablelogger.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 #include "testutil.h"
-#include "trendview.h"
-#include "watchtablemodel.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/trend/tablelogger.h"
+#include "ui/trend/trendview.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QAction>
 #include <QChart>

@@ -1,8 +1,8 @@
 // The watch table model and the typed-input parsing, without a window or a PLC: values arrive as
 // the session would deliver them.
-#include "itemvalues.h"
-#include "watchinput.h"
-#include "watchtablemodel.h"
+#include "core/watch/itemvalues.h"
+#include "ui/watch/watchinput.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QSignalSpy>
 #include <QTest>

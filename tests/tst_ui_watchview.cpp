@@ -1,9 +1,9 @@
 // The watch table's view repaints only the visible cells that changed: a poll that changes the
 // value and time of some rows paints those cells, not their neighbours (Qt 6.4's QTableView
 // painted the next column and row of every changed range too).
-#include "watchdelegate.h"
-#include "watchtablemodel.h"
-#include "watchtableview.h"
+#include "ui/watch/watchdelegate.h"
+#include "ui/watch/watchtablemodel.h"
+#include "ui/watch/watchtableview.h"
 
 #include <QHeaderView>
 #include <QLineEdit>

@@ -1,4 +1,4 @@
-#include "valueformat.h"
+#include "core/watch/valueformat.h"
 
 #include <QTest>
 

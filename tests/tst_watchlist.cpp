@@ -1,4 +1,4 @@
-#include "watchlist.h"
+#include "core/watch/watchlist.h"
 
 #include <QDir>
 #include <QFile>

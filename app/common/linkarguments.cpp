@@ -1,6 +1,6 @@
 #include "linkarguments.h"
 
-#include "request.h"
+#include "core/protocol/request.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

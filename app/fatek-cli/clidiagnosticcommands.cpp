@@ -2,8 +2,8 @@
 #include "clirunner.h"
 
 #include "clitext.h"
-#include "plcstatus.h"
-#include "qtbytes.h"
+#include "core/protocol/plcstatus.h"
+#include "core/session/qtbytes.h"
 
 #include <cmath>
 

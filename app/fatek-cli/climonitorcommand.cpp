@@ -2,7 +2,7 @@
 #include "clirunner.h"
 
 #include "clitext.h"
-#include "plcstatus.h"
+#include "core/protocol/plcstatus.h"
 
 #include <QDateTime>
 #include <QJsonArray>

@@ -1,10 +1,10 @@
 #include "clioptions.h"
 
-#include "frametext.h"
-#include "itemvalues.h"
-#include "linkarguments.h"
-#include "request.h"
-#include "watchlist.h"
+#include "app/common/linkarguments.h"
+#include "core/protocol/frametext.h"
+#include "core/protocol/request.h"
+#include "core/watch/itemvalues.h"
+#include "core/watch/watchlist.h"
 
 #include <QRegularExpression>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "address.h"
-#include "linksettings.h"
-#include "watchlist.h"
+#include "core/protocol/address.h"
+#include "core/transport/linksettings.h"
+#include "core/watch/watchlist.h"
 
 #include <QByteArray>
 #include <QList>

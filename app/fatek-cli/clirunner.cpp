@@ -2,10 +2,10 @@
 #include "clirunner.h"
 
 #include "clitext.h"
-#include "modelprofile.h"
-#include "plcstatus.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/protocol/plcstatus.h"
+#include "core/sim/modelprofile.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 namespace Fatek {
 

@@ -2,13 +2,13 @@
 
 #include "clioptions.h"
 #include "clioutput.h"
-#include "datalogger.h"
-#include "itemvalues.h"
-#include "loopbackstats.h"
-#include "request.h"
-#include "requesttracker.h"
-#include "session.h"
-#include "stationscanner.h"
+#include "core/protocol/request.h"
+#include "core/session/loopbackstats.h"
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
+#include "core/session/stationscanner.h"
+#include "core/watch/datalogger.h"
+#include "core/watch/itemvalues.h"
 
 #include <QElapsedTimer>
 #include <QHash>

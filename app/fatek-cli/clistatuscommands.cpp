@@ -3,7 +3,7 @@
 #include "clirunner.h"
 
 #include "clitext.h"
-#include "plcstatus.h"
+#include "core/protocol/plcstatus.h"
 
 #include <QJsonArray>
 

@@ -1,7 +1,7 @@
 #include "clitext.h"
 
-#include "frametext.h"
-#include "qtbytes.h"
+#include "core/protocol/frametext.h"
+#include "core/session/qtbytes.h"
 
 #include <span>
 

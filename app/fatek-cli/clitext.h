@@ -2,8 +2,8 @@
 
 // Text helpers shared by the fatek-cli commands.
 
-#include "address.h"
-#include "request.h"
+#include "core/protocol/address.h"
+#include "core/protocol/request.h"
 
 #include <QByteArray>
 #include <QString>

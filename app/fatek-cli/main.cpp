@@ -1,6 +1,6 @@
+#include "app/common/quitsignal.h"
 #include "clioptions.h"
 #include "clirunner.h"
-#include "quitsignal.h"
 
 #include <QCoreApplication>
 #include <QJsonDocument>

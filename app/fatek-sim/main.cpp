@@ -1,10 +1,10 @@
 // fatek-sim: a simulated FATEK PLC on TCP, UDP and/or a serial port, both protocols everywhere.
 
-#include "linksettings.h"
-#include "modelprofile.h"
-#include "quitsignal.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "app/common/quitsignal.h"
+#include "core/sim/modelprofile.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
+#include "core/transport/linksettings.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

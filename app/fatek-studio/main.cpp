@@ -3,10 +3,10 @@
 // --language CODE (en, zh_TW: overrides the system locale and the View > Language choice), the
 // link options of fatek-cli (--tcp, --udp, --serial, ... : open that connection at start) and a
 // watch-list FILE (opened at start, its tables bound to that connection).
-#include "connectionmanager.h"
-#include "languagemenu.h"
-#include "linkarguments.h"
-#include "mainwindow.h"
+#include "app/common/linkarguments.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/mainwindow/languagemenu.h"
+#include "ui/mainwindow/mainwindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

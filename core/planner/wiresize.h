@@ -3,7 +3,7 @@
 // Exact sizes on the wire of queries, answers and their fields, per protocol: the costs the poll
 // planner minimises (PollPlanner::queryBytes and responseBytes are these).
 
-#include "request.h"
+#include "core/protocol/request.h"
 
 #include <cstddef>
 

@@ -2,8 +2,8 @@
 
 // Internal to fateksession (compiled with QT_NO_KEYWORDS: PlanStep has a member named "slots").
 
-#include "address.h"
-#include "pollplanner.h"
+#include "core/planner/pollplanner.h"
+#include "core/protocol/address.h"
 #include "sessionresult.h"
 #include "watchvalue.h"
 

@@ -3,7 +3,7 @@
 // The Qt boundary of the byte path: core/protocol speaks std bytes (Bytes, spans), transports and
 // the UI speak QByteArray. One pair of conversions for every layer above protocol.
 
-#include "request.h"
+#include "core/protocol/request.h"
 
 #include <QByteArray>
 

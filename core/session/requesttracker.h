@@ -1,6 +1,6 @@
 #pragma once
 
-#include "request.h"
+#include "core/protocol/request.h"
 #include "session.h"
 
 #include <QObject>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "linksettings.h"
-#include "request.h"
+#include "core/protocol/request.h"
+#include "core/transport/linksettings.h"
 #include "sessionresult.h"
 #include "sessionstatistics.h"
 #include "sessiontypes.h"

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "response.h"
-#include "result.h"
+#include "core/protocol/response.h"
+#include "core/protocol/result.h"
 
 #include <QByteArray>
 #include <QMetaType>

@@ -1,14 +1,14 @@
 #include "sessionworker.h"
 
-#include "binarycodec.h"
-#include "binarydeframer.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/binarydeframer.h"
+#include "core/protocol/faconcodec.h"
+#include "core/protocol/facondeframer.h"
+#include "core/protocol/rawframe.h"
+#include "core/transport/transport.h"
 #include "crossthreadcall.h"
-#include "faconcodec.h"
-#include "facondeframer.h"
 #include "qtbytes.h"
-#include "rawframe.h"
 #include "trafficlog.h"
-#include "transport.h"
 
 #include <algorithm>
 

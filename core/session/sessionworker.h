@@ -1,8 +1,8 @@
 #pragma once
 
-#include "codec.h"
-#include "deframer.h"
-#include "linksettings.h"
+#include "core/protocol/codec.h"
+#include "core/protocol/deframer.h"
+#include "core/transport/linksettings.h"
 #include "poller.h"
 #include "sessionresult.h"
 #include "sessionstatistics.h"

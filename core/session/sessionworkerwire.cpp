@@ -1,15 +1,15 @@
 // SessionWorker, one query on the wire: attempts, answers, timeouts, retries, delivery.
 #include "sessionworker.h"
 
-#include "binarycodec.h"
-#include "binarydeframer.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/binarydeframer.h"
+#include "core/protocol/faconcodec.h"
+#include "core/protocol/facondeframer.h"
+#include "core/protocol/rawframe.h"
+#include "core/transport/transport.h"
 #include "crossthreadcall.h"
-#include "faconcodec.h"
-#include "facondeframer.h"
 #include "qtbytes.h"
-#include "rawframe.h"
 #include "trafficlog.h"
-#include "transport.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "address.h"
+#include "core/protocol/address.h"
 
 #include <QDateTime>
 #include <QMetaType>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "element.h"
-#include "request.h"
+#include "core/protocol/element.h"
+#include "core/protocol/request.h"
 
 #include <array>
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "simconnection.h"
 
-#include "binarycodec.h"
-#include "faconcodec.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/faconcodec.h"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "binarydeframer.h"
-#include "facondeframer.h"
-#include "request.h"
+#include "core/protocol/binarydeframer.h"
+#include "core/protocol/facondeframer.h"
+#include "core/protocol/request.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>

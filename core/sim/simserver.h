@@ -1,7 +1,7 @@
 #pragma once
 
-#include "binarycodec.h"
-#include "faconcodec.h"
+#include "core/protocol/binarycodec.h"
+#include "core/protocol/faconcodec.h"
 #include "faultconfig.h"
 
 #include <QElapsedTimer>

@@ -1,10 +1,10 @@
 #pragma once
 
+#include "core/protocol/plcstatus.h"
+#include "core/protocol/request.h"
+#include "core/protocol/response.h"
 #include "modelprofile.h"
 #include "plcmemory.h"
-#include "plcstatus.h"
-#include "request.h"
-#include "response.h"
 
 #include <cstdint>
 #include <mutex>

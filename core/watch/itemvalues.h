@@ -1,9 +1,9 @@
 #pragma once
 
-#include "request.h"
-#include "result.h"
+#include "core/protocol/request.h"
+#include "core/protocol/result.h"
+#include "core/session/watchvalue.h"
 #include "watchlist.h"
-#include "watchvalue.h"
 
 #include <QList>
 #include <QString>

@@ -3,7 +3,7 @@
 // Validation and range expansion; the JSON file is in watchlistjson.cpp, the CSV import in
 // watchlistcsv.cpp.
 
-#include "addressrange.h"
+#include "core/protocol/addressrange.h"
 #include "watchlisterrors.h"
 
 namespace Fatek::WatchList {

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "address.h"
-#include "result.h"
+#include "core/protocol/address.h"
+#include "core/protocol/result.h"
 #include "valueformat.h"
 
 #include <QByteArray>

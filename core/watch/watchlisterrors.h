@@ -4,7 +4,7 @@
 // (watchlistjson.cpp) and the CSV import (watchlistcsv.cpp): every message names its place
 // ("table 2, item 5: ...", "line 7: ...").
 
-#include "result.h"
+#include "core/protocol/result.h"
 
 #include <QString>
 

@@ -1,7 +1,7 @@
 #include "connection.h"
 
-#include "coretext.h"
-#include "requesttracker.h"
+#include "core/session/requesttracker.h"
+#include "ui/tools/coretext.h"
 
 #include <QSet>
 

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "core/protocol/plcstatus.h"
+#include "core/session/session.h"
 #include "linksettingsio.h"
-#include "plcstatus.h"
-#include "session.h"
 
 #include <QElapsedTimer>
 #include <QHash>

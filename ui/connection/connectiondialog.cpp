@@ -1,7 +1,7 @@
 #include "connectiondialog.h"
 
-#include "coretext.h"
-#include "serialtransport.h"
+#include "core/transport/serialtransport.h"
+#include "ui/tools/coretext.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -1,7 +1,7 @@
 #include "connectionlistmodel.h"
 
 #include "connectionmanager.h"
-#include "coretext.h"
+#include "ui/tools/coretext.h"
 
 namespace Fatek {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "linksettings.h"
+#include "core/transport/linksettings.h"
 
 #include <QString>
 #include <QVariantMap>

@@ -1,7 +1,7 @@
 #include "stationscandialog.h"
 
 #include "connection.h"
-#include "stationscanner.h"
+#include "core/session/stationscanner.h"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
 #include "demosimulator.h"
 
-#include "crossthreadcall.h"
-#include "simserver.h"
-#include "simulatedplc.h"
+#include "core/session/crossthreadcall.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
 
 namespace Fatek {
 

@@ -1,7 +1,7 @@
 #include "linkstatuslabel.h"
 
-#include "connection.h"
-#include "coretext.h"
+#include "ui/connection/connection.h"
+#include "ui/tools/coretext.h"
 
 namespace Fatek {
 

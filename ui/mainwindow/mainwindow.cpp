@@ -1,14 +1,14 @@
 #include "mainwindow.h"
 
-#include "connectiondialog.h"
-#include "connectionmanager.h"
-#include "connectionspanel.h"
-#include "coretext.h"
 #include "demosimulator.h"
 #include "languagemenu.h"
 #include "linkstatuslabel.h"
-#include "tablelogger.h"
-#include "watchtablemodel.h"
+#include "ui/connection/connectiondialog.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/connection/connectionspanel.h"
+#include "ui/tools/coretext.h"
+#include "ui/trend/tablelogger.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QAction>
 #include <QApplication>

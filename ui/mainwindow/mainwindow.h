@@ -1,11 +1,11 @@
 #pragma once
 
-#include "linksettingsio.h"
-#include "result.h"
+#include "core/protocol/result.h"
 #include "tooldocks.h"
-#include "trendlogging.h"
+#include "ui/connection/linksettingsio.h"
+#include "ui/trend/trendlogging.h"
+#include "ui/watch/watchtablewidget.h"
 #include "watchlistdocument.h"
-#include "watchtablewidget.h"
 
 #include <QMainWindow>
 

@@ -1,7 +1,7 @@
 #include "operatormode.h"
 
-#include "connectionmanager.h"
 #include "mainwindow.h"
+#include "ui/connection/connectionmanager.h"
 
 #include <QAction>
 #include <QCryptographicHash>

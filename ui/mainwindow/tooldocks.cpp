@@ -1,12 +1,12 @@
 #include "tooldocks.h"
 
-#include "connection.h"
-#include "forcingpanel.h"
-#include "loopbackdialog.h"
 #include "mainwindow.h"
-#include "plccontrolpanel.h"
-#include "rawconsole.h"
-#include "stationscandialog.h"
+#include "ui/connection/connection.h"
+#include "ui/connection/stationscandialog.h"
+#include "ui/tools/forcingpanel.h"
+#include "ui/tools/loopbackdialog.h"
+#include "ui/tools/plccontrolpanel.h"
+#include "ui/tools/rawconsole.h"
 
 #include <QAction>
 #include <QDockWidget>

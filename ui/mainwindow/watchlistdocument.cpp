@@ -1,9 +1,9 @@
 #include "watchlistdocument.h"
 
-#include "coretext.h"
 #include "lastdirectory.h"
 #include "mainwindow.h"
-#include "watchtablemodel.h"
+#include "ui/tools/coretext.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QAction>
 #include <QDir>

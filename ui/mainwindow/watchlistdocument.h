@@ -1,7 +1,7 @@
 #pragma once
 
-#include "result.h"
-#include "watchlist.h"
+#include "core/protocol/result.h"
+#include "core/watch/watchlist.h"
 
 #include <QObject>
 #include <QString>

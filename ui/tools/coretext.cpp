@@ -1,6 +1,6 @@
 #include "coretext.h"
 
-#include "protocolerror.h"
+#include "core/protocol/protocolerror.h"
 
 #include <QRegularExpression>
 

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "element.h"
-#include "linksettings.h"
-#include "request.h"
-#include "sessiontypes.h"
-#include "valueformat.h"
+#include "core/protocol/element.h"
+#include "core/protocol/request.h"
+#include "core/session/sessiontypes.h"
+#include "core/transport/linksettings.h"
+#include "core/watch/valueformat.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -1,7 +1,7 @@
 #include "discretecontrolbatch.h"
 
+#include "core/session/requesttracker.h"
 #include "coretext.h"
-#include "requesttracker.h"
 
 #include <QCoreApplication>
 

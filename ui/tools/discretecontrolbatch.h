@@ -1,7 +1,7 @@
 #pragma once
 
-#include "address.h"
-#include "request.h"
+#include "core/protocol/address.h"
+#include "core/protocol/request.h"
 
 #include <QList>
 #include <QString>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "addressrange.h"
-#include "plcstatus.h"
+#include "core/protocol/addressrange.h"
+#include "core/protocol/plcstatus.h"
 
 #include <QCoreApplication>
 #include <QList>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "addressrange.h"
+#include "core/protocol/addressrange.h"
 
 #include <QAbstractTableModel>
 #include <QPalette>

@@ -2,13 +2,13 @@
 
 #include "messageline.h"
 
+#include "core/protocol/element.h"
+#include "core/protocol/plcstatus.h"
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
 #include "coretext.h"
 #include "discretecontrolbatch.h"
 #include "discretescan.h"
-#include "element.h"
-#include "plcstatus.h"
-#include "requesttracker.h"
-#include "session.h"
 #include "toolpalette.h"
 
 #include <QHBoxLayout>

@@ -2,12 +2,12 @@
 
 #include "messageline.h"
 
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
 #include "coretext.h"
 #include "discretecontrolbatch.h"
 #include "discretetablemodel.h"
 #include "forcedpointsview.h"
-#include "requesttracker.h"
-#include "session.h"
 #include "toolpalette.h"
 
 #include <QCheckBox>

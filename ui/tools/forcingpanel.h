@@ -1,7 +1,7 @@
 #pragma once
 
-#include "addressrange.h"
-#include "request.h"
+#include "core/protocol/addressrange.h"
+#include "core/protocol/request.h"
 #include "toolconfirmation.h"
 
 #include <QPointer>

@@ -1,9 +1,9 @@
 #include "loopbackdialog.h"
 
+#include "core/protocol/frametext.h"
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
 #include "coretext.h"
-#include "frametext.h"
-#include "requesttracker.h"
-#include "session.h"
 #include "toolpalette.h"
 
 #include <QComboBox>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "loopbackstats.h"
-#include "request.h"
+#include "core/protocol/request.h"
+#include "core/session/loopbackstats.h"
 
 #include <QDialog>
 #include <QElapsedTimer>

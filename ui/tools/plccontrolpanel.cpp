@@ -1,8 +1,8 @@
 #include "plccontrolpanel.h"
 
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
 #include "coretext.h"
-#include "requesttracker.h"
-#include "session.h"
 #include "statusindicator.h"
 #include "toolpalette.h"
 

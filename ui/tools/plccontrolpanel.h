@@ -1,6 +1,6 @@
 #pragma once
 
-#include "plcstatus.h"
+#include "core/protocol/plcstatus.h"
 #include "toolconfirmation.h"
 
 #include <QPointer>

@@ -1,8 +1,8 @@
 #include "rawconsole.h"
 
+#include "core/session/session.h"
 #include "coretext.h"
 #include "rawsendbar.h"
-#include "session.h"
 #include "toolpalette.h"
 #include "trafficfilterproxy.h"
 #include "trafficlogmodel.h"

@@ -1,11 +1,11 @@
 #include "rawsendbar.h"
 
+#include "core/protocol/frametext.h"
+#include "core/protocol/rawframe.h"
+#include "core/session/qtbytes.h"
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
 #include "coretext.h"
-#include "frametext.h"
-#include "qtbytes.h"
-#include "rawframe.h"
-#include "requesttracker.h"
-#include "session.h"
 #include "toolpalette.h"
 
 #include <QCheckBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "trafficlog.h"
+#include "core/session/trafficlog.h"
 
 #include <QSortFilterProxyModel>
 

@@ -1,8 +1,8 @@
 #include "trafficlogmodel.h"
 
+#include "core/protocol/frametext.h"
+#include "core/session/qtbytes.h"
 #include "coretext.h"
-#include "frametext.h"
-#include "qtbytes.h"
 #include "toolpalette.h"
 
 #include <QFontDatabase>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "rawframe.h"
-#include "trafficlog.h"
+#include "core/protocol/rawframe.h"
+#include "core/session/trafficlog.h"
 
 #include <QAbstractTableModel>
 #include <QPalette>

@@ -1,6 +1,6 @@
 #include "tablelogger.h"
 
-#include "watchtablemodel.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QDateTime>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "datalogger.h"
-#include "result.h"
+#include "core/protocol/result.h"
+#include "core/watch/datalogger.h"
 
 #include <QObject>
 #include <QPointer>

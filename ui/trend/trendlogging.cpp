@@ -1,10 +1,10 @@
 #include "trendlogging.h"
 
-#include "lastdirectory.h"
-#include "mainwindow.h"
 #include "tablelogger.h"
 #include "trendview.h"
-#include "watchtablemodel.h"
+#include "ui/mainwindow/lastdirectory.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QAction>
 #include <QDir>

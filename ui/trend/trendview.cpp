@@ -1,10 +1,10 @@
 #include "trendview.h"
 
-#include "coretext.h"
+#include "core/watch/valueformat.h"
 #include "trendchartview.h"
 #include "trendvalueaxes.h"
-#include "valueformat.h"
-#include "watchtablemodel.h"
+#include "ui/tools/coretext.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QComboBox>
 #include <QDateTime>

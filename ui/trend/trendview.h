@@ -1,8 +1,8 @@
 #pragma once
 
+#include "core/watch/watchlist.h"
 #include "trendbuffer.h"
 #include "trendvalueaxes.h"
-#include "watchlist.h"
 
 #include <QColor>
 #include <QPointer>

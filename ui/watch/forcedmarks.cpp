@@ -1,7 +1,7 @@
 #include "forcedmarks.h"
 
-#include "requesttracker.h"
-#include "session.h"
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
 #include "watchtablemodel.h"
 
 #include <map>

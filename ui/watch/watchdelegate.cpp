@@ -1,6 +1,6 @@
 #include "watchdelegate.h"
 
-#include "coretext.h"
+#include "ui/tools/coretext.h"
 #include "watchtablemodel.h"
 
 #include <QComboBox>

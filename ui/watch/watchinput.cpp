@@ -1,6 +1,6 @@
 #include "watchinput.h"
 
-#include "coretext.h"
+#include "ui/tools/coretext.h"
 
 #include <QRegularExpression>
 

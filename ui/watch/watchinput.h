@@ -1,6 +1,6 @@
 #pragma once
 
-#include "watchlist.h"
+#include "core/watch/watchlist.h"
 
 #include <QString>
 

@@ -1,6 +1,6 @@
 #include "watchtablemodel.h"
 
-#include "coretext.h"
+#include "ui/tools/coretext.h"
 
 #include <QFont>
 #include <QGuiApplication>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "itemvalues.h"
-#include "watchlist.h"
-#include "watchvalue.h"
+#include "core/session/watchvalue.h"
+#include "core/watch/itemvalues.h"
+#include "core/watch/watchlist.h"
 
 #include <QAbstractTableModel>
 #include <QElapsedTimer>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "connection.h"
-#include "watchlist.h"
+#include "core/watch/watchlist.h"
+#include "ui/connection/connection.h"
 
 #include <QHash>
 #include <QPointer>
