@@ -1458,20 +1458,6 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>Name:</translation>
         </message>
         <message>
-            <source>Open Watch List</source>
-            <translation>Open Watch List</translation>
-        </message>
-        <message>
-            <source>%1 cannot be loaded:
-%2</source>
-            <translation>%1 cannot be loaded:
-%2</translation>
-        </message>
-        <message>
-            <source>Loaded %1.</source>
-            <translation>Loaded %1.</translation>
-        </message>
-        <message>
             <source>The demo simulator could not start: %1</source>
             <translation>The demo simulator could not start: %1</translation>
         </message>

@@ -1452,20 +1452,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>名稱：</translation>
         </message>
         <message>
-            <source>Open Watch List</source>
-            <translation>開啟監看清單</translation>
-        </message>
-        <message>
-            <source>%1 cannot be loaded:
-%2</source>
-            <translation>無法載入 %1：
-%2</translation>
-        </message>
-        <message>
-            <source>Loaded %1.</source>
-            <translation>已載入 %1。</translation>
-        </message>
-        <message>
             <source>The demo simulator could not start: %1</source>
             <translation>無法啟動示範模擬器：%1</translation>
         </message>

@@ -361,21 +361,8 @@ Status MainWindow::openAtStartup(const std::optional<SavedConnection> &connectio
 {
     Connection *c = connection ? openConnection(*connection) : nullptr;
     Status loaded = Ok{};
-    if (!path.isEmpty()) {
-        loaded = m_document->load(path);
-        if (!loaded) {
-            // The words of File > Open; not modal, so the window (and --screenshot) carries on.
-            auto *box = new QMessageBox(
-                QMessageBox::Warning, tr("Open Watch List"),
-                tr("%1 cannot be loaded:\n%2")
-                    .arg(QFileInfo(path).fileName(), CoreText::message(loaded.error().message)),
-                QMessageBox::Ok, this);
-            box->setAttribute(Qt::WA_DeleteOnClose);
-            box->open();
-        } else {
-            showStatus(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
-        }
-    }
+    if (!path.isEmpty())
+        loaded = m_document->open(path);
     if (c) {
         for (WatchTableWidget *t : watchTables())
             t->setConnection(c);

@@ -103,14 +103,25 @@ void WatchListDocument::openDialog()
     if (path.isEmpty())
         return;
     setLastDirectory(path);
-    if (const Status s = load(path); !s) {
-        QMessageBox::warning(
-            m_window, tr("Open Watch List"),
+    open(path);
+}
+
+Status WatchListDocument::open(const QString &path)
+{
+    const Status loaded = load(path);
+    if (!loaded) {
+        // Not modal, so the window (and --screenshot at start-up) carries on.
+        auto *box = new QMessageBox(
+            QMessageBox::Warning, tr("Open Watch List"),
             tr("%1 cannot be loaded:\n%2")
-                .arg(QFileInfo(path).fileName(), CoreText::message(s.error().message)));
-        return;
+                .arg(QFileInfo(path).fileName(), CoreText::message(loaded.error().message)),
+            QMessageBox::Ok, m_window);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+        return loaded;
     }
     Q_EMIT statusMessage(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)));
+    return loaded;
 }
 
 bool WatchListDocument::saveDialog()

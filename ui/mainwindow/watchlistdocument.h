@@ -28,6 +28,9 @@ public:
     // Load replaces the tables only if the file is valid.
     Status save(const QString &path);
     Status load(const QString &path);
+    // load() and its outcome for the technician: a (non-modal) warning naming the file, or
+    // "Loaded …" in the status bar. File > Open and a FILE given at start-up both use it.
+    Status open(const QString &path);
     // CSV rows into the current table.
     Status importCsv(const QString &path);
     // Opens the watch list saved or opened last (when that preference is on); false if none.
