@@ -1,266 +1,12 @@
 #include "clioptions.h"
 
 #include "app/common/linkarguments.h"
+#include "clicommands.h"
+#include "clitext.h"
 #include "core/protocol/frametext.h"
-#include "core/protocol/request.h"
-#include "core/watch/itemvalues.h"
 #include "core/watch/watchlist.h"
 
-#include <QRegularExpression>
-
 namespace Fatek {
-
-namespace {
-
-using Kind = LinkSettings::Kind;
-
-Result<Address> parseAddress(const QString &text)
-{
-    return Address::parse(text.toStdString());
-}
-
-// One address, or a range "R0..R9" or "R0-9" (monitor, read).
-Result<QList<Address>> parseAddressOrRange(const QString &text)
-{
-    return WatchList::expandRange(text);
-}
-
-QString errorOf(const ProtocolError &e)
-{
-    return QString::fromStdString(e.message);
-}
-
-QString formatNames()
-{
-    QStringList names;
-    for (const DisplayFormat f : ValueFormat::allFormats())
-        names << ValueFormat::name(f);
-    return names.join(QStringLiteral(", "));
-}
-
-// Parses one command with its arguments into `s`; returns the usage error or nothing.
-QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, bool forceAscii,
-                  CliStep *result)
-{
-    CliStep &s = *result;
-    // The command.
-    QStringList positional = arguments;
-    s.name = positional.takeFirst().toLower();
-    const QString &cmd = s.name;
-    auto fail = [](const QString &message) {
-        return message;
-    };
-    auto argCount = [&](qsizetype min, qsizetype max) -> QString {
-        if (positional.size() < min)
-            return QStringLiteral("%1 needs more arguments (see --help).").arg(cmd);
-        if (max >= 0 && positional.size() > max)
-            return QStringLiteral("%1: unexpected argument \"%2\".").arg(cmd, positional.at(max));
-        return {};
-    };
-    auto countArg = [&](const QString &text, std::uint32_t max, std::uint32_t *out) -> QString {
-        qint64 c = 0;
-        if (!parseIntInRange(text, 1, max, &c))
-            return QStringLiteral("%1: COUNT must be 1..%2, not \"%3\".")
-                .arg(cmd)
-                .arg(max)
-                .arg(text);
-        *out = static_cast<std::uint32_t>(c);
-        return {};
-    };
-    QString err;
-
-    if (cmd == QLatin1String("status") || cmd == QLatin1String("run")
-        || cmd == QLatin1String("stop")) {
-        if (!(err = argCount(0, 0)).isEmpty())
-            return fail(err);
-        s.command = cmd == QLatin1String("status") ? CliCommand::ShowStatus
-                    : cmd == QLatin1String("run")  ? CliCommand::Run
-                                                   : CliCommand::Stop;
-    } else if (cmd == QLatin1String("read") || cmd == QLatin1String("forced")) {
-        if (!(err = argCount(1, cmd == QLatin1String("forced") ? 2 : -1)).isEmpty())
-            return fail(err);
-        s.command = cmd == QLatin1String("read") ? CliCommand::Read : CliCommand::Forced;
-        auto first = parseAddressOrRange(positional.at(0));
-        if (!first)
-            return fail(errorOf(first.error()));
-        s.addresses = first.value();
-        const bool range = s.addresses.size() > 1;
-        bool secondIsAddress = false;
-        if (positional.size() >= 2) {
-            bool isNumber = false;
-            positional.at(1).toLongLong(&isNumber);
-            secondIsAddress = !isNumber && s.command == CliCommand::Read;
-        }
-        if (secondIsAddress) {
-            // A mixed list (48): every further argument is an address or a range.
-            for (qsizetype i = 1; i < positional.size(); ++i) {
-                auto more = parseAddressOrRange(positional.at(i));
-                if (!more)
-                    return fail(errorOf(more.error()));
-                s.addresses += more.value();
-            }
-            s.mixed = true;
-            s.count = static_cast<std::uint32_t>(s.addresses.size());
-        } else {
-            if (positional.size() > 2)
-                return fail(
-                    QStringLiteral("%1: unexpected argument \"%2\".").arg(cmd, positional.at(2)));
-            if (s.command == CliCommand::Forced && !isDiscrete(s.addresses.first().type))
-                return fail(QStringLiteral("forced reads discretes (X Y M S T C), not %1.")
-                                .arg(QString::fromStdString(s.addresses.first().toString())));
-            if (positional.size() == 2) {
-                if (range)
-                    return fail(QStringLiteral("%1: give a range or a COUNT, not both.").arg(cmd));
-                const std::uint32_t max = isDiscrete(s.addresses.first().type)
-                                              ? Limits::maxDiscretes
-                                              : Limits::maxRegisterWords;
-                if (!(err = countArg(positional.at(1), max, &s.count)).isEmpty())
-                    return fail(err);
-            } else {
-                s.count = static_cast<std::uint32_t>(s.addresses.size());
-            }
-            s.addresses = {s.addresses.first()};
-            const Status span = validateSpan(s.addresses.first(), s.count);
-            if (!span)
-                return fail(errorOf(span.error()));
-        }
-    } else if (cmd == QLatin1String("write")) {
-        if (!(err = argCount(2, -1)).isEmpty())
-            return fail(err);
-        s.command = CliCommand::Write;
-        // "R100:float 1.5": the values are typed in FORMAT, each one an item of as many elements
-        // as the format spans (R100 and R101 here); without it, in the element's default format.
-        const QString &target = positional.at(0);
-        const qsizetype colon = target.indexOf(QLatin1Char(':'));
-        auto a = parseAddress(colon >= 0 ? target.left(colon) : target);
-        if (!a)
-            return fail(errorOf(a.error()));
-        WatchItemSpec item;
-        item.address = a.value();
-        item.format = ValueFormat::defaultFormat(item.address);
-        if (colon >= 0) {
-            const auto format = ValueFormat::fromName(target.mid(colon + 1).trimmed());
-            if (!format)
-                return fail(QStringLiteral("Unknown format \"%1\" in %2 (%3).")
-                                .arg(target.mid(colon + 1), target, formatNames()));
-            item.format = *format;
-            if (const Status valid = WatchList::validateEntry(item); !valid)
-                return fail(errorOf(valid.error()));
-        }
-        s.addresses = {item.address};
-        // Several values go to consecutive items; validateSpan below checks that they all exist.
-        const auto elements = static_cast<std::uint32_t>(ItemValues(item).elementCount());
-        for (qsizetype i = 1; i < positional.size(); ++i) {
-            const QString &text = positional.at(i);
-            item.address
-                = s.addresses.first().advanced(static_cast<std::uint32_t>(i - 1) * elements);
-            const ItemValues values(item);
-            const auto raw = values.parse(text);
-            if (!raw) {
-                // Discretes keep the sentence fatek-cli has always given them.
-                if (isDiscrete(item.address.type))
-                    return fail(
-                        QStringLiteral("%1 is a discrete: write 0, 1, on or off, not "
-                                       "\"%2\".")
-                            .arg(QString::fromStdString(item.address.toString()), text.trimmed()));
-                return fail(QStringLiteral("%1: %2").arg(
-                    QString::fromStdString(item.address.toString()), errorOf(raw.error())));
-            }
-            const std::vector<std::uint32_t> words = values.split(*raw);
-            s.values.insert(s.values.end(), words.cbegin(), words.cend());
-        }
-        s.count = static_cast<std::uint32_t>(s.values.size());
-        const Status span = validateSpan(s.addresses.first(), s.count);
-        if (!span)
-            return fail(errorOf(span.error()));
-    } else if (cmd == QLatin1String("set") || cmd == QLatin1String("reset")
-               || cmd == QLatin1String("enable") || cmd == QLatin1String("disable")) {
-        if (!(err = argCount(1, 1)).isEmpty())
-            return fail(err);
-        s.command = CliCommand::Control;
-        auto a = parseAddress(positional.at(0));
-        if (!a)
-            return fail(errorOf(a.error()));
-        if (!isDiscrete(a.value().type))
-            return fail(QStringLiteral("%1 works on discretes (X Y M S T C), not %2.")
-                            .arg(cmd, QString::fromStdString(a.value().toString())));
-        s.addresses = {a.value()};
-        const DiscreteOp op = cmd == QLatin1String("set")      ? DiscreteOp::Set
-                              : cmd == QLatin1String("reset")  ? DiscreteOp::Reset
-                              : cmd == QLatin1String("enable") ? DiscreteOp::Enable
-                                                               : DiscreteOp::Disable;
-        s.controlOp = static_cast<int>(op);
-    } else if (cmd == QLatin1String("loopback")) {
-        if (!(err = argCount(0, -1)).isEmpty())
-            return fail(err);
-        s.command = CliCommand::Loopback;
-        const QString text = positional.isEmpty() ? QStringLiteral("FATEK-CLI")
-                                                  : positional.join(QLatin1Char(' '));
-        s.loopbackData = text.toLatin1();
-        if (s.loopbackData.isEmpty()
-            || static_cast<std::uint32_t>(s.loopbackData.size()) > Limits::maxLoopback)
-            return fail(
-                QStringLiteral("loopback TEXT must be 1..%1 characters.").arg(Limits::maxLoopback));
-    } else if (cmd == QLatin1String("monitor")) {
-        if (!(err = argCount(1, -1)).isEmpty())
-            return fail(err);
-        s.command = CliCommand::Monitor;
-        for (const QString &text : positional) {
-            // "R0..R3:hex": a format after the colon applies to every element of the argument.
-            const qsizetype colon = text.indexOf(QLatin1Char(':'));
-            std::optional<DisplayFormat> format;
-            if (colon >= 0) {
-                format = ValueFormat::fromName(text.mid(colon + 1).trimmed());
-                if (!format)
-                    return fail(QStringLiteral("Unknown format \"%1\" in %2 (%3).")
-                                    .arg(text.mid(colon + 1), text, formatNames()));
-            }
-            auto more = parseAddressOrRange(colon >= 0 ? text.left(colon) : text);
-            if (!more)
-                return fail(errorOf(more.error()));
-            s.addresses += more.value();
-            for (qsizetype n = 0; n < more.value().size(); ++n)
-                s.formats << format;
-        }
-        if (s.addresses.size() > WatchList::MaxRangeItems)
-            return fail(QStringLiteral("monitor watches at most %1 elements.")
-                            .arg(WatchList::MaxRangeItems));
-    } else if (cmd == QLatin1String("raw")) {
-        if (!(err = argCount(1, -1)).isEmpty())
-            return fail(err);
-        s.command = CliCommand::Raw;
-        if (forceHex && forceAscii)
-            return fail(QStringLiteral("raw: give --hex or --ascii, not both."));
-        s.rawBytes = parseRawText(positional.join(QLatin1Char(' ')), forceHex, forceAscii, &err,
-                                  &s.rawHex);
-        if (!err.isEmpty())
-            return fail(err);
-        s.rawFrame = frameGiven;
-    } else if (cmd == QLatin1String("scan")) {
-        if (!(err = argCount(0, 1)).isEmpty())
-            return fail(err);
-        s.command = CliCommand::Scan;
-        if (!positional.isEmpty()) {
-            static const QRegularExpression range(QStringLiteral("^(\\d+)(?:\\.\\.(\\d+))?$"));
-            const auto m = range.match(positional.at(0).trimmed());
-            qint64 first = 0, last = 0;
-            if (!m.hasMatch() || !parseIntInRange(m.captured(1), 1, Limits::maxStation, &first)
-                || !parseIntInRange(m.captured(2).isEmpty() ? m.captured(1) : m.captured(2), 1,
-                                    Limits::maxStation, &last)
-                || last < first)
-                return fail(
-                    QStringLiteral("scan takes a station range like 1..16 (1..254), not \"%1\".")
-                        .arg(positional.at(0)));
-            s.scanFirst = static_cast<int>(first);
-            s.scanLast = static_cast<int>(last);
-        }
-    } else {
-        return fail(QStringLiteral("Unknown command \"%1\" (see --help).").arg(cmd));
-    }
-    return {};
-}
-
-} // namespace
 
 QString usageText()
 {
@@ -406,7 +152,7 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                 o.valueFormat = ValueFormat::fromName(value.trimmed());
                 if (!o.valueFormat)
                     return fail(QStringLiteral("--format takes one of %1, not \"%2\".")
-                                    .arg(formatNames(), value));
+                                    .arg(CliText::formatNames(), value));
             }
             continue;
         }
@@ -454,10 +200,10 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     qint64 v = 0;
 
     // The commands, separated by --then.
-    if (positional.isEmpty())
-        return fail(QStringLiteral(
-            "No command given (status, run, stop, read, write, set, reset, enable, disable, "
-            "forced, loopback, monitor, raw, scan)."));
+    if (positional.isEmpty()) {
+        return fail(QStringLiteral("No command given (%1).")
+                        .arg(commandNames().join(QStringLiteral(", "))));
+    }
     QList<QStringList> parts{QStringList{}};
     for (const QString &p : positional) {
         if (p == QLatin1String("\x01then"))
@@ -506,11 +252,7 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         const QString error = parseStep(parts.at(n), frameGiven, forceHex, forceAscii, &step);
         if (!error.isEmpty())
             return fail(error);
-        const bool answerNeeded
-            = step.command == CliCommand::ShowStatus || step.command == CliCommand::Read
-              || step.command == CliCommand::Forced || step.command == CliCommand::Loopback
-              || step.command == CliCommand::Monitor;
-        if (o.station == Limits::broadcastStation && answerNeeded)
+        if (o.station == Limits::broadcastStation && commandNeedsAnswer(step.name))
             return fail(
                 QStringLiteral("%1 needs an answer: station 0 is broadcast, PLCs do not answer it "
                                "(use --station 1..254).")
@@ -531,7 +273,7 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                 WatchItemSpec check = item;
                 check.station = 1;
                 if (const Status valid = WatchList::validateEntry(check); !valid)
-                    return fail(errorOf(valid.error()));
+                    return fail(CliText::error(valid.error()));
                 step.items << item;
             }
         }

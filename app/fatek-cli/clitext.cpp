@@ -2,6 +2,7 @@
 
 #include "core/protocol/frametext.h"
 #include "core/session/qtbytes.h"
+#include "core/watch/valueformat.h"
 
 #include <span>
 
@@ -46,6 +47,19 @@ QString yesNo(bool b)
 QString ms(double v)
 {
     return QString::number(v, 'f', 2);
+}
+
+QString error(const ProtocolError &e)
+{
+    return QString::fromStdString(e.message);
+}
+
+QString formatNames()
+{
+    QStringList names;
+    for (const DisplayFormat f : ValueFormat::allFormats())
+        names << ValueFormat::name(f);
+    return names.join(QStringLiteral(", "));
 }
 
 } // namespace Fatek::CliText

@@ -3,6 +3,7 @@
 // Text helpers shared by the fatek-cli commands.
 
 #include "core/protocol/address.h"
+#include "core/protocol/protocolerror.h"
 #include "core/protocol/request.h"
 
 #include <QByteArray>
@@ -23,5 +24,9 @@ QString valueHex(std::uint32_t value, const Address &address);
 QString yesNo(bool b);
 // Milliseconds with two decimals.
 QString ms(double v);
+// A core error as fatek-cli prints it.
+QString error(const ProtocolError &e);
+// The display formats' names, comma-separated (for usage errors).
+QString formatNames();
 
 } // namespace Fatek::CliText
