@@ -1,5 +1,7 @@
 #include "mainwindow.h"
 
+#include "operatormode.h"
+
 #include "demosimulator.h"
 #include "languagemenu.h"
 #include "linkstatuslabel.h"
@@ -76,7 +78,6 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
 
     m_linkStatus = new LinkStatusLabel(this);
     statusBar()->addPermanentWidget(m_linkStatus);
-    updateModeLabel(readOnly);
 
     connect(m_document, &WatchListDocument::statusMessage, this, &MainWindow::showStatus);
     createActions();
@@ -196,7 +197,14 @@ void MainWindow::createActions()
     m_toolsMenu = menuBar()->addMenu(tr("&Tools"));
     m_trend = new TrendLogging(this, m_toolsMenu, m_viewMenu);
     connect(m_trend, &TrendLogging::statusMessage, this, &MainWindow::showStatus);
-    createOperatorMode();
+    m_operatorMode = new OperatorMode(m_readOnly, this);
+    m_toolsMenu->addSeparator();
+    m_toolsMenu->addAction(m_operatorMode->toggleAction());
+    m_toolsMenu->addAction(m_operatorMode->passwordAction());
+    statusBar()->addPermanentWidget(m_operatorMode->label());
+    connect(m_operatorMode, &OperatorMode::activeChanged, this, &MainWindow::applyOperatorMode);
+    connect(m_operatorMode, &OperatorMode::message, this, &MainWindow::showStatus);
+    applyOperatorMode(m_operatorMode->isActive()); // the stored preference
     m_viewMenu->addSeparator();
     m_viewMenu->addMenu(new LanguageMenu(m_viewMenu));
 
@@ -567,6 +575,15 @@ void MainWindow::closeEvent(QCloseEvent *event)
     settings.setValue(geometryKey, saveGeometry());
     settings.setValue(stateKey, saveState());
     QMainWindow::closeEvent(event);
+}
+
+void MainWindow::applyOperatorMode(bool active)
+{
+    m_readOnly = active;
+    m_manager->setReadOnly(active);
+    m_document->updateWindowTitle();
+    if (m_tools)
+        m_tools->setTarget(currentConnection(), true);
 }
 
 } // namespace Fatek

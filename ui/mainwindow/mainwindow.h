@@ -102,9 +102,8 @@ public:
     void stopLogging() { m_trend->stopLogging(); }
 
 private:
-    void createOperatorMode();
+    // Every session, present and future, follows the mode (enforced there); the tools re-read it.
     void applyOperatorMode(bool active);
-    void updateModeLabel(bool active);
 
     bool m_readOnly;
     // Quit chosen, links draining their queued writes: the window closes once they are closed.
@@ -115,7 +114,6 @@ private:
     ConnectionsPanel *m_connectionsPanel;
     QTabWidget *m_tabs;
     LinkStatusLabel *m_linkStatus;
-    QLabel *m_modeLabel = nullptr;
     QMenu *m_recentMenu = nullptr;
     QAction *m_reconnectAction = nullptr;
     QMenu *m_viewMenu = nullptr;

@@ -1,10 +1,8 @@
 #include "operatormode.h"
 
-#include "mainwindow.h"
-#include "ui/connection/connectionmanager.h"
-
 #include <QAction>
 #include <QCryptographicHash>
+#include <QFont>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
@@ -13,7 +11,6 @@
 #include <QPalette>
 #include <QRandomGenerator>
 #include <QSettings>
-#include <QStatusBar>
 
 namespace Fatek {
 
@@ -54,6 +51,18 @@ OperatorMode::OperatorMode(bool locked, QWidget *window)
         m_toggle->setChecked(m_active); // a refused change flips the check mark back
     });
     connect(m_passwordAction, &QAction::triggered, this, &OperatorMode::passwordDialog);
+
+    m_label = new QLabel(tr("Operator mode (read-only)"), window);
+    m_label->setObjectName(QStringLiteral("modeLabel"));
+    QFont bold = m_label->font();
+    bold.setBold(true);
+    m_label->setFont(bold);
+    // Highlight colours of the palette: visible in light and dark themes alike.
+    m_label->setAutoFillBackground(true);
+    m_label->setBackgroundRole(QPalette::Highlight);
+    m_label->setForegroundRole(QPalette::HighlightedText);
+    m_label->setContentsMargins(6, 0, 6, 0);
+    m_label->setVisible(m_active);
 }
 
 bool OperatorMode::hasPassword() const
@@ -128,6 +137,7 @@ void OperatorMode::setActive(bool active)
     m_active = active;
     m_toggle->setChecked(active);
     m_passwordAction->setEnabled(!active);
+    m_label->setVisible(active);
     if (changed) {
         Q_EMIT message(active ? tr("Operator mode on: the PLC is read-only.")
                               : tr("Operator mode off."));
@@ -169,48 +179,6 @@ void OperatorMode::passwordDialog()
     setPassword(first);
     Q_EMIT message(first.isEmpty() ? tr("Operator-mode password removed.")
                                    : tr("Operator-mode password set."));
-}
-
-// ---- main window side (declared under OPERATOR MODE in mainwindow.h) ----------------------------
-
-void MainWindow::createOperatorMode()
-{
-    m_operatorMode = new OperatorMode(m_readOnly, this);
-    m_toolsMenu->addSeparator();
-    m_toolsMenu->addAction(m_operatorMode->toggleAction());
-    m_toolsMenu->addAction(m_operatorMode->passwordAction());
-    connect(m_operatorMode, &OperatorMode::activeChanged, this, &MainWindow::applyOperatorMode);
-    connect(m_operatorMode, &OperatorMode::message, this, &MainWindow::showStatus);
-    applyOperatorMode(m_operatorMode->isActive());
-}
-
-void MainWindow::updateModeLabel(bool active)
-{
-    if (!m_modeLabel && active) {
-        m_modeLabel = new QLabel(tr("Operator mode (read-only)"), this);
-        m_modeLabel->setObjectName(QStringLiteral("modeLabel"));
-        QFont bold = m_modeLabel->font();
-        bold.setBold(true);
-        m_modeLabel->setFont(bold);
-        // Highlight colours of the palette: visible in light and dark themes alike.
-        m_modeLabel->setAutoFillBackground(true);
-        m_modeLabel->setBackgroundRole(QPalette::Highlight);
-        m_modeLabel->setForegroundRole(QPalette::HighlightedText);
-        m_modeLabel->setContentsMargins(6, 0, 6, 0);
-        statusBar()->addPermanentWidget(m_modeLabel);
-    }
-    if (m_modeLabel)
-        m_modeLabel->setVisible(active);
-}
-
-void MainWindow::applyOperatorMode(bool active)
-{
-    m_readOnly = active;
-    m_manager->setReadOnly(active); // every session, present and future: enforced there
-    m_document->updateWindowTitle();
-    updateModeLabel(active);
-    if (m_tools) // tools re-read the session's mode (their write buttons)
-        m_tools->setTarget(currentConnection(), true);
 }
 
 } // namespace Fatek

@@ -6,6 +6,7 @@
 #include <functional>
 
 class QAction;
+class QLabel;
 class QWidget;
 
 namespace Fatek {
@@ -42,6 +43,8 @@ public:
     // "Operator Mode (Read-Only)" (checkable) and "Operator Mode Password…" for the menus.
     QAction *toggleAction() const { return m_toggle; }
     QAction *passwordAction() const { return m_passwordAction; }
+    // "Operator mode (read-only)" for the status bar, shown while the mode is on.
+    QLabel *label() const { return m_label; }
 
 Q_SIGNALS:
     void activeChanged(bool active);
@@ -60,6 +63,7 @@ private:
     Asker m_asker;
     QAction *m_toggle;
     QAction *m_passwordAction;
+    QLabel *m_label;
 };
 
 } // namespace Fatek
