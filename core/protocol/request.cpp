@@ -85,6 +85,25 @@ Request make(std::uint8_t station, Command command)
     r.command = command;
     return r;
 }
+
+// Consecutive elements from `first`: `n` of them read, or the values written.
+Request makeRead(std::uint8_t station, Command command, Address first, std::uint32_t n)
+{
+    Request r = make(station, command);
+    r.start = first;
+    r.count = n;
+    return r;
+}
+
+Request makeWrite(std::uint8_t station, Command command, Address first,
+                  std::vector<std::uint32_t> values)
+{
+    Request r = make(station, command);
+    r.start = first;
+    r.count = static_cast<std::uint32_t>(values.size());
+    r.values = std::move(values);
+    return r;
+}
 } // namespace
 
 Request Request::briefStatus(std::uint8_t station)
@@ -113,44 +132,27 @@ Request Request::discreteControl(std::uint8_t station, DiscreteOp operation, Add
 
 Request Request::readEnableFlags(std::uint8_t station, Address first, std::uint32_t n)
 {
-    Request r = make(station, Command::ReadEnableFlags);
-    r.start = first;
-    r.count = n;
-    return r;
+    return makeRead(station, Command::ReadEnableFlags, first, n);
 }
 
 Request Request::readDiscretes(std::uint8_t station, Address first, std::uint32_t n)
 {
-    Request r = make(station, Command::ReadDiscretes);
-    r.start = first;
-    r.count = n;
-    return r;
+    return makeRead(station, Command::ReadDiscretes, first, n);
 }
 
 Request Request::writeDiscretes(std::uint8_t station, Address first, std::vector<std::uint32_t> v)
 {
-    Request r = make(station, Command::WriteDiscretes);
-    r.start = first;
-    r.count = static_cast<std::uint32_t>(v.size());
-    r.values = std::move(v);
-    return r;
+    return makeWrite(station, Command::WriteDiscretes, first, std::move(v));
 }
 
 Request Request::readRegisters(std::uint8_t station, Address first, std::uint32_t n)
 {
-    Request r = make(station, Command::ReadRegisters);
-    r.start = first;
-    r.count = n;
-    return r;
+    return makeRead(station, Command::ReadRegisters, first, n);
 }
 
 Request Request::writeRegisters(std::uint8_t station, Address first, std::vector<std::uint32_t> v)
 {
-    Request r = make(station, Command::WriteRegisters);
-    r.start = first;
-    r.count = static_cast<std::uint32_t>(v.size());
-    r.values = std::move(v);
-    return r;
+    return makeWrite(station, Command::WriteRegisters, first, std::move(v));
 }
 
 Request Request::mixedRead(std::uint8_t station, std::vector<Address> list)

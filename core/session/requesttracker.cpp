@@ -13,7 +13,13 @@ void RequestTracker::setSession(Session *session)
     if (m_session == session)
         return;
     forgetPending();
+    disconnect(m_destroyed);
     m_session = session;
+    if (session)
+        m_destroyed = connect(session, &QObject::destroyed, this, [this] {
+            m_session = nullptr;
+            Q_EMIT sessionDestroyed();
+        });
 }
 
 Session::Completion RequestTracker::track(Callback callback)

@@ -37,10 +37,15 @@ public:
     // Requests submitted and not answered yet (forgotten ones not counted).
     int pendingCount() const { return m_pendingCount; }
 
+Q_SIGNALS:
+    // The session set here was deleted (its link closed for good): a tool shows "no connection".
+    void sessionDestroyed();
+
 private:
     Callback track(Callback callback);
 
     QPointer<Session> m_session;
+    QMetaObject::Connection m_destroyed;
     // Callbacks of an older generation (forgotten, or of a previous session) do nothing.
     quint64 m_generation = 0;
     int m_pendingCount = 0;

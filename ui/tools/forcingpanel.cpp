@@ -130,15 +130,14 @@ ForcingPanel::ForcingPanel(QWidget *parent)
             refresh();
     });
 
+    // A deleted session leaves the tool in "no connection".
+    connect(m_requests, &RequestTracker::sessionDestroyed, this,
+            [this] { setTarget(nullptr, m_station, {}); });
     setTarget(nullptr, 1, {});
 }
 
 void ForcingPanel::setTarget(Session *session, quint8 station, const QString &connectionName)
 {
-    disconnect(m_sessionGone);
-    if (session) // a deleted session leaves the tool in "no connection"
-        m_sessionGone = connect(session, &QObject::destroyed, this,
-                                [this] { setTarget(nullptr, m_station, {}); });
     m_session = session;
     m_station = station;
     m_connectionName = connectionName;

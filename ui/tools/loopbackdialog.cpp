@@ -99,15 +99,14 @@ LoopbackDialog::LoopbackDialog(QWidget *parent)
     m_intervalTimer.setSingleShot(true);
     connect(&m_intervalTimer, &QTimer::timeout, this, &LoopbackDialog::runNext);
 
+    // A deleted session leaves the tool in "no connection".
+    connect(m_requests, &RequestTracker::sessionDestroyed, this,
+            [this] { setTarget(nullptr, m_station, {}); });
     setTarget(nullptr, 1, {});
 }
 
 void LoopbackDialog::setTarget(Session *session, quint8 station, const QString &connectionName)
 {
-    disconnect(m_sessionGone);
-    if (session) // a deleted session leaves the tool in "no connection"
-        m_sessionGone = connect(session, &QObject::destroyed, this,
-                                [this] { setTarget(nullptr, m_station, {}); });
     if (m_running)
         finish(tr("Stopped: the target changed."));
     m_session = session;

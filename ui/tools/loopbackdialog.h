@@ -62,7 +62,6 @@ private:
 
     RequestTracker *m_requests;
     QPointer<Session> m_session;
-    QMetaObject::Connection m_sessionGone;
     quint8 m_station = 1;
     QString m_connectionName;
     bool m_running = false;

@@ -142,6 +142,9 @@ PlcControlPanel::PlcControlPanel(QWidget *parent)
             refreshDetail();
     });
 
+    // A deleted session leaves the tool in "no connection".
+    connect(m_requests, &RequestTracker::sessionDestroyed, this,
+            [this] { setTarget(nullptr, m_station, {}); });
     setTarget(nullptr, 1, {});
 }
 
@@ -155,10 +158,6 @@ QLabel *PlcControlPanel::addDetailRow(const QString &label)
 
 void PlcControlPanel::setTarget(Session *session, quint8 station, const QString &connectionName)
 {
-    disconnect(m_sessionGone);
-    if (session) // a deleted session leaves the tool in "no connection"
-        m_sessionGone = connect(session, &QObject::destroyed, this,
-                                [this] { setTarget(nullptr, m_station, {}); });
     m_session = session;
     m_station = station;
     m_connectionName = connectionName;

@@ -59,7 +59,6 @@ private:
 
     RequestTracker *m_requests;
     QPointer<Session> m_session;
-    QMetaObject::Connection m_sessionGone;
     quint8 m_station = 1;
     QString m_connectionName;
     Confirmer m_confirmer;
