@@ -19,6 +19,8 @@ packages=(
     libc6-dbg
     # tests: serial pty pairs, the independent Python reference; git for the format check
     socat python3 git clang-format
+    # tools/tidy.sh: clang-tidy with the checks in .clang-tidy
+    clang-tidy-14
     # packaging and its install test (tools/package-test.sh)
     dpkg-dev file desktop-file-utils groff-base man-db gzip
     # the watch-list MIME type: update-mime-database, xmllint, gio (content sniffing)

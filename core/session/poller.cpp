@@ -116,6 +116,7 @@ void Poller::startCycle(Group &group)
     // Copies: a step may be split while the plan is replaced.
     const std::vector<PlanStep> steps = [&order] {
         std::vector<PlanStep> copy;
+        copy.reserve(order.size());
         for (const PlanStep *step : order)
             copy.push_back(*step);
         return copy;

@@ -212,7 +212,7 @@ quint64 Session::enqueue(SessionJob &job, QObject *context, Completion completio
             },
             Qt::DirectConnection);
         const std::lock_guard locker(m_completions->mutex);
-        m_completions->pending.insert(id, std::move(pending));
+        m_completions->pending.emplace(id, std::move(pending));
     }
     CrossThreadCall::post(m_worker, [worker = m_worker, job = std::move(job)]() mutable {
         worker->enqueue(std::move(job));

@@ -105,6 +105,7 @@ std::vector<std::uint32_t> ItemValues::split(std::uint64_t raw) const
     const int bits = elementBits(m_item.address);
     const std::uint64_t mask = (std::uint64_t(1) << bits) - 1;
     std::vector<std::uint32_t> words;
+    words.reserve(static_cast<std::size_t>(elementCount()));
     for (int i = 0; i < elementCount(); ++i)
         words.push_back(static_cast<std::uint32_t>((raw >> (i * bits)) & mask));
     return words;

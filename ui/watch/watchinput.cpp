@@ -56,7 +56,7 @@ Result<QList<WatchItemSpec>> parsePasted(const QString &text, quint8 station)
     if (csv) {
         QString normalised = text;
         normalised.replace(QLatin1Char('\t'), QLatin1Char(';'));
-        const QString firstLine = lines.constFirst();
+        const QString &firstLine = lines.constFirst();
         const bool hasHeader = firstLine.contains(QLatin1String("address"), Qt::CaseInsensitive);
         bool hasStation
             = hasHeader && firstLine.contains(QLatin1String("station"), Qt::CaseInsensitive);
