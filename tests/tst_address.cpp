@@ -53,7 +53,7 @@ void TestAddress::parse()
     QFETCH(uint, number);
     QFETCH(QString, canonical);
     const auto r = Address::parse(text.toStdString());
-    QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
+    QVERIFY2(r.ok(), r.ok() ? "" : r.error().text().c_str());
     QCOMPARE(int(r->type), type);
     QCOMPARE(r->number, number);
     QCOMPARE(QString::fromStdString(r->toString()), canonical);
@@ -99,7 +99,7 @@ void TestAddress::rejects()
     const auto r = Address::parse(text.toStdString());
     QVERIFY(!r.ok());
     QCOMPARE(r.error().kind, ErrorKind::InvalidAddress);
-    const QString message = QString::fromStdString(r.error().message);
+    const QString message = QString::fromStdString(r.error().text());
     QVERIFY2(message.contains(messagePart), qPrintable(message));
 }
 
@@ -155,7 +155,7 @@ void TestAddress::spans()
     QVERIFY(!validateSpan({ElementType::WY, 9984 - 16 * 3}, 5).ok());
     const auto e = validateSpan({ElementType::X, 9990}, 20);
     QVERIFY(!e.ok());
-    QVERIFY(QString::fromStdString(e.error().message).contains("X9999"));
+    QVERIFY(QString::fromStdString(e.error().text()).contains("X9999"));
 }
 
 void TestAddress::validateLimits_data()
@@ -248,7 +248,7 @@ void TestAddress::validateLimits()
     const Status s = validateRequest(req, Protocol(protocol));
     QVERIFY(!s.ok());
     QCOMPARE(int(s.error().kind), kind);
-    const QString message = QString::fromStdString(s.error().message);
+    const QString message = QString::fromStdString(s.error().text());
     QVERIFY2(message.contains(messagePart), qPrintable(message));
 }
 
@@ -292,7 +292,7 @@ void TestAddress::describeAndTarget()
     QCOMPARE(Request::runStop(0, false).describe(), std::string("STOP (broadcast)"));
     const ProtocolError e
         = makePlcError(0xA, Request::readRegisters(1, {ElementType::R, 65535}, 1).target());
-    QCOMPARE(e.message, std::string("PLC error A: illegal address R65535"));
+    QCOMPARE(e.text(), std::string("PLC error A: illegal address R65535"));
     QCOMPARE(e.plcCode, 0xA);
     QCOMPARE(e.kind, ErrorKind::PlcError);
     QVERIFY(isWriteCommand(Command::MixedWrite));

@@ -73,7 +73,7 @@ void TestAddressRange::parse()
     QFETCH(int, count);
     QFETCH(QString, last);
     const Result<AddressRange> r = AddressRange::parse(input.toStdString());
-    QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
+    QVERIFY2(r.ok(), r.ok() ? "" : r.error().text().c_str());
     QCOMPARE(text(r->start.toString()), first);
     QCOMPARE(r->count, std::uint32_t(count));
     QCOMPARE(text(r->last().toString()), last);
@@ -137,7 +137,7 @@ void TestAddressRange::errors()
     QFETCH(QString, message);
     const Result<AddressRange> r = AddressRange::parse(input.toStdString());
     QVERIFY(!r.ok());
-    QCOMPARE(text(r.error().message), message);
+    QCOMPARE(text(r.error().text()), message);
     QCOMPARE(r.error().kind, ErrorKind::InvalidAddress);
 }
 
@@ -187,7 +187,7 @@ void TestAddressRange::list()
     QFETCH(QString, expected);
     const auto r = AddressRange::parseList(input.toStdString());
     if (!r.ok()) {
-        QCOMPARE(text(r.error().message), expected);
+        QCOMPARE(text(r.error().text()), expected);
         return;
     }
     QStringList got;

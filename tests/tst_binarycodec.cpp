@@ -232,16 +232,16 @@ void TestBinaryCodec::vectors()
     BinaryCodec codec;
 
     const auto encoded = codec.encodeRequest(c.request);
-    QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().message.c_str());
+    QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().text().c_str());
     QCOMPARE(toHex(*encoded), toHex(vector.query));
 
     const auto decodedQuery = codec.decodeRequest(vector.query);
-    QVERIFY2(decodedQuery.ok(), decodedQuery.ok() ? "" : decodedQuery.error().message.c_str());
+    QVERIFY2(decodedQuery.ok(), decodedQuery.ok() ? "" : decodedQuery.error().text().c_str());
     QVERIFY(*decodedQuery == c.request);
 
     const auto decoded = codec.decodeResponse(vector.response, c.request);
     if (c.response) {
-        QVERIFY2(decoded.ok(), decoded.ok() ? "" : decoded.error().message.c_str());
+        QVERIFY2(decoded.ok(), decoded.ok() ? "" : decoded.error().text().c_str());
         QCOMPARE(decoded->station, c.response->station);
         QVERIFY(decoded->command == c.response->command);
         QCOMPARE(decoded->values, c.response->values);
@@ -251,8 +251,8 @@ void TestBinaryCodec::vectors()
         QVERIFY(!decoded.ok());
         QVERIFY(decoded.error().kind == ErrorKind::PlcError);
         QCOMPARE(decoded.error().plcCode, c.plcError);
-        QVERIFY2(qs(decoded.error().message).contains(c.inMessage),
-                 decoded.error().message.c_str());
+        QVERIFY2(qs(decoded.error().text()).contains(c.inMessage),
+                 decoded.error().text().c_str());
         Response error = answer(c.request);
         error.errorCode = static_cast<std::uint8_t>(c.plcError);
         QCOMPARE(toHex(codec.encodeResponse(c.request, error)), toHex(vector.response));
@@ -282,7 +282,7 @@ void TestBinaryCodec::dAndDrOverlap()
     };
     for (const Request &r : requests) {
         const auto encoded = codec.encodeRequest(r);
-        QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().message.c_str());
+        QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().text().c_str());
         const auto decoded = codec.decodeRequest(*encoded);
         QVERIFY2(decoded.ok(), qPrintable(toHex(*encoded)));
         QVERIFY2(*decoded == r, qPrintable(qs(r.describe()) + QStringLiteral(" came back as ")
@@ -329,9 +329,9 @@ void TestBinaryCodec::everyElementRoundTrips()
         requests.push_back(Request::mixedWrite(1, {end, first}, {full, 0}));
         for (const Request &r : requests) {
             const auto encoded = codec.encodeRequest(r);
-            QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().message.c_str());
+            QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().text().c_str());
             const auto decoded = codec.decodeRequest(*encoded);
-            QVERIFY2(decoded.ok(), decoded.ok() ? "" : decoded.error().message.c_str());
+            QVERIFY2(decoded.ok(), decoded.ok() ? "" : decoded.error().text().c_str());
             QVERIFY2(*decoded == r, r.describe().c_str());
 
             // Answers carry the element's width.
@@ -341,7 +341,7 @@ void TestBinaryCodec::everyElementRoundTrips()
                                            : static_cast<std::uint32_t>(random()) & full);
             const Response resp = answer(r, values);
             const auto back = codec.decodeResponse(codec.encodeResponse(r, resp), r);
-            QVERIFY2(back.ok(), back.ok() ? "" : back.error().message.c_str());
+            QVERIFY2(back.ok(), back.ok() ? "" : back.error().text().c_str());
             QCOMPARE(back->values, values);
         }
     }
@@ -361,14 +361,14 @@ void TestBinaryCodec::everyCommandRoundTrips()
     const RoundTrip t = everyCommand().at(std::size_t(index));
     BinaryCodec codec;
     const auto encoded = codec.encodeRequest(t.request);
-    QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().message.c_str());
+    QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().text().c_str());
     const auto decoded = codec.decodeRequest(*encoded);
-    QVERIFY2(decoded.ok(), decoded.ok() ? "" : decoded.error().message.c_str());
+    QVERIFY2(decoded.ok(), decoded.ok() ? "" : decoded.error().text().c_str());
     QVERIFY(*decoded == t.request);
 
     const Bytes answerBytes = codec.encodeResponse(t.request, t.response);
     const auto back = codec.decodeResponse(answerBytes, t.request);
-    QVERIFY2(back.ok(), back.ok() ? "" : back.error().message.c_str());
+    QVERIFY2(back.ok(), back.ok() ? "" : back.error().text().c_str());
     QVERIFY(*back == t.response);
     // A 256-point count travels as 0.
     if (t.request.count == 256)
@@ -435,7 +435,7 @@ void TestBinaryCodec::limitsRejectedBeforeSending()
     const auto encoded = BinaryCodec().encodeRequest(request);
     QVERIFY(!encoded.ok());
     QCOMPARE(int(encoded.error().kind), kind);
-    QVERIFY(!encoded.error().message.empty());
+    QVERIFY(!encoded.error().text().empty());
 }
 
 void TestBinaryCodec::limitsAtTheBoundaryAccepted_data()
@@ -463,10 +463,10 @@ void TestBinaryCodec::limitsAtTheBoundaryAccepted()
     QFETCH(Request, request);
     BinaryCodec codec;
     const auto encoded = codec.encodeRequest(request);
-    QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().message.c_str());
+    QVERIFY2(encoded.ok(), encoded.ok() ? "" : encoded.error().text().c_str());
     QVERIFY(encoded->size() <= BinaryCodec::maxFrameSize);
     const auto decoded = codec.decodeRequest(*encoded);
-    QVERIFY2(decoded.ok(), decoded.ok() ? "" : decoded.error().message.c_str());
+    QVERIFY2(decoded.ok(), decoded.ok() ? "" : decoded.error().text().c_str());
     QVERIFY(*decoded == request);
 }
 
@@ -481,16 +481,16 @@ void TestBinaryCodec::mismatchesAreNeverValues()
     auto decoded = codec.decodeResponse(answerFrame(p), r);
     QVERIFY(!decoded.ok());
     QVERIFY(decoded.error().kind == ErrorKind::StationMismatch);
-    QVERIFY2(qs(decoded.error().message).contains(QLatin1String("station 2")),
-             decoded.error().message.c_str());
+    QVERIFY2(qs(decoded.error().text()).contains(QLatin1String("station 2")),
+             decoded.error().text().c_str());
 
     p = {0x01, 0x44};
     p.insert(p.end(), values.begin(), values.end());
     decoded = codec.decodeResponse(answerFrame(p), r);
     QVERIFY(!decoded.ok());
     QVERIFY(decoded.error().kind == ErrorKind::CommandMismatch);
-    QVERIFY2(qs(decoded.error().message).contains(QLatin1String("44")),
-             decoded.error().message.c_str());
+    QVERIFY2(qs(decoded.error().text()).contains(QLatin1String("44")),
+             decoded.error().text().c_str());
 
     // A PLC error from another station is still a station mismatch, not a PLC error.
     decoded = codec.decodeResponse(answerFrame({0x05, 0x46, 0x0A}), r);
@@ -547,7 +547,7 @@ void TestBinaryCodec::brokenFrames()
     const auto decoded = codec.decodeResponse(bytes, Request::readRegisters(1, addr(E::R, 12), 3));
     QVERIFY(!decoded.ok());
     QCOMPARE(int(decoded.error().kind), kind);
-    QVERIFY(!decoded.error().message.empty());
+    QVERIFY(!decoded.error().text().empty());
     QVERIFY(!codec.frameHeader(bytes).has_value() || kind == int(ErrorKind::BadFrame));
     QVERIFY(!codec.summarize(bytes).empty());
 }
@@ -595,7 +595,7 @@ void TestBinaryCodec::malformedAnswers()
     const auto decoded = BinaryCodec().decodeResponse(answerFrame(payload), request);
     QVERIFY(!decoded.ok());
     QVERIFY(decoded.error().kind == ErrorKind::MalformedResponse);
-    QVERIFY2(qs(decoded.error().message).contains(inMessage), decoded.error().message.c_str());
+    QVERIFY2(qs(decoded.error().text()).contains(inMessage), decoded.error().text().c_str());
 }
 
 void TestBinaryCodec::plcErrorsNameWhatWasAsked_data()
@@ -632,7 +632,7 @@ void TestBinaryCodec::plcErrorsNameWhatWasAsked()
     QVERIFY(!decoded.ok());
     QVERIFY(decoded.error().kind == ErrorKind::PlcError);
     QCOMPARE(decoded.error().plcCode, code);
-    QVERIFY2(qs(decoded.error().message).contains(message), decoded.error().message.c_str());
+    QVERIFY2(qs(decoded.error().text()).contains(message), decoded.error().text().c_str());
 }
 
 void TestBinaryCodec::slaveDecodeErrors_data()
@@ -700,7 +700,7 @@ void TestBinaryCodec::slaveDecodeErrors()
     const auto decoded = BinaryCodec().decodeRequest(bytes);
     QVERIFY2(!decoded.ok(), decoded.ok() ? decoded->describe().c_str() : "");
     QCOMPARE(decoded.error().plcCode, plcCode);
-    QVERIFY(!decoded.error().message.empty());
+    QVERIFY(!decoded.error().text().empty());
 }
 
 void TestBinaryCodec::wrapHeaderAndErrorAnswer()
@@ -787,19 +787,19 @@ void TestBinaryCodec::fuzzNeverCrashesAndReencodes()
             ++decodedQueries;
             // Whatever parses must be exactly what the codec would send for it.
             const auto again = codec.encodeRequest(*decoded);
-            QVERIFY2(again.ok(), again.ok() ? "" : again.error().message.c_str());
+            QVERIFY2(again.ok(), again.ok() ? "" : again.error().text().c_str());
             QVERIFY2(*again == q, qPrintable(toHex(q) + QStringLiteral(" -> ") + toHex(*again)));
         } else {
-            QVERIFY(!decoded.error().message.empty());
+            QVERIFY(!decoded.error().text().empty());
             // Checksum and framing are fine here: only a payload without command goes unanswered.
             QVERIFY2(decoded.error().plcCode != 0 || payload.size() < 2,
-                     decoded.error().message.c_str());
+                     decoded.error().text().c_str());
         }
         QVERIFY(!codec.summarize(q).empty());
 
         const Bytes a = answerFrame(payload);
         const auto response = codec.decodeResponse(a, decoded.ok() ? *decoded : anyRequest);
-        QVERIFY(response.ok() || !response.error().message.empty());
+        QVERIFY(response.ok() || !response.error().text().empty());
         QVERIFY(!codec.summarize(a).empty());
 
         // Raw noise.

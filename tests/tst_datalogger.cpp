@@ -194,8 +194,8 @@ void TestDataLogger::appendRefusesOtherColumns()
     DataLogger log;
     const Status s = log.open(path, {item("R1", DisplayFormat::Signed)});
     QVERIFY(!s);
-    QVERIFY2(QString::fromStdString(s.error().message).contains(QLatin1String("other columns")),
-             s.error().message.c_str());
+    QVERIFY2(QString::fromStdString(s.error().text()).contains(QLatin1String("other columns")),
+             s.error().text().c_str());
     QVERIFY(!log.isOpen());
     QCOMPARE(readLines(path).size(), 1);
 }
@@ -218,10 +218,10 @@ void TestDataLogger::unwritablePaths()
     const QList<WatchItemSpec> items{item("R0", DisplayFormat::Signed)};
     Status s = log.open(m_dir.filePath(QStringLiteral("missing/dir/x.csv")), items);
     QVERIFY(!s);
-    QVERIFY(QString::fromStdString(s.error().message).contains(QLatin1String("does not exist")));
+    QVERIFY(QString::fromStdString(s.error().text()).contains(QLatin1String("does not exist")));
     s = log.open(m_dir.path(), items);
     QVERIFY(!s);
-    QVERIFY(QString::fromStdString(s.error().message).contains(QLatin1String("folder")));
+    QVERIFY(QString::fromStdString(s.error().text()).contains(QLatin1String("folder")));
     s = log.open(m_dir.filePath(QStringLiteral("empty.csv")), {});
     QVERIFY(!s);
     // Writing without an open log is an error, not a crash.
@@ -237,7 +237,7 @@ void TestDataLogger::unwritablePaths()
         QSKIP("running as root: permissions are not enforced");
     s = log.open(readOnly, items);
     QVERIFY(!s);
-    QVERIFY(QString::fromStdString(s.error().message).contains(QLatin1String("Cannot open")));
+    QVERIFY(QString::fromStdString(s.error().text()).contains(QLatin1String("Cannot open")));
 #endif
 }
 
@@ -250,8 +250,8 @@ void TestDataLogger::diskFull()
     const Status s = log.open(QStringLiteral("/dev/full"), {item("R0", DisplayFormat::Signed)});
     // The header flush already fails: the error names the cause and the log is closed.
     QVERIFY(!s);
-    QVERIFY2(QString::fromStdString(s.error().message).contains(QLatin1String("Logging stopped")),
-             s.error().message.c_str());
+    QVERIFY2(QString::fromStdString(s.error().text()).contains(QLatin1String("Logging stopped")),
+             s.error().text().c_str());
     QVERIFY(!log.isOpen());
     QVERIFY(!log.writeRow(QDateTime::currentDateTime(), {good(1)}));
 #else

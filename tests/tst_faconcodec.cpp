@@ -151,14 +151,14 @@ void TestFaconCodec::vectors()
         const auto decodedQuery = m_codec.decodeRequest(v.query);
         QVERIFY2(decodedQuery.ok(),
                  qPrintable(v.what + QStringLiteral(": ")
-                            + (decodedQuery.ok() ? QString() : qs(decodedQuery.error().message))));
+                            + (decodedQuery.ok() ? QString() : qs(decodedQuery.error().text()))));
         QVERIFY2(*decodedQuery == c.request, what.constData());
 
         const auto decoded = m_codec.decodeResponse(v.response, c.request);
         if (c.response) {
             QVERIFY2(decoded.ok(),
                      qPrintable(v.what + QStringLiteral(": ")
-                                + (decoded.ok() ? QString() : qs(decoded.error().message))));
+                                + (decoded.ok() ? QString() : qs(decoded.error().text()))));
             QCOMPARE(decoded->station, c.response->station);
             QCOMPARE(decoded->command, c.response->command);
             QCOMPARE(decoded->errorCode, std::uint8_t(0));
@@ -237,7 +237,7 @@ void TestFaconCodec::roundTripEveryElement()
                 const QByteArray what = qs(r.describe()).toUtf8();
                 const auto enc = m_codec.encodeRequest(r);
                 QVERIFY2(enc.ok(), qPrintable(qs(r.describe()) + QStringLiteral(": ")
-                                              + (enc.ok() ? QString() : qs(enc.error().message))));
+                                              + (enc.ok() ? QString() : qs(enc.error().text()))));
                 // The fixed-width FACON address is in the frame.
                 const std::string text(enc->begin(), enc->end());
                 QVERIFY2(text.find(a.toFaconString()) != std::string::npos, what.constData());
@@ -305,7 +305,7 @@ void TestFaconCodec::roundTripEveryCommand()
         const QByteArray what = qs(c.request.describe()).toUtf8();
         const auto enc = m_codec.encodeRequest(c.request);
         QVERIFY2(enc.ok(), qPrintable(qs(c.request.describe()) + QStringLiteral(": ")
-                                      + (enc.ok() ? QString() : qs(enc.error().message))));
+                                      + (enc.ok() ? QString() : qs(enc.error().text()))));
         QVERIFY2(enc->size() <= FaconCodec::maxFrameSize, what.constData());
         const auto back = m_codec.decodeRequest(*enc);
         QVERIFY2(back.ok(), what.constData());
@@ -315,7 +315,7 @@ void TestFaconCodec::roundTripEveryCommand()
         const auto decoded = m_codec.decodeResponse(answerBytes, c.request);
         QVERIFY2(decoded.ok(),
                  qPrintable(qs(c.request.describe()) + QStringLiteral(": ")
-                            + (decoded.ok() ? QString() : qs(decoded.error().message))));
+                            + (decoded.ok() ? QString() : qs(decoded.error().text()))));
         QVERIFY2(*decoded == c.response, what.constData());
     }
 
@@ -412,8 +412,8 @@ void TestFaconCodec::limits()
         const auto enc = m_codec.encodeRequest(c.request);
         QVERIFY2(!enc.ok(), qPrintable(qs(c.request.describe())));
         QCOMPARE(enc.error().kind, c.kind);
-        QVERIFY2(enc.error().message.find(c.mention) != std::string::npos,
-                 qPrintable(qs(enc.error().message)));
+        QVERIFY2(enc.error().text().find(c.mention) != std::string::npos,
+                 qPrintable(qs(enc.error().text())));
     }
 
     // The largest legal requests pass.
@@ -447,8 +447,8 @@ void TestFaconCodec::notInFacon()
         const auto enc = m_codec.encodeRequest(r);
         QVERIFY(!enc.ok());
         QCOMPARE(enc.error().kind, ErrorKind::Unsupported);
-        QVERIFY2(enc.error().message.find("FACON") != std::string::npos,
-                 qPrintable(qs(enc.error().message)));
+        QVERIFY2(enc.error().text().find("FACON") != std::string::npos,
+                 qPrintable(qs(enc.error().text())));
     }
 }
 
@@ -460,11 +460,11 @@ void TestFaconCodec::responseErrors()
         const auto d = m_codec.decodeResponse(f, req ? *req : r46);
         QVERIFY2(!d.ok(), qPrintable(toFacon(f)));
         QVERIFY2(d.error().kind == kind,
-                 qPrintable(toFacon(f) + QStringLiteral(": ") + qs(d.error().message)));
-        QVERIFY(!d.error().message.empty());
+                 qPrintable(toFacon(f) + QStringLiteral(": ") + qs(d.error().text())));
+        QVERIFY(!d.error().text().empty());
         if (mention)
-            QVERIFY2(d.error().message.find(mention) != std::string::npos,
-                     qPrintable(qs(d.error().message)));
+            QVERIFY2(d.error().text().find(mention) != std::string::npos,
+                     qPrintable(qs(d.error().text())));
     };
     // Another station or command is an error, never a value.
     expectError(frame("0246010A57FC40001"), ErrorKind::StationMismatch, "station 2");
@@ -522,20 +522,20 @@ void TestFaconCodec::plcErrors()
         QVERIFY(!d.ok());
         QCOMPARE(d.error().kind, ErrorKind::PlcError);
         QCOMPARE(d.error().plcCode, code);
-        const std::string &msg = d.error().message;
+        const std::string &msg = d.error().text();
         QVERIFY2(msg.find(std::string("error ") + digit) != std::string::npos, msg.c_str());
         QVERIFY2(msg.find("R60000") != std::string::npos, msg.c_str());
         QVERIFY2(msg.find(plcErrorText(code)) != std::string::npos, msg.c_str());
     }
     const auto a = m_codec.decodeResponse(frame("0146A"), r);
-    QVERIFY2(a.error().message.find("illegal address") != std::string::npos,
-             a.error().message.c_str());
+    QVERIFY2(a.error().text().find("illegal address") != std::string::npos,
+             a.error().text().c_str());
     // Error answer to a write.
     const Request w = Request::writeDiscretes(1, addr(ElementType::Y, 300), {1});
     const auto e = m_codec.decodeResponse(frame("01453"), w);
     QVERIFY(!e.ok());
     QCOMPARE(e.error().plcCode, 3);
-    QVERIFY2(e.error().message.find("Y300") != std::string::npos, e.error().message.c_str());
+    QVERIFY2(e.error().text().find("Y300") != std::string::npos, e.error().text().c_str());
 }
 
 void TestFaconCodec::lowerCaseHex()
@@ -543,7 +543,7 @@ void TestFaconCodec::lowerCaseHex()
     const Request r = Request::readRegisters(0xAB, addr(ElementType::R, 12), 3);
     Bytes f = frame("ab46010a57fc40001");
     const auto d = m_codec.decodeResponse(f, r);
-    QVERIFY2(d.ok(), d.ok() ? "" : d.error().message.c_str());
+    QVERIFY2(d.ok(), d.ok() ? "" : d.error().text().c_str());
     QCOMPARE(d->values, (std::vector<std::uint32_t>{0x10A5, 0x7FC4, 0x0001}));
     // Lower-case LRC too: <STX>0140 sums to C7.
     Bytes lower = frame("0140");
@@ -560,11 +560,11 @@ void TestFaconCodec::decodeRequestErrors()
         QVERIFY2(!d.ok(), qPrintable(toFacon(f)));
         QVERIFY2(d.error().plcCode == code,
                  qPrintable(toFacon(f) + QStringLiteral(": code %1, ").arg(d.error().plcCode)
-                            + qs(d.error().message)));
-        QVERIFY(!d.error().message.empty());
+                            + qs(d.error().text())));
+        QVERIFY(!d.error().text().empty());
         if (mention)
-            QVERIFY2(d.error().message.find(mention) != std::string::npos,
-                     qPrintable(qs(d.error().message)));
+            QVERIFY2(d.error().text().find(mention) != std::string::npos,
+                     qPrintable(qs(d.error().text())));
     };
     Bytes badLrc = frame("014603R00012");
     badLrc[badLrc.size() - 2] ^= 0x01;

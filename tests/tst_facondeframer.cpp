@@ -67,7 +67,7 @@ void TestFaconDeframer::expectFrames(const std::vector<DeframedItem> &items,
     for (std::size_t i = 0; i < items.size(); ++i) {
         QVERIFY2(!items[i].error.has_value(),
                  qPrintable(toFacon(items[i].frame) + QStringLiteral(": ")
-                            + QString::fromStdString(items[i].error ? items[i].error->message
+                            + QString::fromStdString(items[i].error ? items[i].error->text()
                                                                     : std::string())));
         QVERIFY2(items[i].frame == frames[i], qPrintable(toFacon(items[i].frame)));
     }

@@ -117,7 +117,7 @@ void TestFrameText::parseErrors()
     const std::string utf8 = input.toStdString();
     const Result<Bytes> r = hex ? FrameText::parseHex(utf8) : FrameText::parseAscii(utf8);
     QVERIFY(!r);
-    QCOMPARE(text(r.error().message), message);
+    QCOMPARE(text(r.error().text()), message);
     QCOMPARE(r.error().kind, ErrorKind::InvalidRequest);
 }
 
@@ -143,7 +143,7 @@ void TestFrameText::guess()
     QFETCH(QString, bytesHex);
     bool wasHex = !hex;
     const Result<Bytes> r = FrameText::parse(input.toStdString(), FrameText::Typed::Guess, &wasHex);
-    QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
+    QVERIFY2(r.ok(), r.ok() ? "" : r.error().text().c_str());
     QCOMPARE(wasHex, hex);
     QCOMPARE(*r, TestUtil::fromHex(bytesHex));
 }

@@ -237,7 +237,7 @@ void TestItemValues::typedValuesBecomeWrites()
     spec.station = 3;
     const ItemValues values(spec);
     const auto raw = values.parse(text);
-    QVERIFY2(raw.ok(), raw.ok() ? "" : raw.error().message.c_str());
+    QVERIFY2(raw.ok(), raw.ok() ? "" : raw.error().text().c_str());
     QCOMPARE(values.split(*raw), written);
     const Request r = values.writeRequest(*raw);
     QCOMPARE(static_cast<int>(r.command), command);
@@ -281,7 +281,7 @@ void TestItemValues::typingErrors()
     QFETCH(QString, message);
     const auto raw = ItemValues(spec).parse(text);
     QVERIFY(!raw.ok());
-    const QString error = QString::fromStdString(raw.error().message);
+    const QString error = QString::fromStdString(raw.error().text());
     QVERIFY2(error.contains(message), qPrintable(error));
 }
 

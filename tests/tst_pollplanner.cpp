@@ -49,7 +49,7 @@ void checkPlanConsistent(const Plan &plan, std::span<const WatchItem> items, Pro
         byId[i.id] = i;
     for (const PlanStep &step : plan.steps) {
         const Status valid = validateRequest(step.request, protocol);
-        QVERIFY2(valid.ok(), valid.ok() ? "" : valid.error().message.c_str());
+        QVERIFY2(valid.ok(), valid.ok() ? "" : valid.error().text().c_str());
         QCOMPARE(step.wireBytes, PollPlanner::queryBytes(step.request, protocol)
                                      + PollPlanner::responseBytes(step.request, protocol));
         total += step.wireBytes;
@@ -288,7 +288,7 @@ void TestPollPlanner::sizesMatchFaconCodec()
     const FaconCodec codec;
     for (const Request &r : sampleRequests(Protocol::Facon)) {
         const auto frame = codec.encodeRequest(r);
-        QVERIFY2(frame.ok(), frame.ok() ? "" : frame.error().message.c_str());
+        QVERIFY2(frame.ok(), frame.ok() ? "" : frame.error().text().c_str());
         QCOMPARE(PollPlanner::queryBytes(r, Protocol::Facon), frame->size());
         QCOMPARE(PollPlanner::responseBytes(r, Protocol::Facon),
                  codec.encodeResponse(r, zeroAnswer(r)).size());
@@ -300,7 +300,7 @@ void TestPollPlanner::sizesMatchBinaryCodec()
     const BinaryCodec codec;
     for (const Request &r : sampleRequests(Protocol::Binary)) {
         const auto frame = codec.encodeRequest(r);
-        QVERIFY2(frame.ok(), frame.ok() ? "" : frame.error().message.c_str());
+        QVERIFY2(frame.ok(), frame.ok() ? "" : frame.error().text().c_str());
         QCOMPARE(PollPlanner::queryBytes(r, Protocol::Binary), frame->size());
         QCOMPARE(PollPlanner::responseBytes(r, Protocol::Binary),
                  codec.encodeResponse(r, zeroAnswer(r)).size());
@@ -486,7 +486,7 @@ void TestPollPlanner::fileRegistersBinaryOnly()
     QCOMPARE(facon.requestCount(), std::size_t{1});
     QCOMPARE(facon.unplannable.size(), std::size_t{2});
     QCOMPARE(facon.unplannable[0].itemId, std::uint64_t{1});
-    QVERIFY(QString::fromStdString(facon.unplannable[0].reason).contains("FACON"));
+    QVERIFY(QString::fromStdString(english(facon.unplannable[0].reason)).contains("FACON"));
     QCOMPARE(facon.unplannable[1].itemId, std::uint64_t{2});
 }
 
@@ -503,7 +503,7 @@ void TestPollPlanner::badItemsReported()
     checkPlanConsistent(plan, items, Protocol::Facon);
     QCOMPARE(plan.requestCount(), std::size_t{1});
     QCOMPARE(plan.unplannable.size(), std::size_t{4});
-    QVERIFY(QString::fromStdString(plan.unplannable[0].reason).contains("broadcast"));
+    QVERIFY(QString::fromStdString(english(plan.unplannable[0].reason)).contains("broadcast"));
 }
 
 void TestPollPlanner::deterministicOrder()

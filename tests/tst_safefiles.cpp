@@ -81,7 +81,7 @@ private Q_SLOTS:
         QVERIFY(writeAll(path, bytes));
         const auto loaded = WatchList::loadFromFile(path);
         QVERIFY(!loaded.ok());
-        const QString message = QString::fromStdString(loaded.error().message);
+        const QString message = QString::fromStdString(loaded.error().text());
         QVERIFY2(message.contains(expected), qPrintable(message));
         QCOMPARE(readAll(path), bytes);
     }
@@ -147,7 +147,7 @@ private Q_SLOTS:
         QCOMPARE(c.station, quint8(1));
         QCOMPARE(c.settings.kind, LinkSettings::Kind::Tcp);
         QCOMPARE(c.settings.port, quint16(500));
-        const QString problem = c.settings.validate();
+        const QString problem = englishText(c.settings.validate());
         QVERIFY2(problem.contains(QStringLiteral("Timeout")), qPrintable(problem));
         QCOMPARE(manager.unreadableRecent(), 2);
 

@@ -88,7 +88,7 @@ static void dumpLog()
     const quint64 last = g_session->trafficLog()->lastSequence();
     const auto entries = g_session->trafficLog()->entries(last > 8 ? last - 8 : 0);
     for (const TrafficEntry &e : entries)
-        qDebug() << int(e.direction) << e.bytes << e.summary << e.error;
+        qDebug() << int(e.direction) << e.bytes << englishText(e.summary) << englishText(e.error);
 }
 
 class TestSession : public QObject
@@ -418,7 +418,8 @@ void TestSession::refusedWhenNotOpen()
     serial.open();
     QVERIFY(states.wait(5000));
     QCOMPARE(states.last().at(0).value<LinkState>(), LinkState::Closed);
-    QCOMPARE(states.last().at(1).toString(), QStringLiteral("Choose a serial port."));
+    QCOMPARE(englishText(states.last().at(1).value<Message>()),
+             QStringLiteral("Choose a serial port."));
 }
 
 void TestSession::invalidRequestNeverSent()
@@ -497,7 +498,7 @@ void TestSession::damagedAnswersAreRetried()
     // Every damaged answer shows up in the traffic log with its reason.
     int flagged = 0;
     for (const TrafficEntry &entry : session->trafficLog()->entries())
-        flagged += entry.error.isEmpty() ? 0 : 1;
+        flagged += entry.error.empty() ? 0 : 1;
     QVERIFY(flagged > 0);
 }
 
@@ -518,7 +519,7 @@ void TestSession::otherStationIgnored()
     bool logged = false;
     for (const TrafficEntry &entry : session->trafficLog()->entries()) {
         if (entry.direction == TrafficEntry::Direction::In
-            && entry.error.contains(QStringLiteral("station")))
+            && englishText(entry.error).contains(QStringLiteral("station")))
             logged = true;
     }
     QVERIFY(logged);
@@ -707,9 +708,9 @@ void TestSession::reconnectAfterSimulatorRestart()
     QList<LinkState> states;
     QStringList reasons;
     connect(session.get(), &Session::linkStateChanged, this,
-            [&](LinkState state, const QString &reason) {
+            [&](LinkState state, const Message &reason) {
                 states.append(state);
-                reasons.append(reason);
+                reasons.append(englishText(reason));
             });
     Results results(session.get());
     CHECK_OK(run(*session, results, Request::briefStatus(1)));
@@ -789,7 +790,7 @@ void TestSession::trafficLogBounded()
     QSignalSpy added(&log, &TrafficLog::entriesAdded);
     for (int i = 0; i < 25; ++i)
         log.append(TrafficEntry::Direction::Out, QByteArray::number(i),
-                   QStringLiteral("frame %1").arg(i));
+                   Message::text(QStringLiteral("frame %1").arg(i).toStdString()));
     QCOMPARE(log.size(), 10);
     QCOMPARE(added.count(), 25);
     QCOMPARE(log.lastSequence(), quint64(25));
@@ -799,7 +800,7 @@ void TestSession::trafficLogBounded()
     QCOMPARE(all.last().bytes, QByteArray("24"));
     const QList<TrafficEntry> since = log.entries(22);
     QCOMPARE(since.size(), 3);
-    QCOMPARE(since.first().summary, QStringLiteral("frame 22"));
+    QCOMPARE(englishText(since.first().summary), QStringLiteral("frame 22"));
     QVERIFY(log.entries(25).isEmpty());
     log.clear();
     QCOMPARE(log.size(), 0);
@@ -816,8 +817,8 @@ void TestSession::trafficLogBounded()
     QCOMPARE(entries.at(1).direction, TrafficEntry::Direction::In);
     QVERIFY(entries.at(0).bytes.startsWith("\x02"
                                            "0146"));
-    QVERIFY(!entries.at(0).summary.isEmpty());
-    QVERIFY(entries.at(1).error.isEmpty());
+    QVERIFY(!entries.at(0).summary.empty());
+    QVERIFY(entries.at(1).error.empty());
 }
 
 void TestSession::polling()
@@ -895,7 +896,8 @@ void TestSession::pollingIsolatesBadAddress()
         for (const WatchValue &v : batch) {
             if (v.itemId == 2) {
                 QCOMPARE(v.quality, ValueQuality::Error);
-                QVERIFY2(v.error.contains(QStringLiteral("illegal address")), qPrintable(v.error));
+                QVERIFY2(englishText(v.error).contains(QStringLiteral("illegal address")),
+                         qPrintable(englishText(v.error)));
             } else {
                 QCOMPARE(v.quality, ValueQuality::Good);
             }
@@ -936,7 +938,8 @@ void TestSession::pollingSeveralStations()
             QCOMPARE(v.quality, ValueQuality::Good);
         } else {
             QCOMPARE(v.quality, ValueQuality::Stale);
-            QVERIFY2(v.error.contains(QStringLiteral("station 2")), qPrintable(v.error));
+            QVERIFY2(englishText(v.error).contains(QStringLiteral("station 2")),
+                     qPrintable(englishText(v.error)));
         }
     }
     const SessionStatistics stats = session->statistics();
@@ -992,7 +995,7 @@ void TestSession::pollingTrickyWatchList()
     const QList<WatchValue> batch = batches.first();
     QCOMPARE(batch.size(), watch.size());
     for (const WatchValue &v : batch) {
-        QVERIFY2(v.quality == ValueQuality::Good, qPrintable(v.error));
+        QVERIFY2(v.quality == ValueQuality::Good, qPrintable(englishText(v.error)));
         QCOMPARE(v.value, expected.value(v.itemId));
     }
 }
@@ -1022,7 +1025,7 @@ void TestSession::lateAnswerDiscarded()
     QCOMPARE(r.response().values.front(), 2u);
     bool logged = false;
     for (const TrafficEntry &entry : session->trafficLog()->entries())
-        logged = logged || entry.error.contains(QStringLiteral("no query pending"));
+        logged = logged || englishText(entry.error).contains(QStringLiteral("no query pending"));
     QVERIFY(logged);
 }
 
@@ -1210,7 +1213,7 @@ int countEntries(const Session &session, TrafficEntry::Direction direction, cons
 {
     int n = 0;
     for (const TrafficEntry &e : session.trafficLog()->entries())
-        n += e.direction == direction && (e.summary + e.error).contains(text) ? 1 : 0;
+        n += e.direction == direction && (englishText(e.summary) + englishText(e.error)).contains(text) ? 1 : 0;
     return n;
 }
 

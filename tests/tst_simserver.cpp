@@ -147,7 +147,7 @@ public:
                 m_fed = rx.size();
             }
             if (!m_items.empty()) {
-                DeframedItem item = std::move(m_items.front());
+                std::optional<DeframedItem> item = m_items.front();
                 m_items.erase(m_items.begin());
                 return item;
             }
@@ -260,7 +260,7 @@ bool commandSuite(Master &m, SimulatedPlc &plc, Protocol p)
         auto result = m.ask(r, p);
         if (!result) {
             qWarning("%s: %s failed: %s", protocolName(p).data(), r.describe().c_str(),
-                     result.error().message.c_str());
+                     result.error().text().c_str());
             ok = false;
             return {};
         }
@@ -451,7 +451,7 @@ void TestSimServer::referenceVectors()
     const Bytes q(query.begin(), query.end());
     const Bytes expected(response.begin(), response.end());
     auto request = codec.decodeRequest(q);
-    QVERIFY2(request, request ? "" : request.error().message.c_str());
+    QVERIFY2(request, request ? "" : request.error().text().c_str());
     const Request &r = *request;
     const auto answer = codec.decodeResponse(expected, r);
 

@@ -226,7 +226,7 @@ void TestSoak::soak()
             }
             if (v.quality != ValueQuality::Good) {
                 ++figures.wrongValues; // the simulator accepts every address watched
-                qWarning("item %d: %s", int(v.itemId), qPrintable(v.error));
+                qWarning("item %d: %s", int(v.itemId), qPrintable(englishText(v.error)));
                 continue;
             }
             if (history.accept(v.itemId, v.value)) {
@@ -409,12 +409,12 @@ void TestSoak::trafficLogBytes()
     log.setByteBudget(64 * 1024);
     const QByteArray big(100 * 1024, 'x');
     for (int i = 0; i < 50; ++i)
-        log.append(TrafficEntry::Direction::In, big, QStringLiteral("noise"));
+        log.append(TrafficEntry::Direction::In, big, Message::text("noise"));
     QVERIFY(log.bytesHeld() <= 64 * 1024);
     const auto entries = log.entries();
     QVERIFY(!entries.isEmpty());
     QCOMPARE(entries.last().bytes.size(), TrafficLog::maxEntryBytes);
-    QVERIFY(entries.last().error.contains(QStringLiteral("first 4096 kept")));
+    QVERIFY(englishText(entries.last().error).contains(QStringLiteral("first 4096 kept")));
     log.clear();
     QCOMPARE(log.bytesHeld(), qint64(0));
 }

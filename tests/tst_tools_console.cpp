@@ -69,7 +69,7 @@ int TestToolsConsole::findRow(TrafficEntry::Direction direction, const QString &
     TrafficLogModel *model = m_console->model();
     for (int r = after; r < model->rowCount(); ++r) {
         const TrafficEntry &e = model->entryAt(r);
-        if (e.direction == direction && e.summary.contains(meaningPart))
+        if (e.direction == direction && englishText(e.summary).contains(meaningPart))
             return r;
     }
     return -1;

@@ -113,10 +113,10 @@ void TestToolsForcing::rangeParsing()
     const Result<QList<AddressRange>> ranges = DiscreteScan::parse(text);
     if (expected == QLatin1String("error")) {
         QVERIFY(!ranges);
-        QVERIFY(!ranges.error().message.empty());
+        QVERIFY(!ranges.error().text().empty());
         return;
     }
-    QVERIFY2(ranges.ok(), ranges.ok() ? "" : ranges.error().message.c_str());
+    QVERIFY2(ranges.ok(), ranges.ok() ? "" : ranges.error().text().c_str());
     QStringList got;
     for (const AddressRange &r : *ranges)
         got << QString::fromStdString(r.toString());

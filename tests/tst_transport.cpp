@@ -88,7 +88,7 @@ void TestTransport::linkSettingsValidation()
 {
     QFETCH(LinkSettings, settings);
     QFETCH(QString, fragment);
-    const QString problem = settings.validate();
+    const QString problem = englishText(settings.validate());
     if (fragment.isEmpty())
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
     else

@@ -10,7 +10,7 @@
 #include "ui/connection/connectionmanager.h"
 #include "ui/connection/connectionspanel.h"
 #include "ui/mainwindow/mainwindow.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QAbstractItemView>
@@ -258,7 +258,7 @@ private Q_SLOTS:
         QTest::mouseClick(combo, Qt::LeftButton, {}, combo->rect().center(), mouseDelayMs);
         QAbstractItemView *list = combo->view();
         QTRY_VERIFY(list->isVisible());
-        const int hex = combo->findText(CoreText::format(DisplayFormat::Hex));
+        const int hex = combo->findText(UiText::format(DisplayFormat::Hex));
         QVERIFY(hex >= 0);
         // Polls keep coming while the person finds the entry.
         QVERIFY(waitForPolls(batches, 2));

@@ -188,7 +188,7 @@ private Q_SLOTS:
         // The traffic log records the write.
         bool logged = false;
         for (const TrafficEntry &e : c->session()->trafficLog()->entries())
-            logged = logged || e.summary.contains(QStringLiteral("write"));
+            logged = logged || englishText(e.summary).contains(QStringLiteral("write"));
         QVERIFY(logged);
 
         // Refused confirmation: nothing is written.
@@ -334,11 +334,11 @@ private Q_SLOTS:
             typeInto(second->addressEdit(), QStringLiteral("M7"));
             saved = model->items();
             const Status s = window.saveWatchList(path);
-            QVERIFY2(s.ok(), s.ok() ? "" : s.error().message.c_str());
+            QVERIFY2(s.ok(), s.ok() ? "" : s.error().text().c_str());
         }
         MainWindow window;
         const Status s = window.loadWatchList(path);
-        QVERIFY2(s.ok(), s.ok() ? "" : s.error().message.c_str());
+        QVERIFY2(s.ok(), s.ok() ? "" : s.error().text().c_str());
         QCOMPARE(window.watchTables().size(), 2);
         WatchTableWidget *table = window.watchTables().at(0);
         QCOMPARE(table->model()->items(), saved);
@@ -365,8 +365,8 @@ private Q_SLOTS:
         bad.close();
         const Status refused = window.loadWatchList(bad.fileName());
         QVERIFY(!refused.ok());
-        QVERIFY2(QString::fromStdString(refused.error().message).contains(QStringLiteral("item 2")),
-                 refused.error().message.c_str());
+        QVERIFY2(QString::fromStdString(refused.error().text()).contains(QStringLiteral("item 2")),
+                 refused.error().text().c_str());
         QCOMPARE(window.watchTables().size(), 2);
     }
 

@@ -1,15 +1,16 @@
 // Translations: every message of the .ts files is finished and keeps its placeholders; with the
 // zh_TW translator the main window running the demo (tables, connections, docks, menus, actions,
-// status bar) shows no English words; known core messages come out in Chinese.
+// status bar) shows no English words; core messages come out in Chinese.
 #include "ui/mainwindow/languagemenu.h"
 #include "ui/mainwindow/mainwindow.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include "core/protocol/address.h"
 #include "core/protocol/addressrange.h"
 #include "core/protocol/frametext.h"
 #include "core/protocol/protocolerror.h"
+#include "core/watch/valueformat.h"
 #include "core/watch/watchlist.h"
 #include "testutil.h"
 
@@ -249,22 +250,24 @@ private Q_SLOTS:
         // Messages made by the real core code come out in Chinese, tokens untouched.
         const auto bad = Address::parse("Q5");
         QVERIFY(!bad);
-        const QString address = CoreText::message(bad.error().message);
+        const QString address = translated(bad.error().message);
         QVERIFY2(!hasEnglish(address), qPrintable(address));
         QVERIFY2(address.contains(QLatin1String("Q5")), qPrintable(address));
 
-        const QString plc = CoreText::message(makePlcError(0xA, "R70000").message);
+        const QString plc = translated(makePlcError(0xA, "R70000").message);
         QVERIFY2(!hasEnglish(plc), qPrintable(plc));
         QVERIFY2(plc.contains(QLatin1String("R70000")), qPrintable(plc));
         QVERIFY2(plc.contains(QStringLiteral("不合法的位址")), qPrintable(plc));
 
         const auto range = Address::parse("R65535");
         QVERIFY(range);
-        const QString span = CoreText::message(validateSpan(*range, 4).error().message);
+        const QString span = translated(validateSpan(*range, 4).error().message);
         QVERIFY2(!hasEnglish(span), qPrintable(span));
 
         // Range and typed-frame errors are made in core (AddressRange, WatchList, FrameText).
-        std::vector<std::string> typed;
+        // Range, typed-frame and typed-value errors are made in core (AddressRange, WatchList,
+        // FrameText, ValueFormat).
+        std::vector<Message> typed;
         for (const char *text : {"R0..", "X0-Y5", "Y10-2", "WY0-40"})
             typed.push_back(AddressRange::parse(text).error().message);
         typed.push_back(AddressRange::parseList(" , ").error().message);
@@ -274,18 +277,32 @@ private Q_SLOTS:
         typed.push_back(FrameText::parseHex("01 4").error().message);
         typed.push_back(FrameText::parseAscii("01\t40").error().message);
         typed.push_back(FrameText::parseAscii("").error().message);
-        for (const std::string &english : typed) {
-            const QString shown = CoreText::message(english);
+        for (const char *text : {"12x", "70000"})
+            typed.push_back(
+                ValueFormat::parse(QString::fromLatin1(text), 16, DisplayFormat::Unsigned, false)
+                    .error()
+                    .message);
+        typed.push_back(
+            ValueFormat::parse(QStringLiteral("G"), 16, DisplayFormat::Hex, false).error().message);
+        typed.push_back(
+            ValueFormat::parse(QStringLiteral("2"), 1, DisplayFormat::Bit, false).error().message);
+        for (const Message &message : typed) {
+            const QString shown = translated(message);
+            const std::string english = Fatek::english(message);
             QVERIFY2(!hasEnglish(shown), qPrintable(shown));
             QVERIFY2(shown != QString::fromStdString(english), english.c_str());
         }
 
-        // A message no pattern knows is shown as core wrote it, not mangled.
-        QCOMPARE(CoreText::message(QStringLiteral("something new")),
-                 QStringLiteral("something new"));
-        QCOMPARE(CoreText::linkState(LinkState::Connected), QStringLiteral("已連線"));
-        QCOMPARE(CoreText::formatFromName(QStringLiteral("無號整數")), DisplayFormat::Unsigned);
-        QCOMPARE(CoreText::formatFromName(QStringLiteral("unsigned")), DisplayFormat::Unsigned);
+        // A text from outside the program (an OS error) is shown as it came, not mangled.
+        QCOMPARE(translated(Message::text("something new")), QStringLiteral("something new"));
+        // A reason inside a reason is translated too.
+        const QString lost = translated(msg<MsgId::LinkNextAttempt>(
+            msg<MsgId::LinkLostBecause>(msg<MsgId::LinkPeerClosed>("TCP 10.0.0.5:500")), "2.0"));
+        QVERIFY2(!hasEnglish(lost), qPrintable(lost));
+        QVERIFY2(lost.contains(QLatin1String("TCP 10.0.0.5:500")), qPrintable(lost));
+        QCOMPARE(UiText::linkState(LinkState::Connected), QStringLiteral("已連線"));
+        QCOMPARE(UiText::formatFromName(QStringLiteral("無號整數")), DisplayFormat::Unsigned);
+        QCOMPARE(UiText::formatFromName(QStringLiteral("unsigned")), DisplayFormat::Unsigned);
     }
 
     void mainWindowHasNoEnglish()

@@ -47,8 +47,8 @@ private Q_SLOTS:
     {
         const auto list = WatchInput::parseAddresses(QStringLiteral("R100 Q7 R101"));
         QVERIFY(!list.ok());
-        QVERIFY2(QString::fromStdString(list.error().message).contains(QStringLiteral("\"Q7\"")),
-                 list.error().message.c_str());
+        QVERIFY2(QString::fromStdString(list.error().text()).contains(QStringLiteral("\"Q7\"")),
+                 list.error().text().c_str());
         QVERIFY(!WatchInput::parseAddresses(QStringLiteral("   ")).ok());
     }
 
@@ -56,12 +56,12 @@ private Q_SLOTS:
     {
         const auto rows
             = WatchInput::parsePasted(QStringLiteral("R100,Tank level\nR101,Pump speed\n"), 3);
-        QVERIFY2(rows.ok(), rows.ok() ? "" : rows.error().message.c_str());
+        QVERIFY2(rows.ok(), rows.ok() ? "" : rows.error().text().c_str());
         QCOMPARE(rows->size(), 2);
         QCOMPARE(rows->at(0).name, QStringLiteral("Tank level"));
         QCOMPARE(rows->at(1).station, quint8(3));
         const auto withFormat = WatchInput::parsePasted(QStringLiteral("R10\tfloat\tFlow\n"), 1);
-        QVERIFY2(withFormat.ok(), withFormat.ok() ? "" : withFormat.error().message.c_str());
+        QVERIFY2(withFormat.ok(), withFormat.ok() ? "" : withFormat.error().text().c_str());
         QCOMPARE(withFormat->at(0).format, DisplayFormat::Float32);
         QCOMPARE(withFormat->at(0).name, QStringLiteral("Flow"));
         const auto positional = WatchInput::parsePasted(QStringLiteral("R10,4,hex,Speed"), 1);
@@ -203,7 +203,7 @@ private Q_SLOTS:
                     v.quality = ValueQuality::Stale;
                     v.value = static_cast<std::uint32_t>(k - 1); // the poller's last good value
                     v.timestamp = time(k - 1);
-                    v.error = QStringLiteral("timeout after 1000 ms");
+                    v.error = Message::text("timeout after 1000 ms");
                 }
                 batch.append(v);
             }
@@ -311,7 +311,7 @@ private Q_SLOTS:
         stale.itemId = id;
         stale.value = 42;
         stale.quality = ValueQuality::Stale;
-        stale.error = QStringLiteral("timeout after 1000 ms");
+        stale.error = Message::text("timeout after 1000 ms");
         model.applyValues({stale});
         QCOMPARE(model.quality(0), ValueQuality::Stale);
         QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(),

@@ -14,7 +14,7 @@ namespace {
 
 QString errorText(const Result<std::uint64_t> &r)
 {
-    return r.ok() ? QString() : QString::fromStdString(r.error().message);
+    return r.ok() ? QString() : QString::fromStdString(r.error().text());
 }
 
 quint64 bitsOf(float f)

@@ -17,7 +17,7 @@ Address addr(const char *text)
 template<typename T>
 QString errorText(const Result<T> &r)
 {
-    return r.ok() ? QString() : QString::fromStdString(r.error().message);
+    return r.ok() ? QString() : QString::fromStdString(r.error().text());
 }
 
 WatchItemSpec entry(const char *address, DisplayFormat format, quint8 station = 1,
@@ -316,7 +316,7 @@ void TestWatchList::saveToFileAndBack()
     const QString path = dir.filePath(QStringLiteral("plant.fwatch"));
     const WatchListFile file = sampleFile();
     const Status s = WatchList::saveToFile(file, path);
-    QVERIFY2(s.ok(), s.ok() ? "" : s.error().message.c_str());
+    QVERIFY2(s.ok(), s.ok() ? "" : s.error().text().c_str());
     const auto loaded = WatchList::loadFromFile(path);
     QVERIFY2(loaded.ok(), qPrintable(errorText(loaded)));
     QVERIFY(*loaded == file);
@@ -348,7 +348,7 @@ void TestWatchList::saveToFileRefusesInvalid()
     const Status s = WatchList::saveToFile(broken, path);
     QVERIFY(!s.ok());
     QCOMPARE(
-        QString::fromStdString(s.error().message),
+        QString::fromStdString(s.error().text()),
         QStringLiteral(
             "Not saved: table 2, item 2: station 0 is broadcast (no PLC answers): use a station "
             "number 1..254"));
@@ -358,7 +358,7 @@ void TestWatchList::saveToFileRefusesInvalid()
     const Status s2 = WatchList::saveToFile(badInterval, path);
     QVERIFY(!s2.ok());
     QCOMPARE(
-        QString::fromStdString(s2.error().message),
+        QString::fromStdString(s2.error().text()),
         QStringLiteral("Not saved: table 1: poll interval 5 ms is out of range (10..3600000 ms)"));
 
     QFile after(path);
@@ -374,9 +374,9 @@ void TestWatchList::saveToFileUnwritable()
     const QString missingDir = dir.filePath(QStringLiteral("no/such/dir/plant.fwatch"));
     const Status s = WatchList::saveToFile(sampleFile(), missingDir);
     QVERIFY(!s.ok());
-    QVERIFY2(QString::fromStdString(s.error().message)
+    QVERIFY2(QString::fromStdString(s.error().text())
                  .startsWith(QStringLiteral("Cannot write ") + missingDir + ": "),
-             s.error().message.c_str());
+             s.error().text().c_str());
     QVERIFY(!QFile::exists(missingDir));
 
     // The target is a directory: nothing may replace it.
@@ -418,7 +418,7 @@ void TestWatchList::validateEntry()
     WatchItemSpec e = entry("R1", DisplayFormat::Signed, 255);
     const Status s = WatchList::validateEntry(e);
     QVERIFY(!s.ok());
-    QCOMPARE(QString::fromStdString(s.error().message),
+    QCOMPARE(QString::fromStdString(s.error().text()),
              QStringLiteral("station 255 is not valid: use a station number 1..254"));
     e = entry("R1", DisplayFormat::Signed);
     e.address.number = 70000; // built in code, not parsed: still checked

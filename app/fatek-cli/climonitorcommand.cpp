@@ -40,7 +40,7 @@ void CliRunner::runMonitor()
         // Every row reaches the disk at once: an interrupted monitor loses nothing.
         m_logger.setFlushIntervalMs(0);
         if (const Status s = m_logger.open(m_options.outputPath, items); !s) {
-            m_out.error(QString::fromStdString(s.error().message), ExitCode::Usage);
+            m_out.error(QString::fromStdString(s.error().text()), ExitCode::Usage);
             return finish(ExitCode::Usage);
         }
     }
@@ -79,10 +79,10 @@ void CliRunner::onValues(const QList<WatchValue> &values)
         words[static_cast<std::size_t>(item)][static_cast<std::size_t>(part)] = v.value;
         if (v.quality == ValueQuality::Error) {
             cell.quality = DataLogger::Quality::Error;
-            cell.reason = v.error;
+            cell.reason = englishText(v.error);
         } else if (v.quality == ValueQuality::Stale && cell.quality == DataLogger::Quality::Good) {
             cell.quality = DataLogger::Quality::Stale;
-            cell.reason = v.error;
+            cell.reason = englishText(v.error);
         }
     }
     const QDateTime now = QDateTime::currentDateTime();
@@ -124,7 +124,7 @@ void CliRunner::onValues(const QList<WatchValue> &values)
     }
     if (m_logger.isOpen()) {
         if (const Status s = m_logger.writeRow(now, cells); !s) {
-            m_out.error(QString::fromStdString(s.error().message), ExitCode::Internal);
+            m_out.error(QString::fromStdString(s.error().text()), ExitCode::Internal);
             return finish(ExitCode::Internal);
         }
     }
@@ -155,7 +155,7 @@ void CliRunner::onValues(const QList<WatchValue> &values)
         m_session->setWatchList({});
         m_monitoring = false;
         if (const Status s = m_logger.close(); !s) {
-            m_out.error(QString::fromStdString(s.error().message), ExitCode::Internal);
+            m_out.error(QString::fromStdString(s.error().text()), ExitCode::Internal);
             return finish(ExitCode::Internal);
         }
         return stepDone();

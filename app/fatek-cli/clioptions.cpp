@@ -75,7 +75,7 @@ QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QSt
     const Result<Bytes> bytes = FrameText::parse(t.toStdString(), typed, isHex);
     if (!bytes) {
         *error
-            = QStringLiteral("\"%1\": %2").arg(text, QString::fromStdString(bytes.error().message));
+            = QStringLiteral("\"%1\": %2").arg(text, QString::fromStdString(bytes.error().text()));
         return {};
     }
     return QByteArray(reinterpret_cast<const char *>(bytes->data()),

@@ -63,8 +63,8 @@ void CliRunner::start()
             return;
         }
     }
-    if (const QString problem = m_options.link.validate(); !problem.isEmpty()) {
-        m_out.error(problem, ExitCode::Usage);
+    if (const Message problem = m_options.link.validate(); !problem.empty()) {
+        m_out.error(englishText(problem), ExitCode::Usage);
         finish(ExitCode::Usage);
         return;
     }
@@ -77,7 +77,7 @@ void CliRunner::start()
     m_session->open();
 }
 
-void CliRunner::onLinkState(LinkState state, const QString &reason)
+void CliRunner::onLinkState(LinkState state, const Message &reason)
 {
     if (m_done)
         return;
@@ -93,7 +93,8 @@ void CliRunner::onLinkState(LinkState state, const QString &reason)
         // that never came up have nobody else to tell.
         if (!m_dispatched || m_monitoring || m_requests.pendingCount() == 0) {
             m_out.error(
-                QStringLiteral("No connection to %1: %2").arg(m_options.link.toString(), reason),
+                QStringLiteral("No connection to %1: %2")
+                    .arg(m_options.link.toString(), englishText(reason)),
                 ExitCode::Link);
             finish(ExitCode::Link);
         }
@@ -155,7 +156,7 @@ void CliRunner::failWith(const SessionResult &result)
                      QString::number(result.error().plcCode, 16).toUpper());
     QString text = result.errorText();
     if (text.isEmpty())
-        text = QString::fromStdString(result.error().message);
+        text = QString::fromStdString(result.error().text());
     m_out.error(text, code, extra);
     finish(code);
 }
@@ -169,7 +170,7 @@ void CliRunner::interrupt()
         if (m_monitorErrors)
             m_out.note(QStringLiteral("Some elements were refused by the PLC (see above)."));
         if (const Status s = m_logger.close(); !s) {
-            m_out.error(QString::fromStdString(s.error().message), ExitCode::Internal);
+            m_out.error(QString::fromStdString(s.error().text()), ExitCode::Internal);
             return finish(ExitCode::Internal);
         }
         return finish(m_monitorErrors ? ExitCode::Plc : ExitCode::Ok);

@@ -50,7 +50,7 @@ private:
     using Handler = RequestTracker::Callback;
 
     bool startSimulator(QString *error);
-    void onLinkState(LinkState state, const QString &reason);
+    void onLinkState(LinkState state, const Message &reason);
     void onValues(const QList<WatchValue> &values);
     void dispatch();
     const CliStep &step() const;

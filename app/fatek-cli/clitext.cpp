@@ -51,7 +51,7 @@ QString ms(double v)
 
 QString error(const ProtocolError &e)
 {
-    return QString::fromStdString(e.message);
+    return QString::fromStdString(e.text());
 }
 
 QString formatNames()

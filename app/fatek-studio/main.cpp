@@ -222,7 +222,7 @@ int main(int argc, char *argv[])
     if (connection || !file.isEmpty()) {
         if (const Fatek::Status s = window.openAtStartup(connection, file); !s)
             std::fprintf(stderr, "fatek-studio: %s cannot be loaded: %s\n", qPrintable(file),
-                         s.error().message.c_str());
+                         s.error().text().c_str());
     }
     if (demo)
         window.startDemo();

@@ -376,9 +376,7 @@ Plan PollPlanner::plan(std::span<const WatchItem> items,
     for (const WatchItem &item : items) {
         if (item.station == Limits::broadcastStation) {
             result.unplannable.push_back(
-                {item.id, item.address.toString()
-                              + ": station 0 is broadcast; PLCs do not answer it, so nothing can "
-                                "be read there."});
+                {item.id, msg<MsgId::PlanBroadcast>(item.address.toString())});
             continue;
         }
         if (Status s = validateRequest(singleRead(item.station, item.address), m_protocol); !s) {

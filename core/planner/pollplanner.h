@@ -32,8 +32,8 @@ struct PlanStep
 struct UnplannableItem
 {
     std::uint64_t itemId = 0;
-    std::string reason; // technician words, e.g. "F12: F elements are not available in the FACON
-                        // protocol ..."
+    Message reason; // technician words, e.g. "F12: F elements are not available in the FACON
+                    // protocol ..."
 };
 
 struct Plan

@@ -27,8 +27,7 @@ Result<Address> Address::parse(std::string_view text)
     text = TextScan::trimmed(text);
     const std::string shown(text);
     if (text.empty())
-        return makeError(ErrorKind::InvalidAddress,
-                         "Empty address: type an element such as R12 or X0.");
+        return makeError(ErrorKind::InvalidAddress, msg<MsgId::AddressEmpty>());
 
     std::size_t split = 0;
     while (split < text.size() && std::isalpha(static_cast<unsigned char>(text[split])))
@@ -36,33 +35,29 @@ Result<Address> Address::parse(std::string_view text)
     const std::string_view symbol = text.substr(0, split);
     const std::string_view digits = text.substr(split);
     if (symbol.empty()) {
-        return makeError(ErrorKind::InvalidAddress,
-                         "Invalid address \"" + shown
-                             + "\": it must start with an element type such as R, X or DWM.");
+        return makeError(ErrorKind::InvalidAddress, msg<MsgId::AddressNoType>(shown));
     }
     const auto type = elementTypeFromSymbol(symbol);
     if (!type) {
         return makeError(
             ErrorKind::InvalidAddress,
-            "Invalid address \"" + shown + "\": unknown element type \"" + std::string(symbol)
-                + "\" (known: X Y M S T C, WX..WC, RT RC R D F, DWX..DWC, DRT DRC DR DD DF).");
+            msg<MsgId::AddressUnknownType>(
+                shown, symbol, "X Y M S T C, WX..WC, RT RC R D F, DWX..DWC, DRT DRC DR DD DF"));
     }
     if (digits.empty()) {
         return makeError(ErrorKind::InvalidAddress,
-                         "Invalid address \"" + shown + "\": the element number is missing (e.g. "
-                             + std::string(elementInfo(*type).symbol) + "0).");
+                         msg<MsgId::AddressNoNumber>(
+                             shown, std::string(elementInfo(*type).symbol) + "0"));
     }
     std::uint64_t number = 0;
     for (char c : digits) {
         if (!std::isdigit(static_cast<unsigned char>(c))) {
             return makeError(ErrorKind::InvalidAddress,
-                             "Invalid address \"" + shown + "\": \"" + std::string(digits)
-                                 + "\" is not a decimal element number.");
+                             msg<MsgId::AddressNotDecimal>(shown, digits));
         }
         number = number * 10 + static_cast<std::uint64_t>(c - '0');
         if (number > 0xFFFFFFFFu) {
-            return makeError(ErrorKind::InvalidAddress,
-                             "Invalid address \"" + shown + "\": element number too large.");
+            return makeError(ErrorKind::InvalidAddress, msg<MsgId::AddressNumberTooLarge>(shown));
         }
     }
     Address address{*type, static_cast<std::uint32_t>(number)};
@@ -76,16 +71,14 @@ Status validateAddress(const Address &address)
     const ElementInfo &i = address.info();
     if (address.number > i.maxNumber) {
         return makeError(ErrorKind::InvalidAddress,
-                         "Address " + address.toString()
-                             + " is out of range: " + std::string(i.symbol)
-                             + " numbers go from 0 to " + std::to_string(i.maxNumber) + ".");
+                         msg<MsgId::AddressOutOfRange>(address.toString(), i.symbol, i.maxNumber));
     }
     if (address.number % i.alignment != 0) {
         return makeError(ErrorKind::InvalidAddress,
-                         "Address " + address.toString() + " is not aligned: "
-                             + std::string(i.symbol) + " must start at a multiple of "
-                             + std::to_string(i.alignment) + " (e.g. " + std::string(i.symbol)
-                             + std::to_string(address.number / i.alignment * i.alignment) + ").");
+                         msg<MsgId::AddressNotAligned>(
+                             address.toString(), i.symbol, i.alignment,
+                             std::string(i.symbol)
+                                 + std::to_string(address.number / i.alignment * i.alignment)));
     }
     return Ok{};
 }
@@ -100,9 +93,10 @@ Status validateSpan(const Address &start, std::uint32_t count)
     const std::uint64_t last = std::uint64_t(start.number) + std::uint64_t(count - 1) * i.step;
     if (last > i.maxNumber) {
         return makeError(ErrorKind::InvalidAddress,
-                         std::to_string(count) + " elements from " + start.toString() + " run past "
-                             + std::string(i.symbol) + std::to_string(i.maxNumber) + ", the last "
-                             + std::string(i.symbol) + ".");
+                         msg<MsgId::AddressRunPast>(count, start.toString(),
+                                                    std::string(i.symbol)
+                                                        + std::to_string(i.maxNumber),
+                                                    i.symbol));
     }
     return Ok{};
 }

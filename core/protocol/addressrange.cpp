@@ -59,9 +59,9 @@ std::size_t dashAfterNumber(std::string_view text)
     return std::string_view::npos;
 }
 
-ProtocolError rangeError(const std::string &message)
+ProtocolError rangeError(Message message)
 {
-    return makeError(ErrorKind::InvalidAddress, message);
+    return makeError(ErrorKind::InvalidAddress, std::move(message));
 }
 
 } // namespace
@@ -104,8 +104,7 @@ Result<AddressRange> AddressRange::parse(std::string_view text)
     std::string right
         = joinTypeAndNumber(trimmed(std::string_view(shown).substr(split + separator.size())));
     if (left.empty() || right.empty()) {
-        return rangeError("Incomplete range \"" + shown
-                          + "\": write it as first..last, e.g. R100..R163.");
+        return rangeError(msg<MsgId::RangeIncomplete>(shown));
     }
     const auto start = Address::parse(left);
     if (!start)
@@ -123,19 +122,16 @@ Result<AddressRange> AddressRange::parse(std::string_view text)
     const std::string first = start->toString();
     const std::string last = end->toString();
     if (start->type != end->type) {
-        return rangeError("Range \"" + shown + "\" mixes " + first + " and " + last
-                          + ": both ends must be the same element type.");
+        return rangeError(msg<MsgId::RangeMixedTypes>(shown, first, last));
     }
     if (end->number < start->number) {
-        return rangeError("Range \"" + shown + "\" runs backwards: write the lower address first ("
-                          + last + separator + first + ").");
+        return rangeError(msg<MsgId::RangeBackwards>(shown, last + separator + first));
     }
     const std::uint32_t step = start->info().step;
     const std::uint32_t distance = end->number - start->number;
     if (distance % step != 0) {
-        return rangeError("Range \"" + shown + "\" does not end on a whole element: " + symbol
-                          + " elements are " + std::to_string(step) + " apart (" + first + ", "
-                          + start->advanced(1).toString() + ", ...).");
+        return rangeError(msg<MsgId::RangeNotWhole>(shown, symbol, step, first,
+                                                    start->advanced(1).toString()));
     }
     return AddressRange{*start, distance / step + 1};
 }
@@ -176,7 +172,7 @@ Result<std::vector<AddressRange>> AddressRange::parseList(std::string_view text)
         ranges.push_back(*range);
     }
     if (ranges.empty())
-        return rangeError("No range given; write for example X0-255, Y0-255.");
+        return rangeError(msg<MsgId::RangeNoneGiven>());
     return ranges;
 }
 

@@ -39,7 +39,8 @@ std::uint8_t countByte(std::size_t count)
     return static_cast<std::uint8_t>(count & 0xFFu);
 }
 
-std::string queryDetail(const Request &r)
+// What a query asks, after its command's name (empty when the name says it all).
+Message queryDetail(const Request &r)
 {
     auto values = [&r](const Address &a) {
         std::string s;
@@ -50,26 +51,26 @@ std::string queryDetail(const Request &r)
         return s;
     };
     switch (r.command) {
-    case Command::RunStop: return r.run ? ": RUN" : ": STOP";
-    case Command::DiscreteControl:
-        return ": " + std::string(discreteOpName(r.op)) + " " + r.start.toString();
+    case Command::RunStop: return Message::text(r.run ? "RUN" : "STOP");
+    case Command::DiscreteControl: return discreteOpMessage(r.op, r.start.toString());
     case Command::ReadEnableFlags:
     case Command::ReadDiscretes:
-    case Command::ReadRegisters: return ": " + std::to_string(r.count) + " x " + r.start.toString();
+    case Command::ReadRegisters:
+        return Message::text(std::to_string(r.count) + " x " + r.start.toString());
     case Command::WriteDiscretes:
     case Command::WriteRegisters:
-        return ": " + std::to_string(r.values.size()) + " x " + r.start.toString() + " ="
-               + values(r.start);
-    case Command::MixedRead: return ": " + r.target();
+        return Message::text(std::to_string(r.values.size()) + " x " + r.start.toString() + " ="
+                             + values(r.start));
+    case Command::MixedRead: return Message::text(r.target());
     case Command::MixedWrite: {
-        std::string s = ":";
+        std::string s;
         for (std::size_t i = 0; i < r.addresses.size() && i < r.values.size(); ++i) {
-            s += i ? ", " : " ";
+            s += i ? ", " : "";
             s += r.addresses[i].toString() + "=" + hexValue(r.values[i], r.addresses[i].type);
         }
-        return s;
+        return Message::text(s);
     }
-    case Command::Loopback: return ": " + std::to_string(r.data.size()) + " bytes";
+    case Command::Loopback: return Message::text(std::to_string(r.data.size()) + " bytes");
     default: return {};
     }
 }
@@ -139,8 +140,7 @@ Result<Bytes> BinaryCodec::encodeRequest(const Request &request) const
     case Command::ReadProgram:
     case Command::WriteProgram:
         // validateRequest refuses these for the binary protocol; kept for a complete switch.
-        return makeError(ErrorKind::Unsupported,
-                         "Program pages (4F/50) exist only in the FACON protocol.");
+        return makeError(ErrorKind::Unsupported, msg<MsgId::RequestProgramFaconOnly>());
     }
     return frameOf(queryHeader, p);
 }
@@ -289,32 +289,36 @@ Bytes BinaryCodec::wrap(std::span<const std::uint8_t> body, bool response) const
     return frameOf(response ? responseHeader : queryHeader, body);
 }
 
-std::string BinaryCodec::summarize(std::span<const std::uint8_t> frame) const
+Message BinaryCodec::summary(std::span<const std::uint8_t> frame) const
 {
     auto parsed = parseFrame(frame);
     if (!parsed)
-        return "bad binary frame (" + std::to_string(frame.size())
-               + " bytes): " + parsed.error().message;
+        return msg<MsgId::FrameBadBinary>(frame.size(), parsed.error().message);
     const auto p = parsed->payload;
-    const std::string head = "station " + std::to_string(p[0]) + ", ";
+    auto station = [&p](Message rest) {
+        return msg<MsgId::FrameStation>(p[0], hex2(p[1]), std::move(rest));
+    };
     if (parsed->header == queryHeader) {
+        const Message name = isKnownCommand(p[1]) ? commandMessage(static_cast<Command>(p[1]))
+                                                  : msg<MsgId::CommandUnknown>();
         auto request = BinarySlave::parseQueryPayload(p);
-        if (!request)
-            return head + commandText(p[1]) + ": " + request.error().message;
-        return head + commandText(p[1]) + queryDetail(*request);
+        Message detail = request ? queryDetail(*request) : request.error().message;
+        if (detail.empty())
+            return station(name);
+        return station(msg<MsgId::Joined>(name, std::move(detail)));
     }
-    const std::string answer = head + hex2(p[1]) + " answer: ";
     if (p[1] == static_cast<std::uint8_t>(Command::Loopback))
-        return answer + "echo of " + std::to_string(p.size() - 2) + " bytes";
+        return station(msg<MsgId::FrameAnswerEcho>(p.size() - 2));
     if (p.size() < 3)
-        return answer + "no error byte";
-    if (p[2] != 0)
-        return answer + "error " + (p[2] < 16 ? hex2(p[2]).substr(1) : hex2(p[2])) + " ("
-               + std::string(plcErrorText(p[2])) + ")";
+        return station(msg<MsgId::FrameAnswerNoErrorByte>());
+    if (p[2] != 0) {
+        return station(msg<MsgId::FrameAnswerError>(p[2] < 16 ? hex2(p[2]).substr(1) : hex2(p[2]),
+                                                    plcCodeMessage(p[2])));
+    }
     const auto data = p.subspan(3);
     if (data.empty())
-        return answer + "OK";
-    return answer + "OK, " + std::to_string(data.size()) + " data bytes: " + hexBytes(data, 16);
+        return station(msg<MsgId::FrameAnswerOk>());
+    return station(msg<MsgId::FrameAnswerOkBytes>(data.size(), hexBytes(data, 16)));
 }
 
 } // namespace Fatek

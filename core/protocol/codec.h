@@ -49,8 +49,14 @@ public:
     // the LRC ("014603R00012"); binary body: the payload bytes (01 46 03 52 00 0C).
     virtual Bytes wrap(std::span<const std::uint8_t> body, bool response = false) const = 0;
 
-    // One-line summary of any frame for the traffic log ("46 read registers, station 1, 3 x R12").
-    virtual std::string summarize(std::span<const std::uint8_t> frame) const = 0;
+    // One-line summary of any frame for the traffic log ("station 1, 46 read consecutive
+    // registers: 3 x R00012").
+    virtual Message summary(std::span<const std::uint8_t> frame) const = 0;
+    // The same in English.
+    std::string summarize(std::span<const std::uint8_t> frame) const
+    {
+        return english(summary(frame));
+    }
 };
 
 } // namespace Fatek

@@ -14,7 +14,8 @@ using namespace FaconWire;
 
 namespace {
 
-std::string queryDetails(const Request &r)
+// What a query asks, after its command's name (empty when the name says it all).
+Message queryDetails(const Request &r)
 {
     // Discretes as one run of 0/1 ("1001"), registers as hex words (" AAAA 5555").
     auto listValues = [](const Address &start, const std::vector<std::uint32_t> &values) {
@@ -31,20 +32,20 @@ std::string queryDetails(const Request &r)
     switch (r.command) {
     case Command::BriefStatus:
     case Command::DetailStatus: return {};
-    case Command::RunStop: return r.run ? ": RUN" : ": STOP";
-    case Command::DiscreteControl:
-        return ": " + std::string(discreteOpName(r.op)) + " " + r.start.toFaconString();
+    case Command::RunStop: return Message::text(r.run ? "RUN" : "STOP");
+    case Command::DiscreteControl: return discreteOpMessage(r.op, r.start.toFaconString());
     case Command::ReadEnableFlags:
     case Command::ReadDiscretes:
     case Command::ReadRegisters:
-        return ": " + std::to_string(r.count) + " x " + r.start.toFaconString();
+        return Message::text(std::to_string(r.count) + " x " + r.start.toFaconString());
     case Command::WriteDiscretes:
     case Command::WriteRegisters:
-        return ": " + std::to_string(r.values.size()) + " x " + r.start.toFaconString() + " ="
-               + (isDiscrete(r.start.type) ? " " : "") + listValues(r.start, r.values);
+        return Message::text(std::to_string(r.values.size()) + " x " + r.start.toFaconString()
+                             + " =" + (isDiscrete(r.start.type) ? " " : "")
+                             + listValues(r.start, r.values));
     case Command::MixedRead:
     case Command::MixedWrite: {
-        std::string s = ": " + std::to_string(r.addresses.size()) + " elements";
+        std::string s;
         for (std::size_t i = 0; i < r.addresses.size() && i < 8; ++i) {
             s += ' ';
             s += r.addresses[i].toFaconString();
@@ -55,16 +56,16 @@ std::string queryDetails(const Request &r)
         }
         if (r.addresses.size() > 8)
             s += " ...";
-        return s;
+        return msg<MsgId::FrameElements>(r.addresses.size(), s);
     }
     case Command::Loopback:
-        return ": " + std::to_string(r.data.size()) + " chars \""
-               + printable(
-                   std::string_view(reinterpret_cast<const char *>(r.data.data()), r.data.size()),
-                   32)
-               + "\"";
-    case Command::ReadProgram: return ": page " + std::to_string(r.page);
-    case Command::WriteProgram: return ": page " + std::to_string(r.page) + ", 64 words";
+        return msg<MsgId::FrameChars>(
+            r.data.size(),
+            printable(
+                std::string_view(reinterpret_cast<const char *>(r.data.data()), r.data.size()),
+                32));
+    case Command::ReadProgram: return msg<MsgId::FramePage>(r.page);
+    case Command::WriteProgram: return msg<MsgId::FramePageWords>(r.page);
     }
     return {};
 }
@@ -323,44 +324,46 @@ Bytes FaconCodec::wrap(std::span<const std::uint8_t> body, bool /*response*/) co
     return frameOf(std::string_view(reinterpret_cast<const char *>(body.data()), body.size()));
 }
 
-std::string FaconCodec::summarize(std::span<const std::uint8_t> frame) const
+Message FaconCodec::summary(std::span<const std::uint8_t> frame) const
 {
     auto parsed = parseFrame(frame);
-    if (!parsed) {
-        return "invalid FACON frame (" + std::to_string(frame.size())
-               + " bytes): " + parsed.error().message;
-    }
+    if (!parsed)
+        return msg<MsgId::FrameInvalidFacon>(frame.size(), parsed.error().message);
     const ParsedFrame &f = *parsed;
-    const std::string head = "station " + std::to_string(f.station) + ", " + hex2(f.command);
+    auto station = [&f](Message rest) {
+        return msg<MsgId::FrameStation>(f.station, hex2(f.command), std::move(rest));
+    };
     if (!isKnownCommand(f.command))
-        return head + " unknown command, data \"" + printable(f.data, 40) + "\"";
+        return station(msg<MsgId::FrameUnknownCommand>(printable(f.data, 40)));
     const auto command = static_cast<Command>(f.command);
-    const std::string name = head + " " + std::string(commandName(command));
+    auto named = [&](Message detail) {
+        if (detail.empty())
+            return station(commandMessage(command));
+        return station(msg<MsgId::Joined>(commandMessage(command), std::move(detail)));
+    };
 
     // FACON queries and answers share one format; a frame that parses as a query is shown as one.
     // 41 "0" is both STOP and "no error": say so rather than guess.
     if (command == Command::RunStop && f.data == "0")
-        return name + ": STOP, or answer: no error";
+        return named(msg<MsgId::FrameStopOrNoError>());
     if (command == Command::Loopback)
-        return name + ": " + std::to_string(f.data.size()) + " chars \"" + printable(f.data, 32)
-               + "\"";
+        return named(msg<MsgId::FrameChars>(f.data.size(), printable(f.data, 32)));
     if (auto query = FaconSlave::parseQuery(f.station, command, f.data))
-        return name + queryDetails(*query);
+        return named(queryDetails(*query));
 
-    const std::string answer = head + " answer: ";
     if (f.data.empty())
-        return answer + "no error digit";
+        return station(msg<MsgId::FrameAnswerNoErrorDigit>());
     const auto code = hexValue(f.data[0]);
     if (!code)
-        return answer + "malformed \"" + printable(f.data, 40) + "\"";
+        return station(msg<MsgId::FrameAnswerMalformed>(printable(f.data, 40)));
     if (*code != 0) {
-        return answer + "error " + std::string(1, kHexDigits[*code]) + " ("
-               + std::string(plcErrorText(static_cast<int>(*code))) + ")";
+        const int plc = static_cast<int>(*code);
+        return station(msg<MsgId::FrameAnswerError>(plcCodeDigits(plc), plcCodeMessage(plc)));
     }
     if (f.data.size() == 1)
-        return answer + "OK";
-    return answer + "OK, " + std::to_string(f.data.size() - 1) + " data chars \""
-           + printable(f.data.substr(1), 40) + "\"";
+        return station(msg<MsgId::FrameAnswerOk>());
+    return station(
+        msg<MsgId::FrameAnswerOkChars>(f.data.size() - 1, printable(f.data.substr(1), 40)));
 }
 
 } // namespace Fatek

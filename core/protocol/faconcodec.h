@@ -26,7 +26,7 @@ public:
     std::optional<FrameHeader> frameHeader(std::span<const std::uint8_t> frame) const override;
     std::optional<FrameHeader> peekHeader(std::span<const std::uint8_t> frame) const override;
     Bytes wrap(std::span<const std::uint8_t> body, bool response = false) const override;
-    std::string summarize(std::span<const std::uint8_t> frame) const override;
+    Message summary(std::span<const std::uint8_t> frame) const override;
 };
 
 } // namespace Fatek

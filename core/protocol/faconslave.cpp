@@ -11,10 +11,15 @@ using namespace FaconWire;
 
 namespace {
 
-ProtocolError queryError(int code, std::string message)
+ProtocolError queryError(int code, Message message)
 {
     return makeError(code == 0xA ? ErrorKind::InvalidAddress : ErrorKind::InvalidRequest,
                      std::move(message), code);
+}
+
+ProtocolError queryError(int code, std::string text)
+{
+    return queryError(code, Message::text(std::move(text)));
 }
 
 class Reader

@@ -121,17 +121,14 @@ Result<Bytes> FrameText::parseHex(std::string_view text)
             continue;
         if (hexValue(c) < 0) {
             return makeError(ErrorKind::InvalidRequest,
-                             "\u201c" + std::string(characterAt(text, i))
-                                 + "\u201d is not a hex digit; type bytes like 01 46 03 52 00 0C.");
+                             msg<MsgId::FrameTextNotHex>(characterAt(text, i)));
         }
         digits += c;
     }
     if (digits.empty())
-        return makeError(ErrorKind::InvalidRequest,
-                         "Nothing to send: type the frame's bytes in hex.");
+        return makeError(ErrorKind::InvalidRequest, msg<MsgId::FrameTextNothingHex>());
     if (digits.size() % 2 != 0)
-        return makeError(ErrorKind::InvalidRequest,
-                         "Odd number of hex digits: each byte needs two (0C, not C).");
+        return makeError(ErrorKind::InvalidRequest, msg<MsgId::FrameTextOddDigits>());
     Bytes out;
     out.reserve(digits.size() / 2);
     for (std::size_t i = 0; i < digits.size(); i += 2)
@@ -170,14 +167,12 @@ Result<Bytes> FrameText::parseAscii(std::string_view text)
         }
         const auto u = static_cast<unsigned char>(c);
         if (u < 32 || u > 126) {
-            return makeError(ErrorKind::InvalidRequest,
-                             "Only printable ASCII can be typed; write control characters as "
-                             "<STX>, <ETX> or <0D>.");
+            return makeError(ErrorKind::InvalidRequest, msg<MsgId::FrameTextNotAscii>());
         }
         out.push_back(u);
     }
     if (out.empty())
-        return makeError(ErrorKind::InvalidRequest, "Nothing to send: type the frame.");
+        return makeError(ErrorKind::InvalidRequest, msg<MsgId::FrameTextNothing>());
     return out;
 }
 

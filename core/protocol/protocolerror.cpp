@@ -4,35 +4,42 @@
 
 namespace Fatek {
 
-std::string_view plcErrorText(int code)
+Message plcCodeMessage(int code)
 {
     switch (code) {
-    case 0x0: return "no error";
-    case 0x2: return "illegal value";
-    case 0x3: return "write prohibited (ROM pack)";
-    case 0x4: return "illegal format, or command cannot execute";
-    case 0x5: return "cannot RUN: ladder checksum error";
-    case 0x6: return "cannot RUN: PLC ID differs from ladder ID";
-    case 0x7: return "cannot RUN: syntax check error";
-    case 0x9: return "cannot RUN: function not supported";
-    case 0xA: return "illegal address";
-    default: return "unknown error code";
+    case 0x0: return msg<MsgId::PlcCodeNoError>();
+    case 0x2: return msg<MsgId::PlcCodeIllegalValue>();
+    case 0x3: return msg<MsgId::PlcCodeWriteProhibited>();
+    case 0x4: return msg<MsgId::PlcCodeIllegalFormat>();
+    case 0x5: return msg<MsgId::PlcCodeLadderChecksum>();
+    case 0x6: return msg<MsgId::PlcCodeIdMismatch>();
+    case 0x7: return msg<MsgId::PlcCodeSyntaxError>();
+    case 0x9: return msg<MsgId::PlcCodeNotSupported>();
+    case 0xA: return msg<MsgId::PlcCodeIllegalAddress>();
+    default: return msg<MsgId::PlcCodeUnknown>();
     }
+}
+
+std::string_view plcErrorText(int code)
+{
+    // The code texts take no arguments: their template is the English text.
+    return messageTemplate(plcCodeMessage(code).id);
+}
+
+std::string plcCodeDigits(int code)
+{
+    static const char digits[] = "0123456789ABCDEF";
+    if (code >= 0 && code < 16)
+        return std::string(1, digits[code]);
+    return std::to_string(code);
 }
 
 ProtocolError makePlcError(int code, std::string_view context)
 {
-    static const char digits[] = "0123456789ABCDEF";
-    std::string codeText;
-    if (code >= 0 && code < 16)
-        codeText = digits[code];
-    else
-        codeText = std::to_string(code);
-    std::string message = "PLC error " + codeText + ": " + std::string(plcErrorText(code));
-    if (!context.empty()) {
-        message += ' ';
-        message += context;
-    }
+    Message message = context.empty()
+                          ? msg<MsgId::PlcError>(plcCodeDigits(code), plcCodeMessage(code))
+                          : msg<MsgId::PlcErrorAbout>(plcCodeDigits(code), plcCodeMessage(code),
+                                                      context);
     return ProtocolError{ErrorKind::PlcError, std::move(message), code};
 }
 

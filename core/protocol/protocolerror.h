@@ -1,5 +1,7 @@
 #pragma once
 
+#include "message.h"
+
 #include <string>
 #include <string_view>
 
@@ -27,18 +29,25 @@ enum class ErrorKind {
 struct ProtocolError
 {
     ErrorKind kind = ErrorKind::BadFrame;
-    std::string
-        message; // complete sentence for technicians, e.g. "PLC error A: illegal address R70000"
-    int plcCode
-        = 0; // PLC error code for PlcError; for a slave decoding a query: the code to answer
+    // Complete sentence for technicians, e.g. "PLC error A: illegal address R70000".
+    Message message;
+    // PLC error code for PlcError; for a slave decoding a query: the code to answer.
+    int plcCode = 0;
+
+    // The sentence in English (logs, the CLI).
+    std::string text() const { return english(message); }
 
     bool operator==(const ProtocolError &) const = default;
 };
 
-// Human text for a PLC error code of either protocol ("illegal address" for 0xA).
+// What a PLC error code of either protocol means ("illegal address" for 0xA).
+Message plcCodeMessage(int code);
+// The same in English.
 std::string_view plcErrorText(int code);
+// The code as the PLC writes it: one hex digit ("A"), larger codes in decimal.
+std::string plcCodeDigits(int code);
 
-// "PLC error A: illegal address" followed by ": context" when context is given.
+// "PLC error A: illegal address" followed by " context" when context is given.
 ProtocolError makePlcError(int code, std::string_view context = {});
 
 std::string_view errorKindName(ErrorKind kind);

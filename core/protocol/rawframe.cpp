@@ -44,9 +44,14 @@ std::optional<RawFrame::Peek> RawFrame::peek(std::span<const std::uint8_t> frame
     return Peek{*protocol, header->station, header->command};
 }
 
+Message RawFrame::summary(std::span<const std::uint8_t> frame)
+{
+    return codec(protocolOf(frame).value_or(Protocol::Binary)).summary(frame);
+}
+
 std::string RawFrame::summarize(std::span<const std::uint8_t> frame)
 {
-    return codec(protocolOf(frame).value_or(Protocol::Binary)).summarize(frame);
+    return english(summary(frame));
 }
 
 } // namespace Fatek

@@ -32,6 +32,7 @@ public:
     // not checked, so broken frames show what they were meant for. Empty for garbage.
     static std::optional<Peek> peek(std::span<const std::uint8_t> frame);
     // One-line meaning of a frame (the codec's summary); not FACON is read as binary.
+    static Message summary(std::span<const std::uint8_t> frame);
     static std::string summarize(std::span<const std::uint8_t> frame);
 
     static const Codec &codec(Protocol protocol);

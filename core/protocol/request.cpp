@@ -30,25 +30,31 @@ bool isKnownCommand(std::uint8_t code)
     }
 }
 
-std::string_view commandName(Command command)
+Message commandMessage(Command command)
 {
     switch (command) {
-    case Command::BriefStatus: return "read brief status";
-    case Command::RunStop: return "RUN/STOP control";
-    case Command::DiscreteControl: return "single discrete control";
-    case Command::ReadEnableFlags: return "read enable/disable flags";
-    case Command::ReadDiscretes: return "read consecutive discretes";
-    case Command::WriteDiscretes: return "write consecutive discretes";
-    case Command::ReadRegisters: return "read consecutive registers";
-    case Command::WriteRegisters: return "write consecutive registers";
-    case Command::MixedRead: return "mixed read";
-    case Command::MixedWrite: return "mixed write";
-    case Command::Loopback: return "loopback test";
-    case Command::ReadProgram: return "read program page";
-    case Command::WriteProgram: return "write program page";
-    case Command::DetailStatus: return "read detail status";
+    case Command::BriefStatus: return msg<MsgId::CommandBriefStatus>();
+    case Command::RunStop: return msg<MsgId::CommandRunStop>();
+    case Command::DiscreteControl: return msg<MsgId::CommandDiscreteControl>();
+    case Command::ReadEnableFlags: return msg<MsgId::CommandReadEnableFlags>();
+    case Command::ReadDiscretes: return msg<MsgId::CommandReadDiscretes>();
+    case Command::WriteDiscretes: return msg<MsgId::CommandWriteDiscretes>();
+    case Command::ReadRegisters: return msg<MsgId::CommandReadRegisters>();
+    case Command::WriteRegisters: return msg<MsgId::CommandWriteRegisters>();
+    case Command::MixedRead: return msg<MsgId::CommandMixedRead>();
+    case Command::MixedWrite: return msg<MsgId::CommandMixedWrite>();
+    case Command::Loopback: return msg<MsgId::CommandLoopback>();
+    case Command::ReadProgram: return msg<MsgId::CommandReadProgram>();
+    case Command::WriteProgram: return msg<MsgId::CommandWriteProgram>();
+    case Command::DetailStatus: return msg<MsgId::CommandDetailStatus>();
     }
-    return "unknown command";
+    return msg<MsgId::CommandUnknown>();
+}
+
+std::string_view commandName(Command command)
+{
+    // The names take no arguments: their template is the English name.
+    return messageTemplate(commandMessage(command).id);
 }
 
 bool isWriteCommand(Command command)
@@ -73,6 +79,17 @@ std::string_view discreteOpName(DiscreteOp op)
     case DiscreteOp::Reset: return "reset";
     }
     return "unknown operation";
+}
+
+Message discreteOpMessage(DiscreteOp op, const std::string &target)
+{
+    switch (op) {
+    case DiscreteOp::Disable: return msg<MsgId::FrameDisable>(target);
+    case DiscreteOp::Enable: return msg<MsgId::FrameEnable>(target);
+    case DiscreteOp::Set: return msg<MsgId::FrameSet>(target);
+    case DiscreteOp::Reset: return msg<MsgId::FrameReset>(target);
+    }
+    return Message::text(std::string(discreteOpName(op)) + " " + target);
 }
 
 // ---- factories -------------------------------------------------------------------------------
@@ -300,50 +317,40 @@ std::string Request::describe() const
 
 namespace {
 
-ProtocolError invalid(std::string message)
+ProtocolError invalid(Message message)
 {
     return makeError(ErrorKind::InvalidRequest, std::move(message));
 }
 
-ProtocolError limit(std::string message)
+ProtocolError limit(Message message)
 {
     return makeError(ErrorKind::LimitExceeded, std::move(message));
 }
 
 Status checkProtocolSupport(const Address &a, Protocol protocol)
 {
-    if (protocol == Protocol::Facon && a.info().faconDigits == 0) {
-        return makeError(
-            ErrorKind::Unsupported,
-            a.toString() + ": " + std::string(a.info().symbol)
-                + " elements are not available in the FACON protocol (binary protocol only).");
-    }
+    if (protocol == Protocol::Facon && a.info().faconDigits == 0)
+        return makeError(ErrorKind::Unsupported,
+                         msg<MsgId::RequestNotInFacon>(a.toString(), a.info().symbol));
     return Ok{};
 }
 
 Status checkValue(const Address &a, std::uint32_t v)
 {
-    if (isDiscrete(a.type) && v > 1) {
-        return invalid("Value " + std::to_string(v) + " for " + a.toString()
-                       + ": a discrete takes 0 (OFF) or 1 (ON).");
-    }
-    if (a.width() == ElementWidth::Word && v > 0xFFFF) {
-        return invalid("Value " + std::to_string(v) + " for " + a.toString()
-                       + " does not fit a 16-bit register (0..65535).");
-    }
+    if (isDiscrete(a.type) && v > 1)
+        return invalid(msg<MsgId::RequestDiscreteValue>(v, a.toString()));
+    if (a.width() == ElementWidth::Word && v > 0xFFFF)
+        return invalid(msg<MsgId::RequestRegisterValue>(v, a.toString()));
     return Ok{};
 }
 
 Status checkDiscreteSpan(const Request &r, std::uint32_t n, Protocol protocol)
 {
-    if (!isDiscrete(r.start.type)) {
-        return invalid(std::string(commandName(r.command)) + " needs a discrete (X Y M S T C), not "
-                       + r.start.toString() + ".");
-    }
-    if (n < 1 || n > Limits::maxDiscretes) {
-        return limit(std::string(commandName(r.command)) + ": " + std::to_string(n)
-                     + " points requested; one request carries 1 to 256 points.");
-    }
+    if (!isDiscrete(r.start.type))
+        return invalid(
+            msg<MsgId::RequestNeedsDiscrete>(commandMessage(r.command), r.start.toString()));
+    if (n < 1 || n > Limits::maxDiscretes)
+        return limit(msg<MsgId::RequestTooManyPoints>(commandMessage(r.command), n));
     if (Status s = checkProtocolSupport(r.start, protocol); !s)
         return s;
     return validateSpan(r.start, n);
@@ -351,19 +358,17 @@ Status checkDiscreteSpan(const Request &r, std::uint32_t n, Protocol protocol)
 
 Status checkRegisterSpan(const Request &r, std::uint32_t n, Protocol protocol)
 {
-    if (!isRegister(r.start.type)) {
-        return invalid(std::string(commandName(r.command))
-                       + " needs a register (R, D, WY, DR, ...), not " + r.start.toString()
-                       + "; use discretes commands for single points.");
-    }
+    if (!isRegister(r.start.type))
+        return invalid(
+            msg<MsgId::RequestNeedsRegister>(commandMessage(r.command), r.start.toString()));
     const std::uint32_t maxElements
         = Limits::maxRegisterWords / static_cast<std::uint32_t>(r.start.words());
     if (n < 1 || n > maxElements) {
-        return limit(
-            std::string(commandName(r.command)) + ": " + std::to_string(n) + " "
-            + (isDoubleWord(r.start.type) ? "32-bit" : "16-bit")
-            + " registers requested; one request carries 1 to " + std::to_string(maxElements)
-            + (isDoubleWord(r.start.type) ? " (32-bit registers count as two words)." : "."));
+        return limit(isDoubleWord(r.start.type)
+                         ? msg<MsgId::RequestTooManyRegisters32>(commandMessage(r.command), n,
+                                                                 maxElements)
+                         : msg<MsgId::RequestTooManyRegisters16>(commandMessage(r.command), n,
+                                                                 maxElements));
     }
     if (Status s = checkProtocolSupport(r.start, protocol); !s)
         return s;
@@ -373,11 +378,10 @@ Status checkRegisterSpan(const Request &r, std::uint32_t n, Protocol protocol)
 Status checkMixed(const Request &r, std::uint32_t maxWords, Protocol protocol)
 {
     if (r.addresses.empty())
-        return limit(std::string(commandName(r.command)) + ": no element given.");
+        return limit(msg<MsgId::RequestNoElement>(commandMessage(r.command)));
     if (r.addresses.size() > 255) {
-        return limit(std::string(commandName(r.command)) + ": " + std::to_string(r.addresses.size())
-                     + " elements; at most " + std::to_string(maxWords)
-                     + " words fit in one request.");
+        return limit(msg<MsgId::RequestTooManyElements>(commandMessage(r.command),
+                                                        r.addresses.size(), maxWords));
     }
     std::uint32_t words = 0;
     for (const Address &a : r.addresses) {
@@ -387,12 +391,8 @@ Status checkMixed(const Request &r, std::uint32_t maxWords, Protocol protocol)
             return s;
         words += static_cast<std::uint32_t>(a.words());
     }
-    if (words > maxWords) {
-        return limit(
-            std::string(commandName(r.command)) + ": " + std::to_string(words)
-            + " words requested; at most " + std::to_string(maxWords)
-            + " fit in one request (a discrete or 16-bit element counts 1, a 32-bit element 2).");
-    }
+    if (words > maxWords)
+        return limit(msg<MsgId::RequestTooManyWords>(commandMessage(r.command), words, maxWords));
     return Ok{};
 }
 
@@ -401,8 +401,7 @@ Status checkMixed(const Request &r, std::uint32_t maxWords, Protocol protocol)
 Status validateRequest(const Request &r, Protocol protocol)
 {
     if (r.station > Limits::maxStation) {
-        return invalid("Station " + std::to_string(r.station)
-                       + " is not valid: stations are 1 to 254 (0 = broadcast).");
+        return invalid(msg<MsgId::RequestBadStation>(r.station));
     }
     switch (r.command) {
     case Command::BriefStatus:
@@ -410,8 +409,7 @@ Status validateRequest(const Request &r, Protocol protocol)
     case Command::RunStop: return Ok{};
     case Command::DiscreteControl:
         if (r.op < DiscreteOp::Disable || r.op > DiscreteOp::Reset)
-            return invalid("Unknown discrete operation " + std::to_string(static_cast<int>(r.op))
-                           + ".");
+            return invalid(msg<MsgId::RequestBadDiscreteOp>(static_cast<int>(r.op)));
         return checkDiscreteSpan(r, 1, protocol);
     case Command::ReadEnableFlags:
     case Command::ReadDiscretes: return checkDiscreteSpan(r, r.count, protocol);
@@ -439,8 +437,7 @@ Status validateRequest(const Request &r, Protocol protocol)
     case Command::MixedRead: return checkMixed(r, Limits::maxMixedReadWords, protocol);
     case Command::MixedWrite: {
         if (r.values.size() != r.addresses.size()) {
-            return invalid("Mixed write: " + std::to_string(r.addresses.size()) + " addresses but "
-                           + std::to_string(r.values.size()) + " values.");
+            return invalid(msg<MsgId::RequestMixedCounts>(r.addresses.size(), r.values.size()));
         }
         if (Status s = checkMixed(r, Limits::maxMixedWriteWords, protocol); !s)
             return s;
@@ -452,36 +449,33 @@ Status validateRequest(const Request &r, Protocol protocol)
     }
     case Command::Loopback:
         if (r.data.size() > Limits::maxLoopback) {
-            return limit("Loopback test data is " + std::to_string(r.data.size())
-                         + " bytes; at most 256 fit in one request.");
+            return limit(msg<MsgId::RequestLoopbackTooLong>(r.data.size()));
         }
         if (protocol == Protocol::Facon) {
             for (std::uint8_t b : r.data) {
                 if (b < 0x20 || b > 0x7E)
-                    return invalid("FACON loopback data must be printable ASCII characters.");
+                    return invalid(msg<MsgId::RequestLoopbackNotAscii>());
             }
         }
         return Ok{};
     case Command::ReadProgram:
     case Command::WriteProgram:
         if (protocol != Protocol::Facon) {
-            return makeError(ErrorKind::Unsupported,
-                             "Program pages (4F/50) exist only in the FACON protocol.");
+            return makeError(ErrorKind::Unsupported, msg<MsgId::RequestProgramFaconOnly>());
         }
         if (r.command == Command::WriteProgram) {
             if (r.values.size() != Limits::programPageWords) {
-                return invalid("A program page holds exactly 64 words; "
-                               + std::to_string(r.values.size()) + " given.");
+                return invalid(msg<MsgId::RequestProgramPageSize>(r.values.size()));
             }
             for (std::uint32_t w : r.values) {
                 if (w > 0xFFFF)
-                    return invalid("Program words are 16-bit (0..65535).");
+                    return invalid(msg<MsgId::RequestProgramWords>());
             }
         }
         return Ok{};
     }
     return makeError(ErrorKind::Unsupported,
-                     "Unknown command code " + std::to_string(static_cast<int>(r.command)) + ".");
+                     msg<MsgId::RequestUnknownCommand>(static_cast<int>(r.command)));
 }
 
 } // namespace Fatek

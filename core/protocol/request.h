@@ -33,11 +33,15 @@ enum class Command : std::uint8_t {
 };
 bool isKnownCommand(std::uint8_t code);
 std::string_view commandName(Command command); // "read consecutive registers"
+// The same as a message, translated where shown (the names are shared by both protocols).
+Message commandMessage(Command command);
 // Whether the command changes the PLC (operator mode refuses these).
 bool isWriteCommand(Command command);
 
 enum class DiscreteOp : std::uint8_t { Disable = 1, Enable = 2, Set = 3, Reset = 4 };
 std::string_view discreteOpName(DiscreteOp op); // "disable"
+// "disable X0" for the traffic log.
+Message discreteOpMessage(DiscreteOp op, const std::string &target);
 
 namespace Limits {
 inline constexpr std::uint32_t maxDiscretes = 256;      // 43 44 45

@@ -57,9 +57,14 @@ struct Ok
 };
 using Status = Result<Ok>;
 
-inline ProtocolError makeError(ErrorKind kind, std::string message, int plcCode = 0)
+inline ProtocolError makeError(ErrorKind kind, Message message, int plcCode = 0)
 {
     return ProtocolError{kind, std::move(message), plcCode};
+}
+// An error whose sentence has no message id yet: shown in English in every language.
+inline ProtocolError makeError(ErrorKind kind, std::string text, int plcCode = 0)
+{
+    return ProtocolError{kind, Message::text(std::move(text)), plcCode};
 }
 
 } // namespace Fatek

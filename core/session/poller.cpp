@@ -155,7 +155,7 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
                 m_lastGood.insert(slot.itemId, {value.value, now});
             } else {
                 value.quality = ValueQuality::Error;
-                value.error = QStringLiteral("The answer carries fewer values than asked.");
+                value.error = msg<MsgId::SessionFewerValues>();
             }
             group.cycleValues.insert(slot.itemId, value);
         }
@@ -181,7 +181,7 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
             }
             for (const PlanSlot &slot : step.itemSlots)
                 group.cycleValues.insert(
-                    slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorText()});
+                    slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorMessage()});
         }
     } else if (result.errorKind() == ErrorKind::PlcError
                || result.errorKind() == ErrorKind::InvalidAddress
@@ -190,13 +190,13 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
                || result.errorKind() == ErrorKind::Unsupported) {
         for (const PlanSlot &slot : step.itemSlots)
             group.cycleValues.insert(
-                slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorText()});
+                slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorMessage()});
     } else {
         // Timeout, link down, damaged answers: the old value is kept, marked stale.
         for (const PlanSlot &slot : step.itemSlots) {
             const LastGood last = m_lastGood.value(slot.itemId);
             group.cycleValues.insert(slot.itemId, {slot.itemId, last.value, last.timestamp,
-                                                   ValueQuality::Stale, result.errorText()});
+                                                   ValueQuality::Stale, result.errorMessage()});
         }
     }
 
@@ -212,7 +212,7 @@ void Poller::finishCycle(Group &group)
     for (const UnplannableItem &item : group.plan.unplannable)
         group.cycleValues.insert(item.itemId,
                                  {item.itemId, 0, QDateTime::currentDateTimeUtc(),
-                                  ValueQuality::Error, QString::fromStdString(item.reason)});
+                                  ValueQuality::Error, item.reason});
     for (const WatchItem &item : group.items) {
         auto it = group.cycleValues.constFind(item.id);
         if (it != group.cycleValues.constEnd())

@@ -34,16 +34,21 @@ struct SessionCompletions
     QHash<quint64, std::shared_ptr<PendingCompletion>> pending;
 };
 
-QString linkStateName(LinkState state)
+Message linkStateMessage(LinkState state)
 {
     switch (state) {
-    case LinkState::Closed: return QStringLiteral("closed");
-    case LinkState::Connecting: return QStringLiteral("connecting");
-    case LinkState::Connected: return QStringLiteral("connected");
-    case LinkState::Lost: return QStringLiteral("lost");
-    case LinkState::Reconnecting: return QStringLiteral("reconnecting");
+    case LinkState::Closed: return msg<MsgId::LinkClosed>();
+    case LinkState::Connecting: return msg<MsgId::LinkConnecting>();
+    case LinkState::Connected: return msg<MsgId::LinkConnected>();
+    case LinkState::Lost: return msg<MsgId::LinkLost>();
+    case LinkState::Reconnecting: return msg<MsgId::LinkReconnecting>();
     }
     return {};
+}
+
+QString linkStateName(LinkState state)
+{
+    return englishText(linkStateMessage(state));
 }
 
 void registerSessionMetaTypes()
@@ -57,6 +62,7 @@ void registerSessionMetaTypes()
     qRegisterMetaType<Fatek::WatchEntry>();
     qRegisterMetaType<Fatek::TrafficEntry>();
     qRegisterMetaType<Fatek::LinkSettings>();
+    qRegisterMetaType<Fatek::Message>();
 }
 
 Session::Session(const LinkSettings &settings, QObject *parent)
@@ -89,7 +95,7 @@ Session::Session(const LinkSettings &settings, QObject *parent)
         Qt::DirectConnection);
     connect(
         m_worker, &SessionWorker::linkStateChanged, m_worker,
-        [this](LinkState state, const QString &reason) {
+        [this](LinkState state, const Message &reason) {
             CrossThreadCall::post(
                 this, [this, state, reason] { Q_EMIT linkStateChanged(state, reason); });
         },

@@ -99,7 +99,7 @@ public:
 
 Q_SIGNALS:
     void finished(quint64 id, const Fatek::SessionResult &result);
-    void linkStateChanged(Fatek::LinkState state, const QString &reason);
+    void linkStateChanged(Fatek::LinkState state, const Fatek::Message &reason);
     // At most 4 times a second.
     void statisticsChanged(const Fatek::SessionStatistics &statistics);
     void protocolDetected(Fatek::Protocol protocol);

@@ -20,7 +20,12 @@ SessionResult SessionResult::fromRaw(QByteArray rawAnswer)
 
 QString SessionResult::errorText() const
 {
-    return m_result.ok() ? QString() : QString::fromStdString(m_result.error().message);
+    return m_result.ok() ? QString() : QString::fromStdString(m_result.error().text());
+}
+
+Message SessionResult::errorMessage() const
+{
+    return m_result.ok() ? Message{} : m_result.error().message;
 }
 
 } // namespace Fatek

@@ -28,8 +28,10 @@ public:
     const Response &response() const { return m_result.value(); }
     const ProtocolError &error() const { return m_result.error(); }
     ErrorKind errorKind() const { return m_result.error().kind; }
-    // The error sentence, or empty.
+    // The error sentence in English, or empty.
     QString errorText() const;
+    // The error as a message (empty when ok()), for the UI's language.
+    Message errorMessage() const;
     // Bytes of the answer frame(s); for raw sends everything received within the timeout.
     QByteArray rawAnswer() const { return m_rawAnswer; }
     // Attempts on the wire (0 when refused before sending).
@@ -37,7 +39,8 @@ public:
     void setAttempts(int attempts) { m_attempts = attempts; }
 
 private:
-    Result<Response> m_result = ProtocolError{ErrorKind::Cancelled, "not executed", 0};
+    Result<Response> m_result = ProtocolError{ErrorKind::Cancelled,
+                                                 msg<MsgId::SessionNotExecuted>(), 0};
     QByteArray m_rawAnswer;
     bool m_raw = false;
     int m_attempts = 0;

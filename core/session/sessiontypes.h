@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/request.h"
+#include "qtmessage.h"
 
 #include <QMetaType>
 #include <QString>
@@ -18,6 +19,8 @@ enum class LinkState {
     Reconnecting, // waiting for the next attempt (backoff)
 };
 QString linkStateName(LinkState state);
+// The state's word ("lost") as a message.
+Message linkStateMessage(LinkState state);
 
 // Queue a request joins. User actions go ahead of everything, polling last.
 enum class Priority {

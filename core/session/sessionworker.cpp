@@ -39,8 +39,7 @@ SessionWorker::SessionWorker(const LinkSettings &settings, std::shared_ptr<Sessi
     connect(&m_reconnectTimer, &QTimer::timeout, this, &SessionWorker::startConnect);
     m_drainTimer.setSingleShot(true);
     connect(&m_drainTimer, &QTimer::timeout, this, [this] {
-        closeNow(QStringLiteral("the session was closed after waiting %1 ms for queued writes")
-                     .arg(m_drainTimer.interval()));
+        closeNow(msg<MsgId::LinkSessionClosedAfterWaiting>(m_drainTimer.interval()));
     });
     // Statistics go out at most 4 times a second, however busy the link.
     m_statsTimer.setInterval(250);
@@ -104,8 +103,8 @@ void SessionWorker::open()
     if (m_state == LinkState::Connecting || m_state == LinkState::Connected)
         return;
     m_reconnectTimer.stop(); // "connect now" during a reconnect backoff
-    const QString problem = m_settings.validate();
-    if (!problem.isEmpty()) {
+    const Message problem = m_settings.validate();
+    if (!problem.empty()) {
         m_wantOpen = false;
         setState(LinkState::Closed, problem);
         return;
@@ -125,7 +124,7 @@ void SessionWorker::startConnect()
         connect(m_transport, &Transport::bytesReceived, this, &SessionWorker::onBytes);
         connect(m_transport, &Transport::allSent, this, &SessionWorker::onAllSent);
     }
-    setState(LinkState::Connecting, m_transport->describe());
+    setState(LinkState::Connecting, Message::text(m_transport->describe().toStdString()));
     m_transport->open();
 }
 
@@ -137,7 +136,7 @@ void SessionWorker::close(bool drain, std::function<void()> closed)
     m_reconnectTimer.stop();
     const bool linkUp = m_state == LinkState::Connected || m_state == LinkState::Connecting;
     if (!drain || !linkUp || !m_transport) {
-        closeNow(QStringLiteral("the session was closed"));
+        closeNow(msg<MsgId::LinkSessionClosed>());
         return;
     }
     if (!m_closing) {
@@ -149,10 +148,8 @@ void SessionWorker::close(bool drain, std::function<void()> closed)
         const int bound = m_shared->closeDrainMs.load();
         const int writes = m_shared->pendingWrites.load();
         if (writes > 0 || m_transport->unsentBytes() > 0)
-            m_log->append(TrafficEntry::Direction::Event, {}, QStringLiteral("closing"),
-                          QStringLiteral("sending %1 queued write(s) first, at most %2 ms")
-                              .arg(writes)
-                              .arg(bound));
+            m_log->append(TrafficEntry::Direction::Event, {}, msg<MsgId::LogClosing>(),
+                          msg<MsgId::LogSendingQueuedWrites>(writes, bound));
         m_drainTimer.start(bound);
     }
     checkDrained();
@@ -178,12 +175,12 @@ void SessionWorker::cancelReadsForClose()
     }
     for (auto &job : cancelled)
         deliver(job, SessionResult::fromError(
-                         makeError(ErrorKind::Cancelled, "the session was closed"), {}, job.raw));
+                         makeError(ErrorKind::Cancelled, msg<MsgId::LinkSessionClosed>()), {}, job.raw));
     // A read on the wire holds the line only if a write must wait for its answer.
     if (m_current && !writesQueued && !isWriteJob(*m_current) && !m_current->probe
         && !m_awaitingSent)
         finishCurrent(SessionResult::fromError(
-            makeError(ErrorKind::Cancelled, "the session was closed"), {}, m_current->raw));
+            makeError(ErrorKind::Cancelled, msg<MsgId::LinkSessionClosed>()), {}, m_current->raw));
 }
 
 void SessionWorker::checkDrained()
@@ -194,10 +191,10 @@ void SessionWorker::checkDrained()
         return; // pump() calls again when the job finishes
     if (m_transport && m_transport->isOpen() && m_transport->unsentBytes() > 0)
         return; // allSent() calls again
-    closeNow(QStringLiteral("the session was closed"));
+    closeNow(msg<MsgId::LinkSessionClosed>());
 }
 
-void SessionWorker::closeNow(const QString &reason)
+void SessionWorker::closeNow(const Message &reason)
 {
     m_closing = false;
     m_awaitingSent = false;
@@ -211,7 +208,7 @@ void SessionWorker::closeNow(const QString &reason)
     m_poller->setLinkUp(false);
     failAll(ErrorKind::Cancelled, reason, true);
     if (m_state != LinkState::Closed)
-        setState(LinkState::Closed, QStringLiteral("closed"));
+        setState(LinkState::Closed, msg<MsgId::LinkClosed>());
     const auto whenClosed = std::exchange(m_whenClosed, {});
     for (const auto &callback : whenClosed)
         callback();
@@ -230,13 +227,13 @@ void SessionWorker::onAllSent()
 void SessionWorker::onOpened()
 {
     m_backoffMs = m_settings.reconnectMinMs;
-    setState(LinkState::Connected, m_transport->describe());
+    setState(LinkState::Connected, Message::text(m_transport->describe().toStdString()));
     m_lastActivity.start();
     m_poller->setLinkUp(true);
     schedulePump();
 }
 
-void SessionWorker::onDisconnected(const QString &reason)
+void SessionWorker::onDisconnected(const Message &reason)
 {
     if (!m_wantOpen && m_state == LinkState::Closed)
         return; // a late report from a link the user already closed
@@ -249,24 +246,24 @@ void SessionWorker::onDisconnected(const QString &reason)
     m_silenceTimer.stop();
     m_poller->setLinkUp(false);
     setState(LinkState::Lost, reason);
-    m_log->append(TrafficEntry::Direction::Event, {}, QStringLiteral("link lost"), reason);
-    failAll(ErrorKind::LinkError, QStringLiteral("link lost: %1").arg(reason), true);
+    m_log->append(TrafficEntry::Direction::Event, {}, msg<MsgId::LogLinkLost>(), reason);
+    failAll(ErrorKind::LinkError, msg<MsgId::LinkLostBecause>(reason), true);
     if (m_wantOpen && m_settings.autoReconnect) {
         const int delay = m_backoffMs;
         m_backoffMs = std::min(m_settings.reconnectMaxMs, m_backoffMs * 2);
-        setState(
-            LinkState::Reconnecting,
-            QStringLiteral("%1; next attempt in %2 s").arg(reason).arg(delay / 1000.0, 0, 'f', 1));
+        setState(LinkState::Reconnecting,
+                 msg<MsgId::LinkNextAttempt>(
+                     reason, QString::number(delay / 1000.0, 'f', 1).toStdString()));
         m_reconnectTimer.start(delay);
     } else {
         m_wantOpen = false;
         setState(LinkState::Closed, reason);
         if (m_closing || !m_whenClosed.empty())
-            closeNow(QStringLiteral("the session was closed"));
+            closeNow(msg<MsgId::LinkSessionClosed>());
     }
 }
 
-void SessionWorker::setState(LinkState state, const QString &reason)
+void SessionWorker::setState(LinkState state, const Message &reason)
 {
     m_state = state;
     m_shared->linkState.store(static_cast<int>(state));

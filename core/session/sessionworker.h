@@ -89,7 +89,7 @@ public:
 
 Q_SIGNALS:
     void finished(quint64 id, const Fatek::SessionResult &result);
-    void linkStateChanged(Fatek::LinkState state, const QString &reason);
+    void linkStateChanged(Fatek::LinkState state, const Fatek::Message &reason);
     void statisticsChanged(const Fatek::SessionStatistics &statistics);
     void protocolDetected(Fatek::Protocol protocol);
     void values(const QList<Fatek::WatchValue> &values);
@@ -108,17 +108,17 @@ private:
     void retryOrFail(ProtocolError error);
     void finishCurrent(SessionResult result);
     void deliver(SessionJob &job, SessionResult result);
-    void failAll(ErrorKind kind, const QString &reason, bool includePolls);
+    void failAll(ErrorKind kind, const Message &reason, bool includePolls);
     static bool isWriteJob(const SessionJob &job);
     void finishBroadcast();
     void onAllSent();
     void cancelReadsForClose();
     void checkDrained();
-    void closeNow(const QString &reason);
+    void closeNow(const Message &reason);
 
     void onOpened();
-    void onDisconnected(const QString &reason);
-    void setState(LinkState state, const QString &reason);
+    void onDisconnected(const Message &reason);
+    void setState(LinkState state, const Message &reason);
     void startConnect();
     void setProtocol(Protocol protocol);
     const Codec *codec() const;
@@ -129,7 +129,7 @@ private:
     void statisticsChangedInternally();
     void countDeframerNoise();
     void publishStatistics();
-    QString summarize(const QByteArray &frame) const;
+    Message summarize(const QByteArray &frame) const;
 
     LinkSettings m_settings;
     std::shared_ptr<SessionShared> m_shared;

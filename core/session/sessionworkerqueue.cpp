@@ -32,32 +32,25 @@ void SessionWorker::enqueue(SessionJob job)
     // Operator mode: refuse before anything can reach the wire (checked again when sent, in
     // case the mode changed while the job waited).
     if (m_shared->readOnly.load() && (job.raw || isWriteCommand(job.request.command))) {
-        const QString what = job.raw ? QStringLiteral("raw frame")
-                                     : QString::fromStdString(job.request.describe());
+        const MessageArg what
+            = job.raw ? MessageArg(msg<MsgId::LogRawFrame>()) : MessageArg(job.request.describe());
         deliver(job, SessionResult::fromError(
-                         makeError(ErrorKind::ReadOnly,
-                                   (QStringLiteral("Read-only mode: \"%1\" was not sent. "
-                                                   "Leave operator mode to change the PLC.")
-                                        .arg(what))
-                                       .toStdString()),
-                         {}, job.raw));
+                         makeError(ErrorKind::ReadOnly, msg<MsgId::SessionReadOnly>(what)), {},
+                         job.raw));
         return;
     }
     if (m_closing) {
         deliver(job, SessionResult::fromError(
-                         makeError(ErrorKind::LinkError, "Not sent: the link is closing."), {},
+                         makeError(ErrorKind::LinkError, msg<MsgId::SessionLinkClosing>()), {},
                          job.raw));
         return;
     }
     if (m_state != LinkState::Connected && m_state != LinkState::Connecting) {
-        const QString why
-            = m_state == LinkState::Closed
-                  ? QStringLiteral("the link is not open")
-                  : QStringLiteral("the link is down (%1)").arg(linkStateName(m_state));
-        deliver(job, SessionResult::fromError(
-                         makeError(ErrorKind::LinkError,
-                                   (QStringLiteral("Not sent: %1.").arg(why)).toStdString()),
-                         {}, job.raw));
+        Message why = m_state == LinkState::Closed
+                          ? msg<MsgId::SessionLinkNotOpen>()
+                          : msg<MsgId::SessionLinkDown>(linkStateMessage(m_state));
+        deliver(job, SessionResult::fromError(makeError(ErrorKind::LinkError, std::move(why)), {},
+                                              job.raw));
         return;
     }
     std::deque<SessionJob> &queue = queueFor(job.priority);
@@ -66,11 +59,7 @@ void SessionWorker::enqueue(SessionJob job)
     if (job.priority != Priority::Poll && queue.size() >= maxQueuedRequests) {
         deliver(job, SessionResult::fromError(
                          makeError(ErrorKind::LimitExceeded,
-                                   (QStringLiteral("Not sent: %1 requests are already "
-                                                   "waiting on this link (the PLC answers "
-                                                   "slower than requests arrive).")
-                                        .arg(maxQueuedRequests))
-                                       .toStdString()),
+                                   msg<MsgId::SessionQueueFull>(maxQueuedRequests)),
                          {}, job.raw));
         return;
     }
@@ -96,7 +85,7 @@ void SessionWorker::cancel(quint64 id)
             SessionJob job = std::move(*it);
             queue->erase(it);
             deliver(job, SessionResult::fromError(
-                             makeError(ErrorKind::Cancelled, "Cancelled before it was sent."), {},
+                             makeError(ErrorKind::Cancelled, msg<MsgId::SessionCancelled>()), {},
                              job.raw));
             return;
         }
@@ -115,7 +104,7 @@ bool SessionWorker::takeNext(SessionJob &job)
     return false;
 }
 
-void SessionWorker::failAll(ErrorKind kind, const QString &reason, bool includePolls)
+void SessionWorker::failAll(ErrorKind kind, const Message &reason, bool includePolls)
 {
     std::vector<SessionJob> jobs;
     if (m_current) {
@@ -130,7 +119,7 @@ void SessionWorker::failAll(ErrorKind kind, const QString &reason, bool includeP
         queue->clear();
     }
     for (auto &job : jobs)
-        deliver(job, SessionResult::fromError(makeError(kind, reason.toStdString()), {}, job.raw));
+        deliver(job, SessionResult::fromError(makeError(kind, reason), {}, job.raw));
 }
 
 void SessionWorker::schedulePump()
@@ -200,8 +189,7 @@ bool SessionWorker::prepare(SessionJob &job)
                 if (answered) {
                     setProtocol(protocol);
                     m_log->append(TrafficEntry::Direction::Event, {},
-                                  QStringLiteral("protocol detected: %1")
-                                      .arg(QString::fromUtf8(protocolName(protocol))));
+                                  msg<MsgId::LogProtocolDetected>(protocolName(protocol)));
                     Q_EMIT protocolDetected(protocol);
                     queueFor(waiting->priority).push_front(std::move(*waiting));
                     schedulePump();
@@ -211,12 +199,8 @@ bool SessionWorker::prepare(SessionJob &job)
                     const ErrorKind kind = linkDown ? result.errorKind() : ErrorKind::Timeout;
                     deliver(*waiting,
                             SessionResult::fromError(
-                                makeError(kind, (QStringLiteral(
-                                                     "Protocol auto-detect: station %1 answered "
-                                                     "neither in FACON nor in binary (%2)")
-                                                     .arg(station)
-                                                     .arg(result.errorText()))
-                                                    .toStdString()),
+                                makeError(kind, msg<MsgId::LinkAutoDetectFailed>(
+                                                    station, result.errorMessage())),
                                 {}, waiting->raw));
                 }
             };

@@ -53,8 +53,8 @@ void SessionWorker::startAttempt()
     m_faconDeframer->reset();
     m_binaryDeframer->reset();
     if (!stale.isEmpty()) {
-        m_log->append(TrafficEntry::Direction::In, stale, QStringLiteral("stale bytes discarded"),
-                      QStringLiteral("received outside an answer"));
+        m_log->append(TrafficEntry::Direction::In, stale, msg<MsgId::LogStaleBytes>(),
+                      msg<MsgId::LogOutsideAnswer>());
     }
     if (!stale.isEmpty() || partial > 0) {
         m_statistics.bytesDiscarded += static_cast<quint64>(stale.size()) + partial;
@@ -85,8 +85,7 @@ void SessionWorker::startAttempt()
         // The transport reports the failure itself (disconnected); make sure the job ends.
         finishCurrent(SessionResult::fromError(
             makeError(ErrorKind::LinkError,
-                      (QStringLiteral("Could not write to %1.").arg(m_transport->describe()))
-                          .toStdString()),
+                      msg<MsgId::SessionCouldNotWrite>(m_transport->describe().toStdString())),
             {}, job.raw));
         return;
     }
@@ -119,12 +118,12 @@ void SessionWorker::finishBroadcast()
     finishCurrent(SessionResult(Result<Response>(response)));
 }
 
-QString SessionWorker::summarize(const QByteArray &frame) const
+Message SessionWorker::summarize(const QByteArray &frame) const
 {
     if (const Codec *c = codec())
-        return QString::fromStdString(c->summarize(bytesOf(frame)));
+        return c->summary(bytesOf(frame));
     // Protocol not known yet: the frame's first byte tells.
-    return QString::fromStdString(RawFrame::summarize(bytesOf(frame)));
+    return RawFrame::summary(bytesOf(frame));
 }
 
 void SessionWorker::onBytes(const QByteArray &bytes)
@@ -132,8 +131,8 @@ void SessionWorker::onBytes(const QByteArray &bytes)
     m_lastActivity.start();
     if (!m_current || !m_timeoutTimer.isActive() || m_awaitingSent) {
         // Nothing asked: a late answer or noise. Dropped now, logged, and counted.
-        m_log->append(TrafficEntry::Direction::In, bytes, QStringLiteral("unexpected bytes"),
-                      QStringLiteral("no query pending"));
+        m_log->append(TrafficEntry::Direction::In, bytes, msg<MsgId::LogUnexpectedBytes>(),
+                      msg<MsgId::LogNoQueryPending>());
         m_statistics.total.bytesIn += static_cast<quint64>(bytes.size());
         m_statistics.bytesDiscarded += static_cast<quint64>(bytes.size());
         statisticsChangedInternally();
@@ -161,7 +160,7 @@ void SessionWorker::onBytes(const QByteArray &bytes)
         const QByteArray frame = toQByteArray(item.frame);
         if (item.error) {
             m_log->append(TrafficEntry::Direction::In, frame, summarize(frame),
-                          QString::fromStdString(item.error->message));
+                          item.error->message);
             if (item.error->kind == ErrorKind::BadChecksum)
                 countForStation(station, [](StationStatistics &s) { ++s.checksumErrors; });
             else
@@ -175,8 +174,7 @@ void SessionWorker::onBytes(const QByteArray &bytes)
         if (!decoded && frame == m_sentFrame) {
             // 2-wire RS-485 hears its own query. (Only when it does not decode as an answer: a
             // FACON STOP or loopback answer is byte for byte the query.)
-            m_log->append(TrafficEntry::Direction::In, frame, QStringLiteral("echo of the query"),
-                          {});
+            m_log->append(TrafficEntry::Direction::In, frame, msg<MsgId::LogEchoOfQuery>(), {});
             continue;
         }
         if (!decoded
@@ -184,11 +182,11 @@ void SessionWorker::onBytes(const QByteArray &bytes)
                 || decoded.error().kind == ErrorKind::CommandMismatch)) {
             // Another station on the bus, or a late answer to an earlier query: keep waiting.
             m_log->append(TrafficEntry::Direction::In, frame, summarize(frame),
-                          QString::fromStdString(decoded.error().message));
+                          decoded.error().message);
             continue;
         }
         m_log->append(TrafficEntry::Direction::In, frame, summarize(frame),
-                      decoded ? QString() : QString::fromStdString(decoded.error().message));
+                      decoded ? Message{} : decoded.error().message);
         const double rtt = static_cast<double>(m_roundTrip.nsecsElapsed()) / 1e6;
         const bool plcError = !decoded && decoded.error().kind == ErrorKind::PlcError;
         const bool malformed = !decoded && !plcError;
@@ -213,8 +211,8 @@ void SessionWorker::onRawBytes(const QByteArray &bytes)
     if (m_answer.size() > maxRawAnswerBytes) {
         // A peer that floods the console: keep what fits and end now rather than at the timeout.
         m_answer.truncate(maxRawAnswerBytes);
-        m_log->append(TrafficEntry::Direction::In, m_answer, QStringLiteral("raw answer"),
-                      QStringLiteral("more than %1 bytes: rest not read").arg(maxRawAnswerBytes));
+        m_log->append(TrafficEntry::Direction::In, m_answer, msg<MsgId::LogRawAnswer>(),
+                      msg<MsgId::LogRestNotRead>(maxRawAnswerBytes));
         finishCurrent(SessionResult::fromRaw(m_answer));
         return;
     }
@@ -243,7 +241,7 @@ void SessionWorker::onRawBytes(const QByteArray &bytes)
         if (item.error)
             countForStation(0, [](StationStatistics &s) { ++s.checksumErrors; });
         m_log->append(TrafficEntry::Direction::In, m_answer, summarize(frame),
-                      item.error ? QString::fromStdString(item.error->message) : QString());
+                      item.error ? item.error->message : Message{});
         finishCurrent(SessionResult::fromRaw(m_answer));
         return;
     }
@@ -258,35 +256,29 @@ void SessionWorker::onTimeout()
     if (m_awaitingSent) {
         // Never retried: the stuck copy may still leave, and the PLC would act twice.
         m_awaitingSent = false;
-        const QString link = m_transport->describe();
-        const QString message
-            = QStringLiteral("Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes "
-                             "unsent).")
-                  .arg(link)
-                  .arg(timeout)
-                  .arg(std::min<qint64>(m_transport->unsentBytes(), m_sentFrame.size()))
-                  .arg(m_sentFrame.size());
-        m_log->append(TrafficEntry::Direction::Event, {},
-                      QString::fromStdString(job.request.describe()), message);
-        finishCurrent(
-            SessionResult::fromError(makeError(ErrorKind::LinkError, message.toStdString())));
+        const std::string link = m_transport->describe().toStdString();
+        const Message message = msg<MsgId::SessionFrameNotTaken>(
+            link, timeout, std::min<qint64>(m_transport->unsentBytes(), m_sentFrame.size()),
+            m_sentFrame.size());
+        m_log->append(TrafficEntry::Direction::Event, {}, Message::text(job.request.describe()),
+                      message);
+        finishCurrent(SessionResult::fromError(makeError(ErrorKind::LinkError, message)));
         // Reported as not sent, so it must never leave later: drop the link and what it holds.
         m_transport->close();
-        onDisconnected(QStringLiteral("%1 does not take data").arg(link));
+        onDisconnected(msg<MsgId::LinkDoesNotTakeData>(link));
         return;
     }
     if (job.raw) {
         if (m_answer.isEmpty()) {
             countForStation(0, [](StationStatistics &s) { ++s.timeouts; });
-            m_log->append(TrafficEntry::Direction::Event, {}, QStringLiteral("raw frame"),
-                          QStringLiteral("no answer within %1 ms").arg(timeout));
+            m_log->append(TrafficEntry::Direction::Event, {}, msg<MsgId::LogRawFrame>(),
+                          msg<MsgId::LogNoAnswerWithin>(timeout));
             finishCurrent(SessionResult::fromError(
-                makeError(ErrorKind::Timeout,
-                          (QStringLiteral("No answer within %1 ms.").arg(timeout)).toStdString()),
-                {}, true));
+                makeError(ErrorKind::Timeout, msg<MsgId::SessionNoAnswerWithin>(timeout)), {},
+                true));
         } else {
-            m_log->append(TrafficEntry::Direction::In, m_answer, QStringLiteral("raw answer"),
-                          QStringLiteral("no complete frame"));
+            m_log->append(TrafficEntry::Direction::In, m_answer, msg<MsgId::LogRawAnswer>(),
+                          msg<MsgId::LogNoCompleteFrame>());
             finishCurrent(SessionResult::fromRaw(m_answer));
         }
         return;
@@ -294,15 +286,11 @@ void SessionWorker::onTimeout()
     const quint8 station = stationOf(job);
     countForStation(station, [](StationStatistics &s) { ++s.timeouts; });
     const int attempts = retriesFor(job) + 1;
-    const QString message
-        = QStringLiteral("No answer from station %1 within %2 ms (attempt %3 of %4).")
-              .arg(station)
-              .arg(timeout)
-              .arg(job.attempts)
-              .arg(attempts);
-    m_log->append(TrafficEntry::Direction::Event, {},
-                  QString::fromStdString(job.request.describe()), message);
-    retryOrFail(makeError(ErrorKind::Timeout, message.toStdString()));
+    const Message message
+        = msg<MsgId::SessionNoAnswerFromStation>(station, timeout, job.attempts, attempts);
+    m_log->append(TrafficEntry::Direction::Event, {}, Message::text(job.request.describe()),
+                  message);
+    retryOrFail(makeError(ErrorKind::Timeout, message));
 }
 
 void SessionWorker::retryOrFail(ProtocolError error)

@@ -56,19 +56,18 @@ void TrafficLog::trimLocked()
 }
 
 quint64 TrafficLog::append(TrafficEntry::Direction direction, const QByteArray &bytes,
-                           const QString &summary, const QString &error)
+                           const Message &summary, const Message &error)
 {
     quint64 sequence = 0;
     {
         const std::lock_guard locker(m_mutex);
         sequence = ++m_lastSequence;
-        QString note = error;
+        Message note = error;
         QByteArray kept = bytes;
         if (kept.size() > maxEntryBytes) {
             kept.truncate(maxEntryBytes);
-            const QString cut
-                = QStringLiteral("%1 bytes, first %2 kept").arg(bytes.size()).arg(maxEntryBytes);
-            note = note.isEmpty() ? cut : note + QStringLiteral("; ") + cut;
+            Message cut = msg<MsgId::LogBytesKept>(bytes.size(), maxEntryBytes);
+            note = note.empty() ? std::move(cut) : msg<MsgId::Listed>(note, std::move(cut));
         }
         m_bytesHeld += kept.size();
         m_entries.push_back(

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "qtmessage.h"
+
 #include <QByteArray>
 #include <QDateTime>
 #include <QList>
@@ -22,8 +24,8 @@ struct TrafficEntry
     QDateTime timestamp;  // UTC: cheap to take per frame on the worker; shown in local time
     Direction direction = Direction::Event;
     QByteArray bytes; // raw frame (empty for events such as a timeout)
-    QString summary;  // decoded: "46 read registers, station 1, 3 x R12"
-    QString error;    // "bad checksum", "unexpected station 2", "timeout after 1000 ms"
+    Message summary;  // decoded: "station 1, 46 read consecutive registers: 3 x R12"
+    Message error;    // "no query pending", "No answer within 1000 ms."; empty when fine
 };
 
 // Every frame in and out of a session, bounded (oldest entries dropped). Written by the session's
@@ -49,7 +51,7 @@ public:
 
     // Returns the entry's sequence number.
     quint64 append(TrafficEntry::Direction direction, const QByteArray &bytes,
-                   const QString &summary, const QString &error = {});
+                   const Message &summary, const Message &error = {});
 
     // Entries with a sequence number above `after` still in the buffer (all with 0).
     QList<TrafficEntry> entries(quint64 after = 0) const;

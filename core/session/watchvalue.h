@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/address.h"
+#include "qtmessage.h"
 
 #include <QDateTime>
 #include <QMetaType>
@@ -31,7 +32,7 @@ struct WatchValue
     std::uint32_t value = 0; // raw: bit 0/1, 16-bit or 32-bit pattern
     QDateTime timestamp;     // when the answer came (for Stale: when it was last good)
     ValueQuality quality = ValueQuality::Error;
-    QString error; // why not Good
+    Message error; // why not Good
 };
 
 } // namespace Fatek

@@ -264,7 +264,7 @@ void SimServer::handleBytes(SimConnection *connection, const QByteArray &bytes)
             ++m_counters.rejected;
             log(QStringLiteral("[%1] %2 frame rejected, no answer: %3")
                     .arg(connection->peer(), QString::fromUtf8(protocolName(item.protocol).data()),
-                         QString::fromStdString(item.item.error->message)));
+                         QString::fromStdString(item.item.error->text())));
             continue;
         }
         handleFrame(connection, item.protocol, item.item.frame);
@@ -300,7 +300,7 @@ void SimServer::handleFrame(SimConnection *connection, Protocol protocol, const 
         const int code = decoded.error().plcCode;
         log(prefix
             + QStringLiteral("command %1: %2 -> %3")
-                  .arg(hexCode(header->command), QString::fromStdString(decoded.error().message),
+                  .arg(hexCode(header->command), QString::fromStdString(decoded.error().text()),
                        code == 0 || broadcast
                            ? QStringLiteral("no answer")
                            : QStringLiteral("error ") + hexCode(static_cast<std::uint8_t>(code))));

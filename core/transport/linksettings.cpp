@@ -129,40 +129,37 @@ QString LinkSettings::toString() const
     return medium + QStringLiteral(", ") + protocolChoiceName(protocol);
 }
 
-QString LinkSettings::validate() const
+Message LinkSettings::validate() const
 {
     switch (kind) {
     case Kind::Tcp:
     case Kind::Udp:
         if (host.trimmed().isEmpty())
-            return QStringLiteral("Enter the PLC's IP address or host name.");
+            return msg<MsgId::SettingsNoHost>();
         if (port == 0)
-            return QStringLiteral(
-                "Port 0 is not usable; FATEK Ethernet modules usually listen on 500.");
+            return msg<MsgId::SettingsPortZero>();
         break;
     case Kind::Serial:
         if (portName.trimmed().isEmpty())
-            return QStringLiteral("Choose a serial port.");
+            return msg<MsgId::SettingsNoSerialPort>();
         if (baudRate < 1200 || baudRate > 921600)
-            return QStringLiteral("Baud rate %1 is out of range (1200 to 921600).").arg(baudRate);
+            return msg<MsgId::SettingsBaudRate>(baudRate);
         if (dataBits != 7 && dataBits != 8)
-            return QStringLiteral("Data bits must be 7 or 8, not %1.").arg(dataBits);
+            return msg<MsgId::SettingsDataBits>(dataBits);
         if (stopBits != 1 && stopBits != 2)
-            return QStringLiteral("Stop bits must be 1 or 2, not %1.").arg(stopBits);
+            return msg<MsgId::SettingsStopBits>(stopBits);
         break;
     }
     if (timeoutMs < 1 || timeoutMs > 60000)
-        return QStringLiteral("Timeout %1 ms is out of range (1 to 60000 ms).").arg(timeoutMs);
+        return msg<MsgId::SettingsTimeout>(timeoutMs);
     if (retries < 0 || retries > 10)
-        return QStringLiteral("Retries %1 is out of range (0 to 10).").arg(retries);
+        return msg<MsgId::SettingsRetries>(retries);
     if (interFrameMs < 0 || interFrameMs > 1000)
-        return QStringLiteral("Inter-frame silence %1 ms is out of range (0 to 1000 ms).")
-            .arg(interFrameMs);
+        return msg<MsgId::SettingsInterFrame>(interFrameMs);
     if (connectTimeoutMs < 1)
-        return QStringLiteral("Connect timeout must be at least 1 ms.");
+        return msg<MsgId::SettingsConnectTimeout>();
     if (reconnectMinMs < 1 || reconnectMaxMs < reconnectMinMs)
-        return QStringLiteral(
-            "Reconnect delays must be positive, the maximum not below the minimum.");
+        return msg<MsgId::SettingsReconnectDelays>();
     return {};
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/session/qtmessage.h"
+
 #include <QChar>
 #include <QMetaType>
 #include <QString>
@@ -65,7 +67,7 @@ struct LinkSettings
     // "TCP 127.0.0.1:500, FACON", "UDP plc1:500, binary", "/dev/ttyUSB0 9600 7E1, auto-detect".
     QString toString() const;
     // Empty when usable, else one sentence saying what to fix.
-    QString validate() const;
+    Message validate() const;
 
     bool operator==(const LinkSettings &) const = default;
 };

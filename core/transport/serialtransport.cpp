@@ -60,8 +60,8 @@ void SerialTransport::open()
 
     const bool ok = m_port->open(QIODevice::ReadWrite);
     if (!ok) {
-        const QString reason
-            = QStringLiteral("cannot open %1: %2").arg(describe(), m_port->errorString());
+        const Message reason = msg<MsgId::LinkCannotOpen>(
+            describe().toStdString(), Message::text(m_port->errorString().toStdString()));
         close();
         // Asynchronous like the other transports, so callers see one code path.
         QTimer::singleShot(0, this, [this, reason] { Q_EMIT disconnected(reason); });
@@ -81,7 +81,7 @@ void SerialTransport::open()
         if (error != QSerialPort::ResourceError && error != QSerialPort::PermissionError
             && error != QSerialPort::DeviceNotFoundError)
             return;
-        const QString reason = QStringLiteral("%1: %2").arg(describe(), m_port->errorString());
+        const Message reason = deviceError(m_port->errorString());
         close();
         Q_EMIT disconnected(reason);
     });

@@ -11,9 +11,8 @@ TcpTransport::TcpTransport(const LinkSettings &settings, QObject *parent)
 {
     m_connectTimer.setSingleShot(true);
     connect(&m_connectTimer, &QTimer::timeout, this, [this] {
-        fail(QStringLiteral("no connection to %1 within %2 ms")
-                 .arg(describe())
-                 .arg(m_settings.connectTimeoutMs));
+        fail(msg<MsgId::LinkNoConnectionWithin>(describe().toStdString(),
+                                                m_settings.connectTimeoutMs));
     });
 }
 
@@ -46,17 +45,17 @@ void TcpTransport::open()
     });
     connect(m_socket, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError error) {
         if (error == QAbstractSocket::RemoteHostClosedError)
-            fail(QStringLiteral("%1 closed the connection").arg(describe()));
+            fail(msg<MsgId::LinkPeerClosed>(describe().toStdString()));
         else
-            fail(QStringLiteral("%1: %2").arg(describe(), m_socket->errorString()));
+            fail(deviceError(m_socket->errorString()));
     });
     connect(m_socket, &QTcpSocket::disconnected, this,
-            [this] { fail(QStringLiteral("%1 closed the connection").arg(describe())); });
+            [this] { fail(msg<MsgId::LinkPeerClosed>(describe().toStdString())); });
     m_connectTimer.start(m_settings.connectTimeoutMs);
     m_socket->connectToHost(m_settings.host, m_settings.port);
 }
 
-void TcpTransport::fail(const QString &reason)
+void TcpTransport::fail(const Message &reason)
 {
     if (!m_socket)
         return; // already reported

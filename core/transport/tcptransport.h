@@ -26,7 +26,7 @@ public:
     QString describe() const override;
 
 private:
-    void fail(const QString &reason);
+    void fail(const Message &reason);
 
     LinkSettings m_settings;
     QTcpSocket *m_socket = nullptr;

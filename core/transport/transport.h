@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/session/qtmessage.h"
 #include "linksettings.h"
 
 #include <QByteArray>
@@ -34,10 +35,16 @@ public:
     virtual QByteArray takePending() = 0;
     // "TCP 127.0.0.1:500" for messages.
     virtual QString describe() const = 0;
+    // "TCP 127.0.0.1:500: <the system's error text>", for disconnected().
+    Message deviceError(const QString &systemText) const
+    {
+        return msg<MsgId::Joined>(describe().toStdString(),
+                                  Message::text(systemText.toStdString()));
+    }
 
 Q_SIGNALS:
     void opened();
-    void disconnected(const QString &reason);
+    void disconnected(const Fatek::Message &reason);
     void bytesReceived(const QByteArray &bytes);
     // unsentBytes() fell to 0 (emitted after a write() that could not finish at once).
     void allSent();

@@ -41,7 +41,7 @@ void UdpTransport::open()
         Q_UNUSED(error);
         if (m_open)
             return;
-        const QString reason = QStringLiteral("%1: %2").arg(describe(), m_socket->errorString());
+        const Message reason = deviceError(m_socket->errorString());
         close();
         Q_EMIT disconnected(reason);
     });

@@ -39,13 +39,18 @@ std::uint64_t widthMask(int width)
     return width >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << width) - 1;
 }
 
-QString widthPhrase(int width)
+Message widthPhrase(int width)
 {
     switch (width) {
-    case 1: return QStringLiteral("a bit");
-    case 16: return QStringLiteral("a 16-bit register");
-    default: return QStringLiteral("a %1-bit value").arg(width);
+    case 1: return msg<MsgId::ValueWidthBit>();
+    case 16: return msg<MsgId::ValueWidthRegister>();
+    default: return msg<MsgId::ValueWidthBits>(width);
     }
+}
+
+std::string str(const QString &text)
+{
+    return text.toStdString();
 }
 
 QString needsText(DisplayFormat format)
@@ -64,9 +69,14 @@ QString needsText(DisplayFormat format)
     return QStringLiteral("1, 16, 32 or 64 bits");
 }
 
-ProtocolError valueError(const QString &message)
+ProtocolError valueError(Message message)
 {
-    return makeError(ErrorKind::InvalidRequest, message.toStdString());
+    return makeError(ErrorKind::InvalidRequest, std::move(message));
+}
+
+ProtocolError valueError(const QString &text)
+{
+    return makeError(ErrorKind::InvalidRequest, text.toStdString());
 }
 
 QString hexText(std::uint64_t value, int width)
@@ -183,14 +193,12 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
 
     const auto notANumber = [&] {
         if (bcd)
-            return valueError(
-                QStringLiteral("\"%1\" is not a BCD number (digits 0-9 only)").arg(text));
+            return valueError(msg<MsgId::ValueNotBcd>(str(text)));
         if (base == 16)
-            return valueError(QStringLiteral("\"%1\" is not a hexadecimal number").arg(text));
+            return valueError(msg<MsgId::ValueNotHex>(str(text)));
         if (base == 2)
-            return valueError(
-                QStringLiteral("\"%1\" is not a binary number (only 0 and 1)").arg(text));
-        return valueError(QStringLiteral("\"%1\" is not a number").arg(text));
+            return valueError(msg<MsgId::ValueNotBinary>(str(text)));
+        return valueError(msg<MsgId::ValueNotNumber>(str(text)));
     };
 
     const std::uint64_t radix = bcd ? 16 : static_cast<std::uint64_t>(base);
@@ -220,11 +228,10 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
 
     if (bcd) {
         if (negative)
-            return valueError(QStringLiteral("BCD values cannot be negative (\"%1\")").arg(text));
+            return valueError(msg<MsgId::ValueBcdNegative>(str(text)));
         if (overflow || magnitude > widthMask(width)) {
-            return valueError(
-                QStringLiteral("%1 does not fit %2 as BCD (0..%3)")
-                    .arg(text, widthPhrase(width), QString(width / 4, QLatin1Char('9'))));
+            return valueError(msg<MsgId::ValueBcdTooLarge>(
+                str(text), widthPhrase(width), std::string(static_cast<std::size_t>(width / 4), '9')));
         }
         return magnitude;
     }
@@ -232,8 +239,8 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
     const std::uint64_t mask = widthMask(width);
     const std::uint64_t negativeLimit = std::uint64_t(1) << (width - 1);
     if (overflow || (negative ? magnitude > negativeLimit : magnitude > mask))
-        return valueError(QStringLiteral("%1 does not fit %2 (%3)")
-                              .arg(text, widthPhrase(width), rangeText(width)));
+        return valueError(
+            msg<MsgId::ValueTooLarge>(str(text), widthPhrase(width), str(rangeText(width))));
     return negative ? (~magnitude + 1) & mask : magnitude;
 }
 
@@ -248,7 +255,7 @@ Result<std::uint64_t> parseBit(const QString &text, DisplayFormat format)
         if (auto value = parseInteger(text, 1, format); value)
             return value;
     }
-    return valueError(QStringLiteral("\"%1\" is not a bit value: type ON, OFF, 1 or 0").arg(text));
+    return valueError(msg<MsgId::ValueNotBit>(str(text)));
 }
 
 Result<std::uint64_t> parseFloat(const QString &text, int width)
@@ -281,14 +288,11 @@ Result<std::uint64_t> parseFloat(const QString &text, int width)
                     looksNumeric = false;
             }
             if (finite || looksNumeric) {
-                return valueError(
-                    QStringLiteral("%1 does not fit a %2 (largest about ±%3)")
-                        .arg(text,
-                             width == 32 ? QStringLiteral("32-bit float")
-                                         : QStringLiteral("64-bit double"),
-                             width == 32 ? QStringLiteral("3.4e38") : QStringLiteral("1.8e308")));
+                return valueError(width == 32
+                                      ? msg<MsgId::ValueFloatTooLarge>(str(text), "3.4e38")
+                                      : msg<MsgId::ValueDoubleTooLarge>(str(text), "1.8e308"));
             }
-            return valueError(QStringLiteral("\"%1\" is not a number").arg(text));
+            return valueError(msg<MsgId::ValueNotNumber>(str(text)));
         }
     }
     if (width == 32)
@@ -300,18 +304,14 @@ Result<std::uint64_t> parseAscii(const QString &text, int width)
 {
     const int capacity = width / 8;
     if (text.size() > capacity) {
-        return valueError(QStringLiteral("\"%1\" is too long: %2 holds %3 ASCII characters")
-                              .arg(text, widthPhrase(width))
-                              .arg(capacity));
+        return valueError(
+            msg<MsgId::ValueAsciiTooLong>(str(text), widthPhrase(width), capacity));
     }
     std::uint64_t value = 0;
     for (int i = 0; i < text.size(); ++i) {
         const char16_t c = text[i].unicode();
         if (c < 0x20 || c > 0x7E) {
-            return valueError(
-                QStringLiteral("\"%1\" contains a character that is not plain printable ASCII "
-                               "(letters, digits, punctuation and space only)")
-                    .arg(text));
+            return valueError(msg<MsgId::ValueNotPrintable>(str(text)));
         }
         // Word i/2 (R(n) first), high byte first inside the word.
         value |= std::uint64_t(c) << (16 * (i / 2) + (i % 2 == 0 ? 8 : 0));
@@ -449,9 +449,7 @@ QString format(std::uint64_t raw, int width, DisplayFormat format, bool swap)
 Result<std::uint64_t> parse(const QString &text, int width, DisplayFormat format, bool swap)
 {
     if (!validWidth(width))
-        return valueError(
-            QStringLiteral("A %1-bit value cannot be written (only 1, 16, 32 or 64 bits).")
-                .arg(width));
+        return valueError(msg<MsgId::ValueCannotWriteWidth>(width));
     if (!isAvailable(format, width)) {
         return valueError(
             QStringLiteral("The %1 format needs %2; this value has %3.")
@@ -466,10 +464,8 @@ Result<std::uint64_t> parse(const QString &text, int width, DisplayFormat format
     } else {
         const QString trimmed = text.trimmed();
         if (trimmed.isEmpty()) {
-            return valueError(
-                width == 1
-                    ? QStringLiteral("No value typed: type ON, OFF, 1 or 0.")
-                    : QStringLiteral("No value typed: type a number such as 12, -5, 0x1A or 1Ah."));
+            return valueError(width == 1 ? msg<MsgId::ValueNoBitTyped>()
+                                         : msg<MsgId::ValueNoNumberTyped>());
         }
         if (width == 1)
             value = parseBit(trimmed, format);

@@ -49,7 +49,7 @@ Status validateEntry(const WatchItemSpec &entry)
             return fileError(QStringLiteral("format \"%1\" on %2 needs %3 elements: %4")
                                  .arg(ValueFormat::name(entry.format), address)
                                  .arg(count)
-                                 .arg(lowerFirst(QString::fromStdString(s.error().message))));
+                                 .arg(lowerFirst(QString::fromStdString(s.error().text()))));
         }
     }
     return Ok{};
@@ -78,13 +78,9 @@ Result<QList<Address>> expandRange(const QString &text)
         return range.error();
     // One range becomes that many watch rows: the grammar is AddressRange's, the limit ours.
     if (range->count > static_cast<std::uint32_t>(MaxRangeItems)) {
-        return makeError(
-            ErrorKind::InvalidAddress,
-            QStringLiteral("Range \"%1\" has %2 elements; at most %3 fit in one range.")
-                .arg(text.trimmed())
-                .arg(range->count)
-                .arg(MaxRangeItems)
-                .toStdString());
+        return makeError(ErrorKind::InvalidAddress,
+                         msg<MsgId::RangeTooMany>(text.trimmed().toStdString(), range->count,
+                                                  MaxRangeItems));
     }
     QList<Address> addresses;
     addresses.reserve(range->count);

@@ -203,7 +203,7 @@ Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
     QList<WatchItemSpec> entries;
     for (qsizetype r = header ? 1 : 0; r < records->size(); ++r) {
         const CsvRecord &record = records->at(r);
-        const QString place = linePlace(record.line);
+        const Message place = linePlace(record.line);
         QString cells[5];
         for (qsizetype c = 0; c < record.fields.size(); ++c) {
             const QString &field = record.fields.at(c);

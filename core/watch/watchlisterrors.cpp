@@ -13,17 +13,19 @@ ProtocolError fileError(const QString &message)
 
 QString lowerFirst(const QString &text)
 {
-    if (text.size() >= 2 && text[0].isUpper() && text[1].isLower())
-        return text[0].toLower() + text.mid(1);
-    return text;
+    return QString::fromStdString(Fatek::lowerFirst(text.toStdString()));
+}
+
+ProtocolError atPlace(const Message &place, const ProtocolError &error)
+{
+    ProtocolError e = error;
+    e.message = msg<MsgId::AtPlace>(place, error.message);
+    return e;
 }
 
 ProtocolError atPlace(const QString &place, const ProtocolError &error)
 {
-    ProtocolError e = error;
-    e.message = (place + QStringLiteral(": ") + lowerFirst(QString::fromStdString(error.message)))
-                    .toStdString();
-    return e;
+    return atPlace(Message::text(place.toStdString()), error);
 }
 
 QString knownFormats()
@@ -34,26 +36,25 @@ QString knownFormats()
     return names.join(QStringLiteral(", "));
 }
 
-QString tablePlace(qsizetype table)
+Message tablePlace(qsizetype table)
 {
-    return QStringLiteral("table %1").arg(table + 1);
+    return msg<MsgId::PlaceTable>(table + 1);
 }
 
 ProtocolError tooManyItems(qsizetype count)
 {
-    return fileError(QStringLiteral("%1 items are more than one table holds (at most %2)")
-                         .arg(count)
-                         .arg(MaxTableItems));
+    return makeError(ErrorKind::InvalidRequest,
+                     msg<MsgId::WatchListTooManyItems>(count, MaxTableItems));
 }
 
-QString itemPlace(qsizetype table, qsizetype item)
+Message itemPlace(qsizetype table, qsizetype item)
 {
-    return QStringLiteral("table %1, item %2").arg(table + 1).arg(item + 1);
+    return msg<MsgId::PlaceItem>(table + 1, item + 1);
 }
 
-QString linePlace(int line)
+Message linePlace(int line)
 {
-    return QStringLiteral("line %1").arg(line);
+    return msg<MsgId::PlaceLine>(line);
 }
 
 } // namespace Fatek::WatchList::Errors

@@ -14,6 +14,8 @@ ProtocolError fileError(const QString &message);
 // "Invalid address ..." becomes "invalid address ..." after "table 2, item 5: ". Acronyms ("BCD
 // ...") keep their case.
 QString lowerFirst(const QString &text);
+ProtocolError atPlace(const Message &place, const ProtocolError &error);
+// A place that is data (a file name).
 ProtocolError atPlace(const QString &place, const ProtocolError &error);
 
 // The display format names, for "unknown format" messages.
@@ -21,8 +23,8 @@ QString knownFormats();
 ProtocolError tooManyItems(qsizetype count);
 
 // Places count from 1; table and item are indices.
-QString tablePlace(qsizetype table);
-QString itemPlace(qsizetype table, qsizetype item);
-QString linePlace(int line);
+Message tablePlace(qsizetype table);
+Message itemPlace(qsizetype table, qsizetype item);
+Message linePlace(int line);
 
 } // namespace Fatek::WatchList::Errors

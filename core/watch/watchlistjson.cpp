@@ -110,7 +110,7 @@ Result<WatchItemSpec> entryFromJson(const QJsonValue &value)
 
 Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index)
 {
-    const QString place = tablePlace(index);
+    const Message place = tablePlace(index);
     if (!value.isObject())
         return atPlace(place, fileError(QStringLiteral("a table must be a JSON object")));
     const QJsonObject object = value.toObject();
@@ -248,7 +248,7 @@ Status saveToFile(const WatchListFile &file, const QString &path)
 {
     // A file that could not be loaded again is not written at all.
     if (Status s = validate(file); !s)
-        return atPlace(QStringLiteral("Not saved"), s.error());
+        return atPlace(msg<MsgId::PlaceNotSaved>(), s.error());
     const QByteArray data = save(file);
     QSaveFile out(path);
     if (!out.open(QIODevice::WriteOnly))

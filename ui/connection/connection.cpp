@@ -1,7 +1,7 @@
 #include "connection.h"
 
 #include "core/session/requesttracker.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 
 #include <QSet>
 
@@ -17,7 +17,7 @@ Connection::Connection(const SavedConnection &saved, QObject *parent)
     m_statusTimer.setInterval(plcStatusIntervalMs);
     connect(&m_statusTimer, &QTimer::timeout, this, &Connection::readStatus);
     connect(m_session, &Session::linkStateChanged, this,
-            [this](LinkState state, const QString &reason) {
+            [this](LinkState state, const Message &reason) {
                 // Every failed attempt and every broken link passes through Lost once.
                 if (state == LinkState::Lost)
                     ++m_linkFailures;
@@ -99,7 +99,7 @@ QList<quint8> Connection::silentStations() const
 
 QString Connection::stateText() const
 {
-    const QString state = CoreText::linkState(m_state);
+    const QString state = UiText::linkState(m_state);
     const QList<quint8> silent = silentStations();
     if (silent.isEmpty())
         return state;

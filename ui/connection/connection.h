@@ -32,7 +32,7 @@ public:
 
     Session *session() const { return m_session; }
     LinkState linkState() const { return m_state; }
-    QString linkReason() const { return m_reason; }
+    Message linkReason() const { return m_reason; }
     SessionStatistics statistics() const { return m_statistics; }
     double requestsPerSecond() const { return m_rate; }
     // Timeouts, checksum errors, PLC error answers and link failures.
@@ -63,7 +63,7 @@ public:
 
 Q_SIGNALS:
     void changed(); // link state, statistics or rate
-    void linkStateChanged(Fatek::LinkState state, const QString &reason);
+    void linkStateChanged(Fatek::LinkState state, const Fatek::Message &reason);
     void values(const QList<Fatek::WatchValue> &values);
 
 private:
@@ -82,7 +82,7 @@ private:
     std::optional<PlcStatus> m_plcStatus;
     bool m_statusPending = false;
     bool m_hasConnected = false;
-    QString m_reason;
+    Message m_reason;
     SessionStatistics m_statistics;
     QHash<const QObject *, QList<WatchEntry>> m_pollEntries;
     QTimer m_rateTimer;

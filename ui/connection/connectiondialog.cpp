@@ -1,7 +1,7 @@
 #include "connectiondialog.h"
 
 #include "core/transport/serialtransport.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -44,7 +44,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_recentCombo = new QComboBox(this);
     m_recentCombo->addItem(tr("(new)"));
     for (const SavedConnection &c : recent)
-        m_recentCombo->addItem(tr("%1 — %2").arg(c.name, CoreText::settings(c.settings)));
+        m_recentCombo->addItem(tr("%1 — %2").arg(c.name, UiText::settings(c.settings)));
     m_recentCombo->setEnabled(!recent.isEmpty());
 
     m_name = new QLineEdit(this);
@@ -219,7 +219,8 @@ SavedConnection ConnectionDialog::connection() const
 void ConnectionDialog::accept()
 {
     const SavedConnection c = connection();
-    QString problem = c.name.isEmpty() ? tr("Give the connection a name.") : c.settings.validate();
+    QString problem = c.name.isEmpty() ? tr("Give the connection a name.")
+                                       : translated(c.settings.validate());
     if (problem.isEmpty() && c.settings.kind == LinkSettings::Kind::Serial
         && c.settings.baudRate <= 0)
         problem = tr("The baud rate must be a positive number.");

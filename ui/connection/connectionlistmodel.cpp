@@ -1,7 +1,7 @@
 #include "connectionlistmodel.h"
 
 #include "connectionmanager.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 
 namespace Fatek {
 
@@ -52,7 +52,7 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
     if (role == Qt::DisplayRole || role == Qt::EditRole) {
         switch (index.column()) {
         case NameColumn: return c->name();
-        case LinkColumn: return CoreText::settings(c->settings());
+        case LinkColumn: return UiText::settings(c->settings());
         case StationColumn: return c->station();
         case PlcColumn: {
             const QString text = c->plcText();
@@ -70,8 +70,8 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
     if (role == Qt::ToolTipRole) {
         switch (index.column()) {
         case StateColumn:
-            return c->linkReason().isEmpty() ? CoreText::linkState(c->linkState())
-                                             : CoreText::message(c->linkReason());
+            return c->linkReason().empty() ? UiText::linkState(c->linkState())
+                                             : translated(c->linkReason());
         case ErrorsColumn:
             return tr("%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries, %5 link "
                       "failures")
@@ -99,7 +99,7 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         }
         default: {
             // Per station: several PLCs on one RS-485 line share a connection.
-            QStringList lines{CoreText::settings(c->settings())};
+            QStringList lines{UiText::settings(c->settings())};
             const SessionStatistics statistics = c->statistics();
             for (auto it = statistics.stations.cbegin(); it != statistics.stations.cend(); ++it) {
                 const StationStatistics &s = it.value();

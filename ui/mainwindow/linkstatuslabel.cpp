@@ -1,7 +1,7 @@
 #include "linkstatuslabel.h"
 
 #include "ui/connection/connection.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 
 namespace Fatek {
 
@@ -37,9 +37,9 @@ void LinkStatusLabel::showConnection(const Connection *c)
                 .arg(c->errorCount())
                 .arg(t.answers ? tr("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–")));
     }
-    setToolTip(c->linkReason().isEmpty() ? CoreText::settings(c->settings())
-                                         : CoreText::settings(c->settings()) + QLatin1Char('\n')
-                                               + CoreText::message(c->linkReason()));
+    setToolTip(c->linkReason().empty() ? UiText::settings(c->settings())
+                                         : UiText::settings(c->settings()) + QLatin1Char('\n')
+                                               + translated(c->linkReason()));
 }
 
 } // namespace Fatek

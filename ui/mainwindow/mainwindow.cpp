@@ -8,7 +8,7 @@
 #include "ui/connection/connectiondialog.h"
 #include "ui/connection/connectionmanager.h"
 #include "ui/connection/connectionspanel.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 #include "ui/trend/tablelogger.h"
 #include "ui/watch/watchtablemodel.h"
 
@@ -99,12 +99,12 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     connect(m_manager, &ConnectionManager::recentChanged, this, &MainWindow::rebuildRecentMenu);
     connect(m_manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
         connect(c, &Connection::linkStateChanged, this,
-                [this, c](LinkState state, const QString &reason) {
-                    showStatus(reason.isEmpty()
-                                   ? tr("%1: %2").arg(c->name(), CoreText::linkState(state))
+                [this, c](LinkState state, const Message &reason) {
+                    showStatus(reason.empty()
+                                   ? tr("%1: %2").arg(c->name(), UiText::linkState(state))
                                    : tr("%1: %2 (%3)")
-                                         .arg(c->name(), CoreText::linkState(state),
-                                              CoreText::message(reason)));
+                                         .arg(c->name(), UiText::linkState(state),
+                                              translated(reason)));
                 });
     });
 
@@ -253,7 +253,7 @@ Connection *MainWindow::openConnection(const SavedConnection &saved, bool rememb
                             m_manager->addRecent(remembered);
                         });
     }
-    showStatus(tr("Connecting to %1 (%2)…").arg(c->name(), CoreText::settings(c->settings())));
+    showStatus(tr("Connecting to %1 (%2)…").arg(c->name(), UiText::settings(c->settings())));
     return c;
 }
 
@@ -283,7 +283,7 @@ void MainWindow::rebuildRecentMenu()
     const QList<SavedConnection> recent = m_manager->recent();
     for (const SavedConnection &c : recent) {
         m_recentMenu->addAction(
-            tr("%1 — %2, station %3").arg(c.name, CoreText::settings(c.settings)).arg(c.station),
+            tr("%1 — %2, station %3").arg(c.name, UiText::settings(c.settings)).arg(c.station),
             this, [this, c] { openConnection(c); });
     }
     if (const int unreadable = m_manager->unreadableRecent(); unreadable > 0) {

@@ -2,7 +2,7 @@
 
 #include "lastdirectory.h"
 #include "mainwindow.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QAction>
@@ -73,7 +73,7 @@ bool WatchListDocument::restoreLast()
     if (const Status s = load(path); !s) {
         Q_EMIT statusMessage(
             tr("The last watch list %1 cannot be loaded: %2")
-                .arg(QDir::toNativeSeparators(path), CoreText::message(s.error().message)));
+                .arg(QDir::toNativeSeparators(path), translated(s.error().message)));
         return false;
     }
     Q_EMIT statusMessage(tr("Reopened %1.").arg(QDir::toNativeSeparators(path)));
@@ -114,7 +114,7 @@ Status WatchListDocument::open(const QString &path)
         auto *box = new QMessageBox(
             QMessageBox::Warning, tr("Open Watch List"),
             tr("%1 cannot be loaded:\n%2")
-                .arg(QFileInfo(path).fileName(), CoreText::message(loaded.error().message)),
+                .arg(QFileInfo(path).fileName(), translated(loaded.error().message)),
             QMessageBox::Ok, m_window);
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
@@ -135,7 +135,7 @@ bool WatchListDocument::saveDialog()
         path += QStringLiteral(".json");
     setLastDirectory(path);
     if (const Status s = save(path); !s) {
-        QMessageBox::warning(m_window, tr("Save Watch List"), CoreText::message(s.error().message));
+        QMessageBox::warning(m_window, tr("Save Watch List"), translated(s.error().message));
         return false;
     }
     Q_EMIT statusMessage(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
@@ -153,7 +153,7 @@ void WatchListDocument::importCsvDialog()
         QMessageBox::warning(
             m_window, tr("Import CSV"),
             tr("%1 cannot be imported:\n%2")
-                .arg(QFileInfo(path).fileName(), CoreText::message(s.error().message)));
+                .arg(QFileInfo(path).fileName(), translated(s.error().message)));
         return;
     }
     Q_EMIT statusMessage(tr("Imported %1.").arg(QDir::toNativeSeparators(path)));

@@ -1,7 +1,7 @@
 #include "discretecontrolbatch.h"
 
 #include "core/session/requesttracker.h"
-#include "coretext.h"
+#include "uitext.h"
 
 #include <QCoreApplication>
 
@@ -66,7 +66,7 @@ bool DiscreteControlBatch::run(RequestTracker *tracker, quint8 station, Discrete
                                 state->outcome.errors
                                     << QCoreApplication::translate("Fatek::DiscreteControlBatch",
                                                                    "%1: %2")
-                                           .arg(name, CoreText::message(result.errorText()));
+                                           .arg(name, translated(result.errorMessage()));
                             if (--state->remaining == 0 && done)
                                 done(state->outcome);
                         });

@@ -6,7 +6,7 @@
 #include "core/protocol/plcstatus.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "coretext.h"
+#include "uitext.h"
 #include "discretecontrolbatch.h"
 #include "discretescan.h"
 #include "toolpalette.h"
@@ -113,7 +113,7 @@ void ForcedPointsView::scan()
     if (!m_ranges->text().trimmed().isEmpty()) {
         const Result<QList<AddressRange>> ranges = DiscreteScan::parse(m_ranges->text());
         if (!ranges) {
-            m_message->setMessage(CoreText::message(ranges.error().message), true);
+            m_message->setMessage(translated(ranges.error().message), true);
             return;
         }
         scanRanges(*ranges, {});
@@ -137,7 +137,7 @@ void ForcedPointsView::scan()
                 // Not remembered: the next scan asks again.
                 scanRanges(DiscreteScan::defaults(),
                            tr("The PLC did not report its sizes (%1): default ranges scanned.")
-                               .arg(CoreText::message(result.errorText())));
+                               .arg(translated(result.errorMessage())));
                 return;
             }
             QList<ElementType> unreported;
@@ -184,7 +184,7 @@ void ForcedPointsView::scanRanges(const QList<AddressRange> &ranges, const QStri
                     return;
                 if (!result.ok()) {
                     state->errors << tr("%1: %2").arg(QString::fromStdString(chunk.toString()),
-                                                      CoreText::message(result.errorText()));
+                                                      translated(result.errorMessage()));
                 } else {
                     const auto &flags = result.response().values;
                     for (std::size_t i = 0; i < flags.size(); ++i) {

@@ -4,7 +4,7 @@
 
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "coretext.h"
+#include "uitext.h"
 #include "discretecontrolbatch.h"
 #include "discretetablemodel.h"
 #include "forcedpointsview.h"
@@ -50,7 +50,7 @@ ForcingPanel::ForcingPanel(QWidget *parent)
         m_type->addItem(tr("%1 \u2013 %2")
                             .arg(QString::fromUtf8(info.symbol.data(),
                                                    static_cast<qsizetype>(info.symbol.size())),
-                                 CoreText::elementName(t)),
+                                 UiText::elementName(t)),
                         static_cast<int>(t));
     }
     m_type->setCurrentIndex(1); // Y: outputs are what gets forced most
@@ -202,7 +202,7 @@ void ForcingPanel::applyRangeFromControls()
                           static_cast<quint32>(m_start->value())};
     range.count = static_cast<quint32>(m_count->value());
     if (const Status s = validateSpan(range.start, range.count); !s) {
-        m_message->setMessage(CoreText::message(s.error().message), true);
+        m_message->setMessage(translated(s.error().message), true);
         return;
     }
     ++m_generation;
@@ -229,7 +229,7 @@ void ForcingPanel::refresh()
                 values = r.response().values;
             else
                 m_message->setMessage(
-                    tr("Could not read: %1").arg(CoreText::message(r.errorText())), true);
+                    tr("Could not read: %1").arg(translated(r.errorMessage())), true);
             if (states)
                 m_model->setStates(values);
             else

@@ -3,7 +3,7 @@
 #include "core/protocol/frametext.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "coretext.h"
+#include "uitext.h"
 #include "toolpalette.h"
 
 #include <QComboBox>
@@ -208,7 +208,7 @@ void LoopbackDialog::start()
         return;
     const Result<Bytes> prepared = testData();
     if (!prepared) {
-        ToolPalette::showMessage(m_message, CoreText::message(prepared.error().message), true);
+        ToolPalette::showMessage(m_message, translated(prepared.error().message), true);
         return;
     }
     m_data = *prepared;
@@ -262,10 +262,10 @@ void LoopbackDialog::onAnswer(int run, const SessionResult &result, double rttMs
                    true);
     } else if (result.errorKind() == ErrorKind::Timeout) {
         m_stats.add(LoopbackStats::Outcome::Timeout);
-        appendLine(tr("%1  TIMEOUT   %2").arg(prefix, CoreText::message(result.errorText())), true);
+        appendLine(tr("%1  TIMEOUT   %2").arg(prefix, translated(result.errorMessage())), true);
     } else {
         m_stats.add(LoopbackStats::Outcome::Error);
-        appendLine(tr("%1  ERROR     %2").arg(prefix, CoreText::message(result.errorText())), true);
+        appendLine(tr("%1  ERROR     %2").arg(prefix, translated(result.errorMessage())), true);
     }
     ToolPalette::showMessage(m_totals, m_stats.summary(), m_stats.successes() != m_stats.runs());
     if (m_run >= m_repeat->value()) {

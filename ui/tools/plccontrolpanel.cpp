@@ -2,7 +2,7 @@
 
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "coretext.h"
+#include "uitext.h"
 #include "statusindicator.h"
 #include "toolpalette.h"
 
@@ -257,7 +257,7 @@ void PlcControlPanel::requestMode(bool run)
                 m_outcomeLabel, tr("%1 accepted by station %2.").arg(mode).arg(m_station), false);
         else
             ToolPalette::showMessage(
-                m_outcomeLabel, tr("%1 refused: %2").arg(mode, CoreText::message(r.errorText())),
+                m_outcomeLabel, tr("%1 refused: %2").arg(mode, translated(r.errorMessage())),
                 true);
         updateEnabled();
         refresh();
@@ -274,7 +274,7 @@ void PlcControlPanel::onBriefStatus(const SessionResult &result)
         ToolPalette::showMessage(m_refreshLabel,
                                  tr("Status unknown: %1")
                                      .arg(result.ok() ? tr("the PLC sent no status bytes.")
-                                                      : CoreText::message(result.errorText())),
+                                                      : translated(result.errorMessage())),
                                  true);
         return;
     }
@@ -292,7 +292,7 @@ void PlcControlPanel::onDetailStatus(const SessionResult &result)
     if (!result.ok()) {
         m_detail.reset();
         showDetail();
-        m_raw->setText(tr("Not available: %1").arg(CoreText::message(result.errorText())));
+        m_raw->setText(tr("Not available: %1").arg(translated(result.errorMessage())));
         return;
     }
     m_detail = DetailStatus::decode(result.response().data);

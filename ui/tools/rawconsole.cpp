@@ -1,7 +1,7 @@
 #include "rawconsole.h"
 
 #include "core/session/session.h"
-#include "coretext.h"
+#include "uitext.h"
 #include "rawsendbar.h"
 #include "toolpalette.h"
 #include "trafficfilterproxy.h"
@@ -58,7 +58,7 @@ RawConsole::RawConsole(QWidget *parent)
         if (!isKnownCommand(static_cast<std::uint8_t>(code)))
             continue;
         m_command->addItem(QString::number(code, 16).toUpper() + QLatin1Char(' ')
-                               + CoreText::commandName(static_cast<Command>(code)),
+                               + UiText::commandName(static_cast<Command>(code)),
                            code);
     }
     m_errorsOnly = new QCheckBox(tr("Errors only"), this);

@@ -5,7 +5,7 @@
 #include "core/session/qtbytes.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "coretext.h"
+#include "uitext.h"
 #include "toolpalette.h"
 
 #include <QCheckBox>
@@ -138,7 +138,7 @@ void RawSendBar::send()
     const Result<Bytes> typed = FrameText::parse(
         m_input->text().toStdString(), hex ? FrameText::Typed::Hex : FrameText::Typed::Ascii);
     if (!typed) {
-        ToolPalette::showMessage(m_result, CoreText::message(typed.error().message), true);
+        ToolPalette::showMessage(m_result, translated(typed.error().message), true);
         return;
     }
     const bool framing = m_framing->isChecked();
@@ -157,7 +157,7 @@ void RawSendBar::send()
         const QString what
             = header ? (isKnownCommand(header->command)
                             ? tr("%1 (command %2) to station %3")
-                                  .arg(CoreText::commandName(static_cast<Command>(header->command)))
+                                  .arg(UiText::commandName(static_cast<Command>(header->command)))
                                   .arg(QString::number(header->command, 16).toUpper())
                                   .arg(header->station)
                             : tr("unknown command %1 to station %2")
@@ -194,7 +194,7 @@ void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
     const QString sentLine = tr("Sent    %1").arg(asciiOf(sent));
     if (!result.ok()) {
         ToolPalette::showMessage(
-            m_result, tr("%1\nFailed  %2").arg(sentLine, CoreText::message(result.errorText())),
+            m_result, tr("%1\nFailed  %2").arg(sentLine, translated(result.errorMessage())),
             true);
         return;
     }

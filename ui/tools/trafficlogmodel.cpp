@@ -2,7 +2,7 @@
 
 #include "core/protocol/frametext.h"
 #include "core/session/qtbytes.h"
-#include "coretext.h"
+#include "uitext.h"
 #include "toolpalette.h"
 
 #include <QFontDatabase>
@@ -53,7 +53,8 @@ void TrafficLogModel::append(const QList<TrafficEntry> &entries)
         m_rows.push_back(Row{e, RawFrame::peek(bytes),
                              e.timestamp.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz")),
                              QString::fromStdString(FrameText::toHex(bytes)),
-                             QString::fromStdString(FrameText::toAscii(bytes))});
+                             QString::fromStdString(FrameText::toAscii(bytes)),
+                             translated(e.summary), translated(e.error)});
     }
     endInsertRows();
 }
@@ -89,7 +90,7 @@ QVariant TrafficLogModel::data(const QModelIndex &index, int role) const
         return {};
     const Row &row = m_rows[static_cast<std::size_t>(index.row())];
     const TrafficEntry &e = row.entry;
-    const bool isError = !e.error.isEmpty();
+    const bool isError = !e.error.empty();
     switch (role) {
     case Qt::DisplayRole:
     case Qt::ToolTipRole:
@@ -99,8 +100,8 @@ QVariant TrafficLogModel::data(const QModelIndex &index, int role) const
         case StationColumn: return row.header ? QVariant(row.header->station) : QVariant();
         case HexColumn: return row.hex;
         case AsciiColumn: return row.ascii;
-        case MeaningColumn: return CoreText::message(e.summary);
-        case ErrorColumn: return CoreText::message(e.error);
+        case MeaningColumn: return row.meaning;
+        case ErrorColumn: return row.error;
         default: return {};
         }
     case Qt::FontRole:

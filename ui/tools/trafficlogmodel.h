@@ -62,6 +62,8 @@ private:
         QString time; // local time, formatted once
         QString hex;
         QString ascii;
+        QString meaning; // the entry's summary and error in the UI language, translated once
+        QString error;
     };
 
     std::deque<Row> m_rows;

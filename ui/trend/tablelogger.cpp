@@ -1,5 +1,6 @@
 #include "tablelogger.h"
 
+#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QDateTime>
@@ -56,7 +57,7 @@ void TableLogger::stop()
         disconnect(m_model, nullptr, this, nullptr);
     m_model = nullptr;
     const Status s = m_logger.close();
-    Q_EMIT stopped(s ? QString() : QString::fromStdString(s.error().message));
+    Q_EMIT stopped(s ? QString() : translated(s.error().message));
 }
 
 void TableLogger::writeRow()
@@ -95,7 +96,7 @@ void TableLogger::writeRow()
             disconnect(m_model, nullptr, this, nullptr);
         m_model = nullptr;
         m_logger.close();
-        Q_EMIT stopped(QString::fromStdString(s.error().message));
+        Q_EMIT stopped(translated(s.error().message));
         return;
     }
     Q_EMIT rowWritten(m_logger.rowCount());

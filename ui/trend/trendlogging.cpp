@@ -4,6 +4,7 @@
 #include "trendview.h"
 #include "ui/mainwindow/lastdirectory.h"
 #include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QAction>
@@ -158,7 +159,7 @@ void TrendLogging::startLoggingDialog()
     setLastDirectory(path);
     if (const Status s = startLogging(path); !s)
         QMessageBox::warning(m_window, tr("Data Logging"),
-                             QString::fromStdString(s.error().message));
+                             translated(s.error().message));
 }
 
 void TrendLogging::updateLoggingStatus()

@@ -3,7 +3,7 @@
 #include "core/watch/valueformat.h"
 #include "trendchartview.h"
 #include "trendvalueaxes.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QComboBox>
@@ -240,7 +240,7 @@ bool TrendView::addOne(WatchTableModel *model, int row, QString *error)
     if (!trendValue(spec, 0)) {
         if (error)
             *error = tr("%1 is shown as %2, which has no value to plot.")
-                         .arg(displayName(spec), CoreText::format(spec.format));
+                         .arg(displayName(spec), UiText::format(spec.format));
         return false;
     }
     auto item = std::make_unique<Item>();
@@ -440,7 +440,7 @@ void TrendView::rebuildItemList()
         swatch.fill(item->color);
         auto *entry = new QListWidgetItem(QIcon(swatch), displayName(item->spec), m_itemList);
         entry->setToolTip(
-            tr("Station %1, %2").arg(item->spec.station).arg(CoreText::format(item->spec.format)));
+            tr("Station %1, %2").arg(item->spec.station).arg(UiText::format(item->spec.format)));
     }
     m_emptyHint->setVisible(m_items.empty());
     m_removeButton->setEnabled(!m_items.empty());

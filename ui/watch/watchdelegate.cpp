@@ -1,6 +1,6 @@
 #include "watchdelegate.h"
 
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 #include "watchtablemodel.h"
 
 #include <QComboBox>
@@ -15,7 +15,7 @@ QWidget *WatchDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem
         return QStyledItemDelegate::createEditor(parent, option, index);
     auto *combo = new QComboBox(parent);
     for (DisplayFormat f : model->availableFormats(index.row()))
-        combo->addItem(CoreText::format(f), static_cast<int>(f));
+        combo->addItem(UiText::format(f), static_cast<int>(f));
     // A pick (mouse or keyboard) is the whole edit: apply it now rather than when focus leaves.
     auto *self = const_cast<WatchDelegate *>(this);
     connect(combo, &QComboBox::activated, self, [self, combo] {

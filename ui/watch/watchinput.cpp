@@ -1,6 +1,6 @@
 #include "watchinput.h"
 
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 
 #include <QRegularExpression>
 
@@ -23,7 +23,7 @@ Result<QList<Address>> parseAddresses(const QString &text)
         if (!addresses) {
             return makeError(ErrorKind::InvalidAddress,
                              QCoreApplication::translate("Fatek::WatchInput", "\"%1\": %2")
-                                 .arg(token, CoreText::message(addresses.error().message))
+                                 .arg(token, translated(addresses.error().message))
                                  .toStdString());
         }
         all += *addresses;

@@ -1,6 +1,6 @@
 #include "watchtablemodel.h"
 
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 
 #include <QFont>
 #include <QGuiApplication>
@@ -219,8 +219,8 @@ ValueQuality WatchTableModel::quality(int row) const
 QString WatchTableModel::qualityReason(int row) const
 {
     for (const Part &p : m_rows.at(row).parts) {
-        if (p.quality != ValueQuality::Good && !p.error.isEmpty())
-            return CoreText::message(p.error);
+        if (p.quality != ValueQuality::Good && !p.error.empty())
+            return translated(p.error);
     }
     return {};
 }
@@ -342,8 +342,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         case StationColumn: return spec.station;
         case ValueColumn: return have ? valueText(r) : QStringLiteral("…");
         case FormatColumn:
-            return spec.swapWords ? tr("%1, words swapped").arg(CoreText::format(spec.format))
-                                  : CoreText::format(spec.format);
+            return spec.swapWords ? tr("%1, words swapped").arg(UiText::format(spec.format))
+                                  : UiText::format(spec.format);
         case QualityColumn:
             // Short enough for the column; the station is beside it and in the tooltip.
             if (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
@@ -403,7 +403,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                                                    .advanced(static_cast<std::uint32_t>(count - 1))
                                                    .toString()))
                                       .arg(count)
-                                : CoreText::elementName(spec.address.type));
+                                : UiText::elementName(spec.address.type));
         }
         return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
     }
@@ -502,7 +502,7 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
         if (!raw) {
             Q_EMIT inputRejected(
                 tr("%1: %2").arg(QString::fromStdString(row.spec().address.toString()),
-                                 CoreText::message(raw.error().message)));
+                                 translated(raw.error().message)));
             return false;
         }
         Q_EMIT writeRequested(r, *raw);
@@ -541,14 +541,14 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
         if (isInt && value.typeId() != QMetaType::QString)
             format = static_cast<DisplayFormat>(asInt);
         else
-            format = CoreText::formatFromName(value.toString());
+            format = UiText::formatFromName(value.toString());
         if (!format) {
             Q_EMIT inputRejected(tr("Unknown format \"%1\".").arg(value.toString()));
             return false;
         }
         const Status s = setFormat(r, *format, spec.swapWords);
         if (!s) {
-            Q_EMIT inputRejected(CoreText::message(s.error().message));
+            Q_EMIT inputRejected(translated(s.error().message));
             return false;
         }
         return true;

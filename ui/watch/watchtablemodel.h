@@ -87,7 +87,9 @@ public:
     static constexpr int frameMs = 16;
     static constexpr int sliceBudgetMs = 3;
     // No values are coming (no connection, paused): every row keeps its value, marked stale.
-    void markAllStale(const QString &reason);
+    // The reason is a core message ("link lost: ...") or the UI's own text.
+    void markAllStale(const Message &reason);
+    void markAllStale(const QString &reason) { markAllStale(Message::text(reason.toStdString())); }
 
     // Stable handle of a row across inserts and removals (for writes that finish later).
     quint64 rowKey(int row) const { return m_rows.at(row).key; }
@@ -117,7 +119,7 @@ private:
     {
         std::uint32_t value = 0;
         ValueQuality quality = ValueQuality::Stale;
-        QString error;
+        Message error; // translated when shown
         QDateTime timestamp;
         bool received = false;
         // Sequence numbers of the batches that set the quality and the value: a newer batch wins,

@@ -150,7 +150,7 @@ void WatchTableModel::finishSlice()
     emitRowsChanged(std::exchange(m_updatedRows, {}), UpdatedColumn, UpdatedColumn);
 }
 
-void WatchTableModel::markAllStale(const QString &reason)
+void WatchTableModel::markAllStale(const Message &reason)
 {
     // What was delivered before goes in first: it must not turn a row good again afterwards.
     flushValues();

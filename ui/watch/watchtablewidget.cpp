@@ -4,7 +4,7 @@
 #include "core/watch/itemvalues.h"
 #include "forcedmarks.h"
 #include "ui/connection/connectionmanager.h"
-#include "ui/tools/coretext.h"
+#include "ui/tools/uitext.h"
 #include "ui/tools/messageline.h"
 #include "ui/tools/toolconfirmation.h"
 #include "watchdelegate.h"
@@ -230,14 +230,13 @@ void WatchTableWidget::setConnection(Connection *connection)
         });
         // The session stops polling while its link is down (no batches come): mark the rows here.
         connect(connection, &Connection::linkStateChanged, m_model,
-                [this](LinkState state, const QString &reason) {
+                [this](LinkState state, const Message &reason) {
                     if (state == LinkState::Connected || state == LinkState::Connecting)
                         return;
                     m_model->markAllStale(
-                        reason.isEmpty()
-                            ? tr("link %1").arg(CoreText::linkState(state))
-                            : tr("link %1: %2")
-                                  .arg(CoreText::linkState(state), CoreText::message(reason)));
+                        reason.empty() ? tr("link %1").arg(UiText::linkState(state))
+                                       : tr("link %1: %2")
+                                             .arg(UiText::linkState(state), translated(reason)));
                 });
         connect(connection, &Connection::changed, m_model,
                 [this] { m_model->setSilentStations(m_connection->silentStations()); });
@@ -337,7 +336,7 @@ bool WatchTableWidget::addFromText(const QString &text)
 {
     const auto addresses = WatchInput::parseAddresses(text);
     if (!addresses) {
-        showMessage(CoreText::message(addresses.error().message), true);
+        showMessage(translated(addresses.error().message), true);
         return false;
     }
     QList<Address> wanted = *addresses;
@@ -384,7 +383,7 @@ bool WatchTableWidget::addFromPaste(const QString &text)
 {
     const auto items = WatchInput::parsePasted(text, defaultStation());
     if (!items) {
-        showMessage(tr("Cannot paste: %1").arg(CoreText::message(items.error().message)), true);
+        showMessage(tr("Cannot paste: %1").arg(translated(items.error().message)), true);
         return false;
     }
     m_model->addItems(*items);
@@ -427,7 +426,7 @@ void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const Sess
     const QString outcome
         = result.ok()
               ? tr("Wrote %1.").arg(what)
-              : tr("Write of %1 failed: %2").arg(what, CoreText::message(result.errorText()));
+              : tr("Write of %1 failed: %2").arg(what, translated(result.errorMessage()));
     const int row = m_model->rowOfKey(rowKey);
     if (row >= 0)
         m_model->setWriteOutcome(
@@ -464,7 +463,7 @@ void WatchTableWidget::writeDialog()
     const QString text = QInputDialog::getText(
         this, tr("Write Value"),
         tr("New value for %1 (%2; hex as 0x1A or 1Ah):")
-            .arg(QString::fromStdString(item.address.toString()), CoreText::format(item.format)),
+            .arg(QString::fromStdString(item.address.toString()), UiText::format(item.format)),
         QLineEdit::Normal, m_model->valueText(row), &ok);
     if (ok)
         m_model->setData(m_model->index(row, WatchTableModel::ValueColumn), text);
@@ -476,7 +475,7 @@ void WatchTableWidget::toggleSwapWords()
         const WatchItemSpec item = m_model->item(index.row());
         const Status s = m_model->setFormat(index.row(), item.format, !item.swapWords);
         if (!s)
-            showMessage(CoreText::message(s.error().message), true);
+            showMessage(translated(s.error().message), true);
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/element.h"
+#include "core/protocol/message.h"
 #include "core/protocol/request.h"
 #include "core/session/sessiontypes.h"
 #include "core/transport/linksettings.h"
@@ -11,13 +12,16 @@
 
 namespace Fatek {
 
-// Texts that come from core (pure C++ protocol layer, session engine, transports) in English for
-// logs and the CLI, shown in the UI's language. Known core messages are recognised by pattern and
-// rebuilt from translated templates; technical tokens (addresses, hosts, hex) pass through as is.
-// A message no pattern knows stays in English rather than being guessed at.
-class CoreText
+// A core message (error, link reason, traffic-log note) in the UI language: its template
+// translated in the context "Fatek::Message", arguments that are messages translated too,
+// technical tokens (addresses, hosts, hex) as they are. Without a translation it reads in English,
+// exactly as english() writes it.
+QString translated(const Message &message);
+
+// Core enums and values in the UI language.
+class UiText
 {
-    Q_DECLARE_TR_FUNCTIONS(Fatek::CoreText)
+    Q_DECLARE_TR_FUNCTIONS(Fatek::UiText)
 
 public:
     static QString linkState(LinkState state);
@@ -29,12 +33,6 @@ public:
     static QString protocolChoice(LinkSettings::ProtocolChoice choice);
     // LinkSettings::toString() with its words translated ("TCP 10.0.0.5:500, auto-detect").
     static QString settings(const LinkSettings &settings);
-    // A core message (error, link reason) in the UI language when it is a known one.
-    static QString message(const QString &text);
-    static QString message(const std::string &text)
-    {
-        return message(QString::fromStdString(text));
-    }
     // Display format from a name typed in either language (the file names "unsigned" etc. too).
     static std::optional<DisplayFormat> formatFromName(const QString &name);
 };

@@ -1,0 +1,147 @@
+#include "uitext.h"
+
+namespace Fatek {
+
+namespace {
+
+// Puts the arguments into %1..%9 of a translated template in one pass: an argument containing
+// "%2" stays text (QString::arg would replace it again).
+QString fill(const QString &templ, const QStringList &args)
+{
+    QString out;
+    out.reserve(templ.size() + 16 * args.size());
+    for (qsizetype i = 0; i < templ.size(); ++i) {
+        const QChar c = templ.at(i);
+        if (c == QLatin1Char('%') && i + 1 < templ.size()) {
+            const int arg = templ.at(i + 1).digitValue();
+            if (arg >= 1 && arg <= args.size()) {
+                out += args.at(arg - 1);
+                ++i;
+                continue;
+            }
+        }
+        out += c;
+    }
+    return out;
+}
+
+QString argText(const MessageArg &arg)
+{
+    return arg.message ? translated(*arg.message) : QString::fromStdString(arg.text);
+}
+
+} // namespace
+
+QString translated(const Message &message)
+{
+    if (message.id == MsgId::Text)
+        return message.args.empty() ? QString() : argText(message.args.front());
+    QStringList args;
+    args.reserve(static_cast<qsizetype>(message.args.size()));
+    for (const MessageArg &arg : message.args)
+        args.append(argText(arg));
+    if (message.id == MsgId::AtPlace && args.size() == 2)
+        args[1] = QString::fromStdString(lowerFirst(args[1].toStdString()));
+    return fill(QCoreApplication::translate(messageContext, messageTemplate(message.id)), args);
+}
+
+QString UiText::linkState(LinkState state)
+{
+    return translated(linkStateMessage(state));
+}
+
+QString UiText::format(DisplayFormat format)
+{
+    switch (format) {
+    case DisplayFormat::Bit: return tr("bit");
+    case DisplayFormat::Unsigned: return tr("unsigned");
+    case DisplayFormat::Signed: return tr("signed");
+    case DisplayFormat::Hex: return tr("hex");
+    case DisplayFormat::Binary: return tr("binary");
+    case DisplayFormat::Bcd: return tr("BCD");
+    case DisplayFormat::Float32: return tr("float");
+    case DisplayFormat::Ascii: return tr("ASCII");
+    case DisplayFormat::Double64: return tr("double");
+    }
+    return ValueFormat::name(format);
+}
+
+QString UiText::elementName(ElementType type)
+{
+    using E = ElementType;
+    switch (type) {
+    case E::X: return tr("input");
+    case E::Y: return tr("output relay");
+    case E::M: return tr("internal relay");
+    case E::S: return tr("step relay");
+    case E::T: return tr("timer contact");
+    case E::C: return tr("counter contact");
+    case E::WX: return tr("inputs as 16-bit word");
+    case E::WY: return tr("outputs as 16-bit word");
+    case E::WM: return tr("internal relays as 16-bit word");
+    case E::WS: return tr("step relays as 16-bit word");
+    case E::WT: return tr("timer contacts as 16-bit word");
+    case E::WC: return tr("counter contacts as 16-bit word");
+    case E::RT: return tr("timer register");
+    case E::RC: return tr("counter register");
+    case E::R:
+    case E::D: return tr("data register");
+    case E::F: return tr("file register");
+    case E::DWX: return tr("inputs as 32-bit word");
+    case E::DWY: return tr("outputs as 32-bit word");
+    case E::DWM: return tr("internal relays as 32-bit word");
+    case E::DWS: return tr("step relays as 32-bit word");
+    case E::DWT: return tr("timer contacts as 32-bit word");
+    case E::DWC: return tr("counter contacts as 32-bit word");
+    case E::DRT: return tr("timer register pair");
+    case E::DRC: return tr("counter register pair");
+    case E::DR:
+    case E::DD: return tr("data register pair");
+    case E::DF: return tr("file register pair");
+    }
+    return QString::fromStdString(std::string(elementInfo(type).name));
+}
+
+QString UiText::commandName(Command command)
+{
+    return translated(commandMessage(command));
+}
+
+std::optional<DisplayFormat> UiText::formatFromName(const QString &name)
+{
+    if (const auto f = ValueFormat::fromName(name))
+        return f;
+    const QString wanted = name.trimmed();
+    for (DisplayFormat f : ValueFormat::allFormats()) {
+        if (format(f).compare(wanted, Qt::CaseInsensitive) == 0)
+            return f;
+    }
+    return std::nullopt;
+}
+
+QString UiText::protocolChoice(LinkSettings::ProtocolChoice choice)
+{
+    switch (choice) {
+    case LinkSettings::ProtocolChoice::Facon: return QStringLiteral("FACON");
+    case LinkSettings::ProtocolChoice::Binary: return tr("binary");
+    case LinkSettings::ProtocolChoice::Auto: return tr("auto-detect");
+    }
+    return protocolChoiceName(choice);
+}
+
+QString UiText::settings(const LinkSettings &settings)
+{
+    // The medium part is technical (TCP host:port, COM3 9600 7E1, RTS/CTS); only the protocol word
+    // and the missing-port note are language.
+    QString text = settings.toString();
+    const QString suffix = QStringLiteral(", ") + protocolChoiceName(settings.protocol);
+    if (text.endsWith(suffix)) {
+        text.chop(suffix.size());
+        //: Link settings: medium (TCP 10.0.0.5:500, COM3 9600 7E1) and protocol.
+        text = tr("%1, %2").arg(text, protocolChoice(settings.protocol));
+    }
+    text.replace(QStringLiteral("(no port)"), tr("(no port)"));
+    return text;
+}
+
+} // namespace Fatek
