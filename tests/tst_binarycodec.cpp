@@ -251,8 +251,7 @@ void TestBinaryCodec::vectors()
         QVERIFY(!decoded.ok());
         QVERIFY(decoded.error().kind == ErrorKind::PlcError);
         QCOMPARE(decoded.error().plcCode, c.plcError);
-        QVERIFY2(qs(decoded.error().text()).contains(c.inMessage),
-                 decoded.error().text().c_str());
+        QVERIFY2(qs(decoded.error().text()).contains(c.inMessage), decoded.error().text().c_str());
         Response error = answer(c.request);
         error.errorCode = static_cast<std::uint8_t>(c.plcError);
         QCOMPARE(toHex(codec.encodeResponse(c.request, error)), toHex(vector.response));

@@ -1213,7 +1213,10 @@ int countEntries(const Session &session, TrafficEntry::Direction direction, cons
 {
     int n = 0;
     for (const TrafficEntry &e : session.trafficLog()->entries())
-        n += e.direction == direction && (englishText(e.summary) + englishText(e.error)).contains(text) ? 1 : 0;
+        n += e.direction == direction
+                     && (englishText(e.summary) + englishText(e.error)).contains(text)
+                 ? 1
+                 : 0;
     return n;
 }
 

@@ -151,10 +151,6 @@
     <context>
         <name>Fatek::ConnectionListModel</name>
         <message>
-            <source>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries</source>
-            <translation>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries</translation>
-        </message>
-        <message>
             <source>Round trip: last %1 ms, median %2 ms, 99% %3 ms</source>
             <translation>Round trip: last %1 ms, median %2 ms, 99% %3 ms</translation>
         </message>
@@ -212,214 +208,18 @@
         </message>
     </context>
     <context>
-        <name>Fatek::CoreText</name>
+        <name>Fatek::Message</name>
         <message>
-            <source>link lost: %1</source>
-            <translation>link lost: %1</translation>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
         </message>
         <message>
-            <source>%1; next attempt in %2 s</source>
-            <translation>%1; next attempt in %2 s</translation>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
         </message>
         <message>
-            <source>No answer from station %1 within %2 ms (attempt %3 of %4).</source>
-            <translation>No answer from station %1 within %2 ms (attempt %3 of %4).</translation>
-        </message>
-        <message>
-            <source>No answer within %1 ms.</source>
-            <translation>No answer within %1 ms.</translation>
-        </message>
-        <message>
-            <source>Not sent: the link is not open.</source>
-            <translation>Not sent: the link is not open.</translation>
-        </message>
-        <message>
-            <source>Not sent: the link is down (%1).</source>
-            <translation>Not sent: the link is down (%1).</translation>
-        </message>
-        <message>
-            <source>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</source>
-            <translation>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</translation>
-        </message>
-        <message>
-            <source>Read-only mode: "%1" was not sent. Leave operator mode to change the PLC.</source>
-            <translation>Read-only mode: "%1" was not sent. Leave operator mode to change the PLC.</translation>
-        </message>
-        <message>
-            <source>Cancelled before it was sent.</source>
-            <translation>Cancelled before it was sent.</translation>
-        </message>
-        <message>
-            <source>the session was closed</source>
-            <translation>the session was closed</translation>
-        </message>
-        <message>
-            <source>the session was closed after waiting %1 ms for queued writes</source>
-            <translation>the session was closed after waiting %1 ms for queued writes</translation>
-        </message>
-        <message>
-            <source>Not sent: the link is closing.</source>
-            <translation>Not sent: the link is closing.</translation>
-        </message>
-        <message>
-            <source>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</source>
-            <translation>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</translation>
-        </message>
-        <message>
-            <source>%1 does not take data</source>
-            <translation>%1 does not take data</translation>
-        </message>
-        <message>
-            <source>closing</source>
-            <translation>closing</translation>
-        </message>
-        <message>
-            <source>sending %1 queued write(s) first, at most %2 ms</source>
-            <translation>sending %1 queued write(s) first, at most %2 ms</translation>
-        </message>
-        <message>
-            <source>closed</source>
-            <translation>closed</translation>
-        </message>
-        <message>
-            <source>connecting</source>
-            <translation>connecting</translation>
-        </message>
-        <message>
-            <source>connected</source>
-            <translation>connected</translation>
-        </message>
-        <message>
-            <source>lost</source>
-            <translation>lost</translation>
-        </message>
-        <message>
-            <source>reconnecting</source>
-            <translation>reconnecting</translation>
-        </message>
-        <message>
-            <source>The answer carries fewer values than asked.</source>
-            <translation>The answer carries fewer values than asked.</translation>
-        </message>
-        <message>
-            <source>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</source>
-            <translation>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</translation>
-        </message>
-        <message>
-            <source>Could not write to %1.</source>
-            <translation>Could not write to %1.</translation>
-        </message>
-        <message>
-            <source>no connection to %1 within %2 ms</source>
-            <translation>no connection to %1 within %2 ms</translation>
-        </message>
-        <message>
-            <source>%1 closed the connection</source>
-            <translation>%1 closed the connection</translation>
-        </message>
-        <message>
-            <source>cannot open %1: %2</source>
-            <translation>cannot open %1: %2</translation>
-        </message>
-        <message>
-            <source>Empty address: type an element such as R12 or X0.</source>
-            <translation>Empty address: type an element such as R12 or X0.</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": it must start with an element type such as R, X or DWM.</source>
-            <translation>Invalid address "%1": it must start with an element type such as R, X or DWM.</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": unknown element type "%2" (known: %3).</source>
-            <translation>Invalid address "%1": unknown element type "%2" (known: %3).</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": the element number is missing (e.g. %2).</source>
-            <translation>Invalid address "%1": the element number is missing (e.g. %2).</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": "%2" is not a decimal element number.</source>
-            <translation>Invalid address "%1": "%2" is not a decimal element number.</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": element number too large.</source>
-            <translation>Invalid address "%1": element number too large.</translation>
-        </message>
-        <message>
-            <source>Address %1 is out of range: %2 numbers go from 0 to %3.</source>
-            <translation>Address %1 is out of range: %2 numbers go from 0 to %3.</translation>
-        </message>
-        <message>
-            <source>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</source>
-            <translation>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</translation>
-        </message>
-        <message>
-            <source>%1 elements from %2 run past %3, the last %4.</source>
-            <translation>%1 elements from %2 run past %3, the last %4.</translation>
-        </message>
-        <message>
-            <source>Enter the PLC's IP address or host name.</source>
-            <translation>Enter the PLC's IP address or host name.</translation>
-        </message>
-        <message>
-            <source>Choose a serial port.</source>
-            <translation>Choose a serial port.</translation>
-        </message>
-        <message>
-            <source>Baud rate %1 is out of range (1200 to 921600).</source>
-            <translation>Baud rate %1 is out of range (1200 to 921600).</translation>
-        </message>
-        <message>
-            <source>Timeout %1 ms is out of range (1 to 60000 ms).</source>
-            <translation>Timeout %1 ms is out of range (1 to 60000 ms).</translation>
-        </message>
-        <message>
-            <source>Retries %1 is out of range (0 to 10).</source>
-            <translation>Retries %1 is out of range (0 to 10).</translation>
-        </message>
-        <message>
-            <source>Incomplete range "%1": write it as first..last, e.g. R100..R163.</source>
-            <translation>Incomplete range "%1": write it as first..last, e.g. R100..R163.</translation>
-        </message>
-        <message>
-            <source>Range "%1" mixes %2 and %3: both ends must be the same element type.</source>
-            <translation>Range "%1" mixes %2 and %3: both ends must be the same element type.</translation>
-        </message>
-        <message>
-            <source>Range "%1" runs backwards: write the lower address first (%2).</source>
-            <translation>Range "%1" runs backwards: write the lower address first (%2).</translation>
-        </message>
-        <message>
-            <source>Range "%1" does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</source>
-            <translation>Range "%1" does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</translation>
-        </message>
-        <message>
-            <source>Range "%1" has %2 elements; at most %3 fit in one range.</source>
-            <translation>Range "%1" has %2 elements; at most %3 fit in one range.</translation>
-        </message>
-        <message>
-            <source>No range given; write for example X0-255, Y0-255.</source>
-            <translation>No range given; write for example X0-255, Y0-255.</translation>
-        </message>
-        <message>
-            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
-            <translation>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</translation>
-        </message>
-        <message>
-            <source>Nothing to send: type the frame's bytes in hex.</source>
-            <translation>Nothing to send: type the frame's bytes in hex.</translation>
-        </message>
-        <message>
-            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
-            <translation>Odd number of hex digits: each byte needs two (0C, not C).</translation>
-        </message>
-        <message>
-            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
-            <translation>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</translation>
-        </message>
-        <message>
-            <source>Nothing to send: type the frame.</source>
-            <translation>Nothing to send: type the frame.</translation>
+            <source>%1; %2</source>
+            <translation>%1; %2</translation>
         </message>
         <message>
             <source>no error</source>
@@ -462,6 +262,625 @@
             <translation>unknown error code</translation>
         </message>
         <message>
+            <source>PLC error %1: %2</source>
+            <translation>PLC error %1: %2</translation>
+        </message>
+        <message>
+            <source>PLC error %1: %2 %3</source>
+            <translation>PLC error %1: %2 %3</translation>
+        </message>
+        <message>
+            <source>read brief status</source>
+            <translation>read brief status</translation>
+        </message>
+        <message>
+            <source>RUN/STOP control</source>
+            <translation>RUN/STOP control</translation>
+        </message>
+        <message>
+            <source>single discrete control</source>
+            <translation>single discrete control</translation>
+        </message>
+        <message>
+            <source>read enable/disable flags</source>
+            <translation>read enable/disable flags</translation>
+        </message>
+        <message>
+            <source>read consecutive discretes</source>
+            <translation>read consecutive discretes</translation>
+        </message>
+        <message>
+            <source>write consecutive discretes</source>
+            <translation>write consecutive discretes</translation>
+        </message>
+        <message>
+            <source>read consecutive registers</source>
+            <translation>read consecutive registers</translation>
+        </message>
+        <message>
+            <source>write consecutive registers</source>
+            <translation>write consecutive registers</translation>
+        </message>
+        <message>
+            <source>mixed read</source>
+            <translation>mixed read</translation>
+        </message>
+        <message>
+            <source>mixed write</source>
+            <translation>mixed write</translation>
+        </message>
+        <message>
+            <source>loopback test</source>
+            <translation>loopback test</translation>
+        </message>
+        <message>
+            <source>read program page</source>
+            <translation>read program page</translation>
+        </message>
+        <message>
+            <source>write program page</source>
+            <translation>write program page</translation>
+        </message>
+        <message>
+            <source>read detail status</source>
+            <translation>read detail status</translation>
+        </message>
+        <message>
+            <source>unknown command</source>
+            <translation>unknown command</translation>
+        </message>
+        <message>
+            <source>station %1, %2 %3</source>
+            <translation>station %1, %2 %3</translation>
+        </message>
+        <message>
+            <source>invalid FACON frame (%1 bytes): %2</source>
+            <translation>invalid FACON frame (%1 bytes): %2</translation>
+        </message>
+        <message>
+            <source>bad binary frame (%1 bytes): %2</source>
+            <translation>bad binary frame (%1 bytes): %2</translation>
+        </message>
+        <message>
+            <source>answer: OK</source>
+            <translation>answer: OK</translation>
+        </message>
+        <message>
+            <source>answer: OK, %1 data chars &quot;%2&quot;</source>
+            <translation>answer: OK, %1 data chars &quot;%2&quot;</translation>
+        </message>
+        <message>
+            <source>answer: OK, %1 data bytes: %2</source>
+            <translation>answer: OK, %1 data bytes: %2</translation>
+        </message>
+        <message>
+            <source>answer: no error digit</source>
+            <translation>answer: no error digit</translation>
+        </message>
+        <message>
+            <source>answer: no error byte</source>
+            <translation>answer: no error byte</translation>
+        </message>
+        <message>
+            <source>answer: malformed &quot;%1&quot;</source>
+            <translation>answer: malformed &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>answer: echo of %1 bytes</source>
+            <translation>answer: echo of %1 bytes</translation>
+        </message>
+        <message>
+            <source>answer: error %1 (%2)</source>
+            <translation>answer: error %1 (%2)</translation>
+        </message>
+        <message>
+            <source>unknown command, data &quot;%1&quot;</source>
+            <translation>unknown command, data &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>%1 chars &quot;%2&quot;</source>
+            <translation>%1 chars &quot;%2&quot;</translation>
+        </message>
+        <message>
+            <source>STOP, or answer: no error</source>
+            <translation>STOP, or answer: no error</translation>
+        </message>
+        <message>
+            <source>%1 elements%2</source>
+            <translation>%1 elements%2</translation>
+        </message>
+        <message>
+            <source>page %1</source>
+            <translation>page %1</translation>
+        </message>
+        <message>
+            <source>page %1, 64 words</source>
+            <translation>page %1, 64 words</translation>
+        </message>
+        <message>
+            <source>disable %1</source>
+            <translation>disable %1</translation>
+        </message>
+        <message>
+            <source>enable %1</source>
+            <translation>enable %1</translation>
+        </message>
+        <message>
+            <source>set %1</source>
+            <translation>set %1</translation>
+        </message>
+        <message>
+            <source>reset %1</source>
+            <translation>reset %1</translation>
+        </message>
+        <message>
+            <source>link lost</source>
+            <translation>link lost</translation>
+        </message>
+        <message>
+            <source>stale bytes discarded</source>
+            <translation>stale bytes discarded</translation>
+        </message>
+        <message>
+            <source>received outside an answer</source>
+            <translation>received outside an answer</translation>
+        </message>
+        <message>
+            <source>unexpected bytes</source>
+            <translation>unexpected bytes</translation>
+        </message>
+        <message>
+            <source>no query pending</source>
+            <translation>no query pending</translation>
+        </message>
+        <message>
+            <source>echo of the query</source>
+            <translation>echo of the query</translation>
+        </message>
+        <message>
+            <source>raw answer</source>
+            <translation>raw answer</translation>
+        </message>
+        <message>
+            <source>raw frame</source>
+            <translation>raw frame</translation>
+        </message>
+        <message>
+            <source>no complete frame</source>
+            <translation>no complete frame</translation>
+        </message>
+        <message>
+            <source>more than %1 bytes: rest not read</source>
+            <translation>more than %1 bytes: rest not read</translation>
+        </message>
+        <message>
+            <source>no answer within %1 ms</source>
+            <translation>no answer within %1 ms</translation>
+        </message>
+        <message>
+            <source>protocol detected: %1</source>
+            <translation>protocol detected: %1</translation>
+        </message>
+        <message>
+            <source>%1 bytes, first %2 kept</source>
+            <translation>%1 bytes, first %2 kept</translation>
+        </message>
+        <message>
+            <source>closing</source>
+            <translation>closing</translation>
+        </message>
+        <message>
+            <source>sending %1 queued write(s) first, at most %2 ms</source>
+            <translation>sending %1 queued write(s) first, at most %2 ms</translation>
+        </message>
+        <message>
+            <source>closed</source>
+            <translation>closed</translation>
+        </message>
+        <message>
+            <source>connecting</source>
+            <translation>connecting</translation>
+        </message>
+        <message>
+            <source>connected</source>
+            <translation>connected</translation>
+        </message>
+        <message>
+            <source>lost</source>
+            <translation>lost</translation>
+        </message>
+        <message>
+            <source>reconnecting</source>
+            <translation>reconnecting</translation>
+        </message>
+        <message>
+            <source>link lost: %1</source>
+            <translation>link lost: %1</translation>
+        </message>
+        <message>
+            <source>%1; next attempt in %2 s</source>
+            <translation>%1; next attempt in %2 s</translation>
+        </message>
+        <message>
+            <source>the session was closed</source>
+            <translation>the session was closed</translation>
+        </message>
+        <message>
+            <source>the session was closed after waiting %1 ms for queued writes</source>
+            <translation>the session was closed after waiting %1 ms for queued writes</translation>
+        </message>
+        <message>
+            <source>%1 does not take data</source>
+            <translation>%1 does not take data</translation>
+        </message>
+        <message>
+            <source>no connection to %1 within %2 ms</source>
+            <translation>no connection to %1 within %2 ms</translation>
+        </message>
+        <message>
+            <source>%1 closed the connection</source>
+            <translation>%1 closed the connection</translation>
+        </message>
+        <message>
+            <source>cannot open %1: %2</source>
+            <translation>cannot open %1: %2</translation>
+        </message>
+        <message>
+            <source>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</source>
+            <translation>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</translation>
+        </message>
+        <message>
+            <source>No answer from station %1 within %2 ms (attempt %3 of %4).</source>
+            <translation>No answer from station %1 within %2 ms (attempt %3 of %4).</translation>
+        </message>
+        <message>
+            <source>No answer within %1 ms.</source>
+            <translation>No answer within %1 ms.</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is not open.</source>
+            <translation>Not sent: the link is not open.</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is down (%1).</source>
+            <translation>Not sent: the link is down (%1).</translation>
+        </message>
+        <message>
+            <source>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</source>
+            <translation>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</translation>
+        </message>
+        <message>
+            <source>Read-only mode: &quot;%1&quot; was not sent. Leave operator mode to change the PLC.</source>
+            <translation>Read-only mode: &quot;%1&quot; was not sent. Leave operator mode to change the PLC.</translation>
+        </message>
+        <message>
+            <source>Cancelled before it was sent.</source>
+            <translation>Cancelled before it was sent.</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is closing.</source>
+            <translation>Not sent: the link is closing.</translation>
+        </message>
+        <message>
+            <source>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</source>
+            <translation>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</translation>
+        </message>
+        <message>
+            <source>The answer carries fewer values than asked.</source>
+            <translation>The answer carries fewer values than asked.</translation>
+        </message>
+        <message>
+            <source>Could not write to %1.</source>
+            <translation>Could not write to %1.</translation>
+        </message>
+        <message>
+            <source>not executed</source>
+            <translation>not executed</translation>
+        </message>
+        <message>
+            <source>Empty address: type an element such as R12 or X0.</source>
+            <translation>Empty address: type an element such as R12 or X0.</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: it must start with an element type such as R, X or DWM.</source>
+            <translation>Invalid address &quot;%1&quot;: it must start with an element type such as R, X or DWM.</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: unknown element type &quot;%2&quot; (known: %3).</source>
+            <translation>Invalid address &quot;%1&quot;: unknown element type &quot;%2&quot; (known: %3).</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: the element number is missing (e.g. %2).</source>
+            <translation>Invalid address &quot;%1&quot;: the element number is missing (e.g. %2).</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: &quot;%2&quot; is not a decimal element number.</source>
+            <translation>Invalid address &quot;%1&quot;: &quot;%2&quot; is not a decimal element number.</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: element number too large.</source>
+            <translation>Invalid address &quot;%1&quot;: element number too large.</translation>
+        </message>
+        <message>
+            <source>Address %1 is out of range: %2 numbers go from 0 to %3.</source>
+            <translation>Address %1 is out of range: %2 numbers go from 0 to %3.</translation>
+        </message>
+        <message>
+            <source>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</source>
+            <translation>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</translation>
+        </message>
+        <message>
+            <source>%1 elements from %2 run past %3, the last %4.</source>
+            <translation>%1 elements from %2 run past %3, the last %4.</translation>
+        </message>
+        <message>
+            <source>Enter the PLC&apos;s IP address or host name.</source>
+            <translation>Enter the PLC&apos;s IP address or host name.</translation>
+        </message>
+        <message>
+            <source>Port 0 is not usable; FATEK Ethernet modules usually listen on 500.</source>
+            <translation>Port 0 is not usable; FATEK Ethernet modules usually listen on 500.</translation>
+        </message>
+        <message>
+            <source>Choose a serial port.</source>
+            <translation>Choose a serial port.</translation>
+        </message>
+        <message>
+            <source>Baud rate %1 is out of range (1200 to 921600).</source>
+            <translation>Baud rate %1 is out of range (1200 to 921600).</translation>
+        </message>
+        <message>
+            <source>Data bits must be 7 or 8, not %1.</source>
+            <translation>Data bits must be 7 or 8, not %1.</translation>
+        </message>
+        <message>
+            <source>Stop bits must be 1 or 2, not %1.</source>
+            <translation>Stop bits must be 1 or 2, not %1.</translation>
+        </message>
+        <message>
+            <source>Timeout %1 ms is out of range (1 to 60000 ms).</source>
+            <translation>Timeout %1 ms is out of range (1 to 60000 ms).</translation>
+        </message>
+        <message>
+            <source>Retries %1 is out of range (0 to 10).</source>
+            <translation>Retries %1 is out of range (0 to 10).</translation>
+        </message>
+        <message>
+            <source>Inter-frame silence %1 ms is out of range (0 to 1000 ms).</source>
+            <translation>Inter-frame silence %1 ms is out of range (0 to 1000 ms).</translation>
+        </message>
+        <message>
+            <source>Connect timeout must be at least 1 ms.</source>
+            <translation>Connect timeout must be at least 1 ms.</translation>
+        </message>
+        <message>
+            <source>Reconnect delays must be positive, the maximum not below the minimum.</source>
+            <translation>Reconnect delays must be positive, the maximum not below the minimum.</translation>
+        </message>
+        <message>
+            <source>Incomplete range &quot;%1&quot;: write it as first..last, e.g. R100..R163.</source>
+            <translation>Incomplete range &quot;%1&quot;: write it as first..last, e.g. R100..R163.</translation>
+        </message>
+        <message>
+            <source>Range &quot;%1&quot; mixes %2 and %3: both ends must be the same element type.</source>
+            <translation>Range &quot;%1&quot; mixes %2 and %3: both ends must be the same element type.</translation>
+        </message>
+        <message>
+            <source>Range &quot;%1&quot; runs backwards: write the lower address first (%2).</source>
+            <translation>Range &quot;%1&quot; runs backwards: write the lower address first (%2).</translation>
+        </message>
+        <message>
+            <source>Range &quot;%1&quot; does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</source>
+            <translation>Range &quot;%1&quot; does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</translation>
+        </message>
+        <message>
+            <source>Range &quot;%1&quot; has %2 elements; at most %3 fit in one range.</source>
+            <translation>Range &quot;%1&quot; has %2 elements; at most %3 fit in one range.</translation>
+        </message>
+        <message>
+            <source>No range given; write for example X0-255, Y0-255.</source>
+            <translation>No range given; write for example X0-255, Y0-255.</translation>
+        </message>
+        <message>
+            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
+            <translation>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame&apos;s bytes in hex.</source>
+            <translation>Nothing to send: type the frame&apos;s bytes in hex.</translation>
+        </message>
+        <message>
+            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
+            <translation>Odd number of hex digits: each byte needs two (0C, not C).</translation>
+        </message>
+        <message>
+            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
+            <translation>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame.</source>
+            <translation>Nothing to send: type the frame.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a BCD number (digits 0-9 only)</source>
+            <translation>&quot;%1&quot; is not a BCD number (digits 0-9 only)</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a hexadecimal number</source>
+            <translation>&quot;%1&quot; is not a hexadecimal number</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a binary number (only 0 and 1)</source>
+            <translation>&quot;%1&quot; is not a binary number (only 0 and 1)</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a number</source>
+            <translation>&quot;%1&quot; is not a number</translation>
+        </message>
+        <message>
+            <source>BCD values cannot be negative (&quot;%1&quot;)</source>
+            <translation>BCD values cannot be negative (&quot;%1&quot;)</translation>
+        </message>
+        <message>
+            <source>%1 does not fit %2 as BCD (0..%3)</source>
+            <translation>%1 does not fit %2 as BCD (0..%3)</translation>
+        </message>
+        <message>
+            <source>%1 does not fit %2 (%3)</source>
+            <translation>%1 does not fit %2 (%3)</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a bit value: type ON, OFF, 1 or 0</source>
+            <translation>&quot;%1&quot; is not a bit value: type ON, OFF, 1 or 0</translation>
+        </message>
+        <message>
+            <source>%1 does not fit a 32-bit float (largest about ±%2)</source>
+            <translation>%1 does not fit a 32-bit float (largest about ±%2)</translation>
+        </message>
+        <message>
+            <source>%1 does not fit a 64-bit double (largest about ±%2)</source>
+            <translation>%1 does not fit a 64-bit double (largest about ±%2)</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is too long: %2 holds %3 ASCII characters</source>
+            <translation>&quot;%1&quot; is too long: %2 holds %3 ASCII characters</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; contains a character that is not plain printable ASCII (letters, digits, punctuation and space only)</source>
+            <translation>&quot;%1&quot; contains a character that is not plain printable ASCII (letters, digits, punctuation and space only)</translation>
+        </message>
+        <message>
+            <source>a bit</source>
+            <translation>a bit</translation>
+        </message>
+        <message>
+            <source>a 16-bit register</source>
+            <translation>a 16-bit register</translation>
+        </message>
+        <message>
+            <source>a %1-bit value</source>
+            <translation>a %1-bit value</translation>
+        </message>
+        <message>
+            <source>A %1-bit value cannot be written (only 1, 16, 32 or 64 bits).</source>
+            <translation>A %1-bit value cannot be written (only 1, 16, 32 or 64 bits).</translation>
+        </message>
+        <message>
+            <source>No value typed: type ON, OFF, 1 or 0.</source>
+            <translation>No value typed: type ON, OFF, 1 or 0.</translation>
+        </message>
+        <message>
+            <source>No value typed: type a number such as 12, -5, 0x1A or 1Ah.</source>
+            <translation>No value typed: type a number such as 12, -5, 0x1A or 1Ah.</translation>
+        </message>
+        <message>
+            <source>%1: %2 elements are not available in the FACON protocol (binary protocol only).</source>
+            <translation>%1: %2 elements are not available in the FACON protocol (binary protocol only).</translation>
+        </message>
+        <message>
+            <source>Value %1 for %2: a discrete takes 0 (OFF) or 1 (ON).</source>
+            <translation>Value %1 for %2: a discrete takes 0 (OFF) or 1 (ON).</translation>
+        </message>
+        <message>
+            <source>Value %1 for %2 does not fit a 16-bit register (0..65535).</source>
+            <translation>Value %1 for %2 does not fit a 16-bit register (0..65535).</translation>
+        </message>
+        <message>
+            <source>%1 needs a discrete (X Y M S T C), not %2.</source>
+            <translation>%1 needs a discrete (X Y M S T C), not %2.</translation>
+        </message>
+        <message>
+            <source>%1: %2 points requested; one request carries 1 to 256 points.</source>
+            <translation>%1: %2 points requested; one request carries 1 to 256 points.</translation>
+        </message>
+        <message>
+            <source>%1 needs a register (R, D, WY, DR, ...), not %2; use discretes commands for single points.</source>
+            <translation>%1 needs a register (R, D, WY, DR, ...), not %2; use discretes commands for single points.</translation>
+        </message>
+        <message>
+            <source>%1: %2 16-bit registers requested; one request carries 1 to %3.</source>
+            <translation>%1: %2 16-bit registers requested; one request carries 1 to %3.</translation>
+        </message>
+        <message>
+            <source>%1: %2 32-bit registers requested; one request carries 1 to %3 (32-bit registers count as two words).</source>
+            <translation>%1: %2 32-bit registers requested; one request carries 1 to %3 (32-bit registers count as two words).</translation>
+        </message>
+        <message>
+            <source>%1: no element given.</source>
+            <translation>%1: no element given.</translation>
+        </message>
+        <message>
+            <source>%1: %2 elements; at most %3 words fit in one request.</source>
+            <translation>%1: %2 elements; at most %3 words fit in one request.</translation>
+        </message>
+        <message>
+            <source>%1: %2 words requested; at most %3 fit in one request (a discrete or 16-bit element counts 1, a 32-bit element 2).</source>
+            <translation>%1: %2 words requested; at most %3 fit in one request (a discrete or 16-bit element counts 1, a 32-bit element 2).</translation>
+        </message>
+        <message>
+            <source>Station %1 is not valid: stations are 1 to 254 (0 = broadcast).</source>
+            <translation>Station %1 is not valid: stations are 1 to 254 (0 = broadcast).</translation>
+        </message>
+        <message>
+            <source>Unknown discrete operation %1.</source>
+            <translation>Unknown discrete operation %1.</translation>
+        </message>
+        <message>
+            <source>Mixed write: %1 addresses but %2 values.</source>
+            <translation>Mixed write: %1 addresses but %2 values.</translation>
+        </message>
+        <message>
+            <source>Loopback test data is %1 bytes; at most 256 fit in one request.</source>
+            <translation>Loopback test data is %1 bytes; at most 256 fit in one request.</translation>
+        </message>
+        <message>
+            <source>FACON loopback data must be printable ASCII characters.</source>
+            <translation>FACON loopback data must be printable ASCII characters.</translation>
+        </message>
+        <message>
+            <source>Program pages (4F/50) exist only in the FACON protocol.</source>
+            <translation>Program pages (4F/50) exist only in the FACON protocol.</translation>
+        </message>
+        <message>
+            <source>A program page holds exactly 64 words; %1 given.</source>
+            <translation>A program page holds exactly 64 words; %1 given.</translation>
+        </message>
+        <message>
+            <source>Program words are 16-bit (0..65535).</source>
+            <translation>Program words are 16-bit (0..65535).</translation>
+        </message>
+        <message>
+            <source>Unknown command code %1.</source>
+            <translation>Unknown command code %1.</translation>
+        </message>
+        <message>
+            <source>%1: station 0 is broadcast; PLCs do not answer it, so nothing can be read there.</source>
+            <translation>%1: station 0 is broadcast; PLCs do not answer it, so nothing can be read there.</translation>
+        </message>
+        <message>
+            <source>table %1</source>
+            <translation>table %1</translation>
+        </message>
+        <message>
+            <source>table %1, item %2</source>
+            <translation>table %1, item %2</translation>
+        </message>
+        <message>
+            <source>line %1</source>
+            <translation>line %1</translation>
+        </message>
+        <message>
+            <source>Not saved</source>
+            <translation>Not saved</translation>
+        </message>
+        <message>
+            <source>%1 items are more than one table holds (at most %2)</source>
+            <translation>%1 items are more than one table holds (at most %2)</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::UiText</name>
+        <message>
             <source>bit</source>
             <translation>bit</translation>
         </message>
@@ -496,27 +915,6 @@
         <message>
             <source>double</source>
             <translation>double</translation>
-        </message>
-        <message>
-            <source>auto-detect</source>
-            <translation>auto-detect</translation>
-        </message>
-        <message>
-            <source>%1, %2</source>
-            <extracomment>Link settings: medium (TCP 10.0.0.5:500, COM3 9600 7E1) and protocol.</extracomment>
-            <translation>%1, %2</translation>
-        </message>
-        <message>
-            <source>(no port)</source>
-            <translation>(no port)</translation>
-        </message>
-        <message>
-            <source>PLC error %1: %2</source>
-            <translation>PLC error %1: %2</translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1: %2</translation>
         </message>
         <message>
             <source>input</source>
@@ -623,200 +1021,17 @@
             <translation>file register pair</translation>
         </message>
         <message>
-            <source>read brief status</source>
-            <translation>read brief status</translation>
+            <source>auto-detect</source>
+            <translation>auto-detect</translation>
         </message>
         <message>
-            <source>RUN/STOP control</source>
-            <translation>RUN/STOP control</translation>
+            <source>%1, %2</source>
+            <extracomment>Link settings: medium (TCP 10.0.0.5:500, COM3 9600 7E1) and protocol.</extracomment>
+            <translation>%1, %2</translation>
         </message>
         <message>
-            <source>single discrete control</source>
-            <translation>single discrete control</translation>
-        </message>
-        <message>
-            <source>read enable/disable flags</source>
-            <translation>read enable/disable flags</translation>
-        </message>
-        <message>
-            <source>read consecutive discretes</source>
-            <translation>read consecutive discretes</translation>
-        </message>
-        <message>
-            <source>write consecutive discretes</source>
-            <translation>write consecutive discretes</translation>
-        </message>
-        <message>
-            <source>read consecutive registers</source>
-            <translation>read consecutive registers</translation>
-        </message>
-        <message>
-            <source>write consecutive registers</source>
-            <translation>write consecutive registers</translation>
-        </message>
-        <message>
-            <source>mixed read</source>
-            <translation>mixed read</translation>
-        </message>
-        <message>
-            <source>mixed write</source>
-            <translation>mixed write</translation>
-        </message>
-        <message>
-            <source>loopback test</source>
-            <translation>loopback test</translation>
-        </message>
-        <message>
-            <source>read program page</source>
-            <translation>read program page</translation>
-        </message>
-        <message>
-            <source>write program page</source>
-            <translation>write program page</translation>
-        </message>
-        <message>
-            <source>read detail status</source>
-            <translation>read detail status</translation>
-        </message>
-        <message>
-            <source>invalid FACON frame (%1 bytes): %2</source>
-            <translation>invalid FACON frame (%1 bytes): %2</translation>
-        </message>
-        <message>
-            <source>bad binary frame (%1 bytes): %2</source>
-            <translation>bad binary frame (%1 bytes): %2</translation>
-        </message>
-        <message>
-            <source>answer: OK</source>
-            <translation>answer: OK</translation>
-        </message>
-        <message>
-            <source>answer: OK, %1 data chars "%2"</source>
-            <translation>answer: OK, %1 data chars "%2"</translation>
-        </message>
-        <message>
-            <source>answer: OK, %1 data bytes: %2</source>
-            <translation>answer: OK, %1 data bytes: %2</translation>
-        </message>
-        <message>
-            <source>answer: no error digit</source>
-            <translation>answer: no error digit</translation>
-        </message>
-        <message>
-            <source>answer: no error byte</source>
-            <translation>answer: no error byte</translation>
-        </message>
-        <message>
-            <source>answer: malformed "%1"</source>
-            <translation>answer: malformed "%1"</translation>
-        </message>
-        <message>
-            <source>answer: echo of %1 bytes</source>
-            <translation>answer: echo of %1 bytes</translation>
-        </message>
-        <message>
-            <source>unknown command, data "%1"</source>
-            <translation>unknown command, data "%1"</translation>
-        </message>
-        <message>
-            <source>%1 chars "%2"</source>
-            <translation>%1 chars "%2"</translation>
-        </message>
-        <message>
-            <source>STOP, or answer: no error</source>
-            <translation>STOP, or answer: no error</translation>
-        </message>
-        <message>
-            <source>link lost</source>
-            <translation>link lost</translation>
-        </message>
-        <message>
-            <source>stale bytes discarded</source>
-            <translation>stale bytes discarded</translation>
-        </message>
-        <message>
-            <source>received outside an answer</source>
-            <translation>received outside an answer</translation>
-        </message>
-        <message>
-            <source>unexpected bytes</source>
-            <translation>unexpected bytes</translation>
-        </message>
-        <message>
-            <source>no query pending</source>
-            <translation>no query pending</translation>
-        </message>
-        <message>
-            <source>echo of the query</source>
-            <translation>echo of the query</translation>
-        </message>
-        <message>
-            <source>raw answer</source>
-            <translation>raw answer</translation>
-        </message>
-        <message>
-            <source>raw frame</source>
-            <translation>raw frame</translation>
-        </message>
-        <message>
-            <source>no complete frame</source>
-            <translation>no complete frame</translation>
-        </message>
-        <message>
-            <source>more than %1 bytes: rest not read</source>
-            <translation>more than %1 bytes: rest not read</translation>
-        </message>
-        <message>
-            <source>no answer within %1 ms</source>
-            <translation>no answer within %1 ms</translation>
-        </message>
-        <message>
-            <source>protocol detected: %1</source>
-            <translation>protocol detected: %1</translation>
-        </message>
-        <message>
-            <source>%1 bytes, first %2 kept</source>
-            <translation>%1 bytes, first %2 kept</translation>
-        </message>
-        <message>
-            <source>answer: error %1 (%2)</source>
-            <translation>answer: error %1 (%2)</translation>
-        </message>
-        <message>
-            <source>%1 %2</source>
-            <translation>%1 %2</translation>
-        </message>
-        <message>
-            <source>station %1, %2 %3</source>
-            <translation>station %1, %2 %3</translation>
-        </message>
-        <message>
-            <source>%1 elements%2</source>
-            <translation>%1 elements%2</translation>
-        </message>
-        <message>
-            <source>page %1</source>
-            <translation>page %1</translation>
-        </message>
-        <message>
-            <source>page %1, 64 words</source>
-            <translation>page %1, 64 words</translation>
-        </message>
-        <message>
-            <source>disable %1</source>
-            <translation>disable %1</translation>
-        </message>
-        <message>
-            <source>enable %1</source>
-            <translation>enable %1</translation>
-        </message>
-        <message>
-            <source>set %1</source>
-            <translation>set %1</translation>
-        </message>
-        <message>
-            <source>reset %1</source>
-            <translation>reset %1</translation>
+            <source>(no port)</source>
+            <translation>(no port)</translation>
         </message>
     </context>
     <context>
@@ -1344,14 +1559,6 @@
             </translation>
         </message>
         <message>
-            <source>FATEK Studio — Operator mode (read-only)</source>
-            <translation>FATEK Studio — Operator mode (read-only)</translation>
-        </message>
-        <message>
-            <source>FATEK Studio</source>
-            <translation>FATEK Studio</translation>
-        </message>
-        <message>
             <source>Connections</source>
             <translation>Connections</translation>
         </message>
@@ -1442,10 +1649,6 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>Connecting to %1 (%2)…</translation>
         </message>
         <message>
-            <source>%1 — %2</source>
-            <translation>%1 — %2</translation>
-        </message>
-        <message>
             <source>Watch %1</source>
             <translation>Watch %1</translation>
         </message>
@@ -1468,10 +1671,6 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>Starting the demo simulator…</source>
             <translation>Starting the demo simulator…</translation>
-        </message>
-        <message>
-            <source>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</source>
-            <translation>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</translation>
         </message>
         <message numerus="yes">
             <source>%n saved connection(s) could not be read (kept unchanged)</source>
@@ -1895,10 +2094,6 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>whole frame, e.g. &lt;STX&gt;0140C7&lt;ETX&gt;</source>
             <translation>whole frame, e.g. &lt;STX&gt;0140C7&lt;ETX&gt;</translation>
-        </message>
-        <message>
-            <source>command %1 to station %2</source>
-            <translation>command %1 to station %2</translation>
         </message>
         <message>
             <source>an unrecognized frame</source>

@@ -151,10 +151,6 @@
     <context>
         <name>Fatek::ConnectionListModel</name>
         <message>
-            <source>%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries</source>
-            <translation>逾時 %1 次，檢查碼錯誤 %2 次，PLC 錯誤 %3 次，重試 %4 次</translation>
-        </message>
-        <message>
             <source>Round trip: last %1 ms, median %2 ms, 99% %3 ms</source>
             <translation>往返時間：最近 %1 ms，中位數 %2 ms，99% %3 ms</translation>
         </message>
@@ -212,214 +208,18 @@
         </message>
     </context>
     <context>
-        <name>Fatek::CoreText</name>
+        <name>Fatek::Message</name>
         <message>
-            <source>link lost: %1</source>
-            <translation>連線中斷：%1</translation>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
         </message>
         <message>
-            <source>%1; next attempt in %2 s</source>
-            <translation>%1；%2 秒後重新連線</translation>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
         </message>
         <message>
-            <source>No answer from station %1 within %2 ms (attempt %3 of %4).</source>
-            <translation>站號 %1 在 %2 ms 內沒有回應（第 %3 次，共 %4 次）。</translation>
-        </message>
-        <message>
-            <source>No answer within %1 ms.</source>
-            <translation>%1 ms 內沒有回應。</translation>
-        </message>
-        <message>
-            <source>Not sent: the link is not open.</source>
-            <translation>未送出：連線尚未開啟。</translation>
-        </message>
-        <message>
-            <source>Not sent: the link is down (%1).</source>
-            <translation>未送出：連線中斷（%1）。</translation>
-        </message>
-        <message>
-            <source>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</source>
-            <translation>未送出：此連線已有 %1 個請求在等待（PLC 回應的速度比請求送達慢）。</translation>
-        </message>
-        <message>
-            <source>Read-only mode: "%1" was not sent. Leave operator mode to change the PLC.</source>
-            <translation>唯讀模式：「%1」未送出。請離開操作員模式後再變更 PLC。</translation>
-        </message>
-        <message>
-            <source>Cancelled before it was sent.</source>
-            <translation>送出前已取消。</translation>
-        </message>
-        <message>
-            <source>the session was closed</source>
-            <translation>工作階段已關閉</translation>
-        </message>
-        <message>
-            <source>the session was closed after waiting %1 ms for queued writes</source>
-            <translation>等候排隊中的寫入 %1 ms 後，工作階段已關閉</translation>
-        </message>
-        <message>
-            <source>Not sent: the link is closing.</source>
-            <translation>未送出：連線正在關閉。</translation>
-        </message>
-        <message>
-            <source>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</source>
-            <translation>未送出：%1 在 %2 ms 內未接受訊框（%4 位元組中有 %3 個未送出）。</translation>
-        </message>
-        <message>
-            <source>%1 does not take data</source>
-            <translation>%1 不接受資料</translation>
-        </message>
-        <message>
-            <source>closing</source>
-            <translation>正在關閉</translation>
-        </message>
-        <message>
-            <source>sending %1 queued write(s) first, at most %2 ms</source>
-            <translation>先送出 %1 筆排隊中的寫入，最多 %2 ms</translation>
-        </message>
-        <message>
-            <source>closed</source>
-            <translation>已關閉</translation>
-        </message>
-        <message>
-            <source>connecting</source>
-            <translation>連線中</translation>
-        </message>
-        <message>
-            <source>connected</source>
-            <translation>已連線</translation>
-        </message>
-        <message>
-            <source>lost</source>
-            <translation>已中斷</translation>
-        </message>
-        <message>
-            <source>reconnecting</source>
-            <translation>重新連線中</translation>
-        </message>
-        <message>
-            <source>The answer carries fewer values than asked.</source>
-            <translation>回應的數值比要求的少。</translation>
-        </message>
-        <message>
-            <source>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</source>
-            <translation>通訊協定自動偵測：站號 %1 對 FACON 與二進位協定皆無回應（%2）</translation>
-        </message>
-        <message>
-            <source>Could not write to %1.</source>
-            <translation>無法寫入 %1。</translation>
-        </message>
-        <message>
-            <source>no connection to %1 within %2 ms</source>
-            <translation>%2 ms 內無法連線到 %1</translation>
-        </message>
-        <message>
-            <source>%1 closed the connection</source>
-            <translation>%1 已關閉連線</translation>
-        </message>
-        <message>
-            <source>cannot open %1: %2</source>
-            <translation>無法開啟 %1：%2</translation>
-        </message>
-        <message>
-            <source>Empty address: type an element such as R12 or X0.</source>
-            <translation>位址空白：請輸入元件，例如 R12 或 X0。</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": it must start with an element type such as R, X or DWM.</source>
-            <translation>無效的位址「%1」：必須以元件類型開頭，例如 R、X 或 DWM。</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": unknown element type "%2" (known: %3).</source>
-            <translation>無效的位址「%1」：未知的元件類型「%2」（可用：%3）。</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": the element number is missing (e.g. %2).</source>
-            <translation>無效的位址「%1」：缺少元件編號（例如 %2）。</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": "%2" is not a decimal element number.</source>
-            <translation>無效的位址「%1」：「%2」不是十進位的元件編號。</translation>
-        </message>
-        <message>
-            <source>Invalid address "%1": element number too large.</source>
-            <translation>無效的位址「%1」：元件編號太大。</translation>
-        </message>
-        <message>
-            <source>Address %1 is out of range: %2 numbers go from 0 to %3.</source>
-            <translation>位址 %1 超出範圍：%2 的編號範圍是 0 到 %3。</translation>
-        </message>
-        <message>
-            <source>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</source>
-            <translation>位址 %1 未對齊：%2 必須從 %3 的倍數開始（例如 %4）。</translation>
-        </message>
-        <message>
-            <source>%1 elements from %2 run past %3, the last %4.</source>
-            <translation>從 %2 起的 %1 個元件超出 %3（最後一個 %4 元件）。</translation>
-        </message>
-        <message>
-            <source>Enter the PLC's IP address or host name.</source>
-            <translation>請輸入 PLC 的 IP 位址或主機名稱。</translation>
-        </message>
-        <message>
-            <source>Choose a serial port.</source>
-            <translation>請選擇串列埠。</translation>
-        </message>
-        <message>
-            <source>Baud rate %1 is out of range (1200 to 921600).</source>
-            <translation>鮑率 %1 超出範圍（1200 到 921600）。</translation>
-        </message>
-        <message>
-            <source>Timeout %1 ms is out of range (1 to 60000 ms).</source>
-            <translation>逾時 %1 ms 超出範圍（1 到 60000 ms）。</translation>
-        </message>
-        <message>
-            <source>Retries %1 is out of range (0 to 10).</source>
-            <translation>重試次數 %1 超出範圍（0 到 10）。</translation>
-        </message>
-        <message>
-            <source>Incomplete range "%1": write it as first..last, e.g. R100..R163.</source>
-            <translation>範圍「%1」不完整：請寫成 起點..終點，例如 R100..R163。</translation>
-        </message>
-        <message>
-            <source>Range "%1" mixes %2 and %3: both ends must be the same element type.</source>
-            <translation>範圍「%1」混用了 %2 與 %3：兩端必須是相同的元件類型。</translation>
-        </message>
-        <message>
-            <source>Range "%1" runs backwards: write the lower address first (%2).</source>
-            <translation>範圍「%1」的方向相反：請先寫較小的位址（%2）。</translation>
-        </message>
-        <message>
-            <source>Range "%1" does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</source>
-            <translation>範圍「%1」的結束點不在完整的元件上：%2 元件彼此相隔 %3（%4、%5、...）。</translation>
-        </message>
-        <message>
-            <source>Range "%1" has %2 elements; at most %3 fit in one range.</source>
-            <translation>範圍「%1」有 %2 個元件；一個範圍最多 %3 個。</translation>
-        </message>
-        <message>
-            <source>No range given; write for example X0-255, Y0-255.</source>
-            <translation>未指定範圍；例如請輸入 X0-255, Y0-255。</translation>
-        </message>
-        <message>
-            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
-            <translation>「%1」不是十六進位數字；請以 01 46 03 52 00 0C 的形式輸入位元組。</translation>
-        </message>
-        <message>
-            <source>Nothing to send: type the frame's bytes in hex.</source>
-            <translation>沒有可送出的內容：請以十六進位輸入訊框的位元組。</translation>
-        </message>
-        <message>
-            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
-            <translation>十六進位數字個數為奇數：每個位元組需要兩位數（0C，而非 C）。</translation>
-        </message>
-        <message>
-            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
-            <translation>只能輸入可列印的 ASCII 字元；控制字元請寫成 &lt;STX&gt;、&lt;ETX&gt; 或 &lt;0D&gt;。</translation>
-        </message>
-        <message>
-            <source>Nothing to send: type the frame.</source>
-            <translation>沒有可送出的內容：請輸入訊框。</translation>
+            <source>%1; %2</source>
+            <translation>%1；%2</translation>
         </message>
         <message>
             <source>no error</source>
@@ -462,6 +262,625 @@
             <translation>未知的錯誤碼</translation>
         </message>
         <message>
+            <source>PLC error %1: %2</source>
+            <translation>PLC 錯誤 %1：%2</translation>
+        </message>
+        <message>
+            <source>PLC error %1: %2 %3</source>
+            <translation>PLC 錯誤 %1：%2 %3</translation>
+        </message>
+        <message>
+            <source>read brief status</source>
+            <translation>讀取簡要狀態</translation>
+        </message>
+        <message>
+            <source>RUN/STOP control</source>
+            <translation>RUN/STOP 控制</translation>
+        </message>
+        <message>
+            <source>single discrete control</source>
+            <translation>單一離散點控制</translation>
+        </message>
+        <message>
+            <source>read enable/disable flags</source>
+            <translation>讀取啟用/停用旗標</translation>
+        </message>
+        <message>
+            <source>read consecutive discretes</source>
+            <translation>讀取連續離散點</translation>
+        </message>
+        <message>
+            <source>write consecutive discretes</source>
+            <translation>寫入連續離散點</translation>
+        </message>
+        <message>
+            <source>read consecutive registers</source>
+            <translation>讀取連續暫存器</translation>
+        </message>
+        <message>
+            <source>write consecutive registers</source>
+            <translation>寫入連續暫存器</translation>
+        </message>
+        <message>
+            <source>mixed read</source>
+            <translation>混合讀取</translation>
+        </message>
+        <message>
+            <source>mixed write</source>
+            <translation>混合寫入</translation>
+        </message>
+        <message>
+            <source>loopback test</source>
+            <translation>迴路測試</translation>
+        </message>
+        <message>
+            <source>read program page</source>
+            <translation>讀取程式頁</translation>
+        </message>
+        <message>
+            <source>write program page</source>
+            <translation>寫入程式頁</translation>
+        </message>
+        <message>
+            <source>read detail status</source>
+            <translation>讀取詳細狀態</translation>
+        </message>
+        <message>
+            <source>unknown command</source>
+            <translation>未知的命令</translation>
+        </message>
+        <message>
+            <source>station %1, %2 %3</source>
+            <translation>站號 %1，%2 %3</translation>
+        </message>
+        <message>
+            <source>invalid FACON frame (%1 bytes): %2</source>
+            <translation>無效的 FACON 訊框（%1 位元組）：%2</translation>
+        </message>
+        <message>
+            <source>bad binary frame (%1 bytes): %2</source>
+            <translation>錯誤的二進位訊框（%1 位元組）：%2</translation>
+        </message>
+        <message>
+            <source>answer: OK</source>
+            <translation>回應：正常</translation>
+        </message>
+        <message>
+            <source>answer: OK, %1 data chars &quot;%2&quot;</source>
+            <translation>回應：正常，%1 個資料字元「%2」</translation>
+        </message>
+        <message>
+            <source>answer: OK, %1 data bytes: %2</source>
+            <translation>回應：正常，%1 個資料位元組：%2</translation>
+        </message>
+        <message>
+            <source>answer: no error digit</source>
+            <translation>回應：缺少錯誤碼字元</translation>
+        </message>
+        <message>
+            <source>answer: no error byte</source>
+            <translation>回應：缺少錯誤碼位元組</translation>
+        </message>
+        <message>
+            <source>answer: malformed &quot;%1&quot;</source>
+            <translation>回應：格式錯誤「%1」</translation>
+        </message>
+        <message>
+            <source>answer: echo of %1 bytes</source>
+            <translation>回應：%1 位元組的回送</translation>
+        </message>
+        <message>
+            <source>answer: error %1 (%2)</source>
+            <translation>回應：錯誤 %1（%2）</translation>
+        </message>
+        <message>
+            <source>unknown command, data &quot;%1&quot;</source>
+            <translation>未知的命令，資料「%1」</translation>
+        </message>
+        <message>
+            <source>%1 chars &quot;%2&quot;</source>
+            <translation>%1 個字元「%2」</translation>
+        </message>
+        <message>
+            <source>STOP, or answer: no error</source>
+            <translation>STOP，或回應：無錯誤</translation>
+        </message>
+        <message>
+            <source>%1 elements%2</source>
+            <translation>%1 個元件%2</translation>
+        </message>
+        <message>
+            <source>page %1</source>
+            <translation>第 %1 頁</translation>
+        </message>
+        <message>
+            <source>page %1, 64 words</source>
+            <translation>第 %1 頁，64 字組</translation>
+        </message>
+        <message>
+            <source>disable %1</source>
+            <translation>停用 %1</translation>
+        </message>
+        <message>
+            <source>enable %1</source>
+            <translation>啟用 %1</translation>
+        </message>
+        <message>
+            <source>set %1</source>
+            <translation>設為 ON %1</translation>
+        </message>
+        <message>
+            <source>reset %1</source>
+            <translation>復歸 OFF %1</translation>
+        </message>
+        <message>
+            <source>link lost</source>
+            <translation>連線中斷</translation>
+        </message>
+        <message>
+            <source>stale bytes discarded</source>
+            <translation>已捨棄殘留的位元組</translation>
+        </message>
+        <message>
+            <source>received outside an answer</source>
+            <translation>在回應之外收到</translation>
+        </message>
+        <message>
+            <source>unexpected bytes</source>
+            <translation>非預期的位元組</translation>
+        </message>
+        <message>
+            <source>no query pending</source>
+            <translation>沒有等待中的查詢</translation>
+        </message>
+        <message>
+            <source>echo of the query</source>
+            <translation>查詢的回送</translation>
+        </message>
+        <message>
+            <source>raw answer</source>
+            <translation>原始回應</translation>
+        </message>
+        <message>
+            <source>raw frame</source>
+            <translation>原始訊框</translation>
+        </message>
+        <message>
+            <source>no complete frame</source>
+            <translation>沒有完整的訊框</translation>
+        </message>
+        <message>
+            <source>more than %1 bytes: rest not read</source>
+            <translation>超過 %1 位元組：其餘未讀取</translation>
+        </message>
+        <message>
+            <source>no answer within %1 ms</source>
+            <translation>%1 ms 內沒有回應</translation>
+        </message>
+        <message>
+            <source>protocol detected: %1</source>
+            <translation>偵測到通訊協定：%1</translation>
+        </message>
+        <message>
+            <source>%1 bytes, first %2 kept</source>
+            <translation>%1 位元組，保留前 %2 個</translation>
+        </message>
+        <message>
+            <source>closing</source>
+            <translation>正在關閉</translation>
+        </message>
+        <message>
+            <source>sending %1 queued write(s) first, at most %2 ms</source>
+            <translation>先送出 %1 筆排隊中的寫入，最多 %2 ms</translation>
+        </message>
+        <message>
+            <source>closed</source>
+            <translation>已關閉</translation>
+        </message>
+        <message>
+            <source>connecting</source>
+            <translation>連線中</translation>
+        </message>
+        <message>
+            <source>connected</source>
+            <translation>已連線</translation>
+        </message>
+        <message>
+            <source>lost</source>
+            <translation>已中斷</translation>
+        </message>
+        <message>
+            <source>reconnecting</source>
+            <translation>重新連線中</translation>
+        </message>
+        <message>
+            <source>link lost: %1</source>
+            <translation>連線中斷：%1</translation>
+        </message>
+        <message>
+            <source>%1; next attempt in %2 s</source>
+            <translation>%1；%2 秒後重新連線</translation>
+        </message>
+        <message>
+            <source>the session was closed</source>
+            <translation>工作階段已關閉</translation>
+        </message>
+        <message>
+            <source>the session was closed after waiting %1 ms for queued writes</source>
+            <translation>等候排隊中的寫入 %1 ms 後，工作階段已關閉</translation>
+        </message>
+        <message>
+            <source>%1 does not take data</source>
+            <translation>%1 不接受資料</translation>
+        </message>
+        <message>
+            <source>no connection to %1 within %2 ms</source>
+            <translation>%2 ms 內無法連線到 %1</translation>
+        </message>
+        <message>
+            <source>%1 closed the connection</source>
+            <translation>%1 已關閉連線</translation>
+        </message>
+        <message>
+            <source>cannot open %1: %2</source>
+            <translation>無法開啟 %1：%2</translation>
+        </message>
+        <message>
+            <source>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</source>
+            <translation>通訊協定自動偵測：站號 %1 對 FACON 與二進位協定皆無回應（%2）</translation>
+        </message>
+        <message>
+            <source>No answer from station %1 within %2 ms (attempt %3 of %4).</source>
+            <translation>站號 %1 在 %2 ms 內沒有回應（第 %3 次，共 %4 次）。</translation>
+        </message>
+        <message>
+            <source>No answer within %1 ms.</source>
+            <translation>%1 ms 內沒有回應。</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is not open.</source>
+            <translation>未送出：連線尚未開啟。</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is down (%1).</source>
+            <translation>未送出：連線中斷（%1）。</translation>
+        </message>
+        <message>
+            <source>Not sent: %1 requests are already waiting on this link (the PLC answers slower than requests arrive).</source>
+            <translation>未送出：此連線已有 %1 個請求在等待（PLC 回應的速度比請求送達慢）。</translation>
+        </message>
+        <message>
+            <source>Read-only mode: &quot;%1&quot; was not sent. Leave operator mode to change the PLC.</source>
+            <translation>唯讀模式：「%1」未送出。請離開操作員模式後再變更 PLC。</translation>
+        </message>
+        <message>
+            <source>Cancelled before it was sent.</source>
+            <translation>送出前已取消。</translation>
+        </message>
+        <message>
+            <source>Not sent: the link is closing.</source>
+            <translation>未送出：連線正在關閉。</translation>
+        </message>
+        <message>
+            <source>Not sent: %1 did not take the frame within %2 ms (%3 of %4 bytes unsent).</source>
+            <translation>未送出：%1 在 %2 ms 內未接受訊框（%4 位元組中有 %3 個未送出）。</translation>
+        </message>
+        <message>
+            <source>The answer carries fewer values than asked.</source>
+            <translation>回應的數值比要求的少。</translation>
+        </message>
+        <message>
+            <source>Could not write to %1.</source>
+            <translation>無法寫入 %1。</translation>
+        </message>
+        <message>
+            <source>not executed</source>
+            <translation>未執行</translation>
+        </message>
+        <message>
+            <source>Empty address: type an element such as R12 or X0.</source>
+            <translation>位址空白：請輸入元件，例如 R12 或 X0。</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: it must start with an element type such as R, X or DWM.</source>
+            <translation>無效的位址「%1」：必須以元件類型開頭，例如 R、X 或 DWM。</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: unknown element type &quot;%2&quot; (known: %3).</source>
+            <translation>無效的位址「%1」：未知的元件類型「%2」（可用：%3）。</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: the element number is missing (e.g. %2).</source>
+            <translation>無效的位址「%1」：缺少元件編號（例如 %2）。</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: &quot;%2&quot; is not a decimal element number.</source>
+            <translation>無效的位址「%1」：「%2」不是十進位的元件編號。</translation>
+        </message>
+        <message>
+            <source>Invalid address &quot;%1&quot;: element number too large.</source>
+            <translation>無效的位址「%1」：元件編號太大。</translation>
+        </message>
+        <message>
+            <source>Address %1 is out of range: %2 numbers go from 0 to %3.</source>
+            <translation>位址 %1 超出範圍：%2 的編號範圍是 0 到 %3。</translation>
+        </message>
+        <message>
+            <source>Address %1 is not aligned: %2 must start at a multiple of %3 (e.g. %4).</source>
+            <translation>位址 %1 未對齊：%2 必須從 %3 的倍數開始（例如 %4）。</translation>
+        </message>
+        <message>
+            <source>%1 elements from %2 run past %3, the last %4.</source>
+            <translation>從 %2 起的 %1 個元件超出 %3（最後一個 %4 元件）。</translation>
+        </message>
+        <message>
+            <source>Enter the PLC&apos;s IP address or host name.</source>
+            <translation>請輸入 PLC 的 IP 位址或主機名稱。</translation>
+        </message>
+        <message>
+            <source>Port 0 is not usable; FATEK Ethernet modules usually listen on 500.</source>
+            <translation>連接埠 0 無法使用；FATEK 乙太網路模組通常使用 500。</translation>
+        </message>
+        <message>
+            <source>Choose a serial port.</source>
+            <translation>請選擇串列埠。</translation>
+        </message>
+        <message>
+            <source>Baud rate %1 is out of range (1200 to 921600).</source>
+            <translation>鮑率 %1 超出範圍（1200 到 921600）。</translation>
+        </message>
+        <message>
+            <source>Data bits must be 7 or 8, not %1.</source>
+            <translation>資料位元必須是 7 或 8，而非 %1。</translation>
+        </message>
+        <message>
+            <source>Stop bits must be 1 or 2, not %1.</source>
+            <translation>停止位元必須是 1 或 2，而非 %1。</translation>
+        </message>
+        <message>
+            <source>Timeout %1 ms is out of range (1 to 60000 ms).</source>
+            <translation>逾時 %1 ms 超出範圍（1 到 60000 ms）。</translation>
+        </message>
+        <message>
+            <source>Retries %1 is out of range (0 to 10).</source>
+            <translation>重試次數 %1 超出範圍（0 到 10）。</translation>
+        </message>
+        <message>
+            <source>Inter-frame silence %1 ms is out of range (0 to 1000 ms).</source>
+            <translation>訊框間隔 %1 ms 超出範圍（0 到 1000 ms）。</translation>
+        </message>
+        <message>
+            <source>Connect timeout must be at least 1 ms.</source>
+            <translation>連線逾時至少必須為 1 ms。</translation>
+        </message>
+        <message>
+            <source>Reconnect delays must be positive, the maximum not below the minimum.</source>
+            <translation>重新連線延遲必須為正數，且最大值不得小於最小值。</translation>
+        </message>
+        <message>
+            <source>Incomplete range &quot;%1&quot;: write it as first..last, e.g. R100..R163.</source>
+            <translation>範圍「%1」不完整：請寫成 起點..終點，例如 R100..R163。</translation>
+        </message>
+        <message>
+            <source>Range &quot;%1&quot; mixes %2 and %3: both ends must be the same element type.</source>
+            <translation>範圍「%1」混用了 %2 與 %3：兩端必須是相同的元件類型。</translation>
+        </message>
+        <message>
+            <source>Range &quot;%1&quot; runs backwards: write the lower address first (%2).</source>
+            <translation>範圍「%1」的方向相反：請先寫較小的位址（%2）。</translation>
+        </message>
+        <message>
+            <source>Range &quot;%1&quot; does not end on a whole element: %2 elements are %3 apart (%4, %5, ...).</source>
+            <translation>範圍「%1」的結束點不在完整的元件上：%2 元件彼此相隔 %3（%4、%5、...）。</translation>
+        </message>
+        <message>
+            <source>Range &quot;%1&quot; has %2 elements; at most %3 fit in one range.</source>
+            <translation>範圍「%1」有 %2 個元件；一個範圍最多 %3 個。</translation>
+        </message>
+        <message>
+            <source>No range given; write for example X0-255, Y0-255.</source>
+            <translation>未指定範圍；例如請輸入 X0-255, Y0-255。</translation>
+        </message>
+        <message>
+            <source>“%1” is not a hex digit; type bytes like 01 46 03 52 00 0C.</source>
+            <translation>「%1」不是十六進位數字；請以 01 46 03 52 00 0C 的形式輸入位元組。</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame&apos;s bytes in hex.</source>
+            <translation>沒有可送出的內容：請以十六進位輸入訊框的位元組。</translation>
+        </message>
+        <message>
+            <source>Odd number of hex digits: each byte needs two (0C, not C).</source>
+            <translation>十六進位數字個數為奇數：每個位元組需要兩位數（0C，而非 C）。</translation>
+        </message>
+        <message>
+            <source>Only printable ASCII can be typed; write control characters as &lt;STX&gt;, &lt;ETX&gt; or &lt;0D&gt;.</source>
+            <translation>只能輸入可列印的 ASCII 字元；控制字元請寫成 &lt;STX&gt;、&lt;ETX&gt; 或 &lt;0D&gt;。</translation>
+        </message>
+        <message>
+            <source>Nothing to send: type the frame.</source>
+            <translation>沒有可送出的內容：請輸入訊框。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a BCD number (digits 0-9 only)</source>
+            <translation>「%1」不是 BCD 數值（只能使用數字 0-9）</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a hexadecimal number</source>
+            <translation>「%1」不是十六進位數值</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a binary number (only 0 and 1)</source>
+            <translation>「%1」不是二進位數值（只能使用 0 與 1）</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a number</source>
+            <translation>「%1」不是數值</translation>
+        </message>
+        <message>
+            <source>BCD values cannot be negative (&quot;%1&quot;)</source>
+            <translation>BCD 數值不能為負數（「%1」）</translation>
+        </message>
+        <message>
+            <source>%1 does not fit %2 as BCD (0..%3)</source>
+            <translation>%1 超出%2的 BCD 範圍（0..%3）</translation>
+        </message>
+        <message>
+            <source>%1 does not fit %2 (%3)</source>
+            <translation>%1 超出%2的範圍（%3）</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a bit value: type ON, OFF, 1 or 0</source>
+            <translation>「%1」不是位元值：請輸入 ON、OFF、1 或 0</translation>
+        </message>
+        <message>
+            <source>%1 does not fit a 32-bit float (largest about ±%2)</source>
+            <translation>%1 超出 32 位元浮點數的範圍（最大約 ±%2）</translation>
+        </message>
+        <message>
+            <source>%1 does not fit a 64-bit double (largest about ±%2)</source>
+            <translation>%1 超出 64 位元倍精度浮點數的範圍（最大約 ±%2）</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is too long: %2 holds %3 ASCII characters</source>
+            <translation>「%1」太長：%2最多容納 %3 個 ASCII 字元</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; contains a character that is not plain printable ASCII (letters, digits, punctuation and space only)</source>
+            <translation>「%1」含有不是可列印 ASCII 的字元（只能使用字母、數字、標點符號與空白）</translation>
+        </message>
+        <message>
+            <source>a bit</source>
+            <translation>單一位元</translation>
+        </message>
+        <message>
+            <source>a 16-bit register</source>
+            <translation>16 位元暫存器</translation>
+        </message>
+        <message>
+            <source>a %1-bit value</source>
+            <translation>%1 位元數值</translation>
+        </message>
+        <message>
+            <source>A %1-bit value cannot be written (only 1, 16, 32 or 64 bits).</source>
+            <translation>無法寫入 %1 位元的數值（只支援 1、16、32 或 64 位元）。</translation>
+        </message>
+        <message>
+            <source>No value typed: type ON, OFF, 1 or 0.</source>
+            <translation>未輸入數值：請輸入 ON、OFF、1 或 0。</translation>
+        </message>
+        <message>
+            <source>No value typed: type a number such as 12, -5, 0x1A or 1Ah.</source>
+            <translation>未輸入數值：請輸入數字，例如 12、-5、0x1A 或 1Ah。</translation>
+        </message>
+        <message>
+            <source>%1: %2 elements are not available in the FACON protocol (binary protocol only).</source>
+            <translation>%1：FACON 通訊協定不支援 %2 元件（僅限二進位協定）。</translation>
+        </message>
+        <message>
+            <source>Value %1 for %2: a discrete takes 0 (OFF) or 1 (ON).</source>
+            <translation>%2 的數值 %1：離散點只能是 0（OFF）或 1（ON）。</translation>
+        </message>
+        <message>
+            <source>Value %1 for %2 does not fit a 16-bit register (0..65535).</source>
+            <translation>%2 的數值 %1 超出 16 位元暫存器的範圍（0..65535）。</translation>
+        </message>
+        <message>
+            <source>%1 needs a discrete (X Y M S T C), not %2.</source>
+            <translation>%1 需要離散點（X Y M S T C），而非 %2。</translation>
+        </message>
+        <message>
+            <source>%1: %2 points requested; one request carries 1 to 256 points.</source>
+            <translation>%1：要求 %2 點；一個請求可包含 1 到 256 點。</translation>
+        </message>
+        <message>
+            <source>%1 needs a register (R, D, WY, DR, ...), not %2; use discretes commands for single points.</source>
+            <translation>%1 需要暫存器（R、D、WY、DR 等），而非 %2；單一點請使用離散點命令。</translation>
+        </message>
+        <message>
+            <source>%1: %2 16-bit registers requested; one request carries 1 to %3.</source>
+            <translation>%1：要求 %2 個 16 位元暫存器；一個請求可包含 1 到 %3 個。</translation>
+        </message>
+        <message>
+            <source>%1: %2 32-bit registers requested; one request carries 1 to %3 (32-bit registers count as two words).</source>
+            <translation>%1：要求 %2 個 32 位元暫存器；一個請求可包含 1 到 %3 個（32 位元暫存器算兩個字組）。</translation>
+        </message>
+        <message>
+            <source>%1: no element given.</source>
+            <translation>%1：未指定元件。</translation>
+        </message>
+        <message>
+            <source>%1: %2 elements; at most %3 words fit in one request.</source>
+            <translation>%1：%2 個元件；一個請求最多 %3 個字組。</translation>
+        </message>
+        <message>
+            <source>%1: %2 words requested; at most %3 fit in one request (a discrete or 16-bit element counts 1, a 32-bit element 2).</source>
+            <translation>%1：要求 %2 個字組；一個請求最多 %3 個（離散點或 16 位元元件算 1 個，32 位元元件算 2 個）。</translation>
+        </message>
+        <message>
+            <source>Station %1 is not valid: stations are 1 to 254 (0 = broadcast).</source>
+            <translation>站號 %1 無效：站號範圍是 1 到 254（0 = 廣播）。</translation>
+        </message>
+        <message>
+            <source>Unknown discrete operation %1.</source>
+            <translation>未知的離散點操作 %1。</translation>
+        </message>
+        <message>
+            <source>Mixed write: %1 addresses but %2 values.</source>
+            <translation>混合寫入：%1 個位址，卻有 %2 個數值。</translation>
+        </message>
+        <message>
+            <source>Loopback test data is %1 bytes; at most 256 fit in one request.</source>
+            <translation>迴路測試資料有 %1 位元組；一個請求最多 256 位元組。</translation>
+        </message>
+        <message>
+            <source>FACON loopback data must be printable ASCII characters.</source>
+            <translation>FACON 迴路測試資料必須是可列印的 ASCII 字元。</translation>
+        </message>
+        <message>
+            <source>Program pages (4F/50) exist only in the FACON protocol.</source>
+            <translation>程式頁（4F/50）只存在於 FACON 通訊協定。</translation>
+        </message>
+        <message>
+            <source>A program page holds exactly 64 words; %1 given.</source>
+            <translation>一個程式頁固定為 64 個字組；目前有 %1 個。</translation>
+        </message>
+        <message>
+            <source>Program words are 16-bit (0..65535).</source>
+            <translation>程式字組為 16 位元（0..65535）。</translation>
+        </message>
+        <message>
+            <source>Unknown command code %1.</source>
+            <translation>未知的命令碼 %1。</translation>
+        </message>
+        <message>
+            <source>%1: station 0 is broadcast; PLCs do not answer it, so nothing can be read there.</source>
+            <translation>%1：站號 0 為廣播，PLC 不會回應，因此無法讀取。</translation>
+        </message>
+        <message>
+            <source>table %1</source>
+            <translation>表格 %1</translation>
+        </message>
+        <message>
+            <source>table %1, item %2</source>
+            <translation>表格 %1，項目 %2</translation>
+        </message>
+        <message>
+            <source>line %1</source>
+            <translation>第 %1 行</translation>
+        </message>
+        <message>
+            <source>Not saved</source>
+            <translation>未儲存</translation>
+        </message>
+        <message>
+            <source>%1 items are more than one table holds (at most %2)</source>
+            <translation>%1 個項目超過一個表格可容納的數量（最多 %2 個）</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::UiText</name>
+        <message>
             <source>bit</source>
             <translation>位元</translation>
         </message>
@@ -496,27 +915,6 @@
         <message>
             <source>double</source>
             <translation>倍精度浮點數</translation>
-        </message>
-        <message>
-            <source>auto-detect</source>
-            <translation>自動偵測</translation>
-        </message>
-        <message>
-            <source>%1, %2</source>
-            <extracomment>Link settings: medium (TCP 10.0.0.5:500, COM3 9600 7E1) and protocol.</extracomment>
-            <translation>%1，%2</translation>
-        </message>
-        <message>
-            <source>(no port)</source>
-            <translation>（無連接埠）</translation>
-        </message>
-        <message>
-            <source>PLC error %1: %2</source>
-            <translation>PLC 錯誤 %1：%2</translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1：%2</translation>
         </message>
         <message>
             <source>input</source>
@@ -623,200 +1021,17 @@
             <translation>檔案暫存器對</translation>
         </message>
         <message>
-            <source>read brief status</source>
-            <translation>讀取簡要狀態</translation>
+            <source>auto-detect</source>
+            <translation>自動偵測</translation>
         </message>
         <message>
-            <source>RUN/STOP control</source>
-            <translation>RUN/STOP 控制</translation>
+            <source>%1, %2</source>
+            <extracomment>Link settings: medium (TCP 10.0.0.5:500, COM3 9600 7E1) and protocol.</extracomment>
+            <translation>%1，%2</translation>
         </message>
         <message>
-            <source>single discrete control</source>
-            <translation>單一離散點控制</translation>
-        </message>
-        <message>
-            <source>read enable/disable flags</source>
-            <translation>讀取啟用/停用旗標</translation>
-        </message>
-        <message>
-            <source>read consecutive discretes</source>
-            <translation>讀取連續離散點</translation>
-        </message>
-        <message>
-            <source>write consecutive discretes</source>
-            <translation>寫入連續離散點</translation>
-        </message>
-        <message>
-            <source>read consecutive registers</source>
-            <translation>讀取連續暫存器</translation>
-        </message>
-        <message>
-            <source>write consecutive registers</source>
-            <translation>寫入連續暫存器</translation>
-        </message>
-        <message>
-            <source>mixed read</source>
-            <translation>混合讀取</translation>
-        </message>
-        <message>
-            <source>mixed write</source>
-            <translation>混合寫入</translation>
-        </message>
-        <message>
-            <source>loopback test</source>
-            <translation>迴路測試</translation>
-        </message>
-        <message>
-            <source>read program page</source>
-            <translation>讀取程式頁</translation>
-        </message>
-        <message>
-            <source>write program page</source>
-            <translation>寫入程式頁</translation>
-        </message>
-        <message>
-            <source>read detail status</source>
-            <translation>讀取詳細狀態</translation>
-        </message>
-        <message>
-            <source>invalid FACON frame (%1 bytes): %2</source>
-            <translation>無效的 FACON 訊框（%1 位元組）：%2</translation>
-        </message>
-        <message>
-            <source>bad binary frame (%1 bytes): %2</source>
-            <translation>錯誤的二進位訊框（%1 位元組）：%2</translation>
-        </message>
-        <message>
-            <source>answer: OK</source>
-            <translation>回應：正常</translation>
-        </message>
-        <message>
-            <source>answer: OK, %1 data chars "%2"</source>
-            <translation>回應：正常，%1 個資料字元「%2」</translation>
-        </message>
-        <message>
-            <source>answer: OK, %1 data bytes: %2</source>
-            <translation>回應：正常，%1 個資料位元組：%2</translation>
-        </message>
-        <message>
-            <source>answer: no error digit</source>
-            <translation>回應：缺少錯誤碼字元</translation>
-        </message>
-        <message>
-            <source>answer: no error byte</source>
-            <translation>回應：缺少錯誤碼位元組</translation>
-        </message>
-        <message>
-            <source>answer: malformed "%1"</source>
-            <translation>回應：格式錯誤「%1」</translation>
-        </message>
-        <message>
-            <source>answer: echo of %1 bytes</source>
-            <translation>回應：%1 位元組的回送</translation>
-        </message>
-        <message>
-            <source>unknown command, data "%1"</source>
-            <translation>未知的命令，資料「%1」</translation>
-        </message>
-        <message>
-            <source>%1 chars "%2"</source>
-            <translation>%1 個字元「%2」</translation>
-        </message>
-        <message>
-            <source>STOP, or answer: no error</source>
-            <translation>STOP，或回應：無錯誤</translation>
-        </message>
-        <message>
-            <source>link lost</source>
-            <translation>連線中斷</translation>
-        </message>
-        <message>
-            <source>stale bytes discarded</source>
-            <translation>已捨棄殘留的位元組</translation>
-        </message>
-        <message>
-            <source>received outside an answer</source>
-            <translation>在回應之外收到</translation>
-        </message>
-        <message>
-            <source>unexpected bytes</source>
-            <translation>非預期的位元組</translation>
-        </message>
-        <message>
-            <source>no query pending</source>
-            <translation>沒有等待中的查詢</translation>
-        </message>
-        <message>
-            <source>echo of the query</source>
-            <translation>查詢的回送</translation>
-        </message>
-        <message>
-            <source>raw answer</source>
-            <translation>原始回應</translation>
-        </message>
-        <message>
-            <source>raw frame</source>
-            <translation>原始訊框</translation>
-        </message>
-        <message>
-            <source>no complete frame</source>
-            <translation>沒有完整的訊框</translation>
-        </message>
-        <message>
-            <source>more than %1 bytes: rest not read</source>
-            <translation>超過 %1 位元組：其餘未讀取</translation>
-        </message>
-        <message>
-            <source>no answer within %1 ms</source>
-            <translation>%1 ms 內沒有回應</translation>
-        </message>
-        <message>
-            <source>protocol detected: %1</source>
-            <translation>偵測到通訊協定：%1</translation>
-        </message>
-        <message>
-            <source>%1 bytes, first %2 kept</source>
-            <translation>%1 位元組，保留前 %2 個</translation>
-        </message>
-        <message>
-            <source>answer: error %1 (%2)</source>
-            <translation>回應：錯誤 %1（%2）</translation>
-        </message>
-        <message>
-            <source>%1 %2</source>
-            <translation>%1 %2</translation>
-        </message>
-        <message>
-            <source>station %1, %2 %3</source>
-            <translation>站號 %1，%2 %3</translation>
-        </message>
-        <message>
-            <source>%1 elements%2</source>
-            <translation>%1 個元件%2</translation>
-        </message>
-        <message>
-            <source>page %1</source>
-            <translation>第 %1 頁</translation>
-        </message>
-        <message>
-            <source>page %1, 64 words</source>
-            <translation>第 %1 頁，64 字組</translation>
-        </message>
-        <message>
-            <source>disable %1</source>
-            <translation>停用 %1</translation>
-        </message>
-        <message>
-            <source>enable %1</source>
-            <translation>啟用 %1</translation>
-        </message>
-        <message>
-            <source>set %1</source>
-            <translation>設為 ON %1</translation>
-        </message>
-        <message>
-            <source>reset %1</source>
-            <translation>復歸 OFF %1</translation>
+            <source>(no port)</source>
+            <translation>（無連接埠）</translation>
         </message>
     </context>
     <context>
@@ -1338,14 +1553,6 @@
             </translation>
         </message>
         <message>
-            <source>FATEK Studio — Operator mode (read-only)</source>
-            <translation>FATEK Studio — 操作員模式（唯讀）</translation>
-        </message>
-        <message>
-            <source>FATEK Studio</source>
-            <translation>FATEK Studio</translation>
-        </message>
-        <message>
             <source>Connections</source>
             <translation>連線</translation>
         </message>
@@ -1436,10 +1643,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>正在連線到 %1（%2）…</translation>
         </message>
         <message>
-            <source>%1 — %2</source>
-            <translation>%1 — %2</translation>
-        </message>
-        <message>
             <source>Watch %1</source>
             <translation>監看表 %1</translation>
         </message>
@@ -1462,10 +1665,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>Starting the demo simulator…</source>
             <translation>正在啟動示範模擬器…</translation>
-        </message>
-        <message>
-            <source>%1: %2 · %3 req/s · %4 errors · RTT %5 ms</source>
-            <translation>%1：%2 · %3 請求/秒 · %4 個錯誤 · RTT %5 ms</translation>
         </message>
         <message numerus="yes">
             <source>%n saved connection(s) could not be read (kept unchanged)</source>
@@ -1888,10 +2087,6 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>whole frame, e.g. &lt;STX&gt;0140C7&lt;ETX&gt;</source>
             <translation>完整訊框，例如 &lt;STX&gt;0140C7&lt;ETX&gt;</translation>
-        </message>
-        <message>
-            <source>command %1 to station %2</source>
-            <translation>送往站號 %2 的命令 %1</translation>
         </message>
         <message>
             <source>an unrecognized frame</source>

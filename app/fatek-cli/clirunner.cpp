@@ -92,10 +92,9 @@ void CliRunner::onLinkState(LinkState state, const Message &reason)
         // Requests in flight finish with LinkError and report it themselves; polling and a link
         // that never came up have nobody else to tell.
         if (!m_dispatched || m_monitoring || m_requests.pendingCount() == 0) {
-            m_out.error(
-                QStringLiteral("No connection to %1: %2")
-                    .arg(m_options.link.toString(), englishText(reason)),
-                ExitCode::Link);
+            m_out.error(QStringLiteral("No connection to %1: %2")
+                            .arg(m_options.link.toString(), englishText(reason)),
+                        ExitCode::Link);
             finish(ExitCode::Link);
         }
     }

@@ -45,9 +45,9 @@ Result<Address> Address::parse(std::string_view text)
                 shown, symbol, "X Y M S T C, WX..WC, RT RC R D F, DWX..DWC, DRT DRC DR DD DF"));
     }
     if (digits.empty()) {
-        return makeError(ErrorKind::InvalidAddress,
-                         msg<MsgId::AddressNoNumber>(
-                             shown, std::string(elementInfo(*type).symbol) + "0"));
+        return makeError(
+            ErrorKind::InvalidAddress,
+            msg<MsgId::AddressNoNumber>(shown, std::string(elementInfo(*type).symbol) + "0"));
     }
     std::uint64_t number = 0;
     for (char c : digits) {
@@ -93,10 +93,9 @@ Status validateSpan(const Address &start, std::uint32_t count)
     const std::uint64_t last = std::uint64_t(start.number) + std::uint64_t(count - 1) * i.step;
     if (last > i.maxNumber) {
         return makeError(ErrorKind::InvalidAddress,
-                         msg<MsgId::AddressRunPast>(count, start.toString(),
-                                                    std::string(i.symbol)
-                                                        + std::to_string(i.maxNumber),
-                                                    i.symbol));
+                         msg<MsgId::AddressRunPast>(
+                             count, start.toString(),
+                             std::string(i.symbol) + std::to_string(i.maxNumber), i.symbol));
     }
     return Ok{};
 }

@@ -130,8 +130,8 @@ Result<AddressRange> AddressRange::parse(std::string_view text)
     const std::uint32_t step = start->info().step;
     const std::uint32_t distance = end->number - start->number;
     if (distance % step != 0) {
-        return rangeError(msg<MsgId::RangeNotWhole>(shown, symbol, step, first,
-                                                    start->advanced(1).toString()));
+        return rangeError(
+            msg<MsgId::RangeNotWhole>(shown, symbol, step, first, start->advanced(1).toString()));
     }
     return AddressRange{*start, distance / step + 1};
 }

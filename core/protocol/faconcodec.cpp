@@ -60,10 +60,9 @@ Message queryDetails(const Request &r)
     }
     case Command::Loopback:
         return msg<MsgId::FrameChars>(
-            r.data.size(),
-            printable(
-                std::string_view(reinterpret_cast<const char *>(r.data.data()), r.data.size()),
-                32));
+            r.data.size(), printable(std::string_view(reinterpret_cast<const char *>(r.data.data()),
+                                                      r.data.size()),
+                                     32));
     case Command::ReadProgram: return msg<MsgId::FramePage>(r.page);
     case Command::WriteProgram: return msg<MsgId::FramePageWords>(r.page);
     }

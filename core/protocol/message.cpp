@@ -31,7 +31,8 @@ static_assert(std::size(entries) == messageIdCount);
 
 bool Message::empty() const
 {
-    return id == MsgId::Text && (args.empty() || (!args.front().message && args.front().text.empty()));
+    return id == MsgId::Text
+           && (args.empty() || (!args.front().message && args.front().text.empty()));
 }
 
 const char *messageTemplate(MsgId id)
@@ -82,8 +83,12 @@ std::string english(const Message &message)
 
 std::string lowerFirst(std::string text)
 {
-    const auto isUpper = [](char c) { return std::isupper(static_cast<unsigned char>(c)) != 0; };
-    const auto isLower = [](char c) { return std::islower(static_cast<unsigned char>(c)) != 0; };
+    const auto isUpper = [](char c) {
+        return std::isupper(static_cast<unsigned char>(c)) != 0;
+    };
+    const auto isLower = [](char c) {
+        return std::islower(static_cast<unsigned char>(c)) != 0;
+    };
     if (text.size() >= 2 && isUpper(text[0]) && isLower(text[1]))
         text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
     return text;

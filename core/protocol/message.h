@@ -54,8 +54,9 @@ struct MessageArg
     MessageArg(const char *value)
         : text(value)
     {}
-    template<typename T, typename = std::enable_if_t<std::is_integral_v<T> && !std::is_same_v<T, bool>
-                                                     && !std::is_same_v<T, char>>>
+    template<typename T,
+             typename = std::enable_if_t<
+                 std::is_integral_v<T> && !std::is_same_v<T, bool> && !std::is_same_v<T, char>>>
     MessageArg(T value)
         : text(std::to_string(value))
     {}

@@ -37,8 +37,7 @@ FATEK_MSG(PlcErrorAbout, 3, QT_TRANSLATE_NOOP("Fatek::Message", "PLC error %1: %
 // Protocol command names.
 FATEK_MSG(CommandBriefStatus, 0, QT_TRANSLATE_NOOP("Fatek::Message", "read brief status"))
 FATEK_MSG(CommandRunStop, 0, QT_TRANSLATE_NOOP("Fatek::Message", "RUN/STOP control"))
-FATEK_MSG(CommandDiscreteControl, 0,
-          QT_TRANSLATE_NOOP("Fatek::Message", "single discrete control"))
+FATEK_MSG(CommandDiscreteControl, 0, QT_TRANSLATE_NOOP("Fatek::Message", "single discrete control"))
 FATEK_MSG(CommandReadEnableFlags, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "read enable/disable flags"))
 FATEK_MSG(CommandReadDiscretes, 0,
@@ -146,8 +145,7 @@ FATEK_MSG(SessionReadOnly, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Read-only mode: \"%1\" was not sent. Leave operator mode to change "
                             "the PLC."))
-FATEK_MSG(SessionCancelled, 0,
-          QT_TRANSLATE_NOOP("Fatek::Message", "Cancelled before it was sent."))
+FATEK_MSG(SessionCancelled, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Cancelled before it was sent."))
 FATEK_MSG(SessionLinkClosing, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "Not sent: the link is closing."))
 FATEK_MSG(SessionFrameNotTaken, 4,
@@ -176,8 +174,7 @@ FATEK_MSG(AddressNotDecimal, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Invalid address \"%1\": \"%2\" is not a decimal element number."))
 FATEK_MSG(AddressNumberTooLarge, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Invalid address \"%1\": element number too large."))
+          QT_TRANSLATE_NOOP("Fatek::Message", "Invalid address \"%1\": element number too large."))
 FATEK_MSG(AddressOutOfRange, 3,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Address %1 is out of range: %2 numbers go from 0 to %3."))
@@ -237,9 +234,10 @@ FATEK_MSG(RangeNoneGiven, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "No range given; write for example X0-255, Y0-255."))
 
 // Bytes typed in the raw console (FrameText).
-FATEK_MSG(FrameTextNotHex, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "\u201c%1\u201d is not a hex digit; type bytes like 01 46 03 52 00 0C."))
+FATEK_MSG(
+    FrameTextNotHex, 1,
+    QT_TRANSLATE_NOOP("Fatek::Message",
+                      "\u201c%1\u201d is not a hex digit; type bytes like 01 46 03 52 00 0C."))
 FATEK_MSG(FrameTextNothingHex, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "Nothing to send: type the frame's bytes in hex."))
 FATEK_MSG(FrameTextOddDigits, 0,
@@ -249,7 +247,8 @@ FATEK_MSG(FrameTextNotAscii, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Only printable ASCII can be typed; write control characters as "
                             "<STX>, <ETX> or <0D>."))
-FATEK_MSG(FrameTextNothing, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Nothing to send: type the frame."))
+FATEK_MSG(FrameTextNothing, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Nothing to send: type the frame."))
 
 // Values typed for a display format (ValueFormat::parse).
 FATEK_MSG(ValueNotBcd, 1,
@@ -261,7 +260,8 @@ FATEK_MSG(ValueNotNumber, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not 
 FATEK_MSG(ValueBcdNegative, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "BCD values cannot be negative (\"%1\")"))
 // %2: a width message (ValueWidth...).
-FATEK_MSG(ValueBcdTooLarge, 3, QT_TRANSLATE_NOOP("Fatek::Message", "%1 does not fit %2 as BCD (0..%3)"))
+FATEK_MSG(ValueBcdTooLarge, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 does not fit %2 as BCD (0..%3)"))
 FATEK_MSG(ValueTooLarge, 3, QT_TRANSLATE_NOOP("Fatek::Message", "%1 does not fit %2 (%3)"))
 FATEK_MSG(ValueNotBit, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a bit value: type ON, OFF, 1 or 0"))

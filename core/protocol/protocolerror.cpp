@@ -36,10 +36,10 @@ std::string plcCodeDigits(int code)
 
 ProtocolError makePlcError(int code, std::string_view context)
 {
-    Message message = context.empty()
-                          ? msg<MsgId::PlcError>(plcCodeDigits(code), plcCodeMessage(code))
-                          : msg<MsgId::PlcErrorAbout>(plcCodeDigits(code), plcCodeMessage(code),
-                                                      context);
+    Message message
+        = context.empty()
+              ? msg<MsgId::PlcError>(plcCodeDigits(code), plcCodeMessage(code))
+              : msg<MsgId::PlcErrorAbout>(plcCodeDigits(code), plcCodeMessage(code), context);
     return ProtocolError{ErrorKind::PlcError, std::move(message), code};
 }
 

@@ -364,11 +364,10 @@ Status checkRegisterSpan(const Request &r, std::uint32_t n, Protocol protocol)
     const std::uint32_t maxElements
         = Limits::maxRegisterWords / static_cast<std::uint32_t>(r.start.words());
     if (n < 1 || n > maxElements) {
-        return limit(isDoubleWord(r.start.type)
-                         ? msg<MsgId::RequestTooManyRegisters32>(commandMessage(r.command), n,
-                                                                 maxElements)
-                         : msg<MsgId::RequestTooManyRegisters16>(commandMessage(r.command), n,
-                                                                 maxElements));
+        return limit(
+            isDoubleWord(r.start.type)
+                ? msg<MsgId::RequestTooManyRegisters32>(commandMessage(r.command), n, maxElements)
+                : msg<MsgId::RequestTooManyRegisters16>(commandMessage(r.command), n, maxElements));
     }
     if (Status s = checkProtocolSupport(r.start, protocol); !s)
         return s;

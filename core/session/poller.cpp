@@ -210,9 +210,8 @@ void Poller::finishCycle(Group &group)
     QList<WatchValue> batch;
     batch.reserve(static_cast<qsizetype>(group.items.size()));
     for (const UnplannableItem &item : group.plan.unplannable)
-        group.cycleValues.insert(item.itemId,
-                                 {item.itemId, 0, QDateTime::currentDateTimeUtc(),
-                                  ValueQuality::Error, item.reason});
+        group.cycleValues.insert(item.itemId, {item.itemId, 0, QDateTime::currentDateTimeUtc(),
+                                               ValueQuality::Error, item.reason});
     for (const WatchItem &item : group.items) {
         auto it = group.cycleValues.constFind(item.id);
         if (it != group.cycleValues.constEnd())

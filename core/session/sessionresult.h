@@ -39,8 +39,8 @@ public:
     void setAttempts(int attempts) { m_attempts = attempts; }
 
 private:
-    Result<Response> m_result = ProtocolError{ErrorKind::Cancelled,
-                                                 msg<MsgId::SessionNotExecuted>(), 0};
+    Result<Response> m_result
+        = ProtocolError{ErrorKind::Cancelled, msg<MsgId::SessionNotExecuted>(), 0};
     QByteArray m_rawAnswer;
     bool m_raw = false;
     int m_attempts = 0;

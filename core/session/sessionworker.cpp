@@ -174,8 +174,9 @@ void SessionWorker::cancelReadsForClose()
         queue->swap(kept);
     }
     for (auto &job : cancelled)
-        deliver(job, SessionResult::fromError(
-                         makeError(ErrorKind::Cancelled, msg<MsgId::LinkSessionClosed>()), {}, job.raw));
+        deliver(job,
+                SessionResult::fromError(
+                    makeError(ErrorKind::Cancelled, msg<MsgId::LinkSessionClosed>()), {}, job.raw));
     // A read on the wire holds the line only if a write must wait for its answer.
     if (m_current && !writesQueued && !isWriteJob(*m_current) && !m_current->probe
         && !m_awaitingSent)

@@ -57,10 +57,10 @@ void SessionWorker::enqueue(SessionJob job)
     // A caller that submits faster than the link answers must not grow memory without end. The
     // poll queue holds at most one cycle per group and is not capped here.
     if (job.priority != Priority::Poll && queue.size() >= maxQueuedRequests) {
-        deliver(job, SessionResult::fromError(
-                         makeError(ErrorKind::LimitExceeded,
-                                   msg<MsgId::SessionQueueFull>(maxQueuedRequests)),
-                         {}, job.raw));
+        deliver(job,
+                SessionResult::fromError(makeError(ErrorKind::LimitExceeded,
+                                                   msg<MsgId::SessionQueueFull>(maxQueuedRequests)),
+                                         {}, job.raw));
         return;
     }
     if (!job.pendingWrite && isWriteJob(job)) {
@@ -197,11 +197,10 @@ bool SessionWorker::prepare(SessionJob &job)
                     (*next)(Protocol::Binary);
                 } else {
                     const ErrorKind kind = linkDown ? result.errorKind() : ErrorKind::Timeout;
-                    deliver(*waiting,
-                            SessionResult::fromError(
-                                makeError(kind, msg<MsgId::LinkAutoDetectFailed>(
-                                                    station, result.errorMessage())),
-                                {}, waiting->raw));
+                    deliver(*waiting, SessionResult::fromError(
+                                          makeError(kind, msg<MsgId::LinkAutoDetectFailed>(
+                                                              station, result.errorMessage())),
+                                          {}, waiting->raw));
                 }
             };
             m_userQueue.push_front(std::move(probe));

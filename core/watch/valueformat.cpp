@@ -231,7 +231,8 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
             return valueError(msg<MsgId::ValueBcdNegative>(str(text)));
         if (overflow || magnitude > widthMask(width)) {
             return valueError(msg<MsgId::ValueBcdTooLarge>(
-                str(text), widthPhrase(width), std::string(static_cast<std::size_t>(width / 4), '9')));
+                str(text), widthPhrase(width),
+                std::string(static_cast<std::size_t>(width / 4), '9')));
         }
         return magnitude;
     }
@@ -304,8 +305,7 @@ Result<std::uint64_t> parseAscii(const QString &text, int width)
 {
     const int capacity = width / 8;
     if (text.size() > capacity) {
-        return valueError(
-            msg<MsgId::ValueAsciiTooLong>(str(text), widthPhrase(width), capacity));
+        return valueError(msg<MsgId::ValueAsciiTooLong>(str(text), widthPhrase(width), capacity));
     }
     std::uint64_t value = 0;
     for (int i = 0; i < text.size(); ++i) {

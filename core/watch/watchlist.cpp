@@ -78,9 +78,9 @@ Result<QList<Address>> expandRange(const QString &text)
         return range.error();
     // One range becomes that many watch rows: the grammar is AddressRange's, the limit ours.
     if (range->count > static_cast<std::uint32_t>(MaxRangeItems)) {
-        return makeError(ErrorKind::InvalidAddress,
-                         msg<MsgId::RangeTooMany>(text.trimmed().toStdString(), range->count,
-                                                  MaxRangeItems));
+        return makeError(
+            ErrorKind::InvalidAddress,
+            msg<MsgId::RangeTooMany>(text.trimmed().toStdString(), range->count, MaxRangeItems));
     }
     QList<Address> addresses;
     addresses.reserve(range->count);

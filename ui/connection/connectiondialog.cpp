@@ -219,8 +219,8 @@ SavedConnection ConnectionDialog::connection() const
 void ConnectionDialog::accept()
 {
     const SavedConnection c = connection();
-    QString problem = c.name.isEmpty() ? tr("Give the connection a name.")
-                                       : translated(c.settings.validate());
+    QString problem
+        = c.name.isEmpty() ? tr("Give the connection a name.") : translated(c.settings.validate());
     if (problem.isEmpty() && c.settings.kind == LinkSettings::Kind::Serial
         && c.settings.baudRate <= 0)
         problem = tr("The baud rate must be a positive number.");

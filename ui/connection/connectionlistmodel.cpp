@@ -71,7 +71,7 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         switch (index.column()) {
         case StateColumn:
             return c->linkReason().empty() ? UiText::linkState(c->linkState())
-                                             : translated(c->linkReason());
+                                           : translated(c->linkReason());
         case ErrorsColumn:
             return tr("%1 timeouts, %2 checksum errors, %3 PLC errors, %4 retries, %5 link "
                       "failures")

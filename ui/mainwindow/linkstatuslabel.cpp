@@ -38,8 +38,8 @@ void LinkStatusLabel::showConnection(const Connection *c)
                 .arg(t.answers ? tr("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–")));
     }
     setToolTip(c->linkReason().empty() ? UiText::settings(c->settings())
-                                         : UiText::settings(c->settings()) + QLatin1Char('\n')
-                                               + translated(c->linkReason()));
+                                       : UiText::settings(c->settings()) + QLatin1Char('\n')
+                                             + translated(c->linkReason()));
 }
 
 } // namespace Fatek

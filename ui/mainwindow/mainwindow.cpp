@@ -100,11 +100,11 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     connect(m_manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
         connect(c, &Connection::linkStateChanged, this,
                 [this, c](LinkState state, const Message &reason) {
-                    showStatus(reason.empty()
-                                   ? tr("%1: %2").arg(c->name(), UiText::linkState(state))
-                                   : tr("%1: %2 (%3)")
-                                         .arg(c->name(), UiText::linkState(state),
-                                              translated(reason)));
+                    showStatus(
+                        reason.empty()
+                            ? tr("%1: %2").arg(c->name(), UiText::linkState(state))
+                            : tr("%1: %2 (%3)")
+                                  .arg(c->name(), UiText::linkState(state), translated(reason)));
                 });
     });
 

@@ -150,10 +150,9 @@ void WatchListDocument::importCsvDialog()
         return;
     setLastDirectory(path);
     if (const Status s = importCsv(path); !s) {
-        QMessageBox::warning(
-            m_window, tr("Import CSV"),
-            tr("%1 cannot be imported:\n%2")
-                .arg(QFileInfo(path).fileName(), translated(s.error().message)));
+        QMessageBox::warning(m_window, tr("Import CSV"),
+                             tr("%1 cannot be imported:\n%2")
+                                 .arg(QFileInfo(path).fileName(), translated(s.error().message)));
         return;
     }
     Q_EMIT statusMessage(tr("Imported %1.").arg(QDir::toNativeSeparators(path)));

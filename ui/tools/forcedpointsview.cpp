@@ -6,10 +6,10 @@
 #include "core/protocol/plcstatus.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "uitext.h"
 #include "discretecontrolbatch.h"
 #include "discretescan.h"
 #include "toolpalette.h"
+#include "uitext.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

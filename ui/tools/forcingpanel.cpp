@@ -4,11 +4,11 @@
 
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "uitext.h"
 #include "discretecontrolbatch.h"
 #include "discretetablemodel.h"
 #include "forcedpointsview.h"
 #include "toolpalette.h"
+#include "uitext.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -228,8 +228,8 @@ void ForcingPanel::refresh()
             if (r.ok())
                 values = r.response().values;
             else
-                m_message->setMessage(
-                    tr("Could not read: %1").arg(translated(r.errorMessage())), true);
+                m_message->setMessage(tr("Could not read: %1").arg(translated(r.errorMessage())),
+                                      true);
             if (states)
                 m_model->setStates(values);
             else

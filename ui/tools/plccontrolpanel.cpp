@@ -2,9 +2,9 @@
 
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "uitext.h"
 #include "statusindicator.h"
 #include "toolpalette.h"
+#include "uitext.h"
 
 #include <QFontDatabase>
 #include <QFormLayout>
@@ -257,8 +257,7 @@ void PlcControlPanel::requestMode(bool run)
                 m_outcomeLabel, tr("%1 accepted by station %2.").arg(mode).arg(m_station), false);
         else
             ToolPalette::showMessage(
-                m_outcomeLabel, tr("%1 refused: %2").arg(mode, translated(r.errorMessage())),
-                true);
+                m_outcomeLabel, tr("%1 refused: %2").arg(mode, translated(r.errorMessage())), true);
         updateEnabled();
         refresh();
         refreshDetail(); // its STATUS1 changes too

@@ -1,11 +1,11 @@
 #include "rawconsole.h"
 
 #include "core/session/session.h"
-#include "uitext.h"
 #include "rawsendbar.h"
 #include "toolpalette.h"
 #include "trafficfilterproxy.h"
 #include "trafficlogmodel.h"
+#include "uitext.h"
 
 #include <QApplication>
 #include <QCheckBox>

@@ -5,8 +5,8 @@
 #include "core/session/qtbytes.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "uitext.h"
 #include "toolpalette.h"
+#include "uitext.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -194,8 +194,7 @@ void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
     const QString sentLine = tr("Sent    %1").arg(asciiOf(sent));
     if (!result.ok()) {
         ToolPalette::showMessage(
-            m_result, tr("%1\nFailed  %2").arg(sentLine, translated(result.errorMessage())),
-            true);
+            m_result, tr("%1\nFailed  %2").arg(sentLine, translated(result.errorMessage())), true);
         return;
     }
     ++m_answers;

@@ -2,8 +2,8 @@
 
 #include "core/protocol/frametext.h"
 #include "core/session/qtbytes.h"
-#include "uitext.h"
 #include "toolpalette.h"
+#include "uitext.h"
 
 #include <QFontDatabase>
 

@@ -158,8 +158,7 @@ void TrendLogging::startLoggingDialog()
         path += QStringLiteral(".csv");
     setLastDirectory(path);
     if (const Status s = startLogging(path); !s)
-        QMessageBox::warning(m_window, tr("Data Logging"),
-                             translated(s.error().message));
+        QMessageBox::warning(m_window, tr("Data Logging"), translated(s.error().message));
 }
 
 void TrendLogging::updateLoggingStatus()

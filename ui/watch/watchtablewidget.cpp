@@ -4,9 +4,9 @@
 #include "core/watch/itemvalues.h"
 #include "forcedmarks.h"
 #include "ui/connection/connectionmanager.h"
-#include "ui/tools/uitext.h"
 #include "ui/tools/messageline.h"
 #include "ui/tools/toolconfirmation.h"
+#include "ui/tools/uitext.h"
 #include "watchdelegate.h"
 #include "watchinput.h"
 #include "watchtablemodel.h"
@@ -234,9 +234,9 @@ void WatchTableWidget::setConnection(Connection *connection)
                     if (state == LinkState::Connected || state == LinkState::Connecting)
                         return;
                     m_model->markAllStale(
-                        reason.empty() ? tr("link %1").arg(UiText::linkState(state))
-                                       : tr("link %1: %2")
-                                             .arg(UiText::linkState(state), translated(reason)));
+                        reason.empty()
+                            ? tr("link %1").arg(UiText::linkState(state))
+                            : tr("link %1: %2").arg(UiText::linkState(state), translated(reason)));
                 });
         connect(connection, &Connection::changed, m_model,
                 [this] { m_model->setSilentStations(m_connection->silentStations()); });
@@ -424,9 +424,8 @@ void WatchTableWidget::write(int row, quint64 raw)
 void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const SessionResult &result)
 {
     const QString outcome
-        = result.ok()
-              ? tr("Wrote %1.").arg(what)
-              : tr("Write of %1 failed: %2").arg(what, translated(result.errorMessage()));
+        = result.ok() ? tr("Wrote %1.").arg(what)
+                      : tr("Write of %1 failed: %2").arg(what, translated(result.errorMessage()));
     const int row = m_model->rowOfKey(rowKey);
     if (row >= 0)
         m_model->setWriteOutcome(
