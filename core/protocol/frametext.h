@@ -10,7 +10,7 @@
 namespace Fatek {
 
 // Text forms of raw frames for the console and fatek-cli: hex and ASCII views, and parsing what a
-// user types. Messages are English core texts (the GUI translates them through CoreText).
+// user types. Errors are core messages (Message: english() for the CLI, translated() in the GUI).
 class FrameText
 {
 public:

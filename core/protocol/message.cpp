@@ -69,9 +69,12 @@ std::string fillTemplate(std::string_view templ, const std::vector<std::string> 
 
 std::string english(const Message &message)
 {
-    if (message.id == MsgId::Text)
-        return message.args.empty() || message.args.front().message ? std::string()
-                                                                    : message.args.front().text;
+    if (message.id == MsgId::Text) {
+        if (message.args.empty())
+            return {};
+        const MessageArg &arg = message.args.front();
+        return arg.message ? english(*arg.message) : arg.text;
+    }
     std::vector<std::string> args;
     args.reserve(message.args.size());
     for (const MessageArg &arg : message.args)
