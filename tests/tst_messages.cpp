@@ -2,7 +2,7 @@
 // are the %1..%n its argument count promises (the count msg<>() checks when compiling), both
 // shipped translations (the .qm files the program embeds) carry it with the same placeholders,
 // and the Chinese one is Chinese. english() and the UI's translated() fill them in alike.
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 
 #include "core/protocol/message.h"
 #include "core/protocol/protocolerror.h"

@@ -2,9 +2,9 @@
 // framing) get their decoded answers in the log; corrupted answers are error lines; filters, cap,
 // save. The frame text itself (views, parsing, header peek) is tested in tst_frametext.
 #include "tst_tools_fixture.h"
+#include "ui/common/toolpalette.h"
 #include "ui/tools/rawconsole.h"
 #include "ui/tools/rawsendbar.h"
-#include "ui/tools/toolpalette.h"
 #include "ui/tools/trafficfilterproxy.h"
 #include "ui/tools/trafficlogmodel.h"
 

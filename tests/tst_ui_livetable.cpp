@@ -5,12 +5,12 @@
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
 #include "testutil.h"
+#include "ui/common/uitext.h"
 #include "ui/connection/connection.h"
 #include "ui/connection/connectionlistmodel.h"
 #include "ui/connection/connectionmanager.h"
 #include "ui/connection/connectionspanel.h"
 #include "ui/mainwindow/mainwindow.h"
-#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QAbstractItemView>

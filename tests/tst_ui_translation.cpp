@@ -1,9 +1,9 @@
 // Translations: every message of the .ts files is finished and keeps its placeholders; with the
 // zh_TW translator the main window running the demo (tables, connections, docks, menus, actions,
 // status bar) shows no English words; core messages come out in Chinese.
+#include "ui/common/uitext.h"
 #include "ui/mainwindow/languagemenu.h"
 #include "ui/mainwindow/mainwindow.h"
-#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include "core/protocol/address.h"

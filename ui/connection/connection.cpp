@@ -1,7 +1,7 @@
 #include "connection.h"
 
 #include "core/session/requesttracker.h"
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 
 #include <QSet>
 

@@ -1,7 +1,7 @@
 #include "connectiondialog.h"
 
 #include "core/transport/serialtransport.h"
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -1,7 +1,7 @@
 #include "connectionlistmodel.h"
 
 #include "connectionmanager.h"
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 
 namespace Fatek {
 

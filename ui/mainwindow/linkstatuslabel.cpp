@@ -1,7 +1,7 @@
 #include "linkstatuslabel.h"
 
+#include "ui/common/uitext.h"
 #include "ui/connection/connection.h"
-#include "ui/tools/uitext.h"
 
 namespace Fatek {
 

@@ -5,10 +5,10 @@
 #include "demosimulator.h"
 #include "languagemenu.h"
 #include "linkstatuslabel.h"
+#include "ui/common/uitext.h"
 #include "ui/connection/connectiondialog.h"
 #include "ui/connection/connectionmanager.h"
 #include "ui/connection/connectionspanel.h"
-#include "ui/tools/uitext.h"
 #include "ui/trend/tablelogger.h"
 #include "ui/watch/watchtablemodel.h"
 

@@ -2,7 +2,7 @@
 
 #include "lastdirectory.h"
 #include "mainwindow.h"
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QAction>

@@ -1,7 +1,7 @@
 #include "discretecontrolbatch.h"
 
 #include "core/session/requesttracker.h"
-#include "uitext.h"
+#include "ui/common/uitext.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
 #include "discretetablemodel.h"
 
-#include "toolpalette.h"
+#include "ui/common/toolpalette.h"
 
 #include <QFont>
 

@@ -1,6 +1,6 @@
 #include "forcedpointsview.h"
 
-#include "messageline.h"
+#include "ui/common/messageline.h"
 
 #include "core/protocol/element.h"
 #include "core/protocol/plcstatus.h"
@@ -8,8 +8,8 @@
 #include "core/session/session.h"
 #include "discretecontrolbatch.h"
 #include "discretescan.h"
-#include "toolpalette.h"
-#include "uitext.h"
+#include "ui/common/toolpalette.h"
+#include "ui/common/uitext.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -2,7 +2,7 @@
 
 #include "core/protocol/address.h"
 #include "discretescan.h"
-#include "toolconfirmation.h"
+#include "ui/common/toolconfirmation.h"
 
 #include <QPointer>
 #include <QWidget>

@@ -1,14 +1,14 @@
 #include "forcingpanel.h"
 
-#include "messageline.h"
+#include "ui/common/messageline.h"
 
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
 #include "discretecontrolbatch.h"
 #include "discretetablemodel.h"
 #include "forcedpointsview.h"
-#include "toolpalette.h"
-#include "uitext.h"
+#include "ui/common/toolpalette.h"
+#include "ui/common/uitext.h"
 
 #include <QCheckBox>
 #include <QComboBox>

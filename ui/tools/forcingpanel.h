@@ -2,7 +2,7 @@
 
 #include "core/protocol/addressrange.h"
 #include "core/protocol/request.h"
-#include "toolconfirmation.h"
+#include "ui/common/toolconfirmation.h"
 
 #include <QPointer>
 #include <QTimer>

@@ -3,8 +3,8 @@
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
 #include "statusindicator.h"
-#include "toolpalette.h"
-#include "uitext.h"
+#include "ui/common/toolpalette.h"
+#include "ui/common/uitext.h"
 
 #include <QFontDatabase>
 #include <QFormLayout>

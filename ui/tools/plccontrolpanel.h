@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/protocol/plcstatus.h"
-#include "toolconfirmation.h"
+#include "ui/common/toolconfirmation.h"
 
 #include <QPointer>
 #include <QTimer>

@@ -2,10 +2,10 @@
 
 #include "core/session/session.h"
 #include "rawsendbar.h"
-#include "toolpalette.h"
 #include "trafficfilterproxy.h"
 #include "trafficlogmodel.h"
-#include "uitext.h"
+#include "ui/common/toolpalette.h"
+#include "ui/common/uitext.h"
 
 #include <QApplication>
 #include <QCheckBox>

@@ -5,8 +5,8 @@
 #include "core/session/qtbytes.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
-#include "toolpalette.h"
-#include "uitext.h"
+#include "ui/common/toolpalette.h"
+#include "ui/common/uitext.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "toolconfirmation.h"
+#include "ui/common/toolconfirmation.h"
 
 #include <QPointer>
 #include <QWidget>

@@ -1,6 +1,6 @@
 #include "statusindicator.h"
 
-#include "toolpalette.h"
+#include "ui/common/toolpalette.h"
 
 #include <QPainter>
 

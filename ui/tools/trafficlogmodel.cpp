@@ -2,8 +2,8 @@
 
 #include "core/protocol/frametext.h"
 #include "core/session/qtbytes.h"
-#include "toolpalette.h"
-#include "uitext.h"
+#include "ui/common/toolpalette.h"
+#include "ui/common/uitext.h"
 
 #include <QFontDatabase>
 

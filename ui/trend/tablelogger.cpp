@@ -1,6 +1,6 @@
 #include "tablelogger.h"
 
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QDateTime>

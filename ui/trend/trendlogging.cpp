@@ -2,9 +2,9 @@
 
 #include "tablelogger.h"
 #include "trendview.h"
+#include "ui/common/uitext.h"
 #include "ui/mainwindow/lastdirectory.h"
 #include "ui/mainwindow/mainwindow.h"
-#include "ui/tools/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QAction>

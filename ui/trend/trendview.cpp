@@ -3,7 +3,7 @@
 #include "core/watch/valueformat.h"
 #include "trendchartview.h"
 #include "trendvalueaxes.h"
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #include "watchdelegate.h"
 
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 #include "watchtablemodel.h"
 
 #include <QComboBox>

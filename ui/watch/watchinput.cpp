@@ -1,6 +1,6 @@
 #include "watchinput.h"
 
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 
 #include <QRegularExpression>
 

@@ -1,6 +1,6 @@
 #include "watchtablemodel.h"
 
-#include "ui/tools/uitext.h"
+#include "ui/common/uitext.h"
 
 #include <QFont>
 #include <QGuiApplication>
