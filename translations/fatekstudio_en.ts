@@ -877,6 +877,166 @@
             <source>%1 items are more than one table holds (at most %2)</source>
             <translation>%1 items are more than one table holds (at most %2)</translation>
         </message>
+        <message>
+            <source>Answer to %1: %2</source>
+            <translation>Answer to %1: %2</translation>
+        </message>
+        <message>
+            <source>expected %1 data characters (%2), got %3.</source>
+            <translation>expected %1 data characters (%2), got %3.</translation>
+        </message>
+        <message>
+            <source>status byte &quot;%1&quot; is not hex.</source>
+            <translation>status byte &quot;%1&quot; is not hex.</translation>
+        </message>
+        <message>
+            <source>discrete status &quot;%1&quot; is not 0 or 1.</source>
+            <translation>discrete status &quot;%1&quot; is not 0 or 1.</translation>
+        </message>
+        <message>
+            <source>value &quot;%1&quot; is not hex.</source>
+            <translation>value &quot;%1&quot; is not hex.</translation>
+        </message>
+        <message>
+            <source>status bytes have an odd number of hex characters (%1).</source>
+            <translation>status bytes have an odd number of hex characters (%1).</translation>
+        </message>
+        <message>
+            <source>the echoed %1 bytes differ from the %2 bytes sent.</source>
+            <translation>the echoed %1 bytes differ from the %2 bytes sent.</translation>
+        </message>
+        <message>
+            <source>the error byte is missing.</source>
+            <translation>the error byte is missing.</translation>
+        </message>
+        <message>
+            <source>%1 data bytes instead of %2 (%3).</source>
+            <translation>%1 data bytes instead of %2 (%3).</translation>
+        </message>
+        <message>
+            <source>value %1 for %2 is neither 00 nor 01.</source>
+            <translation>value %1 for %2 is neither 00 nor 01.</translation>
+        </message>
+        <message>
+            <source>Answer from station %1 while station %2 was asked (%3).</source>
+            <translation>Answer from station %1 while station %2 was asked (%3).</translation>
+        </message>
+        <message>
+            <source>Answer to command %1 while %2 (%3) was sent.</source>
+            <translation>Answer to command %1 while %2 (%3) was sent.</translation>
+        </message>
+        <message>
+            <source>Answer to command %1 while %2 was sent (%3).</source>
+            <translation>Answer to command %1 while %2 was sent (%3).</translation>
+        </message>
+        <message>
+            <source>Loopback data differs: sent &quot;%1&quot;, received &quot;%2&quot;.</source>
+            <translation>Loopback data differs: sent &quot;%1&quot;, received &quot;%2&quot;.</translation>
+        </message>
+        <message>
+            <source>Answer to %1 has no error digit.</source>
+            <translation>Answer to %1 has no error digit.</translation>
+        </message>
+        <message>
+            <source>Answer to %1: error digit &quot;%2&quot; is not hex.</source>
+            <translation>Answer to %1: error digit &quot;%2&quot; is not hex.</translation>
+        </message>
+        <message>
+            <source>%1: %2 data characters; a FACON frame carries at most 500.</source>
+            <translation>%1: %2 data characters; a FACON frame carries at most 500.</translation>
+        </message>
+        <message>
+            <source>Received a query frame (51) instead of an answer (52): probably the echo of our own query.</source>
+            <translation>Received a query frame (51) instead of an answer (52): probably the echo of our own query.</translation>
+        </message>
+        <message>
+            <source>FACON frame too short (%1 bytes; at least 8: STX, station, command, LRC, ETX).</source>
+            <translation>FACON frame too short (%1 bytes; at least 8: STX, station, command, LRC, ETX).</translation>
+        </message>
+        <message>
+            <source>FACON frame too long (%1 bytes; at most %2).</source>
+            <translation>FACON frame too long (%1 bytes; at most %2).</translation>
+        </message>
+        <message>
+            <source>FACON frame does not start with STX.</source>
+            <translation>FACON frame does not start with STX.</translation>
+        </message>
+        <message>
+            <source>FACON frame does not end with ETX.</source>
+            <translation>FACON frame does not end with ETX.</translation>
+        </message>
+        <message>
+            <source>FACON frame contains a stray STX or ETX inside.</source>
+            <translation>FACON frame contains a stray STX or ETX inside.</translation>
+        </message>
+        <message>
+            <source>FACON frame header &quot;%1&quot; is not station and command in hex.</source>
+            <translation>FACON frame header &quot;%1&quot; is not station and command in hex.</translation>
+        </message>
+        <message>
+            <source>FACON checksum &quot;%1&quot; is not two hex characters.</source>
+            <translation>FACON checksum &quot;%1&quot; is not two hex characters.</translation>
+        </message>
+        <message>
+            <source>FACON checksum error: frame says %1, computed %2.</source>
+            <translation>FACON checksum error: frame says %1, computed %2.</translation>
+        </message>
+        <message>
+            <source>FACON frame too short (%1 bytes): station, command and LRC do not fit.</source>
+            <translation>FACON frame too short (%1 bytes): station, command and LRC do not fit.</translation>
+        </message>
+        <message>
+            <source>FACON frame with a non-hex station or command.</source>
+            <translation>FACON frame with a non-hex station or command.</translation>
+        </message>
+        <message>
+            <source>FACON frame whose checksum is not two hex characters.</source>
+            <translation>FACON frame whose checksum is not two hex characters.</translation>
+        </message>
+        <message>
+            <source>Incomplete FACON frame: a new STX arrived before ETX.</source>
+            <translation>Incomplete FACON frame: a new STX arrived before ETX.</translation>
+        </message>
+        <message>
+            <source>FACON frame without ETX within %1 bytes.</source>
+            <translation>FACON frame without ETX within %1 bytes.</translation>
+        </message>
+        <message>
+            <source>Binary frame too short (%1 bytes): a frame has at least 10 bytes.</source>
+            <translation>Binary frame too short (%1 bytes): a frame has at least 10 bytes.</translation>
+        </message>
+        <message>
+            <source>Binary frame starts with %1 instead of 51 (query) or 52 (answer).</source>
+            <translation>Binary frame starts with %1 instead of 51 (query) or 52 (answer).</translation>
+        </message>
+        <message>
+            <source>Binary frame ID is %1 instead of 10.</source>
+            <translation>Binary frame ID is %1 instead of 10.</translation>
+        </message>
+        <message>
+            <source>Binary frame length field says %1 payload bytes but the frame carries %2.</source>
+            <translation>Binary frame length field says %1 payload bytes but the frame carries %2.</translation>
+        </message>
+        <message>
+            <source>Binary frame ends with %1 instead of the terminator 55 AA.</source>
+            <translation>Binary frame ends with %1 instead of the terminator 55 AA.</translation>
+        </message>
+        <message>
+            <source>Binary frame CRC is %1, computed %2.</source>
+            <translation>Binary frame CRC is %1, computed %2.</translation>
+        </message>
+        <message>
+            <source>Binary frame without station and command.</source>
+            <translation>Binary frame without station and command.</translation>
+        </message>
+        <message>
+            <source>Binary frame of %1 bytes does not end with the terminator 55 AA.</source>
+            <translation>Binary frame of %1 bytes does not end with the terminator 55 AA.</translation>
+        </message>
+        <message>
+            <source>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</source>
+            <translation>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

@@ -877,6 +877,166 @@
             <source>%1 items are more than one table holds (at most %2)</source>
             <translation>%1 個項目超過一個表格可容納的數量（最多 %2 個）</translation>
         </message>
+        <message>
+            <source>Answer to %1: %2</source>
+            <translation>對 %1 的回應：%2</translation>
+        </message>
+        <message>
+            <source>expected %1 data characters (%2), got %3.</source>
+            <translation>預期 %1 個資料字元（%2），收到 %3 個。</translation>
+        </message>
+        <message>
+            <source>status byte &quot;%1&quot; is not hex.</source>
+            <translation>狀態位元組「%1」不是十六進位。</translation>
+        </message>
+        <message>
+            <source>discrete status &quot;%1&quot; is not 0 or 1.</source>
+            <translation>離散點狀態「%1」不是 0 或 1。</translation>
+        </message>
+        <message>
+            <source>value &quot;%1&quot; is not hex.</source>
+            <translation>數值「%1」不是十六進位。</translation>
+        </message>
+        <message>
+            <source>status bytes have an odd number of hex characters (%1).</source>
+            <translation>狀態位元組的十六進位字元數為奇數（%1）。</translation>
+        </message>
+        <message>
+            <source>the echoed %1 bytes differ from the %2 bytes sent.</source>
+            <translation>回送的 %1 位元組與送出的 %2 位元組不同。</translation>
+        </message>
+        <message>
+            <source>the error byte is missing.</source>
+            <translation>缺少錯誤碼位元組。</translation>
+        </message>
+        <message>
+            <source>%1 data bytes instead of %2 (%3).</source>
+            <translation>資料有 %1 位元組，而非 %2（%3）。</translation>
+        </message>
+        <message>
+            <source>value %1 for %2 is neither 00 nor 01.</source>
+            <translation>%2 的數值 %1 既不是 00 也不是 01。</translation>
+        </message>
+        <message>
+            <source>Answer from station %1 while station %2 was asked (%3).</source>
+            <translation>收到站號 %1 的回應，但詢問的是站號 %2（%3）。</translation>
+        </message>
+        <message>
+            <source>Answer to command %1 while %2 (%3) was sent.</source>
+            <translation>收到命令 %1 的回應，但送出的是 %2（%3）。</translation>
+        </message>
+        <message>
+            <source>Answer to command %1 while %2 was sent (%3).</source>
+            <translation>收到命令 %1 的回應，但送出的是 %2（%3）。</translation>
+        </message>
+        <message>
+            <source>Loopback data differs: sent &quot;%1&quot;, received &quot;%2&quot;.</source>
+            <translation>迴路測試資料不同：送出「%1」，收到「%2」。</translation>
+        </message>
+        <message>
+            <source>Answer to %1 has no error digit.</source>
+            <translation>對 %1 的回應缺少錯誤碼字元。</translation>
+        </message>
+        <message>
+            <source>Answer to %1: error digit &quot;%2&quot; is not hex.</source>
+            <translation>對 %1 的回應：錯誤碼字元「%2」不是十六進位。</translation>
+        </message>
+        <message>
+            <source>%1: %2 data characters; a FACON frame carries at most 500.</source>
+            <translation>%1：%2 個資料字元；一個 FACON 訊框最多 500 個。</translation>
+        </message>
+        <message>
+            <source>Received a query frame (51) instead of an answer (52): probably the echo of our own query.</source>
+            <translation>收到查詢訊框（51）而非回應（52）：可能是本程式查詢的回音。</translation>
+        </message>
+        <message>
+            <source>FACON frame too short (%1 bytes; at least 8: STX, station, command, LRC, ETX).</source>
+            <translation>FACON 訊框太短（%1 位元組；至少 8 位元組：STX、站號、命令、LRC、ETX）。</translation>
+        </message>
+        <message>
+            <source>FACON frame too long (%1 bytes; at most %2).</source>
+            <translation>FACON 訊框太長（%1 位元組；最多 %2）。</translation>
+        </message>
+        <message>
+            <source>FACON frame does not start with STX.</source>
+            <translation>FACON 訊框不是以 STX 開頭。</translation>
+        </message>
+        <message>
+            <source>FACON frame does not end with ETX.</source>
+            <translation>FACON 訊框不是以 ETX 結尾。</translation>
+        </message>
+        <message>
+            <source>FACON frame contains a stray STX or ETX inside.</source>
+            <translation>FACON 訊框中間含有多餘的 STX 或 ETX。</translation>
+        </message>
+        <message>
+            <source>FACON frame header &quot;%1&quot; is not station and command in hex.</source>
+            <translation>FACON 訊框標頭「%1」不是十六進位的站號與命令。</translation>
+        </message>
+        <message>
+            <source>FACON checksum &quot;%1&quot; is not two hex characters.</source>
+            <translation>FACON 檢查碼「%1」不是兩個十六進位字元。</translation>
+        </message>
+        <message>
+            <source>FACON checksum error: frame says %1, computed %2.</source>
+            <translation>FACON 檢查碼錯誤：訊框中為 %1，計算結果為 %2。</translation>
+        </message>
+        <message>
+            <source>FACON frame too short (%1 bytes): station, command and LRC do not fit.</source>
+            <translation>FACON 訊框太短（%1 位元組）：容納不下站號、命令與 LRC。</translation>
+        </message>
+        <message>
+            <source>FACON frame with a non-hex station or command.</source>
+            <translation>FACON 訊框的站號或命令不是十六進位。</translation>
+        </message>
+        <message>
+            <source>FACON frame whose checksum is not two hex characters.</source>
+            <translation>FACON 訊框的檢查碼不是兩個十六進位字元。</translation>
+        </message>
+        <message>
+            <source>Incomplete FACON frame: a new STX arrived before ETX.</source>
+            <translation>不完整的 FACON 訊框：在 ETX 之前收到新的 STX。</translation>
+        </message>
+        <message>
+            <source>FACON frame without ETX within %1 bytes.</source>
+            <translation>FACON 訊框在 %1 位元組內沒有 ETX。</translation>
+        </message>
+        <message>
+            <source>Binary frame too short (%1 bytes): a frame has at least 10 bytes.</source>
+            <translation>二進位訊框太短（%1 位元組）：訊框至少有 10 位元組。</translation>
+        </message>
+        <message>
+            <source>Binary frame starts with %1 instead of 51 (query) or 52 (answer).</source>
+            <translation>二進位訊框以 %1 開頭，而非 51（查詢）或 52（回應）。</translation>
+        </message>
+        <message>
+            <source>Binary frame ID is %1 instead of 10.</source>
+            <translation>二進位訊框 ID 為 %1，而非 10。</translation>
+        </message>
+        <message>
+            <source>Binary frame length field says %1 payload bytes but the frame carries %2.</source>
+            <translation>二進位訊框的長度欄位表示 %1 個資料位元組，但訊框帶有 %2 個。</translation>
+        </message>
+        <message>
+            <source>Binary frame ends with %1 instead of the terminator 55 AA.</source>
+            <translation>二進位訊框以 %1 結尾，而非正確的結束碼。</translation>
+        </message>
+        <message>
+            <source>Binary frame CRC is %1, computed %2.</source>
+            <translation>二進位訊框 CRC 為 %1，計算結果為 %2。</translation>
+        </message>
+        <message>
+            <source>Binary frame without station and command.</source>
+            <translation>二進位訊框缺少站號與命令。</translation>
+        </message>
+        <message>
+            <source>Binary frame of %1 bytes does not end with the terminator 55 AA.</source>
+            <translation>%1 位元組的二進位訊框沒有以正確的結束碼結尾。</translation>
+        </message>
+        <message>
+            <source>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</source>
+            <translation>%1 位元組的二進位訊框 CRC 錯誤（線路雜訊或訊框損壞）。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

@@ -152,25 +152,22 @@ Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame
     if (!parsed)
         return parsed.error();
     if (parsed->header != responseHeader) {
-        return makeError(ErrorKind::BadFrame, "Received a query frame (51) instead of an answer "
-                                              "(52): probably the echo of our own query.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::BinaryQueryEcho>());
     }
     const auto p = parsed->payload;
     const std::uint8_t code = static_cast<std::uint8_t>(request.command);
     if (p[0] != request.station) {
         return makeError(ErrorKind::StationMismatch,
-                         "Answer from station " + std::to_string(p[0]) + " while station "
-                             + std::to_string(request.station) + " was asked (" + request.describe()
-                             + ").");
+                         msg<MsgId::AnswerWrongStation>(p[0], request.station, request.describe()));
     }
     if (p[1] != code) {
-        return makeError(ErrorKind::CommandMismatch, "Answer to command " + hex2(p[1]) + " while "
-                                                         + commandText(code) + " was sent ("
-                                                         + request.describe() + ").");
+        return makeError(ErrorKind::CommandMismatch,
+                         msg<MsgId::BinaryAnswerWrongCommand>(hex2(p[1]), commandText(code),
+                                                              request.describe()));
     }
-    auto malformed = [&request](std::string message) {
+    auto malformed = [&request](Message detail) {
         return makeError(ErrorKind::MalformedResponse,
-                         "Answer to " + request.describe() + ": " + std::move(message));
+                         msg<MsgId::AnswerTo>(request.describe(), std::move(detail)));
     };
 
     Response response;
@@ -181,15 +178,14 @@ Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame
     if (request.command == Command::Loopback) {
         const auto data = p.subspan(2);
         if (!std::equal(data.begin(), data.end(), request.data.begin(), request.data.end())) {
-            return malformed("the echoed " + std::to_string(data.size()) + " bytes differ from the "
-                             + std::to_string(request.data.size()) + " bytes sent.");
+            return malformed(msg<MsgId::AnswerEchoDiffers>(data.size(), request.data.size()));
         }
         response.data.assign(data.begin(), data.end());
         return response;
     }
 
     if (p.size() < 3)
-        return malformed("the error byte is missing.");
+        return malformed(msg<MsgId::AnswerNoErrorByte>());
     if (p[2] != 0) {
         const std::string target = request.target();
         return makePlcError(p[2], target.empty() ? "for " + request.describe() : target);
@@ -197,8 +193,7 @@ Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame
     const auto data = p.subspan(3);
     auto expectSize = [&](std::size_t size, std::string_view what) -> Status {
         if (data.size() != size) {
-            return malformed(std::to_string(data.size()) + " data bytes instead of "
-                             + std::to_string(size) + " (" + std::string(what) + ").");
+            return malformed(msg<MsgId::AnswerDataBytes>(data.size(), size, what));
         }
         return Ok{};
     };
@@ -221,9 +216,9 @@ Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame
             return s.error();
         for (std::size_t i = 0; i < data.size(); ++i) {
             if (data[i] > 1) {
-                return malformed("value " + hex2(data[i]) + " for "
-                                 + request.start.advanced(static_cast<std::uint32_t>(i)).toString()
-                                 + " is neither 00 nor 01.");
+                return malformed(msg<MsgId::AnswerValueNotDiscrete>(
+                    hex2(data[i]),
+                    request.start.advanced(static_cast<std::uint32_t>(i)).toString()));
             }
             response.values.push_back(data[i]);
         }
@@ -252,8 +247,7 @@ Result<Response> BinaryCodec::decodeResponse(std::span<const std::uint8_t> frame
             const std::size_t vsize = valueSize(a.type);
             const std::uint32_t v = readNumber(data, pos, vsize);
             if (isDiscrete(a.type) && v > 1)
-                return malformed("value " + hex2(v) + " for " + a.toString()
-                                 + " is neither 00 nor 01.");
+                return malformed(msg<MsgId::AnswerValueNotDiscrete>(hex2(v), a.toString()));
             response.values.push_back(v);
             pos += vsize;
         }

@@ -73,18 +73,14 @@ void BinaryDeframer::scan(std::vector<DeframedItem> &out)
         item.frame.assign(frame.begin(), frame.end());
         if (frame[total - 2] != BinaryCodec::terminator[0]
             || frame[total - 1] != BinaryCodec::terminator[1]) {
-            item.error = makeError(ErrorKind::BadFrame,
-                                   "Binary frame of " + std::to_string(total)
-                                       + " bytes does not end with the terminator 55 AA.");
+            item.error = makeError(ErrorKind::BadFrame, msg<MsgId::BinaryFrameNoTerminator>(total));
         } else {
             const std::uint16_t expected = BinaryCodec::crc16(frame.subspan(2, length + 2));
             const auto got = static_cast<std::uint16_t>(frame[kHeadSize + length]
                                                         | (frame[kHeadSize + length + 1] << 8));
             if (got != expected) {
                 item.error
-                    = makeError(ErrorKind::BadChecksum,
-                                "Binary frame of " + std::to_string(total)
-                                    + " bytes has a wrong CRC (line noise or a broken frame).");
+                    = makeError(ErrorKind::BadChecksum, msg<MsgId::BinaryFrameWrongCrc>(total));
             }
         }
         const bool rejected = item.error.has_value();

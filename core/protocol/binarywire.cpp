@@ -78,42 +78,36 @@ std::uint32_t readNumber(std::span<const std::uint8_t> bytes, std::size_t pos, s
 Result<ParsedFrame> parseFrame(std::span<const std::uint8_t> frame)
 {
     if (frame.size() < kOverhead + 2) {
-        return makeError(ErrorKind::BadFrame, "Binary frame too short ("
-                                                  + std::to_string(frame.size())
-                                                  + " bytes): a frame has at least 10 bytes.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::BinaryFrameTooShort>(frame.size()));
     }
     if (frame[0] != BinaryCodec::queryHeader && frame[0] != BinaryCodec::responseHeader) {
-        return makeError(ErrorKind::BadFrame, "Binary frame starts with " + hex2(frame[0])
-                                                  + " instead of 51 (query) or 52 (answer).");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::BinaryFrameBadHeader>(hex2(frame[0])));
     }
     if (frame[1] != BinaryCodec::frameId)
-        return makeError(ErrorKind::BadFrame,
-                         "Binary frame ID is " + hex2(frame[1]) + " instead of 10.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::BinaryFrameBadId>(hex2(frame[1])));
     const std::size_t length = readNumber(frame, 2, 2);
     if (length + kOverhead != frame.size()) {
-        return makeError(
-            ErrorKind::BadFrame,
-            "Binary frame length field says " + std::to_string(length)
-                + " payload bytes but the frame carries "
-                + std::to_string(frame.size() < kOverhead ? 0 : frame.size() - kOverhead) + ".");
+        return makeError(ErrorKind::BadFrame,
+                         msg<MsgId::BinaryFrameBadLength>(
+                             length, frame.size() < kOverhead ? 0 : frame.size() - kOverhead));
     }
     if (frame[frame.size() - 2] != BinaryCodec::terminator[0]
         || frame[frame.size() - 1] != BinaryCodec::terminator[1]) {
-        return makeError(ErrorKind::BadFrame, "Binary frame ends with "
-                                                  + hexBytes(frame.subspan(frame.size() - 2), 2)
-                                                  + " instead of the terminator 55 AA.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::BinaryFrameBadEnd>(
+                                                  hexBytes(frame.subspan(frame.size() - 2), 2)));
     }
     const std::uint16_t expected = BinaryCodec::crc16(frame.subspan(2, length + 2));
     const std::uint16_t got = static_cast<std::uint16_t>(frame[kHeadSize + length]
                                                          | (frame[kHeadSize + length + 1] << 8));
     if (expected != got) {
-        return makeError(ErrorKind::BadChecksum,
-                         "Binary frame CRC is " + hex2(got) + " " + hex2(got >> 8u) + ", computed "
-                             + hex2(expected) + " "
-                             + hex2(static_cast<std::uint32_t>(expected) >> 8u) + ".");
+        return makeError(
+            ErrorKind::BadChecksum,
+            msg<MsgId::BinaryFrameBadCrc>(hex2(got) + " " + hex2(got >> 8u),
+                                          hex2(expected) + " "
+                                              + hex2(static_cast<std::uint32_t>(expected) >> 8u)));
     }
     if (length < 2)
-        return makeError(ErrorKind::BadFrame, "Binary frame without station and command.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::BinaryFrameNoStation>());
     return ParsedFrame{frame[0], frame.subspan(kHeadSize, length)};
 }
 

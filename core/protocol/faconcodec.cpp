@@ -72,14 +72,13 @@ Message queryDetails(const Request &r)
 // Decoded answer data for the master: everything after the error digit.
 Result<Response> decodeAnswerData(const Request &request, std::string_view data, Response response)
 {
-    auto malformed = [&request](std::string message) {
+    auto malformed = [&request](Message detail) {
         return makeError(ErrorKind::MalformedResponse,
-                         "Answer to " + request.describe() + ": " + std::move(message));
+                         msg<MsgId::AnswerTo>(request.describe(), std::move(detail)));
     };
     auto expectLength = [&](std::size_t expected, std::string_view what) -> Status {
         if (data.size() != expected) {
-            return malformed("expected " + std::to_string(expected) + " data characters ("
-                             + std::string(what) + "), got " + std::to_string(data.size()) + ".");
+            return malformed(msg<MsgId::AnswerExpectedChars>(expected, what, data.size()));
         }
         return Ok{};
     };
@@ -87,8 +86,8 @@ Result<Response> decodeAnswerData(const Request &request, std::string_view data,
         for (std::size_t i = 0; i + 1 < text.size(); i += 2) {
             const auto b = parseHex(text.substr(i, 2));
             if (!b)
-                return malformed("status byte \"" + printable(text.substr(i, 2), 2)
-                                 + "\" is not hex.");
+                return malformed(
+                    msg<MsgId::AnswerStatusByteNotHex>(printable(text.substr(i, 2), 2)));
             response.data.push_back(static_cast<std::uint8_t>(*b));
         }
         return Ok{};
@@ -99,12 +98,12 @@ Result<Response> decodeAnswerData(const Request &request, std::string_view data,
         pos += n;
         if (n == 1) {
             if (field != "0" && field != "1")
-                return malformed("discrete status \"" + printable(field, 1) + "\" is not 0 or 1.");
+                return malformed(msg<MsgId::AnswerDiscreteNotBinary>(printable(field, 1)));
             return static_cast<std::uint32_t>(field[0] - '0');
         }
         const auto v = parseHex(field);
         if (!v)
-            return malformed("value \"" + printable(field, n) + "\" is not hex.");
+            return malformed(msg<MsgId::AnswerValueNotHex>(printable(field, n)));
         return *v;
     };
 
@@ -118,8 +117,7 @@ Result<Response> decodeAnswerData(const Request &request, std::string_view data,
     case Command::DetailStatus:
         // Models answer 21, 28 or 64 status bytes: accept any whole number of bytes.
         if (data.size() % 2 != 0)
-            return malformed("status bytes have an odd number of hex characters ("
-                             + std::to_string(data.size()) + ").");
+            return malformed(msg<MsgId::AnswerOddStatusChars>(data.size()));
         if (Status s = hexBytes(data); !s)
             return s.error();
         break;
@@ -242,8 +240,7 @@ Result<Bytes> FaconCodec::encodeRequest(const Request &request) const
     }
     if (body.size() - 4 > maxDataChars) {
         return makeError(ErrorKind::LimitExceeded,
-                         request.describe() + ": " + std::to_string(body.size() - 4)
-                             + " data characters; a FACON frame carries at most 500.");
+                         msg<MsgId::FaconTooManyDataChars>(request.describe(), body.size() - 4));
     }
     return frameOf(body);
 }
@@ -256,16 +253,15 @@ Result<Response> FaconCodec::decodeResponse(std::span<const std::uint8_t> frame,
         return parsed.error();
     const ParsedFrame &f = *parsed;
     if (f.station != request.station) {
-        return makeError(ErrorKind::StationMismatch,
-                         "Answer from station " + std::to_string(f.station) + " while station "
-                             + std::to_string(request.station) + " was asked (" + request.describe()
-                             + ").");
+        return makeError(
+            ErrorKind::StationMismatch,
+            msg<MsgId::AnswerWrongStation>(f.station, request.station, request.describe()));
     }
     if (f.command != static_cast<std::uint8_t>(request.command)) {
         return makeError(ErrorKind::CommandMismatch,
-                         "Answer to command " + hex2(f.command) + " while "
-                             + hex2(static_cast<std::uint8_t>(request.command)) + " ("
-                             + std::string(commandName(request.command)) + ") was sent.");
+                         msg<MsgId::FaconAnswerWrongCommand>(
+                             hex2(f.command), hex2(static_cast<std::uint8_t>(request.command)),
+                             commandMessage(request.command)));
     }
     Response response;
     response.station = f.station;
@@ -275,22 +271,22 @@ Result<Response> FaconCodec::decodeResponse(std::span<const std::uint8_t> frame,
         const std::string_view sent(reinterpret_cast<const char *>(request.data.data()),
                                     request.data.size());
         if (f.data != sent) {
-            return makeError(ErrorKind::MalformedResponse,
-                             "Loopback data differs: sent \"" + printable(sent, 32)
-                                 + "\", received \"" + printable(f.data, 32) + "\".");
+            return makeError(
+                ErrorKind::MalformedResponse,
+                msg<MsgId::AnswerLoopbackDiffers>(printable(sent, 32), printable(f.data, 32)));
         }
         response.data.assign(request.data.begin(), request.data.end());
         return response;
     }
     if (f.data.empty()) {
         return makeError(ErrorKind::MalformedResponse,
-                         "Answer to " + request.describe() + " has no error digit.");
+                         msg<MsgId::AnswerNoErrorDigit>(request.describe()));
     }
     const auto code = hexValue(f.data[0]);
     if (!code) {
         return makeError(ErrorKind::MalformedResponse,
-                         "Answer to " + request.describe() + ": error digit \""
-                             + printable(f.data.substr(0, 1), 1) + "\" is not hex.");
+                         msg<MsgId::AnswerErrorDigitNotHex>(request.describe(),
+                                                            printable(f.data.substr(0, 1), 1)));
     }
     if (*code != 0)
         return makePlcError(static_cast<int>(*code), request.target());

@@ -27,27 +27,24 @@ std::optional<ProtocolError> checkFrame(const Bytes &frame)
 {
     // STX, station (2), command (2), LRC (2), ETX.
     if (frame.size() < 8) {
-        return makeError(ErrorKind::BadFrame,
-                         "FACON frame too short (" + std::to_string(frame.size())
-                             + " bytes): station, command and LRC do not fit.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::FaconFrameTooShortLrc>(frame.size()));
     }
     for (std::size_t i = 1; i < 5; ++i) {
         if (!isHexChar(frame[i]))
-            return makeError(ErrorKind::BadFrame, "FACON frame with a non-hex station or command.");
+            return makeError(ErrorKind::BadFrame, msg<MsgId::FaconFrameNonHexHeader>());
     }
     const std::uint8_t hi = frame[frame.size() - 3];
     const std::uint8_t lo = frame[frame.size() - 2];
     if (!isHexChar(hi) || !isHexChar(lo))
-        return makeError(ErrorKind::BadFrame,
-                         "FACON frame whose checksum is not two hex characters.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::FaconFrameChecksumNotHex>());
     const std::uint32_t received = hexCharValue(hi) << 4 | hexCharValue(lo);
     const std::uint8_t computed = FaconCodec::lrc(std::span(frame).first(frame.size() - 3));
     if (received != computed) {
         static constexpr char digits[] = "0123456789ABCDEF";
         return makeError(ErrorKind::BadChecksum,
-                         std::string("FACON checksum error: frame says ") + digits[received >> 4]
-                             + digits[received & 0xF] + ", computed " + digits[computed >> 4]
-                             + digits[computed & 0xF] + ".");
+                         msg<MsgId::FaconChecksumError>(
+                             std::string{digits[received >> 4], digits[received & 0xF]},
+                             std::string{digits[computed >> 4], digits[computed & 0xF]}));
     }
     return std::nullopt;
 }
@@ -68,8 +65,7 @@ void FaconDeframer::feed(std::span<const std::uint8_t> bytes, std::vector<Defram
         if (b == FaconCodec::STX) {
             // A new frame starts: the sender gave up on the previous one (or we missed its ETX).
             out.push_back({std::move(m_buffer),
-                           makeError(ErrorKind::BadFrame,
-                                     "Incomplete FACON frame: a new STX arrived before ETX.")});
+                           makeError(ErrorKind::BadFrame, msg<MsgId::FaconFrameNewStx>())});
             m_buffer.clear();
             m_buffer.push_back(b);
             continue;
@@ -86,8 +82,7 @@ void FaconDeframer::feed(std::span<const std::uint8_t> bytes, std::vector<Defram
             // No legal frame can still end: reject and wait for the next STX.
             out.push_back({std::move(m_buffer),
                            makeError(ErrorKind::FrameTooLong,
-                                     "FACON frame without ETX within "
-                                         + std::to_string(FaconCodec::maxFrameSize) + " bytes.")});
+                                     msg<MsgId::FaconFrameNoEtx>(FaconCodec::maxFrameSize))});
             m_buffer.clear();
         }
     }

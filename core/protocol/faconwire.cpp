@@ -108,44 +108,36 @@ std::string headerText(std::uint8_t station, std::uint8_t command)
 Result<ParsedFrame> parseFrame(std::span<const std::uint8_t> frame)
 {
     if (frame.size() < kMinFrameSize) {
-        return makeError(ErrorKind::BadFrame,
-                         "FACON frame too short (" + std::to_string(frame.size())
-                             + " bytes; at least 8: STX, station, command, LRC, ETX).");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::FaconFrameTooShort>(frame.size()));
     }
     if (frame.size() > FaconCodec::maxFrameSize) {
         return makeError(ErrorKind::BadFrame,
-                         "FACON frame too long (" + std::to_string(frame.size())
-                             + " bytes; at most " + std::to_string(FaconCodec::maxFrameSize)
-                             + ").");
+                         msg<MsgId::FaconFrameTooLong>(frame.size(), FaconCodec::maxFrameSize));
     }
     if (frame.front() != FaconCodec::STX)
-        return makeError(ErrorKind::BadFrame, "FACON frame does not start with STX.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::FaconNoStx>());
     if (frame.back() != FaconCodec::ETX)
-        return makeError(ErrorKind::BadFrame, "FACON frame does not end with ETX.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::FaconNoEtx>());
     const std::string_view text(reinterpret_cast<const char *>(frame.data()), frame.size());
     for (std::size_t i = 1; i + 1 < text.size(); ++i) {
         if (frame[i] == FaconCodec::STX || frame[i] == FaconCodec::ETX)
-            return makeError(ErrorKind::BadFrame,
-                             "FACON frame contains a stray STX or ETX inside.");
+            return makeError(ErrorKind::BadFrame, msg<MsgId::FaconStrayStxEtx>());
     }
     const auto station = parseHex(text.substr(1, 2));
     const auto command = parseHex(text.substr(3, 2));
     if (!station || !command) {
-        return makeError(ErrorKind::BadFrame, "FACON frame header \""
-                                                  + printable(text.substr(1, 4), 4)
-                                                  + "\" is not station and command in hex.");
+        return makeError(ErrorKind::BadFrame,
+                         msg<MsgId::FaconHeaderNotHex>(printable(text.substr(1, 4), 4)));
     }
     const auto received = parseHex(text.substr(text.size() - 3, 2));
     if (!received) {
-        return makeError(ErrorKind::BadFrame, "FACON checksum \""
-                                                  + printable(text.substr(text.size() - 3, 2), 2)
-                                                  + "\" is not two hex characters.");
+        return makeError(ErrorKind::BadFrame, msg<MsgId::FaconChecksumNotHex>(
+                                                  printable(text.substr(text.size() - 3, 2), 2)));
     }
     const std::uint8_t computed = FaconCodec::lrc(frame.first(frame.size() - 3));
     if (computed != *received) {
-        return makeError(ErrorKind::BadChecksum, "FACON checksum error: frame says "
-                                                     + hex2(*received) + ", computed "
-                                                     + hex2(computed) + ".");
+        return makeError(ErrorKind::BadChecksum,
+                         msg<MsgId::FaconChecksumError>(hex2(*received), hex2(computed)));
     }
     ParsedFrame parsed;
     parsed.station = static_cast<std::uint8_t>(*station);

@@ -22,6 +22,7 @@ struct Entry
 constexpr Entry entries[] = {
 #define FATEK_MSG(id, argc, text) {#id, text},
 #include "messagelist.h"
+#include "messagelistframes.h"
 #undef FATEK_MSG
 };
 

@@ -16,14 +16,20 @@ namespace Fatek {
 // logs, the CLI and tests, the UI translates them (ui/common/messagetext.h).
 enum class MsgId : std::uint16_t {
 #define FATEK_MSG(id, argc, text) id,
+#ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
 #include "messagelist.h"
+#include "messagelistframes.h"
+#endif
 #undef FATEK_MSG
 };
 
 namespace MessageDetail {
 inline constexpr int argCounts[] = {
 #define FATEK_MSG(id, argc, text) argc,
+#ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
 #include "messagelist.h"
+#include "messagelistframes.h"
+#endif
 #undef FATEK_MSG
 };
 } // namespace MessageDetail

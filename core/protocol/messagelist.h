@@ -3,7 +3,8 @@
 // is the text the program has always written in English; its %1..%n take the arguments in order
 // (the count is checked where a message is built). lupdate reads the QT_TRANSLATE_NOOP marks
 // (context "Fatek::Message"); tst_messages checks every id against both translations.
-// Append new ids anywhere: nothing stores them, they are compiled in.
+// Append new ids anywhere: nothing stores them, they are compiled in. The list goes on in
+// messagelistframes.h (included right after this file, to keep each file under 600 lines).
 
 // A text shown as it is in every language (data, or an operating system's own error text).
 FATEK_MSG(Text, 1, "%1")
