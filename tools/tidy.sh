@@ -8,7 +8,9 @@ cd "$(dirname "$0")/.."
 build=${1:-build/release}
 [ -f "$build/compile_commands.json" ] || { echo "tidy: no $build/compile_commands.json (build first)" >&2; exit 2; }
 jobs=$(nproc 2>/dev/null || echo 2)
-mapfile -t files < <(git ls-files 'core/*.cpp' 'ui/*.cpp' 'app/*.cpp')
+# find, not git ls-files: CI's fresh root gets the sources without .git.
+mapfile -t files < <(find core ui app -name '*.cpp' | sort)
+[ ${#files[@]} -gt 0 ] || { echo "tidy: no sources found" >&2; exit 2; }
 start=$(date +%s)
 log=$(mktemp "${TMPDIR:-/tmp}/fatek-tidy.XXXXXX")
 trap 'rm -f "$log"' EXIT
