@@ -23,6 +23,9 @@ constexpr Entry entries[] = {
 #define FATEK_MSG(id, argc, text) {#id, text},
 #include "messagelist.h"
 #include "messagelistframes.h"
+#include "messagelistnames.h"
+#include "messagelistprogram.h"
+#include "messagelistsnapshot.h"
 #undef FATEK_MSG
 };
 

@@ -19,6 +19,9 @@ enum class MsgId : std::uint16_t {
 #ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
 #include "messagelist.h"
 #include "messagelistframes.h"
+#include "messagelistnames.h"
+#include "messagelistprogram.h"
+#include "messagelistsnapshot.h"
 #endif
 #undef FATEK_MSG
 };
@@ -29,6 +32,9 @@ inline constexpr int argCounts[] = {
 #ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
 #include "messagelist.h"
 #include "messagelistframes.h"
+#include "messagelistnames.h"
+#include "messagelistprogram.h"
+#include "messagelistsnapshot.h"
 #endif
 #undef FATEK_MSG
 };
