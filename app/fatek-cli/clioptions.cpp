@@ -28,6 +28,8 @@ QString usageText()
         "  --retries N              extra attempts after a timeout [2]\n"
         "  --read-only              operator mode: writes, RUN/STOP, forcing and raw frames are "
         "refused\n"
+        "  --yes                    confirm restore / restore-values without asking (needed when\n"
+        "                           standard input is not a terminal)\n"
         "  --json | --csv           output one JSON object per line / CSV instead of a table\n"
         "  --help, --version\n"
         "\n"
@@ -171,6 +173,8 @@ CliParseResult parseCommandLine(const QStringList &arguments)
             o.format = OutputFormat::Csv;
         else if (name == QLatin1String("read-only"))
             o.readOnly = true;
+        else if (name == QLatin1String("yes"))
+            o.assumeYes = true;
         else if (name == QLatin1String("frame"))
             frameGiven = true;
         else if (name == QLatin1String("hex"))

@@ -80,6 +80,7 @@ struct CliOptions
     bool timeoutGiven = false;
     std::uint8_t station = 1;
     bool readOnly = false;
+    bool assumeYes = false; // --yes: the confirmation of restore / restore-values is given
     OutputFormat format = OutputFormat::Table;
 
     QList<CliStep> steps; // run in order; the first failure ends the program

@@ -4,7 +4,18 @@
 #include "core/session/qtbytes.h"
 #include "core/watch/valueformat.h"
 
+#include <QTextStream>
+
+#include <cstdio>
 #include <span>
+
+#ifdef Q_OS_WIN
+#include <io.h>
+#define FATEK_ISATTY(fd) _isatty(fd)
+#else
+#include <unistd.h>
+#define FATEK_ISATTY(fd) isatty(fd)
+#endif
 
 namespace Fatek::CliText {
 
@@ -60,6 +71,20 @@ QString formatNames()
     for (const DisplayFormat f : ValueFormat::allFormats())
         names << ValueFormat::name(f);
     return names.join(QStringLiteral(", "));
+}
+
+Confirmation confirm(const QString &question, bool assumeYes)
+{
+    if (assumeYes)
+        return Confirmation::Yes;
+    if (!FATEK_ISATTY(fileno(stdin)))
+        return Confirmation::NoTerminal;
+    QTextStream err(stderr);
+    err << question << QStringLiteral(" [y/N] ") << Qt::flush;
+    // Blocking on purpose: nothing is written before the person answers.
+    const QString answer = QTextStream(stdin).readLine().trimmed().toLower();
+    return answer == QLatin1String("y") || answer == QLatin1String("yes") ? Confirmation::Yes
+                                                                          : Confirmation::No;
 }
 
 } // namespace Fatek::CliText

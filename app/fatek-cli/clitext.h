@@ -29,4 +29,10 @@ QString error(const ProtocolError &e);
 // The display formats' names, comma-separated (for usage errors).
 QString formatNames();
 
+// The answer to a question asked before a dangerous command (restore): --yes answers it, a
+// terminal is asked on stderr and answers on stdin ("y"/"yes"); with neither, the command is
+// refused (scripts must say --yes).
+enum class Confirmation { Yes, No, NoTerminal };
+Confirmation confirm(const QString &question, bool assumeYes);
+
 } // namespace Fatek::CliText
