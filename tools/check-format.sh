@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Fails when a tracked C++ file differs from .clang-format (fix: clang-format -i FILE).
+# Fails when a C++ file of the project differs from .clang-format (fix: clang-format -i FILE).
+# find, not git ls-files: CI's fresh root gets the sources without .git.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-git ls-files -z '*.cpp' '*.h' | xargs -0 clang-format --dry-run --Werror
+find core ui app tests bench fuzz packaging -name build -prune -o \( -name '*.cpp' -o -name '*.h' \) -print0 |
+    xargs -0 clang-format --dry-run --Werror
