@@ -536,8 +536,7 @@ void TestFaconCodec::programPageAnswerForms()
     QCOMPARE(withDigit->values, expected);
 
     const auto withoutDigit = m_codec.decodeResponse(frame("014F" + words), r);
-    QVERIFY2(withoutDigit.ok(),
-             withoutDigit.ok() ? "" : withoutDigit.error().text().c_str());
+    QVERIFY2(withoutDigit.ok(), withoutDigit.ok() ? "" : withoutDigit.error().text().c_str());
     QCOMPARE(withoutDigit->values, expected);
 
     const auto error = m_codec.decodeResponse(frame("014F4"), r);
