@@ -1037,6 +1037,134 @@
             <source>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</source>
             <translation>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</translation>
         </message>
+        <message>
+            <source>%1 series, %2-word program</source>
+            <translation>%1 series, %2-word program</translation>
+        </message>
+        <message>
+            <source>Cannot read the program backup %1: %2</source>
+            <translation>Cannot read the program backup %1: %2</translation>
+        </message>
+        <message>
+            <source>Cannot write the program backup %1: %2</source>
+            <translation>Cannot write the program backup %1: %2</translation>
+        </message>
+        <message>
+            <source>The program backup is not valid JSON: %1</source>
+            <translation>The program backup is not valid JSON: %1</translation>
+        </message>
+        <message>
+            <source>The file is not a program backup (format &quot;%1&quot;, expected &quot;fatek-program&quot;).</source>
+            <translation>The file is not a program backup (format &quot;%1&quot;, expected &quot;fatek-program&quot;).</translation>
+        </message>
+        <message>
+            <source>The program backup has format version %1, which this program cannot read.</source>
+            <translation>The program backup has format version %1, which this program cannot read.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: the field &quot;%1&quot; is missing or wrong.</source>
+            <translation>The program backup is damaged: the field &quot;%1&quot; is missing or wrong.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged or truncated: it holds %1 pages, its header needs %2.</source>
+            <translation>The program backup is damaged or truncated: it holds %1 pages, its header needs %2.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: page %1 is not 64 words of 4 hex digits.</source>
+            <translation>The program backup is damaged: page %1 is not 64 words of 4 hex digits.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: its checksum is %1, its words give %2.</source>
+            <translation>The program backup is damaged: its checksum is %1, its words give %2.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: page 0 is not a program header.</source>
+            <translation>The program backup is damaged: page 0 is not a program header.</translation>
+        </message>
+        <message>
+            <source>No connection to a PLC.</source>
+            <translation>No connection to a PLC.</translation>
+        </message>
+        <message>
+            <source>A program transfer is already running.</source>
+            <translation>A program transfer is already running.</translation>
+        </message>
+        <message>
+            <source>Operator mode: restoring a program is refused; nothing was written.</source>
+            <translation>Operator mode: restoring a program is refused; nothing was written.</translation>
+        </message>
+        <message>
+            <source>The PLC is in RUN: switch it to STOP before restoring a program; nothing was written.</source>
+            <translation>The PLC is in RUN: switch it to STOP before restoring a program; nothing was written.</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its program size (detail status 53).</source>
+            <translation>The PLC did not report its program size (detail status 53).</translation>
+        </message>
+        <message>
+            <source>The PLC's page 0 is not a program header.</source>
+            <translation>The PLC's page 0 is not a program header.</translation>
+        </message>
+        <message>
+            <source>The backup is for a %1, the PLC holds a %2: not restored, nothing was written.</source>
+            <translation>The backup is for a %1, the PLC holds a %2: not restored, nothing was written.</translation>
+        </message>
+        <message>
+            <source>Reading program page %1 failed: %2</source>
+            <translation>Reading program page %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>Writing program page %1 failed: %2</source>
+            <translation>Writing program page %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>Verification failed: %1 pages on the PLC differ from the backup (%2).</source>
+            <translation>Verification failed: %1 pages on the PLC differ from the backup (%2).</translation>
+        </message>
+        <message>
+            <source>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</source>
+            <translation>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</translation>
+        </message>
+        <message>
+            <source>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</source>
+            <translation>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</translation>
+        </message>
+        <message>
+            <source>Cancelled before anything was written.</source>
+            <translation>Cancelled before anything was written.</translation>
+        </message>
+        <message>
+            <source>Backup done: %1 pages of a %2.</source>
+            <translation>Backup done: %1 pages of a %2.</translation>
+        </message>
+        <message>
+            <source>Restore done: %1 pages written and verified.</source>
+            <translation>Restore done: %1 pages written and verified.</translation>
+        </message>
+        <message>
+            <source>%1 pages differ from the PLC (%2).</source>
+            <translation>%1 pages differ from the PLC (%2).</translation>
+        </message>
+        <message>
+            <source>The PLC already holds this program.</source>
+            <translation>The PLC already holds this program.</translation>
+        </message>
+        <message>
+            <source>Reading the program</source>
+            <translation>Reading the program</translation>
+        </message>
+        <message>
+            <source>Writing the program</source>
+            <translation>Writing the program</translation>
+        </message>
+        <message>
+            <source>Reading the program back to verify</source>
+            <translation>Reading the program back to verify</translation>
+        </message>
+        <message>
+            <source>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</source>
+            <translation>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

@@ -1037,6 +1037,134 @@
             <source>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</source>
             <translation>%1 位元組的二進位訊框 CRC 錯誤（線路雜訊或訊框損壞）。</translation>
         </message>
+        <message>
+            <source>%1 series, %2-word program</source>
+            <translation>%1 系列，%2 字組程式</translation>
+        </message>
+        <message>
+            <source>Cannot read the program backup %1: %2</source>
+            <translation>無法讀取程式備份 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cannot write the program backup %1: %2</source>
+            <translation>無法寫入程式備份 %1：%2</translation>
+        </message>
+        <message>
+            <source>The program backup is not valid JSON: %1</source>
+            <translation>程式備份不是有效的 JSON：%1</translation>
+        </message>
+        <message>
+            <source>The file is not a program backup (format &quot;%1&quot;, expected &quot;fatek-program&quot;).</source>
+            <translation>此檔案不是程式備份（格式為「%1」，應為「fatek-program」）。</translation>
+        </message>
+        <message>
+            <source>The program backup has format version %1, which this program cannot read.</source>
+            <translation>程式備份的格式版本為 %1，本程式無法讀取。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: the field &quot;%1&quot; is missing or wrong.</source>
+            <translation>程式備份已損壞：欄位「%1」遺失或錯誤。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged or truncated: it holds %1 pages, its header needs %2.</source>
+            <translation>程式備份已損壞或不完整：內含 %1 頁，其標頭需要 %2 頁。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: page %1 is not 64 words of 4 hex digits.</source>
+            <translation>程式備份已損壞：第 %1 頁不是 64 個 4 位十六進位字組。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: its checksum is %1, its words give %2.</source>
+            <translation>程式備份已損壞：其檢查碼為 %1，字組計算結果為 %2。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: page 0 is not a program header.</source>
+            <translation>程式備份已損壞：第 0 頁不是程式標頭。</translation>
+        </message>
+        <message>
+            <source>No connection to a PLC.</source>
+            <translation>沒有與 PLC 的連線。</translation>
+        </message>
+        <message>
+            <source>A program transfer is already running.</source>
+            <translation>已有程式傳輸正在進行。</translation>
+        </message>
+        <message>
+            <source>Operator mode: restoring a program is refused; nothing was written.</source>
+            <translation>操作員模式：拒絕還原程式；未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>The PLC is in RUN: switch it to STOP before restoring a program; nothing was written.</source>
+            <translation>PLC 處於 RUN：還原程式前請先切換至 STOP；未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its program size (detail status 53).</source>
+            <translation>PLC 未回報其程式容量（詳細狀態 53）。</translation>
+        </message>
+        <message>
+            <source>The PLC's page 0 is not a program header.</source>
+            <translation>PLC 的第 0 頁不是程式標頭。</translation>
+        </message>
+        <message>
+            <source>The backup is for a %1, the PLC holds a %2: not restored, nothing was written.</source>
+            <translation>此備份適用於 %1，PLC 為 %2：未還原，未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Reading program page %1 failed: %2</source>
+            <translation>讀取程式第 %1 頁失敗：%2</translation>
+        </message>
+        <message>
+            <source>Writing program page %1 failed: %2</source>
+            <translation>寫入程式第 %1 頁失敗：%2</translation>
+        </message>
+        <message>
+            <source>Verification failed: %1 pages on the PLC differ from the backup (%2).</source>
+            <translation>驗證失敗：PLC 上有 %1 頁與備份不同（%2）。</translation>
+        </message>
+        <message>
+            <source>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</source>
+            <translation>備份已於第 %1 頁取消（已讀取 %2／%3 頁）；未儲存檔案。</translation>
+        </message>
+        <message>
+            <source>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</source>
+            <translation>還原已於第 %1 頁取消（已寫入 %2／%3 頁）：PLC 的程式不完整。</translation>
+        </message>
+        <message>
+            <source>Cancelled before anything was written.</source>
+            <translation>已在寫入任何資料前取消。</translation>
+        </message>
+        <message>
+            <source>Backup done: %1 pages of a %2.</source>
+            <translation>備份完成：%2 的 %1 頁。</translation>
+        </message>
+        <message>
+            <source>Restore done: %1 pages written and verified.</source>
+            <translation>還原完成：已寫入並驗證 %1 頁。</translation>
+        </message>
+        <message>
+            <source>%1 pages differ from the PLC (%2).</source>
+            <translation>%1 頁與 PLC 不同（%2）。</translation>
+        </message>
+        <message>
+            <source>The PLC already holds this program.</source>
+            <translation>PLC 已存有此程式。</translation>
+        </message>
+        <message>
+            <source>Reading the program</source>
+            <translation>正在讀取程式</translation>
+        </message>
+        <message>
+            <source>Writing the program</source>
+            <translation>正在寫入程式</translation>
+        </message>
+        <message>
+            <source>Reading the program back to verify</source>
+            <translation>正在讀回程式以驗證</translation>
+        </message>
+        <message>
+            <source>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</source>
+            <translation>驗證已於第 %1 頁取消（已檢查 %2／%3 頁）；程式已完整寫入。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

@@ -45,7 +45,7 @@ class ProgramLoadResult;
 // A PLC program as typed data: the decoded header, the pages (page 0 = the header), and what
 // was known when it was read (the model from 53, the station, the date).
 //
-// File format (JSON, see docs/program-backup.md):
+// File format (JSON; docs/cli.md#program-backup-and-restore):
 //   {"format": "fatek-program", "version": 1, "model": "FBs-28MC, OS V3.1, ...",
 //    "family": "B", "digits": "13", "programWords": 13184, "pageCount": 207, "station": 1,
 //    "date": "2026-11-25T20:00:00Z", "crc32": "1A2B3C4D",

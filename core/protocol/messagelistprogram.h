@@ -30,10 +30,10 @@ FATEK_MSG(ProgramFileBadPage, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The program backup is damaged: page %1 is not 64 words of 4 hex "
                             "digits."))
-FATEK_MSG(
-    ProgramFileChecksum, 2,
-    QT_TRANSLATE_NOOP("Fatek::Message",
-                      "The program backup is damaged: its checksum is %1, its words give %2."))
+FATEK_MSG(ProgramFileChecksum, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The program backup is damaged: its checksum is %1, its words "
+                            "give %2."))
 FATEK_MSG(ProgramFileBadHeader, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The program backup is damaged: page 0 is not a program header."))
