@@ -7,10 +7,12 @@
 #include "core/protocol/faconcodec.h"
 #include "tst_tools_fixture.h"
 
+#include <QEventLoop>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -60,6 +62,45 @@ QString text(const Message &message)
     return QString::fromStdString(english(message));
 }
 
+struct Run
+{
+    int code = -1;
+    QString out;
+    QString err;
+
+    QJsonObject json() const
+    {
+        return QJsonDocument::fromJson(out.trimmed().section(QLatin1Char('\n'), -1).toUtf8())
+            .object();
+    }
+};
+
+// Runs fatek-cli with the event loop turning, so that the in-process simulator answers. Its
+// standard input is a pipe, never a terminal.
+Run runCli(const QStringList &arguments)
+{
+    QProcess p;
+    QEventLoop loop;
+    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
+    QObject::connect(&p, &QProcess::errorOccurred, &loop, &QEventLoop::quit);
+    QTimer::singleShot(60000, &loop, &QEventLoop::quit);
+    p.start(QStringLiteral(FATEK_CLI_PATH), arguments);
+    p.closeWriteChannel();
+    if (p.state() != QProcess::NotRunning)
+        loop.exec();
+    Run r;
+    if (p.state() != QProcess::NotRunning) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("fatek-cli did not end in time");
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
 } // namespace
 
 class TestProgram : public QObject
@@ -83,12 +124,23 @@ private Q_SLOTS:
     void restoreRefusedInOperatorMode();
     void cancelledBackup();
 
+    void cliBackupRestoreRoundTrip();
+    void cliRestoreNeedsConfirmation();
+    void cliRestoreRefusals();
+
 private:
     // Starts the rig (fbs, FACON) with the PLC in RUN or STOP.
     bool open(bool running);
     // Runs `start` on a transfer bound to the rig's session and returns its result.
     ProgramTransferResult run(ProgramTransfer &transfer, const std::function<bool()> &start);
     quint64 frames() const { return m_rig.server->counters().frames; }
+    // fatek-cli's link options for the rig's simulator.
+    QStringList link() const
+    {
+        return {QStringLiteral("--tcp"),
+                QStringLiteral("127.0.0.1:%1").arg(m_rig.server->tcpPort()),
+                QStringLiteral("--protocol"), QStringLiteral("facon")};
+    }
 
     Rig m_rig;
     QTemporaryDir m_dir;
@@ -444,6 +496,95 @@ void TestProgram::cancelledBackup()
     disconnect(cancelAt10);
     QVERIFY(run(transfer, [&] { return transfer.backup(); }).ok());
     QVERIFY(transfer.lastResult().ok());
+}
+
+#define RUN_OK(r)                                                                                  \
+    QVERIFY2((r).code == 0,                                                                        \
+             qPrintable(QStringLiteral("exit %1: %2 %3").arg((r).code).arg((r).err, (r).out)))
+
+void TestProgram::cliBackupRestoreRoundTrip()
+{
+    QVERIFY(open(true));
+    const QString file = m_dir.filePath(QStringLiteral("cli.fprog"));
+    const Run backup
+        = runCli(link() + QStringList{QStringLiteral("--json"), QStringLiteral("backup"), file});
+    RUN_OK(backup);
+    QCOMPARE(backup.json().value(QStringLiteral("pages")).toInt(), 207);
+    QCOMPARE(backup.json().value(QStringLiteral("programWords")).toInt(), 13184);
+    const auto saved = ProgramImage::load(file);
+    QVERIFY(saved.ok());
+    QCOMPARE(imagePages(saved.image()), plcPages(*m_rig.plc));
+
+    const ProgramImage changed = changedImage(ModelProfile::fbs());
+    QVERIFY(m_rig.plc->setProgram(changed.words()));
+    // In RUN: refused, nothing written, the way out named.
+    const Run inRun
+        = runCli(link() + QStringList{QStringLiteral("--yes"), QStringLiteral("restore"), file});
+    QCOMPARE(inRun.code, 4);
+    QVERIFY2(inRun.err.contains(QStringLiteral("fatek-cli stop")), qPrintable(inRun.err));
+    QCOMPARE(plcPages(*m_rig.plc), imagePages(changed));
+
+    const Run restore = runCli(link()
+                               + QStringList{QStringLiteral("--json"), QStringLiteral("--yes"),
+                                             QStringLiteral("stop"), QStringLiteral("--then"),
+                                             QStringLiteral("restore"), file});
+    RUN_OK(restore);
+    QVERIFY2(restore.err.contains(QStringLiteral("5 pages differ from the PLC (1, 5, 100-102)")),
+             qPrintable(restore.err));
+    const QJsonObject result = restore.json();
+    QCOMPARE(result.value(QStringLiteral("verified")).toBool(), true);
+    QCOMPARE(result.value(QStringLiteral("changedPages")).toArray().size(), 5);
+    QCOMPARE(plcPages(*m_rig.plc), imagePages(saved.image()));
+}
+
+void TestProgram::cliRestoreNeedsConfirmation()
+{
+    QVERIFY(open(false));
+    const QString file = m_dir.filePath(QStringLiteral("confirm.fprog"));
+    QVERIFY(!changedImage(ModelProfile::fbs()).save(file));
+    const auto before = plcPages(*m_rig.plc);
+    const Run r = runCli(link() + QStringList{QStringLiteral("restore"), file});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(QStringLiteral("--yes")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QStringLiteral("Nothing was written")), qPrintable(r.err));
+    // What would be written was shown first.
+    QVERIFY2(r.err.contains(QStringLiteral("207 pages")), qPrintable(r.err));
+    QCOMPARE(plcPages(*m_rig.plc), before);
+}
+
+void TestProgram::cliRestoreRefusals()
+{
+    QVERIFY(open(false));
+    const auto before = plcPages(*m_rig.plc);
+    // A damaged file: exit 2 before the link is used.
+    const QString damaged = m_dir.filePath(QStringLiteral("damaged-cli.fprog"));
+    QFile f(damaged);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(changedImage(ModelProfile::fbs()).toJson().left(5000));
+    f.close();
+    const quint64 framesBefore = frames();
+    const Run bad
+        = runCli(link() + QStringList{QStringLiteral("--yes"), QStringLiteral("restore"), damaged});
+    QCOMPARE(bad.code, 2);
+    QVERIFY2(bad.err.contains(QStringLiteral("JSON")), qPrintable(bad.err));
+    QCOMPARE(frames(), framesBefore);
+    // Another model: exit 2.
+    const QString mFile = m_dir.filePath(QStringLiteral("m.fprog"));
+    QVERIFY(!powerOnImage(ModelProfile::mSeries()).save(mFile));
+    const Run other
+        = runCli(link() + QStringList{QStringLiteral("--yes"), QStringLiteral("restore"), mFile});
+    QCOMPARE(other.code, 2);
+    QVERIFY2(other.err.contains(QStringLiteral("M series")), qPrintable(other.err));
+    // Operator mode: exit 5, nothing on the wire.
+    const QString good = m_dir.filePath(QStringLiteral("good.fprog"));
+    QVERIFY(!changedImage(ModelProfile::fbs()).save(good));
+    const quint64 framesRo = frames();
+    const Run ro = runCli(link()
+                          + QStringList{QStringLiteral("--read-only"), QStringLiteral("--yes"),
+                                        QStringLiteral("restore"), good});
+    QCOMPARE(ro.code, 5);
+    QCOMPARE(frames(), framesRo);
+    QCOMPARE(plcPages(*m_rig.plc), before);
 }
 
 QTEST_GUILESS_MAIN(TestProgram)

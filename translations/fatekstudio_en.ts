@@ -2477,6 +2477,118 @@ Meaning %4</translation>
         </message>
     </context>
     <context>
+        <name>Fatek::ProgramTransferDialog</name>
+        <message>
+            <source>Program Backup / Restore</source>
+            <translation>Program Backup / Restore</translation>
+        </message>
+        <message>
+            <source>&amp;Back Up to File…</source>
+            <translation>&amp;Back Up to File…</translation>
+        </message>
+        <message>
+            <source>Read the PLC's program (every page) and save it in a file</source>
+            <translation>Read the PLC's program (every page) and save it in a file</translation>
+        </message>
+        <message>
+            <source>&amp;Restore from File…</source>
+            <translation>&amp;Restore from File…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Cancel</translation>
+        </message>
+        <message>
+            <source>Stop after the page in progress</source>
+            <translation>Stop after the page in progress</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>Program backups (*.fprog *.json);;All files (*)</source>
+            <translation>Program backups (*.fprog *.json);;All files (*)</translation>
+        </message>
+        <message>
+            <source>Back Up the PLC Program</source>
+            <translation>Back Up the PLC Program</translation>
+        </message>
+        <message>
+            <source>Restore a PLC Program</source>
+            <translation>Restore a PLC Program</translation>
+        </message>
+        <message>
+            <source>The PLC at %1 is in RUN. A program can only be written in STOP.
+
+Switch the PLC to STOP now?</source>
+            <translation>The PLC at %1 is in RUN. A program can only be written in STOP.
+
+Switch the PLC to STOP now?</translation>
+        </message>
+        <message>
+            <source>Restore Program</source>
+            <translation>Restore Program</translation>
+        </message>
+        <message>
+            <source>Not restored: the PLC stays in RUN. Nothing was written.</source>
+            <translation>Not restored: the PLC stays in RUN. Nothing was written.</translation>
+        </message>
+        <message>
+            <source>STOP failed: %1</source>
+            <translation>STOP failed: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>, about %n s left</source>
+            <translation>
+                <numerusform>, about %n s left</numerusform>
+                <numerusform>, about %n s left</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1: %2 of %3 pages%4</source>
+            <translation>%1: %2 of %3 pages%4</translation>
+        </message>
+        <message>
+            <source>%1 Saved in %2.</source>
+            <translation>%1 Saved in %2.</translation>
+        </message>
+        <message>
+            <source>Write the program from %1 to the PLC at %2?
+
+Backup: %3%4, %5 pages.
+%6
+
+The PLC's program is replaced; every page is read back and compared.</source>
+            <translation>Write the program from %1 to the PLC at %2?
+
+Backup: %3%4, %5 pages.
+%6
+
+The PLC's program is replaced; every page is read back and compared.</translation>
+        </message>
+        <message>
+            <source>Not restored: nothing was written.</source>
+            <translation>Not restored: nothing was written.</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: restoring a program is disabled.</source>
+            <translation>Read-only (operator) mode: restoring a program is disabled.</translation>
+        </message>
+        <message>
+            <source>Write a program backup to the PLC (it must be in STOP)</source>
+            <translation>Write a program backup to the PLC (it must be in STOP)</translation>
+        </message>
+        <message>
+            <source>Operator mode: a backup can be made; restoring a program is disabled.</source>
+            <translation>Operator mode: a backup can be made; restoring a program is disabled.</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::ToolDocks</name>
         <message>
             <source>PLC Control</source>
@@ -2505,6 +2617,14 @@ Meaning %4</translation>
         <message>
             <source>Find the PLCs that answer on the current connection's link</source>
             <translation>Find the PLCs that answer on the current connection's link</translation>
+        </message>
+        <message>
+            <source>&amp;Program Backup / Restore…</source>
+            <translation>&amp;Program Backup / Restore…</translation>
+        </message>
+        <message>
+            <source>Save the PLC's program in a file, or write a saved one back</source>
+            <translation>Save the PLC's program in a file, or write a saved one back</translation>
         </message>
     </context>
     <context>

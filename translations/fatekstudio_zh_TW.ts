@@ -2470,6 +2470,117 @@ Meaning %4</source>
         </message>
     </context>
     <context>
+        <name>Fatek::ProgramTransferDialog</name>
+        <message>
+            <source>Program Backup / Restore</source>
+            <translation>程式備份／還原</translation>
+        </message>
+        <message>
+            <source>&amp;Back Up to File…</source>
+            <translation>備份至檔案(&amp;B)…</translation>
+        </message>
+        <message>
+            <source>Read the PLC's program (every page) and save it in a file</source>
+            <translation>讀取 PLC 的程式（每一頁）並存入檔案</translation>
+        </message>
+        <message>
+            <source>&amp;Restore from File…</source>
+            <translation>從檔案還原(&amp;R)…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>取消</translation>
+        </message>
+        <message>
+            <source>Stop after the page in progress</source>
+            <translation>在目前這一頁完成後停止</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>Program backups (*.fprog *.json);;All files (*)</source>
+            <translation>程式備份 (*.fprog *.json);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>Back Up the PLC Program</source>
+            <translation>備份 PLC 程式</translation>
+        </message>
+        <message>
+            <source>Restore a PLC Program</source>
+            <translation>還原 PLC 程式</translation>
+        </message>
+        <message>
+            <source>The PLC at %1 is in RUN. A program can only be written in STOP.
+
+Switch the PLC to STOP now?</source>
+            <translation>%1 的 PLC 處於 RUN。程式只能在 STOP 時寫入。
+
+現在將 PLC 切換至 STOP 嗎？</translation>
+        </message>
+        <message>
+            <source>Restore Program</source>
+            <translation>還原程式</translation>
+        </message>
+        <message>
+            <source>Not restored: the PLC stays in RUN. Nothing was written.</source>
+            <translation>未還原：PLC 維持 RUN。未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>STOP failed: %1</source>
+            <translation>STOP 失敗：%1</translation>
+        </message>
+        <message numerus="yes">
+            <source>, about %n s left</source>
+            <translation>
+                <numerusform>，約剩 %n 秒</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1: %2 of %3 pages%4</source>
+            <translation>%1：第 %2／%3 頁%4</translation>
+        </message>
+        <message>
+            <source>%1 Saved in %2.</source>
+            <translation>%1 已存入 %2。</translation>
+        </message>
+        <message>
+            <source>Write the program from %1 to the PLC at %2?
+
+Backup: %3%4, %5 pages.
+%6
+
+The PLC's program is replaced; every page is read back and compared.</source>
+            <translation>將 %1 的程式寫入 %2 的 PLC 嗎？
+
+備份：%3%4，%5 頁。
+%6
+
+PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
+        </message>
+        <message>
+            <source>Not restored: nothing was written.</source>
+            <translation>未還原：未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: restoring a program is disabled.</source>
+            <translation>唯讀（操作員）模式：已停用程式還原。</translation>
+        </message>
+        <message>
+            <source>Write a program backup to the PLC (it must be in STOP)</source>
+            <translation>將程式備份寫入 PLC（PLC 必須處於 STOP）</translation>
+        </message>
+        <message>
+            <source>Operator mode: a backup can be made; restoring a program is disabled.</source>
+            <translation>操作員模式：可以備份；已停用程式還原。</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::ToolDocks</name>
         <message>
             <source>PLC Control</source>
@@ -2498,6 +2609,14 @@ Meaning %4</source>
         <message>
             <source>Find the PLCs that answer on the current connection's link</source>
             <translation>找出目前連線上有回應的 PLC</translation>
+        </message>
+        <message>
+            <source>&amp;Program Backup / Restore…</source>
+            <translation>程式備份／還原(&amp;P)…</translation>
+        </message>
+        <message>
+            <source>Save the PLC's program in a file, or write a saved one back</source>
+            <translation>將 PLC 的程式存入檔案，或將已儲存的程式寫回</translation>
         </message>
     </context>
     <context>

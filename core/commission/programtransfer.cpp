@@ -317,9 +317,18 @@ void ProgramTransfer::failRequest(const SessionResult &r, int page, bool writing
         message = writing ? msg<MsgId::ProgramWritePageFailed>(page, why)
                           : msg<MsgId::ProgramReadPageFailed>(page, why);
     }
-    fail(r.errorKind() == ErrorKind::ReadOnly ? Problem::ReadOnly : Problem::Request,
-         std::move(message), r.errorKind());
-    m_result.stoppedAtPage = page;
+    ProgramTransferResult result;
+    result.status = TransferStatus::Failed;
+    result.problem = r.errorKind() == ErrorKind::ReadOnly ? Problem::ReadOnly : Problem::Request;
+    result.errorKind = r.errorKind();
+    result.message = std::move(message);
+    result.stoppedAtPage = page;
+    result.pagesTotal = m_pageCount;
+    result.pagesDone = m_job != Job::Restore         ? m_done
+                       : m_phase == Phase::Writing   ? m_done
+                       : m_phase == Phase::Verifying ? m_pageCount
+                                                     : 0;
+    finish(std::move(result));
 }
 
 void ProgramTransfer::fail(Problem problem, Message message, ErrorKind kind)
