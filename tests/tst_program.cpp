@@ -18,18 +18,10 @@
 #include <QTest>
 
 using namespace Fatek;
+using ToolsTest::plcPages;
 using ToolsTest::Rig;
 
 namespace {
-
-// The simulator's whole program memory, page by page.
-std::vector<std::vector<std::uint32_t>> plcPages(const SimulatedPlc &plc)
-{
-    std::vector<std::vector<std::uint32_t>> pages;
-    for (std::uint16_t p = 0; p < plc.profile().programPages(); ++p)
-        pages.push_back(plc.programPage(p));
-    return pages;
-}
 
 std::vector<std::vector<std::uint32_t>> imagePages(const ProgramImage &image)
 {

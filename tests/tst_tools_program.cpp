@@ -1,9 +1,12 @@
 // ProgramTransferDialog (Tools → Program Backup / Restore…) against the simulator, driven as a
 // person does: the real buttons are clicked, the file and the answers come from the test.
 #include "core/commission/programimage.h"
+#include "testutil.h"
 #include "tst_tools_fixture.h"
+#include "ui/mainwindow/mainwindow.h"
 #include "ui/tools/programtransferdialog.h"
 
+#include <QAction>
 #include <QEventLoop>
 #include <QLabel>
 #include <QProgressBar>
@@ -36,8 +39,10 @@ class TestToolsProgram : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void initTestCase();
     void cleanup();
 
+    void openedFromTheToolsMenu();
     void backupThenRestoreByClicks();
     void restoreDeclinedWritesNothing();
     void operatorModeRefusesRestore();
@@ -67,6 +72,33 @@ void TestToolsProgram::open(bool running)
     m_dialog->setConfirmer(m_rig.confirmer());
     m_dialog->setFileChooser([this](bool) { return m_file; });
     m_dialog->show();
+}
+
+void TestToolsProgram::initTestCase()
+{
+    // Keep the developer's own settings out of the tests.
+    TestUtil::useTestSettings(m_dir.path(), QStringLiteral("tst_tools_program"));
+}
+
+// Tools → Program Backup / Restore… opens one dialog (a second trigger raises it), aimed at the
+// current connection: none here.
+void TestToolsProgram::openedFromTheToolsMenu()
+{
+    MainWindow window;
+    window.show();
+    auto *action = window.findChild<QAction *>(QStringLiteral("programTransferAction"));
+    QVERIFY(action);
+    action->trigger();
+    action->trigger();
+    const auto dialogs = window.findChildren<ProgramTransferDialog *>();
+    QCOMPARE(dialogs.size(), 1);
+    ProgramTransferDialog *dialog = dialogs.first();
+    QVERIFY(dialog->isVisible());
+    QVERIFY(!dialog->findChild<QPushButton *>(QStringLiteral("backupButton"))->isEnabled());
+    QVERIFY(!dialog->findChild<QPushButton *>(QStringLiteral("restoreButton"))->isEnabled());
+    QVERIFY(dialog->findChild<QLabel *>(QStringLiteral("targetLabel"))
+                ->text()
+                .contains(QStringLiteral("No connection")));
 }
 
 void TestToolsProgram::cleanup()

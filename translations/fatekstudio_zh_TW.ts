@@ -1055,7 +1055,7 @@
         </message>
         <message>
             <source>The file is not a program backup (format &quot;%1&quot;, expected &quot;fatek-program&quot;).</source>
-            <translation>此檔案不是程式備份（格式為「%1」，應為「fatek-program」）。</translation>
+            <translation>此檔案不是程式備份（其格式為「%1」）。</translation>
         </message>
         <message>
             <source>The program backup has format version %1, which this program cannot read.</source>
