@@ -302,16 +302,8 @@ void TestProgram::answerWithoutErrorDigit()
     std::string body(withDigit.begin() + 1, withDigit.end() - 3); // "014F0" + 256 hex digits
     QCOMPARE(body.substr(0, 5), std::string("014F0"));
     body.erase(4, 1);
-    Bytes withoutDigit{0x02};
-    unsigned sum = 0x02;
-    for (char c : body) {
-        withoutDigit.push_back(static_cast<std::uint8_t>(c));
-        sum += static_cast<unsigned char>(c);
-    }
-    static const char hex[] = "0123456789ABCDEF";
-    withoutDigit.push_back(static_cast<std::uint8_t>(hex[(sum >> 4) & 0xF]));
-    withoutDigit.push_back(static_cast<std::uint8_t>(hex[sum & 0xF]));
-    withoutDigit.push_back(0x03);
+    // Framed again (STX, LRC, ETX) by the codec's own framing.
+    const Bytes withoutDigit = codec.wrap(Bytes(body.begin(), body.end()), true);
     const auto decoded = codec.decodeResponse(withoutDigit, request);
     QVERIFY(decoded.ok());
     QCOMPARE(decoded->values, plc.programPage(1));
