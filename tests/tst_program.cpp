@@ -115,6 +115,7 @@ private Q_SLOTS:
     void restoreRefusedInRun();
     void restoreRefusedInOperatorMode();
     void cancelledBackup();
+    void verificationNamesThePagesThatDiffer();
 
     void cliBackupRestoreRoundTrip();
     void cliRestoreNeedsConfirmation();
@@ -480,6 +481,27 @@ void TestProgram::cancelledBackup()
     disconnect(cancelAt10);
     QVERIFY(run(transfer, [&] { return transfer.backup(); }).ok());
     QVERIFY(transfer.lastResult().ok());
+}
+
+// A page changed on the PLC behind the transfer's back while it reads back: the restore fails and
+// names exactly that page.
+void TestProgram::verificationNamesThePagesThatDiffer()
+{
+    QVERIFY(open(false));
+    const ProgramImage changed = changedImage(ModelProfile::fbs());
+    ProgramTransfer transfer;
+    SimulatedPlc *plc = m_rig.plc.get();
+    connect(&transfer, &ProgramTransfer::progress, &transfer, [&transfer, plc](int done, int) {
+        if (transfer.phase() == ProgramTransfer::Phase::Verifying && done == 207 + 10)
+            plc->setProgramPage(150, std::vector<std::uint32_t>(64, 0xDEAD));
+    });
+    const ProgramTransferResult r = run(transfer, [&] { return transfer.restore(changed); });
+    QCOMPARE(r.status, ProgramTransferResult::Status::Failed);
+    QCOMPARE(r.problem, ProgramTransferResult::Problem::VerifyFailed);
+    QCOMPARE(r.pages, std::vector<std::uint16_t>{150});
+    QVERIFY2(text(r.message).contains(QStringLiteral("1 pages on the PLC differ from the backup "
+                                                     "(150)")),
+             qPrintable(text(r.message)));
 }
 
 #define RUN_OK(r)                                                                                  \
