@@ -116,6 +116,7 @@ private slots:
     void limits();
     void notInFacon();
     void responseErrors();
+    void programPageAnswerForms();
     void plcErrors();
     void lowerCaseHex();
     void decodeRequestErrors();
@@ -511,6 +512,45 @@ void TestFaconCodec::responseErrors()
     const Request r4e = Request::loopback(1, ascii("ABCDEFG"));
     expectError(frame("014EABCDEFH"), ErrorKind::MalformedResponse, "oopback data differs", &r4e);
     expectError(frame("014E0ABCDEFG"), ErrorKind::MalformedResponse, "oopback data differs", &r4e);
+}
+
+// 4F: the reference answers an error digit and 64 words (257 chars), the seed's drawing shows the
+// 64 words alone (256 chars); both decode to the same page. One char is an error digit; any other
+// length is refused.
+void TestFaconCodec::programPageAnswerForms()
+{
+    const Request r = Request::readProgram(1, 3);
+    std::string words;
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t i = 0; i < Limits::programPageWords; ++i) {
+        const std::uint32_t w = (i * 0x0101u + 0x1A2Bu) & 0xFFFFu;
+        static const char digits[] = "0123456789ABCDEF";
+        for (int shift = 12; shift >= 0; shift -= 4)
+            words += digits[(w >> shift) & 0xFu];
+        expected.push_back(w);
+    }
+    QCOMPARE(words.size(), std::size_t{256});
+
+    const auto withDigit = m_codec.decodeResponse(frame("014F0" + words), r);
+    QVERIFY2(withDigit.ok(), withDigit.ok() ? "" : withDigit.error().text().c_str());
+    QCOMPARE(withDigit->values, expected);
+
+    const auto withoutDigit = m_codec.decodeResponse(frame("014F" + words), r);
+    QVERIFY2(withoutDigit.ok(), withoutDigit.ok() ? "" : withoutDigit.error().text().c_str());
+    QCOMPARE(withoutDigit->values, expected);
+
+    const auto error = m_codec.decodeResponse(frame("014F4"), r);
+    QVERIFY(!error.ok());
+    QCOMPARE(error.error().kind, ErrorKind::PlcError);
+    QCOMPARE(error.error().plcCode, 4);
+
+    // Wrong lengths after an error digit 0: short, long, nothing.
+    for (const std::string &wrong :
+         {"0" + words.substr(0, 254), "0" + words + "0", "0" + words + "00", std::string("0")}) {
+        const auto d = m_codec.decodeResponse(frame("014F" + wrong), r);
+        QVERIFY2(!d.ok(), qPrintable(QString::number(wrong.size())));
+        QCOMPARE(d.error().kind, ErrorKind::MalformedResponse);
+    }
 }
 
 void TestFaconCodec::plcErrors()

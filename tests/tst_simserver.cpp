@@ -310,6 +310,11 @@ bool commandSuite(Master &m, SimulatedPlc &plc, Protocol p)
         V page(64);
         for (std::uint32_t i = 0; i < 64; ++i)
             page[i] = i * 3;
+        // 50 cannot execute in RUN (error 4): the program is written in STOP.
+        const auto refused = m.ask(Request::writeProgram(s, 3, page), p);
+        check(!refused.ok() && refused.error().plcCode == 4 && plc.programPage(3) != page,
+              "50 refused in RUN");
+        askOk(Request::runStop(s, false));
         askOk(Request::writeProgram(s, 3, page));
         check(plc.programPage(3) == page, "50 write page");
         check(askOk(Request::readProgram(s, 3)).values == page, "4F read page");

@@ -215,6 +215,7 @@ void TestSimulatedPlc::illegalValuesAnswer2()
     QCOMPARE(plc.execute(Request::mixedWrite(S, {addr("M0")}, {7})).errorCode, std::uint8_t{2});
     std::vector<std::uint32_t> page(64, 0);
     page[63] = 0x12345;
+    plc.setRunning(false); // 50 is refused in RUN first (error 4)
     QCOMPARE(plc.execute(Request::writeProgram(S, 1, page)).errorCode, std::uint8_t{2});
     Request op = Request::discreteControl(S, DiscreteOp::Set, addr("Y0"));
     op.op = static_cast<DiscreteOp>(9);
@@ -448,6 +449,21 @@ void TestSimulatedPlc::programPages()
     std::vector<std::uint32_t> page(64);
     for (std::uint32_t i = 0; i < 64; ++i)
         page[i] = 0xF000 + i;
+    // Power-on: page 0 is the FBs header ("FB13", 13184 words, 0xFF to the end), page 1 is not
+    // empty, the pages after the demo ladder are.
+    const std::vector<std::uint32_t> header = plc.programPage(0);
+    QCOMPARE(header.size(), std::size_t{64});
+    QCOMPARE(header[0], std::uint32_t{0x4642});
+    QCOMPARE(header[1], std::uint32_t{0x3133});
+    QCOMPARE(header[2], std::uint32_t{0x3380});
+    QCOMPARE(header[63], std::uint32_t{0xFFFF});
+    QVERIFY(plc.programPage(1) != std::vector<std::uint32_t>(64, 0));
+    QCOMPARE(SimulatedPlc(ModelProfile::mSeries()).programPage(0)[0], std::uint32_t{0x464D});
+    // 50 cannot execute in RUN (error 4), and changes nothing.
+    QVERIFY(plc.isRunning());
+    QCOMPARE(plc.execute(Request::writeProgram(S, 206, page)).errorCode, std::uint8_t{4});
+    QCOMPARE(plc.programPage(206), std::vector<std::uint32_t>(64, 0));
+    plc.setRunning(false);
     QCOMPARE(plc.execute(Request::writeProgram(S, 206, page)).errorCode, std::uint8_t{0});
     const Response r = plc.execute(Request::readProgram(S, 206));
     QCOMPARE(r.errorCode, std::uint8_t{0});

@@ -57,6 +57,15 @@ struct Rig
     static QString connectionName() { return QStringLiteral("Test line"); }
 };
 
+// The simulator's whole program memory, page by page.
+inline std::vector<std::vector<std::uint32_t>> plcPages(const Fatek::SimulatedPlc &plc)
+{
+    std::vector<std::vector<std::uint32_t>> pages;
+    for (std::uint16_t p = 0; p < plc.profile().programPages(); ++p)
+        pages.push_back(plc.programPage(p));
+    return pages;
+}
+
 inline Fatek::Address addr(const char *text)
 {
     return Fatek::Address::parse(text).value();

@@ -1037,6 +1037,134 @@
             <source>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</source>
             <translation>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</translation>
         </message>
+        <message>
+            <source>%1 series, %2-word program</source>
+            <translation>%1 series, %2-word program</translation>
+        </message>
+        <message>
+            <source>Cannot read the program backup %1: %2</source>
+            <translation>Cannot read the program backup %1: %2</translation>
+        </message>
+        <message>
+            <source>Cannot write the program backup %1: %2</source>
+            <translation>Cannot write the program backup %1: %2</translation>
+        </message>
+        <message>
+            <source>The program backup is not valid JSON: %1</source>
+            <translation>The program backup is not valid JSON: %1</translation>
+        </message>
+        <message>
+            <source>The file is not a program backup (format &quot;%1&quot;, expected &quot;fatek-program&quot;).</source>
+            <translation>The file is not a program backup (format &quot;%1&quot;, expected &quot;fatek-program&quot;).</translation>
+        </message>
+        <message>
+            <source>The program backup has format version %1, which this program cannot read.</source>
+            <translation>The program backup has format version %1, which this program cannot read.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: the field &quot;%1&quot; is missing or wrong.</source>
+            <translation>The program backup is damaged: the field &quot;%1&quot; is missing or wrong.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged or truncated: it holds %1 pages, its header needs %2.</source>
+            <translation>The program backup is damaged or truncated: it holds %1 pages, its header needs %2.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: page %1 is not 64 words of 4 hex digits.</source>
+            <translation>The program backup is damaged: page %1 is not 64 words of 4 hex digits.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: its checksum is %1, its words give %2.</source>
+            <translation>The program backup is damaged: its checksum is %1, its words give %2.</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: page 0 is not a program header.</source>
+            <translation>The program backup is damaged: page 0 is not a program header.</translation>
+        </message>
+        <message>
+            <source>No connection to a PLC.</source>
+            <translation>No connection to a PLC.</translation>
+        </message>
+        <message>
+            <source>A program transfer is already running.</source>
+            <translation>A program transfer is already running.</translation>
+        </message>
+        <message>
+            <source>Operator mode: restoring a program is refused; nothing was written.</source>
+            <translation>Operator mode: restoring a program is refused; nothing was written.</translation>
+        </message>
+        <message>
+            <source>The PLC is in RUN: switch it to STOP before restoring a program; nothing was written.</source>
+            <translation>The PLC is in RUN: switch it to STOP before restoring a program; nothing was written.</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its program size (detail status 53).</source>
+            <translation>The PLC did not report its program size (detail status 53).</translation>
+        </message>
+        <message>
+            <source>The PLC's page 0 is not a program header.</source>
+            <translation>The PLC's page 0 is not a program header.</translation>
+        </message>
+        <message>
+            <source>The backup is for a %1, the PLC holds a %2: not restored, nothing was written.</source>
+            <translation>The backup is for a %1, the PLC holds a %2: not restored, nothing was written.</translation>
+        </message>
+        <message>
+            <source>Reading program page %1 failed: %2</source>
+            <translation>Reading program page %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>Writing program page %1 failed: %2</source>
+            <translation>Writing program page %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>Verification failed: %1 pages on the PLC differ from the backup (%2).</source>
+            <translation>Verification failed: %1 pages on the PLC differ from the backup (%2).</translation>
+        </message>
+        <message>
+            <source>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</source>
+            <translation>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</translation>
+        </message>
+        <message>
+            <source>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</source>
+            <translation>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</translation>
+        </message>
+        <message>
+            <source>Cancelled before anything was written.</source>
+            <translation>Cancelled before anything was written.</translation>
+        </message>
+        <message>
+            <source>Backup done: %1 pages of a %2.</source>
+            <translation>Backup done: %1 pages of a %2.</translation>
+        </message>
+        <message>
+            <source>Restore done: %1 pages written and verified.</source>
+            <translation>Restore done: %1 pages written and verified.</translation>
+        </message>
+        <message>
+            <source>%1 pages differ from the PLC (%2).</source>
+            <translation>%1 pages differ from the PLC (%2).</translation>
+        </message>
+        <message>
+            <source>The PLC already holds this program.</source>
+            <translation>The PLC already holds this program.</translation>
+        </message>
+        <message>
+            <source>Reading the program</source>
+            <translation>Reading the program</translation>
+        </message>
+        <message>
+            <source>Writing the program</source>
+            <translation>Writing the program</translation>
+        </message>
+        <message>
+            <source>Reading the program back to verify</source>
+            <translation>Reading the program back to verify</translation>
+        </message>
+        <message>
+            <source>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</source>
+            <translation>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>
@@ -2349,6 +2477,118 @@ Meaning %4</translation>
         </message>
     </context>
     <context>
+        <name>Fatek::ProgramTransferDialog</name>
+        <message>
+            <source>Program Backup / Restore</source>
+            <translation>Program Backup / Restore</translation>
+        </message>
+        <message>
+            <source>&amp;Back Up to File…</source>
+            <translation>&amp;Back Up to File…</translation>
+        </message>
+        <message>
+            <source>Read the PLC's program (every page) and save it in a file</source>
+            <translation>Read the PLC's program (every page) and save it in a file</translation>
+        </message>
+        <message>
+            <source>&amp;Restore from File…</source>
+            <translation>&amp;Restore from File…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Cancel</translation>
+        </message>
+        <message>
+            <source>Stop after the page in progress</source>
+            <translation>Stop after the page in progress</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>Program backups (*.fprog *.json);;All files (*)</source>
+            <translation>Program backups (*.fprog *.json);;All files (*)</translation>
+        </message>
+        <message>
+            <source>Back Up the PLC Program</source>
+            <translation>Back Up the PLC Program</translation>
+        </message>
+        <message>
+            <source>Restore a PLC Program</source>
+            <translation>Restore a PLC Program</translation>
+        </message>
+        <message>
+            <source>The PLC at %1 is in RUN. A program can only be written in STOP.
+
+Switch the PLC to STOP now?</source>
+            <translation>The PLC at %1 is in RUN. A program can only be written in STOP.
+
+Switch the PLC to STOP now?</translation>
+        </message>
+        <message>
+            <source>Restore Program</source>
+            <translation>Restore Program</translation>
+        </message>
+        <message>
+            <source>Not restored: the PLC stays in RUN. Nothing was written.</source>
+            <translation>Not restored: the PLC stays in RUN. Nothing was written.</translation>
+        </message>
+        <message>
+            <source>STOP failed: %1</source>
+            <translation>STOP failed: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>, about %n s left</source>
+            <translation>
+                <numerusform>, about %n s left</numerusform>
+                <numerusform>, about %n s left</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1: %2 of %3 pages%4</source>
+            <translation>%1: %2 of %3 pages%4</translation>
+        </message>
+        <message>
+            <source>%1 Saved in %2.</source>
+            <translation>%1 Saved in %2.</translation>
+        </message>
+        <message>
+            <source>Write the program from %1 to the PLC at %2?
+
+Backup: %3%4, %5 pages.
+%6
+
+The PLC's program is replaced; every page is read back and compared.</source>
+            <translation>Write the program from %1 to the PLC at %2?
+
+Backup: %3%4, %5 pages.
+%6
+
+The PLC's program is replaced; every page is read back and compared.</translation>
+        </message>
+        <message>
+            <source>Not restored: nothing was written.</source>
+            <translation>Not restored: nothing was written.</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: restoring a program is disabled.</source>
+            <translation>Read-only (operator) mode: restoring a program is disabled.</translation>
+        </message>
+        <message>
+            <source>Write a program backup to the PLC (it must be in STOP)</source>
+            <translation>Write a program backup to the PLC (it must be in STOP)</translation>
+        </message>
+        <message>
+            <source>Operator mode: a backup can be made; restoring a program is disabled.</source>
+            <translation>Operator mode: a backup can be made; restoring a program is disabled.</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::ToolDocks</name>
         <message>
             <source>PLC Control</source>
@@ -2377,6 +2617,14 @@ Meaning %4</translation>
         <message>
             <source>Find the PLCs that answer on the current connection's link</source>
             <translation>Find the PLCs that answer on the current connection's link</translation>
+        </message>
+        <message>
+            <source>&amp;Program Backup / Restore…</source>
+            <translation>&amp;Program Backup / Restore…</translation>
+        </message>
+        <message>
+            <source>Save the PLC's program in a file, or write a saved one back</source>
+            <translation>Save the PLC's program in a file, or write a saved one back</translation>
         </message>
     </context>
     <context>

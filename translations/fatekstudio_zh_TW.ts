@@ -1037,6 +1037,134 @@
             <source>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</source>
             <translation>%1 位元組的二進位訊框 CRC 錯誤（線路雜訊或訊框損壞）。</translation>
         </message>
+        <message>
+            <source>%1 series, %2-word program</source>
+            <translation>%1 系列，%2 字組程式</translation>
+        </message>
+        <message>
+            <source>Cannot read the program backup %1: %2</source>
+            <translation>無法讀取程式備份 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cannot write the program backup %1: %2</source>
+            <translation>無法寫入程式備份 %1：%2</translation>
+        </message>
+        <message>
+            <source>The program backup is not valid JSON: %1</source>
+            <translation>程式備份不是有效的 JSON：%1</translation>
+        </message>
+        <message>
+            <source>The file is not a program backup (format &quot;%1&quot;, expected &quot;fatek-program&quot;).</source>
+            <translation>此檔案不是程式備份（其格式為「%1」）。</translation>
+        </message>
+        <message>
+            <source>The program backup has format version %1, which this program cannot read.</source>
+            <translation>程式備份的格式版本為 %1，本程式無法讀取。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: the field &quot;%1&quot; is missing or wrong.</source>
+            <translation>程式備份已損壞：欄位「%1」遺失或錯誤。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged or truncated: it holds %1 pages, its header needs %2.</source>
+            <translation>程式備份已損壞或不完整：內含 %1 頁，其標頭需要 %2 頁。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: page %1 is not 64 words of 4 hex digits.</source>
+            <translation>程式備份已損壞：第 %1 頁不是 64 個 4 位十六進位字組。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: its checksum is %1, its words give %2.</source>
+            <translation>程式備份已損壞：其檢查碼為 %1，字組計算結果為 %2。</translation>
+        </message>
+        <message>
+            <source>The program backup is damaged: page 0 is not a program header.</source>
+            <translation>程式備份已損壞：第 0 頁不是程式標頭。</translation>
+        </message>
+        <message>
+            <source>No connection to a PLC.</source>
+            <translation>沒有與 PLC 的連線。</translation>
+        </message>
+        <message>
+            <source>A program transfer is already running.</source>
+            <translation>已有程式傳輸正在進行。</translation>
+        </message>
+        <message>
+            <source>Operator mode: restoring a program is refused; nothing was written.</source>
+            <translation>操作員模式：拒絕還原程式；未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>The PLC is in RUN: switch it to STOP before restoring a program; nothing was written.</source>
+            <translation>PLC 處於 RUN：還原程式前請先切換至 STOP；未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its program size (detail status 53).</source>
+            <translation>PLC 未回報其程式容量（詳細狀態 53）。</translation>
+        </message>
+        <message>
+            <source>The PLC's page 0 is not a program header.</source>
+            <translation>PLC 的第 0 頁不是程式標頭。</translation>
+        </message>
+        <message>
+            <source>The backup is for a %1, the PLC holds a %2: not restored, nothing was written.</source>
+            <translation>此備份適用於 %1，PLC 為 %2：未還原，未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Reading program page %1 failed: %2</source>
+            <translation>讀取程式第 %1 頁失敗：%2</translation>
+        </message>
+        <message>
+            <source>Writing program page %1 failed: %2</source>
+            <translation>寫入程式第 %1 頁失敗：%2</translation>
+        </message>
+        <message>
+            <source>Verification failed: %1 pages on the PLC differ from the backup (%2).</source>
+            <translation>驗證失敗：PLC 上有 %1 頁與備份不同（%2）。</translation>
+        </message>
+        <message>
+            <source>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</source>
+            <translation>備份已於第 %1 頁取消（已讀取 %2／%3 頁）；未儲存檔案。</translation>
+        </message>
+        <message>
+            <source>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</source>
+            <translation>還原已於第 %1 頁取消（已寫入 %2／%3 頁）：PLC 的程式不完整。</translation>
+        </message>
+        <message>
+            <source>Cancelled before anything was written.</source>
+            <translation>已在寫入任何資料前取消。</translation>
+        </message>
+        <message>
+            <source>Backup done: %1 pages of a %2.</source>
+            <translation>備份完成：%2 的 %1 頁。</translation>
+        </message>
+        <message>
+            <source>Restore done: %1 pages written and verified.</source>
+            <translation>還原完成：已寫入並驗證 %1 頁。</translation>
+        </message>
+        <message>
+            <source>%1 pages differ from the PLC (%2).</source>
+            <translation>%1 頁與 PLC 不同（%2）。</translation>
+        </message>
+        <message>
+            <source>The PLC already holds this program.</source>
+            <translation>PLC 已存有此程式。</translation>
+        </message>
+        <message>
+            <source>Reading the program</source>
+            <translation>正在讀取程式</translation>
+        </message>
+        <message>
+            <source>Writing the program</source>
+            <translation>正在寫入程式</translation>
+        </message>
+        <message>
+            <source>Reading the program back to verify</source>
+            <translation>正在讀回程式以驗證</translation>
+        </message>
+        <message>
+            <source>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</source>
+            <translation>驗證已於第 %1 頁取消（已檢查 %2／%3 頁）；程式已完整寫入。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>
@@ -2342,6 +2470,117 @@ Meaning %4</source>
         </message>
     </context>
     <context>
+        <name>Fatek::ProgramTransferDialog</name>
+        <message>
+            <source>Program Backup / Restore</source>
+            <translation>程式備份／還原</translation>
+        </message>
+        <message>
+            <source>&amp;Back Up to File…</source>
+            <translation>備份至檔案(&amp;B)…</translation>
+        </message>
+        <message>
+            <source>Read the PLC's program (every page) and save it in a file</source>
+            <translation>讀取 PLC 的程式（每一頁）並存入檔案</translation>
+        </message>
+        <message>
+            <source>&amp;Restore from File…</source>
+            <translation>從檔案還原(&amp;R)…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>取消</translation>
+        </message>
+        <message>
+            <source>Stop after the page in progress</source>
+            <translation>在目前這一頁完成後停止</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>Program backups (*.fprog *.json);;All files (*)</source>
+            <translation>程式備份 (*.fprog *.json);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>Back Up the PLC Program</source>
+            <translation>備份 PLC 程式</translation>
+        </message>
+        <message>
+            <source>Restore a PLC Program</source>
+            <translation>還原 PLC 程式</translation>
+        </message>
+        <message>
+            <source>The PLC at %1 is in RUN. A program can only be written in STOP.
+
+Switch the PLC to STOP now?</source>
+            <translation>%1 的 PLC 處於 RUN。程式只能在 STOP 時寫入。
+
+現在將 PLC 切換至 STOP 嗎？</translation>
+        </message>
+        <message>
+            <source>Restore Program</source>
+            <translation>還原程式</translation>
+        </message>
+        <message>
+            <source>Not restored: the PLC stays in RUN. Nothing was written.</source>
+            <translation>未還原：PLC 維持 RUN。未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>STOP failed: %1</source>
+            <translation>STOP 失敗：%1</translation>
+        </message>
+        <message numerus="yes">
+            <source>, about %n s left</source>
+            <translation>
+                <numerusform>，約剩 %n 秒</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1: %2 of %3 pages%4</source>
+            <translation>%1：第 %2／%3 頁%4</translation>
+        </message>
+        <message>
+            <source>%1 Saved in %2.</source>
+            <translation>%1 已存入 %2。</translation>
+        </message>
+        <message>
+            <source>Write the program from %1 to the PLC at %2?
+
+Backup: %3%4, %5 pages.
+%6
+
+The PLC's program is replaced; every page is read back and compared.</source>
+            <translation>將 %1 的程式寫入 %2 的 PLC 嗎？
+
+備份：%3%4，%5 頁。
+%6
+
+PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
+        </message>
+        <message>
+            <source>Not restored: nothing was written.</source>
+            <translation>未還原：未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Read-only (operator) mode: restoring a program is disabled.</source>
+            <translation>唯讀（操作員）模式：已停用程式還原。</translation>
+        </message>
+        <message>
+            <source>Write a program backup to the PLC (it must be in STOP)</source>
+            <translation>將程式備份寫入 PLC（PLC 必須處於 STOP）</translation>
+        </message>
+        <message>
+            <source>Operator mode: a backup can be made; restoring a program is disabled.</source>
+            <translation>操作員模式：可以備份；已停用程式還原。</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::ToolDocks</name>
         <message>
             <source>PLC Control</source>
@@ -2370,6 +2609,14 @@ Meaning %4</source>
         <message>
             <source>Find the PLCs that answer on the current connection's link</source>
             <translation>找出目前連線上有回應的 PLC</translation>
+        </message>
+        <message>
+            <source>&amp;Program Backup / Restore…</source>
+            <translation>程式備份／還原(&amp;P)…</translation>
+        </message>
+        <message>
+            <source>Save the PLC's program in a file, or write a saved one back</source>
+            <translation>將 PLC 的程式存入檔案，或將已儲存的程式寫回</translation>
         </message>
     </context>
     <context>

@@ -237,6 +237,15 @@ QString parseScan(StepArgs &a)
     return {};
 }
 
+// backup FILE, restore FILE
+QString parseProgramFile(StepArgs &a)
+{
+    a.step.path = a.positional.at(0);
+    if (a.step.path.trimmed().isEmpty())
+        return QStringLiteral("%1 needs a file name.").arg(a.cmd());
+    return {};
+}
+
 // The commands: name, what it runs, how many arguments it takes (-1: no limit), whether it needs
 // an answer (not for broadcasts), and the parser of its arguments.
 struct CommandSpec
@@ -264,6 +273,8 @@ constexpr CommandSpec commands[] = {
     {"monitor", CliCommand::Monitor, 1, -1, true, parseMonitor},
     {"raw", CliCommand::Raw, 1, -1, false, parseRaw},
     {"scan", CliCommand::Scan, 0, 1, false, parseScan},
+    {"backup", CliCommand::Backup, 1, 1, true, parseProgramFile},
+    {"restore", CliCommand::Restore, 1, 1, true, parseProgramFile},
 };
 
 const CommandSpec *findCommand(const QString &name)

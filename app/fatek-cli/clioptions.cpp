@@ -58,9 +58,15 @@ QString usageText()
         "auto:\n"
         "                           binary framing for hex bytes, FACON for ASCII text)\n"
         "  scan [FROM..TO]          which stations answer (default 1..254)\n"
+        "  backup FILE              read the PLC's program (53, 4F every page) into FILE (JSON)\n"
+        "  restore FILE             write the program in FILE to the PLC (50 every page, read\n"
+        "                           back and compared); shows the pages that differ and asks "
+        "first;\n"
+        "                           the PLC must be in STOP (fatek-cli stop --then restore FILE)\n"
         "\n"
-        "Exit codes: 0 ok, 2 usage, 3 link failure (timeout, no connection), 4 PLC error, 5 "
-        "refused by --read-only.\n");
+        "Exit codes: 0 ok, 1 file not written, 2 usage (also a damaged backup, another model, a\n"
+        "restore not confirmed), 3 link failure (timeout, no connection), 4 PLC error (also RUN\n"
+        "during restore, verification failed), 5 refused by --read-only.\n");
 }
 
 QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,

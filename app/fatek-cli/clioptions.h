@@ -37,7 +37,9 @@ enum class CliCommand {
     Loopback,
     Monitor,
     Raw,
-    Scan
+    Scan,
+    Backup,
+    Restore
 };
 enum class OutputFormat { Table, Json, Csv };
 
@@ -58,6 +60,8 @@ struct CliStep
     QByteArray rawBytes;
     bool rawFrame = false;
     bool rawHex = false; // typed as hex: binary bytes (--frame under auto: binary framing)
+
+    QString path; // backup / restore: the program backup file
 
     int scanFirst = 1;
     int scanLast = 254;

@@ -27,8 +27,9 @@ CliRunner::CliRunner(const CliOptions &options, QObject *parent)
 
 CliRunner::~CliRunner()
 {
-    // The scanner cancels through the session: drop it first.
+    // The scanner and the program transfer cancel through the session: drop them first.
     m_scanner.reset();
+    m_program.reset();
     m_session.reset();
 }
 
@@ -174,6 +175,12 @@ void CliRunner::interrupt()
         }
         return finish(m_monitorErrors ? ExitCode::Plc : ExitCode::Ok);
     }
+    if (m_program && m_program->isRunning()) {
+        // Stopped between pages: the transfer says how far it got, then the program ends.
+        m_interrupted = true;
+        m_program->cancel();
+        return;
+    }
     m_out.error(QStringLiteral("Interrupted."), ExitCode::Interrupted);
     finish(ExitCode::Interrupted);
 }
@@ -234,6 +241,8 @@ void CliRunner::dispatch()
     case CliCommand::Monitor: runMonitor(); break;
     case CliCommand::Raw: runRaw(); break;
     case CliCommand::Scan: runScan(); break;
+    case CliCommand::Backup: runBackup(); break;
+    case CliCommand::Restore: runRestore(); break;
     }
 }
 

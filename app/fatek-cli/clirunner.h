@@ -2,6 +2,7 @@
 
 #include "clioptions.h"
 #include "clioutput.h"
+#include "core/commission/programtransfer.h"
 #include "core/protocol/request.h"
 #include "core/session/loopbackstats.h"
 #include "core/session/requesttracker.h"
@@ -78,6 +79,14 @@ private:
     void runMonitor();
     void runRaw();
     void runScan();
+    void runBackup();
+    void runRestore();
+    // Restore, once the PLC's program is compared with the file: ask, then write.
+    void confirmRestore(const ProgramImage &image, const ProgramTransferResult &check);
+    void startTransfer();
+    void showTransferProgress(int done, int total);
+    // A backup, check or restore that did not succeed: its message and exit code.
+    void failTransfer(const ProgramTransferResult &result);
 
     QString stationText() const;
     QJsonObject itemJson(const Address &address) const;
@@ -108,6 +117,11 @@ private:
     DataLogger m_logger;                          // --output
     std::vector<ItemValues> m_monitorItems;       // step().items with their poll ids
     QHash<std::uint64_t, qsizetype> m_monitorIds; // poll id -> item
+
+    // backup / restore
+    std::unique_ptr<ProgramTransfer> m_program;
+    bool m_progressShown = false;
+    bool m_interrupted = false;
 };
 
 } // namespace Fatek

@@ -73,6 +73,11 @@ QString formatNames()
     return names.join(QStringLiteral(", "));
 }
 
+bool stderrIsTerminal()
+{
+    return FATEK_ISATTY(fileno(stderr));
+}
+
 Confirmation confirm(const QString &question, bool assumeYes)
 {
     if (assumeYes)

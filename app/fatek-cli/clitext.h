@@ -32,6 +32,9 @@ QString formatNames();
 // The answer to a question asked before a dangerous command (restore): --yes answers it, a
 // terminal is asked on stderr and answers on stdin ("y"/"yes"); with neither, the command is
 // refused (scripts must say --yes).
+// Whether standard error is a terminal (progress lines are shown only there).
+bool stderrIsTerminal();
+
 enum class Confirmation { Yes, No, NoTerminal };
 Confirmation confirm(const QString &question, bool assumeYes);
 

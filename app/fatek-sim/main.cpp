@@ -1,6 +1,7 @@
 // fatek-sim: a simulated FATEK PLC on TCP, UDP and/or a serial port, both protocols everywhere.
 
 #include "app/common/quitsignal.h"
+#include "core/commission/programimage.h"
 #include "core/sim/modelprofile.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
@@ -123,6 +124,11 @@ int main(int argc, char *argv[])
         QStringLiteral("refuse-run"),
         QStringLiteral("Answer RUN commands with error <code> (5, 6, 7 or 9)."),
         QStringLiteral("code"));
+    const QCommandLineOption programOpt(
+        QStringLiteral("program"),
+        QStringLiteral("Load a program backup <file> (fatek-cli backup) into program memory; it "
+                       "must be of the profile's model."),
+        QStringLiteral("file"));
     const QCommandLineOption verboseOpt(QStringLiteral("verbose"),
                                         QStringLiteral("Log one line per request."));
     const QCommandLineOption latencyOpt(QStringLiteral("latency"),
@@ -169,7 +175,7 @@ int main(int argc, char *argv[])
                        bindOpt,       stationOpt, profileOpt, ladderOpt,     stopOpt,
                        refuseOpt,     verboseOpt, latencyOpt, jitterOpt,     turnaroundOpt,
                        baudOpt,       dropOpt,    corruptOpt, garbageOpt,    chunkOpt,
-                       chunkDelayOpt, closeOpt,   wrongOpt,   seedOpt});
+                       chunkDelayOpt, closeOpt,   wrongOpt,   seedOpt,       programOpt});
     parser.process(app);
 
     if (!parser.isSet(tcpOpt) && !parser.isSet(udpOpt) && !parser.isSet(serialOpt))
@@ -244,6 +250,21 @@ int main(int argc, char *argv[])
         plc.setRunRefusalCode(static_cast<std::uint8_t>(code.toUInt()));
     }
 
+    if (parser.isSet(programOpt)) {
+        const ProgramImage::LoadResult loaded = ProgramImage::load(parser.value(programOpt));
+        if (!loaded.ok())
+            return fail(QString::fromStdString(loaded.error().text()));
+        const ProgramHeader own = profile->programHeader();
+        if (!loaded.image().header().sameModel(own) || !plc.setProgram(loaded.image().words())) {
+            return fail(QStringLiteral("the program backup %1 is for a %2, the profile \"%3\" is "
+                                       "a %4.")
+                            .arg(parser.value(programOpt),
+                                 QString::fromStdString(english(loaded.image().header().model())),
+                                 QString::fromStdString(profile->name),
+                                 QString::fromStdString(english(own.model()))));
+        }
+    }
+
     SimServer server(&plc);
     server.setStation(static_cast<std::uint8_t>(station));
     server.setBindAddress(bind);
@@ -290,8 +311,9 @@ int main(int argc, char *argv[])
     server.setDemoLadder(parser.isSet(ladderOpt));
     out() << "station " << station << ", profile " << QString::fromStdString(profile->description)
           << ", " << (plc.isRunning() ? "RUN" : "STOP")
-          << (server.demoLadder() ? ", demo ladder" : "") << ", faults: " << faults.describe()
-          << Qt::endl;
+          << (server.demoLadder() ? ", demo ladder" : "")
+          << (parser.isSet(programOpt) ? ", program " + parser.value(programOpt) : QString())
+          << ", faults: " << faults.describe() << Qt::endl;
 
     onQuitSignal(&app, [] { QCoreApplication::quit(); });
     const int rc = app.exec();

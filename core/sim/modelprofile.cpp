@@ -79,6 +79,35 @@ std::uint16_t ModelProfile::programPages() const
         1 + (programWords + Limits::programPageWords - 1) / Limits::programPageWords);
 }
 
+ProgramHeader ModelProfile::programHeader() const
+{
+    ProgramHeader h;
+    h.family = programFamily;
+    const unsigned kilo = ((programWords + 512u) / 1024u) % 100u; // 13184 -> "13"
+    h.digits[0] = static_cast<char>('0' + kilo / 10);
+    h.digits[1] = static_cast<char>('0' + kilo % 10);
+    h.ladderSize = programWords;
+    return h;
+}
+
+std::vector<std::uint16_t> ModelProfile::powerOnProgram() const
+{
+    std::vector<std::uint16_t> words(std::size_t{programPages()} * Limits::programPageWords, 0);
+    const std::vector<std::uint16_t> header = programHeader().encode();
+    std::copy(header.begin(), header.end(), words.begin());
+    // Page 1: a title in ASCII (two characters a word), then 40 instruction-like words.
+    const std::string title = "FATEK-SIM DEMO LADDER " + name;
+    std::size_t at = Limits::programPageWords;
+    for (std::size_t i = 0; i < title.size(); i += 2) {
+        const auto hi = static_cast<std::uint8_t>(title[i]);
+        const auto lo = i + 1 < title.size() ? static_cast<std::uint8_t>(title[i + 1]) : 0;
+        words[at++] = static_cast<std::uint16_t>((hi << 8) | lo);
+    }
+    for (std::uint16_t i = 0; i < 40 && at < words.size(); ++i)
+        words[at++] = static_cast<std::uint16_t>(0x1000u + i * 0x0101u);
+    return words;
+}
+
 Bytes ModelProfile::detailStatus(std::uint8_t status1) const
 {
     Bytes b(64, 0);
@@ -134,6 +163,7 @@ ModelProfile ModelProfile::mSeries()
     p.ioPointsCode = 0x03;
     p.osVersion = 0x31;
     p.programWords = 16384;
+    p.programFamily = 'M';
     p.analogInputs = 100;
     p.analogOutputs = 100;
     return p;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/element.h"
+#include "core/protocol/programheader.h"
 #include "core/protocol/request.h"
 
 #include <array>
@@ -29,6 +30,7 @@ struct ModelProfile
     std::uint8_t ioPointsCode = 2; // 53 STATUS3: 2 = 28 points
     std::uint8_t osVersion = 0x31; // 53 STATUS4: V3.1
     std::uint16_t programWords = 13184;
+    char programFamily = 'B'; // program header byte 1: 'B' FBs, 'M' M series
     std::uint16_t analogInputs = 0;
     std::uint16_t analogOutputs = 0;
 
@@ -39,6 +41,11 @@ struct ModelProfile
     bool contains(const Address &start, std::uint32_t count = 1) const;
     // Program pages 4F/50 can address: page 0 (header) plus the program itself.
     std::uint16_t programPages() const;
+    // Page 0 of this model's program: family, two digits ("13" for 13K words), ladder size.
+    ProgramHeader programHeader() const;
+    // The program memory at power-on (programPages() x 64 words): the header, then a small
+    // recognisable ladder image in page 1 (the same every time), zeros after it.
+    std::vector<std::uint16_t> powerOnProgram() const;
 
     // 64 bytes of detail status (53) for the given STATUS1, layout of the FACON documentation.
     Bytes detailStatus(std::uint8_t status1) const;

@@ -42,7 +42,7 @@ bool inProtocol(const Address &a, Protocol protocol)
 
 SimulatedPlc::SimulatedPlc(const ModelProfile &profile)
     : m_memory(profile)
-    , m_program(std::size_t{profile.programPages()} * Limits::programPageWords, 0)
+    , m_program(profile.powerOnProgram())
     , m_running(true) // a PLC holding a program powers up in RUN
 {}
 
@@ -158,11 +158,31 @@ std::vector<std::uint32_t> SimulatedPlc::programPage(std::uint16_t page) const
             m_program.begin() + static_cast<std::ptrdiff_t>(first + Limits::programPageWords)};
 }
 
+bool SimulatedPlc::setProgramPage(std::uint16_t page, const std::vector<std::uint32_t> &words)
+{
+    const std::lock_guard lock(m_mutex);
+    const std::size_t first = std::size_t{page} * Limits::programPageWords;
+    if (words.size() != Limits::programPageWords || first + words.size() > m_program.size())
+        return false;
+    for (std::size_t i = 0; i < words.size(); ++i)
+        m_program[first + i] = static_cast<std::uint16_t>(words[i] & 0xFFFFu);
+    return true;
+}
+
+bool SimulatedPlc::setProgram(const std::vector<std::uint16_t> &words)
+{
+    const std::lock_guard lock(m_mutex);
+    if (words.size() != m_program.size())
+        return false;
+    m_program = words;
+    return true;
+}
+
 void SimulatedPlc::clear()
 {
     const std::lock_guard lock(m_mutex);
     m_memory.clear();
-    std::fill(m_program.begin(), m_program.end(), std::uint16_t{0});
+    m_program = m_memory.profile().powerOnProgram();
     m_scans = 0;
 }
 
@@ -332,7 +352,8 @@ Response SimulatedPlc::executeLocked(const Request &r, Protocol protocol)
                 resp.values.push_back(m_program[first + i]);
             return resp;
         }
-        if (r.values.size() != Limits::programPageWords)
+        // A real PLC cannot take a program page while it executes the program.
+        if (m_running || r.values.size() != Limits::programPageWords)
             return answer(r, errFormat);
         for (std::uint32_t v : r.values) {
             if (v > 0xFFFF)

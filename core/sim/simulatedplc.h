@@ -50,6 +50,10 @@ public:
     std::optional<bool> isDisabled(const Address &discrete) const;
     bool setDisabled(const Address &discrete, bool disabled);
     std::vector<std::uint32_t> programPage(std::uint16_t page) const; // empty if no such page
+    // Replaces one page (64 words) or the whole program memory (programPages() x 64 words);
+    // false when the page or the size does not fit this model.
+    bool setProgramPage(std::uint16_t page, const std::vector<std::uint32_t> &words);
+    bool setProgram(const std::vector<std::uint16_t> &words);
     // Memory, flags and program back to power-on (STOP stays as it is).
     void clear();
 

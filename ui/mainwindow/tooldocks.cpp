@@ -6,6 +6,7 @@
 #include "ui/tools/forcingpanel.h"
 #include "ui/tools/loopbackdialog.h"
 #include "ui/tools/plccontrolpanel.h"
+#include "ui/tools/programtransferdialog.h"
 #include "ui/tools/rawconsole.h"
 
 #include <QAction>
@@ -15,6 +16,27 @@
 #include <QScrollArea>
 
 namespace Fatek {
+
+namespace {
+
+using Targets = QList<std::function<void(Session *, quint8, const QString &)>>;
+
+// A dialog opened from the Tools menu acts on the current connection and, like the docks, follows
+// it while open (and lets go of a closed one).
+template<typename Dialog>
+void followTarget(Dialog *dialog, Connection *current, Targets *targets)
+{
+    dialog->setTarget(current ? current->session() : nullptr,
+                      current ? current->station() : quint8(1),
+                      current ? current->name() : QString());
+    targets->append(
+        [target = QPointer<Dialog>(dialog)](Session *session, quint8 station, const QString &name) {
+            if (target)
+                target->setTarget(session, station, name);
+        });
+}
+
+} // namespace
 
 ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
     : QObject(window)
@@ -67,19 +89,26 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
         auto *dialog = new LoopbackDialog(m_window);
         dialog->setObjectName(QStringLiteral("loopbackDialog"));
         dialog->setAttribute(Qt::WA_DeleteOnClose);
-        Connection *c = m_window->currentConnection();
-        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
-                          c ? c->name() : QString());
-        // Like the docks, an open dialog follows the current connection (and lets go of a closed
-        // one).
-        m_targets.append([target = QPointer<LoopbackDialog>(dialog)](
-                             Session *session, quint8 station, const QString &name) {
-            if (target)
-                target->setTarget(session, station, name);
-        });
+        followTarget(dialog, m_window->currentConnection(), &m_targets);
         dialog->show();
     });
     m_loopbackAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
+    auto *program = toolsMenu->addAction(tr("&Program Backup / Restore…"), this, [this] {
+        // One dialog at a time: a second one would run a second transfer on the same PLC.
+        if (auto *open = m_window->findChild<ProgramTransferDialog *>(
+                QStringLiteral("programTransferDialog"))) {
+            open->raise();
+            open->activateWindow();
+            return;
+        }
+        auto *dialog = new ProgramTransferDialog(m_window);
+        dialog->setObjectName(QStringLiteral("programTransferDialog"));
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        followTarget(dialog, m_window->currentConnection(), &m_targets);
+        dialog->show();
+    });
+    program->setObjectName(QStringLiteral("programTransferAction"));
+    program->setToolTip(tr("Save the PLC's program in a file, or write a saved one back"));
     auto *scan = toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
         Connection *c = m_window->currentConnection();
         if (!c) {

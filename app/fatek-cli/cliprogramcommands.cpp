@@ -1,0 +1,225 @@
+// fatek-cli commands that carry the PLC's program: backup FILE, restore FILE (core's
+// ProgramTransfer over 4F/50; the file is core's ProgramImage).
+#include "clirunner.h"
+
+#include "clitext.h"
+#include "core/session/qtmessage.h"
+
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QTextStream>
+
+namespace Fatek {
+
+using namespace CliText;
+
+namespace {
+
+QString crcText(std::uint32_t crc)
+{
+    return QStringLiteral("%1").arg(crc, 8, 16, QLatin1Char('0')).toUpper();
+}
+
+QJsonArray pagesJson(const std::vector<std::uint16_t> &pages)
+{
+    QJsonArray all;
+    for (const std::uint16_t p : pages)
+        all.append(p);
+    return all;
+}
+
+// Ends the progress line on stderr, if one is shown.
+void endProgressLine(bool *shown)
+{
+    if (*shown) {
+        QTextStream err(stderr);
+        err << Qt::endl;
+    }
+    *shown = false;
+}
+
+} // namespace
+
+void CliRunner::startTransfer()
+{
+    m_program = std::make_unique<ProgramTransfer>();
+    m_program->setSession(m_session.get());
+    m_program->setStation(m_options.station);
+    m_progressShown = false;
+    connect(m_program.get(), &ProgramTransfer::progress, this, &CliRunner::showTransferProgress);
+    armWatchdog(requestBudgetMs());
+}
+
+void CliRunner::showTransferProgress(int done, int total)
+{
+    // Every page is a request: the watchdog waits for the next one.
+    armWatchdog(requestBudgetMs());
+    if (!stderrIsTerminal() || total <= 0)
+        return;
+    QTextStream err(stderr);
+    err << '\r' << englishText(ProgramTransfer::phaseMessage(m_program->phase())) << ": " << done
+        << '/' << total << " pages   " << Qt::flush;
+    m_progressShown = true;
+}
+
+void CliRunner::failTransfer(const ProgramTransferResult &result)
+{
+    using Problem = ProgramTransferResult::Problem;
+    endProgressLine(&m_progressShown);
+    m_watchdog.stop();
+    int code = ExitCode::Link;
+    QString text = englishText(result.message);
+    switch (result.problem) {
+    case Problem::None:
+    case Problem::NoSession:
+    case Problem::Busy:
+    case Problem::NoSize:
+    case Problem::NoHeader: code = ExitCode::Link; break;
+    case Problem::ReadOnly: code = ExitCode::ReadOnly; break;
+    case Problem::Running:
+        code = ExitCode::Plc;
+        text += QStringLiteral(" Run `fatek-cli stop` first, or `fatek-cli stop --then restore "
+                               "FILE`.");
+        break;
+    case Problem::ModelMismatch: code = ExitCode::Usage; break;
+    case Problem::Request: code = exitCodeFor(result.errorKind); break;
+    case Problem::VerifyFailed: code = ExitCode::Plc; break;
+    case Problem::Cancelled: code = ExitCode::Interrupted; break;
+    }
+    QJsonObject extra;
+    extra.insert(QStringLiteral("station"), m_options.station);
+    extra.insert(QStringLiteral("file"), step().path);
+    if (!result.pages.empty())
+        extra.insert(QStringLiteral("pages"), pagesJson(result.pages));
+    if (result.stoppedAtPage >= 0)
+        extra.insert(QStringLiteral("stoppedAtPage"), result.stoppedAtPage);
+    m_out.error(text, code, extra);
+    finish(code);
+}
+
+// --- backup ---------------------------------------------------------------------------------
+
+void CliRunner::runBackup()
+{
+    startTransfer();
+    connect(m_program.get(), &ProgramTransfer::finished, this,
+            [this](const ProgramTransferResult &result) {
+                if (!result.ok() || m_interrupted)
+                    return failTransfer(result);
+                m_watchdog.stop();
+                endProgressLine(&m_progressShown);
+                const ProgramImage &image = m_program->plcImage();
+                if (const auto error = image.save(step().path)) {
+                    m_out.error(QString::fromStdString(error->text()), ExitCode::Internal);
+                    return finish(ExitCode::Internal);
+                }
+                OutputBlock block;
+                block.columns = {QStringLiteral("station"), QStringLiteral("file"),
+                                 QStringLiteral("pages"),   QStringLiteral("program words"),
+                                 QStringLiteral("model"),   QStringLiteral("crc32")};
+                const QString model = image.modelText().isEmpty()
+                                          ? englishText(image.header().model())
+                                          : image.modelText();
+                block.rows << QStringList{stationText(),
+                                          step().path,
+                                          QString::number(image.pageCount()),
+                                          QString::number(image.header().ladderSize),
+                                          model,
+                                          crcText(image.checksum())};
+                QJsonObject json;
+                json.insert(QStringLiteral("station"), m_options.station);
+                json.insert(QStringLiteral("file"), step().path);
+                json.insert(QStringLiteral("pages"), image.pageCount());
+                json.insert(QStringLiteral("programWords"), image.header().ladderSize);
+                json.insert(QStringLiteral("model"), model);
+                json.insert(QStringLiteral("crc32"), crcText(image.checksum()));
+                json.insert(QStringLiteral("ok"), true);
+                block.json << json;
+                m_out.print(block);
+                stepDone();
+            });
+    m_program->backup();
+}
+
+// --- restore --------------------------------------------------------------------------------
+
+void CliRunner::runRestore()
+{
+    const ProgramImage::LoadResult loaded = ProgramImage::load(step().path);
+    if (!loaded.ok()) {
+        m_out.error(QString::fromStdString(loaded.error().text()), ExitCode::Usage);
+        return finish(ExitCode::Usage);
+    }
+    const ProgramImage image = loaded.image();
+    startTransfer();
+    // First the PLC's program, to compare (refused in operator mode and in RUN, and for another
+    // model); then the question; then the writes.
+    connect(m_program.get(), &ProgramTransfer::finished, this,
+            [this, image](const ProgramTransferResult &check) {
+                disconnect(m_program.get(), &ProgramTransfer::finished, this, nullptr);
+                if (!check.ok() || m_interrupted)
+                    return failTransfer(check);
+                confirmRestore(image, check);
+            });
+    m_program->checkRestore(image);
+}
+
+void CliRunner::confirmRestore(const ProgramImage &image, const ProgramTransferResult &check)
+{
+    m_watchdog.stop();
+    endProgressLine(&m_progressShown);
+    const QString model = englishText(image.header().model());
+    m_out.note(QStringLiteral("Restore %1 to station %2: %3 (%4), %5 pages, saved %6.")
+                   .arg(QFileInfo(step().path).fileName(), stationText(), model,
+                        image.modelText().isEmpty() ? QStringLiteral("model not recorded")
+                                                    : image.modelText())
+                   .arg(image.pageCount())
+                   .arg(image.date().isValid() ? image.date().toString(Qt::ISODate)
+                                               : QStringLiteral("at an unknown date")));
+    m_out.note(englishText(check.message));
+    const Confirmation answer = confirm(QStringLiteral("Write %1 pages to the PLC at station %2?")
+                                            .arg(image.pageCount())
+                                            .arg(stationText()),
+                                        m_options.assumeYes);
+    if (answer != Confirmation::Yes) {
+        const QString why = answer == Confirmation::NoTerminal
+                                ? QStringLiteral("Restore writes the PLC's program: give --yes "
+                                                 "when standard input is not a terminal. Nothing "
+                                                 "was written.")
+                                : QStringLiteral("Not confirmed: nothing was written.");
+        m_out.error(why, ExitCode::Usage);
+        return finish(ExitCode::Usage);
+    }
+    const std::vector<std::uint16_t> differing = check.pages;
+    connect(m_program.get(), &ProgramTransfer::finished, this,
+            [this, image, differing](const ProgramTransferResult &result) {
+                if (!result.ok() || m_interrupted)
+                    return failTransfer(result);
+                m_watchdog.stop();
+                endProgressLine(&m_progressShown);
+                OutputBlock block;
+                block.columns
+                    = {QStringLiteral("station"), QStringLiteral("file"), QStringLiteral("pages"),
+                       QStringLiteral("changed pages"), QStringLiteral("result")};
+                block.rows << QStringList{
+                    stationText(), step().path, QString::number(image.pageCount()),
+                    differing.empty() ? QStringLiteral("none")
+                                      : QString::fromStdString(pageListText(differing)),
+                    QStringLiteral("written and verified")};
+                QJsonObject json;
+                json.insert(QStringLiteral("station"), m_options.station);
+                json.insert(QStringLiteral("file"), step().path);
+                json.insert(QStringLiteral("pages"), image.pageCount());
+                json.insert(QStringLiteral("programWords"), image.header().ladderSize);
+                json.insert(QStringLiteral("changedPages"), pagesJson(differing));
+                json.insert(QStringLiteral("verified"), true);
+                json.insert(QStringLiteral("ok"), true);
+                block.json << json;
+                m_out.print(block);
+                stepDone();
+            });
+    armWatchdog(requestBudgetMs());
+    m_program->restore(image);
+}
+
+} // namespace Fatek

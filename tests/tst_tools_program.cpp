@@ -1,0 +1,210 @@
+// ProgramTransferDialog (Tools → Program Backup / Restore…) against the simulator, driven as a
+// person does: the real buttons are clicked, the file and the answers come from the test.
+#include "core/commission/programimage.h"
+#include "testutil.h"
+#include "tst_tools_fixture.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/programtransferdialog.h"
+
+#include <QAction>
+#include <QEventLoop>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+using namespace Fatek;
+using ToolsTest::plcPages;
+using ToolsTest::Rig;
+
+namespace {
+
+// Turns the event loop (no sleeping) until the dialog is idle, at most 60 s.
+bool waitIdle(const ProgramTransferDialog &dialog)
+{
+    QDeadlineTimer deadline(60000);
+    QTimer tick;
+    tick.start(50);
+    while (dialog.isRunning() && !deadline.hasExpired())
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    return !dialog.isRunning();
+}
+
+} // namespace
+
+class TestToolsProgram : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void cleanup();
+
+    void openedFromTheToolsMenu();
+    void backupThenRestoreByClicks();
+    void restoreDeclinedWritesNothing();
+    void operatorModeRefusesRestore();
+    void damagedFileShown();
+
+private:
+    void open(bool running);
+    QPushButton *button(const char *name) const
+    {
+        return m_dialog->findChild<QPushButton *>(QLatin1String(name));
+    }
+
+    Rig m_rig;
+    QTemporaryDir m_dir;
+    QString m_file;
+    std::unique_ptr<ProgramTransferDialog> m_dialog;
+};
+
+void TestToolsProgram::open(bool running)
+{
+    m_rig = Rig();
+    QVERIFY(m_rig.start());
+    m_rig.plc->setRunning(running);
+    m_file = m_dir.filePath(QStringLiteral("gui.fprog"));
+    m_dialog = std::make_unique<ProgramTransferDialog>();
+    m_dialog->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_dialog->setConfirmer(m_rig.confirmer());
+    m_dialog->setFileChooser([this](bool) { return m_file; });
+    m_dialog->show();
+}
+
+void TestToolsProgram::initTestCase()
+{
+    // Keep the developer's own settings out of the tests.
+    TestUtil::useTestSettings(m_dir.path(), QStringLiteral("tst_tools_program"));
+}
+
+// Tools → Program Backup / Restore… opens one dialog (a second trigger raises it), aimed at the
+// current connection: none here.
+void TestToolsProgram::openedFromTheToolsMenu()
+{
+    MainWindow window;
+    window.show();
+    auto *action = window.findChild<QAction *>(QStringLiteral("programTransferAction"));
+    QVERIFY(action);
+    action->trigger();
+    action->trigger();
+    const auto dialogs = window.findChildren<ProgramTransferDialog *>();
+    QCOMPARE(dialogs.size(), 1);
+    ProgramTransferDialog *dialog = dialogs.first();
+    QVERIFY(dialog->isVisible());
+    QVERIFY(!dialog->findChild<QPushButton *>(QStringLiteral("backupButton"))->isEnabled());
+    QVERIFY(!dialog->findChild<QPushButton *>(QStringLiteral("restoreButton"))->isEnabled());
+    QVERIFY(dialog->findChild<QLabel *>(QStringLiteral("targetLabel"))
+                ->text()
+                .contains(QStringLiteral("No connection")));
+}
+
+void TestToolsProgram::cleanup()
+{
+    m_dialog.reset();
+    m_rig.session.reset();
+    m_rig.server.reset();
+    m_rig.plc.reset();
+}
+
+void TestToolsProgram::backupThenRestoreByClicks()
+{
+    open(true);
+    const auto original = plcPages(*m_rig.plc);
+    QTest::mouseClick(button("backupButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QVERIFY2(!m_dialog->messageIsError(), qPrintable(m_dialog->messageText()));
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("Backup done: 207 pages")),
+             qPrintable(m_dialog->messageText()));
+    auto *bar = m_dialog->findChild<QProgressBar *>(QStringLiteral("progressBar"));
+    QCOMPARE(bar->value(), 207);
+    QCOMPARE(bar->maximum(), 207);
+    QVERIFY(ProgramImage::load(m_file).ok());
+
+    // The program changes on the PLC; the restore asks to switch to STOP, then shows what it
+    // will write, then writes and verifies.
+    std::vector<std::uint32_t> page(64, 0x1234);
+    QVERIFY(m_rig.plc->setProgramPage(3, page));
+    QVERIFY(m_rig.plc->setProgramPage(4, page));
+    QTest::mouseClick(button("restoreButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QCOMPARE(m_rig.questions.size(), 2);
+    QVERIFY2(m_rig.questions.at(0).contains(QStringLiteral("STOP")),
+             qPrintable(m_rig.questions.at(0)));
+    QVERIFY2(m_rig.questions.at(1).contains(QStringLiteral("2 pages differ from the PLC (3-4)")),
+             qPrintable(m_rig.questions.at(1)));
+    QVERIFY2(m_rig.questions.at(1).contains(QStringLiteral("207 pages")),
+             qPrintable(m_rig.questions.at(1)));
+    QVERIFY(!m_rig.plc->isRunning());
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("207 pages written and verified")),
+             qPrintable(m_dialog->messageText()));
+    QCOMPARE(plcPages(*m_rig.plc), original);
+    QCOMPARE(bar->value(), 2 * 207);
+}
+
+void TestToolsProgram::restoreDeclinedWritesNothing()
+{
+    open(false);
+    QVERIFY(!ProgramImage::fromWords(ModelProfile::fbs().powerOnProgram())->save(m_file));
+    std::vector<std::uint32_t> page(64, 0x4321);
+    QVERIFY(m_rig.plc->setProgramPage(9, page));
+    const auto before = plcPages(*m_rig.plc);
+    m_rig.answer = false;
+    QTest::mouseClick(button("restoreButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QCOMPARE(m_rig.questions.size(), 1);
+    QVERIFY(m_rig.questions.first().contains(QStringLiteral("(9)")));
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("nothing was written")),
+             qPrintable(m_dialog->messageText()));
+    QCOMPARE(plcPages(*m_rig.plc), before);
+}
+
+void TestToolsProgram::operatorModeRefusesRestore()
+{
+    open(false);
+    QVERIFY(!ProgramImage::fromWords(ModelProfile::fbs().powerOnProgram())->save(m_file));
+    std::vector<std::uint32_t> page(64, 0x4321);
+    QVERIFY(m_rig.plc->setProgramPage(9, page));
+    const auto before = plcPages(*m_rig.plc);
+    m_rig.session->setReadOnly(true);
+    m_dialog->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    QVERIFY(!button("restoreButton")->isEnabled());
+    auto *mode = m_dialog->findChild<QLabel *>(QStringLiteral("modeLabel"));
+    QVERIFY(mode->isVisible());
+    QVERIFY(mode->text().contains(QStringLiteral("Operator mode")));
+    // Even asked directly (the button is disabled), the restore writes nothing.
+    const quint64 frames = m_rig.server->counters().frames;
+    m_dialog->restore();
+    QVERIFY(waitIdle(*m_dialog));
+    QVERIFY(m_dialog->messageIsError());
+    QVERIFY(m_dialog->messageText().contains(QStringLiteral("Operator mode")));
+    QCOMPARE(m_rig.server->counters().frames, frames);
+    QCOMPARE(plcPages(*m_rig.plc), before);
+    QVERIFY(m_rig.questions.isEmpty());
+    // A backup still works.
+    QVERIFY(button("backupButton")->isEnabled());
+    QTest::mouseClick(button("backupButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QVERIFY2(!m_dialog->messageIsError(), qPrintable(m_dialog->messageText()));
+}
+
+void TestToolsProgram::damagedFileShown()
+{
+    open(false);
+    QFile f(m_file);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write("{\"format\": \"fatek-program\", \"version\": 1");
+    f.close();
+    const auto before = plcPages(*m_rig.plc);
+    QTest::mouseClick(button("restoreButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QVERIFY(m_dialog->messageIsError());
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("JSON")),
+             qPrintable(m_dialog->messageText()));
+    QCOMPARE(plcPages(*m_rig.plc), before);
+}
+
+QTEST_MAIN(TestToolsProgram)
+#include "tst_tools_program.moc"

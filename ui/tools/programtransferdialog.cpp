@@ -1,0 +1,285 @@
+#include "programtransferdialog.h"
+
+#include "core/protocol/plcstatus.h"
+#include "core/session/requesttracker.h"
+#include "core/session/session.h"
+#include "ui/common/messageline.h"
+#include "ui/common/uitext.h"
+
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace Fatek {
+
+ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
+    : QDialog(parent)
+    , m_transfer(new ProgramTransfer(this))
+    , m_requests(new RequestTracker(this))
+{
+    setWindowTitle(tr("Program Backup / Restore"));
+    auto *layout = new QVBoxLayout(this);
+    m_targetLabel = new QLabel(this);
+    m_targetLabel->setObjectName(QStringLiteral("targetLabel"));
+    layout->addWidget(m_targetLabel);
+    m_modeLabel = new QLabel(this);
+    m_modeLabel->setObjectName(QStringLiteral("modeLabel"));
+    m_modeLabel->setWordWrap(true);
+    layout->addWidget(m_modeLabel);
+
+    auto *buttons = new QHBoxLayout;
+    m_backupButton = new QPushButton(tr("&Back Up to File…"), this);
+    m_backupButton->setObjectName(QStringLiteral("backupButton"));
+    m_backupButton->setToolTip(tr("Read the PLC's program (every page) and save it in a file"));
+    m_restoreButton = new QPushButton(tr("&Restore from File…"), this);
+    m_restoreButton->setObjectName(QStringLiteral("restoreButton"));
+    m_cancelButton = new QPushButton(tr("Cancel"), this);
+    m_cancelButton->setObjectName(QStringLiteral("cancelButton"));
+    m_cancelButton->setToolTip(tr("Stop after the page in progress"));
+    buttons->addWidget(m_backupButton);
+    buttons->addWidget(m_restoreButton);
+    buttons->addWidget(m_cancelButton);
+    buttons->addStretch(1);
+    layout->addLayout(buttons);
+
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("progressBar"));
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    layout->addWidget(m_progress);
+    m_progressLabel = new QLabel(this);
+    m_progressLabel->setObjectName(QStringLiteral("progressLabel"));
+    layout->addWidget(m_progressLabel);
+    m_message = new MessageLine(3, this);
+    m_message->setObjectName(QStringLiteral("programMessage"));
+    layout->addWidget(m_message);
+    auto *box = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    layout->addWidget(box);
+
+    connect(box, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(this, &QDialog::rejected, this, &ProgramTransferDialog::cancel);
+    connect(m_backupButton, &QPushButton::clicked, this, &ProgramTransferDialog::backup);
+    connect(m_restoreButton, &QPushButton::clicked, this, &ProgramTransferDialog::restore);
+    connect(m_cancelButton, &QPushButton::clicked, this, &ProgramTransferDialog::cancel);
+    connect(m_transfer, &ProgramTransfer::progress, this, &ProgramTransferDialog::onProgress);
+    connect(m_transfer, &ProgramTransfer::finished, this, &ProgramTransferDialog::onFinished);
+    connect(m_requests, &RequestTracker::sessionDestroyed, this,
+            [this] { setTarget(nullptr, m_station, {}); });
+    setTarget(nullptr, 1, {});
+}
+
+void ProgramTransferDialog::setTarget(Session *session, quint8 station,
+                                      const QString &connectionName)
+{
+    if (session != m_session || station != m_station) {
+        if (m_transfer->isRunning())
+            m_transfer->cancel();
+        m_step = Step::None;
+        m_stopping = false;
+    }
+    m_session = session;
+    m_station = station;
+    m_connectionName = connectionName;
+    m_requests->setSession(session);
+    m_transfer->setSession(session);
+    m_transfer->setStation(station);
+    m_targetLabel->setText(session
+                               ? tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName)
+                               : tr("No connection: choose a connection and a station."));
+    updateControls();
+}
+
+QString ProgramTransferDialog::messageText() const
+{
+    return m_message->text();
+}
+
+bool ProgramTransferDialog::messageIsError() const
+{
+    return m_message->isError();
+}
+
+QString ProgramTransferDialog::progressText() const
+{
+    return m_progressLabel->text();
+}
+
+QString ProgramTransferDialog::chooseFile(bool save)
+{
+    if (m_chooser)
+        return m_chooser(save);
+    const QString filter = tr("Program backups (*.fprog *.json);;All files (*)");
+    return save ? QFileDialog::getSaveFileName(this, tr("Back Up the PLC Program"),
+                                               QStringLiteral("plc-program.fprog"), filter)
+                : QFileDialog::getOpenFileName(this, tr("Restore a PLC Program"), {}, filter);
+}
+
+void ProgramTransferDialog::backup()
+{
+    if (!m_session || isRunning())
+        return;
+    const QString path = chooseFile(true);
+    if (path.isEmpty())
+        return;
+    m_path = path;
+    m_step = Step::Backup;
+    m_message->clear();
+    m_elapsed.start();
+    m_transfer->backup();
+    updateControls();
+}
+
+void ProgramTransferDialog::restore()
+{
+    if (!m_session || isRunning())
+        return;
+    if (m_session->isReadOnly()) {
+        showMessage(translated(msg<MsgId::ProgramReadOnly>()), true);
+        return;
+    }
+    const QString path = chooseFile(false);
+    if (path.isEmpty())
+        return;
+    const ProgramImage::LoadResult loaded = ProgramImage::load(path);
+    if (!loaded.ok()) {
+        showMessage(translated(loaded.error().message), true);
+        return;
+    }
+    m_path = path;
+    m_image = loaded.image();
+    m_askedStop = false;
+    m_message->clear();
+    startCheck();
+}
+
+void ProgramTransferDialog::startCheck()
+{
+    m_step = Step::Check;
+    m_elapsed.start();
+    m_transfer->checkRestore(m_image);
+    updateControls();
+}
+
+void ProgramTransferDialog::cancel()
+{
+    if (m_transfer->isRunning())
+        m_transfer->cancel();
+}
+
+void ProgramTransferDialog::askToStop()
+{
+    const QString question
+        = tr("The PLC at %1 is in RUN. A program can only be written in STOP.\n\n"
+             "Switch the PLC to STOP now?")
+              .arg(ToolConfirmation::target(m_station, m_connectionName));
+    if (!ToolConfirmation::ask(this, tr("Restore Program"), question, m_confirmer)) {
+        showMessage(tr("Not restored: the PLC stays in RUN. Nothing was written."), false);
+        return;
+    }
+    m_askedStop = true;
+    m_stopping = true;
+    updateControls();
+    m_requests->submit(Request::runStop(m_station, false), [this](const SessionResult &r) {
+        m_stopping = false;
+        if (!r.ok()) {
+            showMessage(tr("STOP failed: %1").arg(translated(r.errorMessage())), true);
+            updateControls();
+            return;
+        }
+        startCheck();
+    });
+}
+
+void ProgramTransferDialog::onProgress(int done, int total)
+{
+    m_progress->setRange(0, qMax(1, total));
+    m_progress->setValue(done);
+    QString left;
+    if (done > 0 && done < total) {
+        const double perPage = double(m_elapsed.elapsed()) / done;
+        const int seconds = qMax(1, int(perPage * (total - done) / 1000.0 + 0.5));
+        left = tr(", about %n s left", nullptr, seconds);
+    }
+    m_progressLabel->setText(
+        tr("%1: %2 of %3 pages%4")
+            .arg(translated(ProgramTransfer::phaseMessage(m_transfer->phase())))
+            .arg(done)
+            .arg(total)
+            .arg(left));
+}
+
+void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
+{
+    const Step step = m_step;
+    m_step = Step::None;
+    updateControls();
+    if (step == Step::Backup && result.ok()) {
+        if (const auto error = m_transfer->plcImage().save(m_path)) {
+            showMessage(translated(error->message), true);
+            return;
+        }
+        showMessage(
+            tr("%1 Saved in %2.").arg(translated(result.message), QFileInfo(m_path).fileName()),
+            false);
+        return;
+    }
+    if (step == Step::Check && result.ok()) {
+        QString pages = translated(result.message);
+        const QString question
+            = tr("Write the program from %1 to the PLC at %2?\n\n"
+                 "Backup: %3%4, %5 pages.\n%6\n\n"
+                 "The PLC's program is replaced; every page is read back and compared.")
+                  .arg(QFileInfo(m_path).fileName(),
+                       ToolConfirmation::target(m_station, m_connectionName),
+                       translated(m_image.header().model()),
+                       m_image.modelText().isEmpty()
+                           ? QString()
+                           : QStringLiteral(" (%1)").arg(m_image.modelText()))
+                  .arg(m_image.pageCount())
+                  .arg(pages);
+        if (!ToolConfirmation::ask(this, tr("Restore Program"), question, m_confirmer)) {
+            showMessage(tr("Not restored: nothing was written."), false);
+            return;
+        }
+        m_step = Step::Restore;
+        m_elapsed.start();
+        m_transfer->restore(m_image);
+        updateControls();
+        return;
+    }
+    if (step == Step::Check && result.problem == ProgramTransferResult::Problem::Running
+        && !m_askedStop) {
+        askToStop();
+        return;
+    }
+    showMessage(translated(result.message), !result.ok());
+}
+
+void ProgramTransferDialog::showMessage(const QString &text, bool error)
+{
+    m_message->setMessage(text, error);
+}
+
+void ProgramTransferDialog::updateControls()
+{
+    const bool connected = !m_session.isNull();
+    const bool busy = isRunning();
+    const bool readOnly = connected && m_session->isReadOnly();
+    m_backupButton->setEnabled(connected && !busy);
+    m_restoreButton->setEnabled(connected && !busy && !readOnly);
+    m_restoreButton->setToolTip(
+        readOnly ? tr("Read-only (operator) mode: restoring a program is disabled.")
+                 : tr("Write a program backup to the PLC (it must be in STOP)"));
+    m_modeLabel->setText(readOnly ? tr("Operator mode: a backup can be made; restoring a program "
+                                       "is disabled.")
+                                  : QString());
+    m_modeLabel->setVisible(readOnly);
+    m_cancelButton->setEnabled(m_transfer->isRunning());
+}
+
+} // namespace Fatek

@@ -1,0 +1,86 @@
+#pragma once
+
+#include "core/commission/programtransfer.h"
+#include "ui/common/toolconfirmation.h"
+
+#include <QDialog>
+#include <QElapsedTimer>
+#include <QPointer>
+
+#include <functional>
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace Fatek {
+
+class MessageLine;
+class RequestTracker;
+class Session;
+
+// Tools → Program Backup / Restore…: the PLC's program to a file and back (core's
+// ProgramTransfer over 4F/50). A restore asks to switch a PLC in RUN to STOP, shows what it will
+// write (model, size, the pages that differ) before it writes, and is refused in operator mode.
+class ProgramTransferDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    // Picks a file: `save` true for a backup. Empty: the person cancelled.
+    using FileChooser = std::function<QString(bool save)>;
+
+    explicit ProgramTransferDialog(QWidget *parent = nullptr);
+
+    // session may be nullptr: the dialog shows "no connection" and cannot start.
+    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
+    // Tests answer the questions and pick the files without modal dialogs.
+    void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
+    void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+
+    bool isRunning() const { return m_transfer->isRunning() || m_stopping; }
+    QString messageText() const;
+    bool messageIsError() const;
+    QString progressText() const;
+
+public Q_SLOTS:
+    void backup();
+    void restore();
+    void cancel();
+
+private:
+    QString chooseFile(bool save);
+    void startCheck();
+    void onFinished(const ProgramTransferResult &result);
+    void onProgress(int done, int total);
+    void askToStop();
+    void showMessage(const QString &text, bool error);
+    void updateControls();
+
+    enum class Step { None, Backup, Check, Restore };
+
+    ProgramTransfer *m_transfer;
+    RequestTracker *m_requests; // 41 STOP when the person agrees
+    QPointer<Session> m_session;
+    quint8 m_station = 1;
+    QString m_connectionName;
+    Confirmer m_confirmer;
+    FileChooser m_chooser;
+    Step m_step = Step::None;
+    bool m_stopping = false;
+    bool m_askedStop = false;
+    QString m_path;
+    ProgramImage m_image;
+    QElapsedTimer m_elapsed;
+
+    QLabel *m_targetLabel;
+    QLabel *m_modeLabel;
+    QPushButton *m_backupButton;
+    QPushButton *m_restoreButton;
+    QPushButton *m_cancelButton;
+    QProgressBar *m_progress;
+    QLabel *m_progressLabel;
+    MessageLine *m_message;
+};
+
+} // namespace Fatek
