@@ -176,6 +176,20 @@ private Q_SLOTS:
         QVERIFY2(summary.endsWith(u("; and 1 more)")), qPrintable(summary));
     }
 
+    void firstLineBadAddressIsNoHeader()
+    {
+        // A header's first cell holds no digit: "R99999" on line 1 is a bad address, reported.
+        const SymbolImport result = imported("R99999,Too far\nR1,One\n");
+        QCOMPARE(result.imported(), 1);
+        QCOMPARE(result.skipped(), 1);
+        QVERIFY2(problemTexts(result).value(0).startsWith(u("line 1: ")),
+                 qPrintable(problemTexts(result).value(0)));
+        // Without a digit it names the columns.
+        const SymbolImport header = imported("\xE4\xBD\x8D\xE5\x9D\x80\tName\nR1\tOne\n");
+        QCOMPARE(header.imported(), 1);
+        QCOMPARE(header.skipped(), 0);
+    }
+
     void addressesNormalised()
     {
         // R00012 and R12 are one key: the later line wins.

@@ -9,6 +9,7 @@
 #include <QStringDecoder>
 #include <QStringList>
 
+#include <algorithm>
 #include <optional>
 
 namespace Fatek {
@@ -145,10 +146,14 @@ Result<SymbolImport> SymbolImport::fromBytes(const QByteArray &bytes)
 
         const QString addressText = fields->at(0).trimmed();
         const auto address = Address::parse(addressText.toStdString());
-        const bool header = first && !address;
+        // A first row whose first cell is no address, and holds no digit either ("Address",
+        // "位址"), names the columns; "R99999" there is a bad address, reported.
+        const bool header = first && !address
+                            && std::none_of(addressText.cbegin(), addressText.cend(),
+                                            [](QChar c) { return c.isDigit(); });
         first = false;
         if (header)
-            continue; // a first row whose first cell is no address names the columns
+            continue;
         if (addressText.isEmpty()) {
             result.skip(lineNumber, msg<MsgId::SymbolsNoAddress>());
             continue;

@@ -12,7 +12,8 @@ namespace Fatek {
 // A comment/symbol list exported from the ladder project (FATEK WinProladder), read into a
 // SymbolTable. One line per address, columns address, name, comment:
 //
-//   Address,Name,Comment          (optional header: a first row whose first cell is no address)
+//   Address,Name,Comment          (optional header: a first row whose first cell is no address
+//                                  and holds no digit)
 //   R00012,Tank level,"Level in %, 0..1000"
 //   X0<TAB>Start button<TAB>NO contact, panel door
 //
