@@ -96,6 +96,7 @@ private Q_SLOTS:
     void simJsonShape();
     void simCsvShape();
     void simMixedRead();
+    void simMonitorNames();
     void plcErrorExit4();
     void linkFailureExit3();
     void readOnlyExit5();
@@ -239,6 +240,9 @@ void TestCli::usageErrors_data()
     QTest::newRow("option of another command")
         << sim({QStringLiteral("status"), QStringLiteral("--cycles"), QStringLiteral("3")})
         << QStringLiteral("monitor");
+    QTest::newRow("names for read") << sim({QStringLiteral("read"), QStringLiteral("R0"),
+                                            QStringLiteral("--names"), QStringLiteral("names.csv")})
+                                    << QStringLiteral("monitor");
 }
 
 void TestCli::usageErrors()
@@ -525,6 +529,41 @@ void TestCli::simCsvShape()
     QCOMPARE(two.lines().size(), 2);
     QCOMPARE(two.lines().at(0), QStringLiteral("timestamp,R20 [signed],R20 [hex],status"));
     QVERIFY(two.lines().at(1).endsWith(QLatin1String(",0,0x0000,ok")));
+}
+
+// --names: the ladder project's comment/symbol list names the columns, as in the GUI.
+void TestCli::simMonitorNames()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString names = dir.filePath(QStringLiteral("names.txt"));
+    {
+        QFile f(names);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        // Tab-separated, a Big5 name (\xB2\x47\xA6\xEC is "液位"), one bad line.
+        f.write("R00020\t\xB2\x47\xA6\xEC\tcm\nQ1\tNothing\nY1\tPump\n");
+    }
+    const Run m
+        = runCli(sim({QStringLiteral("--csv"), QStringLiteral("monitor"), QStringLiteral("R20"),
+                      QStringLiteral("Y1"), QStringLiteral("R21"), QStringLiteral("--cycles"),
+                      QStringLiteral("1"), QStringLiteral("--names"), names}));
+    RUN_OK(m);
+    QCOMPARE(m.lines().size(), 2);
+    QCOMPARE(m.lines().at(0), QString::fromUtf8("timestamp,液位 (R20),Pump (Y1),R21,status"));
+    QVERIFY2(m.err.contains(QLatin1String("Names imported: 2, lines skipped: 1 (line 2: ")),
+             qPrintable(m.err));
+
+    const Run table
+        = runCli(sim({QStringLiteral("monitor"), QStringLiteral("Y1"), QStringLiteral("--cycles"),
+                      QStringLiteral("1"), QStringLiteral("--names"), names}));
+    RUN_OK(table);
+    QVERIFY2(table.out.contains(QLatin1String("Pump (Y1)")), qPrintable(table.out));
+
+    const Run missing = runCli(
+        sim({QStringLiteral("monitor"), QStringLiteral("Y1"), QStringLiteral("--cycles"),
+             QStringLiteral("1"), QStringLiteral("--names"), dir.filePath(QStringLiteral("no"))}));
+    QCOMPARE(missing.code, 2);
+    QVERIFY2(missing.err.contains(QLatin1String("Cannot read ")), qPrintable(missing.err));
 }
 
 void TestCli::simMixedRead()

@@ -1,5 +1,6 @@
 // ForcingPanel and its forced points view against the simulator running the demo ladder.
 #include "tst_tools_fixture.h"
+#include "ui/common/symbolnames.h"
 #include "ui/tools/discretecontrolbatch.h"
 #include "ui/tools/discretescan.h"
 #include "ui/tools/discretetablemodel.h"
@@ -36,6 +37,7 @@ private Q_SLOTS:
     void scanCoversEveryPointOfThePlc();
     void noConnection();
     void operatorModeDisablesForcing();
+    void namesNextToPoints();
 
 private:
     void select(int first, int last);
@@ -335,6 +337,43 @@ void TestToolsForcing::operatorModeDisablesForcing()
     QTRY_VERIFY_WITH_TIMEOUT(m_panel->messageText().contains(QStringLiteral("Read-only mode")),
                              10000);
     QCOMPARE(m_rig.plc->isDisabled(addr("Y0")), std::optional<bool>(false));
+}
+
+void TestToolsForcing::namesNextToPoints()
+{
+    // The window's names (File > Import Names and Comments…): beside each point of the table,
+    // the comment in its tooltip, and with each forced point.
+    SymbolNames names;
+    SymbolTable table;
+    table.insert(addr("Y0"), {QStringLiteral("Blink lamp"), QStringLiteral("panel, top left")});
+    table.insert(addr("Y2"), {QStringLiteral("Pump"), {}});
+    names.setTable(table);
+    m_panel->setSymbols(&names);
+    m_panel->showRange(ElementType::Y, 0, 4);
+    waitForRead();
+    DiscreteTableModel *model = m_panel->model();
+    QCOMPARE(model->headerData(DiscreteTableModel::NameColumn, Qt::Horizontal).toString(),
+             QStringLiteral("Name"));
+    QCOMPARE(model->index(0, DiscreteTableModel::NameColumn).data().toString(),
+             QStringLiteral("Blink lamp"));
+    QCOMPARE(model->index(0, DiscreteTableModel::PointColumn).data(Qt::ToolTipRole).toString(),
+             QStringLiteral("panel, top left"));
+    QCOMPARE(model->index(1, DiscreteTableModel::NameColumn).data().toString(), QString());
+
+    // Names imported later show at once.
+    SymbolTable more;
+    more.insert(addr("Y1"), {QStringLiteral("Horn"), {}});
+    names.merge(more);
+    QCOMPARE(model->index(1, DiscreteTableModel::NameColumn).data().toString(),
+             QStringLiteral("Horn"));
+
+    QVERIFY(m_rig.plc->setDisabled(addr("Y2"), true));
+    ForcedPointsView *forced = m_panel->forcedPointsView();
+    forced->setRanges(QStringLiteral("Y0-15"));
+    forced->scan();
+    QTRY_VERIFY_WITH_TIMEOUT(forced->scanCount() == 1, 10000);
+    QCOMPARE(forced->listedTexts(), QStringList{QStringLiteral("Y2 Pump")});
+    QVERIFY(m_rig.plc->setDisabled(addr("Y2"), false));
 }
 
 QTEST_MAIN(TestToolsForcing)

@@ -58,7 +58,9 @@ WatchListFile sampleFile()
     WatchTableSpec empty;
     empty.name = QString();
     empty.intervalMs = 10;
-    return WatchListFile{{main, slow, empty}};
+    WatchListFile file;
+    file.tables = {main, slow, empty};
+    return file;
 }
 
 QByteArray fileWithItems(const QByteArray &items, const QByteArray &tableExtra = {})

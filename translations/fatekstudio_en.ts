@@ -1165,6 +1165,54 @@
             <source>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</source>
             <translation>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</translation>
         </message>
+        <message>
+            <source>Cannot read %1: %2</source>
+            <translation>Cannot read %1: %2</translation>
+        </message>
+        <message>
+            <source>The file is not UTF-8 text, and this build cannot decode Big5.</source>
+            <translation>The file is not UTF-8 text, and this build cannot decode Big5.</translation>
+        </message>
+        <message>
+            <source>the line is neither UTF-8 nor Big5 text</source>
+            <translation>the line is neither UTF-8 nor Big5 text</translation>
+        </message>
+        <message>
+            <source>no address in the first column</source>
+            <translation>no address in the first column</translation>
+        </message>
+        <message>
+            <source>%1 has neither a name nor a comment</source>
+            <translation>%1 has neither a name nor a comment</translation>
+        </message>
+        <message>
+            <source>a quoted field is not closed on its line (missing &quot;)</source>
+            <translation>a quoted field is not closed on its line (missing &quot;)</translation>
+        </message>
+        <message>
+            <source>text after the quoted field &quot;%1&quot;</source>
+            <translation>text after the quoted field &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>Names imported: %1, lines skipped: %2</source>
+            <translation>Names imported: %1, lines skipped: %2</translation>
+        </message>
+        <message>
+            <source>Names imported: %1, lines skipped: %2 (%3)</source>
+            <translation>Names imported: %1, lines skipped: %2 (%3)</translation>
+        </message>
+        <message>
+            <source>and %1 more</source>
+            <translation>and %1 more</translation>
+        </message>
+        <message>
+            <source>%1; read as Big5</source>
+            <translation>%1; read as Big5</translation>
+        </message>
+        <message>
+            <source>symbol %1</source>
+            <translation>symbol %1</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>
@@ -1477,6 +1525,10 @@
         <message>
             <source>Forcing</source>
             <translation>Forcing</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
         </message>
     </context>
     <context>
@@ -2973,6 +3025,30 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>%1 — Operator mode (read-only)</source>
             <translation>%1 — Operator mode (read-only)</translation>
+        </message>
+        <message>
+            <source>Import &amp;Names and Comments…</source>
+            <translation>Import &amp;Names and Comments…</translation>
+        </message>
+        <message>
+            <source>Read the names and comments of addresses from the ladder project&apos;s comment/symbol list (CSV or tab-separated text)</source>
+            <translation>Read the names and comments of addresses from the ladder project&apos;s comment/symbol list (CSV or tab-separated text)</translation>
+        </message>
+        <message>
+            <source>%1 cannot be imported: %2</source>
+            <translation>%1 cannot be imported: %2</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>Import Names and Comments</source>
+            <translation>Import Names and Comments</translation>
+        </message>
+        <message>
+            <source>Comment/symbol lists (*.csv *.txt *.tsv);;All files (*)</source>
+            <translation>Comment/symbol lists (*.csv *.txt *.tsv);;All files (*)</translation>
         </message>
     </context>
     <context>

@@ -1165,6 +1165,54 @@
             <source>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</source>
             <translation>驗證已於第 %1 頁取消（已檢查 %2／%3 頁）；程式已完整寫入。</translation>
         </message>
+        <message>
+            <source>Cannot read %1: %2</source>
+            <translation>無法讀取 %1：%2</translation>
+        </message>
+        <message>
+            <source>The file is not UTF-8 text, and this build cannot decode Big5.</source>
+            <translation>檔案不是萬國碼文字，而此版本無法解碼大五碼。</translation>
+        </message>
+        <message>
+            <source>the line is neither UTF-8 nor Big5 text</source>
+            <translation>此行既不是萬國碼也不是大五碼文字</translation>
+        </message>
+        <message>
+            <source>no address in the first column</source>
+            <translation>第一欄沒有位址</translation>
+        </message>
+        <message>
+            <source>%1 has neither a name nor a comment</source>
+            <translation>%1 既沒有名稱也沒有註解</translation>
+        </message>
+        <message>
+            <source>a quoted field is not closed on its line (missing &quot;)</source>
+            <translation>引號欄位未在同一行內結束（缺少 &quot;)</translation>
+        </message>
+        <message>
+            <source>text after the quoted field &quot;%1&quot;</source>
+            <translation>引號欄位「%1」之後還有文字</translation>
+        </message>
+        <message>
+            <source>Names imported: %1, lines skipped: %2</source>
+            <translation>已匯入名稱：%1，略過的行：%2</translation>
+        </message>
+        <message>
+            <source>Names imported: %1, lines skipped: %2 (%3)</source>
+            <translation>已匯入名稱：%1，略過的行：%2（%3）</translation>
+        </message>
+        <message>
+            <source>and %1 more</source>
+            <translation>另有 %1 行</translation>
+        </message>
+        <message>
+            <source>%1; read as Big5</source>
+            <translation>%1；以大五碼讀取</translation>
+        </message>
+        <message>
+            <source>symbol %1</source>
+            <translation>符號 %1</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>
@@ -1476,6 +1524,10 @@
         <message>
             <source>Forcing</source>
             <translation>強制</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名稱</translation>
         </message>
     </context>
     <context>
@@ -2962,6 +3014,30 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>%1 — Operator mode (read-only)</source>
             <translation>%1 — 操作員模式（唯讀）</translation>
+        </message>
+        <message>
+            <source>Import &amp;Names and Comments…</source>
+            <translation>匯入名稱與註解(&amp;N)…</translation>
+        </message>
+        <message>
+            <source>Read the names and comments of addresses from the ladder project&apos;s comment/symbol list (CSV or tab-separated text)</source>
+            <translation>從階梯圖專案的註解／符號清單（CSV 或以定位字元分隔的文字）讀取位址的名稱與註解</translation>
+        </message>
+        <message>
+            <source>%1 cannot be imported: %2</source>
+            <translation>無法匯入 %1：%2</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>Import Names and Comments</source>
+            <translation>匯入名稱與註解</translation>
+        </message>
+        <message>
+            <source>Comment/symbol lists (*.csv *.txt *.tsv);;All files (*)</source>
+            <translation>註解／符號清單 (*.csv *.txt *.tsv);;所有檔案 (*)</translation>
         </message>
     </context>
     <context>

@@ -32,7 +32,7 @@ void CliRunner::runMonitor()
         for (const std::uint64_t id : values.pollIds())
             m_monitorIds.insert(id, i);
         entries += values.pollEntries(m_options.intervalMs);
-        columns << addressText(item.address);
+        columns << (item.name.isEmpty() ? addressText(item.address) : DataLogger::columnName(item));
         const int width = values.width();
         widths << (width == 1 ? 1 : width <= 16 ? 6 : 12);
     }

@@ -51,7 +51,10 @@ QString usageText()
         "unsigned,\n"
         "                           signed, hex, binary, bcd, float, double, bit; --output "
         "appends a CSV\n"
-        "                           data log (timestamp, values, status) to FILE\n"
+        "                           data log (timestamp, values, status) to FILE; --names "
+        "LIST\n"
+        "                           names the columns from the ladder project's comment/symbol\n"
+        "                           list (CSV or tab-separated: address, name, comment)\n"
         "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" "
         "ASCII);\n"
         "                           --frame adds the protocol's framing and checksum (under "
@@ -103,10 +106,10 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         return CliParseResult{std::nullopt, message};
     };
 
-    const QStringList valued = LinkArguments::names()
-                               + QStringList{QStringLiteral("count"), QStringLiteral("interval"),
-                                             QStringLiteral("cycles"), QStringLiteral("output"),
-                                             QStringLiteral("format")};
+    const QStringList valued
+        = LinkArguments::names() + QStringList{QStringLiteral("count"),  QStringLiteral("interval"),
+                                               QStringLiteral("cycles"), QStringLiteral("output"),
+                                               QStringLiteral("format"), QStringLiteral("names")};
     bool onlyPositional = false;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
         const QString &arg = arguments.at(i);
@@ -156,6 +159,10 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                 if (value.trimmed().isEmpty())
                     return fail(QStringLiteral("--output needs a file name."));
                 o.outputPath = value;
+            } else if (name == QLatin1String("names")) {
+                if (value.trimmed().isEmpty())
+                    return fail(QStringLiteral("--names needs a file name."));
+                o.namesPath = value;
             } else if (name == QLatin1String("format")) {
                 o.valueFormat = ValueFormat::fromName(value.trimmed());
                 if (!o.valueFormat)
@@ -234,8 +241,8 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         return fail(QStringLiteral("--count only applies to loopback."));
     if ((intervalGiven || cyclesGiven) && !uses("monitor"))
         return fail(QStringLiteral("--interval and --cycles only apply to monitor."));
-    if ((!o.outputPath.isEmpty() || o.valueFormat) && !uses("monitor"))
-        return fail(QStringLiteral("--output and --format only apply to monitor."));
+    if ((!o.outputPath.isEmpty() || o.valueFormat || !o.namesPath.isEmpty()) && !uses("monitor"))
+        return fail(QStringLiteral("--output, --format and --names only apply to monitor."));
     if ((frameGiven || forceHex || forceAscii) && !uses("raw"))
         return fail(QStringLiteral("--frame, --hex and --ascii only apply to raw."));
     if (countGiven) {

@@ -91,8 +91,9 @@ struct CliOptions
 
     int loopbackCount = 1;
     int intervalMs = 1000;
-    int cycles = 0;                           // monitor: 0 = until interrupted
-    QString outputPath;                       // monitor --output: CSV data log, appended
+    int cycles = 0;     // monitor: 0 = until interrupted
+    QString outputPath; // monitor --output: CSV data log, appended
+    QString namesPath;  // monitor --names: the ladder project's comment/symbol list
     std::optional<DisplayFormat> valueFormat; // monitor --format
 };
 

@@ -6,6 +6,7 @@
 #include "core/sim/modelprofile.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "core/watch/symbolimport.h"
 
 namespace Fatek {
 
@@ -52,6 +53,27 @@ bool CliRunner::startSimulator(QString *error)
     return true;
 }
 
+bool CliRunner::applyNames()
+{
+    // The same import as the GUI's File > Import Names and Comments…: the items of every
+    // monitor step take their address's name, which the table, CSV and data log headers show.
+    const auto names = SymbolImport::fromFile(m_options.namesPath);
+    if (!names) {
+        m_out.error(englishText(names.error().message), ExitCode::Usage);
+        finish(ExitCode::Usage);
+        return false;
+    }
+    if (names->skipped() > 0)
+        m_out.note(englishText(names->summary()));
+    for (CliStep &s : m_options.steps) {
+        for (WatchItemSpec &item : s.items) {
+            if (item.name.isEmpty())
+                item.name = names->symbols().name(item.address);
+        }
+    }
+    return true;
+}
+
 void CliRunner::start()
 {
     registerSessionMetaTypes();
@@ -69,6 +91,8 @@ void CliRunner::start()
         finish(ExitCode::Usage);
         return;
     }
+    if (!m_options.namesPath.isEmpty() && !applyNames())
+        return;
     m_session = std::make_unique<Session>(m_options.link);
     m_session->setReadOnly(m_options.readOnly);
     connect(m_session.get(), &Session::linkStateChanged, this, &CliRunner::onLinkState);

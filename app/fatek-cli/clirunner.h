@@ -51,6 +51,9 @@ private:
     using Handler = RequestTracker::Callback;
 
     bool startSimulator(QString *error);
+    // --names: the names of the list into the monitor items; false (and finished) when the list
+    // cannot be read.
+    bool applyNames();
     void onLinkState(LinkState state, const Message &reason);
     void onValues(const QList<WatchValue> &values);
     void dispatch();

@@ -1,2 +1,29 @@
 // The messages of core, continued (see messagelist.h for the format): the names part of
 // commissioning (issue 18). X-macro list, included only by message.h and message.cpp.
+
+// Importing a comment/symbol list of the ladder project (core/watch/symbolimport.cpp).
+FATEK_MSG(SymbolsCannotRead, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Cannot read %1: %2"))
+FATEK_MSG(SymbolsNoBig5, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The file is not UTF-8 text, and this build cannot decode Big5."))
+// Why a line was skipped (after "line 7: ").
+FATEK_MSG(SymbolsNotBig5, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "the line is neither UTF-8 nor Big5 text"))
+FATEK_MSG(SymbolsNoAddress, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "no address in the first column"))
+FATEK_MSG(SymbolsNoName, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 has neither a name nor a comment"))
+FATEK_MSG(SymbolsQuoteNotClosed, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "a quoted field is not closed on its line (missing \")"))
+FATEK_MSG(SymbolsTextAfterQuote, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "text after the quoted field \"%1\""))
+// The outcome: %1 names imported, %2 lines skipped, %3 the first reasons (joined by Listed).
+FATEK_MSG(SymbolsSummary, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Names imported: %1, lines skipped: %2"))
+FATEK_MSG(SymbolsSummaryProblems, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Names imported: %1, lines skipped: %2 (%3)"))
+FATEK_MSG(SymbolsMoreSkipped, 1, QT_TRANSLATE_NOOP("Fatek::Message", "and %1 more"))
+FATEK_MSG(SymbolsReadAsBig5, 1, QT_TRANSLATE_NOOP("Fatek::Message", "%1; read as Big5"))
+// Watch list files: the place of an error in "symbols" (%1 counts from 1).
+FATEK_MSG(PlaceSymbol, 1, QT_TRANSLATE_NOOP("Fatek::Message", "symbol %1"))

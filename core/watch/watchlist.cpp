@@ -68,6 +68,12 @@ Status validate(const WatchListFile &file)
                 return atPlace(itemPlace(t, i), s.error());
         }
     }
+    qsizetype index = 0;
+    for (const auto &entry : file.symbols.entries()) {
+        if (Status s = validateAddress(entry.first); !s)
+            return atPlace(msg<MsgId::PlaceSymbol>(index + 1), s.error());
+        ++index;
+    }
     return Ok{};
 }
 

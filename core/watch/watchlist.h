@@ -2,6 +2,7 @@
 
 #include "core/protocol/address.h"
 #include "core/protocol/result.h"
+#include "symboltable.h"
 #include "valueformat.h"
 
 #include <QByteArray>
@@ -39,6 +40,8 @@ struct WatchTableSpec
 struct WatchListFile
 {
     QList<WatchTableSpec> tables;
+    // The ladder project's names (File > Import Names and Comments), kept with the list.
+    SymbolTable symbols;
 
     bool operator==(const WatchListFile &) const = default;
 };
@@ -46,7 +49,10 @@ struct WatchListFile
 // The saved watch tables: versioned JSON
 //   {"format":"fatek-studio-watchlist","version":1,"tables":[{"name":"Main","intervalMs":500,
 //    "confirmWrites":true,"items":[{"address":"R100","station":1,"format":"signed","swapWords":false,
-//    "name":"Tank level","comment":"..."}]}]}
+//    "name":"Tank level","comment":"..."}]}],
+//   "symbols":[{"address":"R12","name":"Tank level","comment":"..."}]}
+// "symbols" (the imported names, SymbolTable) is optional and written only when there are names:
+// version 1 readers ignore unknown keys, so the version stays 1.
 // Errors name the place ("table 2, item 5: ...", "line 7: ...").
 namespace WatchList {
 

@@ -2,6 +2,7 @@
 
 // Watch rows imported from CSV (spreadsheet exports).
 
+#include "csvfield.h"
 #include "watchlisterrors.h"
 
 #include <QStringDecoder>
@@ -76,26 +77,7 @@ Result<QList<CsvRecord>> splitCsv(const QString &text)
             QString field;
             if (i < n && text[i] == QLatin1Char('"')) {
                 const int quoteLine = line;
-                ++i;
-                bool closed = false;
-                while (i < n) {
-                    const QChar c = text[i];
-                    if (c == QLatin1Char('"')) {
-                        if (i + 1 < n && text[i + 1] == QLatin1Char('"')) {
-                            field += QLatin1Char('"');
-                            i += 2;
-                            continue;
-                        }
-                        ++i;
-                        closed = true;
-                        break;
-                    }
-                    if (c == QLatin1Char('\n'))
-                        ++line;
-                    field += c;
-                    ++i;
-                }
-                if (!closed) {
+                if (!CsvField::readQuoted(text, i, field, &line)) {
                     return atPlace(
                         linePlace(quoteLine),
                         fileError(QStringLiteral("a quoted field is not closed (missing \")")));

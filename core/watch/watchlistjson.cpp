@@ -148,6 +148,43 @@ Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index)
     return table;
 }
 
+Result<std::pair<Address, Symbol>> symbolFromJson(const QJsonValue &value)
+{
+    if (!value.isObject())
+        return fileError(QStringLiteral("a symbol must be a JSON object"));
+    const QJsonObject object = value.toObject();
+    const QJsonValue address = object.value(QStringLiteral("address"));
+    if (!address.isString())
+        return fileError(QStringLiteral("\"address\" must be text such as \"R100\""));
+    const auto parsed = Address::parse(address.toString().toStdString());
+    if (!parsed)
+        return parsed.error();
+    const auto name = textMember(object, QStringLiteral("name"), QString());
+    if (!name)
+        return name.error();
+    const auto comment = textMember(object, QStringLiteral("comment"), QString());
+    if (!comment)
+        return comment.error();
+    return std::pair{*parsed, Symbol{*name, *comment}};
+}
+
+Result<SymbolTable> symbolsFromJson(const QJsonValue &value)
+{
+    SymbolTable symbols;
+    if (value.isUndefined())
+        return symbols;
+    if (!value.isArray())
+        return fileError(QStringLiteral("\"symbols\" must be a list"));
+    const QJsonArray array = value.toArray();
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const auto symbol = symbolFromJson(array.at(i));
+        if (!symbol)
+            return atPlace(msg<MsgId::PlaceSymbol>(i + 1), symbol.error());
+        symbols.insert(symbol->first, symbol->second);
+    }
+    return symbols;
+}
+
 } // namespace
 
 Result<WatchListFile> load(const QByteArray &json)
@@ -200,6 +237,10 @@ Result<WatchListFile> load(const QByteArray &json)
             return table.error();
         file.tables.append(std::move(table).value());
     }
+    auto symbols = symbolsFromJson(root.value(QStringLiteral("symbols")));
+    if (!symbols)
+        return symbols.error();
+    file.symbols = std::move(symbols).value();
     return file;
 }
 
@@ -236,11 +277,22 @@ QByteArray save(const WatchListFile &file)
             {QStringLiteral("items"), items},
         });
     }
-    const QJsonObject root{
+    QJsonObject root{
         {QStringLiteral("format"), QLatin1String(FormatMarker)},
         {QStringLiteral("version"), CurrentVersion},
         {QStringLiteral("tables"), tables},
     };
+    if (!file.symbols.isEmpty()) {
+        QJsonArray symbols;
+        for (const auto &[address, symbol] : file.symbols.entries()) {
+            symbols.append(QJsonObject{
+                {QStringLiteral("address"), QString::fromStdString(address.toString())},
+                {QStringLiteral("name"), symbol.name},
+                {QStringLiteral("comment"), symbol.comment},
+            });
+        }
+        root.insert(QStringLiteral("symbols"), symbols);
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 

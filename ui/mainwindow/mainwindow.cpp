@@ -9,6 +9,7 @@
 #include "ui/connection/connectiondialog.h"
 #include "ui/connection/connectionmanager.h"
 #include "ui/connection/connectionspanel.h"
+#include "ui/tools/forcingpanel.h"
 #include "ui/trend/tablelogger.h"
 #include "ui/watch/watchtablemodel.h"
 
@@ -83,6 +84,8 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     createActions();
     m_tools = new ToolDocks(this, m_toolsMenu, m_viewMenu);
     connect(m_tools, &ToolDocks::statusMessage, this, &MainWindow::showStatus);
+    for (ForcingPanel *forcing : findChildren<ForcingPanel *>()) // made by ToolDocks
+        forcing->setSymbols(m_document->symbols());
     addWatchTable();
     m_document->markSaved({});
 
@@ -299,6 +302,7 @@ void MainWindow::rebuildRecentMenu()
 WatchTableWidget *MainWindow::addWatchTable(const QString &name)
 {
     auto *table = new WatchTableWidget(m_manager, m_tabs);
+    table->model()->setSymbols(m_document->symbols());
     table->setName(name.isEmpty() ? tr("Watch %1").arg(++m_tableCounter) : name);
     if (Connection *c = currentConnection())
         table->setConnection(c);

@@ -52,6 +52,9 @@ public:
     Status saveWatchList(const QString &path) const { return m_document->save(path); }
     Status loadWatchList(const QString &path) { return m_document->load(path); }
     Status importCsv(const QString &path) { return m_document->importCsv(path); }
+    // File > Import Names and Comments… without its file dialog (see WatchListDocument).
+    Result<SymbolImport> importNames(const QString &path) { return m_document->importNames(path); }
+    const SymbolNames *symbolNames() const { return m_document->symbols(); }
     bool restoreLastWatchList() { return m_document->restoreLast(); }
     // Start-up from the command line (fatek-studio --tcp ... FILE): opens `connection` (if given)
     // as File > New Connection does, loads the watch list `path` (if not empty) as File > Open

@@ -1,7 +1,9 @@
 #include "watchlistdocument.h"
 
+#include "core/watch/symbolimport.h"
 #include "lastdirectory.h"
 #include "mainwindow.h"
+#include "ui/common/symbolnames.h"
 #include "ui/common/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
@@ -24,6 +26,7 @@ const QString reopenKey = QStringLiteral("preferences/reopenLastWatchList");
 WatchListDocument::WatchListDocument(MainWindow *window)
     : QObject(window)
     , m_window(window)
+    , m_symbols(new SymbolNames(this))
 {}
 
 void WatchListDocument::addFileActions(QMenu *file)
@@ -37,6 +40,11 @@ void WatchListDocument::addFileActions(QMenu *file)
     auto *importAction
         = file->addAction(tr("&Import CSV…"), this, &WatchListDocument::importCsvDialog);
     importAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    auto *importNames = file->addAction(tr("Import &Names and Comments…"), this,
+                                        &WatchListDocument::importNamesDialog);
+    importNames->setObjectName(QStringLiteral("importNamesAction"));
+    importNames->setToolTip(tr("Read the names and comments of addresses from the ladder "
+                               "project's comment/symbol list (CSV or tab-separated text)"));
     auto *reopen = file->addAction(tr("Reopen Last Watch List at Start"));
     reopen->setCheckable(true);
     reopen->setChecked(QSettings().value(reopenKey, true).toBool());
@@ -58,6 +66,8 @@ Status WatchListDocument::load(const QString &path)
     const auto file = WatchList::loadFromFile(path);
     if (!file)
         return file.error();
+    // The names first: the new tables take them as they are made.
+    m_symbols->setTable(file->symbols);
     m_window->replaceWatchTables(file->tables);
     QSettings().setValue(lastListKey, QFileInfo(path).absoluteFilePath());
     markSaved(path);
@@ -93,6 +103,43 @@ Status WatchListDocument::importCsv(const QString &path)
         = m_window->currentWatchTable() ? m_window->currentWatchTable() : m_window->addWatchTable();
     table->model()->addItems(*rows);
     return Ok{};
+}
+
+Result<SymbolImport> WatchListDocument::importNames(const QString &path)
+{
+    auto result = SymbolImport::fromFile(path);
+    if (!result) {
+        Q_EMIT statusMessage(
+            tr("%1 cannot be imported: %2")
+                .arg(QDir::toNativeSeparators(path), translated(result.error().message)));
+        return result;
+    }
+    m_symbols->merge(result->symbols());
+    Q_EMIT statusMessage(
+        tr("%1: %2").arg(QFileInfo(path).fileName(), translated(result->summary())));
+    return result;
+}
+
+void WatchListDocument::importNamesDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        m_window, tr("Import Names and Comments"), lastDirectory(),
+        tr("Comment/symbol lists (*.csv *.txt *.tsv);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    setLastDirectory(path);
+    const auto result = importNames(path);
+    if (!result) {
+        QMessageBox::warning(
+            m_window, tr("Import Names and Comments"),
+            tr("%1 cannot be imported:\n%2")
+                .arg(QFileInfo(path).fileName(), translated(result.error().message)));
+    } else if (result->imported() == 0) {
+        // Most likely the wrong file: say so where it cannot be missed.
+        QMessageBox::warning(
+            m_window, tr("Import Names and Comments"),
+            tr("%1: %2").arg(QFileInfo(path).fileName(), translated(result->summary())));
+    }
 }
 
 void WatchListDocument::openDialog()
@@ -163,6 +210,7 @@ WatchListFile WatchListDocument::currentList() const
     WatchListFile file;
     for (WatchTableWidget *t : m_window->watchTables())
         file.tables.append(t->spec());
+    file.symbols = m_symbols->table();
     return file;
 }
 

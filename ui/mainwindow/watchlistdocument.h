@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/result.h"
+#include "core/watch/symbolimport.h"
 #include "core/watch/watchlist.h"
 
 #include <QObject>
@@ -12,10 +13,12 @@ class QMenu;
 namespace Fatek {
 
 class MainWindow;
+class SymbolNames;
 
 // The watch list file of the main window: all its tables saved to or loaded from one file, CSV
 // rows imported into the current table, the last list reopened at start, and whether the tables
-// changed since they were saved. The window title names the file.
+// changed since they were saved. The window title names the file. It owns the window's names
+// (SymbolNames: the ladder project's names and comments, imported and saved with the list).
 class WatchListDocument : public QObject
 {
     Q_OBJECT
@@ -33,6 +36,12 @@ public:
     Status open(const QString &path);
     // CSV rows into the current table.
     Status importCsv(const QString &path);
+    // A comment/symbol list of the ladder project (SymbolImport) into the window's names, which
+    // every table, the trend and the forcing tool show; the outcome (names imported, lines
+    // skipped and why) goes to the status bar. File > Import Names and Comments… calls it.
+    Result<SymbolImport> importNames(const QString &path);
+    // The window's names: the one table of them (see SymbolNames).
+    const SymbolNames *symbols() const { return m_symbols; }
     // Opens the watch list saved or opened last (when that preference is on); false if none.
     bool restoreLast();
 
@@ -54,9 +63,11 @@ Q_SIGNALS:
 private:
     void openDialog();
     void importCsvDialog();
+    void importNamesDialog();
     WatchListFile currentList() const;
 
     MainWindow *m_window;
+    SymbolNames *m_symbols;
     QString m_path;
     WatchListFile m_saved;
     QAction *m_openAction = nullptr;

@@ -1,5 +1,6 @@
 #include "discretetablemodel.h"
 
+#include "ui/common/symbolnames.h"
 #include "ui/common/toolpalette.h"
 
 #include <QFont>
@@ -19,6 +20,20 @@ void DiscreteTableModel::setRange(const AddressRange &range)
     m_states.assign(range.count, std::nullopt);
     m_disabled.assign(range.count, std::nullopt);
     endResetModel();
+}
+
+void DiscreteTableModel::setSymbols(const SymbolNames *symbols)
+{
+    if (m_symbols)
+        disconnect(m_symbols, nullptr, this, nullptr);
+    m_symbols = symbols;
+    const auto namesChanged = [this] {
+        if (rowCount() > 0)
+            Q_EMIT dataChanged(index(0, NameColumn), index(rowCount() - 1, NameColumn));
+    };
+    if (symbols)
+        connect(symbols, &SymbolNames::changed, this, namesChanged);
+    namesChanged();
 }
 
 void DiscreteTableModel::assign(std::vector<std::optional<bool>> &target,
@@ -86,8 +101,16 @@ QVariant DiscreteTableModel::data(const QModelIndex &index, int role) const
             return !disabled   ? QStringLiteral("?")
                    : *disabled ? tr("disabled (forced)")
                                : tr("enabled");
+        case NameColumn: return m_symbols ? m_symbols->name(addressAt(row)) : QString();
         default: return {};
         }
+    case Qt::ToolTipRole:
+        if (m_symbols && (index.column() == PointColumn || index.column() == NameColumn)) {
+            const QString comment = m_symbols->table().comment(addressAt(row));
+            if (!comment.isEmpty())
+                return comment;
+        }
+        return {};
     case Qt::FontRole:
         if ((index.column() == StateColumn && state.value_or(false))
             || (index.column() == ForcedColumn && disabled.value_or(false))) {
@@ -114,6 +137,7 @@ QVariant DiscreteTableModel::headerData(int section, Qt::Orientation orientation
     case PointColumn: return tr("Point");
     case StateColumn: return tr("State");
     case ForcedColumn: return tr("Forcing");
+    case NameColumn: return tr("Name");
     default: return {};
     }
 }

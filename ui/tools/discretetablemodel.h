@@ -4,20 +4,25 @@
 
 #include <QAbstractTableModel>
 #include <QPalette>
+#include <QPointer>
 
 #include <optional>
 #include <vector>
 
 namespace Fatek {
 
+class SymbolNames;
+
 // One row per discrete of a range: its ON/OFF state (44) and whether it is disabled (43).
-// Unknown values (not read yet, or the read failed) show as "?".
+// Unknown values (not read yet, or the read failed) show as "?". With the window's names
+// (setSymbols) the Name column shows the ladder project's name of each point, its comment in the
+// tooltip.
 class DiscreteTableModel : public QAbstractTableModel
 {
     Q_OBJECT
 
 public:
-    enum Column { PointColumn, StateColumn, ForcedColumn, ColumnCount };
+    enum Column { PointColumn, StateColumn, ForcedColumn, NameColumn, ColumnCount };
 
     explicit DiscreteTableModel(QObject *parent = nullptr);
 
@@ -27,6 +32,8 @@ public:
     void setStates(const std::optional<std::vector<std::uint32_t>> &values);
     void setDisabled(const std::optional<std::vector<std::uint32_t>> &values);
     void setPalette(const QPalette &palette) { m_palette = palette; }
+    // Not owned; nullptr: no names. The Name column follows their changes.
+    void setSymbols(const SymbolNames *symbols);
 
     Address addressAt(int row) const { return m_range.start.advanced(static_cast<quint32>(row)); }
     std::optional<bool> stateAt(int row) const;
@@ -46,6 +53,7 @@ private:
     std::vector<std::optional<bool>> m_states;
     std::vector<std::optional<bool>> m_disabled;
     QPalette m_palette;
+    QPointer<const SymbolNames> m_symbols;
 };
 
 } // namespace Fatek

@@ -8,6 +8,7 @@
 #include "core/session/session.h"
 #include "discretecontrolbatch.h"
 #include "discretescan.h"
+#include "ui/common/symbolnames.h"
 #include "ui/common/toolpalette.h"
 #include "ui/common/uitext.h"
 
@@ -247,11 +248,33 @@ void ForcedPointsView::enableAll()
                               });
 }
 
+void ForcedPointsView::setSymbols(const SymbolNames *symbols)
+{
+    if (m_symbols)
+        disconnect(m_symbols, nullptr, this, nullptr);
+    m_symbols = symbols;
+    if (symbols)
+        connect(symbols, &SymbolNames::changed, this, &ForcedPointsView::showList);
+    showList();
+}
+
+QStringList ForcedPointsView::listedTexts() const
+{
+    QStringList texts;
+    for (int i = 0; i < m_list->count(); ++i)
+        texts << m_list->item(i)->text();
+    return texts;
+}
+
 void ForcedPointsView::showList()
 {
     m_list->clear();
-    for (const Address &a : std::as_const(m_forced))
-        m_list->addItem(QString::fromStdString(a.toString()));
+    for (const Address &a : std::as_const(m_forced)) {
+        auto *item = new QListWidgetItem(
+            m_symbols ? m_symbols->label(a) : QString::fromStdString(a.toString()), m_list);
+        if (m_symbols)
+            item->setToolTip(m_symbols->table().comment(a));
+    }
 }
 
 } // namespace Fatek

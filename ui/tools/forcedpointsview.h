@@ -18,6 +18,7 @@ namespace Fatek {
 
 class RequestTracker;
 class Session;
+class SymbolNames;
 
 // Scans with 43 and lists every disabled (forced) point, with a confirmed "Enable all" so nothing
 // stays forced when the engineer leaves the site. With no ranges typed it scans every discrete the
@@ -32,6 +33,10 @@ public:
     void setTarget(Session *session, quint8 station, const QString &connectionName);
     void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
     void setRanges(const QString &ranges);
+    // The window's names (not owned): each forced point is listed with its name, "Y0 Pump run".
+    void setSymbols(const SymbolNames *symbols);
+    // The list as shown, one line per forced point.
+    QStringList listedTexts() const;
 
     QList<Address> forcedPoints() const { return m_forced; }
     bool isScanning() const { return m_scanning; }
@@ -59,6 +64,7 @@ private:
     quint8 m_station = 1;
     QString m_connectionName;
     Confirmer m_confirmer;
+    QPointer<const SymbolNames> m_symbols;
     QList<Address> m_forced;
     bool m_scanning = false;
     bool m_enabling = false;

@@ -161,6 +161,12 @@ void ForcingPanel::setTarget(Session *session, quint8 station, const QString &co
     updateEnabled();
 }
 
+void ForcingPanel::setSymbols(const SymbolNames *symbols)
+{
+    m_model->setSymbols(symbols);
+    m_forced->setSymbols(symbols);
+}
+
 void ForcingPanel::setConfirmer(Confirmer confirmer)
 {
     m_confirmer = confirmer;

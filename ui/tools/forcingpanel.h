@@ -21,6 +21,7 @@ class DiscreteTableModel;
 class ForcedPointsView;
 class RequestTracker;
 class Session;
+class SymbolNames;
 
 // Forcing of discretes: a table of a chosen range with each point's state (44) and enable flag
 // (43), actions Disable / Enable / Set / Reset (42) on the selection, and the forced points view.
@@ -36,6 +37,8 @@ public:
 
     // Test hook: answers the confirmation questions instead of a message box (both tabs).
     void setConfirmer(Confirmer confirmer);
+    // The window's names (not owned): the discrete table and the forced points show them.
+    void setSymbols(const SymbolNames *symbols);
 
     // Shows `count` points from `start` (X Y M S T C) and reads them.
     void showRange(ElementType type, quint32 start, quint32 count);

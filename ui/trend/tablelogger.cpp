@@ -36,9 +36,11 @@ Status TableLogger::start(WatchTableModel *model, const QString &path)
     for (int r = 0; r < model->rowCount(); ++r)
         m_keys.push_back(model->rowKey(r));
     connect(model, &QAbstractItemModel::dataChanged, this,
-            [this](const QModelIndex &, const QModelIndex &bottomRight) {
-                // Values and quality reach the Updated column; a fading highlight does not.
-                if (bottomRight.column() >= WatchTableModel::QualityColumn)
+            [this](const QModelIndex &topLeft, const QModelIndex &bottomRight) {
+                // Values and quality reach the Updated column; a fading highlight does not, nor
+                // does a new name or comment.
+                if (bottomRight.column() >= WatchTableModel::QualityColumn
+                    && topLeft.column() <= WatchTableModel::UpdatedColumn)
                     m_batch.start();
             });
     connect(model, &QObject::destroyed, this, [this] {

@@ -256,7 +256,7 @@ bool TrendView::addOne(WatchTableModel *model, int row, QString *error)
     if (!connected) {
         connect(model, &QAbstractItemModel::dataChanged, this,
                 [this, model](const QModelIndex &topLeft, const QModelIndex &bottomRight) {
-                    onDataChanged(model, topLeft.row(), bottomRight.row(), bottomRight.column());
+                    onDataChanged(model, topLeft, bottomRight);
                 });
     }
     sample(*m_items.back());
@@ -306,11 +306,18 @@ QList<QLineSeries *> TrendView::series(int index) const
     return list;
 }
 
-void TrendView::onDataChanged(WatchTableModel *model, int firstRow, int lastRow, int lastColumn)
+void TrendView::onDataChanged(WatchTableModel *model, const QModelIndex &topLeft,
+                              const QModelIndex &bottomRight)
 {
+    const int firstRow = topLeft.row();
+    const int lastRow = bottomRight.row();
+    // A row's name changed (typed, or imported names): the legend, item list and axes follow.
+    if (topLeft.column() == WatchTableModel::NameColumn)
+        renameItems(model, firstRow, lastRow);
     // Value batches and staleness touch the columns up to Updated; the end of a change highlight
-    // touches the value column only and brings nothing new.
-    if (m_paused || lastColumn < WatchTableModel::QualityColumn)
+    // touches the value column only, a comment the comment column: nothing new to sample.
+    if (m_paused || bottomRight.column() < WatchTableModel::QualityColumn
+        || topLeft.column() > WatchTableModel::UpdatedColumn)
         return;
     for (auto &item : m_items) {
         if (item->model != model)
@@ -319,6 +326,27 @@ void TrendView::onDataChanged(WatchTableModel *model, int firstRow, int lastRow,
         if (row >= firstRow && row <= lastRow)
             sample(*item);
     }
+}
+
+void TrendView::renameItems(WatchTableModel *model, int firstRow, int lastRow)
+{
+    bool renamed = false;
+    for (auto &item : m_items) {
+        const int row = item->model == model ? model->rowOfKey(item->rowKey) : -1;
+        if (row < firstRow || row > lastRow || row < 0)
+            continue;
+        const QString name = model->item(row).name;
+        if (name == item->spec.name)
+            continue;
+        item->spec.name = name;
+        for (QLineSeries *s : item->series)
+            s->setName(displayName(item->spec));
+        renamed = true;
+    }
+    if (!renamed)
+        return;
+    rebuildAxes();
+    rebuildItemList();
 }
 
 void TrendView::sample(Item &item)

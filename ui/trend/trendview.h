@@ -116,7 +116,9 @@ private:
     bool addOne(WatchTableModel *model, int row, QString *error);
     void rebuildAxes();
 
-    void onDataChanged(WatchTableModel *model, int firstRow, int lastRow, int lastColumn);
+    void onDataChanged(WatchTableModel *model, const QModelIndex &topLeft,
+                       const QModelIndex &bottomRight);
+    void renameItems(WatchTableModel *model, int firstRow, int lastRow);
     void sample(Item &item);
     void rebuildItemList();
     void setTimeRange(qint64 fromMs, qint64 toMs);

@@ -89,7 +89,7 @@ void WatchTableModel::addItems(const QList<WatchItemSpec> &items)
     beginInsertRows({}, first, first + static_cast<int>(items.size()) - 1);
     for (const WatchItemSpec &spec : items) {
         Row row;
-        row.values = ItemValues(spec);
+        row.values = ItemValues(withSymbols(spec));
         row.key = nextRowKey++;
         resetParts(row);
         m_rows.append(std::move(row));

@@ -8,12 +8,16 @@
 #include <QElapsedTimer>
 #include <QHash>
 #include <QIcon>
+#include <QPointer>
 #include <QTimer>
 
 #include <optional>
 #include <vector>
 
 namespace Fatek {
+
+class SymbolNames;
+class SymbolTable;
 
 // Rows of one watch table: what to watch (WatchItemSpec) plus the latest value, its quality and
 // time. Every item spans one or more elements (a float over R100 is R100+R101); ItemValues makes
@@ -53,8 +57,14 @@ public:
     bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
     bool removeRows(int row, int count, const QModelIndex &parent = {}) override;
 
+    // Rows whose name or comment is empty take those of the window's names (setSymbols).
     void addItems(const QList<WatchItemSpec> &items);
     void setItems(const QList<WatchItemSpec> &items);
+    // The window's names (the ladder project's, see SymbolNames), not owned; nullptr: none.
+    // Rows added from now on get the names their addresses have there when theirs are empty,
+    // and the rows follow every change of the names: a name or comment that is empty or was
+    // the address's old imported one takes the new one; one a person typed stays.
+    void setSymbols(const SymbolNames *symbols);
     QList<WatchItemSpec> items() const;
     WatchItemSpec item(int row) const { return m_rows.at(row).values.item(); }
     // Changes the format (and word order); refused with a message when it does not fit the item.
@@ -150,6 +160,8 @@ private:
     };
 
     static void resetParts(Row &row);
+    WatchItemSpec withSymbols(WatchItemSpec spec) const;
+    void applySymbols(const SymbolTable &previous);
     void rebuildIndex();
     void emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn);
     void scheduleSlice();
@@ -170,6 +182,7 @@ private:
     QIcon m_errorIcon;
     QIcon m_forcedIcon;
     QList<quint8> m_silentStations;
+    QPointer<const SymbolNames> m_symbols;
 
     // Queued batches, oldest first; applied newest first (older values of an element that a
     // newer batch already set are skipped).
