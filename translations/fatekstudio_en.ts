@@ -1037,6 +1037,142 @@
             <source>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</source>
             <translation>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</translation>
         </message>
+        <message>
+            <source>No connection to read from.</source>
+            <translation>No connection to read from.</translation>
+        </message>
+        <message>
+            <source>A snapshot or restore is already running.</source>
+            <translation>A snapshot or restore is already running.</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its memory sizes (%1): give the ranges to read.</source>
+            <translation>The PLC did not report its memory sizes (%1): give the ranges to read.</translation>
+        </message>
+        <message>
+            <source>No element ranges to read.</source>
+            <translation>No element ranges to read.</translation>
+        </message>
+        <message>
+            <source>%1 elements are more than a snapshot holds (at most %2).</source>
+            <translation>%1 elements are more than a snapshot holds (at most %2).</translation>
+        </message>
+        <message>
+            <source>Cannot read %1: %2</source>
+            <translation>Cannot read %1: %2</translation>
+        </message>
+        <message>
+            <source>Cancelled.</source>
+            <translation>Cancelled.</translation>
+        </message>
+        <message>
+            <source>%1 values read in %2 requests.</source>
+            <translation>%1 values read in %2 requests.</translation>
+        </message>
+        <message>
+            <source>value %1</source>
+            <translation>value %1</translation>
+        </message>
+        <message>
+            <source>line %1, column %2</source>
+            <translation>line %1, column %2</translation>
+        </message>
+        <message>
+            <source>%1: a snapshot file name ends in .json or .csv.</source>
+            <translation>%1: a snapshot file name ends in .json or .csv.</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>Cannot open %1: %2</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>Cannot write %1: %2</translation>
+        </message>
+        <message>
+            <source>not valid JSON (%1)</source>
+            <translation>not valid JSON (%1)</translation>
+        </message>
+        <message>
+            <source>not a memory snapshot (&quot;format&quot; is not &quot;%1&quot;)</source>
+            <translation>not a memory snapshot (&quot;format&quot; is not &quot;%1&quot;)</translation>
+        </message>
+        <message>
+            <source>snapshot version %1 is not supported (this program reads %2)</source>
+            <translation>snapshot version %1 is not supported (this program reads %2)</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is missing</source>
+            <translation>&quot;%1&quot; is missing</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a whole number</source>
+            <translation>&quot;%1&quot; is not a whole number</translation>
+        </message>
+        <message>
+            <source>%1 does not fit %2 (0..%3)</source>
+            <translation>%1 does not fit %2 (0..%3)</translation>
+        </message>
+        <message>
+            <source>the hex column %1 differs from the value %2</source>
+            <translation>the hex column %1 differs from the value %2</translation>
+        </message>
+        <message>
+            <source>%1 appears twice</source>
+            <translation>%1 appears twice</translation>
+        </message>
+        <message>
+            <source>expected address,value[,hex]</source>
+            <translation>expected address,value[,hex]</translation>
+        </message>
+        <message>
+            <source>a metadata line reads &quot;# key: value&quot;</source>
+            <translation>a metadata line reads &quot;# key: value&quot;</translation>
+        </message>
+        <message>
+            <source>the snapshot holds no values</source>
+            <translation>the snapshot holds no values</translation>
+        </message>
+        <message>
+            <source>(absent)</source>
+            <translation>(absent)</translation>
+        </message>
+        <message>
+            <source>%1: %2 -&gt; %3</source>
+            <translation>%1: %2 -&gt; %3</translation>
+        </message>
+        <message>
+            <source>No differences.</source>
+            <translation>No differences.</translation>
+        </message>
+        <message>
+            <source>%1 of %2 values differ.</source>
+            <translation>%1 of %2 values differ.</translation>
+        </message>
+        <message>
+            <source>Operator mode: restoring values is refused; nothing was written.</source>
+            <translation>Operator mode: restoring values is refused; nothing was written.</translation>
+        </message>
+        <message>
+            <source>The chosen ranges hold no value of the snapshot: nothing to write.</source>
+            <translation>The chosen ranges hold no value of the snapshot: nothing to write.</translation>
+        </message>
+        <message>
+            <source>Writing %1 failed: %2</source>
+            <translation>Writing %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>Reading the values back failed: %1</source>
+            <translation>Reading the values back failed: %1</translation>
+        </message>
+        <message>
+            <source>%1 of %2 values differ after the write (read back).</source>
+            <translation>%1 of %2 values differ after the write (read back).</translation>
+        </message>
+        <message>
+            <source>%1 values written in %2 requests and read back equal.</source>
+            <translation>%1 values written in %2 requests and read back equal.</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

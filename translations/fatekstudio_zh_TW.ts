@@ -1037,6 +1037,142 @@
             <source>Binary frame of %1 bytes has a wrong CRC (line noise or a broken frame).</source>
             <translation>%1 位元組的二進位訊框 CRC 錯誤（線路雜訊或訊框損壞）。</translation>
         </message>
+        <message>
+            <source>No connection to read from.</source>
+            <translation>沒有可讀取的連線。</translation>
+        </message>
+        <message>
+            <source>A snapshot or restore is already running.</source>
+            <translation>已有快照或還原正在執行。</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its memory sizes (%1): give the ranges to read.</source>
+            <translation>PLC 未回報其記憶體大小（%1）：請指定要讀取的範圍。</translation>
+        </message>
+        <message>
+            <source>No element ranges to read.</source>
+            <translation>沒有要讀取的元件範圍。</translation>
+        </message>
+        <message>
+            <source>%1 elements are more than a snapshot holds (at most %2).</source>
+            <translation>%1 個元件超過快照可容納的數量（最多 %2 個）。</translation>
+        </message>
+        <message>
+            <source>Cannot read %1: %2</source>
+            <translation>無法讀取 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cancelled.</source>
+            <translation>已取消。</translation>
+        </message>
+        <message>
+            <source>%1 values read in %2 requests.</source>
+            <translation>以 %2 次請求讀取了 %1 個值。</translation>
+        </message>
+        <message>
+            <source>value %1</source>
+            <translation>第 %1 個值</translation>
+        </message>
+        <message>
+            <source>line %1, column %2</source>
+            <translation>第 %1 行，第 %2 欄</translation>
+        </message>
+        <message>
+            <source>%1: a snapshot file name ends in .json or .csv.</source>
+            <translation>%1：快照檔名須以 .json 或 .csv 結尾。</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>無法開啟 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>無法寫入 %1：%2</translation>
+        </message>
+        <message>
+            <source>not valid JSON (%1)</source>
+            <translation>不是有效的 JSON（%1）</translation>
+        </message>
+        <message>
+            <source>not a memory snapshot (&quot;format&quot; is not &quot;%1&quot;)</source>
+            <translation>不是記憶體快照（&quot;format&quot; 不是 &quot;%1&quot;）</translation>
+        </message>
+        <message>
+            <source>snapshot version %1 is not supported (this program reads %2)</source>
+            <translation>不支援快照版本 %1（本程式讀取版本 %2）</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is missing</source>
+            <translation>缺少 &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a whole number</source>
+            <translation>&quot;%1&quot; 不是整數</translation>
+        </message>
+        <message>
+            <source>%1 does not fit %2 (0..%3)</source>
+            <translation>%1 超出 %2 的範圍（0..%3）</translation>
+        </message>
+        <message>
+            <source>the hex column %1 differs from the value %2</source>
+            <translation>十六進位欄 %1 與數值 %2 不符</translation>
+        </message>
+        <message>
+            <source>%1 appears twice</source>
+            <translation>%1 重複出現</translation>
+        </message>
+        <message>
+            <source>expected address,value[,hex]</source>
+            <translation>應為 address,value[,hex] 欄位</translation>
+        </message>
+        <message>
+            <source>a metadata line reads &quot;# key: value&quot;</source>
+            <translation>中繼資料行的格式為 &quot;# key: value&quot;</translation>
+        </message>
+        <message>
+            <source>the snapshot holds no values</source>
+            <translation>快照中沒有任何值</translation>
+        </message>
+        <message>
+            <source>(absent)</source>
+            <translation>（無）</translation>
+        </message>
+        <message>
+            <source>%1: %2 -&gt; %3</source>
+            <translation>%1：%2 → %3</translation>
+        </message>
+        <message>
+            <source>No differences.</source>
+            <translation>沒有差異。</translation>
+        </message>
+        <message>
+            <source>%1 of %2 values differ.</source>
+            <translation>%2 個值中有 %1 個不同。</translation>
+        </message>
+        <message>
+            <source>Operator mode: restoring values is refused; nothing was written.</source>
+            <translation>操作員模式：拒絕還原數值，未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>The chosen ranges hold no value of the snapshot: nothing to write.</source>
+            <translation>所選範圍內沒有快照中的值：沒有要寫入的資料。</translation>
+        </message>
+        <message>
+            <source>Writing %1 failed: %2</source>
+            <translation>寫入 %1 失敗：%2</translation>
+        </message>
+        <message>
+            <source>Reading the values back failed: %1</source>
+            <translation>回讀數值失敗：%1</translation>
+        </message>
+        <message>
+            <source>%1 of %2 values differ after the write (read back).</source>
+            <translation>寫入後回讀，%2 個值中有 %1 個不同。</translation>
+        </message>
+        <message>
+            <source>%1 values written in %2 requests and read back equal.</source>
+            <translation>以 %2 次請求寫入 %1 個值，回讀結果一致。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

@@ -22,7 +22,7 @@ FATEK_MSG(SnapshotPlaceValue, 1, QT_TRANSLATE_NOOP("Fatek::Message", "value %1")
 FATEK_MSG(SnapshotPlaceLineColumn, 2, QT_TRANSLATE_NOOP("Fatek::Message", "line %1, column %2"))
 FATEK_MSG(SnapshotFileUnknownType, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "%1: a snapshot file name ends in .json or .csv."))
-FATEK_MSG(SnapshotFileCannotRead, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Cannot read %1: %2"))
+FATEK_MSG(SnapshotFileCannotRead, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Cannot open %1: %2"))
 FATEK_MSG(SnapshotFileCannotWrite, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Cannot write %1: %2"))
 FATEK_MSG(SnapshotJsonSyntax, 1, QT_TRANSLATE_NOOP("Fatek::Message", "not valid JSON (%1)"))
 FATEK_MSG(SnapshotNotSnapshot, 1,
