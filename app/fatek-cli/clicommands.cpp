@@ -3,6 +3,8 @@
 #include "app/common/linkarguments.h"
 #include "clioptions.h"
 #include "clitext.h"
+#include "core/commission/memorysnapshot.h"
+#include "core/commission/snapshotfile.h"
 #include "core/watch/itemvalues.h"
 #include "core/watch/watchlist.h"
 
@@ -237,6 +239,46 @@ QString parseScan(StepArgs &a)
     return {};
 }
 
+// A snapshot file name: .json or .csv.
+QString snapshotFileArg(StepArgs &a, const QString &path, QString *out)
+{
+    if (!SnapshotFile::formatFor(path))
+        return QStringLiteral("%1: \"%2\" is not a .json or .csv file name.").arg(a.cmd(), path);
+    *out = path;
+    return {};
+}
+
+// RANGES: every further argument, "R0..R99, X0..X255" or "R0..R99 X0..X255".
+QString rangesArg(StepArgs &a, qsizetype from)
+{
+    const QString text = a.positional.mid(from).join(QLatin1Char(' '));
+    if (text.trimmed().isEmpty())
+        return {};
+    const auto ranges = Snapshot::parseRanges(text);
+    if (!ranges)
+        return QStringLiteral("%1: %2").arg(a.cmd(), CliText::error(ranges.error()));
+    a.step.ranges = ranges.value();
+    return {};
+}
+
+// snapshot FILE [RANGES], restore-values FILE [RANGES]
+QString parseSnapshotFileAndRanges(StepArgs &a)
+{
+    if (QString err = snapshotFileArg(a, a.positional.at(0), &a.step.file); !err.isEmpty())
+        return err;
+    return rangesArg(a, 1);
+}
+
+// diff FILE [FILE2]
+QString parseDiff(StepArgs &a)
+{
+    if (QString err = snapshotFileArg(a, a.positional.at(0), &a.step.file); !err.isEmpty())
+        return err;
+    if (a.positional.size() > 1)
+        return snapshotFileArg(a, a.positional.at(1), &a.step.file2);
+    return {};
+}
+
 // The commands: name, what it runs, how many arguments it takes (-1: no limit), whether it needs
 // an answer (not for broadcasts), and the parser of its arguments.
 struct CommandSpec
@@ -264,6 +306,9 @@ constexpr CommandSpec commands[] = {
     {"monitor", CliCommand::Monitor, 1, -1, true, parseMonitor},
     {"raw", CliCommand::Raw, 1, -1, false, parseRaw},
     {"scan", CliCommand::Scan, 0, 1, false, parseScan},
+    {"snapshot", CliCommand::Snapshot, 1, -1, true, parseSnapshotFileAndRanges},
+    {"diff", CliCommand::Diff, 1, 2, true, parseDiff},
+    {"restore-values", CliCommand::RestoreValues, 1, -1, true, parseSnapshotFileAndRanges},
 };
 
 const CommandSpec *findCommand(const QString &name)

@@ -58,9 +58,17 @@ QString usageText()
         "auto:\n"
         "                           binary framing for hex bytes, FACON for ASCII text)\n"
         "  scan [FROM..TO]          which stations answer (default 1..254)\n"
+        "  snapshot FILE [RANGES]   save element values to FILE (.json or .csv); RANGES like\n"
+        "                           \"R0..R99, X0..X255\" (default: every element the PLC "
+        "reports)\n"
+        "  diff FILE [FILE2]        differences, one line per element: FILE against the PLC, or\n"
+        "                           against FILE2 (no link needed)\n"
+        "  restore-values FILE [RANGES]   write FILE's values back (default: all but X), after a\n"
+        "                           confirmation (--yes), then read them back and compare\n"
         "\n"
         "Exit codes: 0 ok, 2 usage, 3 link failure (timeout, no connection), 4 PLC error, 5 "
-        "refused by --read-only.\n");
+        "refused by --read-only,\n"
+        "6 differences found (diff; restore-values read back other values).\n");
 }
 
 QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
@@ -194,7 +202,10 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     rules.defaultProtocol
         = o.sim ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Auto;
     const LinkArgumentsResult resolved = resolveLinkArguments(link, rules);
-    if (!resolved.error.isEmpty())
+    // "diff FILE FILE2" alone compares two files: no PLC, so no link is needed.
+    o.offline = !linkCount && positional.size() == 3
+                && positional.first().compare(QLatin1String("diff"), Qt::CaseInsensitive) == 0;
+    if (!resolved.error.isEmpty() && !o.offline)
         return fail(resolved.error);
     o.link = resolved.link;
     o.link.autoReconnect = false; // a script wants the failure, not a retry loop

@@ -105,14 +105,18 @@ QByteArray saveJson(const MemorySnapshot &s)
     root.insert(QStringLiteral("station"), s.info.station);
     root.insert(QStringLiteral("protocol"), s.info.protocol);
     root.insert(QStringLiteral("model"), s.info.model);
-    QJsonArray values;
-    for (const SnapshotValue &v : s.values) {
-        values.append(
-            QJsonObject{{QStringLiteral("address"), QString::fromStdString(v.address.toString())},
-                        {QStringLiteral("value"), static_cast<qint64>(v.value)}});
+    // One value per line (readable, and a version control diff shows the changed elements).
+    QByteArray text = QJsonDocument(root).toJson(QJsonDocument::Indented);
+    text.chop(3); // "\n}\n"
+    text += ",\n    \"values\": [";
+    for (std::size_t i = 0; i < s.values.size(); ++i) {
+        const SnapshotValue &v = s.values[i];
+        text += (i == 0 ? "\n" : ",\n");
+        text += "        {\"address\": \"" + QByteArray::fromStdString(v.address.toString())
+                + "\", \"value\": " + QByteArray::number(v.value) + '}';
     }
-    root.insert(QStringLiteral("values"), values);
-    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+    text += s.values.empty() ? "]\n}\n" : "\n    ]\n}\n";
+    return text;
 }
 
 QByteArray saveCsv(const MemorySnapshot &s)

@@ -52,8 +52,9 @@ std::vector<Request> ValuesRestorer::writeRequests(std::uint8_t station,
         }
         chunks.push_back({v});
     }
-    // Smallest runs first into the mixed-write pool, as long as each saves a frame (or costs
-    // none, for single elements): a pool of W words takes ceil(W / 32) frames.
+    // The k smallest runs go to the mixed-write pool, k chosen for the fewest frames: the other
+    // runs take one frame each, a pool of W words ceil(W / 32) frames (49 takes any addresses, so
+    // the pool splits anywhere). Ties keep more runs as plain consecutive writes.
     std::vector<std::size_t> order(chunks.size());
     for (std::size_t i = 0; i < order.size(); ++i)
         order[i] = i;
@@ -61,19 +62,20 @@ std::vector<Request> ValuesRestorer::writeRequests(std::uint8_t station,
         return wordsOf(chunks[a]) < wordsOf(chunks[b]);
     });
     const std::size_t cap = Limits::maxMixedWriteWords;
-    std::vector<bool> pooled(chunks.size(), false);
+    std::size_t bestK = 0;
+    std::size_t bestFrames = chunks.size();
     std::size_t poolWords = 0;
-    for (std::size_t i : order) {
-        const std::size_t w = wordsOf(chunks[i]);
-        if (w > cap)
-            break;
-        const std::size_t extraFrames
-            = (poolWords + w + cap - 1) / cap - (poolWords + cap - 1) / cap;
-        if (extraFrames == 0 || chunks[i].size() == 1) {
-            pooled[i] = true;
-            poolWords += w;
+    for (std::size_t k = 1; k <= order.size(); ++k) {
+        poolWords += wordsOf(chunks[order[k - 1]]);
+        const std::size_t frames = (chunks.size() - k) + (poolWords + cap - 1) / cap;
+        if (frames < bestFrames) {
+            bestFrames = frames;
+            bestK = k;
         }
     }
+    std::vector<bool> pooled(chunks.size(), false);
+    for (std::size_t k = 0; k < bestK; ++k)
+        pooled[order[k]] = true;
     std::vector<Request> out;
     std::vector<SnapshotValue> pool;
     for (std::size_t i = 0; i < chunks.size(); ++i) {

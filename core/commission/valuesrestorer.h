@@ -49,8 +49,8 @@ public:
     Message outcome() const;
 
     // The write frames for `values` (any order): runs of consecutive elements as 45 (discretes,
-    // <= 256) or 47 (registers, <= 64 words); short runs packed into 49 mixed writes (<= 32 words)
-    // wherever that saves a frame; single elements always go there.
+    // <= 256) or 47 (registers, <= 64 words); the shortest runs packed into 49 mixed writes
+    // (<= 32 words) wherever that saves frames.
     static std::vector<Request> writeRequests(std::uint8_t station,
                                               std::span<const SnapshotValue> values);
 
