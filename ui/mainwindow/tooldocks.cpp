@@ -7,6 +7,7 @@
 #include "ui/tools/loopbackdialog.h"
 #include "ui/tools/plccontrolpanel.h"
 #include "ui/tools/rawconsole.h"
+#include "ui/tools/snapshotdialog.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -80,6 +81,22 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
         dialog->show();
     });
     m_loopbackAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
+    auto *snapshot = toolsMenu->addAction(tr("Memory S&napshot…"), this, [this] {
+        auto *dialog = new SnapshotDialog(m_window);
+        dialog->setObjectName(QStringLiteral("snapshotDialog"));
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        Connection *c = m_window->currentConnection();
+        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
+                          c ? c->name() : QString());
+        m_targets.append([target = QPointer<SnapshotDialog>(dialog)](
+                             Session *session, quint8 station, const QString &name) {
+            if (target)
+                target->setTarget(session, station, name);
+        });
+        dialog->show();
+    });
+    snapshot->setObjectName(QStringLiteral("memorySnapshotAction"));
+    snapshot->setToolTip(tr("Save, compare and restore element values of the current station"));
     auto *scan = toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
         Connection *c = m_window->currentConnection();
         if (!c) {
