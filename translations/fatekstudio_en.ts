@@ -2514,6 +2514,14 @@ Meaning %4</translation>
             <source>Find the PLCs that answer on the current connection's link</source>
             <translation>Find the PLCs that answer on the current connection's link</translation>
         </message>
+        <message>
+            <source>Memory S&amp;napshot…</source>
+            <translation>Memory S&amp;napshot…</translation>
+        </message>
+        <message>
+            <source>Save, compare and restore element values of the current station</source>
+            <translation>Save, compare and restore element values of the current station</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -3288,6 +3296,180 @@ Meaning %4</translation>
         <message>
             <source>&amp;Cancel Scan</source>
             <translation>&amp;Cancel Scan</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::SnapshotDialog</name>
+        <message>
+            <source>Memory Snapshot</source>
+            <translation>Memory Snapshot</translation>
+        </message>
+        <message>
+            <source>R0..R99, M0..M63 (empty: every element the PLC reports)</source>
+            <translation>R0..R99, M0..M63 (empty: every element the PLC reports)</translation>
+        </message>
+        <message>
+            <source>Ranges:</source>
+            <translation>Ranges:</translation>
+        </message>
+        <message>
+            <source>Take Snapshot</source>
+            <translation>Take Snapshot</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Cancel</translation>
+        </message>
+        <message>
+            <source>Save…</source>
+            <translation>Save…</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>Open…</translation>
+        </message>
+        <message>
+            <source>Compare With PLC</source>
+            <translation>Compare With PLC</translation>
+        </message>
+        <message>
+            <source>Compare With File…</source>
+            <translation>Compare With File…</translation>
+        </message>
+        <message>
+            <source>Export Differences…</source>
+            <translation>Export Differences…</translation>
+        </message>
+        <message>
+            <source>Filter</source>
+            <translation>Filter</translation>
+        </message>
+        <message>
+            <source>Ranges to restore (empty: all but the inputs X)</source>
+            <translation>Ranges to restore (empty: all but the inputs X)</translation>
+        </message>
+        <message>
+            <source>Restore Values…</source>
+            <translation>Restore Values…</translation>
+        </message>
+        <message>
+            <source>Save Snapshot</source>
+            <translation>Save Snapshot</translation>
+        </message>
+        <message>
+            <source>Open Snapshot</source>
+            <translation>Open Snapshot</translation>
+        </message>
+        <message>
+            <source>Compare With File</source>
+            <translation>Compare With File</translation>
+        </message>
+        <message>
+            <source>Export Differences</source>
+            <translation>Export Differences</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message>
+            <source>Snapshots (*.json *.csv)</source>
+            <translation>Snapshots (*.json *.csv)</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>Stopped: the target changed.</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>Snapshot: %1 values, %2, station %3, %4</source>
+            <translation>Snapshot: %1 values, %2, station %3, %4</translation>
+        </message>
+        <message>
+            <source>No snapshot yet: take one or open a file.</source>
+            <translation>No snapshot yet: take one or open a file.</translation>
+        </message>
+        <message>
+            <source>Reading…</source>
+            <translation>Reading…</translation>
+        </message>
+        <message>
+            <source>Snapshot</source>
+            <translation>Snapshot</translation>
+        </message>
+        <message>
+            <source>PLC</source>
+            <translation>PLC</translation>
+        </message>
+        <message>
+            <source>Saved %1.</source>
+            <translation>Saved %1.</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>Before</translation>
+        </message>
+        <message>
+            <source>After</source>
+            <translation>After</translation>
+        </message>
+        <message>
+            <source>Opened %1.</source>
+            <translation>Opened %1.</translation>
+        </message>
+        <message>
+            <source>File</source>
+            <translation>File</translation>
+        </message>
+        <message>
+            <source>Exported %1 differences to %2.</source>
+            <translation>Exported %1 differences to %2.</translation>
+        </message>
+        <message>
+            <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
+            <translation>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</translation>
+        </message>
+        <message>
+            <source>Restore Values</source>
+            <translation>Restore Values</translation>
+        </message>
+        <message>
+            <source>Not restored: nothing was written.</source>
+            <translation>Not restored: nothing was written.</translation>
+        </message>
+        <message>
+            <source>Writing…</source>
+            <translation>Writing…</translation>
+        </message>
+        <message>
+            <source>Written</source>
+            <translation>Written</translation>
+        </message>
+        <message>
+            <source>Read back</source>
+            <translation>Read back</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::SnapshotDiffModel</name>
+        <message>
+            <source>Before</source>
+            <translation>Before</translation>
+        </message>
+        <message>
+            <source>After</source>
+            <translation>After</translation>
+        </message>
+        <message>
+            <source>Address</source>
+            <translation>Address</translation>
         </message>
     </context>
 </TS>

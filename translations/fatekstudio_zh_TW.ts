@@ -2507,6 +2507,14 @@ Meaning %4</source>
             <source>Find the PLCs that answer on the current connection's link</source>
             <translation>找出目前連線上有回應的 PLC</translation>
         </message>
+        <message>
+            <source>Memory S&amp;napshot…</source>
+            <translation>記憶體快照(&amp;N)…</translation>
+        </message>
+        <message>
+            <source>Save, compare and restore element values of the current station</source>
+            <translation>儲存、比較並還原目前站號的元件數值</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -3274,6 +3282,180 @@ Meaning %4</source>
         <message>
             <source>&amp;Cancel Scan</source>
             <translation>取消掃描(&amp;C)</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::SnapshotDialog</name>
+        <message>
+            <source>Memory Snapshot</source>
+            <translation>記憶體快照</translation>
+        </message>
+        <message>
+            <source>R0..R99, M0..M63 (empty: every element the PLC reports)</source>
+            <translation>R0..R99, M0..M63（留空：PLC 回報的所有元件）</translation>
+        </message>
+        <message>
+            <source>Ranges:</source>
+            <translation>範圍：</translation>
+        </message>
+        <message>
+            <source>Take Snapshot</source>
+            <translation>擷取快照</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>取消</translation>
+        </message>
+        <message>
+            <source>Save…</source>
+            <translation>儲存…</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>開啟…</translation>
+        </message>
+        <message>
+            <source>Compare With PLC</source>
+            <translation>與 PLC 比較</translation>
+        </message>
+        <message>
+            <source>Compare With File…</source>
+            <translation>與檔案比較…</translation>
+        </message>
+        <message>
+            <source>Export Differences…</source>
+            <translation>匯出差異…</translation>
+        </message>
+        <message>
+            <source>Filter</source>
+            <translation>篩選</translation>
+        </message>
+        <message>
+            <source>Ranges to restore (empty: all but the inputs X)</source>
+            <translation>要還原的範圍（留空：輸入 X 以外的全部）</translation>
+        </message>
+        <message>
+            <source>Restore Values…</source>
+            <translation>還原數值…</translation>
+        </message>
+        <message>
+            <source>Save Snapshot</source>
+            <translation>儲存快照</translation>
+        </message>
+        <message>
+            <source>Open Snapshot</source>
+            <translation>開啟快照</translation>
+        </message>
+        <message>
+            <source>Compare With File</source>
+            <translation>與檔案比較</translation>
+        </message>
+        <message>
+            <source>Export Differences</source>
+            <translation>匯出差異</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 檔案 (*.csv)</translation>
+        </message>
+        <message>
+            <source>Snapshots (*.json *.csv)</source>
+            <translation>快照 (*.json *.csv)</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>已停止：目標已變更。</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>Snapshot: %1 values, %2, station %3, %4</source>
+            <translation>快照：%1 個值，%2，站號 %3，%4</translation>
+        </message>
+        <message>
+            <source>No snapshot yet: take one or open a file.</source>
+            <translation>尚無快照：請擷取快照或開啟檔案。</translation>
+        </message>
+        <message>
+            <source>Reading…</source>
+            <translation>讀取中…</translation>
+        </message>
+        <message>
+            <source>Snapshot</source>
+            <translation>快照</translation>
+        </message>
+        <message>
+            <source>PLC</source>
+            <translation>PLC 現值</translation>
+        </message>
+        <message>
+            <source>Saved %1.</source>
+            <translation>已儲存 %1。</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>之前</translation>
+        </message>
+        <message>
+            <source>After</source>
+            <translation>之後</translation>
+        </message>
+        <message>
+            <source>Opened %1.</source>
+            <translation>已開啟 %1。</translation>
+        </message>
+        <message>
+            <source>File</source>
+            <translation>檔案</translation>
+        </message>
+        <message>
+            <source>Exported %1 differences to %2.</source>
+            <translation>已將 %1 筆差異匯出至 %2。</translation>
+        </message>
+        <message>
+            <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
+            <translation>要以 %3 次請求將快照中的 %1 個值寫入 %2，然後回讀確認嗎？</translation>
+        </message>
+        <message>
+            <source>Restore Values</source>
+            <translation>還原數值</translation>
+        </message>
+        <message>
+            <source>Not restored: nothing was written.</source>
+            <translation>未還原：未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Writing…</source>
+            <translation>寫入中…</translation>
+        </message>
+        <message>
+            <source>Written</source>
+            <translation>已寫入</translation>
+        </message>
+        <message>
+            <source>Read back</source>
+            <translation>回讀</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::SnapshotDiffModel</name>
+        <message>
+            <source>Before</source>
+            <translation>之前</translation>
+        </message>
+        <message>
+            <source>After</source>
+            <translation>之後</translation>
+        </message>
+        <message>
+            <source>Address</source>
+            <translation>位址</translation>
         </message>
     </context>
 </TS>
