@@ -1079,7 +1079,7 @@
         </message>
         <message>
             <source>%1: a snapshot file name ends in .json or .csv.</source>
-            <translation>%1：快照檔名須以 .json 或 .csv 結尾。</translation>
+            <translation>%1：快照檔名須為 *.json 或 *.csv。</translation>
         </message>
         <message>
             <source>Cannot open %1: %2</source>
@@ -1091,11 +1091,11 @@
         </message>
         <message>
             <source>not valid JSON (%1)</source>
-            <translation>不是有效的 JSON（%1）</translation>
+            <translation>不是有效的 *.json 內容（%1）</translation>
         </message>
         <message>
             <source>not a memory snapshot (&quot;format&quot; is not &quot;%1&quot;)</source>
-            <translation>不是記憶體快照（&quot;format&quot; 不是 &quot;%1&quot;）</translation>
+            <translation>不是記憶體快照（格式標記不是「%1」）</translation>
         </message>
         <message>
             <source>snapshot version %1 is not supported (this program reads %2)</source>
@@ -1123,11 +1123,11 @@
         </message>
         <message>
             <source>expected address,value[,hex]</source>
-            <translation>應為 address,value[,hex] 欄位</translation>
+            <translation>應為位址、數值（及選用的十六進位）欄位</translation>
         </message>
         <message>
             <source>a metadata line reads &quot;# key: value&quot;</source>
-            <translation>中繼資料行的格式為 &quot;# key: value&quot;</translation>
+            <translation>中繼資料行的格式為「# 名稱: 內容」</translation>
         </message>
         <message>
             <source>the snapshot holds no values</source>
