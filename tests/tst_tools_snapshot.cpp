@@ -52,7 +52,7 @@ void TestToolsSnapshot::cleanup()
 
 bool TestToolsSnapshot::runAndWait(const std::function<void()> &action)
 {
-    QSignalSpy done(m_dialog.get(), &SnapshotDialog::done);
+    QSignalSpy done(m_dialog.get(), &SnapshotDialog::actionFinished);
     action();
     return done.wait(10000);
 }

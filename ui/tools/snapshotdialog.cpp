@@ -276,7 +276,7 @@ void SnapshotDialog::onSnapshotRead()
                     false);
     }
     updateControls();
-    Q_EMIT done();
+    Q_EMIT actionFinished();
 }
 
 void SnapshotDialog::compareWithPlc()
@@ -306,7 +306,7 @@ void SnapshotDialog::onCompared()
         showMessage(translated(SnapshotDiff::summary(count, compared)), false);
     }
     updateControls();
-    Q_EMIT done();
+    Q_EMIT actionFinished();
 }
 
 bool SnapshotDialog::saveSnapshot(const QString &path)
@@ -411,7 +411,7 @@ void SnapshotDialog::onRestored()
         m_model->setDifferences(m_restorer->mismatches(), tr("Written"), tr("Read back"));
     showMessage(translated(m_restorer->outcome()), !m_restorer->ok());
     updateControls();
-    Q_EMIT done();
+    Q_EMIT actionFinished();
 }
 
 } // namespace Fatek

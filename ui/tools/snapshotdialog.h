@@ -63,7 +63,7 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     // Taken, compared or restored: the outcome is in the message line.
-    void done();
+    void actionFinished();
 
 private:
     void onSnapshotRead();
