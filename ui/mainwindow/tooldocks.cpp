@@ -65,35 +65,11 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
     }
     toolsMenu->addSeparator();
     m_loopbackAction = toolsMenu->addAction(tr("&Loopback Test…"), this, [this] {
-        auto *dialog = new LoopbackDialog(m_window);
-        dialog->setObjectName(QStringLiteral("loopbackDialog"));
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-        Connection *c = m_window->currentConnection();
-        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
-                          c ? c->name() : QString());
-        // Like the docks, an open dialog follows the current connection (and lets go of a closed
-        // one).
-        m_targets.append([target = QPointer<LoopbackDialog>(dialog)](
-                             Session *session, quint8 station, const QString &name) {
-            if (target)
-                target->setTarget(session, station, name);
-        });
-        dialog->show();
+        openDialog(new LoopbackDialog(m_window), QStringLiteral("loopbackDialog"));
     });
     m_loopbackAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
     auto *snapshot = toolsMenu->addAction(tr("Memory S&napshot…"), this, [this] {
-        auto *dialog = new SnapshotDialog(m_window);
-        dialog->setObjectName(QStringLiteral("snapshotDialog"));
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-        Connection *c = m_window->currentConnection();
-        dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
-                          c ? c->name() : QString());
-        m_targets.append([target = QPointer<SnapshotDialog>(dialog)](
-                             Session *session, quint8 station, const QString &name) {
-            if (target)
-                target->setTarget(session, station, name);
-        });
-        dialog->show();
+        openDialog(new SnapshotDialog(m_window), QStringLiteral("snapshotDialog"));
     });
     snapshot->setObjectName(QStringLiteral("memorySnapshotAction"));
     snapshot->setToolTip(tr("Save, compare and restore element values of the current station"));
@@ -111,6 +87,24 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
     scan->setObjectName(QStringLiteral("scanStationsAction"));
     scan->setToolTip(tr("Find the PLCs that answer on the current connection's link"));
     setTarget(window->currentConnection());
+}
+
+template<typename Dialog>
+void ToolDocks::openDialog(Dialog *dialog, const QString &objectName)
+{
+    dialog->setObjectName(objectName);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    Connection *c = m_window->currentConnection();
+    dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
+                      c ? c->name() : QString());
+    // Like the docks, an open dialog follows the current connection (and lets go of a closed
+    // one).
+    m_targets.append(
+        [target = QPointer<Dialog>(dialog)](Session *session, quint8 station, const QString &name) {
+            if (target)
+                target->setTarget(session, station, name);
+        });
+    dialog->show();
 }
 
 QAction *ToolDocks::dockAction(QDockWidget *dock, const QKeySequence &shortcut, QObject *parent)
