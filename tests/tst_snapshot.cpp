@@ -465,6 +465,22 @@ void TestSnapshot::cancel()
     // Answers still on their way are ignored: no second finished().
     QTest::qWait(50);
     QCOMPARE(done.size(), 1);
+
+    ValuesRestorer restorer;
+    restorer.setSession(m_session.get());
+    QSignalSpy restored(&restorer, &ValuesRestorer::finished);
+    std::vector<SnapshotValue> values;
+    for (std::uint32_t n = 0; n < 1000; ++n)
+        values.push_back({Address{ElementType::D, n}, 1});
+    restorer.start(1, values);
+    restorer.cancel();
+    QCOMPARE(restored.size(), 1);
+    QVERIFY(restorer.error());
+    QCOMPARE(restorer.error()->kind, ErrorKind::Cancelled);
+    QTest::qWait(50);
+    QCOMPARE(restored.size(), 1);
+    // At most the write already on the wire went through: D0..D63.
+    QCOMPARE(m_plc->value(addr("D64")), std::optional<std::uint32_t>(0));
 }
 
 void TestSnapshot::cliSnapshotDiffRestore()

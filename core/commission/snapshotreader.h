@@ -37,7 +37,8 @@ public:
     void setSession(Session *session);
     Session *session() const { return m_tracker.session(); }
 
-    // `ranges` empty: every element the PLC reports (Snapshot::defaultRanges).
+    // `ranges` empty: every element the PLC reports (Snapshot::defaultRanges). Ignored while a
+    // read is running.
     void start(std::uint8_t station, std::vector<AddressRange> ranges = {});
     // Stops: queued requests are dropped, finished() comes with ErrorKind::Cancelled.
     void cancel();

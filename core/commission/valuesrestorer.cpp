@@ -187,8 +187,8 @@ void ValuesRestorer::cancel()
     if (!m_running)
         return;
     m_tracker.cancelPending();
-    m_reader.cancel(); // finished() of the reader: verify() sees we are no longer running
     fail(makeError(ErrorKind::Cancelled, msg<MsgId::SnapshotCancelled>()));
+    m_reader.cancel(); // its finished() finds us stopped: verify() does nothing
 }
 
 void ValuesRestorer::submitNext()

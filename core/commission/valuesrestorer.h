@@ -29,6 +29,8 @@ public:
     void setSession(Session *session);
     Session *session() const { return m_tracker.session(); }
 
+    // Ignored while running. Refusals (no session, read-only, nothing to write) come as
+    // finished() from the event loop, with nothing sent.
     void start(std::uint8_t station, std::vector<SnapshotValue> values);
     // Stops before the next write (a write on the wire completes); finished() with Cancelled.
     void cancel();
