@@ -10,6 +10,7 @@
 #include "core/sim/modelprofile.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "testutil.h"
 
 #include <QEventLoop>
 #include <QFile>
@@ -27,38 +28,13 @@ using namespace Fatek;
 
 namespace {
 
-struct Run
-{
-    int code = -1;
-    QString out;
-    QString err;
-
-    QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
-};
+using Run = TestUtil::ProgramRun;
 
 // fatek-cli with the event loop turning, so that the in-process simulator answers. Its standard
 // input is a pipe: not a terminal.
-Run runCli(const QStringList &arguments, int timeoutMs = 30000)
+Run runCli(const QStringList &arguments)
 {
-    QProcess p;
-    QEventLoop loop;
-    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
-    QObject::connect(&p, &QProcess::errorOccurred, &loop, &QEventLoop::quit);
-    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-    p.start(QStringLiteral(FATEK_CLI_PATH), arguments);
-    if (p.state() != QProcess::NotRunning)
-        loop.exec();
-    Run r;
-    if (p.state() != QProcess::NotRunning) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("fatek-cli did not end within %1 ms").arg(timeoutMs);
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return TestUtil::runProgram(QStringLiteral(FATEK_CLI_PATH), arguments);
 }
 
 Address addr(const char *text)
