@@ -127,7 +127,9 @@ MemorySnapshot TestSnapshot::take(const std::vector<AddressRange> &r, int *reque
     reader.setSession(m_session.get());
     QSignalSpy done(&reader, &SnapshotReader::finished);
     reader.start(1, r);
-    if (!done.wait(20000) || !reader.ok()) {
+    // Planning a whole FBs (7606 items) takes ~0.2 s in a release build but ~20 s under
+    // ThreadSanitizer: a generous bound, reached only when something is wrong.
+    if (!done.wait(120000) || !reader.ok()) {
         qWarning() << "snapshot failed:"
                    << (reader.ok() ? QStringLiteral("no answer")
                                    : englishText(reader.error().message));
