@@ -1,12 +1,15 @@
 #include "testutil.h"
 
 #include <QCoreApplication>
+#include <QEventLoop>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QSettings>
 #include <QStringList>
+#include <QTimer>
 
 namespace TestUtil {
 
@@ -77,6 +80,39 @@ void useTestSettings(const QString &directory, const QString &applicationName)
     QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, directory);
     QCoreApplication::setOrganizationName(QStringLiteral("fatek-studio-tests"));
     QCoreApplication::setApplicationName(applicationName);
+}
+
+QStringList ProgramRun::lines() const
+{
+    return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+
+QJsonObject ProgramRun::json() const
+{
+    return QJsonDocument::fromJson(out.section(QLatin1Char('\n'), 0, 0).toUtf8()).object();
+}
+
+ProgramRun runProgram(const QString &program, const QStringList &arguments, int timeoutMs)
+{
+    QProcess p;
+    QEventLoop loop;
+    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
+    QObject::connect(&p, &QProcess::errorOccurred, &loop, &QEventLoop::quit);
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    p.start(program, arguments);
+    if (p.state() != QProcess::NotRunning)
+        loop.exec();
+    ProgramRun r;
+    if (p.state() != QProcess::NotRunning) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("%1 did not end within %2 ms").arg(program).arg(timeoutMs);
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
 }
 
 } // namespace TestUtil

@@ -4,6 +4,7 @@
 // binary framing for hex bytes).
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "testutil.h"
 
 #include <QEventLoop>
 #include <QFile>
@@ -24,43 +25,14 @@ using namespace Fatek;
 
 namespace {
 
-struct Run
-{
-    int code = -1;
-    QString out;
-    QString err;
-
-    QJsonObject json() const
-    {
-        return QJsonDocument::fromJson(out.section(QLatin1Char('\n'), 0, 0).toUtf8()).object();
-    }
-};
+using Run = TestUtil::ProgramRun;
 
 // Runs fatek-cli with the event loop turning, so that the in-process simulator answers.
 Run runCli(const QStringList &arguments, int timeoutMs = 30000)
 {
-    QProcess p;
-    QEventLoop loop;
-    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
-    QObject::connect(&p, &QProcess::errorOccurred, &loop, &QEventLoop::quit);
-    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-    p.start(QStringLiteral(FATEK_CLI_PATH), arguments);
-    if (p.state() != QProcess::NotRunning)
-        loop.exec();
-    Run r;
-    if (p.state() != QProcess::NotRunning) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("fatek-cli did not end within %1 ms").arg(timeoutMs);
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return TestUtil::runProgram(QStringLiteral(FATEK_CLI_PATH), arguments, timeoutMs);
 }
 
-// socat joining two ptys at `a` and `b` (stopped when the last copy goes); null without socat.
 std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b)
 {
     const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));

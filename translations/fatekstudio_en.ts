@@ -1166,6 +1166,26 @@
             <translation>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</translation>
         </message>
         <message>
+            <source>No connection to read from.</source>
+            <translation>No connection to read from.</translation>
+        </message>
+        <message>
+            <source>A snapshot or restore is already running.</source>
+            <translation>A snapshot or restore is already running.</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its memory sizes (%1): give the ranges to read.</source>
+            <translation>The PLC did not report its memory sizes (%1): give the ranges to read.</translation>
+        </message>
+        <message>
+            <source>No element ranges to read.</source>
+            <translation>No element ranges to read.</translation>
+        </message>
+        <message>
+            <source>%1 elements are more than a snapshot holds (at most %2).</source>
+            <translation>%1 elements are more than a snapshot holds (at most %2).</translation>
+        </message>
+        <message>
             <source>Cannot read %1: %2</source>
             <translation>Cannot read %1: %2</translation>
         </message>
@@ -1212,6 +1232,118 @@
         <message>
             <source>symbol %1</source>
             <translation>symbol %1</translation>
+        </message>
+        <message>
+            <source>Cancelled.</source>
+            <translation>Cancelled.</translation>
+        </message>
+        <message>
+            <source>%1 values read in %2 requests.</source>
+            <translation>%1 values read in %2 requests.</translation>
+        </message>
+        <message>
+            <source>value %1</source>
+            <translation>value %1</translation>
+        </message>
+        <message>
+            <source>line %1, column %2</source>
+            <translation>line %1, column %2</translation>
+        </message>
+        <message>
+            <source>%1: a snapshot file name ends in .json or .csv.</source>
+            <translation>%1: a snapshot file name ends in .json or .csv.</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>Cannot open %1: %2</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>Cannot write %1: %2</translation>
+        </message>
+        <message>
+            <source>not valid JSON (%1)</source>
+            <translation>not valid JSON (%1)</translation>
+        </message>
+        <message>
+            <source>not a memory snapshot (&quot;format&quot; is not &quot;%1&quot;)</source>
+            <translation>not a memory snapshot (&quot;format&quot; is not &quot;%1&quot;)</translation>
+        </message>
+        <message>
+            <source>snapshot version %1 is not supported (this program reads %2)</source>
+            <translation>snapshot version %1 is not supported (this program reads %2)</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is missing</source>
+            <translation>&quot;%1&quot; is missing</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a whole number</source>
+            <translation>&quot;%1&quot; is not a whole number</translation>
+        </message>
+        <message>
+            <source>%1 does not fit %2 (0..%3)</source>
+            <translation>%1 does not fit %2 (0..%3)</translation>
+        </message>
+        <message>
+            <source>the hex column %1 differs from the value %2</source>
+            <translation>the hex column %1 differs from the value %2</translation>
+        </message>
+        <message>
+            <source>%1 appears twice</source>
+            <translation>%1 appears twice</translation>
+        </message>
+        <message>
+            <source>expected address,value[,hex]</source>
+            <translation>expected address,value[,hex]</translation>
+        </message>
+        <message>
+            <source>a metadata line reads &quot;# key: value&quot;</source>
+            <translation>a metadata line reads &quot;# key: value&quot;</translation>
+        </message>
+        <message>
+            <source>the snapshot holds no values</source>
+            <translation>the snapshot holds no values</translation>
+        </message>
+        <message>
+            <source>(absent)</source>
+            <translation>(absent)</translation>
+        </message>
+        <message>
+            <source>%1: %2 -&gt; %3</source>
+            <translation>%1: %2 -&gt; %3</translation>
+        </message>
+        <message>
+            <source>No differences.</source>
+            <translation>No differences.</translation>
+        </message>
+        <message>
+            <source>%1 of %2 values differ.</source>
+            <translation>%1 of %2 values differ.</translation>
+        </message>
+        <message>
+            <source>Operator mode: restoring values is refused; nothing was written.</source>
+            <translation>Operator mode: restoring values is refused; nothing was written.</translation>
+        </message>
+        <message>
+            <source>The chosen ranges hold no value of the snapshot: nothing to write.</source>
+            <translation>The chosen ranges hold no value of the snapshot: nothing to write.</translation>
+        </message>
+        <message>
+            <source>Writing %1 failed: %2</source>
+            <translation>Writing %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>Reading the values back failed: %1</source>
+            <translation>Reading the values back failed: %1</translation>
+        </message>
+        <message>
+            <source>%1 of %2 values differ after the write (read back).</source>
+            <translation>%1 of %2 values differ after the write (read back).</translation>
+        </message>
+        <message>
+            <source>%1 values written in %2 requests and read back equal.</source>
+            <translation>%1 values written in %2 requests and read back equal.</translation>
         </message>
     </context>
     <context>
@@ -2678,6 +2810,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Save the PLC's program in a file, or write a saved one back</source>
             <translation>Save the PLC's program in a file, or write a saved one back</translation>
         </message>
+        <message>
+            <source>Memory S&amp;napshot…</source>
+            <translation>Memory S&amp;napshot…</translation>
+        </message>
+        <message>
+            <source>Save, compare and restore element values of the current station</source>
+            <translation>Save, compare and restore element values of the current station</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -3476,6 +3616,180 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>&amp;Cancel Scan</source>
             <translation>&amp;Cancel Scan</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::SnapshotDialog</name>
+        <message>
+            <source>Memory Snapshot</source>
+            <translation>Memory Snapshot</translation>
+        </message>
+        <message>
+            <source>R0..R99, M0..M63 (empty: every element the PLC reports)</source>
+            <translation>R0..R99, M0..M63 (empty: every element the PLC reports)</translation>
+        </message>
+        <message>
+            <source>Ranges:</source>
+            <translation>Ranges:</translation>
+        </message>
+        <message>
+            <source>Take Snapshot</source>
+            <translation>Take Snapshot</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Cancel</translation>
+        </message>
+        <message>
+            <source>Save…</source>
+            <translation>Save…</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>Open…</translation>
+        </message>
+        <message>
+            <source>Compare With PLC</source>
+            <translation>Compare With PLC</translation>
+        </message>
+        <message>
+            <source>Compare With File…</source>
+            <translation>Compare With File…</translation>
+        </message>
+        <message>
+            <source>Export Differences…</source>
+            <translation>Export Differences…</translation>
+        </message>
+        <message>
+            <source>Filter</source>
+            <translation>Filter</translation>
+        </message>
+        <message>
+            <source>Ranges to restore (empty: all but the inputs X)</source>
+            <translation>Ranges to restore (empty: all but the inputs X)</translation>
+        </message>
+        <message>
+            <source>Restore Values…</source>
+            <translation>Restore Values…</translation>
+        </message>
+        <message>
+            <source>Save Snapshot</source>
+            <translation>Save Snapshot</translation>
+        </message>
+        <message>
+            <source>Open Snapshot</source>
+            <translation>Open Snapshot</translation>
+        </message>
+        <message>
+            <source>Compare With File</source>
+            <translation>Compare With File</translation>
+        </message>
+        <message>
+            <source>Export Differences</source>
+            <translation>Export Differences</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message>
+            <source>Snapshots (*.json *.csv)</source>
+            <translation>Snapshots (*.json *.csv)</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>Stopped: the target changed.</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>Snapshot: %1 values, %2, station %3, %4</source>
+            <translation>Snapshot: %1 values, %2, station %3, %4</translation>
+        </message>
+        <message>
+            <source>No snapshot yet: take one or open a file.</source>
+            <translation>No snapshot yet: take one or open a file.</translation>
+        </message>
+        <message>
+            <source>Reading…</source>
+            <translation>Reading…</translation>
+        </message>
+        <message>
+            <source>Snapshot</source>
+            <translation>Snapshot</translation>
+        </message>
+        <message>
+            <source>PLC</source>
+            <translation>PLC</translation>
+        </message>
+        <message>
+            <source>Saved %1.</source>
+            <translation>Saved %1.</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>Before</translation>
+        </message>
+        <message>
+            <source>After</source>
+            <translation>After</translation>
+        </message>
+        <message>
+            <source>Opened %1.</source>
+            <translation>Opened %1.</translation>
+        </message>
+        <message>
+            <source>File</source>
+            <translation>File</translation>
+        </message>
+        <message>
+            <source>Exported %1 differences to %2.</source>
+            <translation>Exported %1 differences to %2.</translation>
+        </message>
+        <message>
+            <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
+            <translation>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</translation>
+        </message>
+        <message>
+            <source>Restore Values</source>
+            <translation>Restore Values</translation>
+        </message>
+        <message>
+            <source>Not restored: nothing was written.</source>
+            <translation>Not restored: nothing was written.</translation>
+        </message>
+        <message>
+            <source>Writing…</source>
+            <translation>Writing…</translation>
+        </message>
+        <message>
+            <source>Written</source>
+            <translation>Written</translation>
+        </message>
+        <message>
+            <source>Read back</source>
+            <translation>Read back</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::SnapshotDiffModel</name>
+        <message>
+            <source>Before</source>
+            <translation>Before</translation>
+        </message>
+        <message>
+            <source>After</source>
+            <translation>After</translation>
+        </message>
+        <message>
+            <source>Address</source>
+            <translation>Address</translation>
         </message>
     </context>
 </TS>

@@ -1166,6 +1166,26 @@
             <translation>驗證已於第 %1 頁取消（已檢查 %2／%3 頁）；程式已完整寫入。</translation>
         </message>
         <message>
+            <source>No connection to read from.</source>
+            <translation>沒有可讀取的連線。</translation>
+        </message>
+        <message>
+            <source>A snapshot or restore is already running.</source>
+            <translation>已有快照或還原正在執行。</translation>
+        </message>
+        <message>
+            <source>The PLC did not report its memory sizes (%1): give the ranges to read.</source>
+            <translation>PLC 未回報其記憶體大小（%1）：請指定要讀取的範圍。</translation>
+        </message>
+        <message>
+            <source>No element ranges to read.</source>
+            <translation>沒有要讀取的元件範圍。</translation>
+        </message>
+        <message>
+            <source>%1 elements are more than a snapshot holds (at most %2).</source>
+            <translation>%1 個元件超過快照可容納的數量（最多 %2 個）。</translation>
+        </message>
+        <message>
             <source>Cannot read %1: %2</source>
             <translation>無法讀取 %1：%2</translation>
         </message>
@@ -1212,6 +1232,118 @@
         <message>
             <source>symbol %1</source>
             <translation>符號 %1</translation>
+        </message>
+        <message>
+            <source>Cancelled.</source>
+            <translation>已取消。</translation>
+        </message>
+        <message>
+            <source>%1 values read in %2 requests.</source>
+            <translation>以 %2 次請求讀取了 %1 個值。</translation>
+        </message>
+        <message>
+            <source>value %1</source>
+            <translation>第 %1 個值</translation>
+        </message>
+        <message>
+            <source>line %1, column %2</source>
+            <translation>第 %1 行，第 %2 欄</translation>
+        </message>
+        <message>
+            <source>%1: a snapshot file name ends in .json or .csv.</source>
+            <translation>%1：快照檔名須為 *.json 或 *.csv。</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>無法開啟 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>無法寫入 %1：%2</translation>
+        </message>
+        <message>
+            <source>not valid JSON (%1)</source>
+            <translation>不是有效的 *.json 內容（%1）</translation>
+        </message>
+        <message>
+            <source>not a memory snapshot (&quot;format&quot; is not &quot;%1&quot;)</source>
+            <translation>不是記憶體快照（格式標記不是「%1」）</translation>
+        </message>
+        <message>
+            <source>snapshot version %1 is not supported (this program reads %2)</source>
+            <translation>不支援快照版本 %1（本程式讀取版本 %2）</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is missing</source>
+            <translation>缺少 &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a whole number</source>
+            <translation>&quot;%1&quot; 不是整數</translation>
+        </message>
+        <message>
+            <source>%1 does not fit %2 (0..%3)</source>
+            <translation>%1 超出 %2 的範圍（0..%3）</translation>
+        </message>
+        <message>
+            <source>the hex column %1 differs from the value %2</source>
+            <translation>十六進位欄 %1 與數值 %2 不符</translation>
+        </message>
+        <message>
+            <source>%1 appears twice</source>
+            <translation>%1 重複出現</translation>
+        </message>
+        <message>
+            <source>expected address,value[,hex]</source>
+            <translation>應為位址、數值（及選用的十六進位）欄位</translation>
+        </message>
+        <message>
+            <source>a metadata line reads &quot;# key: value&quot;</source>
+            <translation>中繼資料行的格式為「# 名稱: 內容」</translation>
+        </message>
+        <message>
+            <source>the snapshot holds no values</source>
+            <translation>快照中沒有任何值</translation>
+        </message>
+        <message>
+            <source>(absent)</source>
+            <translation>（無）</translation>
+        </message>
+        <message>
+            <source>%1: %2 -&gt; %3</source>
+            <translation>%1：%2 → %3</translation>
+        </message>
+        <message>
+            <source>No differences.</source>
+            <translation>沒有差異。</translation>
+        </message>
+        <message>
+            <source>%1 of %2 values differ.</source>
+            <translation>%2 個值中有 %1 個不同。</translation>
+        </message>
+        <message>
+            <source>Operator mode: restoring values is refused; nothing was written.</source>
+            <translation>操作員模式：拒絕還原數值，未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>The chosen ranges hold no value of the snapshot: nothing to write.</source>
+            <translation>所選範圍內沒有快照中的值：沒有要寫入的資料。</translation>
+        </message>
+        <message>
+            <source>Writing %1 failed: %2</source>
+            <translation>寫入 %1 失敗：%2</translation>
+        </message>
+        <message>
+            <source>Reading the values back failed: %1</source>
+            <translation>回讀數值失敗：%1</translation>
+        </message>
+        <message>
+            <source>%1 of %2 values differ after the write (read back).</source>
+            <translation>寫入後回讀，%2 個值中有 %1 個不同。</translation>
+        </message>
+        <message>
+            <source>%1 values written in %2 requests and read back equal.</source>
+            <translation>以 %2 次請求寫入 %1 個值，回讀結果一致。</translation>
         </message>
     </context>
     <context>
@@ -2670,6 +2802,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Save the PLC's program in a file, or write a saved one back</source>
             <translation>將 PLC 的程式存入檔案，或將已儲存的程式寫回</translation>
         </message>
+        <message>
+            <source>Memory S&amp;napshot…</source>
+            <translation>記憶體快照(&amp;N)…</translation>
+        </message>
+        <message>
+            <source>Save, compare and restore element values of the current station</source>
+            <translation>儲存、比較並還原目前站號的元件數值</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -3461,6 +3601,180 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>&amp;Cancel Scan</source>
             <translation>取消掃描(&amp;C)</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::SnapshotDialog</name>
+        <message>
+            <source>Memory Snapshot</source>
+            <translation>記憶體快照</translation>
+        </message>
+        <message>
+            <source>R0..R99, M0..M63 (empty: every element the PLC reports)</source>
+            <translation>R0..R99, M0..M63（留空：PLC 回報的所有元件）</translation>
+        </message>
+        <message>
+            <source>Ranges:</source>
+            <translation>範圍：</translation>
+        </message>
+        <message>
+            <source>Take Snapshot</source>
+            <translation>擷取快照</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>取消</translation>
+        </message>
+        <message>
+            <source>Save…</source>
+            <translation>儲存…</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>開啟…</translation>
+        </message>
+        <message>
+            <source>Compare With PLC</source>
+            <translation>與 PLC 比較</translation>
+        </message>
+        <message>
+            <source>Compare With File…</source>
+            <translation>與檔案比較…</translation>
+        </message>
+        <message>
+            <source>Export Differences…</source>
+            <translation>匯出差異…</translation>
+        </message>
+        <message>
+            <source>Filter</source>
+            <translation>篩選</translation>
+        </message>
+        <message>
+            <source>Ranges to restore (empty: all but the inputs X)</source>
+            <translation>要還原的範圍（留空：輸入 X 以外的全部）</translation>
+        </message>
+        <message>
+            <source>Restore Values…</source>
+            <translation>還原數值…</translation>
+        </message>
+        <message>
+            <source>Save Snapshot</source>
+            <translation>儲存快照</translation>
+        </message>
+        <message>
+            <source>Open Snapshot</source>
+            <translation>開啟快照</translation>
+        </message>
+        <message>
+            <source>Compare With File</source>
+            <translation>與檔案比較</translation>
+        </message>
+        <message>
+            <source>Export Differences</source>
+            <translation>匯出差異</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 檔案 (*.csv)</translation>
+        </message>
+        <message>
+            <source>Snapshots (*.json *.csv)</source>
+            <translation>快照 (*.json *.csv)</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>已停止：目標已變更。</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>Snapshot: %1 values, %2, station %3, %4</source>
+            <translation>快照：%1 個值，%2，站號 %3，%4</translation>
+        </message>
+        <message>
+            <source>No snapshot yet: take one or open a file.</source>
+            <translation>尚無快照：請擷取快照或開啟檔案。</translation>
+        </message>
+        <message>
+            <source>Reading…</source>
+            <translation>讀取中…</translation>
+        </message>
+        <message>
+            <source>Snapshot</source>
+            <translation>快照</translation>
+        </message>
+        <message>
+            <source>PLC</source>
+            <translation>PLC 現值</translation>
+        </message>
+        <message>
+            <source>Saved %1.</source>
+            <translation>已儲存 %1。</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>之前</translation>
+        </message>
+        <message>
+            <source>After</source>
+            <translation>之後</translation>
+        </message>
+        <message>
+            <source>Opened %1.</source>
+            <translation>已開啟 %1。</translation>
+        </message>
+        <message>
+            <source>File</source>
+            <translation>檔案</translation>
+        </message>
+        <message>
+            <source>Exported %1 differences to %2.</source>
+            <translation>已將 %1 筆差異匯出至 %2。</translation>
+        </message>
+        <message>
+            <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
+            <translation>要以 %3 次請求將快照中的 %1 個值寫入 %2，然後回讀確認嗎？</translation>
+        </message>
+        <message>
+            <source>Restore Values</source>
+            <translation>還原數值</translation>
+        </message>
+        <message>
+            <source>Not restored: nothing was written.</source>
+            <translation>未還原：未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Writing…</source>
+            <translation>寫入中…</translation>
+        </message>
+        <message>
+            <source>Written</source>
+            <translation>已寫入</translation>
+        </message>
+        <message>
+            <source>Read back</source>
+            <translation>回讀</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::SnapshotDiffModel</name>
+        <message>
+            <source>Before</source>
+            <translation>之前</translation>
+        </message>
+        <message>
+            <source>After</source>
+            <translation>之後</translation>
+        </message>
+        <message>
+            <source>Address</source>
+            <translation>位址</translation>
         </message>
     </context>
 </TS>

@@ -3,6 +3,8 @@
 #include "app/common/linkarguments.h"
 #include "clioptions.h"
 #include "clitext.h"
+#include "core/commission/memorysnapshot.h"
+#include "core/commission/snapshotfile.h"
 #include "core/watch/itemvalues.h"
 #include "core/watch/watchlist.h"
 
@@ -240,9 +242,49 @@ QString parseScan(StepArgs &a)
 // backup FILE, restore FILE
 QString parseProgramFile(StepArgs &a)
 {
-    a.step.path = a.positional.at(0);
-    if (a.step.path.trimmed().isEmpty())
+    a.step.file = a.positional.at(0);
+    if (a.step.file.trimmed().isEmpty())
         return QStringLiteral("%1 needs a file name.").arg(a.cmd());
+    return {};
+}
+
+// A snapshot file name: .json or .csv.
+QString snapshotFileArg(StepArgs &a, const QString &path, QString *out)
+{
+    if (!SnapshotFile::formatFor(path))
+        return QStringLiteral("%1: \"%2\" is not a .json or .csv file name.").arg(a.cmd(), path);
+    *out = path;
+    return {};
+}
+
+// RANGES: every further argument, "R0..R99, X0..X255" or "R0..R99 X0..X255".
+QString rangesArg(StepArgs &a, qsizetype from)
+{
+    const QString text = a.positional.mid(from).join(QLatin1Char(' '));
+    if (text.trimmed().isEmpty())
+        return {};
+    const auto ranges = Snapshot::parseRanges(text);
+    if (!ranges)
+        return QStringLiteral("%1: %2").arg(a.cmd(), CliText::error(ranges.error()));
+    a.step.ranges = ranges.value();
+    return {};
+}
+
+// snapshot FILE [RANGES], restore-values FILE [RANGES]
+QString parseSnapshotFileAndRanges(StepArgs &a)
+{
+    if (QString err = snapshotFileArg(a, a.positional.at(0), &a.step.file); !err.isEmpty())
+        return err;
+    return rangesArg(a, 1);
+}
+
+// diff FILE [FILE2]
+QString parseDiff(StepArgs &a)
+{
+    if (QString err = snapshotFileArg(a, a.positional.at(0), &a.step.file); !err.isEmpty())
+        return err;
+    if (a.positional.size() > 1)
+        return snapshotFileArg(a, a.positional.at(1), &a.step.file2);
     return {};
 }
 
@@ -275,6 +317,9 @@ constexpr CommandSpec commands[] = {
     {"scan", CliCommand::Scan, 0, 1, false, parseScan},
     {"backup", CliCommand::Backup, 1, 1, true, parseProgramFile},
     {"restore", CliCommand::Restore, 1, 1, true, parseProgramFile},
+    {"snapshot", CliCommand::Snapshot, 1, -1, true, parseSnapshotFileAndRanges},
+    {"diff", CliCommand::Diff, 1, 2, true, parseDiff},
+    {"restore-values", CliCommand::RestoreValues, 1, -1, true, parseSnapshotFileAndRanges},
 };
 
 const CommandSpec *findCommand(const QString &name)

@@ -66,10 +66,18 @@ QString usageText()
         "                           back and compared); shows the pages that differ and asks "
         "first;\n"
         "                           the PLC must be in STOP (fatek-cli stop --then restore FILE)\n"
+        "  snapshot FILE [RANGES]   save element values to FILE (.json or .csv); RANGES like\n"
+        "                           \"R0..R99, X0..X255\" (default: every element the PLC "
+        "reports)\n"
+        "  diff FILE [FILE2]        differences, one line per element: FILE against the PLC, or\n"
+        "                           against FILE2 (no link needed)\n"
+        "  restore-values FILE [RANGES]   write FILE's values back (default: all but X), after a\n"
+        "                           confirmation (--yes), then read them back and compare\n"
         "\n"
-        "Exit codes: 0 ok, 1 file not written, 2 usage (also a damaged backup, another model, a\n"
+        "Exit codes: 0 ok, 1 file not written, 2 usage (also a damaged file, another model, a\n"
         "restore not confirmed), 3 link failure (timeout, no connection), 4 PLC error (also RUN\n"
-        "during restore, verification failed), 5 refused by --read-only.\n");
+        "during restore, program verification failed), 5 refused by --read-only, 6 differences\n"
+        "found (diff; restore-values read back other values).\n");
 }
 
 QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
@@ -207,7 +215,10 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     rules.defaultProtocol
         = o.sim ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Auto;
     const LinkArgumentsResult resolved = resolveLinkArguments(link, rules);
-    if (!resolved.error.isEmpty())
+    // "diff FILE FILE2" alone compares two files: no PLC, so no link is needed.
+    o.offline = !linkCount && positional.size() == 3
+                && positional.first().compare(QLatin1String("diff"), Qt::CaseInsensitive) == 0;
+    if (!resolved.error.isEmpty() && !o.offline)
         return fail(resolved.error);
     o.link = resolved.link;
     o.link.autoReconnect = false; // a script wants the failure, not a retry loop

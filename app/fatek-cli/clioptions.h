@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/address.h"
+#include "core/protocol/addressrange.h"
 #include "core/transport/linksettings.h"
 #include "core/watch/watchlist.h"
 
@@ -22,6 +23,7 @@ inline constexpr int Usage = 2;    // bad command line, or a request that cannot
 inline constexpr int Link = 3;     // timeout, no connection, broken answers
 inline constexpr int Plc = 4;      // the PLC answered with an error code
 inline constexpr int ReadOnly = 5; // refused by --read-only
+inline constexpr int Differ = 6;   // diff found differences; restore-values read back others
 inline constexpr int Interrupted
     = 130; // Ctrl-C / SIGTERM before the command finished (128 + SIGINT)
 } // namespace ExitCode
@@ -39,7 +41,10 @@ enum class CliCommand {
     Raw,
     Scan,
     Backup,
-    Restore
+    Restore,
+    Snapshot,
+    Diff,
+    RestoreValues
 };
 enum class OutputFormat { Table, Json, Csv };
 
@@ -61,7 +66,11 @@ struct CliStep
     bool rawFrame = false;
     bool rawHex = false; // typed as hex: binary bytes (--frame under auto: binary framing)
 
-    QString path; // backup / restore: the program backup file
+    // backup / restore: the program backup file; snapshot / diff / restore-values: the files
+    // (.json or .csv) and the element ranges
+    QString file;
+    QString file2; // diff: the second file; empty = the live PLC
+    std::vector<AddressRange> ranges;
 
     int scanFirst = 1;
     int scanLast = 254;
@@ -85,6 +94,7 @@ struct CliOptions
     std::uint8_t station = 1;
     bool readOnly = false;
     bool assumeYes = false; // --yes: the confirmation of restore / restore-values is given
+    bool offline = false;   // diff FILE FILE2 alone: no link needed, none opened
     OutputFormat format = OutputFormat::Table;
 
     QList<CliStep> steps; // run in order; the first failure ends the program

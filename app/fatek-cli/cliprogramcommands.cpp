@@ -88,7 +88,7 @@ void CliRunner::failTransfer(const ProgramTransferResult &result)
     }
     QJsonObject extra;
     extra.insert(QStringLiteral("station"), m_options.station);
-    extra.insert(QStringLiteral("file"), step().path);
+    extra.insert(QStringLiteral("file"), step().file);
     if (!result.pages.empty())
         extra.insert(QStringLiteral("pages"), pagesJson(result.pages));
     if (result.stoppedAtPage >= 0)
@@ -109,7 +109,7 @@ void CliRunner::runBackup()
                 m_watchdog.stop();
                 endProgressLine(&m_progressShown);
                 const ProgramImage &image = m_program->plcImage();
-                if (const auto error = image.save(step().path)) {
+                if (const auto error = image.save(step().file)) {
                     m_out.error(QString::fromStdString(error->text()), ExitCode::Internal);
                     return finish(ExitCode::Internal);
                 }
@@ -121,14 +121,14 @@ void CliRunner::runBackup()
                                           ? englishText(image.header().model())
                                           : image.modelText();
                 block.rows << QStringList{stationText(),
-                                          step().path,
+                                          step().file,
                                           QString::number(image.pageCount()),
                                           QString::number(image.header().ladderSize),
                                           model,
                                           crcText(image.checksum())};
                 QJsonObject json;
                 json.insert(QStringLiteral("station"), m_options.station);
-                json.insert(QStringLiteral("file"), step().path);
+                json.insert(QStringLiteral("file"), step().file);
                 json.insert(QStringLiteral("pages"), image.pageCount());
                 json.insert(QStringLiteral("programWords"), image.header().ladderSize);
                 json.insert(QStringLiteral("model"), model);
@@ -145,7 +145,7 @@ void CliRunner::runBackup()
 
 void CliRunner::runRestore()
 {
-    const ProgramImage::LoadResult loaded = ProgramImage::load(step().path);
+    const ProgramImage::LoadResult loaded = ProgramImage::load(step().file);
     if (!loaded.ok()) {
         m_out.error(QString::fromStdString(loaded.error().text()), ExitCode::Usage);
         return finish(ExitCode::Usage);
@@ -170,7 +170,7 @@ void CliRunner::confirmRestore(const ProgramImage &image, const ProgramTransferR
     endProgressLine(&m_progressShown);
     const QString model = englishText(image.header().model());
     m_out.note(QStringLiteral("Restore %1 to station %2: %3 (%4), %5 pages, saved %6.")
-                   .arg(QFileInfo(step().path).fileName(), stationText(), model,
+                   .arg(QFileInfo(step().file).fileName(), stationText(), model,
                         image.modelText().isEmpty() ? QStringLiteral("model not recorded")
                                                     : image.modelText())
                    .arg(image.pageCount())
@@ -202,13 +202,13 @@ void CliRunner::confirmRestore(const ProgramImage &image, const ProgramTransferR
                     = {QStringLiteral("station"), QStringLiteral("file"), QStringLiteral("pages"),
                        QStringLiteral("changed pages"), QStringLiteral("result")};
                 block.rows << QStringList{
-                    stationText(), step().path, QString::number(image.pageCount()),
+                    stationText(), step().file, QString::number(image.pageCount()),
                     differing.empty() ? QStringLiteral("none")
                                       : QString::fromStdString(pageListText(differing)),
                     QStringLiteral("written and verified")};
                 QJsonObject json;
                 json.insert(QStringLiteral("station"), m_options.station);
-                json.insert(QStringLiteral("file"), step().path);
+                json.insert(QStringLiteral("file"), step().file);
                 json.insert(QStringLiteral("pages"), image.pageCount());
                 json.insert(QStringLiteral("programWords"), image.header().ladderSize);
                 json.insert(QStringLiteral("changedPages"), pagesJson(differing));

@@ -2,6 +2,8 @@
 #include "clirunner.h"
 
 #include "clitext.h"
+#include "core/commission/snapshotreader.h"
+#include "core/commission/valuesrestorer.h"
 #include "core/protocol/plcstatus.h"
 #include "core/sim/modelprofile.h"
 #include "core/sim/simserver.h"
@@ -28,9 +30,12 @@ CliRunner::CliRunner(const CliOptions &options, QObject *parent)
 
 CliRunner::~CliRunner()
 {
-    // The scanner and the program transfer cancel through the session: drop them first.
+    // The scanner, program transfer, reader and restorer cancel through the session: drop them
+    // first.
     m_scanner.reset();
     m_program.reset();
+    m_snapshotReader.reset();
+    m_restorer.reset();
     m_session.reset();
 }
 
@@ -77,6 +82,12 @@ bool CliRunner::applyNames()
 void CliRunner::start()
 {
     registerSessionMetaTypes();
+    if (m_options.offline) {
+        // diff FILE FILE2: nothing to connect to.
+        m_dispatched = true;
+        dispatch();
+        return;
+    }
     if (m_options.sim) {
         QString error;
         if (!startSimulator(&error)) {
@@ -218,6 +229,10 @@ void CliRunner::finish(int exitCode)
     m_requests.forgetPending(); // results that still come are not reported
     if (m_scanner)
         m_scanner->cancel();
+    if (m_snapshotReader)
+        m_snapshotReader->cancel();
+    if (m_restorer)
+        m_restorer->cancel();
     if (m_session)
         m_session->setWatchList({});
     m_logger.close(); // a monitor ended by an error keeps the rows it logged
@@ -267,6 +282,9 @@ void CliRunner::dispatch()
     case CliCommand::Scan: runScan(); break;
     case CliCommand::Backup: runBackup(); break;
     case CliCommand::Restore: runRestore(); break;
+    case CliCommand::Snapshot: runSnapshot(); break;
+    case CliCommand::Diff: runDiff(); break;
+    case CliCommand::RestoreValues: runRestoreValues(); break;
     }
 }
 

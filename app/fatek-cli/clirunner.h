@@ -3,6 +3,8 @@
 #include "clioptions.h"
 #include "clioutput.h"
 #include "core/commission/programtransfer.h"
+#include "core/commission/snapshotdiff.h"
+#include "core/commission/snapshotfile.h"
 #include "core/protocol/request.h"
 #include "core/session/loopbackstats.h"
 #include "core/session/requesttracker.h"
@@ -25,6 +27,8 @@ namespace Fatek {
 
 class SimServer;
 class SimulatedPlc;
+class SnapshotReader;
+class ValuesRestorer;
 
 // Runs one command: opens the link (or the embedded simulator), submits the command's requests to
 // a Session and reacts to its signals; done() carries the exit code. Never blocks: a watchdog
@@ -90,6 +94,16 @@ private:
     void showTransferProgress(int done, int total);
     // A backup, check or restore that did not succeed: its message and exit code.
     void failTransfer(const ProgramTransferResult &result);
+    void runSnapshot();
+    void runDiff();
+    void runRestoreValues();
+    // snapshot, diff, restore-values: a reader on the session, the watchdog re-armed on progress.
+    SnapshotReader *snapshotReader();
+    // A snapshot file, or nothing after reporting why not (exit 2).
+    std::optional<MemorySnapshot> loadSnapshot(const QString &path);
+    // One line (table, CSV row, JSON object) per difference.
+    void printDifferences(const std::vector<SnapshotDifference> &differences, bool readBack);
+    void failWithError(const ProtocolError &error);
 
     QString stationText() const;
     QJsonObject itemJson(const Address &address) const;
@@ -101,6 +115,8 @@ private:
     std::unique_ptr<SimServer> m_server;
     std::unique_ptr<Session> m_session;
     std::unique_ptr<StationScanner> m_scanner;
+    std::unique_ptr<SnapshotReader> m_snapshotReader;
+    std::unique_ptr<ValuesRestorer> m_restorer;
     RequestTracker m_requests; // the commands' own requests (not the scanner's)
     QTimer m_watchdog;
     qsizetype m_stepIndex = 0;

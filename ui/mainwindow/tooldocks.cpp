@@ -8,6 +8,7 @@
 #include "ui/tools/plccontrolpanel.h"
 #include "ui/tools/programtransferdialog.h"
 #include "ui/tools/rawconsole.h"
+#include "ui/tools/snapshotdialog.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -16,27 +17,6 @@
 #include <QScrollArea>
 
 namespace Fatek {
-
-namespace {
-
-using Targets = QList<std::function<void(Session *, quint8, const QString &)>>;
-
-// A dialog opened from the Tools menu acts on the current connection and, like the docks, follows
-// it while open (and lets go of a closed one).
-template<typename Dialog>
-void followTarget(Dialog *dialog, Connection *current, Targets *targets)
-{
-    dialog->setTarget(current ? current->session() : nullptr,
-                      current ? current->station() : quint8(1),
-                      current ? current->name() : QString());
-    targets->append(
-        [target = QPointer<Dialog>(dialog)](Session *session, quint8 station, const QString &name) {
-            if (target)
-                target->setTarget(session, station, name);
-        });
-}
-
-} // namespace
 
 ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
     : QObject(window)
@@ -86,11 +66,7 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
     }
     toolsMenu->addSeparator();
     m_loopbackAction = toolsMenu->addAction(tr("&Loopback Test…"), this, [this] {
-        auto *dialog = new LoopbackDialog(m_window);
-        dialog->setObjectName(QStringLiteral("loopbackDialog"));
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-        followTarget(dialog, m_window->currentConnection(), &m_targets);
-        dialog->show();
+        openDialog(new LoopbackDialog(m_window), QStringLiteral("loopbackDialog"));
     });
     m_loopbackAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
     auto *program = toolsMenu->addAction(tr("&Program Backup / Restore…"), this, [this] {
@@ -101,14 +77,15 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
             open->activateWindow();
             return;
         }
-        auto *dialog = new ProgramTransferDialog(m_window);
-        dialog->setObjectName(QStringLiteral("programTransferDialog"));
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-        followTarget(dialog, m_window->currentConnection(), &m_targets);
-        dialog->show();
+        openDialog(new ProgramTransferDialog(m_window), QStringLiteral("programTransferDialog"));
     });
     program->setObjectName(QStringLiteral("programTransferAction"));
     program->setToolTip(tr("Save the PLC's program in a file, or write a saved one back"));
+    auto *snapshot = toolsMenu->addAction(tr("Memory S&napshot…"), this, [this] {
+        openDialog(new SnapshotDialog(m_window), QStringLiteral("snapshotDialog"));
+    });
+    snapshot->setObjectName(QStringLiteral("memorySnapshotAction"));
+    snapshot->setToolTip(tr("Save, compare and restore element values of the current station"));
     auto *scan = toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
         Connection *c = m_window->currentConnection();
         if (!c) {
@@ -123,6 +100,24 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
     scan->setObjectName(QStringLiteral("scanStationsAction"));
     scan->setToolTip(tr("Find the PLCs that answer on the current connection's link"));
     setTarget(window->currentConnection());
+}
+
+template<typename Dialog>
+void ToolDocks::openDialog(Dialog *dialog, const QString &objectName)
+{
+    dialog->setObjectName(objectName);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    Connection *c = m_window->currentConnection();
+    dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
+                      c ? c->name() : QString());
+    // Like the docks, an open dialog follows the current connection (and lets go of a closed
+    // one).
+    m_targets.append(
+        [target = QPointer<Dialog>(dialog)](Session *session, quint8 station, const QString &name) {
+            if (target)
+                target->setTarget(session, station, name);
+        });
+    dialog->show();
 }
 
 QAction *ToolDocks::dockAction(QDockWidget *dock, const QKeySequence &shortcut, QObject *parent)

@@ -19,8 +19,8 @@ class MainWindow;
 class Session;
 
 // The commissioning tools of the main window: the PLC Control, Forcing and Raw Console docks, the
-// Loopback Test and Scan Stations dialogs, and their Tools/View menu entries. Every tool acts on
-// one target, the current connection and its station.
+// Loopback Test, Memory Snapshot and Scan Stations dialogs, and their Tools/View menu entries.
+// Every tool acts on one target, the current connection and its station.
 class ToolDocks : public QObject
 {
     Q_OBJECT
@@ -48,6 +48,12 @@ Q_SIGNALS:
 
 private:
     using SetTarget = std::function<void(Session *, quint8, const QString &)>;
+
+    // Shows a tool dialog (deleted on close) aimed at the current connection, and keeps it aimed
+    // at the current one: the Loopback Test, Program Backup / Restore and Memory Snapshot
+    // dialogs.
+    template<typename Dialog>
+    void openDialog(Dialog *dialog, const QString &objectName);
 
     MainWindow *m_window;
     QAction *m_loopbackAction = nullptr;

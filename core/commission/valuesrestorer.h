@@ -1,0 +1,81 @@
+#pragma once
+
+#include "core/session/requesttracker.h"
+#include "memorysnapshot.h"
+#include "snapshotdiff.h"
+#include "snapshotreader.h"
+
+#include <QObject>
+
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace Fatek {
+
+class Session;
+
+// Restores values (a recipe): writes the chosen values of a snapshot in the fewest write frames,
+// then reads them back and reports exactly which elements differ. Refused up front, nothing
+// written, when the session is read-only (operator mode). Through a RequestTracker: never
+// blocks; progress() after each answer, finished() once.
+class ValuesRestorer : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit ValuesRestorer(QObject *parent = nullptr);
+
+    void setSession(Session *session);
+    Session *session() const { return m_tracker.session(); }
+
+    // Ignored while running. Refusals (no session, read-only, nothing to write) come as
+    // finished() from the event loop, with nothing sent.
+    void start(std::uint8_t station, std::vector<SnapshotValue> values);
+    // Stops before the next write (a write on the wire completes); finished() with Cancelled.
+    void cancel();
+    bool isRunning() const { return m_running; }
+
+    // Writes done so far plus the read-back's requests.
+    int requestsDone() const;
+    int requestsTotal() const;
+    int writeRequestCount() const { return static_cast<int>(m_writes.size()); }
+
+    // After finished(): written and read back equal.
+    bool ok() const { return !m_error && m_mismatches.empty(); }
+    // The failure (ReadOnly, a write refused, the link...), when there was one.
+    const std::optional<ProtocolError> &error() const { return m_error; }
+    // Read back after writing: before = the value written, after = the value read.
+    const std::vector<SnapshotDifference> &mismatches() const { return m_mismatches; }
+    // One sentence: RestoreDone, RestoreDiffer, or the error.
+    Message outcome() const;
+
+    // The write frames for `values` (any order): runs of consecutive elements as 45 (discretes,
+    // <= 256) or 47 (registers, <= 64 words); the shortest runs packed into 49 mixed writes
+    // (<= 32 words) wherever that saves frames.
+    static std::vector<Request> writeRequests(std::uint8_t station,
+                                              std::span<const SnapshotValue> values);
+
+Q_SIGNALS:
+    void progress(int done, int total);
+    void finished();
+
+private:
+    void submitNext();
+    void onWritten(const Request &request, const SessionResult &result);
+    void verify();
+    void fail(ProtocolError error);
+
+    RequestTracker m_tracker;
+    SnapshotReader m_reader;
+    bool m_running = false;
+    std::uint8_t m_station = 1;
+    std::vector<SnapshotValue> m_values;
+    std::vector<Request> m_writes;
+    std::size_t m_nextWrite = 0;
+    int m_written = 0;
+    std::optional<ProtocolError> m_error;
+    std::vector<SnapshotDifference> m_mismatches;
+};
+
+} // namespace Fatek

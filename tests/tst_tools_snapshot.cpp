@@ -1,0 +1,141 @@
+// Tools -> Memory Snapshot (SnapshotDialog) against the in-process simulator: take, compare with
+// the PLC and with a file, filter, export, restore with confirmation, refused in operator mode.
+#include "core/commission/snapshotfile.h"
+#include "tst_tools_fixture.h"
+#include "ui/tools/snapshotdialog.h"
+#include "ui/tools/snapshotdiffmodel.h"
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+
+using namespace Fatek;
+using ToolsTest::addr;
+
+class TestToolsSnapshot : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void init();
+    void cleanup();
+
+    void takeCompareRestore();
+    void compareFilesAndExport();
+    void refusedInOperatorMode();
+
+private:
+    bool runAndWait(const std::function<void()> &action);
+
+    ToolsTest::Rig m_rig;
+    std::unique_ptr<SnapshotDialog> m_dialog;
+    QTemporaryDir m_dir;
+};
+
+void TestToolsSnapshot::init()
+{
+    QVERIFY(m_rig.start());
+    m_dialog = std::make_unique<SnapshotDialog>();
+    m_dialog->setTarget(m_rig.session.get(), 1, ToolsTest::Rig::connectionName());
+    m_dialog->setConfirmer(m_rig.confirmer());
+    m_rig.questions.clear();
+    m_rig.answer = true;
+}
+
+void TestToolsSnapshot::cleanup()
+{
+    m_dialog.reset();
+    m_rig.session.reset();
+    m_rig.server.reset();
+    m_rig.plc.reset();
+}
+
+bool TestToolsSnapshot::runAndWait(const std::function<void()> &action)
+{
+    QSignalSpy done(m_dialog.get(), &SnapshotDialog::actionFinished);
+    action();
+    return done.wait(10000);
+}
+
+void TestToolsSnapshot::takeCompareRestore()
+{
+    m_rig.plc->setValue(addr("R3"), 33);
+    m_rig.plc->setValue(addr("M1"), 1);
+    m_dialog->setRanges(QStringLiteral("R0..R9, M0..M15"));
+    QVERIFY(runAndWait([this] { m_dialog->takeSnapshot(); }));
+    QVERIFY2(m_dialog->snapshot().has_value(), qPrintable(m_dialog->messageText()));
+    QCOMPARE(m_dialog->snapshot()->values.size(), std::size_t(26));
+    QVERIFY(m_dialog->messageText().contains(QLatin1String("26 values read")));
+
+    m_rig.plc->setValue(addr("R3"), 1);
+    m_rig.plc->setValue(addr("M1"), 0);
+    QVERIFY(runAndWait([this] { m_dialog->compareWithPlc(); }));
+    QCOMPARE(m_dialog->differences()->rowCount(), 2);
+    QCOMPARE(m_dialog->differences()->data(m_dialog->differences()->index(1, 1)).toString(),
+             QStringLiteral("33"));
+    m_dialog->setFilter(QStringLiteral("R3"));
+    QCOMPARE(m_dialog->visibleDifferences(), 1);
+
+    // Restore only R3; the question names the target.
+    m_dialog->setRestoreRanges(QStringLiteral("R3"));
+    QVERIFY(runAndWait([this] { m_dialog->restoreValues(); }));
+    QCOMPARE(m_rig.questions.size(), 1);
+    QVERIFY(m_rig.questions.first().contains(ToolsTest::Rig::connectionName()));
+    QCOMPARE(m_rig.plc->value(addr("R3")), std::optional<std::uint32_t>(33));
+    QCOMPARE(m_rig.plc->value(addr("M1")), std::optional<std::uint32_t>(0));
+    QVERIFY2(m_dialog->messageText().contains(QLatin1String("read back equal")),
+             qPrintable(m_dialog->messageText()));
+
+    // Answered No: nothing written.
+    m_rig.answer = false;
+    m_dialog->setRestoreRanges({});
+    m_dialog->restoreValues();
+    QCOMPARE(m_rig.plc->value(addr("M1")), std::optional<std::uint32_t>(0));
+}
+
+void TestToolsSnapshot::compareFilesAndExport()
+{
+    m_dialog->setRanges(QStringLiteral("D0..D3"));
+    QVERIFY(runAndWait([this] { m_dialog->takeSnapshot(); }));
+    const QString a = m_dir.filePath(QStringLiteral("a.csv"));
+    QVERIFY(m_dialog->saveSnapshot(a));
+    MemorySnapshot other = *m_dialog->snapshot();
+    other.values[2].value = 7;
+    const QString b = m_dir.filePath(QStringLiteral("b.json"));
+    QVERIFY(!SnapshotFile::saveToFile(other, b));
+    QVERIFY(m_dialog->openSnapshot(a));
+    QVERIFY(m_dialog->compareWithFile(b));
+    QCOMPARE(m_dialog->differences()->rowCount(), 1);
+    const QString csv = m_dir.filePath(QStringLiteral("diff.csv"));
+    QVERIFY(m_dialog->exportDifferences(csv));
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(),
+             QByteArray("address,before,after,beforeHex,afterHex\nD2,0,7,0x0000,0x0007\n"));
+    // A damaged file: refused, named in the message line.
+    QFile bad(m_dir.filePath(QStringLiteral("bad.json")));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("{\"format\": 1");
+    bad.close();
+    QVERIFY(!m_dialog->compareWithFile(bad.fileName()));
+    QVERIFY2(m_dialog->messageText().contains(QLatin1String("line 1, column")),
+             qPrintable(m_dialog->messageText()));
+}
+
+void TestToolsSnapshot::refusedInOperatorMode()
+{
+    m_dialog->setRanges(QStringLiteral("R0..R3"));
+    QVERIFY(runAndWait([this] { m_dialog->takeSnapshot(); }));
+    m_rig.plc->setValue(addr("R0"), 9);
+    m_rig.session->setReadOnly(true);
+    const quint64 frames = m_rig.server->counters().frames;
+    m_dialog->restoreValues();
+    QVERIFY(m_rig.questions.isEmpty());
+    QCOMPARE(m_rig.server->counters().frames, frames);
+    QCOMPARE(m_rig.plc->value(addr("R0")), std::optional<std::uint32_t>(9));
+    QVERIFY2(m_dialog->messageText().contains(QLatin1String("Operator mode")),
+             qPrintable(m_dialog->messageText()));
+}
+
+QTEST_MAIN(TestToolsSnapshot)
+#include "tst_tools_snapshot.moc"

@@ -1,0 +1,417 @@
+#include "snapshotdialog.h"
+
+#include "core/commission/snapshotfile.h"
+#include "core/commission/snapshotreader.h"
+#include "core/commission/valuesrestorer.h"
+#include "core/session/session.h"
+#include "snapshotdiffmodel.h"
+#include "ui/common/messageline.h"
+#include "ui/common/uitext.h"
+
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSortFilterProxyModel>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace Fatek {
+
+SnapshotDialog::SnapshotDialog(QWidget *parent)
+    : QDialog(parent)
+    , m_reader(new SnapshotReader(this))
+    , m_restorer(new ValuesRestorer(this))
+{
+    setWindowTitle(tr("Memory Snapshot"));
+    auto *layout = new QVBoxLayout(this);
+    m_targetLabel = new QLabel(this);
+    m_targetLabel->setObjectName(QStringLiteral("targetLabel"));
+    layout->addWidget(m_targetLabel);
+
+    auto *form = new QFormLayout;
+    m_ranges = new QLineEdit(this);
+    m_ranges->setObjectName(QStringLiteral("ranges"));
+    m_ranges->setPlaceholderText(tr("R0..R99, M0..M63 (empty: every element the PLC reports)"));
+    form->addRow(tr("Ranges:"), m_ranges);
+    layout->addLayout(form);
+
+    auto *snapRow = new QHBoxLayout;
+    m_take = new QPushButton(tr("Take Snapshot"), this);
+    m_take->setObjectName(QStringLiteral("takeButton"));
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setObjectName(QStringLiteral("cancelButton"));
+    m_save = new QPushButton(tr("Save…"), this);
+    m_save->setObjectName(QStringLiteral("saveButton"));
+    m_open = new QPushButton(tr("Open…"), this);
+    m_open->setObjectName(QStringLiteral("openButton"));
+    snapRow->addWidget(m_take);
+    snapRow->addWidget(m_cancel);
+    snapRow->addWidget(m_save);
+    snapRow->addWidget(m_open);
+    snapRow->addStretch(1);
+    layout->addLayout(snapRow);
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("progress"));
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    layout->addWidget(m_progress);
+    m_snapshotLabel = new QLabel(this);
+    m_snapshotLabel->setObjectName(QStringLiteral("snapshotLabel"));
+    m_snapshotLabel->setWordWrap(true);
+    layout->addWidget(m_snapshotLabel);
+
+    auto *compareRow = new QHBoxLayout;
+    m_comparePlc = new QPushButton(tr("Compare With PLC"), this);
+    m_comparePlc->setObjectName(QStringLiteral("comparePlcButton"));
+    m_compareFile = new QPushButton(tr("Compare With File…"), this);
+    m_compareFile->setObjectName(QStringLiteral("compareFileButton"));
+    m_export = new QPushButton(tr("Export Differences…"), this);
+    m_export->setObjectName(QStringLiteral("exportButton"));
+    m_filter = new QLineEdit(this);
+    m_filter->setObjectName(QStringLiteral("filter"));
+    m_filter->setPlaceholderText(tr("Filter"));
+    m_filter->setClearButtonEnabled(true);
+    compareRow->addWidget(m_comparePlc);
+    compareRow->addWidget(m_compareFile);
+    compareRow->addWidget(m_export);
+    compareRow->addWidget(m_filter, 1);
+    layout->addLayout(compareRow);
+
+    m_model = new SnapshotDiffModel(this);
+    m_proxy = new QSortFilterProxyModel(this);
+    m_proxy->setSourceModel(m_model);
+    m_proxy->setFilterKeyColumn(-1);
+    m_proxy->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    m_table = new QTableView(this);
+    m_table->setObjectName(QStringLiteral("differences"));
+    m_table->setModel(m_proxy);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->verticalHeader()->hide();
+    layout->addWidget(m_table, 1);
+
+    auto *restoreRow = new QHBoxLayout;
+    m_restoreRanges = new QLineEdit(this);
+    m_restoreRanges->setObjectName(QStringLiteral("restoreRanges"));
+    m_restoreRanges->setPlaceholderText(tr("Ranges to restore (empty: all but the inputs X)"));
+    m_restore = new QPushButton(tr("Restore Values…"), this);
+    m_restore->setObjectName(QStringLiteral("restoreButton"));
+    restoreRow->addWidget(m_restoreRanges, 1);
+    restoreRow->addWidget(m_restore);
+    layout->addLayout(restoreRow);
+
+    m_message = new MessageLine(2, this);
+    m_message->setObjectName(QStringLiteral("message"));
+    layout->addWidget(m_message);
+
+    connect(m_take, &QPushButton::clicked, this, &SnapshotDialog::takeSnapshot);
+    connect(m_cancel, &QPushButton::clicked, this, &SnapshotDialog::cancel);
+    connect(m_comparePlc, &QPushButton::clicked, this, &SnapshotDialog::compareWithPlc);
+    connect(m_restore, &QPushButton::clicked, this, &SnapshotDialog::restoreValues);
+    connect(m_save, &QPushButton::clicked, this, [this] {
+        const QString path
+            = QFileDialog::getSaveFileName(this, tr("Save Snapshot"), {}, fileFilter());
+        if (!path.isEmpty())
+            saveSnapshot(path);
+    });
+    connect(m_open, &QPushButton::clicked, this, [this] {
+        const QString path
+            = QFileDialog::getOpenFileName(this, tr("Open Snapshot"), {}, fileFilter());
+        if (!path.isEmpty())
+            openSnapshot(path);
+    });
+    connect(m_compareFile, &QPushButton::clicked, this, [this] {
+        const QString path
+            = QFileDialog::getOpenFileName(this, tr("Compare With File"), {}, fileFilter());
+        if (!path.isEmpty())
+            compareWithFile(path);
+    });
+    connect(m_export, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export Differences"), {},
+                                                          tr("CSV files (*.csv)"));
+        if (!path.isEmpty())
+            exportDifferences(path);
+    });
+    connect(m_filter, &QLineEdit::textChanged, m_proxy,
+            &QSortFilterProxyModel::setFilterFixedString);
+    auto showProgress = [this](int doneCount, int total) {
+        m_progress->setRange(0, std::max(1, total));
+        m_progress->setValue(doneCount);
+    };
+    connect(m_reader, &SnapshotReader::progress, this, showProgress);
+    connect(m_restorer, &ValuesRestorer::progress, this, showProgress);
+    connect(m_reader, &SnapshotReader::finished, this, [this] {
+        if (m_comparing)
+            onCompared();
+        else
+            onSnapshotRead();
+    });
+    connect(m_restorer, &ValuesRestorer::finished, this, &SnapshotDialog::onRestored);
+    setTarget(nullptr, 1, {});
+    resize(640, 560);
+}
+
+QString SnapshotDialog::fileFilter() const
+{
+    return tr("Snapshots (*.json *.csv)");
+}
+
+void SnapshotDialog::setTarget(Session *session, quint8 station, const QString &connectionName)
+{
+    if (isBusy()) {
+        cancel();
+        showMessage(tr("Stopped: the target changed."), true);
+    }
+    m_session = session;
+    m_station = station;
+    m_connectionName = connectionName;
+    m_reader->setSession(session);
+    m_restorer->setSession(session);
+    m_targetLabel->setText(session
+                               ? tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName)
+                               : tr("No connection: choose a connection and a station."));
+    updateControls();
+}
+
+void SnapshotDialog::setRanges(const QString &text)
+{
+    m_ranges->setText(text);
+}
+
+void SnapshotDialog::setRestoreRanges(const QString &text)
+{
+    m_restoreRanges->setText(text);
+}
+
+void SnapshotDialog::setFilter(const QString &text)
+{
+    m_filter->setText(text);
+}
+
+int SnapshotDialog::visibleDifferences() const
+{
+    return m_proxy->rowCount();
+}
+
+QString SnapshotDialog::messageText() const
+{
+    return m_message->text();
+}
+
+bool SnapshotDialog::isBusy() const
+{
+    return m_reader->isRunning() || m_restorer->isRunning();
+}
+
+void SnapshotDialog::showMessage(const QString &text, bool error)
+{
+    m_message->setMessage(text, error);
+}
+
+void SnapshotDialog::updateControls()
+{
+    const bool busy = isBusy();
+    const bool connected = !m_session.isNull();
+    const bool have = m_snapshot.has_value();
+    m_take->setEnabled(connected && !busy);
+    m_cancel->setEnabled(busy);
+    m_save->setEnabled(have && !busy);
+    m_open->setEnabled(!busy);
+    m_comparePlc->setEnabled(have && connected && !busy);
+    m_compareFile->setEnabled(have && !busy);
+    m_export->setEnabled(!m_model->differences().empty());
+    m_restore->setEnabled(have && connected && !busy);
+    m_ranges->setEnabled(!busy);
+    m_restoreRanges->setEnabled(!busy);
+    if (have) {
+        const SnapshotInfo &i = m_snapshot->info;
+        m_snapshotLabel->setText(
+            tr("Snapshot: %1 values, %2, station %3, %4")
+                .arg(m_snapshot->values.size())
+                .arg(QLocale().toString(i.taken.toLocalTime(), QLocale::ShortFormat))
+                .arg(i.station)
+                .arg(i.model.isEmpty() ? i.link : i.model));
+    } else {
+        m_snapshotLabel->setText(tr("No snapshot yet: take one or open a file."));
+    }
+}
+
+void SnapshotDialog::takeSnapshot()
+{
+    if (!m_session || isBusy())
+        return;
+    const auto ranges = Snapshot::parseRanges(m_ranges->text());
+    if (!ranges) {
+        showMessage(translated(ranges.error().message), true);
+        return;
+    }
+    m_comparing = false;
+    showMessage(tr("Reading…"), false);
+    m_reader->start(m_station, ranges.value());
+    updateControls();
+}
+
+void SnapshotDialog::cancel()
+{
+    m_reader->cancel();
+    m_restorer->cancel();
+    updateControls();
+}
+
+void SnapshotDialog::onSnapshotRead()
+{
+    if (!m_reader->ok()) {
+        showMessage(translated(m_reader->error().message), true);
+    } else {
+        m_snapshot = m_reader->snapshot();
+        showMessage(translated(msg<MsgId::SnapshotTaken>(m_snapshot->values.size(),
+                                                         m_reader->requestsTotal())),
+                    false);
+    }
+    updateControls();
+    Q_EMIT actionFinished();
+}
+
+void SnapshotDialog::compareWithPlc()
+{
+    if (!m_session || !m_snapshot || isBusy())
+        return;
+    std::vector<Address> addresses;
+    addresses.reserve(m_snapshot->values.size());
+    for (const SnapshotValue &v : m_snapshot->values)
+        addresses.push_back(v.address);
+    m_comparing = true;
+    showMessage(tr("Reading…"), false);
+    m_reader->start(m_station, Snapshot::rangesOf(addresses));
+    updateControls();
+}
+
+void SnapshotDialog::onCompared()
+{
+    m_comparing = false;
+    if (!m_reader->ok()) {
+        showMessage(translated(m_reader->error().message), true);
+    } else {
+        std::size_t compared = 0;
+        auto d = SnapshotDiff::compare(*m_snapshot, m_reader->snapshot(), &compared);
+        const std::size_t count = d.size();
+        m_model->setDifferences(std::move(d), tr("Snapshot"), tr("PLC"));
+        showMessage(translated(SnapshotDiff::summary(count, compared)), false);
+    }
+    updateControls();
+    Q_EMIT actionFinished();
+}
+
+bool SnapshotDialog::saveSnapshot(const QString &path)
+{
+    if (!m_snapshot)
+        return false;
+    if (const auto problem = SnapshotFile::saveToFile(*m_snapshot, path)) {
+        showMessage(translated(problem->message), true);
+        return false;
+    }
+    showMessage(tr("Saved %1.").arg(path), false);
+    return true;
+}
+
+bool SnapshotDialog::openSnapshot(const QString &path)
+{
+    const SnapshotFile::Loaded loaded = SnapshotFile::loadFromFile(path);
+    if (!loaded.ok()) {
+        showMessage(translated(loaded.error.message), true);
+        return false;
+    }
+    m_snapshot = loaded.snapshot;
+    m_model->setDifferences({}, tr("Before"), tr("After"));
+    showMessage(tr("Opened %1.").arg(path), false);
+    updateControls();
+    return true;
+}
+
+bool SnapshotDialog::compareWithFile(const QString &path)
+{
+    if (!m_snapshot)
+        return false;
+    const SnapshotFile::Loaded loaded = SnapshotFile::loadFromFile(path);
+    if (!loaded.ok()) {
+        showMessage(translated(loaded.error.message), true);
+        return false;
+    }
+    std::size_t compared = 0;
+    auto d = SnapshotDiff::compare(*m_snapshot, *loaded.snapshot, &compared);
+    const std::size_t count = d.size();
+    m_model->setDifferences(std::move(d), tr("Snapshot"), tr("File"));
+    showMessage(translated(SnapshotDiff::summary(count, compared)), false);
+    updateControls();
+    return true;
+}
+
+bool SnapshotDialog::exportDifferences(const QString &path)
+{
+    QSaveFile out(path);
+    const QByteArray csv = m_model->toCsv();
+    if (!out.open(QIODevice::WriteOnly) || out.write(csv) != csv.size() || !out.commit()) {
+        showMessage(translated(msg<MsgId::SnapshotFileCannotWrite>(
+                        path.toStdString(), Message::text(out.errorString().toStdString()))),
+                    true);
+        return false;
+    }
+    showMessage(tr("Exported %1 differences to %2.").arg(m_model->differences().size()).arg(path),
+                false);
+    return true;
+}
+
+void SnapshotDialog::restoreValues()
+{
+    if (!m_session || !m_snapshot || isBusy())
+        return;
+    if (m_session->isReadOnly()) {
+        // The restorer refuses too; saying it here spares the question.
+        showMessage(translated(msg<MsgId::RestoreReadOnly>()), true);
+        return;
+    }
+    const auto ranges = Snapshot::parseRanges(m_restoreRanges->text());
+    if (!ranges) {
+        showMessage(translated(ranges.error().message), true);
+        return;
+    }
+    std::vector<SnapshotValue> values = m_snapshot->select(ranges.value());
+    if (ranges.value().empty())
+        std::erase_if(values,
+                      [](const SnapshotValue &v) { return v.address.type == ElementType::X; });
+    if (values.empty()) {
+        showMessage(translated(msg<MsgId::RestoreNothing>()), true);
+        return;
+    }
+    const auto frames = ValuesRestorer::writeRequests(m_station, values).size();
+    const QString question
+        = tr("Write %1 values of the snapshot to %2 in %3 requests, then read them back?")
+              .arg(values.size())
+              .arg(ToolConfirmation::target(m_station, m_connectionName))
+              .arg(frames);
+    if (!ToolConfirmation::ask(this, tr("Restore Values"), question, m_confirmer)) {
+        showMessage(tr("Not restored: nothing was written."), false);
+        return;
+    }
+    showMessage(tr("Writing…"), false);
+    m_restorer->start(m_station, std::move(values));
+    updateControls();
+}
+
+void SnapshotDialog::onRestored()
+{
+    if (!m_restorer->error())
+        m_model->setDifferences(m_restorer->mismatches(), tr("Written"), tr("Read back"));
+    showMessage(translated(m_restorer->outcome()), !m_restorer->ok());
+    updateControls();
+    Q_EMIT actionFinished();
+}
+
+} // namespace Fatek
