@@ -46,7 +46,7 @@ void scheduleScreenshot(Fatek::MainWindow *window, const QString &path, bool dem
                     std::fprintf(
                         stderr,
                         "fatek-studio: unknown tool %s (control, forcing, console, loopback, "
-                        "trend)\n",
+                        "program, snapshot, trend)\n",
                         qPrintable(tool));
                     QCoreApplication::exit(2);
                     return;
@@ -162,7 +162,8 @@ int main(int argc, char *argv[])
     const QCommandLineOption toolOpt(
         QStringLiteral("tool"),
         QCoreApplication::translate("main", "With --screenshot: open a commissioning tool first "
-                                            "(control, forcing, console, loopback, trend)."),
+                                            "(control, forcing, console, loopback, program, "
+                                            "snapshot, trend)."),
         QCoreApplication::translate("main", "name"));
     const QCommandLineOption languageOpt(
         QStringLiteral("language"),

@@ -11,6 +11,7 @@
 #include "ui/tools/snapshotdialog.h"
 
 #include <QAction>
+#include <QDialog>
 #include <QDockWidget>
 #include <QHash>
 #include <QMenu>
@@ -166,6 +167,20 @@ QWidget *ToolDocks::openTool(const QString &name)
         if (dialog)
             dialog->start();
         return dialog;
+    }
+    // The dialogs, opened through their Tools actions as a person opens them: action, dialog.
+    static const QHash<QString, std::pair<QString, QString>> dialogs
+        = {{QStringLiteral("program"),
+            {QStringLiteral("programTransferAction"), QStringLiteral("programTransferDialog")}},
+           {QStringLiteral("snapshot"),
+            {QStringLiteral("memorySnapshotAction"), QStringLiteral("snapshotDialog")}}};
+    if (dialogs.contains(name)) {
+        const auto &[actionName, dialogName] = dialogs.value(name);
+        auto *action = m_window->findChild<QAction *>(actionName);
+        if (!action)
+            return nullptr;
+        action->trigger();
+        return m_window->findChild<QDialog *>(dialogName);
     }
     return nullptr;
 }
