@@ -6,8 +6,12 @@
 #include "ui/tools/snapshotdiffmodel.h"
 
 #include <QFile>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
+#include <QTableView>
 #include <QTemporaryDir>
+#include <QTest>
 
 using namespace Fatek;
 using ToolsTest::addr;
@@ -59,26 +63,44 @@ bool TestToolsSnapshot::runAndWait(const std::function<void()> &action)
 
 void TestToolsSnapshot::takeCompareRestore()
 {
+    // As a person does it: the dialog on screen at a laptop's size, ranges typed into its fields
+    // (with delays), its buttons clicked, the differences read from the table on screen.
+    m_dialog->resize(900, 600);
+    m_dialog->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_dialog.get()));
+    auto *ranges = m_dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
+    auto *filter = m_dialog->findChild<QLineEdit *>(QStringLiteral("filter"));
+    auto *restoreRanges = m_dialog->findChild<QLineEdit *>(QStringLiteral("restoreRanges"));
+    auto *table = m_dialog->findChild<QTableView *>(QStringLiteral("differences"));
+    QVERIFY(ranges && filter && restoreRanges && table);
+    auto click = [this](const char *name) {
+        auto *b = m_dialog->findChild<QPushButton *>(QLatin1String(name));
+        QVERIFY2(b && b->isVisible() && b->isEnabled(), name);
+        QTest::mouseClick(b, Qt::LeftButton);
+    };
+
     m_rig.plc->setValue(addr("R3"), 33);
     m_rig.plc->setValue(addr("M1"), 1);
-    m_dialog->setRanges(QStringLiteral("R0..R9, M0..M15"));
-    QVERIFY(runAndWait([this] { m_dialog->takeSnapshot(); }));
+    ranges->clear();
+    QTest::keyClicks(ranges, QStringLiteral("R0..R9, M0..M15"), Qt::NoModifier, 5);
+    QVERIFY(runAndWait([&] { click("takeButton"); }));
     QVERIFY2(m_dialog->snapshot().has_value(), qPrintable(m_dialog->messageText()));
     QCOMPARE(m_dialog->snapshot()->values.size(), std::size_t(26));
     QVERIFY(m_dialog->messageText().contains(QLatin1String("26 values read")));
 
     m_rig.plc->setValue(addr("R3"), 1);
     m_rig.plc->setValue(addr("M1"), 0);
-    QVERIFY(runAndWait([this] { m_dialog->compareWithPlc(); }));
-    QCOMPARE(m_dialog->differences()->rowCount(), 2);
+    QVERIFY(runAndWait([&] { click("comparePlcButton"); }));
+    QCOMPARE(table->model()->rowCount(), 2);
     QCOMPARE(m_dialog->differences()->data(m_dialog->differences()->index(1, 1)).toString(),
              QStringLiteral("33"));
-    m_dialog->setFilter(QStringLiteral("R3"));
-    QCOMPARE(m_dialog->visibleDifferences(), 1);
+    QTest::keyClicks(filter, QStringLiteral("R3"), Qt::NoModifier, 5);
+    QCOMPARE(table->model()->rowCount(), 1);
+    QCOMPARE(table->model()->index(0, 0).data().toString(), QStringLiteral("R3"));
 
     // Restore only R3; the question names the target.
-    m_dialog->setRestoreRanges(QStringLiteral("R3"));
-    QVERIFY(runAndWait([this] { m_dialog->restoreValues(); }));
+    QTest::keyClicks(restoreRanges, QStringLiteral("R3"), Qt::NoModifier, 5);
+    QVERIFY(runAndWait([&] { click("restoreButton"); }));
     QCOMPARE(m_rig.questions.size(), 1);
     QVERIFY(m_rig.questions.first().contains(ToolsTest::Rig::connectionName()));
     QCOMPARE(m_rig.plc->value(addr("R3")), std::optional<std::uint32_t>(33));
@@ -88,8 +110,9 @@ void TestToolsSnapshot::takeCompareRestore()
 
     // Answered No: nothing written.
     m_rig.answer = false;
-    m_dialog->setRestoreRanges({});
-    m_dialog->restoreValues();
+    restoreRanges->clear();
+    click("restoreButton");
+    QVERIFY2(m_rig.questions.size() == 2, qPrintable(m_dialog->messageText()));
     QCOMPARE(m_rig.plc->value(addr("M1")), std::optional<std::uint32_t>(0));
 }
 

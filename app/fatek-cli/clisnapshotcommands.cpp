@@ -180,12 +180,7 @@ void CliRunner::runRestoreValues()
     const std::optional<MemorySnapshot> file = loadSnapshot(step().file);
     if (!file)
         return;
-    std::vector<SnapshotValue> values = file->select(step().ranges);
-    if (step().ranges.empty()) {
-        // By default not the inputs: the PLC overwrites X from its terminals every scan.
-        std::erase_if(values,
-                      [](const SnapshotValue &v) { return v.address.type == ElementType::X; });
-    }
+    std::vector<SnapshotValue> values = file->toRestore(step().ranges);
     if (values.empty()) {
         failWithError(makeError(ErrorKind::InvalidRequest, msg<MsgId::RestoreNothing>()));
         return;

@@ -31,6 +31,14 @@ void MemorySnapshot::normalize()
     values = std::move(out);
 }
 
+std::vector<SnapshotValue> MemorySnapshot::toRestore(std::span<const AddressRange> ranges) const
+{
+    std::vector<SnapshotValue> out = select(ranges);
+    if (ranges.empty())
+        std::erase_if(out, [](const SnapshotValue &v) { return v.address.type == ElementType::X; });
+    return out;
+}
+
 std::vector<SnapshotValue> MemorySnapshot::select(std::span<const AddressRange> ranges) const
 {
     if (ranges.empty())

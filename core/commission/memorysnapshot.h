@@ -49,6 +49,9 @@ struct MemorySnapshot
     void normalize();
     // The values whose address lies in one of `ranges` (all of them when `ranges` is empty).
     std::vector<SnapshotValue> select(std::span<const AddressRange> ranges) const;
+    // What a restore of values writes: the values in `ranges`, or with no ranges every value but
+    // the inputs X (the PLC overwrites them from its terminals every scan).
+    std::vector<SnapshotValue> toRestore(std::span<const AddressRange> ranges) const;
 };
 
 namespace Snapshot {

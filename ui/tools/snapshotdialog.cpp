@@ -377,15 +377,17 @@ void SnapshotDialog::restoreValues()
         showMessage(translated(msg<MsgId::RestoreReadOnly>()), true);
         return;
     }
-    const auto ranges = Snapshot::parseRanges(m_restoreRanges->text());
-    if (!ranges) {
-        showMessage(translated(ranges.error().message), true);
-        return;
+    // An empty field restores what fatek-cli restore-values without RANGES does.
+    std::vector<AddressRange> ranges;
+    if (!m_restoreRanges->text().trimmed().isEmpty()) {
+        auto parsed = Snapshot::parseRanges(m_restoreRanges->text());
+        if (!parsed) {
+            showMessage(translated(parsed.error().message), true);
+            return;
+        }
+        ranges = std::move(parsed.value());
     }
-    std::vector<SnapshotValue> values = m_snapshot->select(ranges.value());
-    if (ranges.value().empty())
-        std::erase_if(values,
-                      [](const SnapshotValue &v) { return v.address.type == ElementType::X; });
+    std::vector<SnapshotValue> values = m_snapshot->toRestore(ranges);
     if (values.empty()) {
         showMessage(translated(msg<MsgId::RestoreNothing>()), true);
         return;
