@@ -5,6 +5,7 @@
 #include "core/commission/programimage.h"
 #include "core/commission/programtransfer.h"
 #include "core/protocol/faconcodec.h"
+#include "testutil.h"
 #include "tst_tools_fixture.h"
 
 #include <QEventLoop>
@@ -12,7 +13,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -54,43 +54,13 @@ QString text(const Message &message)
     return QString::fromStdString(english(message));
 }
 
-struct Run
-{
-    int code = -1;
-    QString out;
-    QString err;
+using Run = TestUtil::ProgramRun;
 
-    QJsonObject json() const
-    {
-        return QJsonDocument::fromJson(out.trimmed().section(QLatin1Char('\n'), -1).toUtf8())
-            .object();
-    }
-};
-
-// Runs fatek-cli with the event loop turning, so that the in-process simulator answers. Its
-// standard input is a pipe, never a terminal.
+// fatek-cli with the event loop turning, so that the in-process simulator answers; its standard
+// input is a pipe, never a terminal.
 Run runCli(const QStringList &arguments)
 {
-    QProcess p;
-    QEventLoop loop;
-    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
-    QObject::connect(&p, &QProcess::errorOccurred, &loop, &QEventLoop::quit);
-    QTimer::singleShot(60000, &loop, &QEventLoop::quit);
-    p.start(QStringLiteral(FATEK_CLI_PATH), arguments);
-    p.closeWriteChannel();
-    if (p.state() != QProcess::NotRunning)
-        loop.exec();
-    Run r;
-    if (p.state() != QProcess::NotRunning) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("fatek-cli did not end in time");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return TestUtil::runProgram(QStringLiteral(FATEK_CLI_PATH), arguments, 60000);
 }
 
 } // namespace
@@ -537,7 +507,9 @@ void TestProgram::cliBackupRestoreRoundTrip()
     RUN_OK(restore);
     QVERIFY2(restore.err.contains(QStringLiteral("5 pages differ from the PLC (1, 5, 100-102)")),
              qPrintable(restore.err));
-    const QJsonObject result = restore.json();
+    // The last line is the outcome (the check comes first).
+    const QJsonObject result
+        = QJsonDocument::fromJson(restore.lines().constLast().toUtf8()).object();
     QCOMPARE(result.value(QStringLiteral("verified")).toBool(), true);
     QCOMPARE(result.value(QStringLiteral("changedPages")).toArray().size(), 5);
     QCOMPARE(plcPages(*m_rig.plc), imagePages(saved.image()));
