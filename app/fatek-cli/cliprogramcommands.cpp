@@ -150,7 +150,7 @@ void CliRunner::runRestore()
         m_out.error(QString::fromStdString(loaded.error().text()), ExitCode::Usage);
         return finish(ExitCode::Usage);
     }
-    const ProgramImage image = loaded.image();
+    const ProgramImage &image = loaded.image(); // the lambdas below keep copies
     startTransfer();
     // First the PLC's program, to compare (refused in operator mode and in RUN, and for another
     // model); then the question; then the writes.
