@@ -25,6 +25,8 @@ packages=(
     dpkg-dev file desktop-file-utils groff-base man-db gzip
     # the watch-list MIME type: update-mime-database, xmllint, gio (content sniffing)
     shared-mime-info libxml2-utils libglib2.0-bin
+    # the MQTT gateway: the client library, and the broker its integration tests start
+    libmosquitto-dev mosquitto
 )
 
 missing=()

@@ -1345,6 +1345,62 @@
             <source>%1 values written in %2 requests and read back equal.</source>
             <translation>%1 values written in %2 requests and read back equal.</translation>
         </message>
+        <message>
+            <source>No broker given.</source>
+            <translation>No broker given.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a broker address: write mqtt://host:1883 or mqtts://user@host:8883.</source>
+            <translation>&quot;%1&quot; is not a broker address: write mqtt://host:1883 or mqtts://user@host:8883.</translation>
+        </message>
+        <message>
+            <source>Cannot read the TLS file %1.</source>
+            <translation>Cannot read the TLS file %1.</translation>
+        </message>
+        <message>
+            <source>A client certificate needs its key file, and a key its certificate.</source>
+            <translation>A client certificate needs its key file, and a key its certificate.</translation>
+        </message>
+        <message>
+            <source>A broker password needs a user name.</source>
+            <translation>A broker password needs a user name.</translation>
+        </message>
+        <message>
+            <source>Broker timing out of range: keep-alive at least 5 s, reconnect delays at least 10 ms, the longest not below the first.</source>
+            <translation>Broker timing out of range: keep-alive at least 5 s, reconnect delays at least 10 ms, the longest not below the first.</translation>
+        </message>
+        <message>
+            <source>Cannot reach the broker %1: %2</source>
+            <translation>Cannot reach the broker %1: %2</translation>
+        </message>
+        <message>
+            <source>The broker %1 refused us: %2</source>
+            <translation>The broker %1 refused us: %2</translation>
+        </message>
+        <message>
+            <source>Link to the broker %1 lost: %2</source>
+            <translation>Link to the broker %1 lost: %2</translation>
+        </message>
+        <message>
+            <source>Disconnected from the broker %1.</source>
+            <translation>Disconnected from the broker %1.</translation>
+        </message>
+        <message>
+            <source>MQTT library error: %1</source>
+            <translation>MQTT library error: %1</translation>
+        </message>
+        <message>
+            <source>The command starts with { but is not a JSON object.</source>
+            <translation>The command starts with { but is not a JSON object.</translation>
+        </message>
+        <message>
+            <source>The command has no value: send the text to write, or {&quot;value&quot;: ...}.</source>
+            <translation>The command has no value: send the text to write, or {&quot;value&quot;: ...}.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a value format.</source>
+            <translation>&quot;%1&quot; is not a value format.</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

@@ -1345,6 +1345,62 @@
             <source>%1 values written in %2 requests and read back equal.</source>
             <translation>以 %2 次請求寫入 %1 個值，回讀結果一致。</translation>
         </message>
+        <message>
+            <source>No broker given.</source>
+            <translation>未指定代理伺服器。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a broker address: write mqtt://host:1883 or mqtts://user@host:8883.</source>
+            <translation>「%1」不是代理伺服器位址：請寫成 mqtt://host:1883 或 mqtts://user@host:8883。</translation>
+        </message>
+        <message>
+            <source>Cannot read the TLS file %1.</source>
+            <translation>無法讀取 TLS 檔案 %1。</translation>
+        </message>
+        <message>
+            <source>A client certificate needs its key file, and a key its certificate.</source>
+            <translation>用戶端憑證需要其金鑰檔，金鑰也需要其憑證。</translation>
+        </message>
+        <message>
+            <source>A broker password needs a user name.</source>
+            <translation>代理伺服器密碼需要使用者名稱。</translation>
+        </message>
+        <message>
+            <source>Broker timing out of range: keep-alive at least 5 s, reconnect delays at least 10 ms, the longest not below the first.</source>
+            <translation>代理伺服器時間設定超出範圍：保持連線至少 5 秒，重新連線延遲至少 10 毫秒，最長延遲不得小於第一次。</translation>
+        </message>
+        <message>
+            <source>Cannot reach the broker %1: %2</source>
+            <translation>無法連線到代理伺服器 %1：%2</translation>
+        </message>
+        <message>
+            <source>The broker %1 refused us: %2</source>
+            <translation>代理伺服器 %1 拒絕連線：%2</translation>
+        </message>
+        <message>
+            <source>Link to the broker %1 lost: %2</source>
+            <translation>與代理伺服器 %1 的連線中斷：%2</translation>
+        </message>
+        <message>
+            <source>Disconnected from the broker %1.</source>
+            <translation>已與代理伺服器 %1 斷線。</translation>
+        </message>
+        <message>
+            <source>MQTT library error: %1</source>
+            <translation>MQTT 程式庫錯誤：%1</translation>
+        </message>
+        <message>
+            <source>The command starts with { but is not a JSON object.</source>
+            <translation>命令以 { 開頭，但不是 JSON 物件。</translation>
+        </message>
+        <message>
+            <source>The command has no value: send the text to write, or {&quot;value&quot;: ...}.</source>
+            <translation>命令沒有數值：請傳送要寫入的文字，或 {&quot;value&quot;: ...}。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a value format.</source>
+            <translation>「%1」不是數值格式。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

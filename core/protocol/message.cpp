@@ -26,6 +26,8 @@ constexpr Entry entries[] = {
 #include "messagelistnames.h"
 #include "messagelistprogram.h"
 #include "messagelistsnapshot.h"
+#include "messagelistmqtt.h"
+#include "messagelistgateway.h"
 #undef FATEK_MSG
 };
 

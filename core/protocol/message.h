@@ -22,6 +22,8 @@ enum class MsgId : std::uint16_t {
 #include "messagelistnames.h"
 #include "messagelistprogram.h"
 #include "messagelistsnapshot.h"
+#include "messagelistmqtt.h"
+#include "messagelistgateway.h"
 #endif
 #undef FATEK_MSG
 };
@@ -35,6 +37,8 @@ inline constexpr int argCounts[] = {
 #include "messagelistnames.h"
 #include "messagelistprogram.h"
 #include "messagelistsnapshot.h"
+#include "messagelistmqtt.h"
+#include "messagelistgateway.h"
 #endif
 #undef FATEK_MSG
 };

@@ -1,0 +1,298 @@
+#include "gatewaypayload.h"
+
+#include "core/watch/itemvalues.h"
+#include "messagejson.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace Fatek {
+
+namespace {
+
+QString timeText(const QDateTime &time)
+{
+    return time.toUTC().toString(Qt::ISODateWithMs);
+}
+
+QDateTime timeFrom(const QJsonValue &value)
+{
+    return QDateTime::fromString(value.toString(), Qt::ISODateWithMs);
+}
+
+std::optional<QJsonObject> objectOf(const QByteArray &payload)
+{
+    QJsonParseError error{};
+    const QJsonDocument document = QJsonDocument::fromJson(payload, &error);
+    if (error.error != QJsonParseError::NoError || !document.isObject())
+        return std::nullopt;
+    return document.object();
+}
+
+std::optional<Address> addressFrom(const QJsonValue &value)
+{
+    const Result<Address> address = Address::parse(value.toString().toStdString());
+    if (!address)
+        return std::nullopt;
+    return *address;
+}
+
+QJsonValue numericValue(const ItemValues &item, std::uint64_t raw, const QString &text)
+{
+    const DisplayFormat format = item.item().format;
+    const int width = item.width();
+    const std::uint64_t mask = width >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << width) - 1;
+    const std::uint64_t value = ValueFormat::swapWords(raw, width) & mask;
+    switch (format) {
+    case DisplayFormat::Bit: return (raw & 1) != 0;
+    case DisplayFormat::Ascii: return text;
+    case DisplayFormat::Unsigned:
+    case DisplayFormat::Hex:
+    case DisplayFormat::Binary: return static_cast<double>(value);
+    case DisplayFormat::Signed: {
+        if (width >= 64)
+            return static_cast<double>(static_cast<std::int64_t>(value));
+        const std::uint64_t sign = std::uint64_t(1) << (width - 1);
+        const auto signedValue
+            = static_cast<std::int64_t>(value ^ sign) - static_cast<std::int64_t>(sign);
+        return static_cast<double>(signedValue);
+    }
+    case DisplayFormat::Bcd:
+    case DisplayFormat::Float32:
+    case DisplayFormat::Double64: {
+        bool ok = false;
+        const double number = text.toDouble(&ok);
+        if (!ok || !std::isfinite(number))
+            return QJsonValue(QJsonValue::Null);
+        return number;
+    }
+    }
+    return QJsonValue(QJsonValue::Null);
+}
+
+} // namespace
+
+QString GatewayPayload::qualityName(ValueQuality quality)
+{
+    switch (quality) {
+    case ValueQuality::Good: return QStringLiteral("good");
+    case ValueQuality::Stale: return QStringLiteral("stale");
+    case ValueQuality::Error: return QStringLiteral("error");
+    }
+    return QStringLiteral("error");
+}
+
+std::optional<ValueQuality> GatewayPayload::qualityFromName(const QString &name)
+{
+    for (ValueQuality quality : {ValueQuality::Good, ValueQuality::Stale, ValueQuality::Error}) {
+        if (qualityName(quality) == name)
+            return quality;
+    }
+    return std::nullopt;
+}
+
+QByteArray GatewayPayload::encodeItem(const ItemValues &item,
+                                      const std::vector<std::uint32_t> &words, ValueQuality quality,
+                                      const QDateTime &time, const Message &error)
+{
+    const WatchItemSpec &spec = item.item();
+    const std::uint64_t raw = item.join(words);
+    const QString text = item.text(raw);
+    QJsonArray wordArray;
+    for (const std::uint32_t word : words)
+        wordArray.append(static_cast<double>(word));
+    QJsonObject object{
+        {QStringLiteral("station"), spec.station},
+        {QStringLiteral("address"), QString::fromStdString(spec.address.toString())},
+        {QStringLiteral("name"), spec.name},
+        {QStringLiteral("format"), ValueFormat::name(spec.format)},
+        {QStringLiteral("swapWords"), spec.swapWords},
+        {QStringLiteral("value"), numericValue(item, raw, text)},
+        {QStringLiteral("text"), text},
+        {QStringLiteral("words"), wordArray},
+        {QStringLiteral("quality"), qualityName(quality)},
+        {QStringLiteral("time"), timeText(time)},
+    };
+    if (quality != ValueQuality::Good && !error.empty())
+        object.insert(QStringLiteral("error"), MessageJson::toJson(error));
+    return QJsonDocument(object).toJson(QJsonDocument::Compact);
+}
+
+std::optional<GatewayPayload::ItemValue> GatewayPayload::decodeItem(const QByteArray &payload)
+{
+    const std::optional<QJsonObject> object = objectOf(payload);
+    if (!object)
+        return std::nullopt;
+    ItemValue value;
+    const std::optional<Address> address = addressFrom(object->value(QStringLiteral("address")));
+    const std::optional<ValueQuality> quality
+        = qualityFromName(object->value(QStringLiteral("quality")).toString());
+    const std::optional<DisplayFormat> format
+        = ValueFormat::fromName(object->value(QStringLiteral("format")).toString());
+    const QJsonArray words = object->value(QStringLiteral("words")).toArray();
+    value.station = object->value(QStringLiteral("station")).toInt(-1);
+    if (!address || !quality || !format || value.station < 0 || value.station > 255
+        || words.size() > ItemValues::MaxElements)
+        return std::nullopt;
+    value.address = *address;
+    value.quality = *quality;
+    value.format = *format;
+    value.swapWords = object->value(QStringLiteral("swapWords")).toBool();
+    value.name = object->value(QStringLiteral("name")).toString();
+    value.text = object->value(QStringLiteral("text")).toString();
+    value.time = timeFrom(object->value(QStringLiteral("time")));
+    for (const QJsonValue &word : words) {
+        const double number = word.toDouble(-1);
+        if (number < 0 || number > 4294967295.0 || number != std::floor(number))
+            return std::nullopt;
+        value.words.push_back(static_cast<std::uint32_t>(number));
+    }
+    if (object->contains(QStringLiteral("error")))
+        value.error = MessageJson::fromJson(object->value(QStringLiteral("error")).toObject())
+                          .value_or(Message{});
+    return value;
+}
+
+QString GatewayPayload::linkStatusName(LinkStatus state)
+{
+    switch (state) {
+    case LinkStatus::Offline: return QStringLiteral("offline");
+    case LinkStatus::Connecting: return QStringLiteral("connecting");
+    case LinkStatus::Up: return QStringLiteral("up");
+    case LinkStatus::Down: return QStringLiteral("down");
+    }
+    return QStringLiteral("offline");
+}
+
+QByteArray GatewayPayload::encodeStatus(const Status &status)
+{
+    QJsonObject object{{QStringLiteral("state"), linkStatusName(status.state)}};
+    if (!status.link.isEmpty())
+        object.insert(QStringLiteral("link"), status.link);
+    if (!status.reason.empty())
+        object.insert(QStringLiteral("reason"), MessageJson::toJson(status.reason));
+    if (status.time.isValid())
+        object.insert(QStringLiteral("time"), timeText(status.time));
+    return QJsonDocument(object).toJson(QJsonDocument::Compact);
+}
+
+std::optional<GatewayPayload::Status> GatewayPayload::decodeStatus(const QByteArray &payload)
+{
+    const std::optional<QJsonObject> object = objectOf(payload);
+    if (!object)
+        return std::nullopt;
+    Status status;
+    const QString state = object->value(QStringLiteral("state")).toString();
+    bool known = false;
+    for (LinkStatus candidate :
+         {LinkStatus::Offline, LinkStatus::Connecting, LinkStatus::Up, LinkStatus::Down}) {
+        if (linkStatusName(candidate) == state) {
+            status.state = candidate;
+            known = true;
+        }
+    }
+    if (!known)
+        return std::nullopt;
+    status.link = object->value(QStringLiteral("link")).toString();
+    status.time = timeFrom(object->value(QStringLiteral("time")));
+    if (object->contains(QStringLiteral("reason")))
+        status.reason = MessageJson::fromJson(object->value(QStringLiteral("reason")).toObject())
+                            .value_or(Message{});
+    return status;
+}
+
+std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteArray &payload,
+                                                                    Message *error)
+{
+    SetCommand command;
+    const QByteArray trimmed = payload.trimmed();
+    if (trimmed.startsWith('{')) {
+        const std::optional<QJsonObject> object = objectOf(trimmed);
+        if (!object) {
+            *error = msg<MsgId::GatewaySetNotJson>();
+            return std::nullopt;
+        }
+        const QJsonValue value = object->value(QStringLiteral("value"));
+        if (value.isString())
+            command.value = value.toString();
+        else if (value.isBool())
+            command.value = value.toBool() ? QStringLiteral("ON") : QStringLiteral("OFF");
+        else if (value.isDouble())
+            command.value = QString::number(value.toDouble(), 'g', 17);
+        else {
+            *error = msg<MsgId::GatewaySetNoValue>();
+            return std::nullopt;
+        }
+        if (object->contains(QStringLiteral("format"))) {
+            command.format
+                = ValueFormat::fromName(object->value(QStringLiteral("format")).toString());
+            if (!command.format) {
+                *error = msg<MsgId::GatewaySetBadFormat>(
+                    object->value(QStringLiteral("format")).toString().toStdString());
+                return std::nullopt;
+            }
+        }
+        if (object->contains(QStringLiteral("swapWords")))
+            command.swapWords = object->value(QStringLiteral("swapWords")).toBool();
+        command.id = object->value(QStringLiteral("id")).toString();
+        return command;
+    }
+    if (trimmed.isEmpty()) {
+        *error = msg<MsgId::GatewaySetNoValue>();
+        return std::nullopt;
+    }
+    command.value = QString::fromUtf8(trimmed);
+    return command;
+}
+
+QByteArray GatewayPayload::encodeSet(const SetCommand &command)
+{
+    QJsonObject object{{QStringLiteral("value"), command.value}};
+    if (command.format)
+        object.insert(QStringLiteral("format"), ValueFormat::name(*command.format));
+    if (command.swapWords)
+        object.insert(QStringLiteral("swapWords"), *command.swapWords);
+    if (!command.id.isEmpty())
+        object.insert(QStringLiteral("id"), command.id);
+    return QJsonDocument(object).toJson(QJsonDocument::Compact);
+}
+
+QByteArray GatewayPayload::encodeReply(const Reply &reply)
+{
+    QJsonObject object{
+        {QStringLiteral("id"), reply.id},
+        {QStringLiteral("ok"), reply.ok},
+        {QStringLiteral("station"), reply.station},
+        {QStringLiteral("address"), QString::fromStdString(reply.address.toString())},
+        {QStringLiteral("value"), reply.value},
+        {QStringLiteral("time"), timeText(reply.time)},
+    };
+    if (!reply.ok)
+        object.insert(QStringLiteral("error"), MessageJson::toJson(reply.error));
+    return QJsonDocument(object).toJson(QJsonDocument::Compact);
+}
+
+std::optional<GatewayPayload::Reply> GatewayPayload::decodeReply(const QByteArray &payload)
+{
+    const std::optional<QJsonObject> object = objectOf(payload);
+    if (!object || !object->value(QStringLiteral("ok")).isBool())
+        return std::nullopt;
+    Reply reply;
+    reply.id = object->value(QStringLiteral("id")).toString();
+    reply.ok = object->value(QStringLiteral("ok")).toBool();
+    reply.station = object->value(QStringLiteral("station")).toInt(1);
+    if (const std::optional<Address> address
+        = addressFrom(object->value(QStringLiteral("address"))))
+        reply.address = *address;
+    reply.value = object->value(QStringLiteral("value")).toString();
+    reply.time = timeFrom(object->value(QStringLiteral("time")));
+    if (!reply.ok)
+        reply.error = MessageJson::fromJson(object->value(QStringLiteral("error")).toObject())
+                          .value_or(Message{});
+    return reply;
+}
+
+} // namespace Fatek

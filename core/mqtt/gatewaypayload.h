@@ -1,0 +1,104 @@
+#pragma once
+
+#include "core/protocol/address.h"
+#include "core/session/watchvalue.h"
+#include "core/watch/valueformat.h"
+
+#include <QByteArray>
+#include <QDateTime>
+#include <QString>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace Fatek {
+
+class ItemValues;
+
+// The gateway's JSON payloads, the one place that writes and reads them (see GatewayTopics for
+// where they go). Times are UTC ISO 8601 with milliseconds.
+namespace GatewayPayload {
+
+// One item's value, as published (retained) on its item topic:
+//   {"station":1,"address":"R100","name":"Tank level","format":"float","swapWords":false,
+//    "value":12.5,"text":"12.5","words":[0,16712],"quality":"good","time":"...Z",
+//    "error":{"id":...,"args":[...],"text":"..."}}
+// "words" are the elements' raw values, element 0 (the item's address) first: a reader joins them
+// itself or uses "value" (a number; true/false for a bit; text for ascii; null for NaN). "error"
+// only when quality is not good.
+struct ItemValue
+{
+    int station = 1;
+    Address address;
+    QString name;
+    DisplayFormat format = DisplayFormat::Signed;
+    bool swapWords = false;
+    std::vector<std::uint32_t> words;
+    QString text;
+    ValueQuality quality = ValueQuality::Error;
+    QDateTime time;
+    Message error;
+};
+
+// Builds the payload of `item` from its elements' words (join, text and value through ItemValues).
+QByteArray encodeItem(const ItemValues &item, const std::vector<std::uint32_t> &words,
+                      ValueQuality quality, const QDateTime &time, const Message &error);
+// nullopt for anything that is not an item payload (a reader's garbage, another program's topic).
+std::optional<ItemValue> decodeItem(const QByteArray &payload);
+
+QString qualityName(ValueQuality quality);
+std::optional<ValueQuality> qualityFromName(const QString &name);
+
+// A link's status (retained; the will publishes Offline):
+//   {"state":"up","link":"TCP 127.0.0.1:500, FACON","reason":{...},"time":"...Z"}
+enum class LinkStatus {
+    Offline,    // the gateway is gone (will) or stopped this link
+    Connecting, // the gateway runs, the PLC link is not up yet
+    Up,         // the PLC link is up
+    Down,       // the PLC link broke; the gateway reconnects
+};
+struct Status
+{
+    LinkStatus state = LinkStatus::Offline;
+    QString link;
+    Message reason;
+    QDateTime time;
+};
+QByteArray encodeStatus(const Status &status);
+std::optional<Status> decodeStatus(const QByteArray &payload);
+QString linkStatusName(LinkStatus state);
+
+// A write command on <item>/set: plain text ("12.5", "ON") or
+//   {"value":"12.5","format":"float","swapWords":false,"id":"anything"}
+// ("value" may be a JSON number or true/false; without "format" the gateway uses its item's).
+struct SetCommand
+{
+    QString value;
+    std::optional<DisplayFormat> format;
+    std::optional<bool> swapWords;
+    QString id;
+};
+// nullopt: the payload is neither text nor a JSON object with a value; `error` says why.
+std::optional<SetCommand> decodeSet(const QByteArray &payload, Message *error);
+QByteArray encodeSet(const SetCommand &command);
+
+// The gateway's answer on <item>/reply:
+//   {"id":"...","ok":true,"station":1,"address":"R100","value":"12.5","time":"...Z"}
+//   {"id":"...","ok":false,...,"error":{...}}
+struct Reply
+{
+    QString id;
+    bool ok = false;
+    int station = 1;
+    Address address;
+    QString value;
+    Message error;
+    QDateTime time;
+};
+QByteArray encodeReply(const Reply &reply);
+std::optional<Reply> decodeReply(const QByteArray &payload);
+
+} // namespace GatewayPayload
+
+} // namespace Fatek

@@ -1,0 +1,120 @@
+#include "gatewaytopics.h"
+
+#include <QStringList>
+
+namespace Fatek {
+
+namespace {
+
+QString addressText(const Address &address)
+{
+    return QString::fromStdString(address.toString());
+}
+
+} // namespace
+
+bool GatewayTopics::isValidConnectionName(const QString &name)
+{
+    if (name.isEmpty() || name.size() > 64)
+        return false;
+    bool digitsOnly = true;
+    for (const QChar c : name) {
+        if (!(c.isLetterOrNumber() || c == u'-' || c == u'_' || c == u'.'))
+            return false;
+        digitsOnly = digitsOnly && c.isDigit();
+    }
+    return !digitsOnly;
+}
+
+bool GatewayTopics::isValidPrefix(const QString &prefix)
+{
+    if (prefix.isEmpty() || prefix.contains(u'+') || prefix.contains(u'#'))
+        return false;
+    for (const QString &level : prefix.split(u'/')) {
+        if (level.isEmpty())
+            return false;
+    }
+    return true;
+}
+
+QString GatewayTopics::item(const QString &prefix, const QString &connection, int station,
+                            const Address &address)
+{
+    return prefix + u'/' + connection + u'/' + QString::number(station) + u'/'
+           + addressText(address);
+}
+
+QString GatewayTopics::itemSet(const QString &prefix, const QString &connection, int station,
+                               const Address &address)
+{
+    return item(prefix, connection, station, address) + QStringLiteral("/set");
+}
+
+QString GatewayTopics::itemReply(const QString &prefix, const QString &connection, int station,
+                                 const Address &address)
+{
+    return item(prefix, connection, station, address) + QStringLiteral("/reply");
+}
+
+QString GatewayTopics::status(const QString &prefix, const QString &connection)
+{
+    return prefix + u'/' + connection + QStringLiteral("/status");
+}
+
+QString GatewayTopics::statistics(const QString &prefix, const QString &connection)
+{
+    return prefix + u'/' + connection + QStringLiteral("/statistics");
+}
+
+QString GatewayTopics::itemFilter(const QString &prefix, const QString &connection)
+{
+    return prefix + u'/' + connection + QStringLiteral("/+/+");
+}
+
+QString GatewayTopics::setFilter(const QString &prefix, const QString &connection)
+{
+    return prefix + u'/' + connection + QStringLiteral("/+/+/set");
+}
+
+std::optional<GatewayTopics::Parsed> GatewayTopics::parse(const QString &prefix,
+                                                          const QString &topic)
+{
+    if (!topic.startsWith(prefix + u'/'))
+        return std::nullopt;
+    const QStringList levels = topic.mid(prefix.size() + 1).split(u'/');
+    if (levels.isEmpty() || !isValidConnectionName(levels[0]))
+        return std::nullopt;
+    Parsed parsed;
+    parsed.connection = levels[0];
+    if (levels.size() == 2) {
+        if (levels[1] == u"status")
+            parsed.kind = Kind::Status;
+        else if (levels[1] == u"statistics")
+            parsed.kind = Kind::Statistics;
+        else
+            return std::nullopt;
+        return parsed;
+    }
+    if (levels.size() < 3 || levels.size() > 4)
+        return std::nullopt;
+    bool ok = false;
+    parsed.station = levels[1].toInt(&ok);
+    if (!ok || parsed.station < 0 || parsed.station > 255
+        || levels[1] != QString::number(parsed.station))
+        return std::nullopt;
+    const Result<Address> address = Address::parse(levels[2].toStdString());
+    if (!address || addressText(*address) != levels[2])
+        return std::nullopt;
+    parsed.address = *address;
+    if (levels.size() == 3)
+        parsed.kind = Kind::Item;
+    else if (levels[3] == u"set")
+        parsed.kind = Kind::Set;
+    else if (levels[3] == u"reply")
+        parsed.kind = Kind::Reply;
+    else
+        return std::nullopt;
+    return parsed;
+}
+
+} // namespace Fatek

@@ -1,0 +1,65 @@
+#include "mqttbrokersettings.h"
+
+#include <QFileInfo>
+#include <QUrl>
+
+namespace Fatek {
+
+Result<MqttBrokerSettings> MqttBrokerSettings::fromUrl(const QString &text)
+{
+    QString trimmed = text.trimmed();
+    if (trimmed.isEmpty())
+        return makeError(ErrorKind::InvalidRequest, msg<MsgId::MqttUrlEmpty>());
+    if (!trimmed.contains(QStringLiteral("://")))
+        trimmed.prepend(QStringLiteral("mqtt://"));
+    const QUrl url(trimmed, QUrl::StrictMode);
+    const QString scheme = url.scheme().toLower();
+    if (!url.isValid() || url.host().isEmpty() || (scheme != u"mqtt" && scheme != u"mqtts")
+        || (!url.path().isEmpty() && url.path() != u"/") || url.hasQuery() || url.hasFragment())
+        return makeError(ErrorKind::InvalidRequest,
+                         msg<MsgId::MqttUrlInvalid>(text.trimmed().toStdString()));
+    MqttBrokerSettings settings;
+    settings.tls = scheme == u"mqtts";
+    settings.host = url.host();
+    const int port = url.port(settings.tls ? 8883 : 1883);
+    if (port <= 0 || port > 65535)
+        return makeError(ErrorKind::InvalidRequest,
+                         msg<MsgId::MqttUrlInvalid>(text.trimmed().toStdString()));
+    settings.port = static_cast<quint16>(port);
+    settings.username = url.userName(QUrl::FullyDecoded);
+    settings.password = url.password(QUrl::FullyDecoded);
+    return settings;
+}
+
+QString MqttBrokerSettings::toUrl() const
+{
+    QString url = tls ? QStringLiteral("mqtts://") : QStringLiteral("mqtt://");
+    if (!username.isEmpty())
+        url += QString::fromUtf8(QUrl::toPercentEncoding(username)) + u'@';
+    const bool ipv6 = host.contains(u':');
+    url += ipv6 ? u'[' + host + u']' : host;
+    if (port != (tls ? 8883 : 1883))
+        url += u':' + QString::number(port);
+    return url;
+}
+
+Message MqttBrokerSettings::validate() const
+{
+    if (host.trimmed().isEmpty())
+        return msg<MsgId::MqttUrlEmpty>();
+    if (port == 0)
+        return msg<MsgId::MqttUrlInvalid>(toUrl().toStdString());
+    for (const QString *file : {&caFile, &certFile, &keyFile}) {
+        if (!file->isEmpty() && !QFileInfo(*file).isReadable())
+            return msg<MsgId::MqttTlsFileMissing>(file->toStdString());
+    }
+    if (certFile.isEmpty() != keyFile.isEmpty())
+        return msg<MsgId::MqttTlsCertNeedsKey>();
+    if (!password.isEmpty() && username.isEmpty())
+        return msg<MsgId::MqttPasswordNeedsUser>();
+    if (keepAliveSec < 5 || reconnectMinMs < 10 || reconnectMaxMs < reconnectMinMs)
+        return msg<MsgId::MqttTimingInvalid>();
+    return {};
+}
+
+} // namespace Fatek

@@ -1,0 +1,42 @@
+#pragma once
+
+#include "core/protocol/result.h"
+
+#include <QString>
+
+namespace Fatek {
+
+// Where the broker is and how to log in: a plain value type.
+struct MqttBrokerSettings
+{
+    QString host = QStringLiteral("127.0.0.1");
+    quint16 port = 1883;
+    bool tls = false;
+    // TLS: the CA certificate that signed the broker's (empty: the system's CA folder), and an
+    // optional client certificate and key.
+    QString caFile;
+    QString certFile;
+    QString keyFile;
+    // TLS without checking the broker's host name (test brokers with a self-signed certificate).
+    bool tlsInsecure = false;
+    QString username;
+    QString password;
+    // Empty: one is made up ("fatek-<host>-<pid>-<n>").
+    QString clientId;
+    int keepAliveSec = 30;
+    // Reconnect: first delay, doubled after each failure up to the maximum.
+    int reconnectMinMs = 500;
+    int reconnectMaxMs = 30000;
+
+    // mqtt://[user[:password]@]host[:port] (1883) or mqtts://... (TLS, 8883). A bare "host[:port]"
+    // is mqtt://.
+    static Result<MqttBrokerSettings> fromUrl(const QString &url);
+    // The URL without the password ("mqtts://operator@broker:8883").
+    QString toUrl() const;
+    // Empty when usable, else what to fix (TLS files that do not exist, a port of 0 ...).
+    Message validate() const;
+
+    bool operator==(const MqttBrokerSettings &) const = default;
+};
+
+} // namespace Fatek

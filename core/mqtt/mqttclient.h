@@ -1,0 +1,62 @@
+#pragma once
+
+#include "core/session/qtmessage.h"
+#include "mqttbrokersettings.h"
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+#include <memory>
+
+namespace Fatek {
+
+struct MqttClientShared;
+
+// One connection to an MQTT broker (MQTT 3.1.1 through libmosquitto). The network runs on a thread
+// of its own that connects, keeps the link alive and reconnects with backoff (reconnectMinMs,
+// doubled up to reconnectMaxMs); signals come on this object's thread. Subscriptions are made again
+// on every reconnect. Every public function is thread-safe and returns at once.
+class MqttClient : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit MqttClient(const MqttBrokerSettings &settings, QObject *parent = nullptr);
+    // Disconnects cleanly (the broker does not send the will) and stops the network thread.
+    ~MqttClient() override;
+
+    MqttBrokerSettings settings() const;
+
+    // The message the broker publishes for this client when its link dies without a clean
+    // disconnect (the gateway's "offline" status). Set before open().
+    void setWill(const QString &topic, const QByteArray &payload, int qos = 1, bool retain = true);
+    // Subscribed on every (re)connect; adding one while connected subscribes at once.
+    void subscribe(const QString &filter, int qos = 0);
+
+    // Starts connecting; false (and nothing started) when the settings are not usable: see
+    // openError().
+    bool open();
+    Message openError() const;
+    // A clean DISCONNECT (no will); messages not yet written are dropped. open() starts again.
+    void close();
+
+    bool isConnected() const;
+    // Hands a message to the library; false when not connected (the caller keeps or drops it) or
+    // the library refused it. QoS 0 or 1.
+    bool publish(const QString &topic, const QByteArray &payload, int qos = 0, bool retain = false);
+    // Messages handed over and not yet written to the socket: the caller's back-pressure.
+    int outstanding() const;
+
+Q_SIGNALS:
+    void connected();
+    // The link to the broker went down, or a connection attempt failed (reason says which); the
+    // network thread tries again after the backoff delay.
+    void disconnected(const Fatek::Message &reason);
+    void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
+
+private:
+    std::shared_ptr<MqttClientShared> m_shared;
+};
+
+} // namespace Fatek

@@ -1,0 +1,135 @@
+#include "mosquittobroker.h"
+
+#include <QDeadlineTimer>
+#include <QFile>
+#include <QStandardPaths>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QThread>
+
+namespace TestUtil {
+
+MosquittoBroker::MosquittoBroker() = default;
+
+MosquittoBroker::~MosquittoBroker()
+{
+    stop();
+}
+
+QString MosquittoBroker::executable()
+{
+    if (QFile::exists(QStringLiteral("/usr/sbin/mosquitto")))
+        return QStringLiteral("/usr/sbin/mosquitto");
+    return QStandardPaths::findExecutable(QStringLiteral("mosquitto"));
+}
+
+QString MosquittoBroker::url() const
+{
+    return QStringLiteral("mqtt://127.0.0.1:%1").arg(m_port);
+}
+
+bool MosquittoBroker::isRunning() const
+{
+    return m_process && m_process->state() == QProcess::Running;
+}
+
+QString MosquittoBroker::log() const
+{
+    QFile file(m_dir.filePath(QStringLiteral("mosquitto.log")));
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return QString::fromUtf8(file.readAll());
+}
+
+bool MosquittoBroker::start(QString *error, const QString &extraConfig)
+{
+    stop();
+    const QString program = executable();
+    if (program.isEmpty()) {
+        *error = QStringLiteral("mosquitto is not installed (tools/install-deps.sh installs it)");
+        return false;
+    }
+    if (m_port == 0) {
+        // A port nobody listens on now; the broker binds it a moment later.
+        QTcpServer probe;
+        if (!probe.listen(QHostAddress::LocalHost, 0)) {
+            *error = QStringLiteral("no free port: %1").arg(probe.errorString());
+            return false;
+        }
+        m_port = probe.serverPort();
+    }
+    const QString configPath = m_dir.filePath(QStringLiteral("mosquitto.conf"));
+    QFile config(configPath);
+    if (!config.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+        *error = QStringLiteral("cannot write %1").arg(configPath);
+        return false;
+    }
+    QString text = QStringLiteral("listener %1 127.0.0.1\n"
+                                  "persistence false\n"
+                                  "log_dest file %2\n"
+                                  "log_type error\nlog_type warning\nlog_type notice\n"
+                                  "log_type information\n"
+                                  "max_queued_messages 100000\n")
+                       .arg(m_port)
+                       .arg(m_dir.filePath(QStringLiteral("mosquitto.log")));
+    if (!extraConfig.contains(QStringLiteral("allow_anonymous")))
+        text += QStringLiteral("allow_anonymous true\n");
+    text += extraConfig + u'\n';
+    config.write(text.toUtf8());
+    config.close();
+
+    m_process = std::make_unique<QProcess>();
+    m_process->setProcessChannelMode(QProcess::MergedChannels);
+    m_process->start(program, {QStringLiteral("-c"), configPath});
+    if (!m_process->waitForStarted(5000)) {
+        *error = QStringLiteral("mosquitto did not start: %1").arg(m_process->errorString());
+        m_process.reset();
+        return false;
+    }
+    const QDeadlineTimer deadline(10000);
+    while (!deadline.hasExpired()) {
+        if (m_process->state() != QProcess::Running) {
+            *error = QStringLiteral("mosquitto exited: %1 %2")
+                         .arg(QString::fromUtf8(m_process->readAll()), log());
+            m_process.reset();
+            return false;
+        }
+        QTcpSocket socket;
+        socket.connectToHost(QHostAddress::LocalHost, m_port);
+        if (socket.waitForConnected(200)) {
+            socket.abort();
+            return true;
+        }
+        QThread::msleep(20);
+    }
+    *error = QStringLiteral("mosquitto did not listen on port %1 within 10 s: %2")
+                 .arg(m_port)
+                 .arg(log());
+    stop();
+    return false;
+}
+
+void MosquittoBroker::stop()
+{
+    if (!m_process)
+        return;
+    if (m_process->state() != QProcess::NotRunning) {
+        m_process->terminate();
+        if (!m_process->waitForFinished(5000)) {
+            m_process->kill();
+            m_process->waitForFinished(2000);
+        }
+    }
+    m_process.reset();
+}
+
+void MosquittoBroker::kill()
+{
+    if (!m_process)
+        return;
+    m_process->kill();
+    m_process->waitForFinished(2000);
+    m_process.reset();
+}
+
+} // namespace TestUtil

@@ -1,0 +1,485 @@
+// The MQTT client (libmosquitto) against a real mosquitto on a free loopback port, and the
+// gateway's topic scheme and payloads (issue 20).
+#include "core/mqtt/gatewaypayload.h"
+#include "core/mqtt/gatewaytopics.h"
+#include "core/mqtt/messagejson.h"
+#include "core/mqtt/mqttclient.h"
+#include "core/watch/itemvalues.h"
+#include "mosquittobroker.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTimeZone>
+
+#include <cstring>
+
+using namespace Fatek;
+
+namespace {
+
+Address addr(const char *text)
+{
+    return *Address::parse(text);
+}
+
+std::uint32_t floatBits(float value)
+{
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+// Messages received by a client, by topic (the last one wins, as a retained topic reads).
+struct Inbox
+{
+    QHash<QString, QByteArray> last;
+    QHash<QString, bool> retained;
+    int count = 0;
+
+    void connect(MqttClient *client)
+    {
+        QObject::connect(client, &MqttClient::messageReceived,
+                         [this](const QString &topic, const QByteArray &payload, bool isRetained) {
+                             last.insert(topic, payload);
+                             retained.insert(topic, isRetained);
+                             ++count;
+                         });
+    }
+};
+
+MqttBrokerSettings settingsFor(const TestUtil::MosquittoBroker &broker)
+{
+    MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(broker.url());
+    settings.reconnectMinMs = 50;
+    settings.reconnectMaxMs = 200;
+    return settings;
+}
+
+} // namespace
+
+class TestMqtt : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void brokerUrls_data();
+    void brokerUrls();
+    void brokerSettingsValidate();
+    void topicsRoundTrip();
+    void topicsRejectOthers();
+    void messageJsonKeepsIdsAndNesting();
+    void messageJsonFallsBackToEnglish();
+    void itemPayloadFloat();
+    void itemPayloadSignedBitAndNan();
+    void itemPayloadRejectsGarbage();
+    void setCommands();
+    void replyAndStatusRoundTrip();
+
+    void clientPublishesAndReceivesRetained();
+    void clientRefusedConnectionSaysWhy();
+    void clientWrongPasswordSaysWhy();
+    void clientReconnectsAfterBrokerRestart();
+};
+
+void TestMqtt::brokerUrls_data()
+{
+    QTest::addColumn<QString>("url");
+    QTest::addColumn<bool>("ok");
+    QTest::addColumn<QString>("host");
+    QTest::addColumn<int>("port");
+    QTest::addColumn<bool>("tls");
+    QTest::addColumn<QString>("user");
+    QTest::addColumn<QString>("password");
+    QTest::newRow("plain") << "mqtt://broker" << true << "broker" << 1883 << false << ""
+                           << "";
+    QTest::newRow("bare host:port") << "10.0.0.5:1884" << true << "10.0.0.5" << 1884 << false << ""
+                                    << "";
+    QTest::newRow("tls default port")
+        << "mqtts://op:s3cret@broker.plant" << true << "broker.plant" << 8883 << true << "op"
+        << "s3cret";
+    QTest::newRow("ipv6") << "mqtt://[::1]:1999" << true << "::1" << 1999 << false << ""
+                          << "";
+    QTest::newRow("http") << "http://broker" << false << "" << 0 << false << ""
+                          << "";
+    QTest::newRow("path") << "mqtt://broker/topic" << false << "" << 0 << false << ""
+                          << "";
+    QTest::newRow("empty") << "  " << false << "" << 0 << false << ""
+                           << "";
+    QTest::newRow("port too big") << "mqtt://broker:70000" << false << "" << 0 << false << ""
+                                  << "";
+}
+
+void TestMqtt::brokerUrls()
+{
+    QFETCH(QString, url);
+    QFETCH(bool, ok);
+    const Result<MqttBrokerSettings> settings = MqttBrokerSettings::fromUrl(url);
+    QCOMPARE(settings.ok(), ok);
+    if (!ok) {
+        QVERIFY(!settings.error().text().empty());
+        return;
+    }
+    QTEST(settings->host, "host");
+    QTEST(int(settings->port), "port");
+    QTEST(settings->tls, "tls");
+    QTEST(settings->username, "user");
+    QTEST(settings->password, "password");
+    // The URL shown back never carries the password.
+    QVERIFY(!settings->toUrl().contains(QStringLiteral("s3cret")));
+    QCOMPARE(MqttBrokerSettings::fromUrl(settings->toUrl())->host, settings->host);
+}
+
+void TestMqtt::brokerSettingsValidate()
+{
+    MqttBrokerSettings settings;
+    QVERIFY(settings.validate().empty());
+    settings.tls = true;
+    settings.caFile = QStringLiteral("/nonexistent/ca.crt");
+    QCOMPARE(englishText(settings.validate()),
+             QStringLiteral("Cannot read the TLS file /nonexistent/ca.crt."));
+    settings.caFile.clear();
+    settings.password = QStringLiteral("x");
+    QCOMPARE(englishText(settings.validate()),
+             QStringLiteral("A broker password needs a user name."));
+    // open() refuses the same and starts nothing.
+    MqttClient client(settings);
+    QVERIFY(!client.open());
+    QCOMPARE(englishText(client.openError()),
+             QStringLiteral("A broker password needs a user name."));
+}
+
+void TestMqtt::topicsRoundTrip()
+{
+    const QString prefix = QStringLiteral("plant/fatek");
+    QCOMPARE(GatewayTopics::item(prefix, QStringLiteral("line1"), 3, addr("R100")),
+             QStringLiteral("plant/fatek/line1/3/R100"));
+    QCOMPARE(GatewayTopics::itemSet(prefix, QStringLiteral("line1"), 3, addr("DR10")),
+             QStringLiteral("plant/fatek/line1/3/DR10/set"));
+    QCOMPARE(GatewayTopics::status(prefix, QStringLiteral("line1")),
+             QStringLiteral("plant/fatek/line1/status"));
+
+    auto parsed = GatewayTopics::parse(prefix, QStringLiteral("plant/fatek/line1/3/WY16/reply"));
+    QVERIFY(parsed);
+    QCOMPARE(parsed->kind, GatewayTopics::Kind::Reply);
+    QCOMPARE(parsed->connection, QStringLiteral("line1"));
+    QCOMPARE(parsed->station, 3);
+    QCOMPARE(parsed->address, addr("WY16"));
+    parsed = GatewayTopics::parse(prefix, QStringLiteral("plant/fatek/line1/statistics"));
+    QVERIFY(parsed);
+    QCOMPARE(parsed->kind, GatewayTopics::Kind::Statistics);
+    parsed = GatewayTopics::parse(prefix, QStringLiteral("plant/fatek/line1/1/Y0"));
+    QVERIFY(parsed);
+    QCOMPARE(parsed->kind, GatewayTopics::Kind::Item);
+}
+
+void TestMqtt::topicsRejectOthers()
+{
+    const QString prefix = QStringLiteral("fatek");
+    for (const char *topic :
+         {"other/line1/1/R100", "fatek/line1/1/R70000", "fatek/line1/x/R1", "fatek/line1/01/R1",
+          "fatek/line1/1/r100", "fatek/line1/1/R100/get", "fatek/line1/1/R100/set/x",
+          "fatek/12/1/R1", "fatek/line1/status/x", "fatek/line1", "fatek/line 1/1/R1"})
+        QVERIFY2(!GatewayTopics::parse(prefix, QString::fromLatin1(topic)), topic);
+    QVERIFY(GatewayTopics::isValidConnectionName(QStringLiteral("press-3.a_b")));
+    QVERIFY(!GatewayTopics::isValidConnectionName(QStringLiteral("12")));
+    QVERIFY(!GatewayTopics::isValidConnectionName(QStringLiteral("a/b")));
+    QVERIFY(!GatewayTopics::isValidConnectionName(QStringLiteral("a+")));
+    QVERIFY(GatewayTopics::isValidPrefix(QStringLiteral("plant/fatek")));
+    QVERIFY(!GatewayTopics::isValidPrefix(QStringLiteral("plant//fatek")));
+    QVERIFY(!GatewayTopics::isValidPrefix(QStringLiteral("fatek/#")));
+    QVERIFY(!GatewayTopics::isValidPrefix(QStringLiteral("/fatek")));
+}
+
+void TestMqtt::messageJsonKeepsIdsAndNesting()
+{
+    const Message inner = msg<MsgId::MqttUrlInvalid>("http://x");
+    const Message outer = msg<MsgId::Joined>("R100", inner);
+    const QJsonObject json = MessageJson::toJson(outer);
+    QCOMPARE(json.value(QStringLiteral("id")).toString(), QStringLiteral("Joined"));
+    QCOMPARE(json.value(QStringLiteral("text")).toString(), englishText(outer));
+    const std::optional<Message> back = MessageJson::fromJson(json);
+    QVERIFY(back);
+    QVERIFY(*back == outer);
+}
+
+void TestMqtt::messageJsonFallsBackToEnglish()
+{
+    // A newer gateway's id this program does not know: its English text, verbatim.
+    const QJsonObject unknown{{QStringLiteral("id"), QStringLiteral("SomethingNew")},
+                              {QStringLiteral("args"), QJsonArray{}},
+                              {QStringLiteral("text"), QStringLiteral("Something new happened")}};
+    const std::optional<Message> message = MessageJson::fromJson(unknown);
+    QVERIFY(message);
+    QCOMPARE(englishText(*message), QStringLiteral("Something new happened"));
+    // Wrong argument count for a known id: the same.
+    const QJsonObject wrongArgs{{QStringLiteral("id"), QStringLiteral("MqttUrlInvalid")},
+                                {QStringLiteral("args"), QJsonArray{}},
+                                {QStringLiteral("text"), QStringLiteral("bad url")}};
+    QCOMPARE(englishText(*MessageJson::fromJson(wrongArgs)), QStringLiteral("bad url"));
+    QVERIFY(!MessageJson::fromJson(QJsonObject{}));
+}
+
+void TestMqtt::itemPayloadFloat()
+{
+    WatchItemSpec spec;
+    spec.address = addr("R100");
+    spec.station = 2;
+    spec.format = DisplayFormat::Float32;
+    spec.name = QStringLiteral("Tank level");
+    const ItemValues item(spec);
+    const std::uint32_t bits = floatBits(12.5f);
+    const std::vector<std::uint32_t> words{bits & 0xFFFF, bits >> 16};
+    const QDateTime time = QDateTime::fromMSecsSinceEpoch(1764111600123, Qt::UTC);
+    const QByteArray payload
+        = GatewayPayload::encodeItem(item, words, ValueQuality::Good, time, {});
+
+    const QJsonObject json = QJsonDocument::fromJson(payload).object();
+    QCOMPARE(json.value(QStringLiteral("value")).toDouble(), 12.5);
+    QCOMPARE(json.value(QStringLiteral("text")).toString(), QStringLiteral("12.5"));
+    QCOMPARE(json.value(QStringLiteral("time")).toString(),
+             QStringLiteral("2025-11-25T23:00:00.123Z"));
+    QVERIFY(!json.contains(QStringLiteral("error")));
+
+    const auto decoded = GatewayPayload::decodeItem(payload);
+    QVERIFY(decoded);
+    QCOMPARE(decoded->station, 2);
+    QCOMPARE(decoded->address, addr("R100"));
+    QCOMPARE(decoded->format, DisplayFormat::Float32);
+    QCOMPARE(decoded->name, QStringLiteral("Tank level"));
+    QCOMPARE(decoded->words, words);
+    QCOMPARE(decoded->quality, ValueQuality::Good);
+    QCOMPARE(decoded->time, time);
+}
+
+void TestMqtt::itemPayloadSignedBitAndNan()
+{
+    WatchItemSpec spec;
+    spec.address = addr("R5");
+    spec.format = DisplayFormat::Signed;
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    QJsonObject json
+        = QJsonDocument::fromJson(
+              GatewayPayload::encodeItem(ItemValues(spec), {0xFFFB}, ValueQuality::Good, now, {}))
+              .object();
+    QCOMPARE(json.value(QStringLiteral("value")).toDouble(), -5.0);
+
+    spec.address = addr("Y3");
+    spec.format = DisplayFormat::Bit;
+    const Message why = msg<MsgId::MqttClosed>("mqtt://x");
+    const QByteArray stale
+        = GatewayPayload::encodeItem(ItemValues(spec), {1}, ValueQuality::Stale, now, why);
+    json = QJsonDocument::fromJson(stale).object();
+    QCOMPARE(json.value(QStringLiteral("value")).toBool(), true);
+    QCOMPARE(json.value(QStringLiteral("quality")).toString(), QStringLiteral("stale"));
+    const auto decoded = GatewayPayload::decodeItem(stale);
+    QVERIFY(decoded);
+    QVERIFY(decoded->error == why);
+
+    spec.address = addr("R0");
+    spec.format = DisplayFormat::Float32;
+    json = QJsonDocument::fromJson(GatewayPayload::encodeItem(ItemValues(spec), {0x0000, 0x7FC0},
+                                                              ValueQuality::Good, now, {}))
+               .object();
+    QVERIFY(json.value(QStringLiteral("value")).isNull());
+    QCOMPARE(json.value(QStringLiteral("text")).toString(), QStringLiteral("NaN"));
+}
+
+void TestMqtt::itemPayloadRejectsGarbage()
+{
+    for (const char *payload :
+         {"", "not json", "[]", "{}",
+          R"({"station":1,"address":"R70000","quality":"good","format":"signed","words":[1]})",
+          R"({"station":1,"address":"R1","quality":"fine","format":"signed","words":[1]})",
+          R"({"station":1,"address":"R1","quality":"good","format":"signed","words":[-1]})",
+          R"({"station":1,"address":"R1","quality":"good","format":"signed","words":[1,2,3,4,5]})",
+          R"({"station":300,"address":"R1","quality":"good","format":"signed","words":[1]})"})
+        QVERIFY2(!GatewayPayload::decodeItem(QByteArray(payload)), payload);
+}
+
+void TestMqtt::setCommands()
+{
+    Message error;
+    auto command = GatewayPayload::decodeSet(" 12.5\n", &error);
+    QVERIFY(command);
+    QCOMPARE(command->value, QStringLiteral("12.5"));
+    QVERIFY(!command->format);
+
+    command = GatewayPayload::decodeSet(R"({"value":true,"id":"a1"})", &error);
+    QVERIFY(command);
+    QCOMPARE(command->value, QStringLiteral("ON"));
+    QCOMPARE(command->id, QStringLiteral("a1"));
+
+    command
+        = GatewayPayload::decodeSet(R"({"value":-7,"format":"signed","swapWords":true})", &error);
+    QVERIFY(command);
+    QCOMPARE(command->value, QStringLiteral("-7"));
+    QCOMPARE(command->format, DisplayFormat::Signed);
+    QCOMPARE(command->swapWords, true);
+    const auto again = GatewayPayload::decodeSet(GatewayPayload::encodeSet(*command), &error);
+    QVERIFY(again);
+    QCOMPARE(again->value, command->value);
+    QCOMPARE(again->format, command->format);
+
+    QVERIFY(!GatewayPayload::decodeSet("{broken", &error));
+    QCOMPARE(englishText(error),
+             QStringLiteral("The command starts with { but is not a JSON object."));
+    QVERIFY(!GatewayPayload::decodeSet(R"({"value":"1","format":"quad"})", &error));
+    QCOMPARE(englishText(error), QStringLiteral("\"quad\" is not a value format."));
+    QVERIFY(!GatewayPayload::decodeSet("  ", &error));
+    QVERIFY(!GatewayPayload::decodeSet(R"({"id":"x"})", &error));
+}
+
+void TestMqtt::replyAndStatusRoundTrip()
+{
+    GatewayPayload::Reply reply;
+    reply.id = QStringLiteral("42");
+    reply.ok = false;
+    reply.station = 1;
+    reply.address = addr("R100");
+    reply.value = QStringLiteral("5");
+    reply.error = msg<MsgId::MqttClosed>("mqtt://x");
+    reply.time = QDateTime::fromMSecsSinceEpoch(1000, Qt::UTC);
+    const auto back = GatewayPayload::decodeReply(GatewayPayload::encodeReply(reply));
+    QVERIFY(back);
+    QCOMPARE(back->id, reply.id);
+    QCOMPARE(back->ok, false);
+    QCOMPARE(back->address, reply.address);
+    QVERIFY(back->error == reply.error);
+    QCOMPARE(back->time, reply.time);
+
+    GatewayPayload::Status status;
+    status.state = GatewayPayload::LinkStatus::Down;
+    status.link = QStringLiteral("TCP 127.0.0.1:500, FACON");
+    status.reason = msg<MsgId::MqttClosed>("mqtt://y");
+    status.time = reply.time;
+    const auto statusBack = GatewayPayload::decodeStatus(GatewayPayload::encodeStatus(status));
+    QVERIFY(statusBack);
+    QCOMPARE(statusBack->state, GatewayPayload::LinkStatus::Down);
+    QCOMPARE(statusBack->link, status.link);
+    QVERIFY(statusBack->reason == status.reason);
+    QVERIFY(!GatewayPayload::decodeStatus(R"({"state":"sleeping"})"));
+}
+
+void TestMqtt::clientPublishesAndReceivesRetained()
+{
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+
+    MqttClient publisher(settingsFor(broker));
+    QSignalSpy publisherUp(&publisher, &MqttClient::connected);
+    QVERIFY(publisher.open());
+    QVERIFY(publisherUp.wait(5000));
+    QVERIFY(publisher.isConnected());
+    QVERIFY(publisher.publish(QStringLiteral("fatek/t/1/R0"), "retained-one", 1, true));
+    QVERIFY(publisher.publish(QStringLiteral("fatek/t/1/R1"), "not retained", 0, false));
+    QTRY_COMPARE_WITH_TIMEOUT(publisher.outstanding(), 0, 5000);
+
+    // A subscriber coming later gets the retained message (and only that one).
+    MqttClient subscriber(settingsFor(broker));
+    Inbox inbox;
+    inbox.connect(&subscriber);
+    subscriber.subscribe(QStringLiteral("fatek/t/+/+"));
+    QVERIFY(subscriber.open());
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.last.value(QStringLiteral("fatek/t/1/R0")),
+                              QByteArray("retained-one"), 5000);
+    QCOMPARE(inbox.retained.value(QStringLiteral("fatek/t/1/R0")), true);
+    QVERIFY(!inbox.last.contains(QStringLiteral("fatek/t/1/R1")));
+
+    // Live messages arrive as they are published.
+    QVERIFY(publisher.publish(QStringLiteral("fatek/t/1/R1"), "live", 0, false));
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.last.value(QStringLiteral("fatek/t/1/R1")), QByteArray("live"),
+                              5000);
+    QCOMPARE(inbox.retained.value(QStringLiteral("fatek/t/1/R1")), false);
+
+    // Not connected: publish says so and keeps nothing.
+    publisher.close();
+    QVERIFY(!publisher.isConnected());
+    QVERIFY(!publisher.publish(QStringLiteral("fatek/t/1/R2"), "lost", 0, false));
+}
+
+void TestMqtt::clientRefusedConnectionSaysWhy()
+{
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    broker.stop(); // the port is known and nobody listens on it
+
+    MqttClient client(settingsFor(broker));
+    QSignalSpy down(&client, &MqttClient::disconnected);
+    QVERIFY(client.open());
+    QVERIFY(down.wait(5000));
+    const QString reason = englishText(down.first().first().value<Message>());
+    QVERIFY2(reason.startsWith(
+                 QStringLiteral("Cannot reach the broker %1:").arg(settingsFor(broker).toUrl())),
+             qPrintable(reason));
+    QVERIFY2(reason.contains(QStringLiteral("refused"), Qt::CaseInsensitive), qPrintable(reason));
+    // It keeps trying: more attempts follow (50 ms, then 100, 200 ...).
+    QTRY_VERIFY_WITH_TIMEOUT(down.count() >= 3, 5000);
+    QVERIFY(!client.isConnected());
+
+    // The broker comes up: the client connects by itself.
+    QSignalSpy up(&client, &MqttClient::connected);
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    QVERIFY(up.wait(5000));
+}
+
+void TestMqtt::clientWrongPasswordSaysWhy()
+{
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    // Anonymous access off and no password file: every login is refused as not authorised.
+    QVERIFY2(broker.start(&error, QStringLiteral("allow_anonymous false")), qPrintable(error));
+
+    MqttBrokerSettings settings = settingsFor(broker);
+    settings.username = QStringLiteral("op");
+    settings.password = QStringLiteral("wrong");
+    MqttClient client(settings);
+    QSignalSpy down(&client, &MqttClient::disconnected);
+    QVERIFY(client.open());
+    QVERIFY(down.wait(5000));
+    const QString reason = englishText(down.first().first().value<Message>());
+    QVERIFY2(reason.startsWith(QStringLiteral("The broker %1 refused us:").arg(settings.toUrl())),
+             qPrintable(reason));
+    QVERIFY2(reason.contains(QStringLiteral("authori"), Qt::CaseInsensitive), qPrintable(reason));
+    QVERIFY(!client.isConnected());
+}
+
+void TestMqtt::clientReconnectsAfterBrokerRestart()
+{
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+
+    MqttClient client(settingsFor(broker));
+    Inbox inbox;
+    inbox.connect(&client);
+    client.subscribe(QStringLiteral("fatek/r/#"));
+    QSignalSpy up(&client, &MqttClient::connected);
+    QSignalSpy down(&client, &MqttClient::disconnected);
+    QVERIFY(client.open());
+    QVERIFY(up.wait(5000));
+
+    broker.kill();
+    QVERIFY(down.wait(5000));
+    const QString reason = englishText(down.first().first().value<Message>());
+    QVERIFY2(reason.startsWith(QStringLiteral("Link to the broker")), qPrintable(reason));
+    QVERIFY(!client.isConnected());
+
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(up.count() == 2, 10000);
+    // Subscribed again: a message published now arrives.
+    MqttClient publisher(settingsFor(broker));
+    QSignalSpy publisherUp(&publisher, &MqttClient::connected);
+    QVERIFY(publisher.open());
+    QVERIFY(publisherUp.wait(5000));
+    QVERIFY(publisher.publish(QStringLiteral("fatek/r/x"), "after restart"));
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.last.value(QStringLiteral("fatek/r/x")),
+                              QByteArray("after restart"), 5000);
+}
+
+QTEST_GUILESS_MAIN(TestMqtt)
+#include "tst_mqtt.moc"
