@@ -33,6 +33,11 @@ bool MosquittoBroker::isRunning() const
     return m_process && m_process->state() == QProcess::Running;
 }
 
+qint64 MosquittoBroker::processId() const
+{
+    return isRunning() ? m_process->processId() : 0;
+}
+
 QString MosquittoBroker::log() const
 {
     QFile file(m_dir.filePath(QStringLiteral("mosquitto.log")));

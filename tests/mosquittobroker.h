@@ -27,6 +27,8 @@ public:
     // SIGKILL: as if the broker's machine lost power.
     void kill();
     bool isRunning() const;
+    // The broker's process id (0 when not running), for CPU and memory figures.
+    qint64 processId() const;
 
     quint16 port() const { return m_port; }
     QString url() const;
