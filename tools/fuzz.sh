@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang and runs each for SECONDS (default 60), one after the
 # other, seeded with the frames of tests/data/vectors.json and sample watch lists.
-#   tools/fuzz.sh [SECONDS] [TARGET...]      TARGET: facon binary address simquery watchlist (default all)
+#   tools/fuzz.sh [SECONDS] [TARGET...]      TARGET: facon binary address simquery watchlist
+#                                            gatewaypayload (default all)
 # Environment: FUZZ_BUILD (default build/fuzz), FUZZ_LOGS (directory for one log per target; default
 # only the summary is printed). Findings land in $FUZZ_BUILD/findings/; the script exits 1 if any.
 set -euo pipefail
@@ -9,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(facon binary address simquery watchlist)
+[ ${#targets[@]} -gt 0 ] || targets=(facon binary address simquery watchlist gatewaypayload)
 build=${FUZZ_BUILD:-build/fuzz}
 command -v clang++-14 >/dev/null || { echo "needs clang-14 and libclang-rt-14-dev (apt-get install clang-14 libclang-rt-14-dev)"; exit 2; }
 cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -54,6 +55,22 @@ for i, c in enumerate(csvs):
     open(f"{d}/csv-{i}", "wb").write(b"\x01" + c.encode())
 for i, t in enumerate(["R100..R163", "WY0..WY32", "DR0..DR4", "R100..163", "R100"]):
     open(f"{d}/range-{i}", "wb").write(b"\x02" + t.encode())
+# Gateway payloads: first byte 0 item, 1 write command, 2 status/reply, 3 message, 4 topic.
+d = f"{b}/corpus/gatewaypayload"; os.makedirs(d, exist_ok=True)
+err = {"id": "Joined", "args": ["R100", {"id": "MqttClosed", "args": ["mqtt://x"], "text": "Disconnected"}], "text": "R100: Disconnected"}
+seeds = [(0, {"station": 1, "address": "R100", "name": "Tank", "format": "float", "swapWords": False,
+              "value": 12.5, "text": "12.5", "words": [0, 16712], "quality": "good", "time": "2026-11-25T23:00:00.123Z"}),
+         (0, {"station": 2, "address": "Y3", "format": "bit", "words": [1], "quality": "stale",
+              "time": "2026-11-25T23:00:00.123Z", "error": err}),
+         (1, {"value": "12.5", "format": "float", "swapWords": True, "id": "a1"}),
+         (2, {"state": "down", "link": "TCP 127.0.0.1:500, FACON", "reason": err, "time": "2026-11-25T23:00:00.000Z"}),
+         (2, {"id": "7", "ok": False, "station": 1, "address": "R100", "value": "5", "error": err}),
+         (3, err)]
+for i, (k, obj) in enumerate(seeds):
+    open(f"{d}/json-{i}", "wb").write(bytes([k]) + json.dumps(obj).encode())
+open(f"{d}/set-text", "wb").write(b"\x01 ON\n")
+for i, t in enumerate(["fatek/line1/1/R100", "fatek/line1/3/WY16/set", "fatek/line1/status"]):
+    open(f"{d}/topic-{i}", "wb").write(b"\x04" + t.encode())
 PY
 mkdir -p "$build/findings"
 [ -z "${FUZZ_LOGS:-}" ] || mkdir -p "$FUZZ_LOGS"
