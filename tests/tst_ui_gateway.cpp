@@ -171,6 +171,43 @@ private Q_SLOTS:
         TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_gateway"));
     }
 
+    // Recent connections: the gateway part round-trips without its password; older entries
+    // (no "gateway" key) still load as PLC links.
+    void savedGatewayConnection()
+    {
+        SavedConnection saved;
+        saved.name = QStringLiteral("Line 1");
+        saved.station = 3;
+        GatewayWatchSettings gateway;
+        gateway.broker = *MqttBrokerSettings::fromUrl(QStringLiteral("mqtts://op:pw@broker:8884"));
+        gateway.broker.caFile = QStringLiteral("/etc/ssl/plant-ca.crt");
+        gateway.prefix = QStringLiteral("plant/fatek");
+        gateway.connection = QStringLiteral("line1");
+        saved.gateway = gateway;
+        const SavedConnection back = LinkSettingsIo::fromMap(LinkSettingsIo::toMap(saved));
+        QVERIFY(back.gateway);
+        QCOMPARE(back.station, 3);
+        QCOMPARE(back.gateway->broker.host, QStringLiteral("broker"));
+        QCOMPARE(back.gateway->broker.port, 8884);
+        QVERIFY(back.gateway->broker.tls);
+        QCOMPARE(back.gateway->broker.username, QStringLiteral("op"));
+        QVERIFY(back.gateway->broker.password.isEmpty());
+        QCOMPARE(back.gateway->broker.caFile, gateway.broker.caFile);
+        QCOMPARE(back.gateway->prefix, gateway.prefix);
+        QCOMPARE(back.gateway->connection, gateway.connection);
+        QVERIFY(!LinkSettingsIo::toMap(saved)
+                     .value(QStringLiteral("gateway"))
+                     .toMap()
+                     .value(QStringLiteral("broker"))
+                     .toString()
+                     .contains(QStringLiteral("pw")));
+
+        QVariantMap old = LinkSettingsIo::toMap(saved);
+        old.remove(QStringLiteral("gateway"));
+        QVERIFY(!LinkSettingsIo::fromMap(old).gateway);
+        QCOMPARE(LinkSettingsIo::fromMap(old).name, QStringLiteral("Line 1"));
+    }
+
     void watchAndWriteThroughTheGateway()
     {
         Gateway gateway;

@@ -7,6 +7,8 @@
 #include <QThread>
 #include <QUuid>
 
+#include <algorithm>
+
 namespace Fatek {
 
 namespace {
@@ -101,7 +103,6 @@ void GatewayWatch::onConnected()
     m_itemElements.clear();
     m_status.reset();
     m_settled = false;
-    m_graceTimer.start(m_graceMs);
     setState(LinkState::Connecting, msg<MsgId::GatewayNoStatus>(utf8(m_settings.connection)));
 }
 
@@ -184,7 +185,13 @@ void GatewayWatch::onStatus(const QByteArray &payload)
     }
     m_gatewayLink = status->link;
     switch (status->state) {
-    case GatewayPayload::LinkStatus::Up: setState(LinkState::Connected, {}); break;
+    case GatewayPayload::LinkStatus::Up:
+        // The gateway publishes its items right after its status: from here they are on their
+        // way, and the grace is how long they may take.
+        if (!m_settled && !m_graceTimer.isActive())
+            m_graceTimer.start(m_graceMs);
+        setState(LinkState::Connected, {});
+        break;
     case GatewayPayload::LinkStatus::Connecting:
         setState(LinkState::Connecting, msg<MsgId::GatewayConnecting>(name));
         break;

@@ -72,7 +72,7 @@ public:
     // How long a write waits for the gateway's reply [5000 ms].
     void setReplyTimeoutMs(int ms) { m_replyTimeoutMs = ms; }
     int replyTimeoutMs() const { return m_replyTimeoutMs; }
-    // How long after connecting the broker's retained items may take before an entry that has
+    // How long after the gateway's status says up its items may take before an entry that has
     // none is reported as not published [1000 ms].
     void setPublishedGraceMs(int ms) { m_graceMs = ms; }
 
@@ -129,7 +129,8 @@ private:
     bool m_readOnly = false;
     int m_replyTimeoutMs = 5000;
     int m_graceMs = 1000;
-    // False from a broker (re)connection until the grace: a missing item may still be coming.
+    // False from a broker (re)connection until the grace after the gateway's first "up": a
+    // missing item may still be coming.
     bool m_settled = false;
     QTimer m_graceTimer;
     QTimer m_flushTimer;
