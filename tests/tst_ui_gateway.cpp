@@ -318,7 +318,7 @@ private Q_SLOTS:
         QTRY_VERIFY2_WITH_TIMEOUT(table->message().contains(QStringLiteral("Read-only mode")),
                                   qPrintable(table->message()), longWait);
         // A write after operator mode ends goes through: the refused one would have come first.
-        mode->toggleAction()->trigger();
+        answerModal([&] { mode->toggleAction()->trigger(); }, answerYes);
         QVERIFY(!c->isReadOnly());
         typeValue(table, 0, QStringLiteral("6"), answerYes);
         QTRY_COMPARE_WITH_TIMEOUT(gateway.peer->setCount(), 1, longWait);

@@ -6,6 +6,7 @@
 
 class QComboBox;
 class QDialogButtonBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -57,7 +58,7 @@ private:
     QLineEdit *m_brokerUser;
     QLineEdit *m_brokerPassword;
     QLineEdit *m_caFile;
-    class QFormLayout *m_form;
+    QFormLayout *m_form;
     QComboBox *m_protocol;
     QSpinBox *m_station;
     QSpinBox *m_timeout;
