@@ -165,7 +165,7 @@
         </message>
         <message>
             <source>e.g. line1</source>
-            <translation>例如 line1</translation>
+            <translation>例如：閘道器設定中的連線名稱</translation>
         </message>
         <message>
             <source>The connection&apos;s name in the gateway&apos;s configuration</source>
