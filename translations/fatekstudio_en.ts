@@ -147,6 +147,74 @@
             <source>The baud rate must be a positive number.</source>
             <translation>The baud rate must be a positive number.</translation>
         </message>
+        <message>
+            <source>MQTT gateway</source>
+            <translation>MQTT gateway</translation>
+        </message>
+        <message>
+            <source>mqtt://host:port, or mqtts://host:port for TLS</source>
+            <translation>mqtt://host:port, or mqtts://host:port for TLS</translation>
+        </message>
+        <message>
+            <source>&amp;Broker:</source>
+            <translation>&amp;Broker:</translation>
+        </message>
+        <message>
+            <source>Topic &amp;prefix:</source>
+            <translation>Topic &amp;prefix:</translation>
+        </message>
+        <message>
+            <source>e.g. line1</source>
+            <translation>e.g. line1</translation>
+        </message>
+        <message>
+            <source>The connection&apos;s name in the gateway&apos;s configuration</source>
+            <translation>The connection&apos;s name in the gateway&apos;s configuration</translation>
+        </message>
+        <message>
+            <source>&amp;Gateway connection:</source>
+            <translation>&amp;Gateway connection:</translation>
+        </message>
+        <message>
+            <source>optional</source>
+            <translation>optional</translation>
+        </message>
+        <message>
+            <source>&amp;User:</source>
+            <translation>&amp;User:</translation>
+        </message>
+        <message>
+            <source>optional; not saved</source>
+            <translation>optional; not saved</translation>
+        </message>
+        <message>
+            <source>Pass&amp;word:</source>
+            <translation>Pass&amp;word:</translation>
+        </message>
+        <message>
+            <source>optional; mqtts:// only</source>
+            <translation>optional; mqtts:// only</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>Browse…</translation>
+        </message>
+        <message>
+            <source>TLS C&amp;A file:</source>
+            <translation>TLS C&amp;A file:</translation>
+        </message>
+        <message>
+            <source>CA Certificate</source>
+            <translation>CA Certificate</translation>
+        </message>
+        <message>
+            <source>Certificates (*.crt *.pem);;All files (*)</source>
+            <translation>Certificates (*.crt *.pem);;All files (*)</translation>
+        </message>
+        <message>
+            <source>A TLS CA file needs an mqtts:// broker URL.</source>
+            <translation>A TLS CA file needs an mqtts:// broker URL.</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::ConnectionListModel</name>
@@ -1401,6 +1469,58 @@
             <source>&quot;%1&quot; is not a value format.</source>
             <translation>&quot;%1&quot; is not a value format.</translation>
         </message>
+        <message>
+            <source>%1 (station %2) is not published by the gateway %3.</source>
+            <translation>%1 (station %2) is not published by the gateway %3.</translation>
+        </message>
+        <message>
+            <source>No status from the gateway %1 yet.</source>
+            <translation>No status from the gateway %1 yet.</translation>
+        </message>
+        <message>
+            <source>The gateway %1 is connecting to its PLC.</source>
+            <translation>The gateway %1 is connecting to its PLC.</translation>
+        </message>
+        <message>
+            <source>The gateway %1 is offline.</source>
+            <translation>The gateway %1 is offline.</translation>
+        </message>
+        <message>
+            <source>The gateway %1 is offline: %2</source>
+            <translation>The gateway %1 is offline: %2</translation>
+        </message>
+        <message>
+            <source>The gateway %1 lost its link to the PLC.</source>
+            <translation>The gateway %1 lost its link to the PLC.</translation>
+        </message>
+        <message>
+            <source>The gateway %1 lost its link to the PLC: %2</source>
+            <translation>The gateway %1 lost its link to the PLC: %2</translation>
+        </message>
+        <message>
+            <source>%1 was not sent: %2</source>
+            <translation>%1 was not sent: %2</translation>
+        </message>
+        <message>
+            <source>The broker %1 did not take the command.</source>
+            <translation>The broker %1 did not take the command.</translation>
+        </message>
+        <message>
+            <source>No reply from the gateway %1 within %2 s.</source>
+            <translation>No reply from the gateway %1 within %2 s.</translation>
+        </message>
+        <message>
+            <source>The gateway %1 did not write the value.</source>
+            <translation>The gateway %1 did not write the value.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a topic prefix: levels separated by /, without + or #.</source>
+            <translation>&quot;%1&quot; is not a topic prefix: levels separated by /, without + or #.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</source>
+            <translation>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>
@@ -1556,6 +1676,10 @@
         <message>
             <source>(no port)</source>
             <translation>(no port)</translation>
+        </message>
+        <message>
+            <source>MQTT gateway %1 on %2 (prefix %3)</source>
+            <translation>MQTT gateway %1 on %2 (prefix %3)</translation>
         </message>
     </context>
     <context>
@@ -1944,6 +2068,10 @@
         <message>
             <source>%1 ms</source>
             <translation>%1 ms</translation>
+        </message>
+        <message>
+            <source>%1: %2 · through the MQTT gateway</source>
+            <translation>%1: %2 · through the MQTT gateway</translation>
         </message>
     </context>
     <context>
@@ -2874,6 +3002,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Save, compare and restore element values of the current station</source>
             <translation>Save, compare and restore element values of the current station</translation>
         </message>
+        <message>
+            <source>Not available through an MQTT gateway connection: this tool needs a direct link to the PLC.</source>
+            <translation>Not available through an MQTT gateway connection: this tool needs a direct link to the PLC.</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -3500,6 +3636,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>Operator mode (read-only): %1 cannot be written.</translation>
+        </message>
+        <message>
+            <source>Writing %1 through the gateway …</source>
+            <translation>Writing %1 through the gateway …</translation>
+        </message>
+        <message>
+            <source>The gateway wrote %1.</source>
+            <translation>The gateway wrote %1.</translation>
         </message>
     </context>
     <context>

@@ -147,6 +147,74 @@
             <source>The baud rate must be a positive number.</source>
             <translation>鮑率必須是正數。</translation>
         </message>
+        <message>
+            <source>MQTT gateway</source>
+            <translation>MQTT 閘道器</translation>
+        </message>
+        <message>
+            <source>mqtt://host:port, or mqtts://host:port for TLS</source>
+            <translation>mqtt://主機:埠，TLS 請用 mqtts://主機:埠</translation>
+        </message>
+        <message>
+            <source>&amp;Broker:</source>
+            <translation>代理伺服器(&amp;B)：</translation>
+        </message>
+        <message>
+            <source>Topic &amp;prefix:</source>
+            <translation>主題前綴(&amp;P)：</translation>
+        </message>
+        <message>
+            <source>e.g. line1</source>
+            <translation>例如：閘道器設定中的連線名稱</translation>
+        </message>
+        <message>
+            <source>The connection&apos;s name in the gateway&apos;s configuration</source>
+            <translation>閘道器設定中的連線名稱</translation>
+        </message>
+        <message>
+            <source>&amp;Gateway connection:</source>
+            <translation>閘道器連線(&amp;G)：</translation>
+        </message>
+        <message>
+            <source>optional</source>
+            <translation>選填</translation>
+        </message>
+        <message>
+            <source>&amp;User:</source>
+            <translation>使用者(&amp;U)：</translation>
+        </message>
+        <message>
+            <source>optional; not saved</source>
+            <translation>選填；不會儲存</translation>
+        </message>
+        <message>
+            <source>Pass&amp;word:</source>
+            <translation>密碼(&amp;W)：</translation>
+        </message>
+        <message>
+            <source>optional; mqtts:// only</source>
+            <translation>選填；僅限 mqtts://</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>瀏覽…</translation>
+        </message>
+        <message>
+            <source>TLS C&amp;A file:</source>
+            <translation>TLS CA 檔案(&amp;A)：</translation>
+        </message>
+        <message>
+            <source>CA Certificate</source>
+            <translation>CA 憑證</translation>
+        </message>
+        <message>
+            <source>Certificates (*.crt *.pem);;All files (*)</source>
+            <translation>憑證 (*.crt *.pem);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>A TLS CA file needs an mqtts:// broker URL.</source>
+            <translation>TLS CA 檔案需搭配 mqtts:// 代理伺服器網址。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::ConnectionListModel</name>
@@ -1401,6 +1469,58 @@
             <source>&quot;%1&quot; is not a value format.</source>
             <translation>「%1」不是數值格式。</translation>
         </message>
+        <message>
+            <source>%1 (station %2) is not published by the gateway %3.</source>
+            <translation>%1（站號 %2）未由閘道器 %3 發佈。</translation>
+        </message>
+        <message>
+            <source>No status from the gateway %1 yet.</source>
+            <translation>尚未收到閘道器 %1 的狀態。</translation>
+        </message>
+        <message>
+            <source>The gateway %1 is connecting to its PLC.</source>
+            <translation>閘道器 %1 正在連線至其 PLC。</translation>
+        </message>
+        <message>
+            <source>The gateway %1 is offline.</source>
+            <translation>閘道器 %1 已離線。</translation>
+        </message>
+        <message>
+            <source>The gateway %1 is offline: %2</source>
+            <translation>閘道器 %1 已離線：%2</translation>
+        </message>
+        <message>
+            <source>The gateway %1 lost its link to the PLC.</source>
+            <translation>閘道器 %1 與 PLC 的連線中斷。</translation>
+        </message>
+        <message>
+            <source>The gateway %1 lost its link to the PLC: %2</source>
+            <translation>閘道器 %1 與 PLC 的連線中斷：%2</translation>
+        </message>
+        <message>
+            <source>%1 was not sent: %2</source>
+            <translation>%1 未送出：%2</translation>
+        </message>
+        <message>
+            <source>The broker %1 did not take the command.</source>
+            <translation>代理伺服器 %1 未接受此命令。</translation>
+        </message>
+        <message>
+            <source>No reply from the gateway %1 within %2 s.</source>
+            <translation>閘道器 %1 在 %2 秒內未回覆。</translation>
+        </message>
+        <message>
+            <source>The gateway %1 did not write the value.</source>
+            <translation>閘道器 %1 未寫入此值。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a topic prefix: levels separated by /, without + or #.</source>
+            <translation>「%1」不是主題前綴：各層以 / 分隔，不可含 + 或 #。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</source>
+            <translation>「%1」不是閘道器連線名稱：須為 1 至 64 個字母、數字、-、_ 或 .，且不可為純數字。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>
@@ -1556,6 +1676,10 @@
         <message>
             <source>(no port)</source>
             <translation>（無連接埠）</translation>
+        </message>
+        <message>
+            <source>MQTT gateway %1 on %2 (prefix %3)</source>
+            <translation>MQTT 閘道器 %1，位於 %2（前綴 %3）</translation>
         </message>
     </context>
     <context>
@@ -1942,6 +2066,10 @@
         <message>
             <source>%1 ms</source>
             <translation>%1 ms</translation>
+        </message>
+        <message>
+            <source>%1: %2 · through the MQTT gateway</source>
+            <translation>%1：%2 · 透過 MQTT 閘道器</translation>
         </message>
     </context>
     <context>
@@ -2866,6 +2994,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Save, compare and restore element values of the current station</source>
             <translation>儲存、比較並還原目前站號的元件數值</translation>
         </message>
+        <message>
+            <source>Not available through an MQTT gateway connection: this tool needs a direct link to the PLC.</source>
+            <translation>透過 MQTT 閘道器連線時無法使用：此工具需要直接連線至 PLC。</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -3486,6 +3622,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>操作員模式（唯讀）：無法寫入 %1。</translation>
+        </message>
+        <message>
+            <source>Writing %1 through the gateway …</source>
+            <translation>正在透過閘道器寫入 %1 …</translation>
+        </message>
+        <message>
+            <source>The gateway wrote %1.</source>
+            <translation>閘道器已寫入 %1。</translation>
         </message>
     </context>
     <context>

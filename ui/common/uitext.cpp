@@ -144,4 +144,10 @@ QString UiText::settings(const LinkSettings &settings)
     return text;
 }
 
+QString UiText::gateway(const GatewayWatchSettings &settings)
+{
+    return tr("MQTT gateway %1 on %2 (prefix %3)")
+        .arg(settings.connection, settings.broker.toUrl(), settings.prefix);
+}
+
 } // namespace Fatek

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/mqtt/gatewaywatch.h"
 #include "core/protocol/element.h"
 #include "core/protocol/message.h"
 #include "core/protocol/request.h"
@@ -33,6 +34,8 @@ public:
     static QString protocolChoice(LinkSettings::ProtocolChoice choice);
     // LinkSettings::toString() with its words translated ("TCP 10.0.0.5:500, auto-detect").
     static QString settings(const LinkSettings &settings);
+    // "MQTT gateway line1 on mqtt://broker:1883 (prefix fatek)".
+    static QString gateway(const GatewayWatchSettings &settings);
     // Display format from a name typed in either language (the file names "unsigned" etc. too).
     static std::optional<DisplayFormat> formatFromName(const QString &name);
 };

@@ -10,52 +10,64 @@ namespace Fatek {
 Connection::Connection(const SavedConnection &saved, QObject *parent)
     : QObject(parent)
     , m_saved(saved)
-    , m_session(new Session(saved.settings, this))
-    , m_plcRequests(new RequestTracker(this))
 {
+    // Requests per second over the last second; a timer so the rate falls to 0 when idle.
+    m_rateTimer.setInterval(1000);
+    connect(&m_rateTimer, &QTimer::timeout, this, &Connection::updateRate);
+    m_rateClock.start();
+    if (saved.gateway) {
+        m_gateway = new GatewayWatch(*saved.gateway, this);
+        connect(m_gateway, &GatewayWatch::linkStateChanged, this, &Connection::onLinkState);
+        connect(m_gateway, &GatewayWatch::values, this, &Connection::values);
+        return;
+    }
+    m_session = new Session(saved.settings, this);
+    m_plcRequests = new RequestTracker(this);
     m_plcRequests->setSession(m_session);
     m_statusTimer.setInterval(plcStatusIntervalMs);
     connect(&m_statusTimer, &QTimer::timeout, this, &Connection::readStatus);
-    connect(m_session, &Session::linkStateChanged, this,
-            [this](LinkState state, const Message &reason) {
-                // Every failed attempt and every broken link passes through Lost once.
-                if (state == LinkState::Lost)
-                    ++m_linkFailures;
-                if (state == LinkState::Connected)
-                    m_hasConnected = true;
-                const bool cameUp = state == LinkState::Connected && m_state != state;
-                m_state = state;
-                m_reason = reason;
-                if (cameUp) {
-                    readIdentity();
-                    m_statusTimer.start();
-                } else if (state != LinkState::Connected) {
-                    // Down: RUN/STOP is unknown, not "the last we saw".
-                    m_statusTimer.stop();
-                    m_plcRequests->forgetPending();
-                    m_statusPending = false;
-                    m_plcStatus.reset();
-                }
-                Q_EMIT linkStateChanged(state, reason);
-                Q_EMIT changed();
-            });
+    connect(m_session, &Session::linkStateChanged, this, &Connection::onLinkState);
     connect(m_session, &Session::statisticsChanged, this,
             [this](const SessionStatistics &statistics) {
                 m_statistics = statistics;
                 Q_EMIT changed();
             });
     connect(m_session, &Session::values, this, &Connection::values);
-    // Requests per second over the last second; a timer so the rate falls to 0 when idle.
-    m_rateTimer.setInterval(1000);
-    connect(&m_rateTimer, &QTimer::timeout, this, &Connection::updateRate);
     m_rateTimer.start();
-    m_rateClock.start();
+}
+
+void Connection::onLinkState(LinkState state, const Message &reason)
+{
+    // Every failed attempt and every broken link passes through Lost once (a gateway watch stays
+    // Lost while its broker client retries, and says so again only when the reason changes).
+    if (state == LinkState::Lost && (m_session || m_state != LinkState::Lost))
+        ++m_linkFailures;
+    if (state == LinkState::Connected)
+        m_hasConnected = true;
+    const bool cameUp = state == LinkState::Connected && m_state != state;
+    m_state = state;
+    m_reason = reason;
+    if (m_session && cameUp) {
+        readIdentity();
+        m_statusTimer.start();
+    } else if (m_session && state != LinkState::Connected) {
+        // Down: RUN/STOP is unknown, not "the last we saw".
+        m_statusTimer.stop();
+        m_plcRequests->forgetPending();
+        m_statusPending = false;
+        m_plcStatus.reset();
+    }
+    Q_EMIT linkStateChanged(state, reason);
+    Q_EMIT changed();
 }
 
 Connection::~Connection()
 {
     // The session's destructor stops its thread; nothing may poll into a half-destroyed object.
-    disconnect(m_session, nullptr, this, nullptr);
+    if (m_session)
+        disconnect(m_session, nullptr, this, nullptr);
+    if (m_gateway)
+        disconnect(m_gateway, nullptr, this, nullptr);
 }
 
 void Connection::setStation(quint8 station)
@@ -66,10 +78,12 @@ void Connection::setStation(quint8 station)
     // Another station is another PLC: forget what the last one said and ask this one.
     m_detail.reset();
     m_plcStatus.reset();
-    m_plcRequests->forgetPending();
     m_statusPending = false;
-    if (m_state == LinkState::Connected)
-        readIdentity();
+    if (m_session) {
+        m_plcRequests->forgetPending();
+        if (m_state == LinkState::Connected)
+            readIdentity();
+    }
     Q_EMIT changed();
 }
 
@@ -111,6 +125,8 @@ QString Connection::stateText() const
 
 QString Connection::plcText() const
 {
+    if (m_gateway)
+        return m_gateway->gatewayLink(); // what the gateway talks to
     QStringList parts;
     if (m_detail) {
         if (const std::optional<std::string> model = m_detail->modelName())
@@ -168,19 +184,62 @@ void Connection::readStatus()
 
 void Connection::open()
 {
-    m_session->open();
+    if (m_gateway)
+        m_gateway->open();
+    else
+        m_session->open();
 }
 
 void Connection::reconnectNow()
 {
     if (m_state == LinkState::Connected || m_state == LinkState::Connecting)
         return;
+    if (m_gateway) {
+        // The broker client waits out its backoff; a new start skips it.
+        m_gateway->close();
+        m_gateway->open();
+        return;
+    }
     m_session->open(); // during a backoff the worker connects at once
 }
 
 void Connection::close()
 {
-    m_session->close();
+    if (m_gateway)
+        m_gateway->close();
+    else
+        m_session->close();
+}
+
+void Connection::closeDiscard()
+{
+    if (m_gateway)
+        m_gateway->close();
+    else
+        m_session->close(CloseMode::Discard);
+}
+
+void Connection::setReadOnly(bool readOnly)
+{
+    if (m_gateway)
+        m_gateway->setReadOnly(readOnly);
+    else
+        m_session->setReadOnly(readOnly);
+}
+
+bool Connection::isReadOnly() const
+{
+    return m_gateway ? m_gateway->isReadOnly() : m_session->isReadOnly();
+}
+
+int Connection::pendingWrites() const
+{
+    return m_gateway ? 0 : m_session->pendingWrites();
+}
+
+int Connection::closeDrainMs() const
+{
+    return m_gateway ? 0 : m_session->closeDrainMs();
 }
 
 void Connection::setPollEntries(const QObject *owner, const QList<WatchEntry> &entries)
@@ -197,7 +256,10 @@ void Connection::pushWatchList()
     QList<WatchEntry> all;
     for (auto it = m_pollEntries.cbegin(); it != m_pollEntries.cend(); ++it)
         all += it.value();
-    m_session->setWatchList(all);
+    if (m_gateway)
+        m_gateway->setWatchList(all);
+    else
+        m_session->setWatchList(all);
 }
 
 void Connection::updateRate()

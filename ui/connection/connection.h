@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/mqtt/gatewaywatch.h"
 #include "core/protocol/plcstatus.h"
 #include "core/session/session.h"
 #include "linksettingsio.h"
@@ -16,6 +17,9 @@ namespace Fatek {
 // One open link in the GUI: a named Session, the station tools act on, link state and rates.
 // Several watch tables may poll through one connection: each owner hands its entries in and the
 // connection gives the session their union (the session has a single watch list).
+// A connection of kind MQTT gateway has no Session (session() is nullptr): a GatewayWatch serves
+// the tables with the gateway's values and takes their writes; tools that need the PLC's own link
+// are not available on it.
 class Connection : public QObject
 {
     Q_OBJECT
@@ -30,7 +34,21 @@ public:
     quint8 station() const { return m_saved.station; }
     void setStation(quint8 station);
 
+    // nullptr on a gateway connection.
     Session *session() const { return m_session; }
+    // nullptr on a PLC connection.
+    GatewayWatch *gateway() const { return m_gateway; }
+    bool isGateway() const { return m_gateway != nullptr; }
+    // What the link is, in the UI language ("TCP 10.0.0.5:500, FACON", "MQTT gateway line1 ...").
+    QString linkText() const { return m_saved.linkText(); }
+
+    // Operator mode, enforced by the session or the gateway watch.
+    void setReadOnly(bool readOnly);
+    bool isReadOnly() const;
+    // Writes accepted and not finished; how long a close waits for them (0 for a gateway: its
+    // commands are gone once published).
+    int pendingWrites() const;
+    int closeDrainMs() const;
     LinkState linkState() const { return m_state; }
     Message linkReason() const { return m_reason; }
     SessionStatistics statistics() const { return m_statistics; }
@@ -55,6 +73,8 @@ public:
 
     void open();
     void close();
+    // Closes at once, dropping writes not sent yet.
+    void closeDiscard();
     // Connects at once when the link is down (skips the reconnect backoff).
     void reconnectNow();
 
@@ -67,16 +87,18 @@ Q_SIGNALS:
     void values(const QList<Fatek::WatchValue> &values);
 
 private:
+    void onLinkState(LinkState state, const Message &reason);
     void updateRate();
     void pushWatchList();
     void readIdentity();
     void readStatus();
 
     SavedConnection m_saved;
-    Session *m_session;
+    Session *m_session = nullptr;
+    GatewayWatch *m_gateway = nullptr;
     LinkState m_state = LinkState::Closed;
     quint64 m_linkFailures = 0;
-    class RequestTracker *m_plcRequests;
+    class RequestTracker *m_plcRequests = nullptr;
     QTimer m_statusTimer;
     std::optional<DetailStatus> m_detail;
     std::optional<PlcStatus> m_plcStatus;

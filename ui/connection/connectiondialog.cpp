@@ -5,6 +5,7 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -44,15 +45,18 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_recentCombo = new QComboBox(this);
     m_recentCombo->addItem(tr("(new)"));
     for (const SavedConnection &c : recent)
-        m_recentCombo->addItem(tr("%1 — %2").arg(c.name, UiText::settings(c.settings)));
+        m_recentCombo->addItem(tr("%1 — %2").arg(c.name, c.linkText()));
     m_recentCombo->setEnabled(!recent.isEmpty());
 
     m_name = new QLineEdit(this);
+    m_name->setObjectName(QStringLiteral("connectionNameEdit"));
     m_name->setPlaceholderText(tr("e.g. Pump station"));
     m_kind = comboOf({{tr("Serial (RS-232 / RS-485)"), int(LinkSettings::Kind::Serial)},
                       {tr("TCP"), int(LinkSettings::Kind::Tcp)},
-                      {tr("UDP"), int(LinkSettings::Kind::Udp)}},
+                      {tr("UDP"), int(LinkSettings::Kind::Udp)},
+                      {tr("MQTT gateway"), gatewayKind}},
                      this);
+    m_kind->setObjectName(QStringLiteral("linkKindCombo"));
 
     // Serial page
     auto *serialPage = new QWidget(this);
@@ -95,9 +99,52 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_port->setRange(1, 65535);
     netForm->addRow(tr("P&ort:"), m_port);
 
+    // Gateway page: the PLCs are watched through a fatek-gateway's topics on a broker.
+    auto *gatewayPage = new QWidget(this);
+    auto *gatewayForm = new QFormLayout(gatewayPage);
+    gatewayForm->setContentsMargins(0, 0, 0, 0);
+    m_brokerUrl = new QLineEdit(gatewayPage);
+    m_brokerUrl->setObjectName(QStringLiteral("brokerUrlEdit"));
+    m_brokerUrl->setPlaceholderText(QStringLiteral("mqtt://broker:1883"));
+    m_brokerUrl->setToolTip(tr("mqtt://host:port, or mqtts://host:port for TLS"));
+    gatewayForm->addRow(tr("&Broker:"), m_brokerUrl);
+    m_prefix = new QLineEdit(gatewayPage);
+    m_prefix->setObjectName(QStringLiteral("gatewayPrefixEdit"));
+    gatewayForm->addRow(tr("Topic &prefix:"), m_prefix);
+    m_gatewayName = new QLineEdit(gatewayPage);
+    m_gatewayName->setObjectName(QStringLiteral("gatewayNameEdit"));
+    m_gatewayName->setPlaceholderText(tr("e.g. line1"));
+    m_gatewayName->setToolTip(tr("The connection's name in the gateway's configuration"));
+    gatewayForm->addRow(tr("&Gateway connection:"), m_gatewayName);
+    m_brokerUser = new QLineEdit(gatewayPage);
+    m_brokerUser->setObjectName(QStringLiteral("brokerUserEdit"));
+    m_brokerUser->setPlaceholderText(tr("optional"));
+    gatewayForm->addRow(tr("&User:"), m_brokerUser);
+    m_brokerPassword = new QLineEdit(gatewayPage);
+    m_brokerPassword->setObjectName(QStringLiteral("brokerPasswordEdit"));
+    m_brokerPassword->setEchoMode(QLineEdit::Password);
+    m_brokerPassword->setPlaceholderText(tr("optional; not saved"));
+    gatewayForm->addRow(tr("Pass&word:"), m_brokerPassword);
+    m_caFile = new QLineEdit(gatewayPage);
+    m_caFile->setObjectName(QStringLiteral("brokerCaEdit"));
+    m_caFile->setPlaceholderText(tr("optional; mqtts:// only"));
+    auto *browseCa = new QPushButton(tr("Browse…"), gatewayPage);
+    auto *caRow = new QHBoxLayout;
+    caRow->addWidget(m_caFile, 1);
+    caRow->addWidget(browseCa);
+    gatewayForm->addRow(tr("TLS C&A file:"), caRow);
+    connect(browseCa, &QPushButton::clicked, this, [this] {
+        const QString file
+            = QFileDialog::getOpenFileName(this, tr("CA Certificate"), m_caFile->text(),
+                                           tr("Certificates (*.crt *.pem);;All files (*)"));
+        if (!file.isEmpty())
+            m_caFile->setText(file);
+    });
+
     m_pages = new QStackedWidget(this);
     m_pages->addWidget(serialPage);
     m_pages->addWidget(netPage);
+    m_pages->addWidget(gatewayPage);
 
     m_protocol = comboOf({{tr("FACON (ASCII)"), int(LinkSettings::ProtocolChoice::Facon)},
                           {tr("Binary"), int(LinkSettings::ProtocolChoice::Binary)},
@@ -112,7 +159,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_retries = new QSpinBox(this);
     m_retries->setRange(0, 10);
 
-    auto *form = new QFormLayout;
+    auto *form = m_form = new QFormLayout;
     form->addRow(tr("Re&cent:"), m_recentCombo);
     form->addRow(tr("&Name:"), m_name);
     form->addRow(tr("&Link:"), m_kind);
@@ -127,6 +174,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_error->setVisible(false);
     m_buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     m_buttons->button(QDialogButtonBox::Ok)->setText(tr("C&onnect"));
+    m_buttons->button(QDialogButtonBox::Ok)->setObjectName(QStringLiteral("connectButton"));
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -162,10 +210,37 @@ void ConnectionDialog::refreshPorts()
         m_portName->setCurrentText(current);
 }
 
+bool ConnectionDialog::isGateway() const
+{
+    return m_kind->currentData().toInt() == gatewayKind;
+}
+
 void ConnectionDialog::updateKind()
 {
     const auto kind = static_cast<LinkSettings::Kind>(m_kind->currentData().toInt());
-    m_pages->setCurrentIndex(kind == LinkSettings::Kind::Serial ? 0 : 1);
+    m_pages->setCurrentIndex(isGateway() ? 2 : kind == LinkSettings::Kind::Serial ? 0 : 1);
+    // The gateway has its own protocol, timeout and retries per PLC link.
+    for (QWidget *row : {static_cast<QWidget *>(m_protocol), static_cast<QWidget *>(m_timeout),
+                         static_cast<QWidget *>(m_retries)})
+        m_form->setRowVisible(row, !isGateway());
+}
+
+Result<GatewayWatchSettings> ConnectionDialog::gatewaySettings() const
+{
+    GatewayWatchSettings settings;
+    const Result<MqttBrokerSettings> broker = MqttBrokerSettings::fromUrl(m_brokerUrl->text());
+    if (!broker.ok())
+        return broker.error();
+    settings.broker = *broker;
+    // The fields win over a user or password written into the URL.
+    if (!m_brokerUser->text().trimmed().isEmpty())
+        settings.broker.username = m_brokerUser->text().trimmed();
+    if (!m_brokerPassword->text().isEmpty())
+        settings.broker.password = m_brokerPassword->text();
+    settings.broker.caFile = m_caFile->text().trimmed();
+    settings.prefix = m_prefix->text().trimmed();
+    settings.connection = m_gatewayName->text().trimmed();
+    return settings;
 }
 
 void ConnectionDialog::setConnection(const SavedConnection &c)
@@ -189,6 +264,17 @@ void ConnectionDialog::setConnection(const SavedConnection &c)
     m_station->setValue(c.station);
     m_timeout->setValue(s.timeoutMs);
     m_retries->setValue(s.retries);
+    const GatewayWatchSettings gateway = c.gateway.value_or(GatewayWatchSettings{});
+    if (c.gateway)
+        selectData(m_kind, gatewayKind);
+    MqttBrokerSettings urlPart = gateway.broker;
+    urlPart.username.clear(); // in its own field
+    m_brokerUrl->setText(c.gateway ? urlPart.toUrl() : QString());
+    m_brokerUser->setText(gateway.broker.username);
+    m_brokerPassword->setText(gateway.broker.password);
+    m_caFile->setText(gateway.broker.caFile);
+    m_prefix->setText(gateway.prefix);
+    m_gatewayName->setText(gateway.connection);
     updateKind();
 }
 
@@ -213,6 +299,10 @@ SavedConnection ConnectionDialog::connection() const
     s.protocol = static_cast<LinkSettings::ProtocolChoice>(m_protocol->currentData().toInt());
     s.timeoutMs = m_timeout->value();
     s.retries = m_retries->value();
+    if (isGateway()) {
+        const Result<GatewayWatchSettings> gateway = gatewaySettings();
+        c.gateway = gateway.ok() ? *gateway : GatewayWatchSettings{};
+    }
     return c;
 }
 
@@ -221,6 +311,13 @@ void ConnectionDialog::accept()
     const SavedConnection c = connection();
     QString problem
         = c.name.isEmpty() ? tr("Give the connection a name.") : translated(c.settings.validate());
+    if (isGateway() && !c.name.isEmpty()) {
+        const Result<GatewayWatchSettings> gateway = gatewaySettings();
+        problem
+            = !gateway.ok() ? translated(gateway.error().message) : translated(gateway->validate());
+        if (problem.isEmpty() && !gateway->broker.caFile.isEmpty() && !gateway->broker.tls)
+            problem = tr("A TLS CA file needs an mqtts:// broker URL.");
+    }
     if (problem.isEmpty() && c.settings.kind == LinkSettings::Kind::Serial
         && c.settings.baudRate <= 0)
         problem = tr("The baud rate must be a positive number.");

@@ -6,6 +6,7 @@
 
 class QComboBox;
 class QDialogButtonBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -14,7 +15,8 @@ class QStackedWidget;
 namespace Fatek {
 
 // Asks for a new connection: name, medium (serial with every line setting, TCP, UDP), protocol,
-// station, timeout and retries. Recent connections prefill it.
+// station, timeout and retries; or an MQTT gateway's connection (broker URL, topic prefix, the
+// gateway's connection name, user, password, TLS CA file). Recent connections prefill it.
 class ConnectionDialog : public QDialog
 {
     Q_OBJECT
@@ -27,9 +29,15 @@ public:
 
     void accept() override;
 
+    // The link combo's value for a gateway connection (the others are LinkSettings::Kind).
+    static constexpr int gatewayKind = 100;
+
 private:
     void refreshPorts();
     void updateKind();
+    bool isGateway() const;
+    // The gateway part as typed; an error when the broker URL does not read.
+    Result<GatewayWatchSettings> gatewaySettings() const;
 
     QList<SavedConnection> m_recent;
     QComboBox *m_recentCombo;
@@ -44,6 +52,13 @@ private:
     QComboBox *m_flowControl;
     QLineEdit *m_host;
     QSpinBox *m_port;
+    QLineEdit *m_brokerUrl;
+    QLineEdit *m_prefix;
+    QLineEdit *m_gatewayName;
+    QLineEdit *m_brokerUser;
+    QLineEdit *m_brokerPassword;
+    QLineEdit *m_caFile;
+    QFormLayout *m_form;
     QComboBox *m_protocol;
     QSpinBox *m_station;
     QSpinBox *m_timeout;

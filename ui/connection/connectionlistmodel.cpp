@@ -52,7 +52,7 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
     if (role == Qt::DisplayRole || role == Qt::EditRole) {
         switch (index.column()) {
         case NameColumn: return c->name();
-        case LinkColumn: return UiText::settings(c->settings());
+        case LinkColumn: return c->linkText();
         case StationColumn: return c->station();
         case PlcColumn: {
             const QString text = c->plcText();
@@ -99,7 +99,7 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         }
         default: {
             // Per station: several PLCs on one RS-485 line share a connection.
-            QStringList lines{UiText::settings(c->settings())};
+            QStringList lines{c->linkText()};
             const SessionStatistics statistics = c->statistics();
             for (auto it = statistics.stations.cbegin(); it != statistics.stations.cend(); ++it) {
                 const StationStatistics &s = it.value();

@@ -73,7 +73,7 @@ Connection *ConnectionManager::open(const SavedConnection &saved)
     SavedConnection named = saved;
     named.name = uniqueName(saved.name);
     auto *connection = new Connection(named, this);
-    connection->session()->setReadOnly(m_readOnly);
+    connection->setReadOnly(m_readOnly);
     connect(connection, &Connection::changed, this,
             [this, connection] { Q_EMIT connectionChanged(connection); });
     m_connections.append(connection);
@@ -92,8 +92,7 @@ void ConnectionManager::remove(Connection *connection)
     Q_EMIT connectionAboutToBeRemoved(connection);
     m_connections.removeAt(index);
     Q_EMIT connectionRemoved(connection);
-    if (connection->session()->pendingWrites() == 0
-        || connection->linkState() == LinkState::Closed) {
+    if (connection->pendingWrites() == 0 || connection->linkState() == LinkState::Closed) {
         delete connection;
         return;
     }
@@ -110,7 +109,7 @@ void ConnectionManager::setReadOnly(bool readOnly)
 {
     m_readOnly = readOnly;
     for (Connection *c : std::as_const(m_connections))
-        c->session()->setReadOnly(readOnly);
+        c->setReadOnly(readOnly);
 }
 
 QList<SavedConnection> ConnectionManager::recent() const

@@ -1,6 +1,15 @@
 #include "linksettingsio.h"
 
-namespace Fatek::LinkSettingsIo {
+#include "ui/common/uitext.h"
+
+namespace Fatek {
+
+QString SavedConnection::linkText() const
+{
+    return gateway ? UiText::gateway(*gateway) : UiText::settings(settings);
+}
+
+namespace LinkSettingsIo {
 
 namespace {
 
@@ -38,6 +47,15 @@ QVariantMap toMap(const SavedConnection &c)
     m[QStringLiteral("protocol")] = toInt(s.protocol);
     m[QStringLiteral("timeoutMs")] = s.timeoutMs;
     m[QStringLiteral("retries")] = s.retries;
+    if (c.gateway) {
+        const MqttBrokerSettings &b = c.gateway->broker;
+        QVariantMap g;
+        g[QStringLiteral("broker")] = b.toUrl(); // scheme, user, host, port; no password
+        g[QStringLiteral("caFile")] = b.caFile;
+        g[QStringLiteral("prefix")] = c.gateway->prefix;
+        g[QStringLiteral("connection")] = c.gateway->connection;
+        m[QStringLiteral("gateway")] = g;
+    }
     return m;
 }
 
@@ -62,7 +80,22 @@ SavedConnection fromMap(const QVariantMap &m)
     s.protocol = toEnum(m.value(QStringLiteral("protocol")), s.protocol, 3);
     s.timeoutMs = m.value(QStringLiteral("timeoutMs"), s.timeoutMs).toInt();
     s.retries = m.value(QStringLiteral("retries"), s.retries).toInt();
+    const QVariant gateway = m.value(QStringLiteral("gateway"));
+    if (gateway.typeId() == QMetaType::QVariantMap) {
+        const QVariantMap g = gateway.toMap();
+        const Result<MqttBrokerSettings> broker
+            = MqttBrokerSettings::fromUrl(g.value(QStringLiteral("broker")).toString());
+        GatewayWatchSettings settings;
+        if (broker.ok())
+            settings.broker = *broker;
+        settings.broker.caFile = g.value(QStringLiteral("caFile")).toString();
+        settings.prefix = g.value(QStringLiteral("prefix"), settings.prefix).toString();
+        settings.connection = g.value(QStringLiteral("connection")).toString();
+        c.gateway = settings;
+    }
     return c;
 }
 
-} // namespace Fatek::LinkSettingsIo
+} // namespace LinkSettingsIo
+
+} // namespace Fatek

@@ -90,7 +90,8 @@ StationScanDialog::StationScanDialog(Connection *connection, QWidget *parent)
     connect(m_list, &QListWidget::itemDoubleClicked, this, &StationScanDialog::useSelected);
     connect(m_list, &QListWidget::itemSelectionChanged, this, &StationScanDialog::updateButtons);
 
-    if (connection) {
+    // A gateway connection has no link of its own to scan (ToolDocks does not open this on one).
+    if (connection && connection->session()) {
         m_scanner = new StationScanner(connection->session(), this);
         connect(
             m_scanner, &StationScanner::stationFound, this,

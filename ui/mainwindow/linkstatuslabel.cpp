@@ -29,6 +29,9 @@ void LinkStatusLabel::showConnection(const Connection *c)
         if (state == LinkState::Reconnecting || state == LinkState::Lost)
             text += tr(" · F5 reconnects now");
         setText(text);
+    } else if (c->isGateway()) {
+        // The gateway polls; this program only reads the broker: no rate or round trip of its own.
+        setText(tr("%1: %2 · through the MQTT gateway").arg(c->name(), c->stateText()));
     } else {
         setText(
             tr("%1: %2 · %3 req/s · %4 errors · RTT %5")
@@ -37,9 +40,9 @@ void LinkStatusLabel::showConnection(const Connection *c)
                 .arg(c->errorCount())
                 .arg(t.answers ? tr("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–")));
     }
-    setToolTip(c->linkReason().empty() ? UiText::settings(c->settings())
-                                       : UiText::settings(c->settings()) + QLatin1Char('\n')
-                                             + translated(c->linkReason()));
+    setToolTip(c->linkReason().empty()
+                   ? c->linkText()
+                   : c->linkText() + QLatin1Char('\n') + translated(c->linkReason()));
 }
 
 } // namespace Fatek

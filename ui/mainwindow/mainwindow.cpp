@@ -256,7 +256,7 @@ Connection *MainWindow::openConnection(const SavedConnection &saved, bool rememb
                             m_manager->addRecent(remembered);
                         });
     }
-    showStatus(tr("Connecting to %1 (%2)…").arg(c->name(), UiText::settings(c->settings())));
+    showStatus(tr("Connecting to %1 (%2)…").arg(c->name(), c->linkText()));
     return c;
 }
 
@@ -272,11 +272,11 @@ void MainWindow::closeCurrentConnection()
     Connection *c = currentConnection();
     if (!c)
         return;
-    if (const int pending = c->session()->pendingWrites(); pending > 0)
+    if (const int pending = c->pendingWrites(); pending > 0)
         showStatus(
             tr("Closing %1: sending %n queued write(s) first (at most %2 s)…", nullptr, pending)
                 .arg(c->name())
-                .arg((c->session()->closeDrainMs() + 999) / 1000));
+                .arg((c->closeDrainMs() + 999) / 1000));
     m_manager->remove(c);
 }
 
@@ -285,9 +285,8 @@ void MainWindow::rebuildRecentMenu()
     m_recentMenu->clear();
     const QList<SavedConnection> recent = m_manager->recent();
     for (const SavedConnection &c : recent) {
-        m_recentMenu->addAction(
-            tr("%1 — %2, station %3").arg(c.name, UiText::settings(c.settings)).arg(c.station),
-            this, [this, c] { openConnection(c); });
+        m_recentMenu->addAction(tr("%1 — %2, station %3").arg(c.name, c.linkText()).arg(c.station),
+                                this, [this, c] { openConnection(c); });
     }
     if (const int unreadable = m_manager->unreadableRecent(); unreadable > 0) {
         m_recentMenu->addSeparator();
@@ -503,8 +502,8 @@ bool MainWindow::settlePendingWritesBeforeQuit()
     int pending = 0;
     int drainMs = 0;
     for (Connection *c : connections) {
-        pending += c->session()->pendingWrites();
-        drainMs = std::max(drainMs, c->session()->closeDrainMs());
+        pending += c->pendingWrites();
+        drainMs = std::max(drainMs, c->closeDrainMs());
     }
     if (pending == 0)
         return true;
@@ -526,7 +525,7 @@ bool MainWindow::settlePendingWritesBeforeQuit()
     box.exec();
     if (box.clickedButton() == drop) {
         for (Connection *c : connections)
-            c->session()->close(CloseMode::Discard);
+            c->closeDiscard();
         return true;
     }
     if (box.clickedButton() != wait)

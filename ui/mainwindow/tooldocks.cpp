@@ -43,6 +43,7 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
         m_targets.append([tool](Session *session, quint8 station, const QString &connection) {
             tool->setTarget(session, station, connection);
         });
+        m_docks.append(dock);
         return dock;
     };
     QDockWidget *control
@@ -100,6 +101,8 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
     });
     scan->setObjectName(QStringLiteral("scanStationsAction"));
     scan->setToolTip(tr("Find the PLCs that answer on the current connection's link"));
+    for (QAction *action : {m_loopbackAction, program, snapshot, scan})
+        m_linkActions.insert(action, action->toolTip());
     setTarget(window->currentConnection());
 }
 
@@ -194,6 +197,31 @@ void ToolDocks::setTarget(Connection *c, bool force)
     m_station = station;
     for (const SetTarget &target : std::as_const(m_targets))
         target(c ? c->session() : nullptr, station, c ? c->name() : QString());
+    showGatewayNotice(c && c->isGateway());
+}
+
+QString ToolDocks::gatewayNotice()
+{
+    return tr("Not available through an MQTT gateway connection: this tool needs a direct link "
+              "to the PLC.");
+}
+
+void ToolDocks::showGatewayNotice(bool gateway)
+{
+    // The tools need the PLC's own link (forcing, RUN/STOP, raw frames, loopback, program,
+    // snapshots, station scan): greyed out with the reason, never pointed at a gateway.
+    const QString notice = gateway ? gatewayNotice() : QString();
+    for (QDockWidget *dock : std::as_const(m_docks)) {
+        dock->widget()->setEnabled(!gateway);
+        dock->widget()->setToolTip(notice);
+        if (gateway && dock->isVisible())
+            Q_EMIT statusMessage(tr("%1: %2").arg(dock->windowTitle(), notice));
+    }
+    for (auto it = m_linkActions.cbegin(); it != m_linkActions.cend(); ++it) {
+        it.key()->setEnabled(!gateway);
+        it.key()->setToolTip(gateway ? notice : it.value());
+        it.key()->setStatusTip(notice);
+    }
 }
 
 void ToolDocks::releaseTargets()

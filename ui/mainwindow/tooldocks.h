@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QHash>
 #include <QList>
 #include <QObject>
 #include <QPointer>
@@ -42,6 +43,8 @@ public:
     // A Tools/View menu entry with a shortcut that shows and raises `dock`, or hides it when it
     // is already in front.
     static QAction *dockAction(QDockWidget *dock, const QKeySequence &shortcut, QObject *parent);
+    // Why the tools are greyed out on a gateway connection.
+    static QString gatewayNotice();
 
 Q_SIGNALS:
     void statusMessage(const QString &text);
@@ -55,7 +58,12 @@ private:
     template<typename Dialog>
     void openDialog(Dialog *dialog, const QString &objectName);
 
+    void showGatewayNotice(bool gateway);
+
     MainWindow *m_window;
+    QList<QDockWidget *> m_docks;
+    // The dialogs' actions that need a PLC link, with their own tooltips.
+    QHash<QAction *, QString> m_linkActions;
     QAction *m_loopbackAction = nullptr;
     QList<SetTarget> m_targets;
     QPointer<Connection> m_connection;

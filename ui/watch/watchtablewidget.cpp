@@ -402,8 +402,9 @@ void WatchTableWidget::write(int row, quint64 raw)
         showMessage(tr("Cannot write %1: the table has no connection.").arg(what), true);
         return;
     }
-    // In operator mode the session refuses the write with its own message: no question first.
-    if (confirmWrites() && !m_connection->session()->isReadOnly()) {
+    // In operator mode the session (or the gateway watch) refuses the write with its own message:
+    // no question first.
+    if (confirmWrites() && !m_connection->isReadOnly()) {
         const QString question = tr("Write %1 to the PLC on %2?").arg(what, m_connection->name());
         // One rule for every question before the PLC changes: the safe answer is the default,
         // so a second Enter after typing the value does not write.
@@ -413,6 +414,18 @@ void WatchTableWidget::write(int row, quint64 raw)
             showMessage(tr("Write of %1 cancelled.").arg(what), false);
             return;
         }
+    }
+    if (GatewayWatch *gateway = m_connection->gateway()) {
+        // The gateway parses the text again in the item's format: send what the table shows.
+        gateway->write(
+            item.station, item.address, text, item.format, item.swapWords, this,
+            [this, rowKey = m_model->rowKey(row), what,
+             written = QPointer<Connection>(m_connection)](const GatewayPayload::Reply &reply) {
+                if (written == m_connection)
+                    onGatewayWritten(rowKey, what, reply);
+            });
+        showMessage(tr("Writing %1 through the gateway …").arg(what), false);
+        return;
     }
     m_writes->submit(ItemValues(item).writeRequest(raw),
                      [this, rowKey = m_model->rowKey(row), what](const SessionResult &result) {
@@ -434,6 +447,20 @@ void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const Sess
     showMessage(outcome, !result.ok());
 }
 
+void WatchTableWidget::onGatewayWritten(quint64 rowKey, const QString &what,
+                                        const GatewayPayload::Reply &reply)
+{
+    const QString outcome = reply.ok
+                                ? tr("The gateway wrote %1.").arg(what)
+                                : tr("Write of %1 failed: %2").arg(what, translated(reply.error));
+    const int row = m_model->rowOfKey(rowKey);
+    if (row >= 0)
+        m_model->setWriteOutcome(
+            row,
+            tr("%1 %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
+    showMessage(outcome, !reply.ok);
+}
+
 void WatchTableWidget::removeSelected()
 {
     QList<int> rows;
@@ -452,7 +479,7 @@ void WatchTableWidget::writeDialog()
     const int row = current.row();
     const WatchItemSpec item = m_model->item(row);
     // Operator mode: say so at once instead of asking for a value that will be refused.
-    if (m_connection && m_connection->session()->isReadOnly()) {
+    if (m_connection && m_connection->isReadOnly()) {
         showMessage(tr("Operator mode (read-only): %1 cannot be written.")
                         .arg(QString::fromStdString(item.address.toString())),
                     true);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/mqtt/gatewaypayload.h"
 #include "core/watch/watchlist.h"
 #include "ui/connection/connection.h"
 
@@ -31,7 +32,7 @@ using ConfirmHandler = std::function<bool(QWidget *parent, const QString &questi
 
 // One watch table: an entry line to add items, the table, its poll settings (interval, pause,
 // confirmation) and the connection it polls through. It turns edits into writes on that
-// connection's session and shows their outcome; it does no I/O itself.
+// connection's session (or its gateway watch) and shows their outcome; it does no I/O itself.
 class WatchTableWidget : public QWidget
 {
     Q_OBJECT
@@ -83,6 +84,7 @@ private:
     void pushPollList();
     void refreshConnections();
     void onWritten(quint64 rowKey, const QString &what, const SessionResult &result);
+    void onGatewayWritten(quint64 rowKey, const QString &what, const GatewayPayload::Reply &reply);
     void removeSelected();
     void writeDialog();
     void toggleSwapWords();

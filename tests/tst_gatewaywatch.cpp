@@ -1,0 +1,348 @@
+// A gateway connection watched through a real mosquitto (GatewayWatch): element values from the
+// gateway's item payloads, quality when the gateway or the broker goes away, writes through /set
+// and /reply. The gateway side is a protocol peer (TestUtil::GatewayPeer) on the same broker.
+#include "core/mqtt/gatewaywatch.h"
+#include "core/session/session.h"
+#include "gatewaypeer.h"
+#include "mosquittobroker.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <cstring>
+
+using namespace Fatek;
+using LinkStatus = GatewayPayload::LinkStatus;
+
+namespace {
+
+const QString prefix = QStringLiteral("plant/fatek");
+const QString line = QStringLiteral("line1");
+constexpr int timeoutMs = 10000;
+
+Address addr(const char *text)
+{
+    return *Address::parse(text);
+}
+
+std::uint32_t floatBits(float value)
+{
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+WatchItemSpec item(const char *address, DisplayFormat format, quint8 station = 1)
+{
+    WatchItemSpec spec;
+    spec.address = addr(address);
+    spec.format = format;
+    spec.station = station;
+    return spec;
+}
+
+WatchEntry entry(std::uint64_t id, const char *address, quint8 station = 1)
+{
+    WatchEntry e;
+    e.id = id;
+    e.address = addr(address);
+    e.station = station;
+    return e;
+}
+
+MqttBrokerSettings settingsFor(const TestUtil::MosquittoBroker &broker)
+{
+    MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(broker.url());
+    settings.reconnectMinMs = 50;
+    settings.reconnectMaxMs = 200;
+    return settings;
+}
+
+// The latest value of every entry, as a table keeps them.
+struct Values
+{
+    QHash<std::uint64_t, WatchValue> last;
+    int batches = 0;
+
+    void connect(GatewayWatch *watch)
+    {
+        QObject::connect(watch, &GatewayWatch::values, [this](const QList<WatchValue> &values) {
+            ++batches;
+            for (const WatchValue &v : values)
+                last.insert(v.itemId, v);
+        });
+    }
+    ValueQuality quality(std::uint64_t id) const { return last.value(id).quality; }
+    std::uint32_t value(std::uint64_t id) const { return last.value(id).value; }
+    QString error(std::uint64_t id) const { return englishText(last.value(id).error); }
+};
+
+// A broker, a gateway peer publishing a float over R100 and a signed R200 at station 1 and a bit
+// Y0 at station 2, and a watch on them.
+struct Fixture
+{
+    TestUtil::MosquittoBroker broker;
+    std::unique_ptr<TestUtil::GatewayPeer> peer;
+    std::unique_ptr<GatewayWatch> watch;
+    Values values;
+
+    bool start(QString *error)
+    {
+        if (!broker.start(error))
+            return false;
+        peer = std::make_unique<TestUtil::GatewayPeer>(settingsFor(broker), prefix, line);
+        peer->setItem(item("R100", DisplayFormat::Float32),
+                      {floatBits(12.5f) & 0xFFFFu, floatBits(12.5f) >> 16});
+        peer->setItem(item("R200", DisplayFormat::Signed), {42});
+        peer->setItem(item("Y0", DisplayFormat::Bit, 2), {1});
+        if (!peer->open()) {
+            *error = QStringLiteral("peer does not open");
+            return false;
+        }
+        GatewayWatchSettings settings;
+        settings.broker = settingsFor(broker);
+        settings.prefix = prefix;
+        settings.connection = line;
+        watch = std::make_unique<GatewayWatch>(settings);
+        watch->setPublishedGraceMs(300);
+        values.connect(watch.get());
+        return true;
+    }
+};
+
+} // namespace
+
+class TestGatewayWatch : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() { registerSessionMetaTypes(); }
+    void settingsValidate();
+    void coveredElementsAndUnpublished();
+    void staleWhileGatewayOfflineOrDown();
+    void staleOnBrokerLossThenGoodAgain();
+    void writeRoundTrip();
+    void writeRefusedByGateway();
+    void writeTimesOut();
+    void readOnlyPublishesNothing();
+};
+
+void TestGatewayWatch::settingsValidate()
+{
+    GatewayWatchSettings settings;
+    settings.connection = QStringLiteral("line1");
+    QVERIFY(settings.validate().empty());
+    settings.prefix = QStringLiteral("fatek/#");
+    QCOMPARE(englishText(settings.validate()),
+             QStringLiteral("\"fatek/#\" is not a topic prefix: levels separated by /, without + "
+                            "or #."));
+    settings.prefix = QStringLiteral("fatek");
+    settings.connection = QStringLiteral("12");
+    QVERIFY(englishText(settings.validate()).startsWith(QStringLiteral("\"12\" is not a gateway")));
+}
+
+void TestGatewayWatch::coveredElementsAndUnpublished()
+{
+    Fixture f;
+    QString error;
+    QVERIFY2(f.start(&error), qPrintable(error));
+    QSignalSpy states(f.watch.get(), &GatewayWatch::linkStateChanged);
+    f.watch->setWatchList({entry(1, "R100"), entry(2, "R101"), entry(3, "R200"), entry(4, "Y0", 2),
+                           entry(5, "R500"), entry(6, "Y0", 1)});
+    f.watch->open();
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
+    QCOMPARE(f.watch->gatewayLink(), QStringLiteral("TCP 127.0.0.1:500, FACON"));
+    // The float's words: R100 the low word, R101 the high one.
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(1), ValueQuality::Good, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(2), ValueQuality::Good, timeoutMs);
+    QCOMPARE(f.values.value(1), floatBits(12.5f) & 0xFFFFu);
+    QCOMPARE(f.values.value(2), floatBits(12.5f) >> 16);
+    QVERIFY(f.values.last.value(1).timestamp.isValid());
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.value(3), 42u, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(4), ValueQuality::Good, timeoutMs);
+    QCOMPARE(f.values.value(4), 1u);
+    // Not published (another address, or the same one at another station): an error that says so.
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(5), ValueQuality::Error, timeoutMs);
+    QCOMPARE(f.values.error(5),
+             QStringLiteral("R500 (station 1) is not published by the gateway line1."));
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(6), ValueQuality::Error, timeoutMs);
+
+    // A new value of one item reports that item's elements, not the whole list.
+    const int before = f.values.batches;
+    f.values.last.clear();
+    f.peer->setItem(item("R200", DisplayFormat::Signed), {7});
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.value(3), 7u, timeoutMs);
+    QCOMPARE(f.values.last.size(), 1);
+    QVERIFY(f.values.batches > before);
+
+    // The gateway's own quality and error pass through (its PLC refused the element).
+    f.peer->setItem(item("R200", DisplayFormat::Signed), {7}, ValueQuality::Error,
+                    Message::text("PLC error 2"));
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), ValueQuality::Error, timeoutMs);
+    QCOMPARE(f.values.error(3), QStringLiteral("PLC error 2"));
+}
+
+void TestGatewayWatch::staleWhileGatewayOfflineOrDown()
+{
+    Fixture f;
+    QString error;
+    QVERIFY2(f.start(&error), qPrintable(error));
+    f.watch->setWatchList({entry(1, "R100"), entry(3, "R200")});
+    f.watch->open();
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), ValueQuality::Good, timeoutMs);
+
+    // The gateway lost its PLC: the last value stays, marked stale with the gateway's reason.
+    f.peer->setStatus(LinkStatus::Down, Message::text("connection refused"));
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), ValueQuality::Stale, timeoutMs);
+    QCOMPARE(f.values.value(3), 42u);
+    QCOMPARE(f.values.error(3),
+             QStringLiteral("The gateway line1 lost its link to the PLC: connection refused"));
+    QCOMPARE(f.watch->linkState(), LinkState::Lost);
+    QCOMPARE(f.values.quality(1), ValueQuality::Stale);
+
+    f.peer->setStatus(LinkStatus::Up);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), ValueQuality::Good, timeoutMs);
+    QCOMPARE(f.watch->linkState(), LinkState::Connected);
+
+    // The gateway stopped (its will says the same when it dies): no value looks fresh.
+    f.peer->setStatus(LinkStatus::Offline);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), ValueQuality::Stale, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.error(3), QStringLiteral("The gateway line1 is offline."),
+                              timeoutMs);
+    QCOMPARE(f.values.quality(1), ValueQuality::Stale);
+}
+
+void TestGatewayWatch::staleOnBrokerLossThenGoodAgain()
+{
+    Fixture f;
+    QString error;
+    QVERIFY2(f.start(&error), qPrintable(error));
+    f.watch->setWatchList({entry(1, "R100"), entry(3, "R200"), entry(5, "R500")});
+    f.watch->open();
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), ValueQuality::Good, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(5), ValueQuality::Error, timeoutMs);
+
+    f.broker.kill();
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Lost, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), ValueQuality::Stale, timeoutMs);
+    QCOMPARE(f.values.value(3), 42u);
+    QVERIFY2(f.values.error(3).startsWith(QStringLiteral("Link to the broker")),
+             qPrintable(f.values.error(3)));
+    QCOMPARE(f.values.quality(1), ValueQuality::Stale);
+    QCOMPARE(f.values.quality(5), ValueQuality::Stale);
+
+    // The broker comes back empty (no persistence); the gateway publishes everything again.
+    QVERIFY2(f.broker.start(&error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), ValueQuality::Good, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(1), ValueQuality::Good, timeoutMs);
+    QCOMPARE(f.values.value(3), 42u);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(5), ValueQuality::Error, timeoutMs);
+}
+
+void TestGatewayWatch::writeRoundTrip()
+{
+    Fixture f;
+    QString error;
+    QVERIFY2(f.start(&error), qPrintable(error));
+    f.watch->setWatchList({entry(1, "R100"), entry(2, "R101")});
+    f.watch->open();
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(1), ValueQuality::Good, timeoutMs);
+
+    QObject context;
+    std::optional<GatewayPayload::Reply> reply;
+    f.watch->write(1, addr("R100"), QStringLiteral("-3.25"), DisplayFormat::Float32, false,
+                   &context, [&](const GatewayPayload::Reply &r) { reply = r; });
+    QCOMPARE(f.watch->pendingWrites(), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
+    QVERIFY2(reply->ok, qPrintable(englishText(reply->error)));
+    QCOMPARE(f.watch->pendingWrites(), 0);
+    QCOMPARE(f.peer->setCount(), 1);
+    const GatewayPayload::SetCommand command = f.peer->commands().constFirst();
+    QCOMPARE(command.value, QStringLiteral("-3.25"));
+    QVERIFY(command.format == DisplayFormat::Float32);
+    QCOMPARE(command.id, reply->id);
+    // The gateway's next publication carries the new value.
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.value(2), floatBits(-3.25f) >> 16, timeoutMs);
+    QCOMPARE(f.values.value(1), floatBits(-3.25f) & 0xFFFFu);
+}
+
+void TestGatewayWatch::writeRefusedByGateway()
+{
+    Fixture f;
+    QString error;
+    QVERIFY2(f.start(&error), qPrintable(error));
+    f.watch->open();
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
+    f.peer->setRefusal(msg<MsgId::GatewaySetBadFormat>("weird"));
+    std::optional<GatewayPayload::Reply> reply;
+    f.watch->write(1, addr("R200"), QStringLiteral("5"), DisplayFormat::Signed, false, nullptr,
+                   [&](const GatewayPayload::Reply &r) { reply = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
+    QVERIFY(!reply->ok);
+    // The gateway's message, with its id: shown in the reader's language.
+    QCOMPARE(reply->error.id, MsgId::GatewaySetBadFormat);
+    QCOMPARE(englishText(reply->error), QStringLiteral("\"weird\" is not a value format."));
+    QCOMPARE(f.peer->setCount(), 1);
+}
+
+void TestGatewayWatch::writeTimesOut()
+{
+    Fixture f;
+    QString error;
+    QVERIFY2(f.start(&error), qPrintable(error));
+    f.watch->setReplyTimeoutMs(500);
+    f.watch->open();
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
+    f.peer->setAnswering(false);
+    std::optional<GatewayPayload::Reply> reply;
+    f.watch->write(1, addr("R200"), QStringLiteral("5"), DisplayFormat::Signed, false, nullptr,
+                   [&](const GatewayPayload::Reply &r) { reply = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
+    QVERIFY(!reply->ok);
+    QCOMPARE(englishText(reply->error),
+             QStringLiteral("No reply from the gateway line1 within 1 s."));
+    QTRY_COMPARE_WITH_TIMEOUT(f.peer->setCount(), 1, timeoutMs); // it was sent, nobody answered
+    QCOMPARE(f.watch->pendingWrites(), 0);
+
+    // A context destroyed before the reply: the completion is dropped, not called.
+    bool called = false;
+    {
+        QObject context;
+        f.watch->write(1, addr("R200"), QStringLiteral("6"), DisplayFormat::Signed, false, &context,
+                       [&](const GatewayPayload::Reply &) { called = true; });
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->pendingWrites(), 0, timeoutMs);
+    QVERIFY(!called);
+}
+
+void TestGatewayWatch::readOnlyPublishesNothing()
+{
+    Fixture f;
+    QString error;
+    QVERIFY2(f.start(&error), qPrintable(error));
+    f.watch->setReadOnly(true);
+    f.watch->open();
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
+    std::optional<GatewayPayload::Reply> reply;
+    f.watch->write(1, addr("R200"), QStringLiteral("5"), DisplayFormat::Signed, false, nullptr,
+                   [&](const GatewayPayload::Reply &r) { reply = r; });
+    QVERIFY(!reply); // never inside the call
+    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
+    QVERIFY(!reply->ok);
+    QCOMPARE(reply->error.id, MsgId::SessionReadOnly);
+
+    // A write allowed after it goes through, so the peer would have seen the refused one first.
+    f.watch->setReadOnly(false);
+    reply.reset();
+    f.watch->write(1, addr("R200"), QStringLiteral("9"), DisplayFormat::Signed, false, nullptr,
+                   [&](const GatewayPayload::Reply &r) { reply = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
+    QVERIFY(reply->ok);
+    QCOMPARE(f.peer->setCount(), 1);
+    QCOMPARE(f.peer->commands().constFirst().value, QStringLiteral("9"));
+}
+
+QTEST_GUILESS_MAIN(TestGatewayWatch)
+#include "tst_gatewaywatch.moc"

@@ -1,0 +1,330 @@
+// The GUI on a connection of kind "MQTT gateway" (issue 20), done as a person does it at a laptop's
+// window size: the connection dialog through the menu, a watch table served by the gateway's
+// topics on a real mosquitto, a write typed into a cell and confirmed, operator mode. The gateway
+// side is a protocol peer (TestUtil::GatewayPeer); what reached it is counted there.
+#include "core/mqtt/gatewaywatch.h"
+#include "gatewaypeer.h"
+#include "mosquittobroker.h"
+#include "testutil.h"
+#include "ui/connection/connection.h"
+#include "ui/connection/connectiondialog.h"
+#include "ui/connection/connectionmanager.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/mainwindow/operatormode.h"
+#include "ui/mainwindow/tooldocks.h"
+#include "ui/watch/watchtablemodel.h"
+#include "ui/watch/watchtablewidget.h"
+#include "uitestutil.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cstring>
+
+using namespace Fatek;
+using UiTestUtil::answerModal;
+
+namespace {
+
+constexpr int longWait = 10000;
+constexpr int keyDelayMs = 40; // a person typing, quickly
+
+std::uint32_t floatBits(float value)
+{
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+WatchItemSpec item(const char *address, DisplayFormat format)
+{
+    WatchItemSpec spec;
+    spec.address = *Address::parse(address);
+    spec.format = format;
+    return spec;
+}
+
+// The write confirmation (No is the default): Yes, with the mouse.
+void answerYes(QWidget *modal)
+{
+    auto *box = qobject_cast<QMessageBox *>(modal);
+    if (!box || !box->button(QMessageBox::Yes)) {
+        qWarning("not the write question");
+        return;
+    }
+    QTest::mouseClick(box->button(QMessageBox::Yes), Qt::LeftButton);
+}
+
+void typeSlowly(QWidget *widget, const QString &text)
+{
+    QTest::keyClicks(widget, text, Qt::NoModifier, keyDelayMs);
+}
+
+// A broker and a gateway publishing line1: a float over R100 and a signed R200.
+struct Gateway
+{
+    TestUtil::MosquittoBroker broker;
+    std::unique_ptr<TestUtil::GatewayPeer> peer;
+
+    bool start(QString *error)
+    {
+        if (!broker.start(error))
+            return false;
+        MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(broker.url());
+        settings.reconnectMinMs = 50;
+        settings.reconnectMaxMs = 200;
+        peer = std::make_unique<TestUtil::GatewayPeer>(settings, QStringLiteral("fatek"),
+                                                       QStringLiteral("line1"));
+        peer->setItem(item("R100", DisplayFormat::Float32),
+                      {floatBits(12.5f) & 0xFFFFu, floatBits(12.5f) >> 16});
+        peer->setItem(item("R200", DisplayFormat::Signed), {42});
+        return peer->open();
+    }
+};
+
+QAction *menuAction(MainWindow &window, const QString &text)
+{
+    for (QAction *menu : window.menuBar()->actions()) {
+        if (!menu->menu())
+            continue;
+        for (QAction *action : menu->menu()->actions()) {
+            if (action->text() == text)
+                return action;
+        }
+    }
+    return nullptr;
+}
+
+// File > New Connection…, kind MQTT gateway, the broker and names typed, Connect.
+Connection *connectThroughDialog(MainWindow &window, const QString &brokerUrl)
+{
+    QAction *newConnection = menuAction(window, QStringLiteral("&New Connection…"));
+    if (!newConnection)
+        return nullptr;
+    answerModal(
+        [&] { newConnection->trigger(); },
+        [&](QWidget *dialog) {
+            auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("linkKindCombo"));
+            kind->setFocus();
+            kind->setCurrentIndex(kind->findData(ConnectionDialog::gatewayKind));
+            auto *name = dialog->findChild<QLineEdit *>(QStringLiteral("connectionNameEdit"));
+            name->selectAll();
+            typeSlowly(name, QStringLiteral("Line 1"));
+            auto *url = dialog->findChild<QLineEdit *>(QStringLiteral("brokerUrlEdit"));
+            QVERIFY(url->isVisible());
+            typeSlowly(url, brokerUrl);
+            typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("gatewayNameEdit")),
+                       QStringLiteral("line1"));
+            typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("brokerUserEdit")),
+                       QStringLiteral("viewer"));
+            typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("brokerPasswordEdit")),
+                       QStringLiteral("s3cret"));
+            QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("connectButton")),
+                              Qt::LeftButton);
+        });
+    return window.connections()->find(QStringLiteral("Line 1"));
+}
+
+// Types `text` into the value cell of `row` with the table's editor and presses Enter; the
+// confirmation is answered with `answer`. Returns the question (empty when none came).
+QString typeValue(WatchTableWidget *table, int row, const QString &text,
+                  const std::function<void(QWidget *)> &answer)
+{
+    QTableView *view = table->view();
+    view->setFocus();
+    view->setCurrentIndex(table->model()->index(row, WatchTableModel::ValueColumn));
+    QTest::keyClick(view->viewport(), Qt::Key_F2);
+    auto *editor = view->viewport()->findChild<QLineEdit *>();
+    if (!editor)
+        return QStringLiteral("no editor");
+    editor->selectAll();
+    typeSlowly(editor, text);
+    if (!answer) {
+        QTest::keyClick(editor, Qt::Key_Return);
+        return {};
+    }
+    return answerModal([&] { QTest::keyClick(editor, Qt::Key_Return); }, answer);
+}
+
+} // namespace
+
+class TestUiGateway : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_settingsDir;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_settingsDir.isValid());
+        TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_gateway"));
+    }
+
+    // Recent connections: the gateway part round-trips without its password; older entries
+    // (no "gateway" key) still load as PLC links.
+    void savedGatewayConnection()
+    {
+        SavedConnection saved;
+        saved.name = QStringLiteral("Line 1");
+        saved.station = 3;
+        GatewayWatchSettings gateway;
+        gateway.broker = *MqttBrokerSettings::fromUrl(QStringLiteral("mqtts://op:pw@broker:8884"));
+        gateway.broker.caFile = QStringLiteral("/etc/ssl/plant-ca.crt");
+        gateway.prefix = QStringLiteral("plant/fatek");
+        gateway.connection = QStringLiteral("line1");
+        saved.gateway = gateway;
+        const SavedConnection back = LinkSettingsIo::fromMap(LinkSettingsIo::toMap(saved));
+        QVERIFY(back.gateway);
+        QCOMPARE(back.station, 3);
+        QCOMPARE(back.gateway->broker.host, QStringLiteral("broker"));
+        QCOMPARE(back.gateway->broker.port, 8884);
+        QVERIFY(back.gateway->broker.tls);
+        QCOMPARE(back.gateway->broker.username, QStringLiteral("op"));
+        QVERIFY(back.gateway->broker.password.isEmpty());
+        QCOMPARE(back.gateway->broker.caFile, gateway.broker.caFile);
+        QCOMPARE(back.gateway->prefix, gateway.prefix);
+        QCOMPARE(back.gateway->connection, gateway.connection);
+        QVERIFY(!LinkSettingsIo::toMap(saved)
+                     .value(QStringLiteral("gateway"))
+                     .toMap()
+                     .value(QStringLiteral("broker"))
+                     .toString()
+                     .contains(QStringLiteral("pw")));
+
+        QVariantMap old = LinkSettingsIo::toMap(saved);
+        old.remove(QStringLiteral("gateway"));
+        QVERIFY(!LinkSettingsIo::fromMap(old).gateway);
+        QCOMPARE(LinkSettingsIo::fromMap(old).name, QStringLiteral("Line 1"));
+    }
+
+    void watchAndWriteThroughTheGateway()
+    {
+        Gateway gateway;
+        QString error;
+        QVERIFY2(gateway.start(&error), qPrintable(error));
+        MainWindow window;
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+
+        Connection *c = connectThroughDialog(window, gateway.broker.url());
+        QVERIFY(c);
+        QVERIFY(c->isGateway());
+        QVERIFY(!c->session());
+        QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, longWait);
+        auto *status = window.findChild<QLabel *>(QStringLiteral("linkStatus"));
+        QVERIFY(status);
+        QTRY_VERIFY2_WITH_TIMEOUT(status->text().contains(QStringLiteral("Line 1: connected")),
+                                  qPrintable(status->text()), longWait);
+        // Remembered without its password.
+        const QList<SavedConnection> recent = window.connections()->recent();
+        QVERIFY(!recent.isEmpty() && recent.first().gateway);
+        QCOMPARE(recent.first().gateway->connection, QStringLiteral("line1"));
+        QCOMPARE(recent.first().gateway->broker.username, QStringLiteral("viewer"));
+        QVERIFY(recent.first().gateway->broker.password.isEmpty());
+
+        // The table shows the gateway's values, quality-marked.
+        WatchTableWidget *table = window.currentWatchTable();
+        QCOMPARE(table->connection(), c);
+        typeSlowly(table->addressEdit(), QStringLiteral("R100 R200 R500"));
+        QTest::keyClick(table->addressEdit(), Qt::Key_Return);
+        WatchTableModel *model = table->model();
+        QCOMPARE(model->rowCount(), 3);
+        QVERIFY(model->setFormat(0, DisplayFormat::Float32, false).ok());
+        QTRY_COMPARE_WITH_TIMEOUT(model->valueText(0), QStringLiteral("12.5"), longWait);
+        QCOMPARE(model->quality(0), ValueQuality::Good);
+        QTRY_COMPARE_WITH_TIMEOUT(model->valueText(1), QStringLiteral("42"), longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(model->quality(2), ValueQuality::Error, longWait);
+        const QString notPublished
+            = model->data(model->index(2, WatchTableModel::QualityColumn), Qt::ToolTipRole)
+                  .toString();
+        QVERIFY2(notPublished.contains(QStringLiteral("not published by the gateway line1")),
+                 qPrintable(notPublished));
+
+        // Live: the gateway publishes a new value.
+        gateway.peer->setItem(item("R200", DisplayFormat::Signed), {43});
+        QTRY_COMPARE_WITH_TIMEOUT(model->valueText(1), QStringLiteral("43"), longWait);
+
+        // A write typed into the cell, confirmed: it reaches the gateway, whose reply shows.
+        const QString question = typeValue(table, 1, QStringLiteral("77"), answerYes);
+        QVERIFY2(question.contains(QStringLiteral("R200")), qPrintable(question));
+        QTRY_COMPARE_WITH_TIMEOUT(gateway.peer->setCount(), 1, longWait);
+        QCOMPARE(gateway.peer->commands().constFirst().value, QStringLiteral("77"));
+        QTRY_VERIFY2_WITH_TIMEOUT(table->message().contains(QStringLiteral("The gateway wrote")),
+                                  qPrintable(table->message()), longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(model->valueText(1), QStringLiteral("77"), longWait);
+
+        // The gateway's refusal is shown as such.
+        gateway.peer->setRefusal(Message::text("PLC answered error 2"));
+        typeValue(table, 1, QStringLiteral("78"), answerYes);
+        QTRY_VERIFY2_WITH_TIMEOUT(table->message().contains(QStringLiteral("PLC answered error 2")),
+                                  qPrintable(table->message()), longWait);
+        QCOMPARE(gateway.peer->setCount(), 2);
+        QCOMPARE(model->valueText(1), QStringLiteral("77"));
+
+        // Tools that need the PLC's own link are greyed out with the reason, and do not crash.
+        QWidget *control = window.openTool(QStringLiteral("control"));
+        QVERIFY(control);
+        auto *dock = window.findChild<QDockWidget *>(QStringLiteral("plcControlDock"));
+        QVERIFY(!dock->widget()->isEnabled());
+        QCOMPARE(dock->widget()->toolTip(), ToolDocks::gatewayNotice());
+        QVERIFY(!window.findChild<QAction *>(QStringLiteral("memorySnapshotAction"))->isEnabled());
+        QVERIFY(!window.findChild<QAction *>(QStringLiteral("scanStationsAction"))->isEnabled());
+        QVERIFY(!window.openTool(QStringLiteral("snapshot")));
+
+        // The gateway goes offline: every value turns stale, the status bar says why.
+        gateway.peer->setStatus(GatewayPayload::LinkStatus::Offline);
+        QTRY_COMPARE_WITH_TIMEOUT(model->quality(1), ValueQuality::Stale, longWait);
+        QCOMPARE(model->quality(0), ValueQuality::Stale);
+        QTRY_VERIFY2_WITH_TIMEOUT(status->toolTip().contains(QStringLiteral("line1 is offline")),
+                                  qPrintable(status->toolTip()), longWait);
+    }
+
+    void operatorModeWritesNothing()
+    {
+        Gateway gateway;
+        QString error;
+        QVERIFY2(gateway.start(&error), qPrintable(error));
+        MainWindow window;
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        Connection *c = connectThroughDialog(window, gateway.broker.url());
+        QVERIFY(c);
+        QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, longWait);
+        auto *mode = window.findChild<OperatorMode *>();
+        QVERIFY(mode);
+        mode->toggleAction()->trigger();
+        QVERIFY(mode->isActive());
+        QVERIFY(c->isReadOnly());
+
+        WatchTableWidget *table = window.currentWatchTable();
+        typeSlowly(table->addressEdit(), QStringLiteral("R200"));
+        QTest::keyClick(table->addressEdit(), Qt::Key_Return);
+        QTRY_COMPARE_WITH_TIMEOUT(table->model()->valueText(0), QStringLiteral("42"), longWait);
+        // No question in operator mode: the refusal comes at once, from core.
+        typeValue(table, 0, QStringLiteral("5"), {});
+        QTRY_VERIFY2_WITH_TIMEOUT(table->message().contains(QStringLiteral("Read-only mode")),
+                                  qPrintable(table->message()), longWait);
+        // A write after operator mode ends goes through: the refused one would have come first.
+        answerModal([&] { mode->toggleAction()->trigger(); }, answerYes);
+        QVERIFY(!c->isReadOnly());
+        typeValue(table, 0, QStringLiteral("6"), answerYes);
+        QTRY_COMPARE_WITH_TIMEOUT(gateway.peer->setCount(), 1, longWait);
+        QCOMPARE(gateway.peer->commands().constFirst().value, QStringLiteral("6"));
+    }
+};
+
+QTEST_MAIN(TestUiGateway)
+#include "tst_ui_gateway.moc"
