@@ -53,16 +53,13 @@ namespace {
 //   commands such as {"value": ...})
 //   the PLC's own words as printed on the unit (RUN, STOP, ON, OFF, model names such as
 //   FBs-28MC, main unit types MA MU MC)
-//   units (ms, Hz)
-//   MQTT terms and what is typed for them (MQTT, TLS, broker URLs mqtt://host:1883, JSON keys
-//   {"value": ...}).
+//   units (ms, Hz).
 // The language menu also names "English" in English (each language in its own words).
 const QRegularExpression allowed(QStringLiteral(
     R"(\bFBs-\d+M[ACU](?:/MU)?\b|\bFATEK Studio\b|\b(?:FATEK|FACON|TCP|UDP|IP|RTT|RS|RTS|CTS|XON|XOFF|STX|ETX|LRC|CRC|)"
     R"(ASCII|BCD|CSV|JSON|PNG|PLC|ID|OS|HMI|ROM|MQTT|TLS|CA|URL|RUN|STOP|ON|OFF|MA|MU|MC|Ctrl|Shift|)"
     R"(Enter|ms|Hz)\b|\bmqtts?://[^\s，。]*|\{"\w+":[^}]*\}|)"
     R"(\b(?:[XYMSTCRDF]|W[XYMSTC]|DW[XYMSTC]|RT|RC|DRT|DRC|DR|DD|DF)(?:\d+)?\b|)"
-    R"(\bmqtts?://\S+|\{"\w+":|\b(?:MQTT|TLS)\b|)"
     R"(\*\.\w+|--[a-z-]+|\b0x[0-9A-Fa-f]+\b|\b[0-9A-F]+h\b|\b[A-Z]{1,3}\d+\b|\b(?=[0-9A-F]*\d)[0-9A-F]{2,}\b)"));
 const QRegularExpression englishWord(QStringLiteral("[A-Za-z]{2,}"));
 
