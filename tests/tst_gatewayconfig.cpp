@@ -12,16 +12,45 @@
 
 using namespace Fatek;
 
+class TestGatewayConfig : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void loadsEverything();
+    void allowlistMembership();
+    void errors_data();
+    void errors();
+    void passwordFile();
+    void checkValid();
+    void checkInvalid();
+    void checkUsage();
+
+private:
+    QString write(const QString &name, const QByteArray &content);
+
+    QTemporaryDir m_dir;
+};
+
+// After the test class: moc reads raw strings as ordinary ones and can lose its way in them.
 namespace {
 
-const char *const watchList = R"({"format":"fatek-studio-watchlist","version":1,"tables":[
+const char *const emptyList
+    = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[]})json";
+const char *const twiceList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
+  {"name":"A","items":[{"address":"R1"},{"address":"R2"},{"address":"R1","format":"hex"}]}]})json";
+const char *const badList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
+  {"name":"A","items":[{"address":"R1"},{"address":"R2"},{"address":"Q7"}]}]})json";
+
+const char *const watchList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
   {"name":"Main","intervalMs":250,"items":[{"address":"R100"},{"address":"R200","format":"float"},
    {"address":"Y0"}]},
-  {"name":"Slow","intervalMs":2000,"items":[{"address":"DR10","station":2}]}]})";
+  {"name":"Slow","intervalMs":2000,"items":[{"address":"DR10","station":2}]}]})json";
 
 QJsonObject validConfig()
 {
-    return QJsonDocument::fromJson(R"({"format":"fatek-gateway","version":1,
+    return QJsonDocument::fromJson(R"json({"format":"fatek-gateway","version":1,
       "broker":{"url":"mqtt://127.0.0.1:1883","keepAliveSec":20},
       "prefix":"plant/fatek","readOnly":false,
       "connections":[{"name":"line1",
@@ -33,7 +62,7 @@ QJsonObject validConfig()
        {"name":"line2",
         "link":{"kind":"serial","portName":"/dev/ttyUSB0","baud":19200,"format":"8N1",
                 "protocol":"facon"},
-        "watchLists":[{"file":"line1.json","intervalMs":1000}]}]})")
+        "watchLists":[{"file":"line1.json","intervalMs":1000}]}]})json")
         .object();
 }
 
@@ -58,27 +87,6 @@ QJsonValue replaced(const QJsonValue &root, QVariantList path, const QJsonValue 
 
 } // namespace
 
-class TestGatewayConfig : public QObject
-{
-    Q_OBJECT
-
-private Q_SLOTS:
-    void initTestCase();
-    void loadsEverything();
-    void allowlistMembership();
-    void errors_data();
-    void errors();
-    void passwordFile();
-    void checkValid();
-    void checkInvalid();
-    void checkUsage();
-
-private:
-    QString write(const QString &name, const QByteArray &content);
-
-    QTemporaryDir m_dir;
-};
-
 QString TestGatewayConfig::write(const QString &name, const QByteArray &content)
 {
     QFile file(m_dir.filePath(name));
@@ -91,17 +99,9 @@ void TestGatewayConfig::initTestCase()
 {
     QVERIFY(m_dir.isValid());
     QVERIFY(!write(QStringLiteral("line1.json"), watchList).isEmpty());
-    QVERIFY(!write(QStringLiteral("empty.json"),
-                   R"({"format":"fatek-studio-watchlist","version":1,"tables":[]})")
-                 .isEmpty());
-    QVERIFY(!write(QStringLiteral("twice.json"),
-                   R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"name":"A",
-                      "items":[{"address":"R1"},{"address":"R2"},{"address":"R1","format":"hex"}]}]})")
-                 .isEmpty());
-    QVERIFY(!write(QStringLiteral("bad.json"),
-                   R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"name":"A",
-                      "items":[{"address":"R1"},{"address":"R2"},{"address":"Q7"}]}]})")
-                 .isEmpty());
+    QVERIFY(!write(QStringLiteral("empty.json"), emptyList).isEmpty());
+    QVERIFY(!write(QStringLiteral("twice.json"), twiceList).isEmpty());
+    QVERIFY(!write(QStringLiteral("bad.json"), badList).isEmpty());
 }
 
 void TestGatewayConfig::loadsEverything()
@@ -174,14 +174,13 @@ void TestGatewayConfig::errors_data()
     QTest::newRow("prefix") << QVariantList{"prefix"} << QJsonValue("a/+/b")
                             << "\"a/+/b\" is not a usable topic prefix: levels separated by '/', "
                                "none empty, without '+' or '#'.";
-    QTest::newRow("readOnly type") << QVariantList{"readOnly"} << QJsonValue("yes")
-                                   << "\"readOnly\" must be true or false.";
+    QTest::newRow("readOnly type")
+        << QVariantList{"readOnly"} << QJsonValue("yes") << "\"readOnly\" must be true or false.";
     QTest::newRow("broker url") << QVariantList{"broker", "url"} << QJsonValue("http://x")
                                 << "broker: \"http://x\" is not a broker address: write "
                                    "mqtt://host:1883 or mqtts://user@host:8883.";
-    QTest::newRow("broker keepalive")
-        << QVariantList{"broker", "keepAliveSec"} << QJsonValue(1)
-        << "broker: keepAliveSec 1 is out of range (5..65535)";
+    QTest::newRow("broker keepalive") << QVariantList{"broker", "keepAliveSec"} << QJsonValue(1)
+                                      << "broker: keepAliveSec 1 is out of range (5..65535)";
     QTest::newRow("broker ca") << QVariantList{"broker", "caFile"} << QJsonValue("nothere.pem")
                                << "broker: cannot read the TLS file";
     QTest::newRow("password twice")
@@ -215,15 +214,14 @@ void TestGatewayConfig::errors_data()
     QTest::newRow("protocol") << QVariantList{"connections", 0, "link", "protocol"}
                               << QJsonValue("modbus")
                               << "connection 1 (line1): link: \"modbus\" is not a protocol";
-    QTest::newRow("serial format") << QVariantList{"connections", 1, "link", "format"}
-                                   << QJsonValue("9X1")
-                                   << "connection 2 (line2): link: serial format \"9X1\": data bits "
-                                      "must be 7 or 8, not 9.";
+    QTest::newRow("serial format")
+        << QVariantList{"connections", 1, "link", "format"} << QJsonValue("9X1")
+        << "connection 2 (line2): link: serial format \"9X1\": data bits "
+           "must be 7 or 8, not 9.";
     QTest::newRow("baud") << QVariantList{"connections", 1, "link", "baud"} << QJsonValue(300)
                           << "connection 2 (line2): link: baud rate 300 is out of range (1200 to "
                              "921600).";
-    QTest::newRow("timeout") << QVariantList{"connections", 0, "link", "timeoutMs"}
-                             << QJsonValue(0)
+    QTest::newRow("timeout") << QVariantList{"connections", 0, "link", "timeoutMs"} << QJsonValue(0)
                              << "connection 1 (line1): link: timeoutMs 0 is out of range "
                                 "(1..60000)";
     QTest::newRow("allow") << QVariantList{"connections", 0, "allow", 1} << QJsonValue("Q1..Q9")
@@ -233,10 +231,10 @@ void TestGatewayConfig::errors_data()
     QTest::newRow("statistics") << QVariantList{"connections", 0, "statisticsIntervalMs"}
                                 << QJsonValue(5)
                                 << "connection 1 (line1): statisticsIntervalMs 5 is out of range";
-    QTest::newRow("no watch list") << QVariantList{"connections", 0, "watchLists"}
-                                   << QJsonValue(QJsonArray())
-                                   << "connection 1 (line1): nothing to watch: give at least one "
-                                      "watch list with items.";
+    QTest::newRow("no watch list")
+        << QVariantList{"connections", 0, "watchLists"} << QJsonValue(QJsonArray())
+        << "connection 1 (line1): nothing to watch: give at least one "
+           "watch list with items.";
     QTest::newRow("empty watch list")
         << QVariantList{"connections", 0, "watchLists", 0, "file"} << QJsonValue("empty.json")
         << "connection 1 (line1): nothing to watch";
@@ -300,11 +298,12 @@ void TestGatewayConfig::checkValid()
                  "connection line1: TCP 10.0.0.5:500, binary, 4 items in 2 tables, writes "
                  "allowed: R100-199, Y0-7, M10")),
              qPrintable(run.out));
-    QVERIFY2(run.out.contains(QStringLiteral("connection line2: ")) &&
-                 run.out.contains(QStringLiteral("writes allowed: none (no writes)")),
+    QVERIFY2(run.out.contains(QStringLiteral("connection line2: "))
+                 && run.out.contains(QStringLiteral("writes allowed: none (no writes)")),
              qPrintable(run.out));
 
-    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--check", "--read-only", path});
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH),
+                               {"--check", "--read-only", path});
     QCOMPARE(run.code, 0);
     QVERIFY2(run.lines().contains(QStringLiteral("read-only  yes")), qPrintable(run.out));
     QVERIFY(!run.out.contains(QStringLiteral("R100-199")));

@@ -55,8 +55,7 @@ void printSummary(const QString &path, const GatewayConfig &config)
     for (const GatewayConnectionConfig &c : config.connections) {
         out() << "connection " << c.name << ": " << c.link.toString() << ", " << c.itemCount()
               << " items in " << c.tables.size() << " tables, writes allowed: "
-              << (config.readOnly ? QStringLiteral("none (read-only)") : allowText(c))
-              << Qt::endl;
+              << (config.readOnly ? QStringLiteral("none (read-only)") : allowText(c)) << Qt::endl;
     }
 }
 
@@ -95,8 +94,8 @@ int main(int argc, char *argv[])
     const QString path = positional.first();
     Result<GatewayConfig> loaded = GatewayConfig::loadFromFile(path);
     if (!loaded) {
-        err() << "fatek-gateway: " << path << ": "
-              << QString::fromStdString(loaded.error().text()) << Qt::endl;
+        err() << "fatek-gateway: " << path << ": " << QString::fromStdString(loaded.error().text())
+              << Qt::endl;
         return 2;
     }
     GatewayConfig config = std::move(loaded).value();
@@ -119,9 +118,8 @@ int main(int argc, char *argv[])
                   << Qt::endl;
             return 2;
         }
-        logLine(name, msg<MsgId::GatewayLogStarted>(c.itemCount(),
-                                                     c.link.toString().toStdString(),
-                                                     config.broker.toUrl().toStdString()));
+        logLine(name, msg<MsgId::GatewayLogStarted>(c.itemCount(), c.link.toString().toStdString(),
+                                                    config.broker.toUrl().toStdString()));
         links.push_back(std::move(link));
     }
     // Every link publishes "offline" and disconnects; the program ends when all have.

@@ -169,8 +169,8 @@ Problem readBroker(const QJsonObject &json, const QString &baseDirectory, MqttBr
         // The first line: a password kept out of a configuration that may be shown around.
         QFile f(resolve(baseDirectory, passwordFile));
         if (!f.open(QIODevice::ReadOnly))
-            return msg<MsgId::GatewayConfigCannotRead>(f.fileName().toStdString(),
-                                                       Message::text(f.errorString().toStdString()));
+            return msg<MsgId::GatewayConfigCannotRead>(
+                f.fileName().toStdString(), Message::text(f.errorString().toStdString()));
         broker.password = QString::fromUtf8(f.readLine(4096)).trimmed();
     }
     if (const Message m = broker.validate(); !m.empty())
@@ -231,8 +231,8 @@ Problem readWatchLists(Reader &r, const QString &baseDirectory, GatewayConnectio
     for (qsizetype i = 0; i < lists.size(); ++i) {
         const Message place = msg<MsgId::GatewayPlaceWatchList>(i + 1);
         if (!lists.at(i).isObject())
-            return at(place, msg<MsgId::GatewayConfigWrongType>(
-                                 "watchLists", msg<MsgId::GatewayTypeObject>()));
+            return at(place, msg<MsgId::GatewayConfigWrongType>("watchLists",
+                                                                msg<MsgId::GatewayTypeObject>()));
         Reader lr(lists.at(i).toObject());
         GatewayConnectionConfig::WatchListFileRef ref;
         ref.file = lr.string(QStringLiteral("file"));
@@ -244,9 +244,19 @@ Problem readWatchLists(Reader &r, const QString &baseDirectory, GatewayConnectio
         if (lr.problem)
             return at(place, *lr.problem);
         const Message filePlace = msg<MsgId::GatewayPlaceWatchList>(ref.file.toStdString());
-        const Result<WatchListFile> file = WatchList::loadFromFile(resolve(baseDirectory, ref.file));
-        if (!file)
-            return at(filePlace, file.error().message);
+        const Result<WatchListFile> file
+            = WatchList::loadFromFile(resolve(baseDirectory, ref.file));
+        if (!file) {
+            // The watch list names its file itself ("line1.json: table 1, ..."): once is enough.
+            Message error = file.error().message;
+            const std::string fileName = QFileInfo(ref.file).fileName().toStdString();
+            if (error.id == MsgId::AtPlace && error.args.size() == 2 && error.args[0].message
+                && error.args[1].message && english(*error.args[0].message) == fileName) {
+                const Message inner = *error.args[1].message;
+                error = inner;
+            }
+            return at(filePlace, error);
+        }
         for (WatchTableSpec table : file->tables) {
             if (ref.intervalMs)
                 table.intervalMs = *ref.intervalMs;
@@ -264,9 +274,9 @@ Problem readWatchLists(Reader &r, const QString &baseDirectory, GatewayConnectio
                 seen.insert({items.at(i).station, address});
                 continue;
             }
-            return at(msg<MsgId::PlaceItem>(t + 1, i + 1),
-                      msg<MsgId::GatewayConfigDuplicateItem>(items.at(i).station,
-                                                             address.toStdString()));
+            return at(
+                msg<MsgId::PlaceItem>(t + 1, i + 1),
+                msg<MsgId::GatewayConfigDuplicateItem>(items.at(i).station, address.toStdString()));
         }
     }
     if (seen.isEmpty())
@@ -330,14 +340,15 @@ int GatewayConnectionConfig::itemCount() const
 
 Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString &baseDirectory)
 {
-    const auto fail = [](Message m) { return makeError(ErrorKind::InvalidRequest, std::move(m)); };
+    const auto fail = [](Message m) {
+        return makeError(ErrorKind::InvalidRequest, std::move(m));
+    };
     QJsonParseError parseError{};
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError || !document.isObject())
-        return fail(msg<MsgId::GatewayConfigNotJson>(
-            Message::text(parseError.error != QJsonParseError::NoError
-                              ? parseError.errorString().toStdString()
-                              : std::string("{ ... } expected"))));
+        return fail(msg<MsgId::GatewayConfigNotJson>(Message::text(
+            parseError.error != QJsonParseError::NoError ? parseError.errorString().toStdString()
+                                                         : std::string("{ ... } expected"))));
     const QJsonObject root = document.object();
     if (root.value(QStringLiteral("format")).toString() != QLatin1StringView(FormatMarker))
         return fail(msg<MsgId::GatewayConfigWrongFormat>());
@@ -345,10 +356,12 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
     if (version.isUndefined())
         return fail(msg<MsgId::GatewayConfigMissing>("version"));
     if (version.toInt(-1) != CurrentVersion)
-        return fail(msg<MsgId::GatewayConfigWrongVersion>(
-            QJsonDocument(QJsonArray{version}).toJson(QJsonDocument::Compact).mid(1).chopped(1)
-                .toStdString(),
-            CurrentVersion));
+        return fail(msg<MsgId::GatewayConfigWrongVersion>(QJsonDocument(QJsonArray{version})
+                                                              .toJson(QJsonDocument::Compact)
+                                                              .mid(1)
+                                                              .chopped(1)
+                                                              .toStdString(),
+                                                          CurrentVersion));
 
     GatewayConfig config;
     Reader r(root);

@@ -114,8 +114,8 @@ void GatewayLink::checkStopped()
     // Done when the broker took everything (outstanding 0: QoS 1 acknowledged), when there is no
     // broker to wait for, or at the bound.
     const bool delivered = m_publisher->waiting() == 0 && m_client->outstanding() == 0;
-    if (m_stopped || (!delivered && m_client->isConnected()
-                      && !m_stopClock.hasExpired(m_stopTimeoutMs)))
+    if (m_stopped
+        || (!delivered && m_client->isConnected() && !m_stopClock.hasExpired(m_stopTimeoutMs)))
         return;
     m_stopTimer.stop();
     m_client->close();
@@ -188,8 +188,8 @@ void GatewayLink::onValues(const QList<WatchValue> &values)
     }
 }
 
-void GatewayLink::update(Item &item, const std::vector<std::uint32_t> &words,
-                         ValueQuality quality, const Message &error, const QDateTime &time)
+void GatewayLink::update(Item &item, const std::vector<std::uint32_t> &words, ValueQuality quality,
+                         const Message &error, const QDateTime &time)
 {
     const bool changed = !item.published || words != item.words || quality != item.quality
                          || (quality == ValueQuality::Error && error != item.error);
@@ -199,14 +199,15 @@ void GatewayLink::update(Item &item, const std::vector<std::uint32_t> &words,
     item.quality = quality;
     item.error = error;
     item.time = time.isValid() ? time : QDateTime::currentDateTimeUtc();
+    item.published = true;
     publishItem(item);
 }
 
 void GatewayLink::publishItem(const Item &item)
 {
-    m_publisher->publishRetained(item.topic, GatewayPayload::encodeItem(item.values, item.words,
-                                                                        item.quality, item.time,
-                                                                        item.error));
+    m_publisher->publishRetained(
+        item.topic,
+        GatewayPayload::encodeItem(item.values, item.words, item.quality, item.time, item.error));
 }
 
 void GatewayLink::onLinkState(LinkState state, const Message &reason)
@@ -256,10 +257,10 @@ void GatewayLink::publishStatus(LinkStatus state, const Message &reason)
 
 void GatewayLink::publishStatistics()
 {
-    m_publisher->publishRetained(
-        GatewayTopics::statistics(m_prefix, m_config.name),
-        GatewayStatistics::encode(statistics(), m_session->statistics(), m_linkText,
-                                  QDateTime::currentDateTimeUtc()));
+    m_publisher->publishRetained(GatewayTopics::statistics(m_prefix, m_config.name),
+                                 GatewayStatistics::encode(statistics(), m_session->statistics(),
+                                                           m_linkText,
+                                                           QDateTime::currentDateTimeUtc()));
 }
 
 void GatewayLink::answer(const GatewayPayload::Reply &reply)
@@ -286,7 +287,8 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
     const std::optional<GatewayTopics::Parsed> parsed = GatewayTopics::parse(m_prefix, topic);
     if (m_stopping)
         return;
-    if (!parsed || parsed->kind != GatewayTopics::Kind::Set || parsed->connection != m_config.name) {
+    if (!parsed || parsed->kind != GatewayTopics::Kind::Set
+        || parsed->connection != m_config.name) {
         // Nowhere to answer: only counted and logged.
         ++m_counters.writesRefused;
         Q_EMIT logEvent(msg<MsgId::GatewayWriteBadTopic>(topic.toStdString()));
@@ -316,7 +318,7 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
     WatchItemSpec spec;
     spec.address = parsed->address;
     spec.station = static_cast<quint8>(parsed->station);
-    spec.format = defaultFormat(parsed->address);
+    spec.format = ValueFormat::defaultFormat(parsed->address);
     const auto watched = m_itemOfTopic.constFind(
         GatewayTopics::item(m_prefix, m_config.name, parsed->station, parsed->address));
     if (watched != m_itemOfTopic.cend()) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/mqtt/gatewaypayload.h"
+#include "core/session/sessiontypes.h"
 #include "core/watch/itemvalues.h"
 #include "gatewayconfig.h"
 #include "gatewaystatistics.h"

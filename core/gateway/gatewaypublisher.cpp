@@ -35,7 +35,7 @@ void GatewayPublisher::publishReply(const QString &topic, const QByteArray &payl
 
 int GatewayPublisher::waiting() const
 {
-    return static_cast<int>(m_dirty.size() + m_replies.size());
+    return static_cast<int>(m_dirty.size()) + static_cast<int>(m_replies.size());
 }
 
 void GatewayPublisher::flush()

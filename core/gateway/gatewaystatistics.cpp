@@ -10,7 +10,9 @@ QByteArray GatewayStatistics::encode(const GatewayStatistics &gateway,
                                      const QDateTime &time)
 {
     const StationStatistics &t = session.total;
-    const auto n = [](quint64 value) { return static_cast<double>(value); };
+    const auto n = [](quint64 value) {
+        return static_cast<double>(value);
+    };
     const QJsonObject sessionJson{
         {QStringLiteral("requests"), n(t.requests)},
         {QStringLiteral("answers"), n(t.answers)},

@@ -15,8 +15,7 @@ FATEK_MSG(GatewayConfigWrongVersion, 2,
                             "Configuration version %1 is not supported (this program reads "
                             "version %2)."))
 FATEK_MSG(GatewayConfigMissing, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is missing."))
-FATEK_MSG(GatewayConfigWrongType, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2."))
+FATEK_MSG(GatewayConfigWrongType, 2, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2."))
 FATEK_MSG(GatewayTypeString, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a string"))
 FATEK_MSG(GatewayTypeNumber, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a whole number"))
 FATEK_MSG(GatewayTypeBool, 0, QT_TRANSLATE_NOOP("Fatek::Message", "true or false"))
@@ -61,8 +60,7 @@ FATEK_MSG(GatewayPlaceWatchList, 1, QT_TRANSLATE_NOOP("Fatek::Message", "watch l
 FATEK_MSG(GatewayPlaceAllow, 1, QT_TRANSLATE_NOOP("Fatek::Message", "allow \"%1\""))
 
 // Item values and writes (core/gateway/gatewaylink.cpp).
-FATEK_MSG(GatewayNoValueThisCycle, 0,
-          QT_TRANSLATE_NOOP("Fatek::Message", "not read in this cycle"))
+FATEK_MSG(GatewayNoValueThisCycle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not read in this cycle"))
 FATEK_MSG(GatewayWriteReadOnly, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "Refused: the gateway is read-only."))
 FATEK_MSG(GatewayWriteNotAllowed, 1,
