@@ -23,11 +23,11 @@ constexpr Entry entries[] = {
 #define FATEK_MSG(id, argc, text) {#id, text},
 #include "messagelist.h"
 #include "messagelistframes.h"
+#include "messagelistgateway.h"
+#include "messagelistmqtt.h"
 #include "messagelistnames.h"
 #include "messagelistprogram.h"
 #include "messagelistsnapshot.h"
-#include "messagelistmqtt.h"
-#include "messagelistgateway.h"
 #undef FATEK_MSG
 };
 

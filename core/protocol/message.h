@@ -19,11 +19,11 @@ enum class MsgId : std::uint16_t {
 #ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
 #include "messagelist.h"
 #include "messagelistframes.h"
+#include "messagelistgateway.h"
+#include "messagelistmqtt.h"
 #include "messagelistnames.h"
 #include "messagelistprogram.h"
 #include "messagelistsnapshot.h"
-#include "messagelistmqtt.h"
-#include "messagelistgateway.h"
 #endif
 #undef FATEK_MSG
 };
@@ -34,11 +34,11 @@ inline constexpr int argCounts[] = {
 #ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
 #include "messagelist.h"
 #include "messagelistframes.h"
+#include "messagelistgateway.h"
+#include "messagelistmqtt.h"
 #include "messagelistnames.h"
 #include "messagelistprogram.h"
 #include "messagelistsnapshot.h"
-#include "messagelistmqtt.h"
-#include "messagelistgateway.h"
 #endif
 #undef FATEK_MSG
 };
