@@ -3,6 +3,7 @@
 // Writes are counted on the simulator's side (its request log and memory), never the client's.
 #include "core/gateway/gatewayconfig.h"
 #include "core/gateway/gatewaylink.h"
+#include "core/gateway/gatewaypublisher.h"
 #include "core/mqtt/gatewaypayload.h"
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/mqttclient.h"
@@ -103,6 +104,7 @@ private Q_SLOTS:
     void refusedWritesReachNothing();
     void readOnlyRefusesEverything();
     void brokerRestartRepublishes();
+    void publisherBoundsWhileBrokerAway();
     void plcRestartGoesStaleThenGood();
     void executableWillAndCleanStop();
 
@@ -456,6 +458,48 @@ void TestGateway::brokerRestartRepublishes()
     QTRY_COMPARE_WITH_TIMEOUT(m_link->statistics().waiting, quint64(0), Wait);
     QVERIFY2(m_gatewayLog.filter(QStringLiteral("broker down")).size() >= 1,
              qPrintable(m_gatewayLog.join(u'\n')));
+}
+
+void TestGateway::publisherBoundsWhileBrokerAway()
+{
+    MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(m_broker->url());
+    settings.reconnectMinMs = 50;
+    settings.reconnectMaxMs = 200;
+    m_broker->stop();
+    MqttClient client(settings);
+    QVERIFY(client.open());
+    GatewayPublisher publisher(&client);
+    GatewayPublisher::Limits limits;
+    limits.maxReplies = 10;
+    publisher.setLimits(limits);
+    const QString reply = QStringLiteral("fatek/t/1/R1/reply");
+    const QString item = QStringLiteral("fatek/t/1/R2");
+    for (int i = 0; i < 15; ++i)
+        publisher.publishReply(reply, QByteArray::number(i));
+    for (int i = 0; i < 5; ++i)
+        publisher.publishRetained(item, QByteArray::number(i));
+    // Bounded while the broker is away: the 5 oldest replies and 4 replaced values are gone,
+    // and counted.
+    QCOMPARE(publisher.counters().repliesDropped, quint64(5));
+    QCOMPARE(publisher.counters().superseded, quint64(4));
+    QCOMPARE(publisher.counters().published, quint64(0));
+    QCOMPARE(publisher.waiting(), 11);
+
+    QString error;
+    QVERIFY2(m_broker->start(&error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(publisher.waiting(), 0, Wait);
+    QCOMPARE(publisher.counters().published, quint64(11));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> reader = subscriber(&inbox);
+    QVERIFY(reader);
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.last.contains(item), Wait);
+    QCOMPARE(inbox.last.value(item).payload, QByteArray("4")); // only the newest went out
+    QVERIFY(inbox.last.value(item).retained);
+    QTRY_COMPARE_WITH_TIMEOUT(client.outstanding(), 0, Wait);
+    // A reconnect sends the retained topic again (a broker without persistence lost it).
+    m_broker->kill();
+    QVERIFY2(m_broker->start(&error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(publisher.counters().published, quint64(12), Wait);
 }
 
 void TestGateway::plcRestartGoesStaleThenGood()
