@@ -222,14 +222,10 @@ std::unique_ptr<MqttClient> TestGateway::subscriber(Inbox *inbox)
     return client;
 }
 
+// Write requests the simulator executed, from its own log ("[tcp ...] FACON write R100 = ...").
 int TestGateway::simWrites() const
 {
-    int writes = 0;
-    for (const QString &line : m_simLog) {
-        if (line.contains(QStringLiteral(" write ")))
-            ++writes;
-    }
-    return writes;
+    return static_cast<int>(m_simLog.filter(QStringLiteral(" write ")).size());
 }
 
 void TestGateway::valuesArriveRetained()
