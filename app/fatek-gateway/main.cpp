@@ -91,7 +91,7 @@ int main(int argc, char *argv[])
         err() << "fatek-gateway: give one configuration file (see --help)." << Qt::endl;
         return 2;
     }
-    const QString path = positional.first();
+    const QString &path = positional.first();
     Result<GatewayConfig> loaded = GatewayConfig::loadFromFile(path);
     if (!loaded) {
         err() << "fatek-gateway: " << path << ": " << QString::fromStdString(loaded.error().text())

@@ -303,7 +303,7 @@ Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
     const QJsonArray allow = r.array(QStringLiteral("allow"));
     if (r.problem)
         return r.problem;
-    for (const QJsonValue &entry : allow) {
+    for (const auto &entry : allow) {
         const QString text = entry.toString();
         if (!entry.isString())
             return msg<MsgId::GatewayConfigWrongType>("allow", msg<MsgId::GatewayTypeString>());

@@ -19,7 +19,6 @@ namespace Fatek {
 class GatewayPublisher;
 class MqttClient;
 class Session;
-struct SessionResult;
 
 // One connection of the gateway: a Session polling the connection's watch lists (on its own
 // worker thread) and an MqttClient (its own network thread) publishing every item, the link's

@@ -146,7 +146,7 @@ std::optional<GatewayPayload::ItemValue> GatewayPayload::decodeItem(const QByteA
     value.name = object->value(QStringLiteral("name")).toString();
     value.text = object->value(QStringLiteral("text")).toString();
     value.time = timeFrom(object->value(QStringLiteral("time")));
-    for (const QJsonValue &word : words) {
+    for (const auto &word : words) {
         const double number = word.toDouble(-1);
         if (number < 0 || number > 4294967295.0 || number != std::floor(number))
             return std::nullopt;
