@@ -52,11 +52,14 @@ namespace {
 //   HMI, ROM)
 //   the PLC's own words as printed on the unit (RUN, STOP, ON, OFF, model names such as
 //   FBs-28MC, main unit types MA MU MC)
-//   units (ms, Hz).
+//   units (ms, Hz)
+//   the MQTT gateway's terms and what is typed as it is: MQTT, TLS, broker URLs
+//   (mqtts://user@host:8883), JSON written out ({"value": ...}).
 // The language menu also names "English" in English (each language in its own words).
 const QRegularExpression allowed(QStringLiteral(
     R"(\bFBs-\d+M[ACU](?:/MU)?\b|\bFATEK Studio\b|\b(?:FATEK|FACON|TCP|UDP|IP|RTT|RS|RTS|CTS|XON|XOFF|STX|ETX|LRC|CRC|)"
-    R"(ASCII|BCD|CSV|JSON|PNG|PLC|ID|OS|HMI|ROM|RUN|STOP|ON|OFF|MA|MU|MC|Ctrl|Shift|Enter|ms|Hz)\b|)"
+    R"(ASCII|BCD|CSV|JSON|PNG|PLC|ID|OS|HMI|ROM|RUN|STOP|ON|OFF|MA|MU|MC|Ctrl|Shift|Enter|ms|Hz|)"
+    R"(MQTT|TLS)\b|\bmqtts?://\S+|\{"\w+":[^}]*\}|)"
     R"(\b(?:[XYMSTCRDF]|W[XYMSTC]|DW[XYMSTC]|RT|RC|DRT|DRC|DR|DD|DF)(?:\d+)?\b|)"
     R"(\*\.\w+|--[a-z-]+|\b0x[0-9A-Fa-f]+\b|\b[0-9A-F]+h\b|\b[A-Z]{1,3}\d+\b|\b(?=[0-9A-F]*\d)[0-9A-F]{2,}\b)"));
 const QRegularExpression englishWord(QStringLiteral("[A-Za-z]{2,}"));

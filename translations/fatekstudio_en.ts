@@ -1406,8 +1406,8 @@
             <translation>The configuration is not a JSON object: %1</translation>
         </message>
         <message>
-            <source>Not a gateway configuration: &quot;format&quot; must be &quot;fatek-gateway&quot;.</source>
-            <translation>Not a gateway configuration: &quot;format&quot; must be &quot;fatek-gateway&quot;.</translation>
+            <source>Not a gateway configuration: &quot;%1&quot; must be &quot;%2&quot;.</source>
+            <translation>Not a gateway configuration: &quot;%1&quot; must be &quot;%2&quot;.</translation>
         </message>
         <message>
             <source>Configuration version %1 is not supported (this program reads version %2).</source>
@@ -1430,8 +1430,8 @@
             <translation>a whole number</translation>
         </message>
         <message>
-            <source>true or false</source>
-            <translation>true or false</translation>
+            <source>%1 or %2</source>
+            <translation>%1 or %2</translation>
         </message>
         <message>
             <source>a list</source>
@@ -1462,12 +1462,12 @@
             <translation>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos; or &apos;#&apos;.</translation>
         </message>
         <message>
-            <source>&quot;%1&quot; is not a link kind: write tcp, udp or serial.</source>
-            <translation>&quot;%1&quot; is not a link kind: write tcp, udp or serial.</translation>
+            <source>&quot;%1&quot; is not a link kind: write %2, %3 or %4.</source>
+            <translation>&quot;%1&quot; is not a link kind: write %2, %3 or %4.</translation>
         </message>
         <message>
-            <source>&quot;%1&quot; is not a protocol: write facon, binary or auto.</source>
-            <translation>&quot;%1&quot; is not a protocol: write facon, binary or auto.</translation>
+            <source>&quot;%1&quot; is not a protocol: write %2, %3 or %4.</source>
+            <translation>&quot;%1&quot; is not a protocol: write %2, %3 or %4.</translation>
         </message>
         <message>
             <source>Nothing to watch: give at least one watch list with items.</source>
@@ -1478,8 +1478,8 @@
             <translation>station %1 %2 is watched twice (each address has one topic)</translation>
         </message>
         <message>
-            <source>Give the broker &quot;password&quot; or a &quot;passwordFile&quot;, not both.</source>
-            <translation>Give the broker &quot;password&quot; or a &quot;passwordFile&quot;, not both.</translation>
+            <source>Give the broker &quot;%1&quot; or a &quot;%2&quot;, not both.</source>
+            <translation>Give the broker &quot;%1&quot; or a &quot;%2&quot;, not both.</translation>
         </message>
         <message>
             <source>connection %1 (%2)</source>

@@ -1406,8 +1406,8 @@
             <translation>設定不是 JSON 物件：%1</translation>
         </message>
         <message>
-            <source>Not a gateway configuration: &quot;format&quot; must be &quot;fatek-gateway&quot;.</source>
-            <translation>不是閘道設定：&quot;format&quot; 必須是 &quot;fatek-gateway&quot;。</translation>
+            <source>Not a gateway configuration: &quot;%1&quot; must be &quot;%2&quot;.</source>
+            <translation>不是閘道設定：&quot;%1&quot; 必須是 &quot;%2&quot;。</translation>
         </message>
         <message>
             <source>Configuration version %1 is not supported (this program reads version %2).</source>
@@ -1430,8 +1430,8 @@
             <translation>整數</translation>
         </message>
         <message>
-            <source>true or false</source>
-            <translation>true 或 false</translation>
+            <source>%1 or %2</source>
+            <translation>%1 或 %2</translation>
         </message>
         <message>
             <source>a list</source>
@@ -1462,12 +1462,12 @@
             <translation>&quot;%1&quot; 不是可用的主題前綴：以 &apos;/&apos; 分隔層級，不可為空，不可含 &apos;+&apos; 或 &apos;#&apos;。</translation>
         </message>
         <message>
-            <source>&quot;%1&quot; is not a link kind: write tcp, udp or serial.</source>
-            <translation>&quot;%1&quot; 不是連線類型：請寫 tcp、udp 或 serial。</translation>
+            <source>&quot;%1&quot; is not a link kind: write %2, %3 or %4.</source>
+            <translation>&quot;%1&quot; 不是連線類型：請寫 %2、%3 或 %4。</translation>
         </message>
         <message>
-            <source>&quot;%1&quot; is not a protocol: write facon, binary or auto.</source>
-            <translation>&quot;%1&quot; 不是通訊協定：請寫 facon、binary 或 auto。</translation>
+            <source>&quot;%1&quot; is not a protocol: write %2, %3 or %4.</source>
+            <translation>&quot;%1&quot; 不是通訊協定：請寫 %2、%3 或 %4。</translation>
         </message>
         <message>
             <source>Nothing to watch: give at least one watch list with items.</source>
@@ -1478,8 +1478,8 @@
             <translation>站號 %1 %2 被監看兩次（每個位址只有一個主題）</translation>
         </message>
         <message>
-            <source>Give the broker &quot;password&quot; or a &quot;passwordFile&quot;, not both.</source>
-            <translation>請提供代理伺服器的 &quot;password&quot; 或 &quot;passwordFile&quot;，不可兩者皆有。</translation>
+            <source>Give the broker &quot;%1&quot; or a &quot;%2&quot;, not both.</source>
+            <translation>請提供代理伺服器的 &quot;%1&quot; 或 &quot;%2&quot;，不可兩者皆有。</translation>
         </message>
         <message>
             <source>connection %1 (%2)</source>
@@ -1539,7 +1539,7 @@
         </message>
         <message>
             <source>write station %1 %2 = &quot;%3&quot; (id &quot;%4&quot;): %5</source>
-            <translation>寫入站號 %1 %2 = &quot;%3&quot;（id &quot;%4&quot;）：%5</translation>
+            <translation>寫入站號 %1 %2 = &quot;%3&quot;（命令 ID &quot;%4&quot;）：%5</translation>
         </message>
         <message>
             <source>PLC link %1: %2</source>
@@ -1563,7 +1563,7 @@
         </message>
         <message>
             <source>stopped (status offline)</source>
-            <translation>已停止（狀態 offline）</translation>
+            <translation>已停止（狀態為離線）</translation>
         </message>
     </context>
     <context>

@@ -60,7 +60,7 @@ public:
         if (value.isUndefined() || problem)
             return fallback;
         if (!value.isBool()) {
-            wrongType(key, msg<MsgId::GatewayTypeBool>());
+            wrongType(key, msg<MsgId::GatewayTypeBool>("true", "false"));
             return fallback;
         }
         return value.toBool();
@@ -157,7 +157,7 @@ Problem readBroker(const QJsonObject &json, const QString &baseDirectory, MqttBr
     if (r.has(QStringLiteral("username")))
         broker.username = r.string(QStringLiteral("username"));
     if (r.has(QStringLiteral("password")) && r.has(QStringLiteral("passwordFile")))
-        return msg<MsgId::GatewayConfigPasswordTwice>();
+        return msg<MsgId::GatewayConfigPasswordTwice>("password", "passwordFile");
     if (r.has(QStringLiteral("password")))
         broker.password = r.string(QStringLiteral("password"));
     const QString passwordFile = r.string(QStringLiteral("passwordFile"));
@@ -193,7 +193,7 @@ Problem readLink(const QJsonObject &json, LinkSettings *out)
     else if (kind == u"serial")
         link = LinkSettings::serial(QString());
     else
-        return msg<MsgId::GatewayConfigBadKind>(kind.toStdString());
+        return msg<MsgId::GatewayConfigBadKind>(kind.toStdString(), "tcp", "udp", "serial");
     link.autoReconnect = true; // a gateway never gives up on its PLC
     link.host = r.string(QStringLiteral("host"), link.host);
     r.integerInto(QStringLiteral("port"), 1, 65535, &link.port);
@@ -216,7 +216,8 @@ Problem readLink(const QJsonObject &json, LinkSettings *out)
     else if (protocol == u"auto")
         link.protocol = LinkSettings::ProtocolChoice::Auto;
     else
-        return msg<MsgId::GatewayConfigBadProtocol>(protocol.toStdString());
+        return msg<MsgId::GatewayConfigBadProtocol>(protocol.toStdString(), "facon", "binary",
+                                                    "auto");
     if (const Message m = link.validate(); !m.empty())
         return m;
     *out = link;
@@ -351,7 +352,7 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
                                                          : std::string("{ ... } expected"))));
     const QJsonObject root = document.object();
     if (root.value(QStringLiteral("format")).toString() != QLatin1StringView(FormatMarker))
-        return fail(msg<MsgId::GatewayConfigWrongFormat>());
+        return fail(msg<MsgId::GatewayConfigWrongFormat>("format", FormatMarker));
     const QJsonValue version = root.value(QStringLiteral("version"));
     if (version.isUndefined())
         return fail(msg<MsgId::GatewayConfigMissing>("version"));

@@ -7,9 +7,10 @@
 FATEK_MSG(GatewayConfigCannotRead, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Cannot read %1: %2"))
 FATEK_MSG(GatewayConfigNotJson, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "The configuration is not a JSON object: %1"))
-FATEK_MSG(GatewayConfigWrongFormat, 0,
+// %1 the key, %2 the value it needs (typed as they are, so arguments, not words to translate).
+FATEK_MSG(GatewayConfigWrongFormat, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Not a gateway configuration: \"format\" must be \"fatek-gateway\"."))
+                            "Not a gateway configuration: \"%1\" must be \"%2\"."))
 FATEK_MSG(GatewayConfigWrongVersion, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Configuration version %1 is not supported (this program reads "
@@ -18,7 +19,7 @@ FATEK_MSG(GatewayConfigMissing, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" i
 FATEK_MSG(GatewayConfigWrongType, 2, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2."))
 FATEK_MSG(GatewayTypeString, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a string"))
 FATEK_MSG(GatewayTypeNumber, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a whole number"))
-FATEK_MSG(GatewayTypeBool, 0, QT_TRANSLATE_NOOP("Fatek::Message", "true or false"))
+FATEK_MSG(GatewayTypeBool, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 or %2"))
 FATEK_MSG(GatewayTypeArray, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a list"))
 FATEK_MSG(GatewayTypeObject, 0, QT_TRANSLATE_NOOP("Fatek::Message", "an object"))
 // %1 the key, %2 the value, %3..%4 the range.
@@ -37,21 +38,19 @@ FATEK_MSG(GatewayConfigBadPrefix, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "\"%1\" is not a usable topic prefix: levels separated by '/', "
                             "none empty, without '+' or '#'."))
-FATEK_MSG(GatewayConfigBadKind, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "\"%1\" is not a link kind: write tcp, udp or serial."))
-FATEK_MSG(GatewayConfigBadProtocol, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "\"%1\" is not a protocol: write facon, binary or auto."))
+// %2..%4 the words to write instead (as typed).
+FATEK_MSG(GatewayConfigBadKind, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a link kind: write %2, %3 or %4."))
+FATEK_MSG(GatewayConfigBadProtocol, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a protocol: write %2, %3 or %4."))
 FATEK_MSG(GatewayConfigNoItems, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Nothing to watch: give at least one watch list with items."))
 FATEK_MSG(GatewayConfigDuplicateItem, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "station %1 %2 is watched twice (each address has one topic)"))
-FATEK_MSG(GatewayConfigPasswordTwice, 0,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Give the broker \"password\" or a \"passwordFile\", not both."))
+FATEK_MSG(GatewayConfigPasswordTwice, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Give the broker \"%1\" or a \"%2\", not both."))
 FATEK_MSG(GatewayPlaceConnection, 2, QT_TRANSLATE_NOOP("Fatek::Message", "connection %1 (%2)"))
 FATEK_MSG(GatewayPlaceConnectionNumber, 1, QT_TRANSLATE_NOOP("Fatek::Message", "connection %1"))
 FATEK_MSG(GatewayPlaceLink, 0, QT_TRANSLATE_NOOP("Fatek::Message", "link"))
