@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CTest packaging_files: the packaged text files are valid and the man pages are complete.
-# Usage: check-files.sh FATEK_CLI FATEK_SIM FATEK_STUDIO
+# Usage: check-files.sh FATEK_CLI FATEK_SIM FATEK_STUDIO FATEK_GATEWAY
 #  - the desktop file passes desktop-file-validate (when installed);
 #  - the watch-list MIME type XML is valid and registered by update-mime-database (when installed);
 #  - every man page renders with groff -man -ww without a warning;
@@ -8,7 +8,7 @@
 #    ship undocumented).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-[ $# -eq 3 ] || { echo "usage: check-files.sh FATEK_CLI FATEK_SIM FATEK_STUDIO" >&2; exit 2; }
+[ $# -eq 4 ] || { echo "usage: check-files.sh FATEK_CLI FATEK_SIM FATEK_STUDIO FATEK_GATEWAY" >&2; exit 2; }
 status=0
 
 if command -v desktop-file-validate >/dev/null; then
@@ -69,5 +69,23 @@ check_page() {
 check_page "$1" "$here/man/fatek-cli.1"
 check_page "$2" "$here/man/fatek-sim.1"
 check_page "$3" "$here/man/fatek-studio.1"
-[ $status -eq 0 ] && echo "desktop file, MIME type and man pages OK"
+check_page "$4" "$here/man/fatek-gateway.1"
+
+# The gateway's systemd unit and example configuration.
+if command -v systemd-analyze >/dev/null; then
+    # Before installation the program and its man page are not where the unit names them.
+    unit_err=$(systemd-analyze verify "$here/linux/fatek-gateway.service" 2>&1 | grep -v -e '/usr/bin/fatek-gateway is not executable' -e "Command 'man fatek-gateway(1)'" || true)
+    [ -z "$unit_err" ] || { echo "fatek-gateway.service: $unit_err" >&2; status=1; }
+else
+    echo "systemd-analyze not installed: fatek-gateway.service not checked"
+fi
+grep -qx 'ExecStart=/usr/bin/fatek-gateway /etc/fatek-gateway/config.json' "$here/linux/fatek-gateway.service" ||
+    { echo "fatek-gateway.service does not run /etc/fatek-gateway/config.json" >&2; status=1; }
+# The example configuration loads (its watch list beside it, as installed under /etc).
+example_tmp=$(mktemp -d)
+cp "$here/linux/fatek-gateway.example.json" "$example_tmp/config.json"
+cp "$here/linux/fatek-gateway.line1.json" "$example_tmp/line1.json"
+"$4" --check "$example_tmp/config.json" >/dev/null || { echo "the example gateway configuration does not load" >&2; status=1; }
+rm -rf "$example_tmp"
+[ $status -eq 0 ] && echo "desktop file, MIME type, man pages and the gateway unit OK"
 exit $status

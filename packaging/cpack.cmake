@@ -8,7 +8,7 @@ set(CPACK_PACKAGE_VENDOR "FATEK Studio")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Commissioning and monitoring tool for FATEK PLCs")
 set(CPACK_PACKAGE_DESCRIPTION
-    "FATEK Studio talks to FATEK PLCs (FBs and compatible) over RS-232/RS-485, TCP and UDP with the FACON ASCII and the FATEK binary protocol: watch tables, RUN/STOP control, forcing, loop-back link test and a raw frame console. It includes fatek-cli, a scriptable command-line client, and fatek-sim, a simulated PLC with fault injection for testing without hardware.")
+    "FATEK Studio talks to FATEK PLCs (FBs and compatible) over RS-232/RS-485, TCP and UDP with the FACON ASCII and the FATEK binary protocol: watch tables, RUN/STOP control, forcing, loop-back link test and a raw frame console. It includes fatek-cli, a scriptable command-line client, fatek-gateway, an MQTT gateway, and fatek-sim, a simulated PLC with fault injection for testing without hardware.")
 set(CPACK_PACKAGE_INSTALL_DIRECTORY "FATEK Studio")
 set(CPACK_STRIP_FILES ON) # the release preset is RelWithDebInfo: ship without the debug info
 set(FATEK_PACKAGE_MAINTAINER "FATEK Studio maintainers <fatek-studio@localhost>"
@@ -35,7 +35,8 @@ string(CONCAT CPACK_DEBIAN_PACKAGE_DESCRIPTION
     "FATEK Studio talks to FATEK PLCs (FBs and compatible) over RS-232/RS-485,\n"
     "TCP and UDP with the FACON ASCII and the FATEK binary protocol: watch\n"
     "tables, RUN/STOP control, forcing, loop-back link test and a raw frame\n"
-    "console. It includes fatek-cli, a scriptable command-line client, and\n"
+    "console. It includes fatek-cli, a scriptable command-line client,\n"
+    "fatek-gateway, an MQTT gateway (systemd unit fatek-gateway.service), and\n"
     "fatek-sim, a simulated PLC with fault injection for testing without hardware.")
 # The Qt libraries the executables link (libqt6core6, libqt6widgets6, libqt6serialport6 ...)
 # come from dpkg-shlibdeps. What Qt loads as plugins it cannot see: the SVG icon engine and
@@ -49,5 +50,10 @@ set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-qpa-plugins, qt6-translations-l10n")
 # Native Wayland; without it Qt runs through XWayland.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "qt6-wayland")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
+# fatek-gateway's configuration (packaging/CMakeLists.txt): dpkg keeps the administrator's copy
+# on upgrades and asks before replacing a changed one.
+file(WRITE ${CMAKE_BINARY_DIR}/debian/conffiles
+     "/etc/fatek-gateway/config.json\n/etc/fatek-gateway/line1.json\n")
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${CMAKE_BINARY_DIR}/debian/conffiles)
 
 include(CPack)

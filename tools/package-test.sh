@@ -61,19 +61,21 @@ echo "Recommends: $(dpkg-deb -f "$deb" Recommends)"
 [ "$(dpkg-deb -f "$deb" Architecture)" = "$(dpkg --print-architecture)" ] || fail "wrong architecture"
 # Package names only, one a line ("libqt6core6 (>= 6.4.0)" -> "libqt6core6").
 depends_names=$(tr ',' '\n' <<<"$depends" | sed 's/^ *//; s/ .*//')
-for p in libc6 libstdc++6 libqt6core6 libqt6gui6 libqt6widgets6 libqt6network6 libqt6serialport6 libqt6svg6; do
+for p in libc6 libstdc++6 libqt6core6 libqt6gui6 libqt6widgets6 libqt6network6 libqt6serialport6 libqt6svg6 libmosquitto1; do
     grep -Fxq "$p" <<<"$depends_names" || fail "Depends lacks $p"
 done
 
 step "contents"
 dpkg-deb -c "$deb" | awk '{print $1, $6}' >"$work/contents.txt"
 expected=(
-    ./usr/bin/fatek-studio ./usr/bin/fatek-cli ./usr/bin/fatek-sim
+    ./usr/bin/fatek-studio ./usr/bin/fatek-cli ./usr/bin/fatek-sim ./usr/bin/fatek-gateway
+    ./usr/lib/systemd/system/fatek-gateway.service
+    ./etc/fatek-gateway/config.json ./etc/fatek-gateway/line1.json
     ./usr/share/applications/fatek-studio.desktop
     ./usr/share/mime/packages/fatek-studio.xml
     ./usr/share/icons/hicolor/scalable/apps/fatek-studio.svg
     ./usr/share/man/man1/fatek-cli.1.gz ./usr/share/man/man1/fatek-sim.1.gz
-    ./usr/share/man/man1/fatek-studio.1.gz
+    ./usr/share/man/man1/fatek-studio.1.gz ./usr/share/man/man1/fatek-gateway.1.gz
 )
 for size in 16 22 24 32 48 64 128 256; do
     expected+=("./usr/share/icons/hicolor/${size}x${size}/apps/fatek-studio.png")
@@ -81,16 +83,22 @@ done
 for f in "${expected[@]}"; do
     grep -q " $f\$" "$work/contents.txt" || fail "the .deb lacks $f"
 done
-for f in fatek-studio fatek-cli fatek-sim; do
+for f in fatek-studio fatek-cli fatek-sim fatek-gateway; do
     grep -q "^-rwxr-xr-x ./usr/bin/$f\$" "$work/contents.txt" || fail "/usr/bin/$f is not mode 755"
 done
-# Nothing but bin/ and share/ under /usr: no test, bench or build-tool binaries.
-if grep -v -E " \./usr/(bin|share)(/|$)| \./$| \./usr/$" "$work/contents.txt"; then
+# Nothing but bin/ and share/ under /usr (and the gateway's unit and configuration): no test,
+# bench or build-tool binaries.
+if grep -v -E " \./usr/(bin|share)(/|$)| \./$| \./usr/$| \./usr/lib/(systemd/(system/?)?)?$| \./usr/lib/systemd/system/fatek-gateway\.service$| \./etc/(fatek-gateway/(config|line1)\.json|fatek-gateway/)?$" "$work/contents.txt"; then
     fail "unexpected files in the .deb (above)"
 fi
 echo "$(wc -l <"$work/contents.txt") entries, all expected files present"
+# The gateway's configuration survives upgrades: dpkg treats it as a conffile.
+dpkg-deb -e "$deb" "$work/control"
+for f in /etc/fatek-gateway/config.json /etc/fatek-gateway/line1.json; do
+    grep -qx "$f" "$work/control/conffiles" || fail "$f is not a conffile"
+done
 tar -tzf "$tgz" >"$work/tgz.txt"
-for f in bin/fatek-studio bin/fatek-cli bin/fatek-sim share/applications/fatek-studio.desktop \
+for f in bin/fatek-studio bin/fatek-cli bin/fatek-sim bin/fatek-gateway share/applications/fatek-studio.desktop \
     share/mime/packages/fatek-studio.xml \
     share/man/man1/fatek-cli.1.gz share/icons/hicolor/48x48/apps/fatek-studio.png; do
     grep -q "/$f\$" "$work/tgz.txt" || fail "the .tar.gz lacks $f"
@@ -130,13 +138,13 @@ if command -v update-mime-database >/dev/null; then
     fi
     echo "MIME type application/x-fatek-watchlist registered"
 fi
-for page in fatek-cli fatek-sim fatek-studio; do
+for page in fatek-cli fatek-sim fatek-studio fatek-gateway; do
     warnings=$(zcat "$root/usr/share/man/man1/$page.1.gz" | groff -man -Tutf8 -ww -z 2>&1 || true)
     [ -z "$warnings" ] || fail "man page $page: $warnings"
 done
 file "$root/usr/share/icons/hicolor/256x256/apps/fatek-studio.png" | grep -q "256 x 256" ||
     fail "256x256 icon is not 256 x 256 pixels"
-for f in fatek-studio fatek-cli fatek-sim; do
+for f in fatek-studio fatek-cli fatek-sim fatek-gateway; do
     if ldd "$root/usr/bin/$f" | grep "not found"; then
         fail "$f needs a library that is not installed"
     fi
@@ -144,7 +152,7 @@ done
 
 # Runs the installed programs of one tree (the temporary root or the real /usr).
 check_tree() {
-    local bin=$1
+    local bin=$1 etc=$2
     local status rc
     echo "\$ fatek-cli --sim status"
     rc=0
@@ -187,6 +195,13 @@ check_tree() {
     sim_pid=""
     grep -q "^stopped$" "$work/sim.log" || fail "fatek-sim did not stop cleanly on SIGTERM"
 
+    # The gateway: its version, and the configuration the package installs checks out.
+    v=$("$bin/fatek-gateway" --version 2>&1)
+    [ "$v" = "fatek-gateway $version" ] || fail "fatek-gateway --version says \"$v\""
+    echo "\$ fatek-gateway --check $etc/fatek-gateway/config.json"
+    "$bin/fatek-gateway" --check "$etc/fatek-gateway/config.json" ||
+        fail "the installed gateway configuration does not check out"
+
     echo "\$ fatek-studio --version"
     v=$(QT_QPA_PLATFORM=offscreen "$bin/fatek-studio" --version 2>/dev/null)
     echo "$v"
@@ -202,7 +217,7 @@ check_tree() {
 mkdir -p "$work/home" "$work/run"
 chmod 700 "$work/run"
 step "running from the temporary root"
-check_tree "$root/usr/bin"
+check_tree "$root/usr/bin" "$root/etc"
 
 # A real install only on CI (a throw-away machine), as root, and never over an installed copy.
 if [ "${CI:-}" = true ] && [ "$(id -u)" -eq 0 ] && ! dpkg-query -W fatek-studio >/dev/null 2>&1; then
@@ -214,7 +229,7 @@ if [ "${CI:-}" = true ] && [ "$(id -u)" -eq 0 ] && ! dpkg-query -W fatek-studio 
     fi
     dpkg-query -W -f='${Status}\n' fatek-studio | grep -q "install ok installed" ||
         fail "dpkg did not install the package"
-    check_tree /usr/bin
+    check_tree /usr/bin /etc
     man -w fatek-cli >/dev/null || fail "man fatek-cli does not find the page"
     step "removing the package"
     dpkg -r fatek-studio

@@ -1520,6 +1520,168 @@
         <message>
             <source>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</source>
             <translation>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</translation>
+            <source>The configuration is not a JSON object: %1</source>
+            <translation>The configuration is not a JSON object: %1</translation>
+        </message>
+        <message>
+            <source>Not a gateway configuration: &quot;%1&quot; must be &quot;%2&quot;.</source>
+            <translation>Not a gateway configuration: &quot;%1&quot; must be &quot;%2&quot;.</translation>
+        </message>
+        <message>
+            <source>Configuration version %1 is not supported (this program reads version %2).</source>
+            <translation>Configuration version %1 is not supported (this program reads version %2).</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is missing.</source>
+            <translation>&quot;%1&quot; is missing.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be %2.</source>
+            <translation>&quot;%1&quot; must be %2.</translation>
+        </message>
+        <message>
+            <source>a string</source>
+            <translation>a string</translation>
+        </message>
+        <message>
+            <source>a whole number</source>
+            <translation>a whole number</translation>
+        </message>
+        <message>
+            <source>%1 or %2</source>
+            <translation>%1 or %2</translation>
+        </message>
+        <message>
+            <source>a list</source>
+            <translation>a list</translation>
+        </message>
+        <message>
+            <source>an object</source>
+            <translation>an object</translation>
+        </message>
+        <message>
+            <source>%1 %2 is out of range (%3..%4)</source>
+            <translation>%1 %2 is out of range (%3..%4)</translation>
+        </message>
+        <message>
+            <source>No connections: the configuration needs at least one.</source>
+            <translation>No connections: the configuration needs at least one.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a usable connection name: 1 to 64 letters, digits, &apos;-&apos;, &apos;_&apos; or &apos;.&apos;, and not a number.</source>
+            <translation>&quot;%1&quot; is not a usable connection name: 1 to 64 letters, digits, &apos;-&apos;, &apos;_&apos; or &apos;.&apos;, and not a number.</translation>
+        </message>
+        <message>
+            <source>The connection name &quot;%1&quot; is used twice.</source>
+            <translation>The connection name &quot;%1&quot; is used twice.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos; or &apos;#&apos;.</source>
+            <translation>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos; or &apos;#&apos;.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a link kind: write %2, %3 or %4.</source>
+            <translation>&quot;%1&quot; is not a link kind: write %2, %3 or %4.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a protocol: write %2, %3 or %4.</source>
+            <translation>&quot;%1&quot; is not a protocol: write %2, %3 or %4.</translation>
+        </message>
+        <message>
+            <source>Nothing to watch: give at least one watch list with items.</source>
+            <translation>Nothing to watch: give at least one watch list with items.</translation>
+        </message>
+        <message>
+            <source>station %1 %2 is watched twice (each address has one topic)</source>
+            <translation>station %1 %2 is watched twice (each address has one topic)</translation>
+        </message>
+        <message>
+            <source>Give the broker &quot;%1&quot; or a &quot;%2&quot;, not both.</source>
+            <translation>Give the broker &quot;%1&quot; or a &quot;%2&quot;, not both.</translation>
+        </message>
+        <message>
+            <source>connection %1 (%2)</source>
+            <translation>connection %1 (%2)</translation>
+        </message>
+        <message>
+            <source>connection %1</source>
+            <translation>connection %1</translation>
+        </message>
+        <message>
+            <source>link</source>
+            <translation>link</translation>
+        </message>
+        <message>
+            <source>broker</source>
+            <translation>broker</translation>
+        </message>
+        <message>
+            <source>watch list %1</source>
+            <translation>watch list %1</translation>
+        </message>
+        <message>
+            <source>allow &quot;%1&quot;</source>
+            <translation>allow &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>not read in this cycle</source>
+            <translation>not read in this cycle</translation>
+        </message>
+        <message>
+            <source>Refused: the gateway is read-only.</source>
+            <translation>Refused: the gateway is read-only.</translation>
+        </message>
+        <message>
+            <source>Refused: %1 is not in this connection&apos;s write allowlist.</source>
+            <translation>Refused: %1 is not in this connection&apos;s write allowlist.</translation>
+        </message>
+        <message>
+            <source>Refused: a retained command would write again at every restart; publish commands without the retain flag.</source>
+            <translation>Refused: a retained command would write again at every restart; publish commands without the retain flag.</translation>
+        </message>
+        <message>
+            <source>Refused: a command longer than %1 bytes.</source>
+            <translation>Refused: a command longer than %1 bytes.</translation>
+        </message>
+        <message>
+            <source>Refused: %1 writes are already waiting on this connection.</source>
+            <translation>Refused: %1 writes are already waiting on this connection.</translation>
+        </message>
+        <message>
+            <source>written</source>
+            <translation>written</translation>
+        </message>
+        <message>
+            <source>Ignored a command on %1: not an item of this connection.</source>
+            <translation>Ignored a command on %1: not an item of this connection.</translation>
+        </message>
+        <message>
+            <source>write station %1 %2 = &quot;%3&quot; (id &quot;%4&quot;): %5</source>
+            <translation>write station %1 %2 = &quot;%3&quot; (id &quot;%4&quot;): %5</translation>
+        </message>
+        <message>
+            <source>PLC link %1: %2</source>
+            <translation>PLC link %1: %2</translation>
+        </message>
+        <message>
+            <source>PLC link %1</source>
+            <translation>PLC link %1</translation>
+        </message>
+        <message>
+            <source>broker %1 connected</source>
+            <translation>broker %1 connected</translation>
+        </message>
+        <message>
+            <source>broker down: %1</source>
+            <translation>broker down: %1</translation>
+        </message>
+        <message>
+            <source>started: %1 items from %2, broker %3</source>
+            <translation>started: %1 items from %2, broker %3</translation>
+        </message>
+        <message>
+            <source>stopped (status offline)</source>
+            <translation>stopped (status offline)</translation>
         </message>
     </context>
     <context>

@@ -1520,6 +1520,168 @@
         <message>
             <source>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</source>
             <translation>「%1」不是閘道器連線名稱：須為 1 至 64 個字母、數字、-、_ 或 .，且不可為純數字。</translation>
+            <source>The configuration is not a JSON object: %1</source>
+            <translation>設定不是 JSON 物件：%1</translation>
+        </message>
+        <message>
+            <source>Not a gateway configuration: &quot;%1&quot; must be &quot;%2&quot;.</source>
+            <translation>不是閘道設定：&quot;%1&quot; 必須是 &quot;%2&quot;。</translation>
+        </message>
+        <message>
+            <source>Configuration version %1 is not supported (this program reads version %2).</source>
+            <translation>不支援設定版本 %1（本程式讀取版本 %2）。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is missing.</source>
+            <translation>缺少 &quot;%1&quot;。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be %2.</source>
+            <translation>&quot;%1&quot; 必須是%2。</translation>
+        </message>
+        <message>
+            <source>a string</source>
+            <translation>字串</translation>
+        </message>
+        <message>
+            <source>a whole number</source>
+            <translation>整數</translation>
+        </message>
+        <message>
+            <source>%1 or %2</source>
+            <translation>%1 或 %2</translation>
+        </message>
+        <message>
+            <source>a list</source>
+            <translation>清單</translation>
+        </message>
+        <message>
+            <source>an object</source>
+            <translation>物件</translation>
+        </message>
+        <message>
+            <source>%1 %2 is out of range (%3..%4)</source>
+            <translation>%1 %2 超出範圍（%3..%4）</translation>
+        </message>
+        <message>
+            <source>No connections: the configuration needs at least one.</source>
+            <translation>沒有連線：設定至少需要一個。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a usable connection name: 1 to 64 letters, digits, &apos;-&apos;, &apos;_&apos; or &apos;.&apos;, and not a number.</source>
+            <translation>&quot;%1&quot; 不是可用的連線名稱：1 到 64 個字母、數字、&apos;-&apos;、&apos;_&apos; 或 &apos;.&apos;，且不可只是數字。</translation>
+        </message>
+        <message>
+            <source>The connection name &quot;%1&quot; is used twice.</source>
+            <translation>連線名稱 &quot;%1&quot; 重複使用。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos; or &apos;#&apos;.</source>
+            <translation>&quot;%1&quot; 不是可用的主題前綴：以 &apos;/&apos; 分隔層級，不可為空，不可含 &apos;+&apos; 或 &apos;#&apos;。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a link kind: write %2, %3 or %4.</source>
+            <translation>&quot;%1&quot; 不是連線類型：請寫 %2、%3 或 %4。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a protocol: write %2, %3 or %4.</source>
+            <translation>&quot;%1&quot; 不是通訊協定：請寫 %2、%3 或 %4。</translation>
+        </message>
+        <message>
+            <source>Nothing to watch: give at least one watch list with items.</source>
+            <translation>沒有可監看的項目：請至少提供一個含項目的監看清單。</translation>
+        </message>
+        <message>
+            <source>station %1 %2 is watched twice (each address has one topic)</source>
+            <translation>站號 %1 %2 被監看兩次（每個位址只有一個主題）</translation>
+        </message>
+        <message>
+            <source>Give the broker &quot;%1&quot; or a &quot;%2&quot;, not both.</source>
+            <translation>請提供代理伺服器的 &quot;%1&quot; 或 &quot;%2&quot;，不可兩者皆有。</translation>
+        </message>
+        <message>
+            <source>connection %1 (%2)</source>
+            <translation>連線 %1（%2）</translation>
+        </message>
+        <message>
+            <source>connection %1</source>
+            <translation>連線 %1</translation>
+        </message>
+        <message>
+            <source>link</source>
+            <translation>連線設定</translation>
+        </message>
+        <message>
+            <source>broker</source>
+            <translation>代理伺服器</translation>
+        </message>
+        <message>
+            <source>watch list %1</source>
+            <translation>監看清單 %1</translation>
+        </message>
+        <message>
+            <source>allow &quot;%1&quot;</source>
+            <translation>允許 &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>not read in this cycle</source>
+            <translation>本週期未讀取</translation>
+        </message>
+        <message>
+            <source>Refused: the gateway is read-only.</source>
+            <translation>拒絕：閘道為唯讀。</translation>
+        </message>
+        <message>
+            <source>Refused: %1 is not in this connection&apos;s write allowlist.</source>
+            <translation>拒絕：%1 不在此連線的寫入允許清單中。</translation>
+        </message>
+        <message>
+            <source>Refused: a retained command would write again at every restart; publish commands without the retain flag.</source>
+            <translation>拒絕：保留的命令會在每次重新啟動時再次寫入；發布命令時請勿設定保留旗標。</translation>
+        </message>
+        <message>
+            <source>Refused: a command longer than %1 bytes.</source>
+            <translation>拒絕：命令超過 %1 位元組。</translation>
+        </message>
+        <message>
+            <source>Refused: %1 writes are already waiting on this connection.</source>
+            <translation>拒絕：此連線已有 %1 個寫入在等待。</translation>
+        </message>
+        <message>
+            <source>written</source>
+            <translation>已寫入</translation>
+        </message>
+        <message>
+            <source>Ignored a command on %1: not an item of this connection.</source>
+            <translation>已忽略 %1 上的命令：不是此連線的項目。</translation>
+        </message>
+        <message>
+            <source>write station %1 %2 = &quot;%3&quot; (id &quot;%4&quot;): %5</source>
+            <translation>寫入站號 %1 %2 = &quot;%3&quot;（命令 ID &quot;%4&quot;）：%5</translation>
+        </message>
+        <message>
+            <source>PLC link %1: %2</source>
+            <translation>PLC 連線%1：%2</translation>
+        </message>
+        <message>
+            <source>PLC link %1</source>
+            <translation>PLC 連線%1</translation>
+        </message>
+        <message>
+            <source>broker %1 connected</source>
+            <translation>已連線到代理伺服器 %1</translation>
+        </message>
+        <message>
+            <source>broker down: %1</source>
+            <translation>代理伺服器中斷：%1</translation>
+        </message>
+        <message>
+            <source>started: %1 items from %2, broker %3</source>
+            <translation>已啟動：%1 個項目，來自 %2，代理伺服器 %3</translation>
+        </message>
+        <message>
+            <source>stopped (status offline)</source>
+            <translation>已停止（狀態為離線）</translation>
         </message>
     </context>
     <context>

@@ -45,7 +45,9 @@ QJsonValue numericValue(const ItemValues &item, std::uint64_t raw, const QString
     const DisplayFormat format = item.item().format;
     const int width = item.width();
     const std::uint64_t mask = width >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << width) - 1;
-    const std::uint64_t value = ValueFormat::swapWords(raw, width) & mask;
+    // In the item's word order, as text() reads it (swapped only when the item says so).
+    const std::uint64_t ordered = item.item().swapWords ? ValueFormat::swapWords(raw, width) : raw;
+    const std::uint64_t value = ordered & mask;
     switch (format) {
     case DisplayFormat::Bit: return (raw & 1) != 0;
     case DisplayFormat::Ascii: return text;
@@ -144,7 +146,7 @@ std::optional<GatewayPayload::ItemValue> GatewayPayload::decodeItem(const QByteA
     value.name = object->value(QStringLiteral("name")).toString();
     value.text = object->value(QStringLiteral("text")).toString();
     value.time = timeFrom(object->value(QStringLiteral("time")));
-    for (const QJsonValue &word : words) {
+    for (const auto &word : words) {
         const double number = word.toDouble(-1);
         if (number < 0 || number > 4294967295.0 || number != std::floor(number))
             return std::nullopt;

@@ -1,5 +1,7 @@
 #include "mqttclient.h"
 
+#include "core/session/crossthreadcall.h"
+
 #include <QCoreApplication>
 #include <QMetaObject>
 
@@ -56,6 +58,9 @@ struct MqttClientShared
     std::thread thread;
     bool stop = false;
     bool running = false;
+    // Under its own lock, never held while calling the library: onConnect() takes it inside the
+    // library's callback lock, and `mutex` is held around library calls (a lock-order cycle).
+    std::mutex subscriptionsMutex;
     std::vector<std::pair<std::string, int>> subscriptions;
     struct Will
     {
@@ -70,11 +75,12 @@ struct MqttClientShared
     std::atomic<bool> connackSeen{false};
     std::atomic<int> outstanding{0};
 
+    // CrossThreadCall: a queued call with the marks ThreadSanitizer needs to see the hand-over
+    // (Debian's Qt is not built with TSan; a plain invokeMethod reads as a race).
     void post(std::function<void(MqttClient *)> call)
     {
         MqttClient *target = owner;
-        QMetaObject::invokeMethod(
-            target, [target, call = std::move(call)] { call(target); }, Qt::QueuedConnection);
+        CrossThreadCall::invoke(target, [target, call = std::move(call)] { call(target); });
     }
 
     void run();
@@ -96,11 +102,13 @@ void onConnect(struct mosquitto *mosq, void *userdata, int rc)
         shared->post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
         return;
     }
+    std::vector<std::pair<std::string, int>> subscriptions;
     {
-        std::lock_guard lock(shared->mutex);
-        for (const auto &[filter, qos] : shared->subscriptions)
-            mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
+        std::lock_guard lock(shared->subscriptionsMutex);
+        subscriptions = shared->subscriptions;
     }
+    for (const auto &[filter, qos] : subscriptions)
+        mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
     shared->connackSeen = true;
     shared->connected = true;
     shared->post([](MqttClient *client) { Q_EMIT client->connected(); });
@@ -222,11 +230,15 @@ void MqttClient::setWill(const QString &topic, const QByteArray &payload, int qo
 
 void MqttClient::subscribe(const QString &filter, int qos)
 {
+    const std::string text = filter.toStdString();
+    {
+        std::lock_guard lock(m_shared->subscriptionsMutex);
+        m_shared->subscriptions.emplace_back(text, qos);
+    }
+    // A (re)connect in between subscribes too: twice does no harm.
     std::lock_guard lock(m_shared->mutex);
-    m_shared->subscriptions.emplace_back(filter.toStdString(), qos);
     if (m_shared->connected && m_shared->mosq)
-        mosquitto_subscribe(m_shared->mosq, nullptr, m_shared->subscriptions.back().first.c_str(),
-                            qos);
+        mosquitto_subscribe(m_shared->mosq, nullptr, text.c_str(), qos);
 }
 
 bool MqttClient::open()

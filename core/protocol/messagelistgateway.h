@@ -1,3 +1,92 @@
 // The messages of core, continued (see messagelist.h for the format): the MQTT gateway
 // (fatek-gateway, core/gateway; issue 20). X-macro list, included only by message.h and
 // message.cpp.
+
+// The configuration file (core/gateway/gatewayconfig.cpp). Places nest with AtPlace:
+// "connection 2 (line1): link: port 70000 is out of range (1..65535)".
+FATEK_MSG(GatewayConfigCannotRead, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Cannot read %1: %2"))
+FATEK_MSG(GatewayConfigNotJson, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "The configuration is not a JSON object: %1"))
+// %1 the key, %2 the value it needs (typed as they are, so arguments, not words to translate).
+FATEK_MSG(GatewayConfigWrongFormat, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Not a gateway configuration: \"%1\" must be \"%2\"."))
+FATEK_MSG(GatewayConfigWrongVersion, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Configuration version %1 is not supported (this program reads "
+                            "version %2)."))
+FATEK_MSG(GatewayConfigMissing, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is missing."))
+FATEK_MSG(GatewayConfigWrongType, 2, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2."))
+FATEK_MSG(GatewayTypeString, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a string"))
+FATEK_MSG(GatewayTypeNumber, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a whole number"))
+FATEK_MSG(GatewayTypeBool, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 or %2"))
+FATEK_MSG(GatewayTypeArray, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a list"))
+FATEK_MSG(GatewayTypeObject, 0, QT_TRANSLATE_NOOP("Fatek::Message", "an object"))
+// %1 the key, %2 the value, %3..%4 the range.
+FATEK_MSG(GatewayConfigOutOfRange, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 %2 is out of range (%3..%4)"))
+FATEK_MSG(GatewayConfigNoConnections, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "No connections: the configuration needs at least one."))
+FATEK_MSG(GatewayConfigBadName, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"%1\" is not a usable connection name: 1 to 64 letters, digits, "
+                            "'-', '_' or '.', and not a number."))
+FATEK_MSG(GatewayConfigDuplicateName, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "The connection name \"%1\" is used twice."))
+FATEK_MSG(GatewayConfigBadPrefix, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"%1\" is not a usable topic prefix: levels separated by '/', "
+                            "none empty, without '+' or '#'."))
+// %2..%4 the words to write instead (as typed).
+FATEK_MSG(GatewayConfigBadKind, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a link kind: write %2, %3 or %4."))
+FATEK_MSG(GatewayConfigBadProtocol, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a protocol: write %2, %3 or %4."))
+FATEK_MSG(GatewayConfigNoItems, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Nothing to watch: give at least one watch list with items."))
+FATEK_MSG(GatewayConfigDuplicateItem, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "station %1 %2 is watched twice (each address has one topic)"))
+FATEK_MSG(GatewayConfigPasswordTwice, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Give the broker \"%1\" or a \"%2\", not both."))
+FATEK_MSG(GatewayPlaceConnection, 2, QT_TRANSLATE_NOOP("Fatek::Message", "connection %1 (%2)"))
+FATEK_MSG(GatewayPlaceConnectionNumber, 1, QT_TRANSLATE_NOOP("Fatek::Message", "connection %1"))
+FATEK_MSG(GatewayPlaceLink, 0, QT_TRANSLATE_NOOP("Fatek::Message", "link"))
+FATEK_MSG(GatewayPlaceBroker, 0, QT_TRANSLATE_NOOP("Fatek::Message", "broker"))
+FATEK_MSG(GatewayPlaceWatchList, 1, QT_TRANSLATE_NOOP("Fatek::Message", "watch list %1"))
+FATEK_MSG(GatewayPlaceAllow, 1, QT_TRANSLATE_NOOP("Fatek::Message", "allow \"%1\""))
+
+// Item values and writes (core/gateway/gatewaylink.cpp).
+FATEK_MSG(GatewayNoValueThisCycle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not read in this cycle"))
+FATEK_MSG(GatewayWriteReadOnly, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Refused: the gateway is read-only."))
+FATEK_MSG(GatewayWriteNotAllowed, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Refused: %1 is not in this connection's write allowlist."))
+FATEK_MSG(GatewayWriteRetained, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Refused: a retained command would write again at every restart; "
+                            "publish commands without the retain flag."))
+FATEK_MSG(GatewayWriteTooLong, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Refused: a command longer than %1 bytes."))
+FATEK_MSG(GatewayWriteBusy, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Refused: %1 writes are already waiting on this connection."))
+FATEK_MSG(GatewayWriteDone, 0, QT_TRANSLATE_NOOP("Fatek::Message", "written"))
+FATEK_MSG(GatewayWriteBadTopic, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Ignored a command on %1: not an item of this connection."))
+
+// Log lines of fatek-gateway (one per event, on standard error).
+// %1 station, %2 address, %3 the value as sent, %4 the command id, %5 the outcome.
+FATEK_MSG(GatewayLogWrite, 5,
+          QT_TRANSLATE_NOOP("Fatek::Message", "write station %1 %2 = \"%3\" (id \"%4\"): %5"))
+FATEK_MSG(GatewayLogPlcLink, 2, QT_TRANSLATE_NOOP("Fatek::Message", "PLC link %1: %2"))
+FATEK_MSG(GatewayLogPlcLinkState, 1, QT_TRANSLATE_NOOP("Fatek::Message", "PLC link %1"))
+FATEK_MSG(GatewayLogBrokerUp, 1, QT_TRANSLATE_NOOP("Fatek::Message", "broker %1 connected"))
+FATEK_MSG(GatewayLogBrokerDown, 1, QT_TRANSLATE_NOOP("Fatek::Message", "broker down: %1"))
+FATEK_MSG(GatewayLogStarted, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message", "started: %1 items from %2, broker %3"))
+FATEK_MSG(GatewayLogStopped, 0, QT_TRANSLATE_NOOP("Fatek::Message", "stopped (status offline)"))

@@ -1,0 +1,418 @@
+#include "gatewayconfig.h"
+
+#include "core/mqtt/gatewaytopics.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSet>
+
+#include <cmath>
+#include <limits>
+
+namespace Fatek {
+
+namespace {
+
+// A failed step: the message, already nested in its places.
+using Problem = std::optional<Message>;
+
+Message at(Message place, Message error)
+{
+    return msg<MsgId::AtPlace>(std::move(place), std::move(error));
+}
+
+std::string keyText(const QString &key)
+{
+    return key.toStdString();
+}
+
+// Reads optional typed keys of one JSON object; the first problem wins and the rest is skipped.
+class Reader
+{
+public:
+    explicit Reader(const QJsonObject &object)
+        : m_object(object)
+    {}
+
+    Problem problem;
+
+    bool has(const QString &key) const { return m_object.contains(key); }
+
+    QString string(const QString &key, const QString &fallback = {})
+    {
+        const QJsonValue value = m_object.value(key);
+        if (value.isUndefined() || problem)
+            return fallback;
+        if (!value.isString()) {
+            wrongType(key, msg<MsgId::GatewayTypeString>());
+            return fallback;
+        }
+        return value.toString();
+    }
+
+    bool boolean(const QString &key, bool fallback)
+    {
+        const QJsonValue value = m_object.value(key);
+        if (value.isUndefined() || problem)
+            return fallback;
+        if (!value.isBool()) {
+            wrongType(key, msg<MsgId::GatewayTypeBool>("true", "false"));
+            return fallback;
+        }
+        return value.toBool();
+    }
+
+    // A whole number in [min, max]; `fallback` when absent.
+    std::optional<qint64> integer(const QString &key, qint64 min, qint64 max)
+    {
+        const QJsonValue value = m_object.value(key);
+        if (value.isUndefined() || problem)
+            return std::nullopt;
+        const double number = value.toDouble(std::numeric_limits<double>::quiet_NaN());
+        if (!value.isDouble() || !std::isfinite(number) || number != std::floor(number)) {
+            wrongType(key, msg<MsgId::GatewayTypeNumber>());
+            return std::nullopt;
+        }
+        if (number < static_cast<double>(min) || number > static_cast<double>(max)) {
+            problem = msg<MsgId::GatewayConfigOutOfRange>(
+                keyText(key), QString::number(number, 'g', 17).toStdString(), min, max);
+            return std::nullopt;
+        }
+        return static_cast<qint64>(number);
+    }
+
+    template<typename T>
+    void integerInto(const QString &key, qint64 min, qint64 max, T *target)
+    {
+        if (const std::optional<qint64> v = integer(key, min, max))
+            *target = static_cast<T>(*v);
+    }
+
+    QJsonArray array(const QString &key)
+    {
+        const QJsonValue value = m_object.value(key);
+        if (value.isUndefined() || problem)
+            return {};
+        if (!value.isArray()) {
+            wrongType(key, msg<MsgId::GatewayTypeArray>());
+            return {};
+        }
+        return value.toArray();
+    }
+
+    QJsonObject object(const QString &key, bool required)
+    {
+        const QJsonValue value = m_object.value(key);
+        if (problem)
+            return {};
+        if (value.isUndefined()) {
+            if (required)
+                problem = msg<MsgId::GatewayConfigMissing>(keyText(key));
+            return {};
+        }
+        if (!value.isObject()) {
+            wrongType(key, msg<MsgId::GatewayTypeObject>());
+            return {};
+        }
+        return value.toObject();
+    }
+
+private:
+    void wrongType(const QString &key, Message type)
+    {
+        problem = msg<MsgId::GatewayConfigWrongType>(keyText(key), std::move(type));
+    }
+
+    QJsonObject m_object;
+};
+
+QString resolve(const QString &baseDirectory, const QString &file)
+{
+    return QDir(baseDirectory).absoluteFilePath(file);
+}
+
+Problem readBroker(const QJsonObject &json, const QString &baseDirectory, MqttBrokerSettings *out)
+{
+    Reader r(json);
+    const QString url = r.string(QStringLiteral("url"), QStringLiteral("mqtt://127.0.0.1:1883"));
+    if (r.problem)
+        return r.problem;
+    Result<MqttBrokerSettings> parsed = MqttBrokerSettings::fromUrl(url);
+    if (!parsed)
+        return parsed.error().message;
+    MqttBrokerSettings broker = std::move(parsed).value();
+    auto file = [&](const QString &key, QString *target) {
+        const QString name = r.string(key);
+        if (!name.isEmpty())
+            *target = resolve(baseDirectory, name);
+    };
+    file(QStringLiteral("caFile"), &broker.caFile);
+    file(QStringLiteral("certFile"), &broker.certFile);
+    file(QStringLiteral("keyFile"), &broker.keyFile);
+    broker.tlsInsecure = r.boolean(QStringLiteral("tlsInsecure"), false);
+    if (r.has(QStringLiteral("username")))
+        broker.username = r.string(QStringLiteral("username"));
+    if (r.has(QStringLiteral("password")) && r.has(QStringLiteral("passwordFile")))
+        return msg<MsgId::GatewayConfigPasswordTwice>("password", "passwordFile");
+    if (r.has(QStringLiteral("password")))
+        broker.password = r.string(QStringLiteral("password"));
+    const QString passwordFile = r.string(QStringLiteral("passwordFile"));
+    broker.clientId = r.string(QStringLiteral("clientId"));
+    r.integerInto(QStringLiteral("keepAliveSec"), 5, 65535, &broker.keepAliveSec);
+    if (r.problem)
+        return r.problem;
+    if (!passwordFile.isEmpty()) {
+        // The first line: a password kept out of a configuration that may be shown around.
+        QFile f(resolve(baseDirectory, passwordFile));
+        if (!f.open(QIODevice::ReadOnly))
+            return msg<MsgId::GatewayConfigCannotRead>(
+                f.fileName().toStdString(), Message::text(f.errorString().toStdString()));
+        broker.password = QString::fromUtf8(f.readLine(4096)).trimmed();
+    }
+    if (const Message m = broker.validate(); !m.empty())
+        return m;
+    *out = broker;
+    return std::nullopt;
+}
+
+Problem readLink(const QJsonObject &json, LinkSettings *out)
+{
+    Reader r(json);
+    const QString kind = r.string(QStringLiteral("kind"), QStringLiteral("tcp"));
+    if (r.problem)
+        return r.problem;
+    LinkSettings link;
+    if (kind == u"tcp")
+        link = LinkSettings::tcp(QStringLiteral("127.0.0.1"));
+    else if (kind == u"udp")
+        link = LinkSettings::udp(QStringLiteral("127.0.0.1"));
+    else if (kind == u"serial")
+        link = LinkSettings::serial(QString());
+    else
+        return msg<MsgId::GatewayConfigBadKind>(kind.toStdString(), "tcp", "udp", "serial");
+    link.autoReconnect = true; // a gateway never gives up on its PLC
+    link.host = r.string(QStringLiteral("host"), link.host);
+    r.integerInto(QStringLiteral("port"), 1, 65535, &link.port);
+    link.portName = r.string(QStringLiteral("portName"), link.portName);
+    r.integerInto(QStringLiteral("baud"), 1, std::numeric_limits<qint32>::max(), &link.baudRate);
+    const QString format = r.string(QStringLiteral("format"));
+    const QString protocol = r.string(QStringLiteral("protocol"), QStringLiteral("facon"));
+    r.integerInto(QStringLiteral("timeoutMs"), 1, 60000, &link.timeoutMs);
+    r.integerInto(QStringLiteral("retries"), 0, 10, &link.retries);
+    if (r.problem)
+        return r.problem;
+    if (!format.isEmpty()) {
+        if (const QString error = link.setSerialFormat(format); !error.isEmpty())
+            return Message::text(error.toStdString());
+    }
+    if (protocol == u"facon")
+        link.protocol = LinkSettings::ProtocolChoice::Facon;
+    else if (protocol == u"binary")
+        link.protocol = LinkSettings::ProtocolChoice::Binary;
+    else if (protocol == u"auto")
+        link.protocol = LinkSettings::ProtocolChoice::Auto;
+    else
+        return msg<MsgId::GatewayConfigBadProtocol>(protocol.toStdString(), "facon", "binary",
+                                                    "auto");
+    if (const Message m = link.validate(); !m.empty())
+        return m;
+    *out = link;
+    return std::nullopt;
+}
+
+Problem readWatchLists(Reader &r, const QString &baseDirectory, GatewayConnectionConfig *c)
+{
+    const QJsonArray lists = r.array(QStringLiteral("watchLists"));
+    if (r.problem)
+        return r.problem;
+    for (qsizetype i = 0; i < lists.size(); ++i) {
+        const Message place = msg<MsgId::GatewayPlaceWatchList>(i + 1);
+        if (!lists.at(i).isObject())
+            return at(place, msg<MsgId::GatewayConfigWrongType>("watchLists",
+                                                                msg<MsgId::GatewayTypeObject>()));
+        Reader lr(lists.at(i).toObject());
+        GatewayConnectionConfig::WatchListFileRef ref;
+        ref.file = lr.string(QStringLiteral("file"));
+        if (const std::optional<qint64> interval = lr.integer(
+                QStringLiteral("intervalMs"), WatchList::MinIntervalMs, WatchList::MaxIntervalMs))
+            ref.intervalMs = static_cast<int>(*interval);
+        if (!lr.problem && ref.file.isEmpty())
+            lr.problem = msg<MsgId::GatewayConfigMissing>("file");
+        if (lr.problem)
+            return at(place, *lr.problem);
+        const Message filePlace = msg<MsgId::GatewayPlaceWatchList>(ref.file.toStdString());
+        const Result<WatchListFile> file
+            = WatchList::loadFromFile(resolve(baseDirectory, ref.file));
+        if (!file) {
+            // The watch list names its file itself ("line1.json: table 1, ..."): once is enough.
+            Message error = file.error().message;
+            const std::string fileName = QFileInfo(ref.file).fileName().toStdString();
+            if (error.id == MsgId::AtPlace && error.args.size() == 2 && error.args[0].message
+                && error.args[1].message && english(*error.args[0].message) == fileName) {
+                const Message inner = *error.args[1].message;
+                error = inner;
+            }
+            return at(filePlace, error);
+        }
+        for (WatchTableSpec table : file->tables) {
+            if (ref.intervalMs)
+                table.intervalMs = *ref.intervalMs;
+            c->tables.append(table);
+        }
+        c->watchLists.append(ref);
+    }
+    // One topic per station and address: a second item there would overwrite the first's.
+    QSet<QPair<int, QString>> seen;
+    for (qsizetype t = 0; t < c->tables.size(); ++t) {
+        const QList<WatchItemSpec> &items = c->tables.at(t).items;
+        for (qsizetype i = 0; i < items.size(); ++i) {
+            const QString address = QString::fromStdString(items.at(i).address.toString());
+            if (!seen.contains({items.at(i).station, address})) {
+                seen.insert({items.at(i).station, address});
+                continue;
+            }
+            return at(
+                msg<MsgId::PlaceItem>(t + 1, i + 1),
+                msg<MsgId::GatewayConfigDuplicateItem>(items.at(i).station, address.toStdString()));
+        }
+    }
+    if (seen.isEmpty())
+        return msg<MsgId::GatewayConfigNoItems>();
+    return std::nullopt;
+}
+
+Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
+                       GatewayConnectionConfig *c)
+{
+    Reader r(json);
+    c->name = r.string(QStringLiteral("name"));
+    if (!r.problem && !r.has(QStringLiteral("name")))
+        r.problem = msg<MsgId::GatewayConfigMissing>("name");
+    if (!r.problem && !GatewayTopics::isValidConnectionName(c->name))
+        r.problem = msg<MsgId::GatewayConfigBadName>(c->name.toStdString());
+    r.integerInto(QStringLiteral("statisticsIntervalMs"), GatewayConfig::MinStatisticsIntervalMs,
+                  GatewayConfig::MaxStatisticsIntervalMs, &c->statisticsIntervalMs);
+    const QJsonObject link = r.object(QStringLiteral("link"), true);
+    if (r.problem)
+        return r.problem;
+    if (Problem p = readLink(link, &c->link))
+        return at(msg<MsgId::GatewayPlaceLink>(), *p);
+    const QJsonArray allow = r.array(QStringLiteral("allow"));
+    if (r.problem)
+        return r.problem;
+    for (const auto &entry : allow) {
+        const QString text = entry.toString();
+        if (!entry.isString())
+            return msg<MsgId::GatewayConfigWrongType>("allow", msg<MsgId::GatewayTypeString>());
+        const Result<AddressRange> range = AddressRange::parse(text.toStdString());
+        if (!range)
+            return at(msg<MsgId::GatewayPlaceAllow>(text.toStdString()), range.error().message);
+        c->allow.push_back(*range);
+    }
+    return readWatchLists(r, baseDirectory, c);
+}
+
+} // namespace
+
+bool GatewayConnectionConfig::allows(const Address &address) const
+{
+    for (const AddressRange &range : allow) {
+        if (range.start.type != address.type || address.number < range.start.number)
+            continue;
+        const std::uint32_t step = std::max<std::uint32_t>(1, range.start.info().step);
+        const std::uint32_t offset = address.number - range.start.number;
+        if (offset % step == 0 && offset / step < range.count)
+            return true;
+    }
+    return false;
+}
+
+int GatewayConnectionConfig::itemCount() const
+{
+    int count = 0;
+    for (const WatchTableSpec &table : tables)
+        count += static_cast<int>(table.items.size());
+    return count;
+}
+
+Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString &baseDirectory)
+{
+    const auto fail = [](Message m) {
+        return makeError(ErrorKind::InvalidRequest, std::move(m));
+    };
+    QJsonParseError parseError{};
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError || !document.isObject())
+        return fail(msg<MsgId::GatewayConfigNotJson>(Message::text(
+            parseError.error != QJsonParseError::NoError ? parseError.errorString().toStdString()
+                                                         : std::string("{ ... } expected"))));
+    const QJsonObject root = document.object();
+    if (root.value(QStringLiteral("format")).toString() != QLatin1StringView(FormatMarker))
+        return fail(msg<MsgId::GatewayConfigWrongFormat>("format", FormatMarker));
+    const QJsonValue version = root.value(QStringLiteral("version"));
+    if (version.isUndefined())
+        return fail(msg<MsgId::GatewayConfigMissing>("version"));
+    if (version.toInt(-1) != CurrentVersion)
+        return fail(msg<MsgId::GatewayConfigWrongVersion>(QJsonDocument(QJsonArray{version})
+                                                              .toJson(QJsonDocument::Compact)
+                                                              .mid(1)
+                                                              .chopped(1)
+                                                              .toStdString(),
+                                                          CurrentVersion));
+
+    GatewayConfig config;
+    Reader r(root);
+    config.prefix = r.string(QStringLiteral("prefix"), config.prefix);
+    config.readOnly = r.boolean(QStringLiteral("readOnly"), false);
+    const QJsonObject broker = r.object(QStringLiteral("broker"), false);
+    const QJsonArray connections = r.array(QStringLiteral("connections"));
+    if (r.problem)
+        return fail(*r.problem);
+    if (!GatewayTopics::isValidPrefix(config.prefix))
+        return fail(msg<MsgId::GatewayConfigBadPrefix>(config.prefix.toStdString()));
+    if (Problem p = readBroker(broker, baseDirectory, &config.broker))
+        return fail(at(msg<MsgId::GatewayPlaceBroker>(), *p));
+    if (connections.isEmpty())
+        return fail(msg<MsgId::GatewayConfigNoConnections>());
+    QSet<QString> names;
+    for (qsizetype i = 0; i < connections.size(); ++i) {
+        const QJsonObject object = connections.at(i).toObject();
+        const QString name = object.value(QStringLiteral("name")).toString();
+        const Message place = name.isEmpty()
+                                  ? msg<MsgId::GatewayPlaceConnectionNumber>(i + 1)
+                                  : msg<MsgId::GatewayPlaceConnection>(i + 1, name.toStdString());
+        if (!connections.at(i).isObject())
+            return fail(at(place, msg<MsgId::GatewayConfigWrongType>(
+                                      "connections", msg<MsgId::GatewayTypeObject>())));
+        GatewayConnectionConfig connection;
+        if (Problem p = readConnection(object, baseDirectory, &connection))
+            return fail(at(place, *p));
+        if (names.contains(connection.name))
+            return fail(at(place, msg<MsgId::GatewayConfigDuplicateName>(name.toStdString())));
+        names.insert(connection.name);
+        config.connections.append(connection);
+    }
+    return config;
+}
+
+Result<GatewayConfig> GatewayConfig::loadFromFile(const QString &path)
+{
+    QFile file(path);
+    // A configuration is small; a bound keeps a wrong path (a device, a huge log) from hanging.
+    constexpr qint64 maxBytes = 4 * 1024 * 1024;
+    if (!file.open(QIODevice::ReadOnly))
+        return makeError(ErrorKind::InvalidRequest,
+                         msg<MsgId::GatewayConfigCannotRead>(
+                             path.toStdString(), Message::text(file.errorString().toStdString())));
+    const QByteArray json = file.read(maxBytes + 1);
+    if (json.size() > maxBytes)
+        return makeError(ErrorKind::InvalidRequest,
+                         msg<MsgId::GatewayConfigNotJson>(Message::text("larger than 4 MiB")));
+    return load(json, QFileInfo(path).absolutePath());
+}
+
+} // namespace Fatek

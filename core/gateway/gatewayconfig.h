@@ -1,0 +1,66 @@
+#pragma once
+
+#include "core/mqtt/mqttbrokersettings.h"
+#include "core/protocol/addressrange.h"
+#include "core/protocol/result.h"
+#include "core/transport/linksettings.h"
+#include "core/watch/watchlist.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace Fatek {
+
+// One PLC link of the gateway: where the PLC is, what to publish, what may be written.
+struct GatewayConnectionConfig
+{
+    struct WatchListFileRef
+    {
+        QString file;                  // as written in the configuration
+        std::optional<int> intervalMs; // overrides every table's interval of that file
+    };
+
+    QString name;
+    LinkSettings link;
+    QList<WatchListFileRef> watchLists;
+    // The tables of every watch list, loaded and checked, intervals overridden where asked.
+    QList<WatchTableSpec> tables;
+    // Elements a write may touch; empty: no writes at all.
+    std::vector<AddressRange> allow;
+    int statisticsIntervalMs = 5000;
+
+    // Whether `address` lies in one of the allowlist's ranges.
+    bool allows(const Address &address) const;
+    int itemCount() const;
+};
+
+// The gateway's configuration file: versioned JSON (docs/gateway.md has the reference)
+//   {"format":"fatek-gateway","version":1,"broker":{"url":"mqtt://127.0.0.1:1883",...},
+//    "prefix":"fatek","readOnly":false,"connections":[{"name":"line1","link":{...},
+//    "watchLists":[{"file":"line1.json","intervalMs":1000}],"allow":["R100..R199"],
+//    "statisticsIntervalMs":5000}]}
+// Everything is checked when loading; an error names its place ("connection 2 (line1): link:
+// port 70000 is out of range (1..65535)"). Watch lists and the password file are read relative
+// to the configuration file.
+struct GatewayConfig
+{
+    static constexpr const char *FormatMarker = "fatek-gateway";
+    static constexpr int CurrentVersion = 1;
+    static constexpr int MinStatisticsIntervalMs = 100;
+    static constexpr int MaxStatisticsIntervalMs = 3600000;
+
+    MqttBrokerSettings broker;
+    QString prefix = QStringLiteral("fatek");
+    bool readOnly = false;
+    QList<GatewayConnectionConfig> connections;
+
+    // `baseDirectory`: where relative file names start.
+    static Result<GatewayConfig> load(const QByteArray &json, const QString &baseDirectory);
+    static Result<GatewayConfig> loadFromFile(const QString &path);
+};
+
+} // namespace Fatek

@@ -1,0 +1,361 @@
+#include "gatewaylink.h"
+
+#include "core/mqtt/gatewaytopics.h"
+#include "core/mqtt/mqttclient.h"
+#include "core/session/session.h"
+#include "gatewaypublisher.h"
+
+#include <array>
+
+namespace Fatek {
+
+using GatewayPayload::LinkStatus;
+
+namespace {
+
+std::string addressString(const Address &address)
+{
+    return address.toString();
+}
+
+} // namespace
+
+GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &prefix,
+                         const MqttBrokerSettings &broker, bool readOnly, QObject *parent)
+    : QObject(parent)
+    , m_config(config)
+    , m_prefix(prefix)
+    , m_readOnly(readOnly)
+    , m_linkText(config.link.toString())
+    , m_session(new Session(config.link, this))
+    , m_client(new MqttClient(broker, this))
+    , m_publisher(new GatewayPublisher(m_client, this))
+{
+    registerSessionMetaTypes();
+    // Core refuses writes too, should a command ever slip past the checks below.
+    m_session->setReadOnly(readOnly);
+    QList<WatchEntry> entries;
+    for (const WatchTableSpec &table : m_config.tables) {
+        for (const WatchItemSpec &spec : table.items) {
+            Item item;
+            item.values = ItemValues(spec);
+            item.topic = GatewayTopics::item(prefix, config.name, spec.station, spec.address);
+            item.intervalMs = table.intervalMs;
+            item.words.assign(static_cast<std::size_t>(item.values.elementCount()), 0);
+            entries += item.values.pollEntries(table.intervalMs);
+            m_items.push_back(std::move(item));
+        }
+    }
+    for (std::size_t i = 0; i < m_items.size(); ++i) {
+        for (const std::uint64_t id : m_items[i].values.pollIds())
+            m_itemOfPollId.insert(id, i);
+        m_itemOfTopic.insert(m_items[i].topic, i);
+    }
+    m_session->setWatchList(entries);
+
+    connect(m_session, &Session::values, this, &GatewayLink::onValues);
+    connect(m_session, &Session::linkStateChanged, this, &GatewayLink::onLinkState);
+    connect(m_client, &MqttClient::messageReceived, this, &GatewayLink::onCommand);
+    connect(m_client, &MqttClient::connected, this, [this] {
+        Q_EMIT logEvent(msg<MsgId::GatewayLogBrokerUp>(m_client->settings().toUrl().toStdString()));
+    });
+    connect(m_client, &MqttClient::disconnected, this, [this](const Message &reason) {
+        if (!m_stopping)
+            Q_EMIT logEvent(msg<MsgId::GatewayLogBrokerDown>(reason));
+    });
+
+    GatewayPayload::Status offline{LinkStatus::Offline, m_linkText, {}, {}};
+    m_client->setWill(GatewayTopics::status(prefix, config.name),
+                      GatewayPayload::encodeStatus(offline), 1, true);
+    m_client->subscribe(GatewayTopics::setFilter(prefix, config.name), 1);
+
+    m_statisticsTimer.setInterval(config.statisticsIntervalMs);
+    connect(&m_statisticsTimer, &QTimer::timeout, this, &GatewayLink::publishStatistics);
+    m_stopTimer.setInterval(20);
+    connect(&m_stopTimer, &QTimer::timeout, this, &GatewayLink::checkStopped);
+}
+
+GatewayLink::~GatewayLink()
+{
+    // Signals of the children must not reach this half-destroyed object.
+    disconnect(m_session, nullptr, this, nullptr);
+    disconnect(m_client, nullptr, this, nullptr);
+}
+
+bool GatewayLink::start(Message *error)
+{
+    if (!m_client->open()) {
+        *error = m_client->openError();
+        return false;
+    }
+    publishStatus(LinkStatus::Connecting, {});
+    m_session->open();
+    m_statisticsTimer.start();
+    return true;
+}
+
+void GatewayLink::stop(int timeoutMs)
+{
+    if (m_stopping)
+        return;
+    m_stopping = true;
+    m_statisticsTimer.stop();
+    m_session->setWatchList({});
+    publishStatistics();
+    publishStatus(LinkStatus::Offline, {});
+    m_stopTimeoutMs = timeoutMs;
+    m_stopClock.start();
+    m_stopTimer.start();
+    checkStopped();
+}
+
+void GatewayLink::checkStopped()
+{
+    // Done when the broker took everything (outstanding 0: QoS 1 acknowledged), when there is no
+    // broker to wait for, or at the bound.
+    const bool delivered = m_publisher->waiting() == 0 && m_client->outstanding() == 0;
+    if (m_stopped
+        || (!delivered && m_client->isConnected() && !m_stopClock.hasExpired(m_stopTimeoutMs)))
+        return;
+    m_stopTimer.stop();
+    m_client->close();
+    m_session->close();
+    m_stopped = true;
+    Q_EMIT logEvent(msg<MsgId::GatewayLogStopped>());
+    Q_EMIT stopped();
+}
+
+GatewayStatistics GatewayLink::statistics() const
+{
+    GatewayStatistics s = m_counters;
+    const GatewayPublisher::Counters c = m_publisher->counters();
+    s.published = c.published;
+    s.superseded = c.superseded;
+    s.repliesDropped = c.repliesDropped;
+    s.waiting = static_cast<quint64>(m_publisher->waiting());
+    return s;
+}
+
+void GatewayLink::onValues(const QList<WatchValue> &values)
+{
+    if (m_stopping)
+        return;
+    struct Gathered
+    {
+        std::array<std::uint32_t, ItemValues::MaxElements> words{};
+        int seen = 0;
+        ValueQuality quality = ValueQuality::Good;
+        Message error;
+        QDateTime time;
+    };
+    QHash<std::size_t, Gathered> gathered;
+    for (const WatchValue &v : values) {
+        const auto found = m_itemOfPollId.constFind(v.itemId);
+        if (found == m_itemOfPollId.cend())
+            continue;
+        Item &item = m_items[*found];
+        const int element = item.values.elementOf(v.itemId);
+        if (element < 0 || element >= ItemValues::MaxElements)
+            continue;
+        const bool first = !gathered.contains(*found);
+        Gathered &g = gathered[*found];
+        if (first) // elements not in this batch keep their last words
+            std::copy(item.words.begin(), item.words.end(), g.words.begin());
+        g.words[static_cast<std::size_t>(element)] = v.value;
+        ++g.seen;
+        if (!g.time.isValid() || v.timestamp > g.time)
+            g.time = v.timestamp;
+        // The item's quality is its worst element's.
+        if (v.quality == ValueQuality::Error) {
+            g.quality = ValueQuality::Error;
+            g.error = v.error;
+        } else if (v.quality == ValueQuality::Stale && g.quality == ValueQuality::Good) {
+            g.quality = ValueQuality::Stale;
+            g.error = v.error;
+        }
+    }
+    for (auto it = gathered.begin(); it != gathered.end(); ++it) {
+        Item &item = m_items[it.key()];
+        Gathered &g = it.value();
+        const int count = item.values.elementCount();
+        if (g.seen < count && g.quality == ValueQuality::Good) {
+            // Good means every element was read now, not some of them.
+            g.quality = ValueQuality::Stale;
+            g.error = msg<MsgId::GatewayNoValueThisCycle>();
+        }
+        update(item, std::vector<std::uint32_t>(g.words.begin(), g.words.begin() + count),
+               g.quality, g.error, g.time);
+    }
+}
+
+void GatewayLink::update(Item &item, const std::vector<std::uint32_t> &words, ValueQuality quality,
+                         const Message &error, const QDateTime &time)
+{
+    const bool changed = !item.published || words != item.words || quality != item.quality
+                         || (quality == ValueQuality::Error && error != item.error);
+    if (!changed)
+        return;
+    item.words = words;
+    item.quality = quality;
+    item.error = error;
+    item.time = time.isValid() ? time : QDateTime::currentDateTimeUtc();
+    item.published = true;
+    publishItem(item);
+}
+
+void GatewayLink::publishItem(const Item &item)
+{
+    m_publisher->publishRetained(
+        item.topic,
+        GatewayPayload::encodeItem(item.values, item.words, item.quality, item.time, item.error));
+}
+
+void GatewayLink::onLinkState(LinkState state, const Message &reason)
+{
+    if (m_stopping)
+        return;
+    switch (state) {
+    case LinkState::Connected:
+        m_everUp = true;
+        publishStatus(LinkStatus::Up, {});
+        Q_EMIT logEvent(msg<MsgId::GatewayLogPlcLinkState>(linkStateMessage(state)));
+        break;
+    case LinkState::Lost: {
+        publishStatus(LinkStatus::Down, reason);
+        Q_EMIT logEvent(msg<MsgId::GatewayLogPlcLink>(linkStateMessage(state), reason));
+        // Nothing stays good once the link is gone: the last value, marked stale, and why.
+        const QDateTime now = QDateTime::currentDateTimeUtc();
+        for (Item &item : m_items) {
+            if (item.quality == ValueQuality::Stale && item.published)
+                continue;
+            item.quality = ValueQuality::Stale;
+            item.error = reason;
+            item.time = now;
+            item.published = true;
+            publishItem(item);
+        }
+        break;
+    }
+    case LinkState::Reconnecting:
+    case LinkState::Connecting:
+        // Until the first connection the status stays "connecting" (or "down" after a failed
+        // attempt); later it stays "down" with the loss's reason until the link is up again.
+        if (m_status == LinkStatus::Up)
+            publishStatus(LinkStatus::Down, reason);
+        break;
+    case LinkState::Closed: break;
+    }
+}
+
+void GatewayLink::publishStatus(LinkStatus state, const Message &reason)
+{
+    m_status = state;
+    const GatewayPayload::Status status{state, m_linkText, reason, QDateTime::currentDateTimeUtc()};
+    m_publisher->publishRetained(GatewayTopics::status(m_prefix, m_config.name),
+                                 GatewayPayload::encodeStatus(status));
+}
+
+void GatewayLink::publishStatistics()
+{
+    m_publisher->publishRetained(GatewayTopics::statistics(m_prefix, m_config.name),
+                                 GatewayStatistics::encode(statistics(), m_session->statistics(),
+                                                           m_linkText,
+                                                           QDateTime::currentDateTimeUtc()));
+}
+
+void GatewayLink::answer(const GatewayPayload::Reply &reply)
+{
+    m_publisher->publishReply(
+        GatewayTopics::itemReply(m_prefix, m_config.name, reply.station, reply.address),
+        GatewayPayload::encodeReply(reply));
+    Q_EMIT logEvent(msg<MsgId::GatewayLogWrite>(
+        reply.station, addressString(reply.address), reply.value.toStdString(),
+        reply.id.toStdString(), reply.ok ? msg<MsgId::GatewayWriteDone>() : reply.error));
+}
+
+void GatewayLink::refuse(GatewayPayload::Reply reply, const Message &why)
+{
+    ++m_counters.writesRefused;
+    reply.ok = false;
+    reply.error = why;
+    reply.time = QDateTime::currentDateTimeUtc();
+    answer(reply);
+}
+
+void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, bool retained)
+{
+    const std::optional<GatewayTopics::Parsed> parsed = GatewayTopics::parse(m_prefix, topic);
+    if (m_stopping)
+        return;
+    if (!parsed || parsed->kind != GatewayTopics::Kind::Set
+        || parsed->connection != m_config.name) {
+        // Nowhere to answer: only counted and logged.
+        ++m_counters.writesRefused;
+        Q_EMIT logEvent(msg<MsgId::GatewayWriteBadTopic>(topic.toStdString()));
+        return;
+    }
+    GatewayPayload::Reply reply;
+    reply.station = parsed->station;
+    reply.address = parsed->address;
+    if (payload.size() > MaxCommandBytes)
+        return refuse(reply, msg<MsgId::GatewayWriteTooLong>(MaxCommandBytes));
+    Message decodeError;
+    const std::optional<GatewayPayload::SetCommand> command
+        = GatewayPayload::decodeSet(payload, &decodeError);
+    if (command) {
+        reply.id = command->id;
+        reply.value = command->value;
+    }
+    if (retained)
+        return refuse(reply, msg<MsgId::GatewayWriteRetained>());
+    if (!command)
+        return refuse(reply, decodeError);
+    if (m_readOnly)
+        return refuse(reply, msg<MsgId::GatewayWriteReadOnly>());
+
+    // The item's spec: the command's format, else the watched item's at this address, else the
+    // address's default (as a new row of a watch table gets).
+    WatchItemSpec spec;
+    spec.address = parsed->address;
+    spec.station = static_cast<quint8>(parsed->station);
+    spec.format = ValueFormat::defaultFormat(parsed->address);
+    const auto watched = m_itemOfTopic.constFind(
+        GatewayTopics::item(m_prefix, m_config.name, parsed->station, parsed->address));
+    if (watched != m_itemOfTopic.cend()) {
+        spec.format = m_items[*watched].values.item().format;
+        spec.swapWords = m_items[*watched].values.item().swapWords;
+    }
+    if (command->format)
+        spec.format = *command->format;
+    if (command->swapWords)
+        spec.swapWords = *command->swapWords;
+    if (const Status valid = WatchList::validateEntry(spec); !valid)
+        return refuse(reply, valid.error().message);
+    const ItemValues item(spec);
+    for (int i = 0; i < item.elementCount(); ++i) {
+        const Address element = item.elementAddress(i);
+        if (!m_config.allows(element))
+            return refuse(reply, msg<MsgId::GatewayWriteNotAllowed>(addressString(element)));
+    }
+    const Result<std::uint64_t> raw = item.parse(command->value);
+    if (!raw)
+        return refuse(reply, raw.error().message);
+    if (m_pendingWrites >= MaxPendingWrites)
+        return refuse(reply, msg<MsgId::GatewayWriteBusy>(m_pendingWrites));
+
+    ++m_counters.writesAccepted;
+    ++m_pendingWrites;
+    m_session->submit(item.writeRequest(*raw), this, [this, reply](const SessionResult &result) {
+        --m_pendingWrites;
+        GatewayPayload::Reply done = reply;
+        done.ok = result.ok();
+        done.time = QDateTime::currentDateTimeUtc();
+        if (!result.ok()) {
+            ++m_counters.writesFailed;
+            done.error = result.errorMessage();
+        }
+        answer(done);
+    });
+}
+
+} // namespace Fatek

@@ -1,0 +1,112 @@
+#pragma once
+
+#include "core/mqtt/gatewaypayload.h"
+#include "core/session/sessiontypes.h"
+#include "core/watch/itemvalues.h"
+#include "gatewayconfig.h"
+#include "gatewaystatistics.h"
+
+#include <QDateTime>
+#include <QElapsedTimer>
+#include <QHash>
+#include <QObject>
+#include <QTimer>
+
+#include <vector>
+
+namespace Fatek {
+
+class GatewayPublisher;
+class MqttClient;
+class Session;
+
+// One connection of the gateway: a Session polling the connection's watch lists (on its own
+// worker thread) and an MqttClient (its own network thread) publishing every item, the link's
+// status and statistics, and taking write commands. Lives in one thread; both sides' signals
+// arrive there, so nothing here is shared between threads.
+//
+// Items are published (retained, QoS 1) when their words or quality change, and all again after
+// every broker (re)connect. Good means read in the cycle that published it; when the PLC link
+// goes down every item is published stale with the reason. The status goes connecting -> up ->
+// down (reason) -> up ...; the broker's will (offline) covers a gateway that dies, stop() publishes
+// offline itself.
+class GatewayLink : public QObject
+{
+    Q_OBJECT
+
+public:
+    // Writes waiting for the PLC link at most; more are refused (a peer flooding /set topics).
+    static constexpr int MaxPendingWrites = 100;
+    // Longest /set payload taken.
+    static constexpr int MaxCommandBytes = 4096;
+
+    GatewayLink(const GatewayConnectionConfig &config, const QString &prefix,
+                const MqttBrokerSettings &broker, bool readOnly, QObject *parent = nullptr);
+    // Without stop() first, the broker gets no offline status before the disconnect.
+    ~GatewayLink() override;
+
+    QString name() const { return m_config.name; }
+    // Opens the PLC link and the broker connection; false (nothing started) when the broker
+    // settings are not usable, with `error` saying why.
+    bool start(Message *error);
+    // Publishes the offline status, waits at most `timeoutMs` for the broker to take it, then
+    // disconnects and closes the PLC link (accepted writes drain first); stopped() when done.
+    void stop(int timeoutMs = 3000);
+    bool isStopped() const { return m_stopped; }
+
+    GatewayStatistics statistics() const;
+    Session *session() const { return m_session; }
+
+Q_SIGNALS:
+    // One log line's worth (links up/down, broker up/down, every write accepted or refused).
+    void logEvent(const Fatek::Message &event);
+    void stopped();
+
+private:
+    struct Item
+    {
+        ItemValues values;
+        QString topic;
+        int intervalMs = 500;
+        std::vector<std::uint32_t> words;
+        ValueQuality quality = ValueQuality::Stale;
+        Message error;
+        QDateTime time;
+        bool published = false;
+    };
+
+    void onValues(const QList<WatchValue> &values);
+    void onLinkState(LinkState state, const Message &reason);
+    void onCommand(const QString &topic, const QByteArray &payload, bool retained);
+    void update(Item &item, const std::vector<std::uint32_t> &words, ValueQuality quality,
+                const Message &error, const QDateTime &time);
+    void publishItem(const Item &item);
+    void publishStatus(GatewayPayload::LinkStatus state, const Message &reason);
+    void publishStatistics();
+    void refuse(GatewayPayload::Reply reply, const Message &why);
+    void answer(const GatewayPayload::Reply &reply);
+    void checkStopped();
+
+    GatewayConnectionConfig m_config;
+    QString m_prefix;
+    bool m_readOnly;
+    QString m_linkText;
+    Session *m_session;
+    MqttClient *m_client;
+    GatewayPublisher *m_publisher;
+    std::vector<Item> m_items;
+    QHash<std::uint64_t, std::size_t> m_itemOfPollId;
+    QHash<QString, std::size_t> m_itemOfTopic;
+    GatewayPayload::LinkStatus m_status = GatewayPayload::LinkStatus::Connecting;
+    bool m_everUp = false;
+    int m_pendingWrites = 0;
+    GatewayStatistics m_counters;
+    QTimer m_statisticsTimer;
+    QTimer m_stopTimer;
+    QElapsedTimer m_stopClock;
+    int m_stopTimeoutMs = 0;
+    bool m_stopping = false;
+    bool m_stopped = false;
+};
+
+} // namespace Fatek

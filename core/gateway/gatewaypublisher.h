@@ -1,0 +1,65 @@
+#pragma once
+
+#include <QByteArray>
+#include <QHash>
+#include <QObject>
+#include <QSet>
+#include <QString>
+#include <QTimer>
+
+#include <deque>
+#include <utility>
+
+namespace Fatek {
+
+class MqttClient;
+
+// What the gateway sends to one broker connection, bounded however long the broker is away or
+// slow. Retained topics (items, status, statistics) keep only their latest payload: one waiting
+// to go that is replaced counts as superseded, and every retained topic is sent again after each
+// (re)connect (a broker without persistence forgot them). Replies are queued, at most
+// maxReplies; the oldest is dropped (and counted) beyond that. While the client has more than
+// maxOutstanding messages not yet written, nothing more is handed to it: the rest waits here.
+class GatewayPublisher : public QObject
+{
+    Q_OBJECT
+
+public:
+    struct Limits
+    {
+        int maxOutstanding = 200;
+        int maxReplies = 1000;
+    };
+    struct Counters
+    {
+        quint64 published = 0;      // messages handed to the broker connection
+        quint64 superseded = 0;     // retained payloads replaced before they went out
+        quint64 repliesDropped = 0; // replies dropped because maxReplies were waiting
+    };
+
+    explicit GatewayPublisher(MqttClient *client, QObject *parent = nullptr);
+
+    void setLimits(const Limits &limits) { m_limits = limits; }
+    // The topic's new retained state (QoS 1).
+    void publishRetained(const QString &topic, const QByteArray &payload);
+    // An answer to a command (QoS 1, not retained).
+    void publishReply(const QString &topic, const QByteArray &payload);
+    // Messages waiting here (retained topics not yet sent, replies).
+    int waiting() const;
+    Counters counters() const { return m_counters; }
+    // Hands over what may go now.
+    void flush();
+
+private:
+    void onConnected();
+
+    MqttClient *m_client;
+    Limits m_limits;
+    Counters m_counters;
+    QHash<QString, QByteArray> m_retained; // every retained topic's latest payload
+    QSet<QString> m_dirty;                 // retained topics not sent since they changed
+    std::deque<std::pair<QString, QByteArray>> m_replies;
+    QTimer m_retry; // flush again while held back by the outstanding bound
+};
+
+} // namespace Fatek

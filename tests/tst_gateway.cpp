@@ -1,0 +1,598 @@
+// The MQTT gateway end to end (issue 20): a GatewayLink between the in-process simulator and a
+// real mosquitto on a free port; the fatek-gateway executable for the last will and a clean stop.
+// Writes are counted on the simulator's side (its request log and memory), never the client's.
+#include "core/gateway/gatewayconfig.h"
+#include "core/gateway/gatewaylink.h"
+#include "core/gateway/gatewaypublisher.h"
+#include "core/mqtt/gatewaypayload.h"
+#include "core/mqtt/gatewaytopics.h"
+#include "core/mqtt/mqttclient.h"
+#include "core/session/session.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
+#include "mosquittobroker.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <cstring>
+#include <memory>
+
+using namespace Fatek;
+using GatewayPayload::LinkStatus;
+
+namespace {
+
+constexpr int Wait = 10000; // QTRY timeouts: generous for a loaded 2-core machine under TSan
+
+Address addr(const char *text)
+{
+    return *Address::parse(text);
+}
+
+std::uint32_t floatBits(float value)
+{
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+const char *const watchList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
+  {"name":"Main","intervalMs":100,"items":[{"address":"R100","name":"Speed"},
+   {"address":"R200","format":"float"},{"address":"Y0"},{"address":"R300"},{"address":"DR10"}]}]})json";
+const char *const configTemplate = R"json({"format":"fatek-gateway","version":1,
+  "prefix":"fatek","connections":[{"name":"line1","link":{"kind":"tcp","host":"127.0.0.1",
+  "protocol":"facon","timeoutMs":500,"retries":0},"watchLists":[{"file":"line1.json"}],
+  "allow":["R100..R199","Y0..Y7"],"statisticsIntervalMs":300}]})json";
+
+// Every message a subscriber got, in order, and the last one per topic.
+struct Inbox
+{
+    struct Entry
+    {
+        QString topic;
+        QByteArray payload;
+        bool retained = false;
+    };
+    QList<Entry> all;
+    QHash<QString, Entry> last;
+
+    void attach(MqttClient *client)
+    {
+        QObject::connect(client, &MqttClient::messageReceived,
+                         [this](const QString &topic, const QByteArray &payload, bool retained) {
+                             all.append({topic, payload, retained});
+                             last.insert(topic, {topic, payload, retained});
+                         });
+    }
+    std::optional<GatewayPayload::ItemValue> item(const QString &topic) const
+    {
+        return last.contains(topic) ? GatewayPayload::decodeItem(last.value(topic).payload)
+                                    : std::nullopt;
+    }
+    std::optional<LinkStatus> status(const QString &topic) const
+    {
+        if (!last.contains(topic))
+            return std::nullopt;
+        const auto s = GatewayPayload::decodeStatus(last.value(topic).payload);
+        return s ? std::optional<LinkStatus>(s->state) : std::nullopt;
+    }
+    std::optional<GatewayPayload::Reply> reply(const QString &topic) const
+    {
+        return last.contains(topic) ? GatewayPayload::decodeReply(last.value(topic).payload)
+                                    : std::nullopt;
+    }
+};
+
+} // namespace
+
+class TestGateway : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void valuesArriveRetained();
+    void allowlistedWriteReachesPlc();
+    void refusedWritesReachNothing();
+    void readOnlyRefusesEverything();
+    void brokerRestartRepublishes();
+    void publisherBoundsWhileBrokerAway();
+    void plcRestartGoesStaleThenGood();
+    void executableWillAndCleanStop();
+
+private:
+    QByteArray configJson(bool readOnly, int keepAliveSec = 30) const;
+    bool startGateway(bool readOnly);
+    std::unique_ptr<MqttClient> subscriber(Inbox *inbox);
+    QString topic(const char *address, int station = 1) const
+    {
+        return GatewayTopics::item(QStringLiteral("fatek"), QStringLiteral("line1"), station,
+                                   addr(address));
+    }
+    QString statusTopic() const
+    {
+        return GatewayTopics::status(QStringLiteral("fatek"), QStringLiteral("line1"));
+    }
+    int simWrites() const;
+
+    std::unique_ptr<QTemporaryDir> m_dir;
+    std::unique_ptr<SimulatedPlc> m_plc;
+    std::unique_ptr<SimServer> m_server;
+    std::unique_ptr<TestUtil::MosquittoBroker> m_broker;
+    std::unique_ptr<GatewayLink> m_link;
+    QStringList m_simLog;
+    QStringList m_gatewayLog;
+};
+
+void TestGateway::init()
+{
+    m_dir = std::make_unique<QTemporaryDir>();
+    QVERIFY(m_dir->isValid());
+    QFile list(m_dir->filePath(QStringLiteral("line1.json")));
+    QVERIFY(list.open(QIODevice::WriteOnly));
+    list.write(watchList);
+    list.close();
+    m_plc = std::make_unique<SimulatedPlc>(ModelProfile::fbs());
+    m_plc->setValue(addr("R100"), 1234);
+    const std::uint32_t bits = floatBits(12.5F);
+    m_plc->setValue(addr("R200"), bits & 0xFFFF); // low word first
+    m_plc->setValue(addr("R201"), bits >> 16);
+    m_plc->setValue(addr("Y0"), 1);
+    m_plc->setValue(addr("DR10"), 50);
+    m_server = std::make_unique<SimServer>(m_plc.get());
+    m_server->setVerbose(true);
+    m_simLog.clear();
+    m_gatewayLog.clear();
+    connect(m_server.get(), &SimServer::logLine, this,
+            [this](const QString &line) { m_simLog.append(line); });
+    QString error;
+    QVERIFY2(m_server->listenTcp(0, &error), qPrintable(error));
+    m_broker = std::make_unique<TestUtil::MosquittoBroker>();
+    QVERIFY2(m_broker->start(&error), qPrintable(error));
+}
+
+void TestGateway::cleanup()
+{
+    m_link.reset();
+    m_broker.reset();
+    m_server.reset();
+    m_plc.reset();
+    m_dir.reset();
+}
+
+QByteArray TestGateway::configJson(bool readOnly, int keepAliveSec) const
+{
+    QJsonObject json = QJsonDocument::fromJson(configTemplate).object();
+    json.insert(QStringLiteral("broker"),
+                QJsonObject{{QStringLiteral("url"), m_broker->url()},
+                            {QStringLiteral("keepAliveSec"), keepAliveSec}});
+    json.insert(QStringLiteral("readOnly"), readOnly);
+    QJsonObject connection = json.value(QStringLiteral("connections")).toArray().at(0).toObject();
+    QJsonObject link = connection.value(QStringLiteral("link")).toObject();
+    link.insert(QStringLiteral("port"), m_server->tcpPort());
+    connection.insert(QStringLiteral("link"), link);
+    json.insert(QStringLiteral("connections"), QJsonArray{connection});
+    return QJsonDocument(json).toJson();
+}
+
+bool TestGateway::startGateway(bool readOnly)
+{
+    Result<GatewayConfig> config = GatewayConfig::load(configJson(readOnly), m_dir->path());
+    if (!config) {
+        qWarning() << QString::fromStdString(config.error().text());
+        return false;
+    }
+    // Quick reconnects on both sides: the test waits for them.
+    config.value().broker.reconnectMinMs = 50;
+    config.value().broker.reconnectMaxMs = 500;
+    GatewayConnectionConfig connection = config->connections.at(0);
+    connection.link.reconnectMinMs = 50;
+    connection.link.reconnectMaxMs = 500;
+    m_link = std::make_unique<GatewayLink>(connection, config->prefix, config->broker,
+                                           config->readOnly);
+    connect(m_link.get(), &GatewayLink::logEvent, this, [this](const Message &event) {
+        m_gatewayLog.append(QString::fromStdString(english(event)));
+    });
+    Message error;
+    if (!m_link->start(&error)) {
+        qWarning() << QString::fromStdString(english(error));
+        return false;
+    }
+    return true;
+}
+
+std::unique_ptr<MqttClient> TestGateway::subscriber(Inbox *inbox)
+{
+    MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(m_broker->url());
+    settings.reconnectMinMs = 50;
+    settings.reconnectMaxMs = 500;
+    auto client = std::make_unique<MqttClient>(settings);
+    inbox->attach(client.get());
+    client->subscribe(QStringLiteral("fatek/#"), 1);
+    if (!client->open())
+        return nullptr;
+    return client;
+}
+
+// Write requests the simulator executed, from its own log ("[tcp ...] FACON write R100 = ...").
+int TestGateway::simWrites() const
+{
+    return static_cast<int>(m_simLog.filter(QStringLiteral(" write ")).size());
+}
+
+void TestGateway::valuesArriveRetained()
+{
+    QVERIFY(startGateway(false));
+    Inbox early;
+    const std::unique_ptr<MqttClient> earlyClient = subscriber(&early);
+    QVERIFY(earlyClient);
+    QTRY_COMPARE_WITH_TIMEOUT(early.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    // Every item came through the broker, so the broker holds them all (it stores a retained
+    // message before it forwards it).
+    QTRY_VERIFY_WITH_TIMEOUT(early.item(topic("R100")) && early.item(topic("R200"))
+                                 && early.item(topic("Y0")) && early.item(topic("R300"))
+                                 && early.item(topic("DR10")),
+                             Wait);
+
+    // A subscriber that comes later gets every item from the broker's retained store.
+    Inbox late;
+    const std::unique_ptr<MqttClient> second = subscriber(&late);
+    QVERIFY(second);
+    QTRY_VERIFY_WITH_TIMEOUT(late.item(topic("R100")) && late.item(topic("R200"))
+                                 && late.item(topic("Y0")) && late.item(topic("R300")),
+                             Wait);
+    // From the broker's store: the first message of each topic is marked retained.
+    for (const char *address : {"R100", "R200", "Y0", "R300"}) {
+        const auto first
+            = std::find_if(late.all.cbegin(), late.all.cend(),
+                           [&](const Inbox::Entry &e) { return e.topic == topic(address); });
+        QVERIFY2(first != late.all.cend() && first->retained, address);
+    }
+    const GatewayPayload::ItemValue r100 = *late.item(topic("R100"));
+    QCOMPARE(r100.quality, ValueQuality::Good);
+    QCOMPARE(r100.station, 1);
+    QCOMPARE(r100.address, addr("R100"));
+    QCOMPARE(r100.name, QStringLiteral("Speed"));
+    QCOMPARE(r100.text, QStringLiteral("1234"));
+    QCOMPARE(r100.words, std::vector<std::uint32_t>{1234});
+    const QJsonObject r100Json
+        = QJsonDocument::fromJson(late.last.value(topic("R100")).payload).object();
+    QCOMPARE(r100Json.value(QStringLiteral("value")).toDouble(), 1234.0);
+    QVERIFY(!r100Json.contains(QStringLiteral("error")));
+    const GatewayPayload::ItemValue r200 = *late.item(topic("R200"));
+    QCOMPARE(r200.format, DisplayFormat::Float32);
+    QCOMPARE(r200.text, QStringLiteral("12.5"));
+    const std::uint32_t bits = floatBits(12.5F);
+    QCOMPARE(r200.words, (std::vector<std::uint32_t>{bits & 0xFFFF, bits >> 16}));
+    QCOMPARE(late.item(topic("Y0"))->format, DisplayFormat::Bit);
+    QCOMPARE(late.item(topic("Y0"))->words, std::vector<std::uint32_t>{1});
+    QTRY_COMPARE_WITH_TIMEOUT(late.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    // A 32-bit register: value and text agree (no word swap the item did not ask for).
+    QTRY_VERIFY_WITH_TIMEOUT(late.item(topic("DR10")).has_value(), Wait);
+    QCOMPARE(late.item(topic("DR10"))->text, QStringLiteral("50"));
+    QCOMPARE(QJsonDocument::fromJson(late.last.value(topic("DR10")).payload)
+                 .object()
+                 .value(QStringLiteral("value"))
+                 .toDouble(),
+             50.0);
+
+    // A change is published; an unchanged value is not published again every cycle.
+    m_plc->setValue(addr("R100"), 4321);
+    QTRY_COMPARE_WITH_TIMEOUT(late.item(topic("R100"))->text, QStringLiteral("4321"), Wait);
+    const QString statistics
+        = GatewayTopics::statistics(QStringLiteral("fatek"), QStringLiteral("line1"));
+    QTRY_VERIFY_WITH_TIMEOUT(late.last.contains(statistics), Wait);
+    const QJsonObject stats = QJsonDocument::fromJson(late.last.value(statistics).payload).object();
+    QVERIFY(stats.value(QStringLiteral("session"))
+                .toObject()
+                .value(QStringLiteral("pollCycles"))
+                .toDouble()
+            > 0);
+    const qsizetype before = late.all.size();
+    const int cycles = static_cast<int>(m_link->session()->statistics().pollCycles);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        m_link->session()->statistics().pollCycles >= static_cast<quint64>(cycles + 5), Wait);
+    QByteArrayList republished;
+    for (qsizetype i = before; i < late.all.size(); ++i) {
+        if (late.all.at(i).topic == topic("R300"))
+            republished << late.all.at(i).payload;
+    }
+    QVERIFY2(republished.isEmpty(), republished.join('\n').constData());
+}
+
+void TestGateway::allowlistedWriteReachesPlc()
+{
+    QVERIFY(startGateway(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    QVERIFY(client->isConnected());
+    QCOMPARE(simWrites(), 0);
+
+    QVERIFY(client->publish(topic("R100") + QStringLiteral("/set"), R"({"value":"77","id":"w1"})",
+                            1, false));
+    const QString reply = topic("R100") + QStringLiteral("/reply");
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(reply).has_value(), Wait);
+    QVERIFY2(inbox.reply(reply)->ok, inbox.last.value(reply).payload.constData());
+    QCOMPARE(inbox.reply(reply)->id, QStringLiteral("w1"));
+    QCOMPARE(inbox.reply(reply)->value, QStringLiteral("77"));
+    QVERIFY(!inbox.last.value(reply).retained);
+    QCOMPARE(m_plc->value(addr("R100")), std::optional<std::uint32_t>(77));
+    QCOMPARE(simWrites(), 1);
+    // The new value comes back through the poll.
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R100"))->text, QStringLiteral("77"), Wait);
+
+    // Plain text on a discrete.
+    QVERIFY(client->publish(topic("Y3") + QStringLiteral("/set"), "ON", 1, false));
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(topic("Y3") + QStringLiteral("/reply")).has_value(), Wait);
+    QVERIFY(inbox.reply(topic("Y3") + QStringLiteral("/reply"))->ok);
+    QCOMPARE(m_plc->value(addr("Y3")), std::optional<std::uint32_t>(1));
+    QCOMPARE(simWrites(), 2);
+    QCOMPARE(m_link->statistics().writesAccepted, quint64(2));
+    QCOMPARE(m_link->statistics().writesRefused, quint64(0));
+    QVERIFY2(m_gatewayLog.contains(QStringLiteral("write station 1 R100 = \"77\" (id \"w1\"): "
+                                                  "written")),
+             qPrintable(m_gatewayLog.join(u'\n')));
+}
+
+void TestGateway::refusedWritesReachNothing()
+{
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    // A retained command waits in the broker before the gateway starts (MQTT marks a message
+    // retained only when it comes from the broker's store, on subscribing): it must not be carried
+    // out now, nor at every later restart.
+    QTRY_VERIFY_WITH_TIMEOUT(client->isConnected(), Wait);
+    QVERIFY(client->publish(topic("R153") + QStringLiteral("/set"), "7", 1, true));
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.last.contains(topic("R153") + QStringLiteral("/set")), Wait);
+    QVERIFY(startGateway(false));
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    const QString retainedReply = topic("R153") + QStringLiteral("/reply");
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(retainedReply).has_value(), Wait);
+    QVERIFY(!inbox.reply(retainedReply)->ok);
+    QCOMPARE(inbox.reply(retainedReply)->error.id, MsgId::GatewayWriteRetained);
+
+    struct Case
+    {
+        const char *address;
+        QByteArray payload;
+        bool retain;
+        MsgId expected;
+    };
+    const QList<Case> cases{
+        {"R300", R"({"value":"5","id":"outside"})", false, MsgId::GatewayWriteNotAllowed},
+        // A float over R199 spans R199 and R200: the second element is outside.
+        {"R199", R"({"value":"1.5","format":"float","id":"span"})", false,
+         MsgId::GatewayWriteNotAllowed},
+        {"R150", "{not json", false, MsgId::GatewaySetNotJson},
+        {"R151", R"({"id":"novalue"})", false, MsgId::GatewaySetNoValue},
+        {"R152", "twelve", false, MsgId::Text},
+        {"R154", QByteArray(GatewayLink::MaxCommandBytes + 1, 'x'), false,
+         MsgId::GatewayWriteTooLong},
+    };
+    for (const Case &c : cases) {
+        QVERIFY(client->publish(topic(c.address) + QStringLiteral("/set"), c.payload, 1, c.retain));
+        const QString reply = topic(c.address) + QStringLiteral("/reply");
+        QTRY_VERIFY2_WITH_TIMEOUT(inbox.reply(reply).has_value(), c.address, Wait);
+        QVERIFY2(!inbox.reply(reply)->ok, c.address);
+        if (c.expected != MsgId::Text)
+            QCOMPARE(inbox.reply(reply)->error.id, c.expected);
+        else
+            QVERIFY2(!inbox.reply(reply)->error.empty(), c.address);
+    }
+    QCOMPARE(inbox.reply(topic("R300") + QStringLiteral("/reply"))->id, QStringLiteral("outside"));
+    QCOMPARE(english(inbox.reply(topic("R199") + QStringLiteral("/reply"))->error),
+             std::string("Refused: R200 is not in this connection's write allowlist."));
+    // A topic with no item: counted and logged, nowhere to answer.
+    QVERIFY(client->publish(QStringLiteral("fatek/line1/1/NOPE/set"), "1", 1, false));
+    QTRY_COMPARE_WITH_TIMEOUT(m_link->statistics().writesRefused, quint64(cases.size() + 2), Wait);
+    QCOMPARE(m_link->statistics().writesAccepted, quint64(0));
+    QCOMPARE(simWrites(), 0);
+    QCOMPARE(m_plc->value(addr("R300")), std::optional<std::uint32_t>(0));
+    QCOMPARE(m_plc->value(addr("R153")), std::optional<std::uint32_t>(0));
+    // Still serving: an allowed write after the garbage works.
+    QVERIFY(client->publish(topic("R101") + QStringLiteral("/set"), "9", 1, false));
+    QTRY_COMPARE_WITH_TIMEOUT(m_plc->value(addr("R101")), std::optional<std::uint32_t>(9), Wait);
+    QCOMPARE(simWrites(), 1);
+}
+
+void TestGateway::readOnlyRefusesEverything()
+{
+    QVERIFY(startGateway(true));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    QVERIFY(m_link->session()->isReadOnly());
+    QVERIFY(client->publish(topic("R100") + QStringLiteral("/set"), R"({"value":"1","id":"ro"})", 1,
+                            false));
+    const QString reply = topic("R100") + QStringLiteral("/reply");
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(reply).has_value(), Wait);
+    QVERIFY(!inbox.reply(reply)->ok);
+    QCOMPARE(inbox.reply(reply)->id, QStringLiteral("ro"));
+    QCOMPARE(inbox.reply(reply)->error.id, MsgId::GatewayWriteReadOnly);
+    QCOMPARE(simWrites(), 0);
+    QCOMPARE(m_plc->value(addr("R100")), std::optional<std::uint32_t>(1234));
+    QVERIFY2(m_gatewayLog.contains(QStringLiteral("write station 1 R100 = \"1\" (id \"ro\"): "
+                                                  "Refused: the gateway is read-only.")),
+             qPrintable(m_gatewayLog.join(u'\n')));
+}
+
+void TestGateway::brokerRestartRepublishes()
+{
+    QVERIFY(startGateway(false));
+    {
+        Inbox inbox;
+        const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+        QVERIFY(client);
+        QTRY_VERIFY_WITH_TIMEOUT(inbox.item(topic("R300")).has_value(), Wait);
+    }
+    m_broker->kill(); // no persistence: every retained message is gone
+    // Changes while the broker is away wait; a value replaced before it could go is counted.
+    m_plc->setValue(addr("R100"), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(m_link->statistics().waiting > 0, Wait);
+    m_plc->setValue(addr("R100"), 2);
+    QTRY_VERIFY_WITH_TIMEOUT(m_link->statistics().superseded > 0, Wait);
+    QString error;
+    QVERIFY2(m_broker->start(&error), qPrintable(error));
+
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.item(topic("R100")) && inbox.item(topic("R200"))
+                                 && inbox.item(topic("Y0")) && inbox.item(topic("R300"))
+                                 && inbox.status(statusTopic()),
+                             Wait);
+    QCOMPARE(inbox.status(statusTopic()), std::optional(LinkStatus::Up));
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R100"))->text, QStringLiteral("2"), Wait);
+    QCOMPARE(inbox.item(topic("R200"))->text, QStringLiteral("12.5"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_link->statistics().waiting, quint64(0), Wait);
+    QVERIFY2(m_gatewayLog.filter(QStringLiteral("broker down")).size() >= 1,
+             qPrintable(m_gatewayLog.join(u'\n')));
+}
+
+void TestGateway::publisherBoundsWhileBrokerAway()
+{
+    MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(m_broker->url());
+    settings.reconnectMinMs = 50;
+    settings.reconnectMaxMs = 200;
+    m_broker->stop();
+    MqttClient client(settings);
+    QVERIFY(client.open());
+    GatewayPublisher publisher(&client);
+    GatewayPublisher::Limits limits;
+    limits.maxReplies = 10;
+    publisher.setLimits(limits);
+    const QString reply = QStringLiteral("fatek/t/1/R1/reply");
+    const QString item = QStringLiteral("fatek/t/1/R2");
+    for (int i = 0; i < 15; ++i)
+        publisher.publishReply(reply, QByteArray::number(i));
+    for (int i = 0; i < 5; ++i)
+        publisher.publishRetained(item, QByteArray::number(i));
+    // Bounded while the broker is away: the 5 oldest replies and 4 replaced values are gone,
+    // and counted.
+    QCOMPARE(publisher.counters().repliesDropped, quint64(5));
+    QCOMPARE(publisher.counters().superseded, quint64(4));
+    QCOMPARE(publisher.counters().published, quint64(0));
+    QCOMPARE(publisher.waiting(), 11);
+
+    QString error;
+    QVERIFY2(m_broker->start(&error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(publisher.waiting(), 0, Wait);
+    QCOMPARE(publisher.counters().published, quint64(11));
+    // Acknowledged (QoS 1): the broker holds it, so a reader that comes now gets it retained.
+    QTRY_COMPARE_WITH_TIMEOUT(client.outstanding(), 0, Wait);
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> reader = subscriber(&inbox);
+    QVERIFY(reader);
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.last.contains(item), Wait);
+    QCOMPARE(inbox.last.value(item).payload, QByteArray("4")); // only the newest went out
+    QVERIFY(inbox.last.value(item).retained);
+    // A reconnect sends the retained topic again (a broker without persistence lost it).
+    m_broker->kill();
+    QVERIFY2(m_broker->start(&error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(publisher.counters().published, quint64(12), Wait);
+}
+
+void TestGateway::plcRestartGoesStaleThenGood()
+{
+    QVERIFY(startGateway(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R100"))->quality, ValueQuality::Good, Wait);
+    const quint16 port = m_server->tcpPort();
+
+    m_server->close(); // the PLC goes away
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Down), Wait);
+    const qsizetype downAt = inbox.all.size();
+    QVERIFY(!GatewayPayload::decodeStatus(inbox.last.value(statusTopic()).payload)->reason.empty());
+    for (const char *address : {"R100", "R200", "Y0", "R300"}) {
+        QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic(address))->quality, ValueQuality::Stale, Wait);
+        QVERIFY2(!inbox.item(topic(address))->error.empty(), address);
+    }
+    QCOMPARE(inbox.item(topic("R100"))->text, QStringLiteral("1234")); // the last value, stale
+    // Changed while nobody can read it: only a read may show it as good.
+    m_plc->setValue(addr("R100"), 555);
+
+    QString error;
+    QVERIFY2(m_server->listenTcp(port, &error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R100"))->quality, ValueQuality::Good, Wait);
+    QCOMPARE(inbox.item(topic("R100"))->text, QStringLiteral("555"));
+    for (qsizetype i = downAt; i < inbox.all.size(); ++i) {
+        const Inbox::Entry &e = inbox.all.at(i);
+        if (e.topic != topic("R100"))
+            continue;
+        const auto value = GatewayPayload::decodeItem(e.payload);
+        QVERIFY(value);
+        if (value->quality == ValueQuality::Good)
+            QCOMPARE(value->text, QStringLiteral("555")); // never the old value as good
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R300"))->quality, ValueQuality::Good, Wait);
+}
+
+void TestGateway::executableWillAndCleanStop()
+{
+    const QString configPath = m_dir->filePath(QStringLiteral("gateway.json"));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    const auto run = [&](int keepAliveSec, QProcess *process) {
+        QFile file(configPath);
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(configJson(false, keepAliveSec));
+        file.close();
+        process->start(QStringLiteral(FATEK_GATEWAY_PATH), {configPath});
+        QVERIFY(process->waitForStarted(Wait));
+        QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    };
+
+    // SIGKILL: no chance to say goodbye; the broker publishes the will at 1.5 x keep-alive.
+    QProcess killed;
+    run(5, &killed);
+    if (QTest::currentTestFailed())
+        return;
+    killed.kill();
+    QVERIFY(killed.waitForFinished(Wait));
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Offline),
+                              Wait + 5000);
+    {
+        // The will is retained: a reader that comes later learns it too.
+        Inbox later;
+        const std::unique_ptr<MqttClient> reader = subscriber(&later);
+        QVERIFY(reader);
+        QTRY_COMPARE_WITH_TIMEOUT(later.status(statusTopic()), std::optional(LinkStatus::Offline),
+                                  Wait);
+        QVERIFY(later.last.value(statusTopic()).retained);
+    }
+
+    // SIGTERM: the gateway publishes offline itself at once (the will would take 90 s here).
+    QProcess stopped;
+    run(60, &stopped);
+    if (QTest::currentTestFailed())
+        return;
+    stopped.terminate();
+    QVERIFY(stopped.waitForFinished(Wait));
+    QCOMPARE(stopped.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(stopped.exitCode(), 0);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Offline),
+                              Wait);
+    const QString log = QString::fromUtf8(stopped.readAllStandardError());
+    QVERIFY2(log.contains(QStringLiteral("line1: PLC link connected")), qPrintable(log));
+    QVERIFY2(log.contains(QStringLiteral("line1: stopped (status offline)")), qPrintable(log));
+}
+
+QTEST_GUILESS_MAIN(TestGateway)
+#include "tst_gateway.moc"

@@ -1,0 +1,354 @@
+// The gateway's configuration file (issue 20): loading, every validation error named with its
+// place, and `fatek-gateway --check` (exit codes, summary, one clear error).
+#include "core/gateway/gatewayconfig.h"
+#include "testutil.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Fatek;
+
+class TestGatewayConfig : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void loadsEverything();
+    void allowlistMembership();
+    void errors_data();
+    void errors();
+    void passwordFile();
+    void checkValid();
+    void checkInvalid();
+    void checkUsage();
+
+private:
+    QString write(const QString &name, const QByteArray &content);
+
+    QTemporaryDir m_dir;
+};
+
+// After the test class: moc reads raw strings as ordinary ones and can lose its way in them.
+namespace {
+
+const char *const emptyList
+    = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[]})json";
+const char *const twiceList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
+  {"name":"A","items":[{"address":"R1"},{"address":"R2"},{"address":"R1","format":"hex"}]}]})json";
+const char *const badList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
+  {"name":"A","items":[{"address":"R1"},{"address":"R2"},{"address":"Q7"}]}]})json";
+
+const char *const watchList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
+  {"name":"Main","intervalMs":250,"items":[{"address":"R100"},{"address":"R200","format":"float"},
+   {"address":"Y0"}]},
+  {"name":"Slow","intervalMs":2000,"items":[{"address":"DR10","station":2}]}]})json";
+
+QJsonObject validConfig()
+{
+    return QJsonDocument::fromJson(R"json({"format":"fatek-gateway","version":1,
+      "broker":{"url":"mqtt://127.0.0.1:1883","keepAliveSec":20},
+      "prefix":"plant/fatek","readOnly":false,
+      "connections":[{"name":"line1",
+        "link":{"kind":"tcp","host":"10.0.0.5","port":500,"protocol":"binary","timeoutMs":800,
+                "retries":1},
+        "watchLists":[{"file":"line1.json"}],
+        "allow":["R100..R199","Y0..Y7","M10"],
+        "statisticsIntervalMs":2000},
+       {"name":"line2",
+        "link":{"kind":"serial","portName":"/dev/ttyUSB0","baud":19200,"format":"8N1",
+                "protocol":"facon"},
+        "watchLists":[{"file":"line1.json","intervalMs":1000}]}]})json")
+        .object();
+}
+
+// Replaces the value at a path of keys and indexes ("connections", 0, "link", "port").
+QJsonValue replaced(const QJsonValue &root, QVariantList path, const QJsonValue &value)
+{
+    if (path.isEmpty())
+        return value;
+    const QVariant key = path.takeFirst();
+    if (key.typeId() == QMetaType::Int) {
+        QJsonArray array = root.toArray();
+        array[key.toInt()] = replaced(array.at(key.toInt()), path, value);
+        return array;
+    }
+    QJsonObject object = root.toObject();
+    if (path.isEmpty() && value.isUndefined())
+        object.remove(key.toString());
+    else
+        object[key.toString()] = replaced(object.value(key.toString()), path, value);
+    return object;
+}
+
+} // namespace
+
+QString TestGatewayConfig::write(const QString &name, const QByteArray &content)
+{
+    QFile file(m_dir.filePath(name));
+    if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size())
+        return {};
+    return file.fileName();
+}
+
+void TestGatewayConfig::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    QVERIFY(!write(QStringLiteral("line1.json"), watchList).isEmpty());
+    QVERIFY(!write(QStringLiteral("empty.json"), emptyList).isEmpty());
+    QVERIFY(!write(QStringLiteral("twice.json"), twiceList).isEmpty());
+    QVERIFY(!write(QStringLiteral("bad.json"), badList).isEmpty());
+}
+
+void TestGatewayConfig::loadsEverything()
+{
+    const Result<GatewayConfig> config
+        = GatewayConfig::load(QJsonDocument(validConfig()).toJson(), m_dir.path());
+    QVERIFY2(config.ok(), config.ok() ? "" : config.error().text().c_str());
+    QCOMPARE(config->broker.host, QStringLiteral("127.0.0.1"));
+    QCOMPARE(config->broker.port, quint16(1883));
+    QCOMPARE(config->broker.keepAliveSec, 20);
+    QCOMPARE(config->prefix, QStringLiteral("plant/fatek"));
+    QCOMPARE(config->readOnly, false);
+    QCOMPARE(config->connections.size(), 2);
+    const GatewayConnectionConfig &line1 = config->connections.at(0);
+    QCOMPARE(line1.name, QStringLiteral("line1"));
+    QCOMPARE(line1.link.kind, LinkSettings::Kind::Tcp);
+    QCOMPARE(line1.link.host, QStringLiteral("10.0.0.5"));
+    QCOMPARE(line1.link.protocol, LinkSettings::ProtocolChoice::Binary);
+    QCOMPARE(line1.link.timeoutMs, 800);
+    QCOMPARE(line1.link.retries, 1);
+    QVERIFY(line1.link.autoReconnect);
+    QCOMPARE(line1.statisticsIntervalMs, 2000);
+    QCOMPARE(line1.tables.size(), 2);
+    QCOMPARE(line1.tables.at(0).intervalMs, 250); // the file's own intervals ...
+    QCOMPARE(line1.tables.at(1).intervalMs, 2000);
+    QCOMPARE(line1.itemCount(), 4);
+    QCOMPARE(line1.tables.at(1).items.at(0).station, quint8(2));
+    QCOMPARE(line1.allow.size(), std::size_t(3));
+    const GatewayConnectionConfig &line2 = config->connections.at(1);
+    QCOMPARE(line2.link.kind, LinkSettings::Kind::Serial);
+    QCOMPARE(line2.link.portName, QStringLiteral("/dev/ttyUSB0"));
+    QCOMPARE(line2.link.baudRate, 19200);
+    QCOMPARE(line2.link.serialFormat(), QStringLiteral("8N1"));
+    QCOMPARE(line2.tables.at(0).intervalMs, 1000); // ... or the override, for every table
+    QCOMPARE(line2.tables.at(1).intervalMs, 1000);
+    QVERIFY(line2.allow.empty());
+    QCOMPARE(line2.statisticsIntervalMs, 5000);
+}
+
+void TestGatewayConfig::allowlistMembership()
+{
+    GatewayConnectionConfig c;
+    for (const char *text : {"R100..R199", "WY0..WY32", "M10"})
+        c.allow.push_back(*AddressRange::parse(text));
+    QVERIFY(c.allows(*Address::parse("R100")));
+    QVERIFY(c.allows(*Address::parse("R199")));
+    QVERIFY(!c.allows(*Address::parse("R200")));
+    QVERIFY(!c.allows(*Address::parse("R99")));
+    QVERIFY(!c.allows(*Address::parse("D100"))); // another type, same number
+    QVERIFY(c.allows(*Address::parse("WY16")));
+    QVERIFY(c.allows(*Address::parse("WY32")));
+    QVERIFY(!c.allows(*Address::parse("WY48")));
+    QVERIFY(c.allows(*Address::parse("M10")));
+    QVERIFY(!c.allows(*Address::parse("M11")));
+    QVERIFY(!GatewayConnectionConfig{}.allows(*Address::parse("R100"))); // none: no writes
+}
+
+void TestGatewayConfig::errors_data()
+{
+    QTest::addColumn<QVariantList>("path");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<QString>("expected");
+    const QJsonValue absent = QJsonValue(QJsonValue::Undefined);
+    QTest::newRow("format") << QVariantList{"format"} << QJsonValue("fatek-studio-watchlist")
+                            << "Not a gateway configuration: \"format\" must be \"fatek-gateway\".";
+    QTest::newRow("version") << QVariantList{"version"} << QJsonValue(2)
+                             << "Configuration version 2 is not supported (this program reads "
+                                "version 1).";
+    QTest::newRow("no version") << QVariantList{"version"} << absent << "\"version\" is missing.";
+    QTest::newRow("prefix") << QVariantList{"prefix"} << QJsonValue("a/+/b")
+                            << "\"a/+/b\" is not a usable topic prefix: levels separated by '/', "
+                               "none empty, without '+' or '#'.";
+    QTest::newRow("readOnly type")
+        << QVariantList{"readOnly"} << QJsonValue("yes") << "\"readOnly\" must be true or false.";
+    QTest::newRow("broker url") << QVariantList{"broker", "url"} << QJsonValue("http://x")
+                                << "broker: \"http://x\" is not a broker address: write "
+                                   "mqtt://host:1883 or mqtts://user@host:8883.";
+    QTest::newRow("broker keepalive") << QVariantList{"broker", "keepAliveSec"} << QJsonValue(1)
+                                      << "broker: keepAliveSec 1 is out of range (5..65535)";
+    QTest::newRow("broker ca") << QVariantList{"broker", "caFile"} << QJsonValue("nothere.pem")
+                               << "broker: cannot read the TLS file";
+    QTest::newRow("password twice")
+        << QVariantList{"broker", "passwordFile"} << QJsonValue("pw")
+        << "broker: give the broker \"password\" or a \"passwordFile\", not both.";
+    QTest::newRow("no connections") << QVariantList{"connections"} << QJsonValue(QJsonArray())
+                                    << "No connections: the configuration needs at least one.";
+    QTest::newRow("bad name") << QVariantList{"connections", 1, "name"} << QJsonValue("line 2")
+                              << "connection 2 (line 2): \"line 2\" is not a usable connection "
+                                 "name";
+    QTest::newRow("numeric name") << QVariantList{"connections", 1, "name"} << QJsonValue("12")
+                                  << "connection 2 (12): \"12\" is not a usable connection name";
+    QTest::newRow("no name") << QVariantList{"connections", 1, "name"} << absent
+                             << "connection 2: \"name\" is missing.";
+    QTest::newRow("duplicate name")
+        << QVariantList{"connections", 1, "name"} << QJsonValue("line1")
+        << "connection 2 (line1): the connection name \"line1\" is used twice.";
+    QTest::newRow("no link") << QVariantList{"connections", 0, "link"} << absent
+                             << "connection 1 (line1): \"link\" is missing.";
+    QTest::newRow("host") << QVariantList{"connections", 0, "link", "host"} << QJsonValue(" ")
+                          << "connection 1 (line1): link: enter the PLC's IP address or host name.";
+    QTest::newRow("port range") << QVariantList{"connections", 0, "link", "port"}
+                                << QJsonValue(70000)
+                                << "connection 1 (line1): link: port 70000 is out of range "
+                                   "(1..65535)";
+    QTest::newRow("port type") << QVariantList{"connections", 0, "link", "port"}
+                               << QJsonValue("500")
+                               << "connection 1 (line1): link: \"port\" must be a whole number.";
+    QTest::newRow("kind") << QVariantList{"connections", 0, "link", "kind"} << QJsonValue("can")
+                          << "connection 1 (line1): link: \"can\" is not a link kind";
+    QTest::newRow("protocol") << QVariantList{"connections", 0, "link", "protocol"}
+                              << QJsonValue("modbus")
+                              << "connection 1 (line1): link: \"modbus\" is not a protocol";
+    QTest::newRow("serial format")
+        << QVariantList{"connections", 1, "link", "format"} << QJsonValue("9X1")
+        << "connection 2 (line2): link: serial format \"9X1\": data bits "
+           "must be 7 or 8, not 9.";
+    QTest::newRow("baud") << QVariantList{"connections", 1, "link", "baud"} << QJsonValue(300)
+                          << "connection 2 (line2): link: baud rate 300 is out of range (1200 to "
+                             "921600).";
+    QTest::newRow("timeout") << QVariantList{"connections", 0, "link", "timeoutMs"} << QJsonValue(0)
+                             << "connection 1 (line1): link: timeoutMs 0 is out of range "
+                                "(1..60000)";
+    QTest::newRow("allow") << QVariantList{"connections", 0, "allow", 1} << QJsonValue("Q1..Q9")
+                           << "connection 1 (line1): allow \"Q1..Q9\": ";
+    QTest::newRow("allow type") << QVariantList{"connections", 0, "allow", 0} << QJsonValue(5)
+                                << "connection 1 (line1): \"allow\" must be a string.";
+    QTest::newRow("statistics") << QVariantList{"connections", 0, "statisticsIntervalMs"}
+                                << QJsonValue(5)
+                                << "connection 1 (line1): statisticsIntervalMs 5 is out of range";
+    QTest::newRow("no watch list")
+        << QVariantList{"connections", 0, "watchLists"} << QJsonValue(QJsonArray())
+        << "connection 1 (line1): nothing to watch: give at least one "
+           "watch list with items.";
+    QTest::newRow("empty watch list")
+        << QVariantList{"connections", 0, "watchLists", 0, "file"} << QJsonValue("empty.json")
+        << "connection 1 (line1): nothing to watch";
+    QTest::newRow("missing watch list")
+        << QVariantList{"connections", 0, "watchLists", 0, "file"} << QJsonValue("gone.json")
+        << "connection 1 (line1): watch list gone.json: ";
+    QTest::newRow("bad item") << QVariantList{"connections", 0, "watchLists", 0, "file"}
+                              << QJsonValue("bad.json")
+                              << "connection 1 (line1): watch list bad.json: table 1, item 3: ";
+    QTest::newRow("item twice") << QVariantList{"connections", 0, "watchLists", 0, "file"}
+                                << QJsonValue("twice.json")
+                                << "connection 1 (line1): table 1, item 3: station 1 R1 is "
+                                   "watched twice (each address has one topic)";
+    QTest::newRow("interval") << QVariantList{"connections", 0, "watchLists", 0, "intervalMs"}
+                              << QJsonValue(1)
+                              << "connection 1 (line1): watch list 1: intervalMs 1 is out of "
+                                 "range (10..3600000)";
+}
+
+void TestGatewayConfig::errors()
+{
+    QFETCH(QVariantList, path);
+    QFETCH(QJsonValue, value);
+    QFETCH(QString, expected);
+    QJsonObject json = validConfig();
+    if (QTest::currentDataTag() == QByteArray("password twice"))
+        json = replaced(json, {"broker", "password"}, QJsonValue("x")).toObject();
+    json = replaced(json, path, value).toObject();
+    const Result<GatewayConfig> config
+        = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());
+    QVERIFY(!config.ok());
+    const QString text = QString::fromStdString(config.error().text());
+    QVERIFY2(text.startsWith(expected), qPrintable(text));
+}
+
+void TestGatewayConfig::passwordFile()
+{
+    const QString file = write(QStringLiteral("secret.txt"), "s3cret\n");
+    QVERIFY(!file.isEmpty());
+    QJsonObject json = replaced(validConfig(), {"broker", "username"}, QJsonValue("op")).toObject();
+    json = replaced(json, {"broker", "passwordFile"}, QJsonValue("secret.txt")).toObject();
+    const Result<GatewayConfig> config
+        = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());
+    QVERIFY2(config.ok(), config.ok() ? "" : config.error().text().c_str());
+    QCOMPARE(config->broker.username, QStringLiteral("op"));
+    QCOMPARE(config->broker.password, QStringLiteral("s3cret"));
+}
+
+void TestGatewayConfig::checkValid()
+{
+    const QString path
+        = write(QStringLiteral("gateway.json"), QJsonDocument(validConfig()).toJson());
+    TestUtil::ProgramRun run
+        = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--check", path});
+    QCOMPARE(run.code, 0);
+    QVERIFY2(run.err.isEmpty(), qPrintable(run.err));
+    const QStringList lines = run.lines();
+    QCOMPARE(lines.value(0), path + QStringLiteral(": OK"));
+    QVERIFY2(lines.contains(QStringLiteral("broker     mqtt://127.0.0.1")), qPrintable(run.out));
+    QVERIFY2(lines.contains(QStringLiteral(
+                 "connection line1: TCP 10.0.0.5:500, binary, 4 items in 2 tables, writes "
+                 "allowed: R100-199, Y0-7, M10")),
+             qPrintable(run.out));
+    QVERIFY2(run.out.contains(QStringLiteral("connection line2: "))
+                 && run.out.contains(QStringLiteral("writes allowed: none (no writes)")),
+             qPrintable(run.out));
+
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH),
+                               {"--check", "--read-only", path});
+    QCOMPARE(run.code, 0);
+    QVERIFY2(run.lines().contains(QStringLiteral("read-only  yes")), qPrintable(run.out));
+    QVERIFY(!run.out.contains(QStringLiteral("R100-199")));
+}
+
+void TestGatewayConfig::checkInvalid()
+{
+    const QString path = write(
+        QStringLiteral("bad-port.json"),
+        QJsonDocument(replaced(validConfig(), {"connections", 0, "link", "port"}, 70000).toObject())
+            .toJson());
+    TestUtil::ProgramRun run
+        = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--check", path});
+    QCOMPARE(run.code, 2);
+    QVERIFY(run.out.isEmpty());
+    QCOMPARE(run.err.trimmed(), QStringLiteral("fatek-gateway: ") + path
+                                    + QStringLiteral(": connection 1 (line1): link: port 70000 "
+                                                     "is out of range (1..65535)"));
+    QCOMPARE(run.err.count(u'\n'), 1); // one line
+
+    const QString garbage = write(QStringLiteral("garbage.json"), "{\"format\":");
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--check", garbage});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(run.err.contains(QStringLiteral("The configuration is not a JSON object")),
+             qPrintable(run.err));
+
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH),
+                               {"--check", m_dir.filePath(QStringLiteral("missing.json"))});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(run.err.contains(QStringLiteral("Cannot read ")), qPrintable(run.err));
+}
+
+void TestGatewayConfig::checkUsage()
+{
+    TestUtil::ProgramRun run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(run.err.contains(QStringLiteral("give one configuration file")), qPrintable(run.err));
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--help"});
+    QCOMPARE(run.code, 0);
+    for (const char *option : {"--check", "--read-only", "--version"})
+        QVERIFY2(run.out.contains(QLatin1StringView(option)), option);
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--version"});
+    QCOMPARE(run.code, 0);
+    QVERIFY(run.out.startsWith(QStringLiteral("fatek-gateway ")));
+}
+
+QTEST_GUILESS_MAIN(TestGatewayConfig)
+#include "tst_gatewayconfig.moc"
