@@ -48,12 +48,14 @@ struct Options
     bool quick = false; // shorter runs (sanitizer builds, smoke checks)
 };
 
-// The five figures of the bench; each adds its rows and results.
+// The figures of the bench; each adds its rows and results.
 void runPacking(const Options &options, Report &report);
 void runSerialCycle(const Options &options, Report &report);
 void runTcp(const Options &options, Report &report);
 void runUiLoad(const Options &options, Report &report);
 void runCodec(const Options &options, Report &report);
+// fatek-gateway: 50 PLCs x 200 items at 1 Hz, 10 x 1000 at 10 Hz (issue 20).
+void runGateway(const Options &options, Report &report);
 
 QString fmt(double value, int decimals = 2);
 QString ratioText(double value, double base);

@@ -1520,6 +1520,8 @@
         <message>
             <source>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</source>
             <translation>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</translation>
+        </message>
+        <message>
             <source>The configuration is not a JSON object: %1</source>
             <translation>The configuration is not a JSON object: %1</translation>
         </message>

@@ -1520,6 +1520,8 @@
         <message>
             <source>&quot;%1&quot; is not a gateway connection name: 1 to 64 letters, digits, -, _ or ., and not a number.</source>
             <translation>「%1」不是閘道器連線名稱：須為 1 至 64 個字母、數字、-、_ 或 .，且不可為純數字。</translation>
+        </message>
+        <message>
             <source>The configuration is not a JSON object: %1</source>
             <translation>設定不是 JSON 物件：%1</translation>
         </message>
