@@ -8,6 +8,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <cstring>
 #include <span>
 
 namespace TestUtil {
@@ -18,6 +19,20 @@ struct Vector
     Fatek::Bytes query;
     Fatek::Bytes response;
 };
+
+// "R100" -> the address (the text must parse: a test's own constant).
+inline Fatek::Address addr(const char *text)
+{
+    return *Fatek::Address::parse(text);
+}
+
+// The IEEE-754 bits of a float, as a float over R(n) holds them (low word in R(n)).
+inline std::uint32_t floatBits(float value)
+{
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
 
 // Frames of tests/data/vectors.json for "binary" or "facon".
 QList<Vector> loadVectors(const QString &protocol);

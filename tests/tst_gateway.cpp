@@ -11,6 +11,7 @@
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
 #include "mosquittobroker.h"
+#include "testutil.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -26,22 +27,12 @@
 
 using namespace Fatek;
 using GatewayPayload::LinkStatus;
+using TestUtil::addr;
+using TestUtil::floatBits;
 
 namespace {
 
 constexpr int Wait = 10000; // QTRY timeouts: generous for a loaded 2-core machine under TSan
-
-Address addr(const char *text)
-{
-    return *Address::parse(text);
-}
-
-std::uint32_t floatBits(float value)
-{
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
 
 const char *const watchList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
   {"name":"Main","intervalMs":100,"items":[{"address":"R100","name":"Speed"},

@@ -6,6 +6,7 @@
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
 #include "mosquittobroker.h"
+#include "testutil.h"
 
 #include <QFile>
 #include <QHash>
@@ -17,15 +18,11 @@
 #include <cstring>
 
 using namespace Fatek;
+using TestUtil::addr;
 
 namespace {
 
 constexpr int Wait = 15000; // QTRY timeouts: generous for a loaded 2-core machine under TSan
-
-Address addr(const char *text)
-{
-    return *Address::parse(text);
-}
 
 const char *const watchList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
   {"name":"Main","intervalMs":100,"items":[{"address":"R100","format":"float","name":"Level"},

@@ -5,6 +5,7 @@
 #include "core/session/session.h"
 #include "gatewaypeer.h"
 #include "mosquittobroker.h"
+#include "testutil.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -12,6 +13,8 @@
 #include <cstring>
 
 using namespace Fatek;
+using TestUtil::addr;
+using TestUtil::floatBits;
 using LinkStatus = GatewayPayload::LinkStatus;
 
 namespace {
@@ -19,18 +22,6 @@ namespace {
 const QString prefix = QStringLiteral("plant/fatek");
 const QString line = QStringLiteral("line1");
 constexpr int timeoutMs = 10000;
-
-Address addr(const char *text)
-{
-    return *Address::parse(text);
-}
-
-std::uint32_t floatBits(float value)
-{
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
 
 WatchItemSpec item(const char *address, DisplayFormat format, quint8 station = 1)
 {

@@ -6,6 +6,7 @@
 #include "core/mqtt/mqttclient.h"
 #include "core/watch/itemvalues.h"
 #include "mosquittobroker.h"
+#include "testutil.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -17,20 +18,10 @@
 #include <cstring>
 
 using namespace Fatek;
+using TestUtil::addr;
+using TestUtil::floatBits;
 
 namespace {
-
-Address addr(const char *text)
-{
-    return *Address::parse(text);
-}
-
-std::uint32_t floatBits(float value)
-{
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
 
 // Messages received by a client, by topic (the last one wins, as a retained topic reads).
 struct Inbox

@@ -31,19 +31,13 @@
 #include <cstring>
 
 using namespace Fatek;
+using TestUtil::floatBits;
 using UiTestUtil::answerModal;
 
 namespace {
 
 constexpr int longWait = 10000;
 constexpr int keyDelayMs = 40; // a person typing, quickly
-
-std::uint32_t floatBits(float value)
-{
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
 
 WatchItemSpec item(const char *address, DisplayFormat format)
 {
