@@ -10,6 +10,7 @@
 #include <QDateTime>
 #include <QTextStream>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -106,14 +107,23 @@ int main(int argc, char *argv[])
         return 0;
     }
 
+    // Link i of n opens i/n of the shortest interval (at most 1 s) after the first, so that their
+    // poll cycles, and the bursts of publications they cause, are spread over the interval.
+    int shortestMs = 1000;
+    for (const GatewayConnectionConfig &c : config.connections) {
+        for (const WatchTableSpec &table : c.tables)
+            shortestMs = std::min(shortestMs, table.intervalMs);
+    }
+    const auto linkCount = static_cast<int>(config.connections.size());
     std::vector<std::unique_ptr<GatewayLink>> links;
     for (const GatewayConnectionConfig &c : config.connections) {
+        const int pollDelayMs = static_cast<int>(links.size()) * shortestMs / linkCount;
         auto link = std::make_unique<GatewayLink>(c, config.prefix, config.broker, config.readOnly);
         const QString name = c.name;
         QObject::connect(link.get(), &GatewayLink::logEvent,
                          [name](const Message &event) { logLine(name, event); });
         Message error;
-        if (!link->start(&error)) {
+        if (!link->start(&error, pollDelayMs)) {
             err() << "fatek-gateway: " << name << ": " << QString::fromStdString(english(error))
                   << Qt::endl;
             return 2;

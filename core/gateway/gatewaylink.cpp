@@ -82,14 +82,21 @@ GatewayLink::~GatewayLink()
     disconnect(m_client, nullptr, this, nullptr);
 }
 
-bool GatewayLink::start(Message *error)
+bool GatewayLink::start(Message *error, int pollDelayMs)
 {
     if (!m_client->open()) {
         *error = m_client->openError();
         return false;
     }
     publishStatus(LinkStatus::Connecting, {});
-    m_session->open();
+    if (pollDelayMs > 0) {
+        QTimer::singleShot(pollDelayMs, this, [this] {
+            if (!m_stopping)
+                m_session->open();
+        });
+    } else {
+        m_session->open();
+    }
     m_statisticsTimer.start();
     return true;
 }
@@ -207,7 +214,8 @@ void GatewayLink::publishItem(const Item &item)
 {
     m_publisher->publishRetained(
         item.topic,
-        GatewayPayload::encodeItem(item.values, item.words, item.quality, item.time, item.error));
+        GatewayPayload::encodeItem(item.values, item.words, item.quality, item.time, item.error),
+        0);
 }
 
 void GatewayLink::onLinkState(LinkState state, const Message &reason)

@@ -47,8 +47,10 @@ public:
 
     QString name() const { return m_config.name; }
     // Opens the PLC link and the broker connection; false (nothing started) when the broker
-    // settings are not usable, with `error` saying why.
-    bool start(Message *error);
+    // settings are not usable, with `error` saying why. The PLC link opens `pollDelayMs` later:
+    // the gateway spreads its links' poll cycles over the interval instead of polling (and
+    // publishing) all of them in the same instant (docs/performance.md).
+    bool start(Message *error, int pollDelayMs = 0);
     // Publishes the offline status, waits at most `timeoutMs` for the broker to take it, then
     // disconnects and closes the PLC link (accepted writes drain first); stopped() when done.
     void stop(int timeoutMs = 3000);

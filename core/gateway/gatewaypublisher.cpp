@@ -14,8 +14,9 @@ GatewayPublisher::GatewayPublisher(MqttClient *client, QObject *parent)
     connect(client, &MqttClient::connected, this, &GatewayPublisher::onConnected);
 }
 
-void GatewayPublisher::publishRetained(const QString &topic, const QByteArray &payload)
+void GatewayPublisher::publishRetained(const QString &topic, const QByteArray &payload, int qos)
 {
+    m_qos.insert(topic, qos);
     if (m_dirty.contains(topic))
         ++m_counters.superseded;
     m_retained.insert(topic, payload);
@@ -51,7 +52,7 @@ void GatewayPublisher::flush()
     }
     while (!m_dirty.isEmpty() && m_client->outstanding() < m_limits.maxOutstanding) {
         const QString topic = *m_dirty.cbegin();
-        if (!m_client->publish(topic, m_retained.value(topic), 1, true))
+        if (!m_client->publish(topic, m_retained.value(topic), m_qos.value(topic, 1), true))
             return;
         m_dirty.remove(topic);
         ++m_counters.published;

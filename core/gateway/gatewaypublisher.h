@@ -40,8 +40,10 @@ public:
     explicit GatewayPublisher(MqttClient *client, QObject *parent = nullptr);
 
     void setLimits(const Limits &limits) { m_limits = limits; }
-    // The topic's new retained state (QoS 1).
-    void publishRetained(const QString &topic, const QByteArray &payload);
+    // The topic's new retained state. Item values go with QoS 0: a newer value supersedes a lost
+    // one, every topic is sent again after a reconnect, and QoS 1's acknowledgements would double
+    // the broker's work at plant rates (docs/performance.md). Status and statistics keep QoS 1.
+    void publishRetained(const QString &topic, const QByteArray &payload, int qos = 1);
     // An answer to a command (QoS 1, not retained).
     void publishReply(const QString &topic, const QByteArray &payload);
     // Messages waiting here (retained topics not yet sent, replies).
@@ -57,6 +59,7 @@ private:
     Limits m_limits;
     Counters m_counters;
     QHash<QString, QByteArray> m_retained; // every retained topic's latest payload
+    QHash<QString, int> m_qos;             // ... and its QoS
     QSet<QString> m_dirty;                 // retained topics not sent since they changed
     std::deque<std::pair<QString, QByteArray>> m_replies;
     QTimer m_retry; // flush again while held back by the outstanding bound
