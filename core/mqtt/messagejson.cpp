@@ -53,7 +53,7 @@ std::optional<Message> MessageJson::fromJson(const QJsonObject &json)
     if (!id || args.size() != messageArgCount(*id))
         return fallback();
     Message message{*id, {}};
-    for (const QJsonValue &arg : args) {
+    for (const auto &arg : args) {
         if (arg.isObject()) {
             std::optional<Message> nested = fromJson(arg.toObject());
             if (!nested)
