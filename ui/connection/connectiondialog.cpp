@@ -132,7 +132,10 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     auto *caRow = new QHBoxLayout;
     caRow->addWidget(m_caFile, 1);
     caRow->addWidget(browseCa);
-    gatewayForm->addRow(tr("TLS C&A file:"), caRow);
+    // A row of a layout gets no buddy from addRow: without one the label shows its "&" as text.
+    auto *caLabel = new QLabel(tr("TLS C&A file:"), gatewayPage);
+    caLabel->setBuddy(m_caFile);
+    gatewayForm->addRow(caLabel, caRow);
     connect(browseCa, &QPushButton::clicked, this, [this] {
         const QString file
             = QFileDialog::getOpenFileName(this, tr("CA Certificate"), m_caFile->text(),
