@@ -7,6 +7,8 @@
 #include <QTcpSocket>
 #include <QThread>
 
+#include <unistd.h>
+
 namespace TestUtil {
 
 MosquittoBroker::MosquittoBroker() = default;
@@ -77,6 +79,10 @@ bool MosquittoBroker::start(QString *error, const QString &extraConfig)
                                   "max_queued_messages 100000\n")
                        .arg(m_port)
                        .arg(m_dir.filePath(QStringLiteral("mosquitto.log")));
+    // Started as root, mosquitto switches to the user "mosquitto", which cannot write the log in
+    // our private directory; it then resets every connection (seen in a fresh Debian root).
+    if (::geteuid() == 0)
+        text += QStringLiteral("user root\n");
     if (!extraConfig.contains(QStringLiteral("allow_anonymous")))
         text += QStringLiteral("allow_anonymous true\n");
     text += extraConfig + u'\n';
