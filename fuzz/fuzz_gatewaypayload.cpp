@@ -1,11 +1,13 @@
 // What an MQTT peer sends the gateway or the GUI, on arbitrary bytes: item payloads, write
 // commands, status and reply payloads, topics. The first byte picks the decoder. Whatever a
 // decoder accepts is consistent (words within an item's reach, a station in range) and encodes back
-// to what decodes the same; nothing crashes or hangs on garbage.
+// to what decodes the same (an item to exactly Qt's JSON text); nothing crashes or hangs on
+// garbage.
 #include "core/mqtt/gatewaypayload.h"
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/messagejson.h"
 #include "core/watch/itemvalues.h"
+#include "core/watch/watchlist.h"
 
 #include <QJsonDocument>
 
@@ -26,6 +28,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             return 0;
         if (item->station < 0 || item->station > 255
             || item->words.size() > std::size_t(ItemValues::MaxElements))
+            std::abort();
+        // Encoded again (names and texts of any characters), it is exactly Qt's JSON text of
+        // itself and keeps the name.
+        WatchItemSpec spec;
+        spec.address = item->address;
+        spec.station = static_cast<quint8>(item->station);
+        spec.format = item->format;
+        spec.swapWords = item->swapWords;
+        spec.name = item->name;
+        if (!WatchList::validateEntry(spec))
+            return 0;
+        const ItemValues values(spec);
+        if (static_cast<int>(item->words.size()) != values.elementCount())
+            return 0;
+        const QByteArray again = GatewayPayload::encodeItem(values, item->words, item->quality,
+                                                            item->time, item->error);
+        const auto back = GatewayPayload::decodeItem(again);
+        if (QJsonDocument::fromJson(again).toJson(QJsonDocument::Compact) != again || !back
+            || back->name != item->name || back->words != item->words)
             std::abort();
         break;
     }

@@ -66,6 +66,8 @@ private Q_SLOTS:
     void itemPayloadFloat();
     void itemPayloadSignedBitAndNan();
     void itemPayloadRejectsGarbage();
+    void itemPayloadIsQtsJson_data();
+    void itemPayloadIsQtsJson();
     void setCommands();
     void replyAndStatusRoundTrip();
 
@@ -288,6 +290,86 @@ void TestMqtt::itemPayloadRejectsGarbage()
           R"({"station":1,"address":"R1","quality":"good","format":"signed","words":[1,2,3,4,5]})",
           R"({"station":300,"address":"R1","quality":"good","format":"signed","words":[1]})"})
         QVERIFY2(!GatewayPayload::decodeItem(QByteArray(payload)), payload);
+}
+
+void TestMqtt::itemPayloadIsQtsJson_data()
+{
+    QTest::addColumn<QString>("address");
+    QTest::addColumn<DisplayFormat>("format");
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<std::vector<std::uint32_t>>("words");
+    QTest::addColumn<int>("quality");
+
+    const QString awkward = QStringLiteral("Tank \"A\" \\ level\n\t") + QChar(0x01) + QChar(0x7F)
+                            + QStringLiteral(" é 漢 😀 ") + QChar(0xD800) + QStringLiteral("end");
+    const std::uint32_t f = floatBits(12.5f);
+    QTest::newRow("float, awkward name")
+        << "R100" << DisplayFormat::Float32 << awkward
+        << std::vector<std::uint32_t>{f & 0xFFFF, f >> 16} << int(ValueQuality::Good);
+    const std::uint32_t tiny = floatBits(-3.75e-5f);
+    QTest::newRow("float, small") << "D10" << DisplayFormat::Float32 << QString()
+                                  << std::vector<std::uint32_t>{tiny & 0xFFFF, tiny >> 16}
+                                  << int(ValueQuality::Good);
+    const std::uint32_t large = floatBits(1e17f);
+    QTest::newRow("float, large integral")
+        << "R12" << DisplayFormat::Float32 << QString()
+        << std::vector<std::uint32_t>{large & 0xFFFF, large >> 16} << int(ValueQuality::Good);
+    QTest::newRow("float NaN") << "R0" << DisplayFormat::Float32 << QStringLiteral("n")
+                               << std::vector<std::uint32_t>{0x0000, 0x7FC0}
+                               << int(ValueQuality::Good);
+    QTest::newRow("double 1e20") << "R20" << DisplayFormat::Double64 << QStringLiteral("big")
+                                 << std::vector<std::uint32_t>{0x0000, 0x1E44, 0xB5A5, 0x4415}
+                                 << int(ValueQuality::Good);
+    QTest::newRow("unsigned 32") << "DR30" << DisplayFormat::Unsigned << QString()
+                                 << std::vector<std::uint32_t>{0xFFFFFFFF}
+                                 << int(ValueQuality::Good);
+    QTest::newRow("signed") << "R5" << DisplayFormat::Signed << QString()
+                            << std::vector<std::uint32_t>{0xFFFB} << int(ValueQuality::Good);
+    QTest::newRow("hex") << "R6" << DisplayFormat::Hex << QString()
+                         << std::vector<std::uint32_t>{0xBEEF} << int(ValueQuality::Good);
+    QTest::newRow("bcd") << "R7" << DisplayFormat::Bcd << QString()
+                         << std::vector<std::uint32_t>{0x1234} << int(ValueQuality::Good);
+    QTest::newRow("ascii, quote and tab")
+        << "R8" << DisplayFormat::Ascii << QString() << std::vector<std::uint32_t>{0x2209}
+        << int(ValueQuality::Good);
+    QTest::newRow("bit, stale with reason")
+        << "Y3" << DisplayFormat::Bit << QStringLiteral("lamp") << std::vector<std::uint32_t>{1}
+        << int(ValueQuality::Stale);
+    QTest::newRow("error with reason") << "R9" << DisplayFormat::Signed << QString()
+                                       << std::vector<std::uint32_t>{0} << int(ValueQuality::Error);
+}
+
+// The encoder writes JSON text itself: it must be what QJsonDocument writes again after reading it,
+// byte for byte (valid JSON, keys sorted, same escapes and number forms).
+void TestMqtt::itemPayloadIsQtsJson()
+{
+    QFETCH(QString, address);
+    QFETCH(DisplayFormat, format);
+    QFETCH(QString, name);
+    QFETCH(std::vector<std::uint32_t>, words);
+    QFETCH(int, quality);
+    WatchItemSpec spec;
+    spec.address = addr(address.toLatin1().constData());
+    spec.format = format;
+    spec.name = name;
+    spec.station = 7;
+    const ItemValues item(spec);
+    QCOMPARE(static_cast<int>(words.size()), item.elementCount());
+    const Message why
+        = msg<MsgId::MqttLinkLost>("mqtt://b\"roker", Message::text("Connection reset"));
+    const QByteArray payload
+        = GatewayPayload::encodeItem(item, words, static_cast<ValueQuality>(quality),
+                                     QDateTime::fromMSecsSinceEpoch(1764111600123, Qt::UTC), why);
+    QJsonParseError error{};
+    const QJsonDocument document = QJsonDocument::fromJson(payload, &error);
+    QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
+    QCOMPARE(document.toJson(QJsonDocument::Compact), payload);
+    const auto decoded = GatewayPayload::decodeItem(payload);
+    QVERIFY(decoded);
+    QCOMPARE(decoded->name, name);
+    QCOMPARE(decoded->words, words);
+    QCOMPARE(decoded->text, item.text(item.join(words)));
+    QCOMPARE(decoded->error == why, quality != int(ValueQuality::Good));
 }
 
 void TestMqtt::setCommands()

@@ -73,6 +73,9 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
     connect(&m_statisticsTimer, &QTimer::timeout, this, &GatewayLink::publishStatistics);
     m_stopTimer.setInterval(20);
     connect(&m_stopTimer, &QTimer::timeout, this, &GatewayLink::checkStopped);
+    m_publishRetry.setInterval(5);
+    m_publishRetry.setSingleShot(true);
+    connect(&m_publishRetry, &QTimer::timeout, this, &GatewayLink::publishDirty);
 }
 
 GatewayLink::~GatewayLink()
@@ -108,6 +111,10 @@ void GatewayLink::stop(int timeoutMs)
     m_stopping = true;
     m_statisticsTimer.stop();
     m_session->setWatchList({});
+    // What was read goes out before the offline status (the publisher keeps it meanwhile).
+    m_publishRetry.stop();
+    while (!m_dirty.empty())
+        publishNextDirty();
     publishStatistics();
     publishStatus(LinkStatus::Offline, {});
     m_stopTimeoutMs = timeoutMs;
@@ -137,7 +144,7 @@ GatewayStatistics GatewayLink::statistics() const
     GatewayStatistics s = m_counters;
     const GatewayPublisher::Counters c = m_publisher->counters();
     s.published = c.published;
-    s.superseded = c.superseded;
+    s.superseded = c.superseded + m_coalesced;
     s.repliesDropped = c.repliesDropped;
     s.waiting = static_cast<quint64>(m_publisher->waiting());
     return s;
@@ -190,14 +197,15 @@ void GatewayLink::onValues(const QList<WatchValue> &values)
             g.quality = ValueQuality::Stale;
             g.error = msg<MsgId::GatewayNoValueThisCycle>();
         }
-        update(item, std::vector<std::uint32_t>(g.words.begin(), g.words.begin() + count),
+        update(it.key(), std::vector<std::uint32_t>(g.words.begin(), g.words.begin() + count),
                g.quality, g.error, g.time);
     }
 }
 
-void GatewayLink::update(Item &item, const std::vector<std::uint32_t> &words, ValueQuality quality,
-                         const Message &error, const QDateTime &time)
+void GatewayLink::update(std::size_t index, const std::vector<std::uint32_t> &words,
+                         ValueQuality quality, const Message &error, const QDateTime &time)
 {
+    Item &item = m_items[index];
     const bool changed = !item.published || words != item.words || quality != item.quality
                          || (quality == ValueQuality::Error && error != item.error);
     if (!changed)
@@ -207,6 +215,44 @@ void GatewayLink::update(Item &item, const std::vector<std::uint32_t> &words, Va
     item.error = error;
     item.time = time.isValid() ? time : QDateTime::currentDateTimeUtc();
     item.published = true;
+    markDirty(index);
+}
+
+void GatewayLink::markDirty(std::size_t index)
+{
+    Item &item = m_items[index];
+    if (item.dirty) {
+        ++m_coalesced; // a newer state replaces one not yet encoded
+        return;
+    }
+    item.dirty = true;
+    m_dirty.push_back(index);
+    if (!m_publishQueued) {
+        m_publishQueued = true;
+        QMetaObject::invokeMethod(this, &GatewayLink::publishDirty, Qt::QueuedConnection);
+    }
+}
+
+void GatewayLink::publishDirty()
+{
+    // Once per batch of updates, and only while the broker connection takes more: beyond that the
+    // items stay here, each with only its newest state, encoded when there is room (the oldest
+    // change first). Under overload the gateway thus publishes fewer, newer values instead of
+    // queueing every poll cycle (docs/performance.md).
+    m_publishQueued = false;
+    if (m_stopping)
+        return;
+    while (!m_dirty.empty() && m_publisher->hasRoom())
+        publishNextDirty();
+    if (!m_dirty.empty() && !m_publishRetry.isActive())
+        m_publishRetry.start();
+}
+
+void GatewayLink::publishNextDirty()
+{
+    Item &item = m_items[m_dirty.front()];
+    m_dirty.pop_front();
+    item.dirty = false;
     publishItem(item);
 }
 
@@ -233,14 +279,15 @@ void GatewayLink::onLinkState(LinkState state, const Message &reason)
         Q_EMIT logEvent(msg<MsgId::GatewayLogPlcLink>(linkStateMessage(state), reason));
         // Nothing stays good once the link is gone: the last value, marked stale, and why.
         const QDateTime now = QDateTime::currentDateTimeUtc();
-        for (Item &item : m_items) {
+        for (std::size_t i = 0; i < m_items.size(); ++i) {
+            Item &item = m_items[i];
             if (item.quality == ValueQuality::Stale && item.published)
                 continue;
             item.quality = ValueQuality::Stale;
             item.error = reason;
             item.time = now;
             item.published = true;
-            publishItem(item);
+            markDirty(i);
         }
         break;
     }

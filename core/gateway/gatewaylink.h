@@ -12,6 +12,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <deque>
 #include <vector>
 
 namespace Fatek {
@@ -25,11 +26,11 @@ class Session;
 // status and statistics, and taking write commands. Lives in one thread; both sides' signals
 // arrive there, so nothing here is shared between threads.
 //
-// Items are published (retained, QoS 1) when their words or quality change, and all again after
-// every broker (re)connect. Good means read in the cycle that published it; when the PLC link
-// goes down every item is published stale with the reason. The status goes connecting -> up ->
-// down (reason) -> up ...; the broker's will (offline) covers a gateway that dies, stop() publishes
-// offline itself.
+// Items are published (retained, QoS 0) when their words or quality change, and all again after
+// every broker (re)connect; an item that changes again before it went out goes once, newest state.
+// Good means read in the cycle that published it; when the PLC link goes down every item is
+// published stale with the reason. The status goes connecting -> up -> down (reason) -> up ...; the
+// broker's will (offline) covers a gateway that dies, stop() publishes offline itself.
 class GatewayLink : public QObject
 {
     Q_OBJECT
@@ -75,13 +76,17 @@ private:
         Message error;
         QDateTime time;
         bool published = false;
+        bool dirty = false; // changed since last handed to the publisher (in m_dirty)
     };
 
     void onValues(const QList<WatchValue> &values);
     void onLinkState(LinkState state, const Message &reason);
     void onCommand(const QString &topic, const QByteArray &payload, bool retained);
-    void update(Item &item, const std::vector<std::uint32_t> &words, ValueQuality quality,
+    void update(std::size_t index, const std::vector<std::uint32_t> &words, ValueQuality quality,
                 const Message &error, const QDateTime &time);
+    void markDirty(std::size_t index);
+    void publishDirty();
+    void publishNextDirty();
     void publishItem(const Item &item);
     void publishStatus(GatewayPayload::LinkStatus state, const Message &reason);
     void publishStatistics();
@@ -99,6 +104,10 @@ private:
     std::vector<Item> m_items;
     QHash<std::uint64_t, std::size_t> m_itemOfPollId;
     QHash<QString, std::size_t> m_itemOfTopic;
+    std::deque<std::size_t> m_dirty; // items to publish, oldest change first
+    bool m_publishQueued = false;
+    QTimer m_publishRetry; // publishDirty() again while the publisher has no room
+    quint64 m_coalesced = 0;
     GatewayPayload::LinkStatus m_status = GatewayPayload::LinkStatus::Connecting;
     bool m_everUp = false;
     int m_pendingWrites = 0;

@@ -39,6 +39,12 @@ int GatewayPublisher::waiting() const
     return static_cast<int>(m_dirty.size()) + static_cast<int>(m_replies.size());
 }
 
+bool GatewayPublisher::hasRoom() const
+{
+    return !m_client->isConnected()
+           || m_client->outstanding() + waiting() < m_limits.maxOutstanding;
+}
+
 void GatewayPublisher::flush()
 {
     if (!m_client->isConnected())

@@ -27,7 +27,7 @@ class GatewayPublisher : public QObject
 public:
     struct Limits
     {
-        int maxOutstanding = 200;
+        int maxOutstanding = 1000;
         int maxReplies = 1000;
     };
     struct Counters
@@ -48,6 +48,9 @@ public:
     void publishReply(const QString &topic, const QByteArray &payload);
     // Messages waiting here (retained topics not yet sent, replies).
     int waiting() const;
+    // Whether more may be handed over now (or kept as the latest state while the broker is away):
+    // false while what waits here and in the client reaches maxOutstanding.
+    bool hasRoom() const;
     Counters counters() const { return m_counters; }
     // Hands over what may go now.
     void flush();

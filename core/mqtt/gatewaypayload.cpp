@@ -6,8 +6,10 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLocale>
 
 #include <cmath>
+#include <limits>
 
 namespace Fatek {
 
@@ -15,7 +17,17 @@ namespace {
 
 QString timeText(const QDateTime &time)
 {
-    return time.toUTC().toString(Qt::ISODateWithMs);
+    // One poll cycle's items share their time: format it once.
+    thread_local qint64 lastMs = std::numeric_limits<qint64>::min();
+    thread_local QString lastText;
+    if (!time.isValid())
+        return {};
+    const qint64 ms = time.toMSecsSinceEpoch();
+    if (ms != lastMs) {
+        lastText = time.toUTC().toString(Qt::ISODateWithMs);
+        lastMs = ms;
+    }
+    return lastText;
 }
 
 QDateTime timeFrom(const QJsonValue &value)
@@ -75,6 +87,82 @@ QJsonValue numericValue(const ItemValues &item, std::uint64_t raw, const QString
     return QJsonValue(QJsonValue::Null);
 }
 
+// JSON text as QJsonDocument writes it: UTF-8, with quote, backslash and control characters
+// escaped (lower-case hex), and a lone surrogate as \\u escape.
+void appendJsonString(QByteArray &out, QStringView text)
+{
+    static constexpr char hex[] = "0123456789abcdef";
+    out += '"';
+    const char16_t *src = text.utf16();
+    const char16_t *const end = src + text.size();
+    while (src != end) {
+        const char16_t u = *src++;
+        if (u < 0x80) {
+            if (u >= 0x20 && u != u'"' && u != u'\\') {
+                out += static_cast<char>(u);
+                continue;
+            }
+            out += '\\';
+            switch (u) {
+            case u'"': out += '"'; break;
+            case u'\\': out += '\\'; break;
+            case 0x8: out += 'b'; break;
+            case 0xc: out += 'f'; break;
+            case 0xa: out += 'n'; break;
+            case 0xd: out += 'r'; break;
+            case 0x9: out += 't'; break;
+            default:
+                out += "u00";
+                out += hex[u >> 4];
+                out += hex[u & 0xf];
+            }
+        } else if (u < 0x800) {
+            out += static_cast<char>(0xc0 | (u >> 6));
+            out += static_cast<char>(0x80 | (u & 0x3f));
+        } else if (QChar::isHighSurrogate(u) && src != end && QChar::isLowSurrogate(*src)) {
+            const char32_t code = QChar::surrogateToUcs4(u, *src++);
+            out += static_cast<char>(0xf0 | (code >> 18));
+            out += static_cast<char>(0x80 | ((code >> 12) & 0x3f));
+            out += static_cast<char>(0x80 | ((code >> 6) & 0x3f));
+            out += static_cast<char>(0x80 | (code & 0x3f));
+        } else if (QChar::isSurrogate(u)) {
+            out += "\\u";
+            out += hex[u >> 12];
+            out += hex[(u >> 8) & 0xf];
+            out += hex[(u >> 4) & 0xf];
+            out += hex[u & 0xf];
+        } else {
+            out += static_cast<char>(0xe0 | (u >> 12));
+            out += static_cast<char>(0x80 | ((u >> 6) & 0x3f));
+            out += static_cast<char>(0x80 | (u & 0x3f));
+        }
+    }
+    out += '"';
+}
+
+// The scalar kinds numericValue() gives.
+void appendJsonValue(QByteArray &out, const QJsonValue &value)
+{
+    switch (value.type()) {
+    case QJsonValue::Bool: out += value.toBool() ? "true" : "false"; break;
+    case QJsonValue::Double: {
+        // An integral number in reach of 64 bits as digits, as Qt's parser reads it back (and
+        // QJsonDocument writes it again): one canonical text for the same value.
+        const double number = value.toDouble();
+        if (!std::isfinite(number))
+            out += "null";
+        else if (number == std::floor(number) && number >= -9223372036854775808.0
+                 && number < 9223372036854775808.0)
+            out += QByteArray::number(static_cast<qint64>(number));
+        else
+            out += QByteArray::number(number, 'g', QLocale::FloatingPointShortest);
+        break;
+    }
+    case QJsonValue::String: appendJsonString(out, value.toString()); break;
+    default: out += "null"; break;
+    }
+}
+
 } // namespace
 
 QString GatewayPayload::qualityName(ValueQuality quality)
@@ -100,27 +188,44 @@ QByteArray GatewayPayload::encodeItem(const ItemValues &item,
                                       const std::vector<std::uint32_t> &words, ValueQuality quality,
                                       const QDateTime &time, const Message &error)
 {
+    // Written as text directly, in exactly the form QJsonDocument writes (keys sorted, compact):
+    // the gateway encodes one per item per change, and building a QJsonObject took most of the
+    // gateway's time per message (docs/performance.md). tst_mqtt checks the bytes against Qt's.
     const WatchItemSpec &spec = item.item();
     const std::uint64_t raw = item.join(words);
     const QString text = item.text(raw);
-    QJsonArray wordArray;
-    for (const std::uint32_t word : words)
-        wordArray.append(static_cast<double>(word));
-    QJsonObject object{
-        {QStringLiteral("station"), spec.station},
-        {QStringLiteral("address"), QString::fromStdString(spec.address.toString())},
-        {QStringLiteral("name"), spec.name},
-        {QStringLiteral("format"), ValueFormat::name(spec.format)},
-        {QStringLiteral("swapWords"), spec.swapWords},
-        {QStringLiteral("value"), numericValue(item, raw, text)},
-        {QStringLiteral("text"), text},
-        {QStringLiteral("words"), wordArray},
-        {QStringLiteral("quality"), qualityName(quality)},
-        {QStringLiteral("time"), timeText(time)},
-    };
-    if (quality != ValueQuality::Good && !error.empty())
-        object.insert(QStringLiteral("error"), MessageJson::toJson(error));
-    return QJsonDocument(object).toJson(QJsonDocument::Compact);
+    QByteArray out;
+    out.reserve(320);
+    out += "{\"address\":";
+    appendJsonString(out, QString::fromStdString(spec.address.toString()));
+    if (quality != ValueQuality::Good && !error.empty()) {
+        out += ",\"error\":";
+        out += QJsonDocument(MessageJson::toJson(error)).toJson(QJsonDocument::Compact);
+    }
+    out += ",\"format\":";
+    appendJsonString(out, ValueFormat::name(spec.format));
+    out += ",\"name\":";
+    appendJsonString(out, spec.name);
+    out += ",\"quality\":";
+    appendJsonString(out, qualityName(quality));
+    out += ",\"station\":";
+    out += QByteArray::number(spec.station);
+    out += ",\"swapWords\":";
+    out += spec.swapWords ? "true" : "false";
+    out += ",\"text\":";
+    appendJsonString(out, text);
+    out += ",\"time\":";
+    appendJsonString(out, timeText(time));
+    out += ",\"value\":";
+    appendJsonValue(out, numericValue(item, raw, text));
+    out += ",\"words\":[";
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (i > 0)
+            out += ',';
+        out += QByteArray::number(words[i]);
+    }
+    out += "]}";
+    return out;
 }
 
 std::optional<GatewayPayload::ItemValue> GatewayPayload::decodeItem(const QByteArray &payload)

@@ -7,6 +7,10 @@
 
 #include <mosquitto.h>
 
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -50,18 +54,29 @@ QString madeUpClientId(const MqttBrokerSettings &settings)
 struct MqttClientShared
 {
     MqttClient *owner = nullptr; // lives until the network thread is joined
+    // Guards every field below that other threads touch. Never held while calling the library:
+    // only the network thread calls it (mosquitto_new/destroy aside, before and after the thread),
+    // so libmosquitto runs unthreaded and writes each packet straight to the socket.
     mutable std::mutex mutex;
     std::condition_variable wake;
+    std::thread thread;
+    struct mosquitto *mosq = nullptr;
     MqttBrokerSettings settings;
     std::string url;
-    struct mosquitto *mosq = nullptr;
-    std::thread thread;
     bool stop = false;
     bool running = false;
-    // Under its own lock, never held while calling the library: onConnect() takes it inside the
-    // library's callback lock, and `mutex` is held around library calls (a lock-order cycle).
-    std::mutex subscriptionsMutex;
     std::vector<std::pair<std::string, int>> subscriptions;
+    std::vector<std::pair<std::string, int>> newSubscriptions; // to subscribe on this link now
+    struct Outgoing
+    {
+        std::string topic;
+        QByteArray payload;
+        int qos = 0;
+        bool retain = false;
+    };
+    // Handed over by publish(), written by the network thread in one go: one wake-up per batch,
+    // not one per message (docs/performance.md).
+    std::vector<Outgoing> outbox;
     struct Will
     {
         std::string topic;
@@ -74,6 +89,26 @@ struct MqttClientShared
     std::atomic<bool> connected{false};
     std::atomic<bool> connackSeen{false};
     std::atomic<int> outstanding{0};
+    // Wakes the network thread out of poll(): a byte written when the outbox turns non-empty.
+    int wakeRead = -1;
+    int wakeWrite = -1;
+    bool wakePending = false; // a byte is in the pipe and not yet read (under mutex)
+    // Network thread only: messages received since the last hand-over to the owner's thread.
+    struct Incoming
+    {
+        QString topic;
+        QByteArray payload;
+        bool retained = false;
+    };
+    std::vector<Incoming> inbox;
+
+    ~MqttClientShared()
+    {
+        if (wakeRead >= 0)
+            ::close(wakeRead);
+        if (wakeWrite >= 0)
+            ::close(wakeWrite);
+    }
 
     // CrossThreadCall: a queued call with the marks ThreadSanitizer needs to see the hand-over
     // (Debian's Qt is not built with TSan; a plain invokeMethod reads as a race).
@@ -82,8 +117,20 @@ struct MqttClientShared
         MqttClient *target = owner;
         CrossThreadCall::invoke(target, [target, call = std::move(call)] { call(target); });
     }
+    // Under mutex.
+    void wakeUp()
+    {
+        if (wakePending || wakeWrite < 0)
+            return;
+        wakePending = true;
+        const char byte = 1;
+        [[maybe_unused]] const auto written = ::write(wakeWrite, &byte, 1);
+    }
 
     void run();
+    bool serve();
+    void handOver(bool *stopping);
+    void deliverInbox();
 };
 
 namespace {
@@ -104,22 +151,30 @@ void onConnect(struct mosquitto *mosq, void *userdata, int rc)
     }
     std::vector<std::pair<std::string, int>> subscriptions;
     {
-        std::lock_guard lock(shared->subscriptionsMutex);
+        std::lock_guard lock(shared->mutex);
         subscriptions = shared->subscriptions;
+        shared->newSubscriptions.clear(); // all of them go now
+        shared->connected = true;
     }
     for (const auto &[filter, qos] : subscriptions)
         mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
     shared->connackSeen = true;
-    shared->connected = true;
     shared->post([](MqttClient *client) { Q_EMIT client->connected(); });
 }
 
 void onDisconnect(struct mosquitto *, void *userdata, int rc)
 {
     MqttClientShared *shared = sharedOf(userdata);
-    // The library drops what was queued and not written: those messages are gone.
-    shared->outstanding = 0;
-    if (!shared->connected.exchange(false))
+    bool wasConnected = false;
+    {
+        // The library drops what was queued and not written, and so do we: those messages are
+        // gone (retained state is published again on the next connect).
+        std::lock_guard lock(shared->mutex);
+        shared->outbox.clear();
+        shared->outstanding = 0;
+        wasConnected = shared->connected.exchange(false);
+    }
+    if (!wasConnected)
         return;
     const Message reason
         = rc == 0 ? msg<MsgId::MqttClosed>(shared->url)
@@ -137,15 +192,104 @@ void onPublish(struct mosquitto *, void *userdata, int)
 void onMessage(struct mosquitto *, void *userdata, const struct mosquitto_message *message)
 {
     MqttClientShared *shared = sharedOf(userdata);
-    const QString topic = QString::fromUtf8(message->topic);
-    const QByteArray payload(static_cast<const char *>(message->payload), message->payloadlen);
-    const bool retained = message->retain;
-    shared->post([topic, payload, retained](MqttClient *client) {
-        Q_EMIT client->messageReceived(topic, payload, retained);
-    });
+    shared->inbox.push_back(
+        {QString::fromUtf8(message->topic),
+         QByteArray(static_cast<const char *>(message->payload), message->payloadlen),
+         message->retain});
 }
 
 } // namespace
+
+void MqttClientShared::deliverInbox()
+{
+    if (inbox.empty())
+        return;
+    // One queued call per batch of received messages, not one per message.
+    post([batch = std::move(inbox)](MqttClient *client) {
+        for (const Incoming &in : batch)
+            Q_EMIT client->messageReceived(in.topic, in.payload, in.retained);
+    });
+    inbox.clear();
+}
+
+void MqttClientShared::handOver(bool *stopping)
+{
+    std::vector<Outgoing> batch;
+    std::vector<std::pair<std::string, int>> subscribe;
+    {
+        std::lock_guard lock(mutex);
+        batch.swap(outbox);
+        subscribe.swap(newSubscriptions);
+        *stopping = stop;
+    }
+    for (const auto &[filter, qos] : subscribe)
+        mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
+    for (const Outgoing &out : batch) {
+        // Unthreaded, the library writes the packet now (or keeps it until the socket takes it).
+        const int rc = mosquitto_publish(mosq, nullptr, out.topic.c_str(),
+                                         static_cast<int>(out.payload.size()),
+                                         out.payload.constData(), out.qos, out.retain);
+        if (rc != MOSQ_ERR_SUCCESS && outstanding > 0)
+            --outstanding; // refused, or the link broke: lost like the rest of the queue
+    }
+}
+
+// Serves one connected link until it drops (false) or close() asks to stop (true).
+bool MqttClientShared::serve()
+{
+    for (;;) {
+        bool stopping = false;
+        handOver(&stopping);
+        const int sock = mosquitto_socket(mosq);
+        if (stopping) {
+            // A clean DISCONNECT after what was handed over, so that the broker does not
+            // publish the will.
+            if (connected && sock >= 0) {
+                mosquitto_disconnect(mosq);
+                for (int i = 0; i < 10 && mosquitto_socket(mosq) >= 0; ++i) {
+                    pollfd out{mosquitto_socket(mosq), POLLOUT, 0};
+                    ::poll(&out, 1, 50);
+                    if (mosquitto_loop_write(mosq, 1) != MOSQ_ERR_SUCCESS)
+                        break;
+                }
+            }
+            connected = false;
+            return true;
+        }
+        if (sock < 0)
+            return false;
+        pollfd fds[2]
+            = {{sock, static_cast<short>(POLLIN | (mosquitto_want_write(mosq) ? POLLOUT : 0)), 0},
+               {wakeRead, POLLIN, 0}};
+        // Keep-alive has a resolution of seconds: loop_misc() once a second is enough.
+        if (::poll(fds, 2, 1000) < 0 && errno != EINTR)
+            return false;
+        if (fds[1].revents & POLLIN) {
+            char bytes[64];
+            std::lock_guard lock(mutex);
+            while (::read(wakeRead, bytes, sizeof bytes) > 0) {
+            }
+            wakePending = false;
+        }
+        if (fds[0].revents & (POLLIN | POLLERR | POLLHUP)) {
+            // Everything the socket holds now (bounded), then one hand-over to the owner.
+            for (int i = 0; i < 1000; ++i) {
+                if (mosquitto_loop_read(mosq, 1) != MOSQ_ERR_SUCCESS)
+                    break;
+                pollfd more{mosquitto_socket(mosq), POLLIN, 0};
+                if (more.fd < 0 || ::poll(&more, 1, 0) <= 0)
+                    break;
+            }
+            deliverInbox();
+            if (mosquitto_socket(mosq) < 0)
+                return false;
+        }
+        if ((fds[0].revents & POLLOUT) && mosquitto_loop_write(mosq, 1) != MOSQ_ERR_SUCCESS)
+            return false;
+        if (mosquitto_loop_misc(mosq) != MOSQ_ERR_SUCCESS || mosquitto_socket(mosq) < 0)
+            return false;
+    }
+}
 
 void MqttClientShared::run()
 {
@@ -162,31 +306,10 @@ void MqttClientShared::run()
                              : mosquitto_reconnect(mosq);
         first = false;
         if (rc == MOSQ_ERR_SUCCESS) {
-            for (;;) {
-                {
-                    std::lock_guard lock(mutex);
-                    if (stop)
-                        break;
-                }
-                if (mosquitto_loop(mosq, 100, 1) != MOSQ_ERR_SUCCESS)
-                    break;
-            }
-            bool stopping = false;
-            {
-                std::lock_guard lock(mutex);
-                stopping = stop;
-            }
-            if (stopping) {
-                // A clean DISCONNECT, so that the broker does not publish the will.
-                if (connected) {
-                    mosquitto_disconnect(mosq);
-                    for (int i = 0; i < 10 && mosquitto_loop(mosq, 50, 1) == MOSQ_ERR_SUCCESS;
-                         ++i) {
-                    }
-                }
-                connected = false;
+            const bool stopping = serve();
+            deliverInbox();
+            if (stopping)
                 break;
-            }
             if (connackSeen.exchange(false))
                 delayMs = settings.reconnectMinMs;
         } else {
@@ -230,15 +353,13 @@ void MqttClient::setWill(const QString &topic, const QByteArray &payload, int qo
 
 void MqttClient::subscribe(const QString &filter, int qos)
 {
-    const std::string text = filter.toStdString();
-    {
-        std::lock_guard lock(m_shared->subscriptionsMutex);
-        m_shared->subscriptions.emplace_back(text, qos);
-    }
-    // A (re)connect in between subscribes too: twice does no harm.
     std::lock_guard lock(m_shared->mutex);
-    if (m_shared->connected && m_shared->mosq)
-        mosquitto_subscribe(m_shared->mosq, nullptr, text.c_str(), qos);
+    m_shared->subscriptions.emplace_back(filter.toStdString(), qos);
+    // A (re)connect in between subscribes too: twice does no harm.
+    if (m_shared->connected) {
+        m_shared->newSubscriptions.push_back(m_shared->subscriptions.back());
+        m_shared->wakeUp();
+    }
 }
 
 bool MqttClient::open()
@@ -261,7 +382,13 @@ bool MqttClient::open()
         mosquitto_destroy(mosq);
         return false;
     };
-    mosquitto_threaded_set(mosq, true);
+    if (m_shared->wakeRead < 0) {
+        int pipeEnds[2];
+        if (::pipe2(pipeEnds, O_NONBLOCK | O_CLOEXEC) != 0)
+            return fail(MOSQ_ERR_ERRNO);
+        m_shared->wakeRead = pipeEnds[0];
+        m_shared->wakeWrite = pipeEnds[1];
+    }
     mosquitto_int_option(mosq, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V311);
     mosquitto_connect_callback_set(mosq, onConnect);
     mosquitto_disconnect_callback_set(mosq, onDisconnect);
@@ -318,6 +445,10 @@ void MqttClient::close()
         m_shared->stop = true;
     }
     m_shared->wake.notify_all();
+    if (m_shared->wakeWrite >= 0) {
+        std::lock_guard lock(m_shared->mutex);
+        m_shared->wakeUp();
+    }
     m_shared->thread.join();
     std::lock_guard lock(m_shared->mutex);
     mosquitto_destroy(m_shared->mosq);
@@ -325,6 +456,8 @@ void MqttClient::close()
     m_shared->running = false;
     m_shared->connected = false;
     m_shared->outstanding = 0;
+    m_shared->outbox.clear();
+    m_shared->wakePending = false;
 }
 
 bool MqttClient::isConnected() const
@@ -338,13 +471,8 @@ bool MqttClient::publish(const QString &topic, const QByteArray &payload, int qo
     if (!m_shared->connected || !m_shared->mosq)
         return false;
     ++m_shared->outstanding;
-    const int rc
-        = mosquitto_publish(m_shared->mosq, nullptr, topic.toUtf8().constData(),
-                            static_cast<int>(payload.size()), payload.constData(), qos, retain);
-    if (rc != MOSQ_ERR_SUCCESS) {
-        --m_shared->outstanding;
-        return false;
-    }
+    m_shared->outbox.push_back({topic.toStdString(), payload, qos, retain});
+    m_shared->wakeUp();
     return true;
 }
 
