@@ -58,6 +58,7 @@ struct MqttClientShared
     // only the network thread calls it (mosquitto_new/destroy aside, before and after the thread),
     // so libmosquitto runs unthreaded and writes each packet straight to the socket.
     mutable std::mutex mutex;
+    std::mutex openMutex; // serialises open() and close(); the thread and library calls there
     std::condition_variable wake;
     std::thread thread;
     struct mosquitto *mosq = nullptr;
@@ -364,31 +365,41 @@ void MqttClient::subscribe(const QString &filter, int qos)
 
 bool MqttClient::open()
 {
-    std::lock_guard lock(m_shared->mutex);
-    if (m_shared->running)
-        return true;
-    const MqttBrokerSettings &s = m_shared->settings;
-    m_shared->openError = s.validate();
-    if (!m_shared->openError.empty())
-        return false;
-    struct mosquitto *mosq = mosquitto_new(s.clientId.toUtf8().constData(), true, m_shared.get());
-    if (!mosq) {
-        m_shared->openError
-            = msg<MsgId::MqttLibraryError>(Message::text(libraryError(MOSQ_ERR_ERRNO)));
-        return false;
+    // `mutex` is never held around a library call: the library takes its callback lock inside,
+    // and onConnect()/onDisconnect() take `mutex` inside that lock (an inverted order otherwise).
+    std::lock_guard openLock(m_shared->openMutex);
+    MqttBrokerSettings s;
+    std::optional<MqttClientShared::Will> will;
+    {
+        std::lock_guard lock(m_shared->mutex);
+        if (m_shared->running)
+            return true;
+        s = m_shared->settings;
+        will = m_shared->will;
     }
-    auto fail = [&](int rc) {
-        m_shared->openError = msg<MsgId::MqttLibraryError>(Message::text(libraryError(rc)));
-        mosquitto_destroy(mosq);
+    auto failWith = [this](const Message &error) {
+        std::lock_guard lock(m_shared->mutex);
+        m_shared->openError = error;
         return false;
     };
+    if (const Message invalid = s.validate(); !invalid.empty())
+        return failWith(invalid);
     if (m_shared->wakeRead < 0) {
         int pipeEnds[2];
         if (::pipe2(pipeEnds, O_NONBLOCK | O_CLOEXEC) != 0)
-            return fail(MOSQ_ERR_ERRNO);
+            return failWith(
+                msg<MsgId::MqttLibraryError>(Message::text(libraryError(MOSQ_ERR_ERRNO))));
+        std::lock_guard lock(m_shared->mutex);
         m_shared->wakeRead = pipeEnds[0];
         m_shared->wakeWrite = pipeEnds[1];
     }
+    struct mosquitto *mosq = mosquitto_new(s.clientId.toUtf8().constData(), true, m_shared.get());
+    if (!mosq)
+        return failWith(msg<MsgId::MqttLibraryError>(Message::text(libraryError(MOSQ_ERR_ERRNO))));
+    auto fail = [&](int rc) {
+        mosquitto_destroy(mosq);
+        return failWith(msg<MsgId::MqttLibraryError>(Message::text(libraryError(rc))));
+    };
     mosquitto_int_option(mosq, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V311);
     mosquitto_connect_callback_set(mosq, onConnect);
     mosquitto_disconnect_callback_set(mosq, onDisconnect);
@@ -415,17 +426,20 @@ bool MqttClient::open()
         if (s.tlsInsecure)
             mosquitto_tls_insecure_set(mosq, true);
     }
-    if (m_shared->will) {
-        const auto &will = *m_shared->will;
+    if (will) {
         if (const int rc
-            = mosquitto_will_set(mosq, will.topic.c_str(), static_cast<int>(will.payload.size()),
-                                 will.payload.constData(), will.qos, will.retain);
+            = mosquitto_will_set(mosq, will->topic.c_str(), static_cast<int>(will->payload.size()),
+                                 will->payload.constData(), will->qos, will->retain);
             rc != MOSQ_ERR_SUCCESS)
             return fail(rc);
     }
-    m_shared->mosq = mosq;
-    m_shared->stop = false;
-    m_shared->running = true;
+    {
+        std::lock_guard lock(m_shared->mutex);
+        m_shared->openError = {};
+        m_shared->mosq = mosq;
+        m_shared->stop = false;
+        m_shared->running = true;
+    }
     m_shared->thread = std::thread([shared = m_shared] { shared->run(); });
     return true;
 }
@@ -438,20 +452,18 @@ Message MqttClient::openError() const
 
 void MqttClient::close()
 {
+    std::lock_guard openLock(m_shared->openMutex);
     {
         std::lock_guard lock(m_shared->mutex);
         if (!m_shared->running)
             return;
         m_shared->stop = true;
-    }
-    m_shared->wake.notify_all();
-    if (m_shared->wakeWrite >= 0) {
-        std::lock_guard lock(m_shared->mutex);
         m_shared->wakeUp();
     }
+    m_shared->wake.notify_all();
     m_shared->thread.join();
+    mosquitto_destroy(m_shared->mosq); // the network thread is gone: nothing else touches it
     std::lock_guard lock(m_shared->mutex);
-    mosquitto_destroy(m_shared->mosq);
     m_shared->mosq = nullptr;
     m_shared->running = false;
     m_shared->connected = false;
