@@ -18,10 +18,13 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include <algorithm>
+#include <csignal>
 #include <cstring>
 #include <memory>
 
@@ -97,6 +100,7 @@ private Q_SLOTS:
     void brokerRestartRepublishes();
     void publisherBoundsWhileBrokerAway();
     void plcRestartGoesStaleThenGood();
+    void stalledBrokerKeepsNewestPerItem();
     void executableWillAndCleanStop();
 
 private:
@@ -532,6 +536,73 @@ void TestGateway::plcRestartGoesStaleThenGood()
             QCOMPARE(value->text, QStringLiteral("555")); // never the old value as good
     }
     QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R300"))->quality, ValueQuality::Good, Wait);
+}
+
+// A broker that stops reading (SIGSTOP) while every poll changes every item: once the socket and
+// the client's bound are full, the link keeps one state per item, the newest, and counts what it
+// replaced instead of queueing every poll; when the broker reads again the newest values arrive.
+void TestGateway::stalledBrokerKeepsNewestPerItem()
+{
+    constexpr int Items = 300;
+    QJsonArray items;
+    for (int i = 0; i < Items; ++i)
+        items.append(QJsonObject{{QStringLiteral("address"), QStringLiteral("R%1").arg(1000 + i)}});
+    const QJsonObject list{{QStringLiteral("format"), QStringLiteral("fatek-studio-watchlist")},
+                           {QStringLiteral("version"), 1},
+                           {QStringLiteral("tables"),
+                            QJsonArray{QJsonObject{{QStringLiteral("name"), QStringLiteral("Fast")},
+                                                   {QStringLiteral("intervalMs"), 50},
+                                                   {QStringLiteral("items"), items}}}}};
+    QFile file(m_dir->filePath(QStringLiteral("line1.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(QJsonDocument(list).toJson());
+    file.close();
+    const auto address = [](int i) {
+        return Address{ElementType::R, static_cast<std::uint32_t>(1000 + i)};
+    };
+    std::uint32_t tick = 0;
+    const auto change = [&] {
+        ++tick;
+        for (int i = 0; i < Items; ++i)
+            m_plc->setValue(address(i), (tick * 7 + static_cast<std::uint32_t>(i)) & 0x7FFF);
+    };
+    change();
+    QVERIFY(startGateway(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    const auto topicOf = [&](int i) {
+        return GatewayTopics::item(QStringLiteral("fatek"), QStringLiteral("line1"), 1, address(i));
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.item(topicOf(Items - 1)), Wait);
+
+    QTimer mutator;
+    connect(&mutator, &QTimer::timeout, this, change);
+    mutator.start(20);
+    const auto pid = static_cast<pid_t>(m_broker->processId());
+    QVERIFY(pid > 0);
+    QCOMPARE(::kill(pid, SIGSTOP), 0);
+    auto resume = qScopeGuard([pid] { ::kill(pid, SIGCONT); });
+    const quint64 before = m_link->statistics().superseded;
+    QTRY_VERIFY_WITH_TIMEOUT(m_link->statistics().superseded > before + 3 * Items, 4 * Wait);
+    mutator.stop();
+    QTest::qWait(200); // a last poll reads the final values
+    std::vector<QString> finalText;
+    for (int i = 0; i < Items; ++i)
+        finalText.push_back(QString::number(m_plc->value(address(i)).value_or(0)));
+    resume.dismiss();
+    QCOMPARE(::kill(pid, SIGCONT), 0);
+
+    const auto allNewest = [&] {
+        for (int i = 0; i < Items; ++i) {
+            const auto value = inbox.item(topicOf(i));
+            if (!value || value->quality != ValueQuality::Good
+                || value->text != finalText[static_cast<std::size_t>(i)])
+                return false;
+        }
+        return true;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(allNewest(), 3 * Wait);
 }
 
 void TestGateway::executableWillAndCleanStop()
