@@ -1,6 +1,7 @@
 // The MQTT gateway end to end (issue 20): a GatewayLink between the in-process simulator and a
 // real mosquitto on a free port; the fatek-gateway executable for the last will and a clean stop.
 // Writes are counted on the simulator's side (its request log and memory), never the client's.
+#include "core/gateway/delayhistogram.h"
 #include "core/gateway/gatewayconfig.h"
 #include "core/gateway/gatewaylink.h"
 #include "core/gateway/gatewaypublisher.h"
@@ -101,6 +102,7 @@ private Q_SLOTS:
     void publisherBoundsWhileBrokerAway();
     void plcRestartGoesStaleThenGood();
     void stalledBrokerKeepsNewestPerItem();
+    void delayHistogramPercentiles();
     void executableWillAndCleanStop();
 
 private:
@@ -291,6 +293,15 @@ void TestGateway::valuesArriveRetained()
                 .value(QStringLiteral("pollCycles"))
                 .toDouble()
             > 0);
+    // The gateway's own delay (PLC answer -> hand-over) is there, ordered, and not absurd.
+    const QJsonObject own = stats.value(QStringLiteral("gateway")).toObject();
+    for (const char *key : {"delayP50Ms", "delayP99Ms", "delayMaxMs"})
+        QVERIFY2(own.value(QLatin1String(key)).isDouble(), key);
+    QVERIFY(own.value(QStringLiteral("delayP50Ms")).toDouble()
+            <= own.value(QStringLiteral("delayP99Ms")).toDouble());
+    QVERIFY(own.value(QStringLiteral("delayP99Ms")).toDouble()
+            <= own.value(QStringLiteral("delayMaxMs")).toDouble());
+    QVERIFY(own.value(QStringLiteral("delayMaxMs")).toDouble() < Wait);
     const qsizetype before = late.all.size();
     const int cycles = static_cast<int>(m_link->session()->statistics().pollCycles);
     QTRY_VERIFY_WITH_TIMEOUT(
@@ -603,6 +614,24 @@ void TestGateway::stalledBrokerKeepsNewestPerItem()
         return true;
     };
     QTRY_VERIFY_WITH_TIMEOUT(allNewest(), 3 * Wait);
+}
+
+void TestGateway::delayHistogramPercentiles()
+{
+    DelayHistogram delays;
+    QCOMPARE(delays.percentile(0.5), 0);
+    for (int ms = 1; ms <= 100; ++ms)
+        delays.add(ms);
+    delays.add(-5);     // a clock step back: no delay
+    delays.add(123456); // beyond the buckets: its true value is the maximum
+    QCOMPARE(delays.count(), std::uint64_t(102));
+    QCOMPARE(delays.percentile(0.50), 50); // nearest rank 51 of 0,1..100,123456
+    QCOMPARE(delays.percentile(0.99), 100);
+    QCOMPARE(delays.percentile(1.0), 123456);
+    QCOMPARE(delays.max(), 123456);
+    delays.clear();
+    QCOMPARE(delays.count(), std::uint64_t(0));
+    QCOMPARE(delays.max(), 0);
 }
 
 void TestGateway::executableWillAndCleanStop()

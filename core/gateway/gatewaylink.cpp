@@ -147,6 +147,9 @@ GatewayStatistics GatewayLink::statistics() const
     s.superseded = c.superseded + m_coalesced;
     s.repliesDropped = c.repliesDropped;
     s.waiting = static_cast<quint64>(m_publisher->waiting());
+    s.delayP50Ms = m_delays.percentile(0.50);
+    s.delayP99Ms = m_delays.percentile(0.99);
+    s.delayMaxMs = m_delays.max();
     return s;
 }
 
@@ -258,6 +261,7 @@ void GatewayLink::publishNextDirty()
 
 void GatewayLink::publishItem(const Item &item)
 {
+    m_delays.add(QDateTime::currentMSecsSinceEpoch() - item.time.toMSecsSinceEpoch());
     m_publisher->publishRetained(
         item.topic,
         GatewayPayload::encodeItem(item.values, item.words, item.quality, item.time, item.error),
@@ -316,6 +320,7 @@ void GatewayLink::publishStatistics()
                                  GatewayStatistics::encode(statistics(), m_session->statistics(),
                                                            m_linkText,
                                                            QDateTime::currentDateTimeUtc()));
+    m_delays.clear(); // each statistics message covers its own interval
 }
 
 void GatewayLink::answer(const GatewayPayload::Reply &reply)

@@ -3,6 +3,7 @@
 #include "core/mqtt/gatewaypayload.h"
 #include "core/session/sessiontypes.h"
 #include "core/watch/itemvalues.h"
+#include "delayhistogram.h"
 #include "gatewayconfig.h"
 #include "gatewaystatistics.h"
 
@@ -108,6 +109,7 @@ private:
     bool m_publishQueued = false;
     QTimer m_publishRetry; // publishDirty() again while the publisher has no room
     quint64 m_coalesced = 0;
+    DelayHistogram m_delays; // since the last statistics
     GatewayPayload::LinkStatus m_status = GatewayPayload::LinkStatus::Connecting;
     bool m_everUp = false;
     int m_pendingWrites = 0;

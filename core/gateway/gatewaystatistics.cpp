@@ -40,6 +40,9 @@ QByteArray GatewayStatistics::encode(const GatewayStatistics &gateway,
         {QStringLiteral("writesAccepted"), n(gateway.writesAccepted)},
         {QStringLiteral("writesRefused"), n(gateway.writesRefused)},
         {QStringLiteral("writesFailed"), n(gateway.writesFailed)},
+        {QStringLiteral("delayP50Ms"), static_cast<double>(gateway.delayP50Ms)},
+        {QStringLiteral("delayP99Ms"), static_cast<double>(gateway.delayP99Ms)},
+        {QStringLiteral("delayMaxMs"), static_cast<double>(gateway.delayMaxMs)},
     };
     const QJsonObject object{
         {QStringLiteral("time"), time.toUTC().toString(Qt::ISODateWithMs)},

@@ -15,7 +15,8 @@ namespace Fatek {
 //               "rttMeanMs":..,"rttP50Ms":..,"rttP99Ms":..,"pollCycles":..,"lastCycleMs":..,
 //               "bytesDiscarded":..,"linkLosses":..},
 //    "gateway":{"published":..,"superseded":..,"repliesDropped":..,"waiting":..,
-//               "writesAccepted":..,"writesRefused":..,"writesFailed":..}}
+//               "writesAccepted":..,"writesRefused":..,"writesFailed":..,
+//               "delayP50Ms":..,"delayP99Ms":..,"delayMaxMs":..}}
 struct GatewayStatistics
 {
     quint64 published = 0;      // messages handed to the broker connection
@@ -25,6 +26,11 @@ struct GatewayStatistics
     quint64 writesAccepted = 0; // commands handed to the PLC link
     quint64 writesRefused = 0;  // commands refused by the gateway (read-only, allowlist, value)
     quint64 writesFailed = 0;   // accepted commands the PLC link could not carry out
+    // From the PLC's answer to the item's hand-over to the broker connection, over the items
+    // published since the previous statistics: how far behind the gateway is.
+    qint64 delayP50Ms = 0;
+    qint64 delayP99Ms = 0;
+    qint64 delayMaxMs = 0;
 
     static QByteArray encode(const GatewayStatistics &gateway, const SessionStatistics &session,
                              const QString &link, const QDateTime &time);

@@ -8,7 +8,10 @@
 #include <mosquitto.h>
 
 #include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
 #include <poll.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -31,6 +34,17 @@ void initLibrary()
 {
     static std::once_flag once;
     std::call_once(once, [] { mosquitto_lib_init(); });
+}
+
+void setCork(int sock, bool on)
+{
+#ifdef TCP_CORK
+    const int value = on ? 1 : 0;
+    ::setsockopt(sock, IPPROTO_TCP, TCP_CORK, &value, sizeof value);
+#else
+    Q_UNUSED(sock);
+    Q_UNUSED(on);
+#endif
 }
 
 std::string libraryError(int rc)
@@ -78,14 +92,7 @@ struct MqttClientShared
     // Handed over by publish(), written by the network thread in one go: one wake-up per batch,
     // not one per message (docs/performance.md).
     std::vector<Outgoing> outbox;
-    struct Will
-    {
-        std::string topic;
-        QByteArray payload;
-        int qos = 1;
-        bool retain = true;
-    };
-    std::optional<Will> will;
+    std::optional<Outgoing> will;
     Message openError;
     std::atomic<bool> connected{false};
     std::atomic<bool> connackSeen{false};
@@ -225,6 +232,12 @@ void MqttClientShared::handOver(bool *stopping)
     }
     for (const auto &[filter, qos] : subscribe)
         mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
+    // One batch, few segments: corked while it is written, sent at once when uncorked (the
+    // socket has TCP_NODELAY, so a lone message is not held back waiting for an ACK either).
+    const int sock = mosquitto_socket(mosq);
+    const bool cork = batch.size() > 1 && sock >= 0;
+    if (cork)
+        setCork(sock, true);
     for (const Outgoing &out : batch) {
         // Unthreaded, the library writes the packet now (or keeps it until the socket takes it).
         const int rc = mosquitto_publish(mosq, nullptr, out.topic.c_str(),
@@ -233,6 +246,8 @@ void MqttClientShared::handOver(bool *stopping)
         if (rc != MOSQ_ERR_SUCCESS && outstanding > 0)
             --outstanding; // refused, or the link broke: lost like the rest of the queue
     }
+    if (cork && mosquitto_socket(mosq) == sock)
+        setCork(sock, false);
 }
 
 // Serves one connected link until it drops (false) or close() asks to stop (true).
@@ -349,7 +364,7 @@ MqttBrokerSettings MqttClient::settings() const
 void MqttClient::setWill(const QString &topic, const QByteArray &payload, int qos, bool retain)
 {
     std::lock_guard lock(m_shared->mutex);
-    m_shared->will = MqttClientShared::Will{topic.toStdString(), payload, qos, retain};
+    m_shared->will = MqttClientShared::Outgoing{topic.toStdString(), payload, qos, retain};
 }
 
 void MqttClient::subscribe(const QString &filter, int qos)
@@ -369,7 +384,7 @@ bool MqttClient::open()
     // and onConnect()/onDisconnect() take `mutex` inside that lock (an inverted order otherwise).
     std::lock_guard openLock(m_shared->openMutex);
     MqttBrokerSettings s;
-    std::optional<MqttClientShared::Will> will;
+    std::optional<MqttClientShared::Outgoing> will;
     {
         std::lock_guard lock(m_shared->mutex);
         if (m_shared->running)
@@ -401,6 +416,9 @@ bool MqttClient::open()
         return failWith(msg<MsgId::MqttLibraryError>(Message::text(libraryError(rc))));
     };
     mosquitto_int_option(mosq, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V311);
+    // Nagle's algorithm held a message back until the broker's delayed ACK (40 ms on Linux):
+    // batches are corked instead (handOver()).
+    mosquitto_int_option(mosq, MOSQ_OPT_TCP_NODELAY, 1);
     mosquitto_connect_callback_set(mosq, onConnect);
     mosquitto_disconnect_callback_set(mosq, onDisconnect);
     mosquitto_publish_callback_set(mosq, onPublish);
