@@ -20,7 +20,7 @@ namespace Fatek {
 struct GatewayStatistics
 {
     quint64 published = 0;      // messages handed to the broker connection
-    quint64 superseded = 0;     // retained payloads replaced before they went out (broker away)
+    quint64 superseded = 0;     // states replaced before they went out (broker away or slow)
     quint64 repliesDropped = 0; // replies dropped because too many were waiting
     quint64 waiting = 0;        // messages waiting for the broker now
     quint64 writesAccepted = 0; // commands handed to the PLC link
