@@ -24,6 +24,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -231,6 +232,12 @@ private Q_SLOTS:
         // The table shows the gateway's values, quality-marked.
         WatchTableWidget *table = window.currentWatchTable();
         QCOMPARE(table->connection(), c);
+        // The gateway's configuration sets the poll interval: the table's control is off.
+        auto *interval = table->findChild<QSpinBox *>(QStringLiteral("intervalSpin"));
+        QVERIFY(interval && interval->isVisible());
+        QVERIFY(!interval->isEnabled());
+        QVERIFY2(interval->toolTip().contains(QStringLiteral("gateway")),
+                 qPrintable(interval->toolTip()));
         typeSlowly(table->addressEdit(), QStringLiteral("R100 R200 R500"));
         QTest::keyClick(table->addressEdit(), Qt::Key_Return);
         WatchTableModel *model = table->model();

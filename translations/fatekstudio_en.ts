@@ -3669,6 +3669,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Poll interval of this table</translation>
         </message>
         <message>
+            <source>The gateway polls at the interval of its configuration</source>
+            <translation>The gateway polls at the interval of its configuration</translation>
+        </message>
+        <message>
             <source>Pause</source>
             <translation>Pause</translation>
         </message>

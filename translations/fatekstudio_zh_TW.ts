@@ -3658,6 +3658,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>此監看表的輪詢間隔</translation>
         </message>
         <message>
+            <source>The gateway polls at the interval of its configuration</source>
+            <translation>閘道器依其設定中的間隔輪詢</translation>
+        </message>
+        <message>
             <source>Pause</source>
             <translation>暫停</translation>
         </message>

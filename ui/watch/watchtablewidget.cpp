@@ -246,6 +246,12 @@ void WatchTableWidget::setConnection(Connection *connection)
         m_model->markAllStale(tr("no connection"));
     }
     m_forcedMarks->setSession(connection ? connection->session() : nullptr);
+    // Through a gateway its configuration sets the poll interval: the spin box would change
+    // nothing.
+    const bool gateway = connection && connection->isGateway();
+    m_interval->setEnabled(!gateway);
+    m_interval->setToolTip(gateway ? tr("The gateway polls at the interval of its configuration")
+                                   : tr("Poll interval of this table"));
     m_connectionCombo->setCurrentIndex(m_manager->indexOf(connection));
     pushPollList();
     Q_EMIT connectionChanged(connection);
