@@ -137,6 +137,7 @@ struct MqttClientShared
 
     void run();
     bool serve();
+    void linkDown(int rc);
     void handOver(bool *stopping);
     void deliverInbox();
 };
@@ -172,22 +173,7 @@ void onConnect(struct mosquitto *mosq, void *userdata, int rc)
 
 void onDisconnect(struct mosquitto *, void *userdata, int rc)
 {
-    MqttClientShared *shared = sharedOf(userdata);
-    bool wasConnected = false;
-    {
-        // The library drops what was queued and not written, and so do we: those messages are
-        // gone (retained state is published again on the next connect).
-        std::lock_guard lock(shared->mutex);
-        shared->outbox.clear();
-        shared->outstanding = 0;
-        wasConnected = shared->connected.exchange(false);
-    }
-    if (!wasConnected)
-        return;
-    const Message reason
-        = rc == 0 ? msg<MsgId::MqttClosed>(shared->url)
-                  : msg<MsgId::MqttLinkLost>(shared->url, Message::text(libraryError(rc)));
-    shared->post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
+    sharedOf(userdata)->linkDown(rc);
 }
 
 void onPublish(struct mosquitto *, void *userdata, int)
@@ -207,6 +193,24 @@ void onMessage(struct mosquitto *, void *userdata, const struct mosquitto_messag
 }
 
 } // namespace
+
+void MqttClientShared::linkDown(int rc)
+{
+    bool wasConnected = false;
+    {
+        // The library drops what was queued and not written, and so do we: those messages are
+        // gone (retained state is published again on the next connect).
+        std::lock_guard lock(mutex);
+        outbox.clear();
+        outstanding = 0;
+        wasConnected = connected.exchange(false);
+    }
+    if (!wasConnected)
+        return;
+    const Message reason = rc == 0 ? msg<MsgId::MqttClosed>(url)
+                                   : msg<MsgId::MqttLinkLost>(url, Message::text(libraryError(rc)));
+    post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
+}
 
 void MqttClientShared::deliverInbox()
 {
@@ -326,6 +330,9 @@ void MqttClientShared::run()
             deliverInbox();
             if (stopping)
                 break;
+            // Normally the library reported the loss already (onDisconnect()); if it did not,
+            // the owner must still learn that the link is down.
+            linkDown(MOSQ_ERR_CONN_LOST);
             if (connackSeen.exchange(false))
                 delayMs = settings.reconnectMinMs;
         } else {
