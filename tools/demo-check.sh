@@ -15,6 +15,7 @@ demo=$!
 trap 'kill -INT "$demo" 2>/dev/null || true; rm -f "$log"' EXIT
 
 # The first run installs and builds: wait for the monitor's first value line, however long that is.
+start=$SECONDS
 until grep -qE '^1 +[0-9:.]+ ' "$log"; do
     if ! kill -0 "$demo" 2>/dev/null; then
         tail -40 "$log"
@@ -23,6 +24,7 @@ until grep -qE '^1 +[0-9:.]+ ' "$log"; do
     fi
     sleep 1
 done
+first=$((SECONDS - start))
 sleep "$seconds"
 kill -INT "$demo"
 # A clean stop takes well under a second; give it 15 s before calling it hung.
@@ -37,6 +39,8 @@ if kill -0 "$demo" 2>/dev/null; then
 fi
 rc=0
 wait "$demo" || rc=$?
+grep '^== stage' "$log" || true
+printf 'demo-check: first live value %dm%02ds after tools/demo.sh started\n' $((first / 60)) $((first % 60))
 sed -n '/^cycle /,$p' "$log"
 echo "tools/demo.sh ended with status $rc after Ctrl-C"
 

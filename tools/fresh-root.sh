@@ -4,6 +4,10 @@
 #   tools/fresh-root.sh                  runs tools/test.sh
 #   tools/fresh-root.sh tools/demo.sh    any command, run from the checkout's copy in the root
 # Needs root (it re-runs itself with sudo) and debootstrap (installed when missing).
+# Environment: FRESH_ROOT_MIRROR (Debian mirror; default: the host's own, see host_mirror),
+# FRESH_ROOT_CCACHE=DIR (a host directory bind-mounted as the root's ccache directory, and
+# FATEK_CCACHE=1: repeated runs reuse the compiler's work; CI's cold figure is without it),
+# FRESH_ROOT_KEEP=1, FRESH_ROOT_DIR.
 #
 # The untouched debootstrap output is cached as a tarball in ~/.cache/fatek-studio/ and made again
 # when older than 30 days; the root itself is unpacked anew every run and removed afterwards
@@ -20,14 +24,20 @@ if [ "${1:-}" = --inside ]; then
     mount -t proc proc "$root/proc"
     mount --rbind /dev "$root/dev"
     mount -t tmpfs -o mode=1777 tmpfs "$root/tmp"
+    ccache=0
+    if [ -n "${FRESH_ROOT_CCACHE:-}" ]; then
+        mkdir -p "$FRESH_ROOT_CCACHE" "$root/root/.cache/ccache"
+        mount --bind "$FRESH_ROOT_CCACHE" "$root/root/.cache/ccache"
+        ccache=1
+    fi
     exec chroot "$root" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-        HOME=/root LANG=C.UTF-8 TERM="${TERM:-dumb}" CI="${CI:-}" \
+        HOME=/root LANG=C.UTF-8 TERM="${TERM:-dumb}" CI="${CI:-}" FATEK_CCACHE="$ccache" \
         /bin/bash -c 'cd "$0" && exec "$@"' "$dest" "$@"
 fi
 
 [ $# -gt 0 ] || set -- tools/test.sh
 if [ "$(id -u)" -ne 0 ]; then
-    exec sudo --preserve-env=CI,FRESH_ROOT_KEEP,FRESH_ROOT_DIR "$0" "$@"
+    exec sudo --preserve-env=CI,FRESH_ROOT_KEEP,FRESH_ROOT_DIR,FRESH_ROOT_MIRROR,FRESH_ROOT_CCACHE "$0" "$@"
 fi
 repo=$(cd "$(dirname "$0")/.." && pwd)
 say() { echo "== fresh-root: $*"; }
@@ -38,15 +48,44 @@ if ! command -v debootstrap >/dev/null; then
         { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap >/dev/null; }
 fi
 
+# The Debian mirror: FRESH_ROOT_MIRROR, else the first one the host's own apt sources use for
+# bookworm (one-line sources.list and deb822 .sources files), so that a host behind a local
+# mirror builds its root from it too; deb.debian.org only when the host names none.
+host_mirror() {
+    local f
+    for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+        [ -f "$f" ] || continue
+        awk '$1 == "deb" { i = 2; if ($i ~ /^\[/) { while ($i !~ /\]$/) i++; i++ }
+                          if ($(i + 1) == "bookworm") { print $i; exit } }' "$f"
+    done
+    for f in /etc/apt/sources.list.d/*.sources; do
+        [ -f "$f" ] || continue
+        # deb822 stanzas are separated by blank lines; Enabled: no switches one off.
+        awk 'BEGIN { RS = ""; FS = "\n" }
+             { types = uris = suites = ""; on = 1
+               for (i = 1; i <= NF; i++) {
+                   if ($i ~ /^Types:/) types = $i
+                   else if ($i ~ /^URIs:/) { uris = $i; sub(/^URIs:[ \t]*/, "", uris) }
+                   else if ($i ~ /^Suites:/) suites = " " $i " "
+                   else if ($i ~ /^Enabled:[ \t]*no/) on = 0 }
+               if (on && types ~ /[ \t]deb([ \t]|$)/ && suites ~ /[ \t]bookworm[ \t]/) {
+                   split(uris, u, /[ \t]+/); print u[1]; exit } }' "$f"
+    done
+}
+mirror=${FRESH_ROOT_MIRROR:-$(host_mirror | head -1)}
+mirror=${mirror:-http://deb.debian.org/debian}
+
 arch=$(dpkg --print-architecture)
 cache=${XDG_CACHE_HOME:-$HOME/.cache}/fatek-studio
-tarball=$cache/debootstrap-bookworm-minbase-$arch.tar
+# One cached root per mirror: the root's own sources.list names the mirror it came from.
+tarball=$cache/debootstrap-bookworm-minbase-$arch-$(printf '%s' "$mirror" | md5sum | cut -c1-8).tar
 mkdir -p "$cache"
 if [ -z "$(find "$tarball" -mtime -30 2>/dev/null)" ]; then
-    say "debootstrap --variant=minbase bookworm (cached in $tarball)"
+    say "debootstrap --variant=minbase bookworm from $mirror (cached in $tarball)"
     fresh=$(mktemp -d "$cache/debootstrap.XXXXXX")
-    debootstrap --variant=minbase bookworm "$fresh" http://deb.debian.org/debian >"$fresh.log" 2>&1 ||
+    debootstrap --variant=minbase bookworm "$fresh" "$mirror" >"$fresh.log" 2>&1 ||
         { tail -20 "$fresh.log" >&2; rm -rf --one-file-system "$fresh" "$fresh.log"; exit 1; }
+    say "debootstrap took $((SECONDS / 60))m$((SECONDS % 60))s"
     tar -C "$fresh" -cf "$tarball.tmp" .
     mv "$tarball.tmp" "$tarball"
     rm -rf --one-file-system "$fresh" "$fresh.log"
@@ -90,7 +129,7 @@ if [ -d "$repo/../shared" ]; then
     cp -a "$repo/../shared" "$root/work/shared"
 fi
 installed=$(chroot "$root" dpkg-query -W -f='${Package}\n' | wc -l)
-say "$installed Debian packages installed; running $* in $dest"
+say "$installed Debian packages installed; root ready after $((SECONDS / 60))m$((SECONDS % 60))s; running $* in $dest"
 
 unshare --mount --pid --fork --kill-child --propagation private -- "$0" --inside "$root" "$dest" "$@" &
 child=$!

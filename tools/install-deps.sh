@@ -8,6 +8,8 @@ set -euo pipefail
 packages=(
     # compilers and build tools: GCC 12 (release, tsan) and clang-14 (asan, fuzz targets)
     build-essential cmake ninja-build pkg-config clang-14 libclang-rt-14-dev
+    # the optional compiler cache for repeated builds (FATEK_CCACHE=1, tools/ccache-env.sh)
+    ccache
     # Qt 6.4; qt6-charts-dev's CMake package needs Qt6OpenGL, which apt does not pull in
     # without recommends, and Qt6Gui's needs the GL and xkbcommon headers
     qt6-base-dev qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev qt6-svg-dev qt6-tools-dev
