@@ -16,6 +16,13 @@
 # The forced include hides a source's missing #include: tools/tidy.sh checks every source without
 # the PCH, and -DFATEK_PCH=OFF builds without any.
 option(FATEK_PCH "Build with precompiled headers" ON)
+# The libraries' PCHs: by default with clang only (see above); a preset may turn them on.
+if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    set(_fatek_pch_libraries_default ON)
+else()
+    set(_fatek_pch_libraries_default OFF)
+endif()
+option(FATEK_PCH_LIBRARIES "Precompiled headers for the libraries too" ${_fatek_pch_libraries_default})
 
 # The standard headers most of core/ includes (fatekprotocol and fatekplanner stay Qt-free).
 set(FATEK_PCH_STD
@@ -47,7 +54,7 @@ function(fatek_pch target kind)
         if(owner_headers)
             target_precompile_headers(${target} REUSE_FROM ${ARGV2})
         endif()
-    elseif(kind MATCHES "^QTTEST" OR CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    elseif(kind MATCHES "^QTTEST" OR FATEK_PCH_LIBRARIES)
         target_precompile_headers(${target} PRIVATE ${FATEK_PCH_${kind}})
     endif()
 endfunction()

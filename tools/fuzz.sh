@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with clang and runs each for SECONDS (default 60), one after the
-# other, seeded with the frames of tests/data/vectors.json and sample watch lists.
+# Builds the libFuzzer targets with clang and runs each for SECONDS (default 60), as many at once
+# as there are cores, seeded with the frames of tests/data/vectors.json and sample watch lists.
 #   tools/fuzz.sh [SECONDS] [TARGET...]      TARGET: facon binary address simquery watchlist
 #                                            gatewaypayload (default all)
-# Environment: FUZZ_BUILD (default build/fuzz), FUZZ_LOGS (directory for one log per target; default
+# Environment: FUZZ_BUILD_ONLY=1 (build, do not run), FUZZ_JOBS (targets at once; default the
+# number of cores), FUZZ_BUILD (default build/fuzz), FUZZ_LOGS (directory for one log per target; default
 # only the summary is printed). Findings land in $FUZZ_BUILD/findings/; the script exits 1 if any.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,9 +14,11 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(facon binary address simquery watchlist gatewaypayload)
 build=${FUZZ_BUILD:-build/fuzz}
 command -v clang++-14 >/dev/null || { echo "needs clang-14 and libclang-rt-14-dev (apt-get install clang-14 libclang-rt-14-dev)"; exit 2; }
+# Line tables only (-g1): a finding's stack names file and line; full debug info only costs time.
 cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
       -DFATEK_FUZZ=ON -DFATEK_BUILD_TESTS=OFF -DFATEK_BUILD_BENCH=OFF >/dev/null
-cmake --build "$build" -j2 --target $(printf 'fuzz_%s ' "${targets[@]}")
+cmake --build "$build" -j "$(nproc 2>/dev/null || echo 2)" --target $(printf 'fuzz_%s ' "${targets[@]}")
 FUZZ_BUILD=$build python3 - <<'PY'
 import json, os
 b = os.environ["FUZZ_BUILD"]
@@ -72,16 +75,37 @@ open(f"{d}/set-text", "wb").write(b"\x01 ON\n")
 for i, t in enumerate(["fatek/line1/1/R100", "fatek/line1/3/WY16/set", "fatek/line1/status"]):
     open(f"{d}/topic-{i}", "wb").write(b"\x04" + t.encode())
 PY
+# FUZZ_BUILD_ONLY=1: build the targets and their corpus, run nothing (tools/test.sh builds them
+# beside other work and runs them later).
+[ "${FUZZ_BUILD_ONLY:-0}" = 1 ] && exit 0
 mkdir -p "$build/findings"
 [ -z "${FUZZ_LOGS:-}" ] || mkdir -p "$FUZZ_LOGS"
+# A libFuzzer run uses one core: as many targets run at once as there are cores (FUZZ_JOBS), each
+# for its full SECONDS; the summaries print in the targets' order.
+jobs=${FUZZ_JOBS:-$(nproc 2>/dev/null || echo 2)}
+logOf() {
+    local log=${FUZZ_LOGS:+$FUZZ_LOGS/fuzz_$1.log}
+    echo "${log:-$build/fuzz_$1.log}"
+}
+fuzzOne() {
+    # -rss_limit_mb: the simulator holds a full PLC memory image per model; 2 GB is libFuzzer's default.
+    "$build/fuzz/fuzz_$1" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 \
+        -artifact_prefix="$build/findings/$1-" "$build/corpus/$1" >"$(logOf "$1")" 2>&1
+}
+echo "== fuzzing ${targets[*]} for ${seconds}s each, $jobs at a time"
+declare -A pids
+for t in "${targets[@]}"; do
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do
+        wait -n || true
+    done
+    fuzzOne "$t" &
+    pids[$t]=$!
+done
 status=0
 for t in "${targets[@]}"; do
     echo "== fuzz_$t for ${seconds}s"
-    log=${FUZZ_LOGS:+$FUZZ_LOGS/fuzz_$t.log}
-    log=${log:-$build/fuzz_$t.log}
-    # -rss_limit_mb: the simulator holds a full PLC memory image per model; 2 GB is libFuzzer's default.
-    if ! "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 \
-        -artifact_prefix="$build/findings/$t-" "$build/corpus/$t" >"$log" 2>&1; then
+    log=$(logOf "$t")
+    if ! wait "${pids[$t]}"; then
         status=1
         echo "!! fuzz_$t found a problem: see $log and $build/findings/"
     fi

@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # Builds and runs every test: the release build (GCC 12) and clang-tidy on it, then the whole
 # suite again under AddressSanitizer + UndefinedBehaviorSanitizer built with clang-14, again under
-# ThreadSanitizer (GCC 12), the install test of the packages, and a short run of each fuzz target (clang-14).
-# Prints each stage's wall time and the total; exits non-zero on the first failure.
+# ThreadSanitizer (GCC 12), the install test of the packages, and a short run of each fuzz target
+# (clang-14). Prints each stage's wall time and the total; exits non-zero on the first failure.
+#
+# The test suites mostly wait (timers, sockets, child processes) and leave a core idle. Work that
+# no suite needs yet (clang-tidy, the tsan build, the fuzz build) runs meanwhile in a background
+# lane at the lowest priority (nice 19): the suites get the CPU first, the lane what they leave.
+# A lane's stages print when the lane is joined, each with its own wall time (overlapping the
+# foreground's).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/stage.sh
@@ -11,19 +17,49 @@ jobs=$(nproc 2>/dev/null || echo 2)
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-$jobs}
 export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-$jobs}
 source tools/ccache-env.sh
-# One preset: configure, build, then its suite, each timed.
-suite() {
-    stage "$1 configure" cmake --preset "$1" "${ccache_args[@]}"
-    stage "$1 build" cmake --build --preset "$1"
-    stage "$1 tests" ctest --preset "$1"
+export ccache_args_text="${ccache_args[*]}"
+lanes=$(mktemp -d "${TMPDIR:-/tmp}/fatek-test-lanes.XXXXXX")
+lane_pid=""
+trap '[ -z "$lane_pid" ] || kill -- -"$lane_pid" 2>/dev/null || true; rm -rf "$lanes"' EXIT
+
+# lane_start NAME COMMAND...: runs COMMAND (a function of this script) niced in the background,
+# in its own process group, output to its log.
+lane_start() {
+    local name=$1
+    shift
+    echo "== lane: $name started in the background (nice 19)"
+    set -m
+    nice -n 19 bash -c "$(declare -f stage configure_preset); set -euo pipefail; $*" >"$lanes/$name.log" 2>&1 &
+    lane_pid=$!
+    set +m
+    lane_name=$name
 }
-suite release
-# clang-tidy's short check list (.clang-tidy) on the release build's compile commands.
-stage "clang-tidy" tools/tidy.sh build/release
-suite asan
-suite tsan
+# lane_join: waits for the lane, prints its log, fails if it failed.
+lane_join() {
+    local start=$SECONDS status=0
+    wait "$lane_pid" || status=$?
+    lane_pid=""
+    cat "$lanes/$lane_name.log"
+    echo "== lane: $lane_name joined (waited $((SECONDS - start)) s for it)"
+    return "$status"
+}
+configure_preset() { cmake --preset "$1" $ccache_args_text >/dev/null; }
+
+stage "release configure" configure_preset release
+stage "release build" cmake --build --preset release
+lane_start "tidy+tsan-build" 'stage "clang-tidy" tools/tidy.sh build/release &&
+    stage "tsan configure" configure_preset tsan && stage "tsan build" cmake --build --preset tsan'
+stage "release tests" ctest --preset release
+stage "asan configure" configure_preset asan
+stage "asan build" cmake --build --preset asan
+stage "asan tests" ctest --preset asan
+lane_join
+lane_start "fuzz-build" 'export FUZZ_BUILD_ONLY=1; stage "fuzz build" tools/fuzz.sh'
+stage "tsan tests" ctest --preset tsan
 # Install test of the .deb/.tar.gz built from the release build (see docs/packaging.md).
 stage "package install test" tools/package-test.sh
-# Builds the fuzz targets and runs each briefly on the seed corpus (long runs: docs/reliability.md).
+lane_join
+# Each fuzz target briefly on the seed corpus (long runs: docs/reliability.md).
 stage "fuzz smoke" tools/fuzz.sh "${FATEK_FUZZ_SECONDS:-10}"
+rm -rf "$lanes"
 stage_total "tools/test.sh"
