@@ -121,6 +121,8 @@ say "unpacking a new root in $root ($(date -r "$tarball" +%F) debootstrap)"
 mkdir "$root"
 tar -C "$root" -xf "$tarball"
 cp /etc/resolv.conf "$root/etc/resolv.conf" # as DHCP would have set it on a new machine
+# The root is thrown away: dpkg need not sync every file it unpacks to the disk.
+echo force-unsafe-io >"$root/etc/dpkg/dpkg.cfg.d/fresh-root-unsafe-io"
 dest=/work/$(basename "$repo")
 mkdir -p "$root$dest"
 git -C "$repo" ls-files -z --cached --others --exclude-standard |

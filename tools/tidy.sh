@@ -30,11 +30,13 @@ for e in entries:
     e["command"] = c
 json.dump(entries, open(sys.argv[2], "w"), indent=1)
 PY
-run-clang-tidy-14 -quiet -p "$db" -j "$jobs" "${files[@]/#/$PWD/}" >"$log" 2>&1 || status=$?
+# In batches of sources that share a compile command (tools/tidybatch.py says why and how).
+python3 tools/tidybatch.py "$db/compile_commands.json" "$db" "$jobs" "${FATEK_TIDY_BATCH:-8}" "${files[@]}" >"$log" 2>&1 || status=$?
 # Only our own findings: "file:line:col: warning|error: text [check]" (colour codes removed).
 findings=$(sed 's/\x1b\[[0-9;]*m//g' "$log" | grep -E '^/.*:[0-9]+:[0-9]+: (warning|error): ' | sort -u || true)
 count=$(printf '%s' "$findings" | grep -c . || true)
 echo "tidy: ${#files[@]} files, $count findings, $(($(date +%s) - start)) s"
+grep "^tidy: .* translation units" "$log" || true
 if [ "$count" -ne 0 ] || [ "$status" -ne 0 ]; then
     [ -n "$findings" ] && printf '%s\n' "$findings" || tail -40 "$log"
     exit 1
