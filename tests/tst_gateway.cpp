@@ -8,6 +8,7 @@
 #include "core/mqtt/gatewaypayload.h"
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/mqttclient.h"
+#include "core/protocol/logtext.h"
 #include "core/session/session.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
@@ -103,6 +104,7 @@ private Q_SLOTS:
     void plcRestartGoesStaleThenGood();
     void stalledBrokerKeepsNewestPerItem();
     void delayHistogramPercentiles();
+    void logTextEscapesControls();
     void executableWillAndCleanStop();
 
 private:
@@ -634,6 +636,19 @@ void TestGateway::delayHistogramPercentiles()
     QCOMPARE(delays.max(), 0);
 }
 
+void TestGateway::logTextEscapesControls()
+{
+    QCOMPARE(escapedForLog("5\n2026 line1: written"), std::string("5\\n2026 line1: written"));
+    QCOMPARE(escapedForLog("a\r\tb\x1b[2Jc\x7f"), std::string("a\\r\\tb\\x1b[2Jc\\x7f"));
+    QCOMPARE(escapedForLog(std::string_view("\0", 1)), std::string("\\x00"));
+    // NEL and the Unicode line/paragraph separators end a line for some readers too.
+    QCOMPARE(escapedForLog("x\xc2\x85y\xe2\x80\xa8z\xe2\x80\xa9"),
+             std::string("x\\u0085y\\u2028z\\u2029"));
+    // Everything else passes unchanged: text, other UTF-8, a Windows path.
+    QCOMPARE(escapedForLog("R100 = \"12.5\" \xe6\xb8\xac C:\\plc"),
+             std::string("R100 = \"12.5\" \xe6\xb8\xac C:\\plc"));
+}
+
 void TestGateway::executableWillAndCleanStop()
 {
     const QString configPath = m_dir->filePath(QStringLiteral("gateway.json"));
@@ -674,6 +689,14 @@ void TestGateway::executableWillAndCleanStop()
     run(60, &stopped);
     if (QTest::currentTestFailed())
         return;
+    // A refused command whose value carries a newline and a line of its own (issue 33): the log
+    // shows it escaped on the refusal's line, never as a line that says "written".
+    const QByteArray forged
+        = "2026-11-26T00:00:00.000Z line1: write station 1 Y0 = \"ON\" (id \"x\"): written";
+    QVERIFY(client->publish(topic("R100") + QStringLiteral("/set"), "5\n" + forged, 1, false));
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(topic("R100") + QStringLiteral("/reply")).has_value(),
+                             Wait);
+    QVERIFY(!inbox.reply(topic("R100") + QStringLiteral("/reply"))->ok);
     stopped.terminate();
     QVERIFY(stopped.waitForFinished(Wait));
     const QString log = QString::fromUtf8(stopped.readAllStandardError());
@@ -683,6 +706,9 @@ void TestGateway::executableWillAndCleanStop()
                               Wait);
     QVERIFY2(log.contains(QStringLiteral("line1: PLC link connected")), qPrintable(log));
     QVERIFY2(log.contains(QStringLiteral("line1: stopped (status offline)")), qPrintable(log));
+    QVERIFY2(log.contains(QStringLiteral("\"5\\n") + QString::fromUtf8(forged)), qPrintable(log));
+    for (const QString &line : log.split(u'\n'))
+        QVERIFY2(!line.endsWith(QStringLiteral("(id \"x\"): written")), qPrintable(log));
 }
 
 QTEST_GUILESS_MAIN(TestGateway)

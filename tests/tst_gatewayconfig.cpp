@@ -248,6 +248,25 @@ void TestGatewayConfig::errors_data()
                                 << QJsonValue("twice.json")
                                 << "connection 1 (line1): table 1, item 3: station 1 R1 is "
                                    "watched twice (each address has one topic)";
+    // A misspelt or unknown setting is an error at load (issue 33), with the place and the
+    // known key it most likely means.
+    QTest::newRow("unknown root key")
+        << QVariantList{"readonly"} << QJsonValue(true)
+        << "\"readonly\" is not a known setting; did you mean \"readOnly\"?";
+    QTest::newRow("unknown broker key")
+        << QVariantList{"broker", "keepalive"} << QJsonValue(30)
+        << "broker: \"keepalive\" is not a known setting; did you mean \"keepAliveSec\"?";
+    QTest::newRow("unknown link key")
+        << QVariantList{"connections", 0, "link", "hots"} << QJsonValue("10.0.0.6")
+        << "connection 1 (line1): link: \"hots\" is not a known setting; did you mean "
+           "\"host\"?";
+    QTest::newRow("unknown watch list key")
+        << QVariantList{"connections", 0, "watchLists", 0, "interval"} << QJsonValue(500)
+        << "connection 1 (line1): watch list 1: \"interval\" is not a known setting; did you "
+           "mean \"intervalMs\"?";
+    QTest::newRow("unknown key, none near")
+        << QVariantList{"connections", 1, "colour"} << QJsonValue("red")
+        << "connection 2 (line2): \"colour\" is not a known setting.";
     QTest::newRow("interval") << QVariantList{"connections", 0, "watchLists", 0, "intervalMs"}
                               << QJsonValue(1)
                               << "connection 1 (line1): watch list 1: intervalMs 1 is out of "
@@ -323,6 +342,18 @@ void TestGatewayConfig::checkInvalid()
                                     + QStringLiteral(": connection 1 (line1): link: port 70000 "
                                                      "is out of range (1..65535)"));
     QCOMPARE(run.err.count(u'\n'), 1); // one line
+
+    // The misspelling that once left writes enabled while --check said "read-only no".
+    const QString misspelt
+        = write(QStringLiteral("misspelt.json"),
+                QJsonDocument(replaced(validConfig(), {"readonly"}, true).toObject()).toJson());
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--check", misspelt});
+    QCOMPARE(run.code, 2);
+    QVERIFY(run.out.isEmpty());
+    QCOMPARE(run.err.trimmed(),
+             QStringLiteral("fatek-gateway: ") + misspelt
+                 + QStringLiteral(": \"readonly\" is not a known setting; did you mean "
+                                  "\"readOnly\"?"));
 
     const QString garbage = write(QStringLiteral("garbage.json"), "{\"format\":");
     run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--check", garbage});

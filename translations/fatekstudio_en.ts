@@ -1542,6 +1542,14 @@
             <translation>&quot;%1&quot; must be %2.</translation>
         </message>
         <message>
+            <source>&quot;%1&quot; is not a known setting.</source>
+            <translation>&quot;%1&quot; is not a known setting.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a known setting; did you mean &quot;%2&quot;?</source>
+            <translation>&quot;%1&quot; is not a known setting; did you mean &quot;%2&quot;?</translation>
+        </message>
+        <message>
             <source>a string</source>
             <translation>a string</translation>
         </message>

@@ -1542,6 +1542,14 @@
             <translation>&quot;%1&quot; 必須是%2。</translation>
         </message>
         <message>
+            <source>&quot;%1&quot; is not a known setting.</source>
+            <translation>&quot;%1&quot; 不是已知的設定。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a known setting; did you mean &quot;%2&quot;?</source>
+            <translation>&quot;%1&quot; 不是已知的設定；您是指 &quot;%2&quot; 嗎？</translation>
+        </message>
+        <message>
             <source>a string</source>
             <translation>字串</translation>
         </message>

@@ -4,6 +4,7 @@
 #include "app/common/quitsignal.h"
 #include "core/gateway/gatewayconfig.h"
 #include "core/gateway/gatewaylink.h"
+#include "core/protocol/logtext.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -30,11 +31,12 @@ QTextStream &err()
     return stream;
 }
 
-// One line per event: UTC time, connection, what happened.
+// One line per event: UTC time, connection, what happened (a command's value may hold a
+// newline: escapedForLog keeps it on this line).
 void logLine(const QString &connection, const Message &event)
 {
     err() << QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs) << ' ' << connection
-          << ": " << QString::fromStdString(english(event)) << Qt::endl;
+          << ": " << QString::fromStdString(escapedForLog(english(event))) << Qt::endl;
 }
 
 QString allowText(const GatewayConnectionConfig &connection)

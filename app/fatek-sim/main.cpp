@@ -2,6 +2,7 @@
 
 #include "app/common/quitsignal.h"
 #include "core/commission/programimage.h"
+#include "core/protocol/logtext.h"
 #include "core/sim/modelprofile.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
@@ -270,8 +271,9 @@ int main(int argc, char *argv[])
     server.setBindAddress(bind);
     server.setFaults(faults);
     server.setVerbose(parser.isSet(verboseOpt));
-    QObject::connect(&server, &SimServer::logLine, &app,
-                     [](const QString &line) { out() << line << Qt::endl; });
+    QObject::connect(&server, &SimServer::logLine, &app, [](const QString &line) {
+        out() << QString::fromStdString(escapedForLog(line.toStdString())) << Qt::endl;
+    });
 
     QString error;
     if (parser.isSet(tcpOpt)) {

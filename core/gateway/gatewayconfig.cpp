@@ -10,8 +10,10 @@
 #include <QJsonObject>
 #include <QSet>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace Fatek {
 
@@ -30,7 +32,35 @@ std::string keyText(const QString &key)
     return key.toStdString();
 }
 
+// Edit distance with adjacent transpositions ("hots" -> "host" is 1), ignoring case.
+qsizetype editDistance(const QString &a, const QString &b)
+{
+    const QString x = a.toCaseFolded();
+    const QString y = b.toCaseFolded();
+    std::vector<std::vector<qsizetype>> d(
+        static_cast<std::size_t>(x.size() + 1),
+        std::vector<qsizetype>(static_cast<std::size_t>(y.size() + 1)));
+    const auto at = [&d](qsizetype i, qsizetype j) -> qsizetype & {
+        return d[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+    };
+    for (qsizetype i = 0; i <= x.size(); ++i)
+        at(i, 0) = i;
+    for (qsizetype j = 0; j <= y.size(); ++j)
+        at(0, j) = j;
+    for (qsizetype i = 1; i <= x.size(); ++i) {
+        for (qsizetype j = 1; j <= y.size(); ++j) {
+            const qsizetype cost = x.at(i - 1) == y.at(j - 1) ? 0 : 1;
+            at(i, j) = std::min({at(i - 1, j) + 1, at(i, j - 1) + 1, at(i - 1, j - 1) + cost});
+            if (i > 1 && j > 1 && x.at(i - 1) == y.at(j - 2) && x.at(i - 2) == y.at(j - 1))
+                at(i, j) = std::min(at(i, j), at(i - 2, j - 2) + 1);
+        }
+    }
+    return at(x.size(), y.size());
+}
+
 // Reads optional typed keys of one JSON object; the first problem wins and the rest is skipped.
+// Every key asked for is a known key of the object: rejectUnknown() then refuses any other, so a
+// misspelt setting ("readonly") is an error instead of a silent default.
 class Reader
 {
 public:
@@ -40,11 +70,51 @@ public:
 
     Problem problem;
 
-    bool has(const QString &key) const { return m_object.contains(key); }
+    bool has(const QString &key)
+    {
+        m_known.insert(key);
+        return m_object.contains(key);
+    }
+
+    // Keys read elsewhere (the format marker and version of the root object).
+    void known(std::initializer_list<QString> keys)
+    {
+        for (const QString &key : keys)
+            m_known.insert(key);
+    }
+
+    // After every key has been asked for: the first key (in order) that none was, with the known
+    // key it most likely means when one is close enough.
+    void rejectUnknown()
+    {
+        if (problem)
+            return;
+        QStringList unknown;
+        for (const QString &key : m_object.keys()) {
+            if (!m_known.contains(key))
+                unknown.append(key);
+        }
+        if (unknown.isEmpty())
+            return;
+        const QString key = unknown.first();
+        QString nearest;
+        qsizetype best = std::max<qsizetype>(1, key.size() / 3) + 1;
+        QStringList candidates(m_known.cbegin(), m_known.cend());
+        candidates.sort();
+        for (const QString &candidate : std::as_const(candidates)) {
+            if (const qsizetype distance = editDistance(key, candidate); distance < best) {
+                best = distance;
+                nearest = candidate;
+            }
+        }
+        problem = nearest.isEmpty()
+                      ? msg<MsgId::GatewayConfigUnknownKey>(keyText(key))
+                      : msg<MsgId::GatewayConfigUnknownKeyNear>(keyText(key), keyText(nearest));
+    }
 
     QString string(const QString &key, const QString &fallback = {})
     {
-        const QJsonValue value = m_object.value(key);
+        const QJsonValue value = valueOf(key);
         if (value.isUndefined() || problem)
             return fallback;
         if (!value.isString()) {
@@ -56,7 +126,7 @@ public:
 
     bool boolean(const QString &key, bool fallback)
     {
-        const QJsonValue value = m_object.value(key);
+        const QJsonValue value = valueOf(key);
         if (value.isUndefined() || problem)
             return fallback;
         if (!value.isBool()) {
@@ -69,7 +139,7 @@ public:
     // A whole number in [min, max]; `fallback` when absent.
     std::optional<qint64> integer(const QString &key, qint64 min, qint64 max)
     {
-        const QJsonValue value = m_object.value(key);
+        const QJsonValue value = valueOf(key);
         if (value.isUndefined() || problem)
             return std::nullopt;
         const double number = value.toDouble(std::numeric_limits<double>::quiet_NaN());
@@ -94,7 +164,7 @@ public:
 
     QJsonArray array(const QString &key)
     {
-        const QJsonValue value = m_object.value(key);
+        const QJsonValue value = valueOf(key);
         if (value.isUndefined() || problem)
             return {};
         if (!value.isArray()) {
@@ -106,7 +176,7 @@ public:
 
     QJsonObject object(const QString &key, bool required)
     {
-        const QJsonValue value = m_object.value(key);
+        const QJsonValue value = valueOf(key);
         if (problem)
             return {};
         if (value.isUndefined()) {
@@ -122,12 +192,19 @@ public:
     }
 
 private:
+    QJsonValue valueOf(const QString &key)
+    {
+        m_known.insert(key);
+        return m_object.value(key);
+    }
+
     void wrongType(const QString &key, Message type)
     {
         problem = msg<MsgId::GatewayConfigWrongType>(keyText(key), std::move(type));
     }
 
     QJsonObject m_object;
+    QSet<QString> m_known;
 };
 
 QString resolve(const QString &baseDirectory, const QString &file)
@@ -163,6 +240,7 @@ Problem readBroker(const QJsonObject &json, const QString &baseDirectory, MqttBr
     const QString passwordFile = r.string(QStringLiteral("passwordFile"));
     broker.clientId = r.string(QStringLiteral("clientId"));
     r.integerInto(QStringLiteral("keepAliveSec"), 5, 65535, &broker.keepAliveSec);
+    r.rejectUnknown();
     if (r.problem)
         return r.problem;
     if (!passwordFile.isEmpty()) {
@@ -203,6 +281,7 @@ Problem readLink(const QJsonObject &json, LinkSettings *out)
     const QString protocol = r.string(QStringLiteral("protocol"), QStringLiteral("facon"));
     r.integerInto(QStringLiteral("timeoutMs"), 1, 60000, &link.timeoutMs);
     r.integerInto(QStringLiteral("retries"), 0, 10, &link.retries);
+    r.rejectUnknown();
     if (r.problem)
         return r.problem;
     if (!format.isEmpty()) {
@@ -240,6 +319,7 @@ Problem readWatchLists(Reader &r, const QString &baseDirectory, GatewayConnectio
         if (const std::optional<qint64> interval = lr.integer(
                 QStringLiteral("intervalMs"), WatchList::MinIntervalMs, WatchList::MaxIntervalMs))
             ref.intervalMs = static_cast<int>(*interval);
+        lr.rejectUnknown();
         if (!lr.problem && ref.file.isEmpty())
             lr.problem = msg<MsgId::GatewayConfigMissing>("file");
         if (lr.problem)
@@ -297,6 +377,8 @@ Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
     r.integerInto(QStringLiteral("statisticsIntervalMs"), GatewayConfig::MinStatisticsIntervalMs,
                   GatewayConfig::MaxStatisticsIntervalMs, &c->statisticsIntervalMs);
     const QJsonObject link = r.object(QStringLiteral("link"), true);
+    r.known({QStringLiteral("allow"), QStringLiteral("watchLists")}); // read below
+    r.rejectUnknown();
     if (r.problem)
         return r.problem;
     if (Problem p = readLink(link, &c->link))
@@ -370,6 +452,8 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
     config.readOnly = r.boolean(QStringLiteral("readOnly"), false);
     const QJsonObject broker = r.object(QStringLiteral("broker"), false);
     const QJsonArray connections = r.array(QStringLiteral("connections"));
+    r.known({QStringLiteral("format"), QStringLiteral("version")}); // checked above
+    r.rejectUnknown();
     if (r.problem)
         return fail(*r.problem);
     if (!GatewayTopics::isValidPrefix(config.prefix))

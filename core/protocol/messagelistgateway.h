@@ -17,6 +17,13 @@ FATEK_MSG(GatewayConfigWrongVersion, 2,
                             "version %2)."))
 FATEK_MSG(GatewayConfigMissing, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is missing."))
 FATEK_MSG(GatewayConfigWrongType, 2, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2."))
+// A key no reader of that object knows (a misspelt setting must not be ignored): %1 the key as
+// written, %2 the known key of that object it most likely means.
+FATEK_MSG(GatewayConfigUnknownKey, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a known setting."))
+FATEK_MSG(GatewayConfigUnknownKeyNear, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"%1\" is not a known setting; did you mean \"%2\"?"))
 FATEK_MSG(GatewayTypeString, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a string"))
 FATEK_MSG(GatewayTypeNumber, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a whole number"))
 FATEK_MSG(GatewayTypeBool, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 or %2"))
