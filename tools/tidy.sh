@@ -36,7 +36,7 @@ python3 tools/tidybatch.py "$db/compile_commands.json" "$db" "$jobs" "${FATEK_TI
 findings=$(sed 's/\x1b\[[0-9;]*m//g' "$log" | grep -E '^/.*:[0-9]+:[0-9]+: (warning|error): ' | sort -u || true)
 count=$(printf '%s' "$findings" | grep -c . || true)
 echo "tidy: ${#files[@]} files, $count findings, $(($(date +%s) - start)) s"
-grep "^tidy: .* translation units" "$log" || true
+grep "^tidy: .* clang-tidy runs" "$log" || true
 if [ "$count" -ne 0 ] || [ "$status" -ne 0 ]; then
     [ -n "$findings" ] && printf '%s\n' "$findings" || tail -40 "$log"
     exit 1

@@ -6,8 +6,8 @@ Most of clang-tidy's time per source goes into parsing and matching Qt's headers
 translation unit, each source's text after a `#line 1 "path"` marker, so the headers are parsed
 once per batch while every finding still names its own file and line, and every source is still
 the main file for checks that look only there (misc-unused-using-decls). A batch that does not
-compile as one (two sources with the same internal name) is checked again source by source, so
-a clash costs time, never a finding.
+compile as one (two sources with the same internal name) is halved until its parts do, so a
+clash costs time, never a finding.
 
     tidybatch.py COMPILE_DB OUT_DIR JOBS BATCH_SIZE FILE...
 
@@ -56,12 +56,38 @@ def unbatched(output, layouts):
     return re.sub(r"(%s):(\d+):" % names, place, output)
 
 
-def run_tidy(db_dir, source):
-    # The checks are the project's whatever folder the batch is written to.
-    config = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), ".clang-tidy")
-    proc = subprocess.run([CLANG_TIDY, "-quiet", "--config-file=" + config, "-p", db_dir, source], stdout=subprocess.PIPE,
-                          stderr=subprocess.STDOUT, text=True, errors="replace")
+CONFIG = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), ".clang-tidy")
+
+
+def run_tidy(db_dir, source, directory=None, args=None):
+    """One clang-tidy run: a source with its command from the database, or a batch with `args`.
+    The checks are the project's, whatever folder a batch is written to."""
+    command = [CLANG_TIDY, "-quiet", "--config-file=" + CONFIG, source]
+    command += ["--"] + list(args[1:]) if args else ["-p", db_dir]
+    proc = subprocess.run(command, cwd=directory, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          text=True, errors="replace")
     return proc.returncode, proc.stdout
+
+
+class Batches:
+    """Writes batch translation units: the sources' texts one after another, each after a #line."""
+
+    def __init__(self, out_dir):
+        self.out_dir, self.count, self.layouts = out_dir, 0, {}
+
+    def write(self, chunk):
+        path = os.path.join(self.out_dir, "batch%03d.cpp" % self.count)
+        self.count += 1
+        starts, line = [], 1
+        with open(path, "w") as out:
+            for source in chunk:
+                text = open(source, encoding="utf-8").read()
+                text += "" if text.endswith("\n") else "\n"
+                out.write('#line 1 "%s"\n%s' % (source, text))
+                starts.append((line + 1, source))
+                line += 1 + text.count("\n")
+        self.layouts[path] = starts
+        return path
 
 
 def main():
@@ -77,52 +103,46 @@ def main():
     for f in sorted(files):
         groups.setdefault((command_key(entries[f]), os.path.dirname(f)), []).append(f)
 
-    batch_db, batches, layouts = [], [], {}
-    for (key, folder), members in groups.items():
-        directory, args = key
-        for i in range(0, len(members), batch_size):
-            chunk = members[i:i + batch_size]
-            if len(chunk) == 1:
-                batches.append((chunk[0], chunk))
-                continue
-            path = os.path.join(out_dir, "batch%03d.cpp" % len(batches))
-            starts, line = [], 1
-            with open(path, "w") as out:
-                for source in chunk:
-                    text = open(source, encoding="utf-8").read()
-                    text += "" if text.endswith("\n") else "\n"
-                    out.write('#line 1 "%s"\n%s' % (source, text))
-                    starts.append((line + 1, source))
-                    line += 1 + text.count("\n")
-            layouts[path] = starts
-            # Quoted includes resolve against the batch's folder, not the source's: -iquote it.
-            command = list(args) + ["-iquote", folder, "-c", path, "-o", path + ".o"]
-            batch_db.append({"directory": directory, "file": path, "command": shlex.join(command)})
-            batches.append((path, chunk))
-
-    # One database with the batches and the single sources as they were.
-    db_dir = os.path.join(out_dir, "db")
-    os.makedirs(db_dir, exist_ok=True)
-    json.dump(list(entries.values()) + batch_db, open(os.path.join(db_dir, "compile_commands.json"), "w"))
-
-    retries, failed = [], 0
+    batches = Batches(out_dir)
+    runs, failed, clashes = 0, 0, 0
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        results = list(pool.map(lambda b: (b, run_tidy(db_dir, b[0])), batches))
-        for (tu, chunk), (rc, output) in results:
-            clash = COMPILE_ERROR.search(output) if len(chunk) > 1 else None
-            if clash:
-                print("tidy: %s did not compile as one (%s): checked alone" % (
-                    " ".join(os.path.relpath(c) for c in chunk), clash.group(0).split(": error: ")[-1]),
-                    file=sys.stderr)
-                retries.extend(chunk)
-                continue
-            failed += rc != 0
-            sys.stdout.write(unbatched(output, {tu: layouts[tu]} if tu in layouts else {}))
-        for source, (rc, output) in zip(retries, pool.map(lambda s: run_tidy(db_dir, s), retries)):
-            failed += rc != 0
-            sys.stdout.write(output)
-    print("tidy: %d sources in %d translation units, %d checked again alone (a batch did not compile)"
-          % (len(files), len(batches), len(retries)), file=sys.stderr)
+        def submit(chunk, directory, args, folder):
+            nonlocal runs
+            runs += 1
+            if len(chunk) == 1:
+                future = pool.submit(run_tidy, os.path.dirname(db_path), chunk[0])
+                return future, (chunk, None, directory, args, folder)
+            tu = batches.write(chunk)
+            # Quoted includes resolve against the batch's folder, not the source's: -iquote it.
+            command = list(args) + ["-iquote", folder]
+            return pool.submit(run_tidy, None, tu, directory, command), (chunk, tu, directory, args, folder)
+
+        pending = {}
+        for ((directory, args), folder), members in groups.items():
+            for i in range(0, len(members), batch_size):
+                future, what = submit(members[i:i + batch_size], directory, args, folder)
+                pending[future] = what
+        while pending:
+            done, _ = concurrent.futures.wait(pending, return_when=concurrent.futures.FIRST_COMPLETED)
+            for future in done:
+                chunk, tu, directory, args, folder = pending.pop(future)
+                rc, output = future.result()
+                clash = COMPILE_ERROR.search(output) if tu else None
+                if clash:
+                    # Two sources with the same internal name: check each half on its own.
+                    clashes += 1
+                    print("tidy: %s did not compile as one (%s): halved" % (
+                        " ".join(os.path.relpath(c) for c in chunk), clash.group(0).split(": error: ")[-1]),
+                        file=sys.stderr)
+                    half = len(chunk) // 2
+                    for part in (chunk[:half], chunk[half:]):
+                        f, what = submit(part, directory, args, folder)
+                        pending[f] = what
+                    continue
+                failed += rc != 0
+                sys.stdout.write(unbatched(output, {tu: batches.layouts[tu]} if tu else {}))
+    print("tidy: %d sources in %d clang-tidy runs (%d batches halved: they did not compile as one)"
+          % (len(files), runs, clashes), file=sys.stderr)
     sys.exit(1 if failed else 0)
 
 
