@@ -53,11 +53,12 @@ stage "release tests" ctest --preset release
 stage "asan configure" configure_preset asan
 stage "asan build" cmake --build --preset asan
 stage "asan tests" ctest --preset asan
+# Install test of the .deb/.tar.gz built from the release build (see docs/packaging.md); here, while
+# the lane still builds, rather than at the end.
+stage "package install test" tools/package-test.sh
 lane_join
 lane_start "fuzz-build" 'export FUZZ_BUILD_ONLY=1; stage "fuzz build" tools/fuzz.sh'
 stage "tsan tests" ctest --preset tsan
-# Install test of the .deb/.tar.gz built from the release build (see docs/packaging.md).
-stage "package install test" tools/package-test.sh
 lane_join
 # Each fuzz target briefly on the seed corpus (long runs: docs/reliability.md).
 stage "fuzz smoke" tools/fuzz.sh "${FATEK_FUZZ_SECONDS:-10}"
