@@ -7,6 +7,7 @@
 #include "core/sim/simulatedplc.h"
 
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QFile>
 #include <QProcess>
 #include <QSerialPort>
@@ -14,6 +15,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include <algorithm>
 #include <memory>
@@ -548,6 +550,21 @@ void TestSession::userActionsGoFirst()
     QList<quint64> polls;
     for (int i = 0; i < 15; ++i)
         polls.append(session->submit(Request::readRegisters(1, addr("R0"), 4), Priority::Poll));
+    // The order among the two below is the priorities' only if both wait when the worker picks its
+    // next job. So they are submitted while the worker waits for an answer that cannot come yet:
+    // the simulator has just taken a query, and its answer's latency timer needs this thread's
+    // event loop, which is not running while they are submitted. (Submitted at any other time,
+    // the worker could take the background job before the user's arrived.)
+    m_server->setVerbose(true);
+    QEventLoop queryTaken;
+    bool taken = false;
+    connect(m_server.get(), &SimServer::logLine, &queryTaken, [&] {
+        taken = true;
+        queryTaken.quit();
+    });
+    QTimer::singleShot(10000, &queryTaken, &QEventLoop::quit);
+    queryTaken.exec();
+    QVERIFY(taken);
     const quint64 background = session->submit(Request::briefStatus(1), Priority::Background);
     const quint64 user
         = session->submit(Request::writeRegisters(1, addr("R60"), {5}), Priority::User);
