@@ -15,23 +15,11 @@ start=$(date +%s)
 log=$(mktemp "${TMPDIR:-/tmp}/fatek-tidy.XXXXXX")
 trap 'rm -f "$log"' EXIT
 status=0
-# The compile commands without the precompiled header (cmake/FatekPch.cmake): clang cannot read
-# GCC's, and without the forced include every source must include what it uses, which this
-# checks too (a missing #include is a clang-diagnostic-error finding).
+# Batches go to a temporary folder (tools/tidybatch.py also drops the precompiled header).
 db=$(mktemp -d "${TMPDIR:-/tmp}/fatek-tidy-db.XXXXXX")
 trap 'rm -f "$log"; rm -rf "$db"' EXIT
-python3 - "$build/compile_commands.json" "$db/compile_commands.json" <<'PY'
-import json, re, sys
-entries = json.load(open(sys.argv[1]))
-for e in entries:
-    c = e["command"]
-    c = re.sub(r" -Xclang -include-pch -Xclang \S+| -Xclang -include -Xclang \S+cmake_pch\.hxx", "", c)
-    c = re.sub(r" -include \S+cmake_pch\.hxx| -Winvalid-pch", "", c)
-    e["command"] = c
-json.dump(entries, open(sys.argv[2], "w"), indent=1)
-PY
 # In batches of sources that share a compile command (tools/tidybatch.py says why and how).
-python3 tools/tidybatch.py "$db/compile_commands.json" "$db" "$jobs" "${FATEK_TIDY_BATCH:-8}" "${files[@]}" >"$log" 2>&1 || status=$?
+python3 tools/tidybatch.py "$build/compile_commands.json" "$db" "$jobs" "${FATEK_TIDY_BATCH:-8}" "${files[@]}" >"$log" 2>&1 || status=$?
 # Only our own findings: "file:line:col: warning|error: text [check]" (colour codes removed).
 findings=$(sed 's/\x1b\[[0-9;]*m//g' "$log" | grep -E '^/.*:[0-9]+:[0-9]+: (warning|error): ' | sort -u || true)
 count=$(printf '%s' "$findings" | grep -c . || true)

@@ -29,10 +29,12 @@ COMPILE_ERROR = re.compile(r"^/.*:\d+:\d+: (?:fatal )?error: .*\[clang-diagnosti
 
 
 def command_key(entry):
-    """The compile command without its source and output: sources with equal keys can share a TU."""
-    args = shlex.split(entry["command"])
+    """The compile command without its source and output, and without the precompiled header
+    (cmake/FatekPch.cmake): clang cannot read GCC's. Sources with equal keys can share a TU."""
+    command = re.sub(r" -Xclang -include-pch -Xclang \S+| -Xclang -include -Xclang \S+cmake_pch\.hxx"
+                     r"| -include \S+cmake_pch\.hxx| -Winvalid-pch", "", entry["command"])
     out, skip = [], False
-    for a in args:
+    for a in shlex.split(command):
         if skip:
             skip = False
             continue
@@ -59,11 +61,10 @@ def unbatched(output, layouts):
 CONFIG = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), ".clang-tidy")
 
 
-def run_tidy(db_dir, source, directory=None, args=None):
-    """One clang-tidy run: a source with its command from the database, or a batch with `args`.
-    The checks are the project's, whatever folder a batch is written to."""
-    command = [CLANG_TIDY, "-quiet", "--config-file=" + CONFIG, source]
-    command += ["--"] + list(args[1:]) if args else ["-p", db_dir]
+def run_tidy(source, directory, args):
+    """One clang-tidy run of a source or a batch, its compile flags on the command line. The checks
+    are the project's, whatever folder a batch is written to."""
+    command = [CLANG_TIDY, "-quiet", "--config-file=" + CONFIG, source, "--"] + list(args[1:])
     proc = subprocess.run(command, cwd=directory, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           text=True, errors="replace")
     return proc.returncode, proc.stdout
@@ -110,12 +111,12 @@ def main():
             nonlocal runs
             runs += 1
             if len(chunk) == 1:
-                future = pool.submit(run_tidy, os.path.dirname(db_path), chunk[0])
+                future = pool.submit(run_tidy, chunk[0], directory, args)
                 return future, (chunk, None, directory, args, folder)
             tu = batches.write(chunk)
             # Quoted includes resolve against the batch's folder, not the source's: -iquote it.
             command = list(args) + ["-iquote", folder]
-            return pool.submit(run_tidy, None, tu, directory, command), (chunk, tu, directory, args, folder)
+            return pool.submit(run_tidy, tu, directory, command), (chunk, tu, directory, args, folder)
 
         pending = {}
         for ((directory, args), folder), members in groups.items():
