@@ -7,11 +7,79 @@
 #include <QTcpSocket>
 #include <QThread>
 
+#ifdef Q_OS_UNIX
 #include <unistd.h>
+#endif
+#ifdef Q_OS_WIN
+#include <QDir>
+#include <QRegularExpression>
+
+#include <windows.h>
+#endif
 
 namespace TestUtil {
 
+namespace {
+
+#ifdef Q_OS_WIN
+// The Windows build's tests run under Wine (tools/windows/test.sh), where the broker is the host's
+// Linux mosquitto (Wine starts Unix programs too). It reads Unix paths: Wine's kernel32 converts
+// the Windows paths of its configuration. On Windows itself the function is absent and paths stay.
+QString hostPath(const QString &path)
+{
+    using ToUnix = char *(*)(const wchar_t *);
+    static const auto toUnix = reinterpret_cast<ToUnix>(reinterpret_cast<void (*)()>(
+        GetProcAddress(GetModuleHandleW(L"kernel32.dll"), "wine_get_unix_file_name")));
+    if (!toUnix)
+        return path;
+    const std::wstring native = QDir::toNativeSeparators(path).toStdWString();
+    char *unixPath = toUnix(native.c_str());
+    if (!unixPath)
+        return path;
+    const QString result = QString::fromUtf8(unixPath);
+    HeapFree(GetProcessHeap(), 0, unixPath);
+    return result;
+}
+
+bool underWine()
+{
+    return GetProcAddress(GetModuleHandleW(L"kernel32.dll"), "wine_get_unix_file_name") != nullptr;
+}
+
+QString hostPaths(const QString &text)
+{
+    static const QRegularExpression drivePath(QStringLiteral("[A-Za-z]:[/\\\\][^\\s]*"));
+    QString result;
+    qsizetype last = 0;
+    for (const QRegularExpressionMatch &m : drivePath.globalMatch(text)) {
+        result += text.mid(last, m.capturedStart() - last) + hostPath(m.captured());
+        last = m.capturedEnd();
+    }
+    return result + text.mid(last);
+}
+#else
+QString hostPath(const QString &path)
+{
+    return path;
+}
+QString hostPaths(const QString &text)
+{
+    return text;
+}
+#endif
+
+} // namespace
+
 MosquittoBroker::MosquittoBroker() = default;
+
+bool MosquittoBroker::canStop()
+{
+#ifdef Q_OS_WIN
+    return !underWine();
+#else
+    return true;
+#endif
+}
 
 MosquittoBroker::~MosquittoBroker()
 {
@@ -81,17 +149,23 @@ bool MosquittoBroker::start(QString *error, const QString &extraConfig)
                        .arg(m_dir.filePath(QStringLiteral("mosquitto.log")));
     // Started as root, mosquitto switches to the user "mosquitto", which cannot write the log in
     // our private directory; it then resets every connection (seen in a fresh Debian root).
+#ifdef Q_OS_UNIX
     if (::geteuid() == 0)
         text += QStringLiteral("user root\n");
+#else
+    // Under Wine the broker is a Linux program, possibly started as root (a Windows mosquitto
+    // ignores the option; a Linux one not started as root too).
+    text += QStringLiteral("user root\n");
+#endif
     if (!extraConfig.contains(QStringLiteral("allow_anonymous")))
         text += QStringLiteral("allow_anonymous true\n");
     text += extraConfig + u'\n';
-    config.write(text.toUtf8());
+    config.write(hostPaths(text).toUtf8());
     config.close();
 
     m_process = std::make_unique<QProcess>();
     m_process->setProcessChannelMode(QProcess::MergedChannels);
-    m_process->start(program, {QStringLiteral("-c"), configPath});
+    m_process->start(program, {QStringLiteral("-c"), hostPath(configPath)});
     if (!m_process->waitForStarted(5000)) {
         *error = QStringLiteral("mosquitto did not start: %1").arg(m_process->errorString());
         m_process.reset();

@@ -37,6 +37,9 @@ public:
     // What the broker wrote (for failure messages).
     QString log() const;
 
+    // False under Wine (tools/windows/test.sh), where the broker is the host's Linux mosquitto and
+    // Wine cannot signal it: tests that stop or kill the broker skip there.
+    static bool canStop();
     // /usr/sbin/mosquitto or the first mosquitto in PATH; empty when not installed.
     static QString executable();
 

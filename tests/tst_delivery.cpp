@@ -16,8 +16,10 @@
 #include <QTest>
 #include <QTimer>
 
+#ifdef Q_OS_UNIX
 #include <fcntl.h>
 #include <unistd.h>
+#endif
 
 #include <memory>
 
@@ -33,6 +35,7 @@ Run runCli(const QStringList &arguments, int timeoutMs = 30000)
     return TestUtil::runProgram(QStringLiteral(FATEK_CLI_PATH), arguments, timeoutMs);
 }
 
+#ifdef Q_OS_UNIX
 std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b)
 {
     const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
@@ -52,6 +55,7 @@ std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b)
         QTest::qWait(10);
     return QFile::exists(a) && QFile::exists(b) ? process : nullptr;
 }
+#endif
 
 } // namespace
 
@@ -93,8 +97,10 @@ void TestDelivery::init()
 
 void TestDelivery::cleanup()
 {
+#ifdef Q_OS_UNIX
     if (m_holdFd >= 0)
         ::close(m_holdFd);
+#endif
     m_holdFd = -1;
     m_server.reset();
     m_plc.reset();
@@ -110,6 +116,9 @@ QStringList TestDelivery::link(const QString &medium)
             qWarning() << error;
         return {QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:%1").arg(m_server->tcpPort())};
     }
+#ifndef Q_OS_UNIX
+    return {}; // pty pairs are Unix; tools/windows/test.sh checks a Wine COM port instead
+#else
     m_dir = std::make_unique<QTemporaryDir>();
     const QString plcSide = m_dir->filePath(QStringLiteral("plc"));
     const QString appSide = m_dir->filePath(QStringLiteral("app"));
@@ -128,6 +137,7 @@ QStringList TestDelivery::link(const QString &medium)
     if (m_holdFd < 0)
         return {};
     return {QStringLiteral("--serial"), appSide};
+#endif
 }
 
 void TestDelivery::writesReachThePlc_data()

@@ -7,7 +7,8 @@
 # Environment: FRESH_ROOT_MIRROR (Debian mirror; default: the host's own, see host_mirror),
 # FRESH_ROOT_CCACHE=DIR (a host directory bind-mounted as the root's ccache directory, and
 # FATEK_CCACHE=1: repeated runs reuse the compiler's work; CI's cold figure is without it),
-# FRESH_ROOT_KEEP=1, FRESH_ROOT_DIR.
+# FRESH_ROOT_WIN_PREFIX (default ~/.cache/fatek-studio/qt6-mingw: the cross-built Qt of
+# tools/windows/build-qt.sh, mounted read-only when it is there), FRESH_ROOT_KEEP=1, FRESH_ROOT_DIR.
 #
 # The untouched debootstrap output is cached as a tarball in ~/.cache/fatek-studio/ and made again
 # when older than 30 days; the root itself is unpacked anew every run and removed afterwards
@@ -30,16 +31,24 @@ if [ "${1:-}" = --inside ]; then
         mount --bind "$FRESH_ROOT_CCACHE" "$root/root/.cache/ccache"
         ccache=1
     fi
+    # The Windows cross build's Qt (tools/windows/build-qt.sh), read-only at the same path (its
+    # pkg-config file names it), when the host has made it: tools/windows/ci.sh uses it.
+    if [ -n "${FRESH_ROOT_WIN_PREFIX:-}" ] && [ -f "$FRESH_ROOT_WIN_PREFIX/fatek-prefix.txt" ]; then
+        mkdir -p "$root$FRESH_ROOT_WIN_PREFIX"
+        mount --bind -o ro "$FRESH_ROOT_WIN_PREFIX" "$root$FRESH_ROOT_WIN_PREFIX"
+        win_prefix=$FRESH_ROOT_WIN_PREFIX
+    fi
     exec chroot "$root" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-        HOME=/root LANG=C.UTF-8 TERM="${TERM:-dumb}" CI="${CI:-}" FATEK_CCACHE="$ccache" \
+        HOME=/root LANG=C.UTF-8 TERM="${TERM:-dumb}" CI="${CI:-}" FATEK_CCACHE="$ccache" FATEK_WIN_PREFIX="${win_prefix:-/nonexistent}" \
         /bin/bash -c 'cd "$0" && exec "$@"' "$dest" "$@"
 fi
 
 [ $# -gt 0 ] || set -- tools/test.sh
 if [ "$(id -u)" -ne 0 ]; then
-    exec sudo --preserve-env=CI,FRESH_ROOT_KEEP,FRESH_ROOT_DIR,FRESH_ROOT_MIRROR,FRESH_ROOT_CCACHE "$0" "$@"
+    exec sudo --preserve-env=CI,FRESH_ROOT_KEEP,FRESH_ROOT_DIR,FRESH_ROOT_MIRROR,FRESH_ROOT_CCACHE,FRESH_ROOT_WIN_PREFIX "$0" "$@"
 fi
 repo=$(cd "$(dirname "$0")/.." && pwd)
+export FRESH_ROOT_WIN_PREFIX=${FRESH_ROOT_WIN_PREFIX:-$HOME/.cache/fatek-studio/qt6-mingw}
 say() { echo "== fresh-root: $*"; }
 
 if ! command -v debootstrap >/dev/null; then

@@ -1430,6 +1430,10 @@
             <translation>A client certificate needs its key file, and a key its certificate.</translation>
         </message>
         <message>
+            <source>%1 needs TLS, which this build&apos;s MQTT library does not have (the Windows build has none yet): use an mqtt:// broker.</source>
+            <translation>%1 needs TLS, which this build&apos;s MQTT library does not have (the Windows build has none yet): use an mqtt:// broker.</translation>
+        </message>
+        <message>
             <source>A broker password needs a user name.</source>
             <translation>A broker password needs a user name.</translation>
         </message>

@@ -1430,6 +1430,10 @@
             <translation>用戶端憑證需要其金鑰檔，金鑰也需要其憑證。</translation>
         </message>
         <message>
+            <source>%1 needs TLS, which this build&apos;s MQTT library does not have (the Windows build has none yet): use an mqtt:// broker.</source>
+            <translation>%1 需要 TLS，但此版本的 MQTT 函式庫不支援 TLS（Windows 版目前沒有）：請使用 mqtt:// 代理伺服器。</translation>
+        </message>
+        <message>
             <source>A broker password needs a user name.</source>
             <translation>代理伺服器密碼需要使用者名稱。</translation>
         </message>

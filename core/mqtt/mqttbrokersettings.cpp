@@ -3,6 +3,8 @@
 #include <QFileInfo>
 #include <QUrl>
 
+#include <mosquitto.h>
+
 namespace Fatek {
 
 Result<MqttBrokerSettings> MqttBrokerSettings::fromUrl(const QString &text)
@@ -43,6 +45,14 @@ QString MqttBrokerSettings::toUrl() const
     return url;
 }
 
+bool MqttBrokerSettings::tlsAvailable()
+{
+    // A libmosquitto built without TLS answers every TLS setting with "not supported", before
+    // it looks at its arguments; one built with TLS refuses these (no CA) as invalid.
+    return mosquitto_tls_set(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr)
+           != MOSQ_ERR_NOT_SUPPORTED;
+}
+
 Message MqttBrokerSettings::validate() const
 {
     if (host.trimmed().isEmpty())
@@ -59,6 +69,8 @@ Message MqttBrokerSettings::validate() const
         return msg<MsgId::MqttPasswordNeedsUser>();
     if (keepAliveSec < 5 || reconnectMinMs < 10 || reconnectMaxMs < reconnectMinMs)
         return msg<MsgId::MqttTimingInvalid>();
+    if (tls && !tlsAvailable())
+        return msg<MsgId::MqttTlsUnavailable>(toUrl().toStdString());
     return {};
 }
 

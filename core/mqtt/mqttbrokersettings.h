@@ -35,6 +35,9 @@ struct MqttBrokerSettings
     QString toUrl() const;
     // Empty when usable, else what to fix (TLS files that do not exist, a port of 0 ...).
     Message validate() const;
+    // Whether this build's MQTT library can speak TLS (mqtts://): the Windows build's cannot
+    // yet (docs/windows.md). validate() refuses TLS settings where it cannot.
+    static bool tlsAvailable();
 
     bool operator==(const MqttBrokerSettings &) const = default;
 };

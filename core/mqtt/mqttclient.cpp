@@ -1,18 +1,20 @@
 #include "mqttclient.h"
 
 #include "core/session/crossthreadcall.h"
+#include "wakesocket.h"
 
 #include <QCoreApplication>
 #include <QMetaObject>
 
 #include <mosquitto.h>
 
-#include <fcntl.h>
+#ifdef _WIN32
+#include <winsock2.h>
+#else
 #include <netinet/in.h>
 #include <netinet/tcp.h>
-#include <poll.h>
 #include <sys/socket.h>
-#include <unistd.h>
+#endif
 
 #include <atomic>
 #include <cerrno>
@@ -34,6 +36,13 @@ void initLibrary()
 {
     static std::once_flag once;
     std::call_once(once, [] { mosquitto_lib_init(); });
+}
+
+// The library's socket as poll() takes it (a SOCKET on Windows, which libmosquitto hands out as
+// an int).
+WakeSocket::Handle socketOf(struct mosquitto *mosq)
+{
+    return static_cast<WakeSocket::Handle>(mosquitto_socket(mosq));
 }
 
 void setCork(int sock, bool on)
@@ -97,10 +106,9 @@ struct MqttClientShared
     std::atomic<bool> connected{false};
     std::atomic<bool> connackSeen{false};
     std::atomic<int> outstanding{0};
-    // Wakes the network thread out of poll(): a byte written when the outbox turns non-empty.
-    int wakeRead = -1;
-    int wakeWrite = -1;
-    bool wakePending = false; // a byte is in the pipe and not yet read (under mutex)
+    // Wakes the network thread out of poll(): a datagram sent when the outbox turns non-empty.
+    WakeSocket waker;
+    bool wakePending = false; // a datagram is queued and not yet read (under mutex)
     // Network thread only: messages received since the last hand-over to the owner's thread.
     struct Incoming
     {
@@ -109,14 +117,6 @@ struct MqttClientShared
         bool retained = false;
     };
     std::vector<Incoming> inbox;
-
-    ~MqttClientShared()
-    {
-        if (wakeRead >= 0)
-            ::close(wakeRead);
-        if (wakeWrite >= 0)
-            ::close(wakeWrite);
-    }
 
     // CrossThreadCall: a queued call with the marks ThreadSanitizer needs to see the hand-over
     // (Debian's Qt is not built with TSan; a plain invokeMethod reads as a race).
@@ -128,11 +128,10 @@ struct MqttClientShared
     // Under mutex.
     void wakeUp()
     {
-        if (wakePending || wakeWrite < 0)
+        if (wakePending || !waker.isOpen())
             return;
         wakePending = true;
-        const char byte = 1;
-        [[maybe_unused]] const auto written = ::write(wakeWrite, &byte, 1);
+        waker.wake();
     }
 
     void run();
@@ -267,8 +266,8 @@ bool MqttClientShared::serve()
             if (connected && sock >= 0) {
                 mosquitto_disconnect(mosq);
                 for (int i = 0; i < 10 && mosquitto_socket(mosq) >= 0; ++i) {
-                    pollfd out{mosquitto_socket(mosq), POLLOUT, 0};
-                    ::poll(&out, 1, 50);
+                    pollfd out{socketOf(mosq), POLLOUT, 0};
+                    WakeSocket::poll(&out, 1, 50);
                     if (mosquitto_loop_write(mosq, 1) != MOSQ_ERR_SUCCESS)
                         break;
                 }
@@ -279,16 +278,14 @@ bool MqttClientShared::serve()
         if (sock < 0)
             return false;
         pollfd fds[2]
-            = {{sock, static_cast<short>(POLLIN | (mosquitto_want_write(mosq) ? POLLOUT : 0)), 0},
-               {wakeRead, POLLIN, 0}};
+            = {{socketOf(mosq), static_cast<short>(POLLIN | (mosquitto_want_write(mosq) ? POLLOUT : 0)), 0},
+               {waker.handle(), POLLIN, 0}};
         // Keep-alive has a resolution of seconds: loop_misc() once a second is enough.
-        if (::poll(fds, 2, 1000) < 0 && errno != EINTR)
+        if (WakeSocket::poll(fds, 2, 1000) < 0 && errno != EINTR)
             return false;
         if (fds[1].revents & POLLIN) {
-            char bytes[64];
             std::lock_guard lock(mutex);
-            while (::read(wakeRead, bytes, sizeof bytes) > 0) {
-            }
+            waker.drain();
             wakePending = false;
         }
         if (fds[0].revents & (POLLIN | POLLERR | POLLHUP)) {
@@ -296,8 +293,10 @@ bool MqttClientShared::serve()
             for (int i = 0; i < 1000; ++i) {
                 if (mosquitto_loop_read(mosq, 1) != MOSQ_ERR_SUCCESS)
                     break;
-                pollfd more{mosquitto_socket(mosq), POLLIN, 0};
-                if (more.fd < 0 || ::poll(&more, 1, 0) <= 0)
+                if (mosquitto_socket(mosq) < 0)
+                    break;
+                pollfd more{socketOf(mosq), POLLIN, 0};
+                if (WakeSocket::poll(&more, 1, 0) <= 0)
                     break;
             }
             deliverInbox();
@@ -406,15 +405,14 @@ bool MqttClient::open()
     };
     if (const Message invalid = s.validate(); !invalid.empty())
         return failWith(invalid);
-    if (m_shared->wakeRead < 0) {
-        int pipeEnds[2];
-        if (::pipe2(pipeEnds, O_NONBLOCK | O_CLOEXEC) != 0)
-            return failWith(
-                msg<MsgId::MqttLibraryError>(Message::text(libraryError(MOSQ_ERR_ERRNO))));
+    std::string wakerError;
+    {
         std::lock_guard lock(m_shared->mutex);
-        m_shared->wakeRead = pipeEnds[0];
-        m_shared->wakeWrite = pipeEnds[1];
+        if (!m_shared->waker.open())
+            wakerError = m_shared->waker.error();
     }
+    if (!wakerError.empty())
+        return failWith(msg<MsgId::MqttLibraryError>(Message::text(wakerError)));
     struct mosquitto *mosq = mosquitto_new(s.clientId.toUtf8().constData(), true, m_shared.get());
     if (!mosq)
         return failWith(msg<MsgId::MqttLibraryError>(Message::text(libraryError(MOSQ_ERR_ERRNO))));

@@ -12,6 +12,10 @@ FATEK_MSG(MqttTlsFileMissing, 1,
 FATEK_MSG(MqttTlsCertNeedsKey, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "A client certificate needs its key file, and a key its certificate."))
+FATEK_MSG(MqttTlsUnavailable, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 needs TLS, which this build's MQTT library does not have (the "
+                            "Windows build has none yet): use an mqtt:// broker."))
 FATEK_MSG(MqttPasswordNeedsUser, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "A broker password needs a user name."))
 FATEK_MSG(MqttTimingInvalid, 0,

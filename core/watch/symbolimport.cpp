@@ -12,6 +12,12 @@
 #include <algorithm>
 #include <optional>
 
+#ifdef Q_OS_WIN
+#include <string>
+
+#include <windows.h>
+#endif
+
 namespace Fatek {
 
 using WatchList::Errors::linePlace;
@@ -24,6 +30,42 @@ struct Decoded
     SymbolImport::Encoding encoding = SymbolImport::Encoding::Utf8;
 };
 
+#ifdef Q_OS_WIN
+// Qt for Windows has no ICU, so no Big5 decoder: Windows' own code page 950 (Traditional
+// Chinese) decodes it, line by line so that a line with bytes that are not Big5 gets the U+FFFD
+// the caller skips it for, as ICU's decoder does. Empty when the system lacks code page 950.
+std::optional<QString> decodeBig5(const QByteArray &data)
+{
+    if (!IsValidCodePage(950))
+        return std::nullopt;
+    QStringList lines;
+    for (const QByteArray &line : data.split('\n')) {
+        const int size = static_cast<int>(line.size());
+        const int length = size == 0 ? 0
+                                     : MultiByteToWideChar(950, MB_ERR_INVALID_CHARS,
+                                                           line.constData(), size, nullptr, 0);
+        if (size > 0 && length <= 0) {
+            lines.append(QString(QChar(QChar::ReplacementCharacter)));
+            continue;
+        }
+        std::wstring wide(static_cast<std::size_t>(length), L'\0');
+        if (length > 0)
+            MultiByteToWideChar(950, MB_ERR_INVALID_CHARS, line.constData(), size, wide.data(),
+                                length);
+        lines.append(QString::fromStdWString(wide));
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+#else
+std::optional<QString> decodeBig5(const QByteArray &data)
+{
+    QStringDecoder big5("Big5");
+    if (!big5.isValid())
+        return std::nullopt;
+    return big5.decode(data);
+}
+#endif
+
 // UTF-8 when the bytes are valid UTF-8, else Big5. Qt's ICU decoder does not report bad Big5
 // bytes: it puts U+FFFD in their place, which the lines holding one are skipped for.
 std::optional<Decoded> decode(const QByteArray &bytes)
@@ -35,11 +77,10 @@ std::optional<Decoded> decode(const QByteArray &bytes)
     QString text = utf8.decode(data);
     if (!utf8.hasError())
         return Decoded{text, SymbolImport::Encoding::Utf8};
-    QStringDecoder big5("Big5");
-    if (!big5.isValid())
+    const std::optional<QString> big5 = decodeBig5(data);
+    if (!big5)
         return std::nullopt;
-    text = big5.decode(data);
-    return Decoded{text, SymbolImport::Encoding::Big5};
+    return Decoded{*big5, SymbolImport::Encoding::Big5};
 }
 
 bool isSeparator(QChar c)
