@@ -278,7 +278,8 @@ bool MqttClientShared::serve()
         if (sock < 0)
             return false;
         pollfd fds[2]
-            = {{socketOf(mosq), static_cast<short>(POLLIN | (mosquitto_want_write(mosq) ? POLLOUT : 0)), 0},
+            = {{socketOf(mosq),
+                static_cast<short>(POLLIN | (mosquitto_want_write(mosq) ? POLLOUT : 0)), 0},
                {waker.handle(), POLLIN, 0}};
         // Keep-alive has a resolution of seconds: loop_misc() once a second is enough.
         if (WakeSocket::poll(fds, 2, 1000) < 0 && errno != EINTR)

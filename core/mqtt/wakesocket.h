@@ -32,9 +32,18 @@ public:
 
     // Creates the socket; false (and error() says why) when the system refuses.
     bool open();
-    bool isOpen() const { return m_handle != InvalidHandle; }
-    Handle handle() const { return m_handle; }
-    std::string error() const { return m_error; }
+    bool isOpen() const
+    {
+        return m_handle != InvalidHandle;
+    }
+    Handle handle() const
+    {
+        return m_handle;
+    }
+    std::string error() const
+    {
+        return m_error;
+    }
 
     // One datagram: the poll() that waits on handle() returns with POLLIN.
     void wake();
