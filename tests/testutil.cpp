@@ -84,7 +84,10 @@ void useTestSettings(const QString &directory, const QString &applicationName)
 
 QStringList ProgramRun::lines() const
 {
-    return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    // A Windows console program ends its lines with CR LF.
+    QString text = out;
+    text.remove(QLatin1Char('\r'));
+    return text.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
 }
 
 QJsonObject ProgramRun::json() const

@@ -24,7 +24,11 @@ struct Run
     QString out;
     QString err;
 
-    QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
+    // A Windows console program ends its lines with CR LF.
+    QStringList lines() const
+    {
+        return QString(out).remove(QLatin1Char('\r')).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    }
     QJsonObject json(int line = 0) const
     {
         const QStringList l = lines();
