@@ -19,7 +19,7 @@ for a in "$@"; do
 done
 prefix=${FATEK_WIN_PREFIX:-$HOME/.cache/fatek-studio/qt6-mingw}
 if [ ! -f "$prefix/fatek-prefix.txt" ]; then
-    echo "No cross-built Qt in $prefix: make it once with tools/windows/build-qt.sh (about 30 minutes on 2 cores)."
+    echo "No cross-built Qt in $prefix: make it once with tools/windows/build-qt.sh (about 50 minutes on 2 cores)."
     exit 2
 fi
 tools/windows/install-deps.sh

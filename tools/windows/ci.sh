@@ -8,7 +8,7 @@ cd "$(dirname "$0")/../.."
 source tools/stage.sh
 prefix=${FATEK_WIN_PREFIX:-$HOME/.cache/fatek-studio/qt6-mingw}
 if [ ! -f "$prefix/fatek-prefix.txt" ]; then
-    echo "== Windows: not built: no cross-built Qt in $prefix (make it once with tools/windows/build-qt.sh, about 30 minutes on 2 cores; CI then mounts it)"
+    echo "== Windows: not built: no cross-built Qt in $prefix (make it once with tools/windows/build-qt.sh, about 50 minutes on 2 cores; CI then mounts it)"
     exit 0
 fi
 stage "Windows: packages" tools/windows/install-deps.sh
