@@ -1,6 +1,8 @@
 // fatek-cli end to end: the built executable run with QProcess, against its embedded simulator
 // (--sim) and against the independent Python reference PLC (tests/reference/fatekref.py) over TCP
 // and UDP in both protocols.
+#include "testutil.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -18,17 +20,9 @@
 
 namespace {
 
-struct Run
+// The shared result of a program run (lines() drops Windows' CR), with any line as JSON.
+struct Run : TestUtil::ProgramRun
 {
-    int code = -1;
-    QString out;
-    QString err;
-
-    // A Windows console program ends its lines with CR LF.
-    QStringList lines() const
-    {
-        return QString(out).remove(QLatin1Char('\r')).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-    }
     QJsonObject json(int line = 0) const
     {
         const QStringList l = lines();
