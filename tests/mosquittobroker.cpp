@@ -1,5 +1,7 @@
 #include "mosquittobroker.h"
 
+#include "testutil.h"
+
 #include <QDeadlineTimer>
 #include <QFile>
 #include <QStandardPaths>
@@ -41,11 +43,6 @@ QString hostPath(const QString &path)
     return result;
 }
 
-bool underWine()
-{
-    return GetProcAddress(GetModuleHandleW(L"kernel32.dll"), "wine_get_unix_file_name") != nullptr;
-}
-
 QString hostPaths(const QString &text)
 {
     static const QRegularExpression drivePath(QStringLiteral("[A-Za-z]:[/\\\\][^\\s]*"));
@@ -70,16 +67,22 @@ QString hostPaths(const QString &text)
 
 } // namespace
 
-MosquittoBroker::MosquittoBroker() = default;
+// Under Wine the broker is a Linux program, which a Windows program can neither signal nor
+// kill (QProcess::terminate() and kill() do nothing to it, and its QProcess may say it ended at
+// once), and a broker left running holds CTest's output pipe open, so CTest waits for the test
+// until its time-out. A Linux shell starts it instead and ends it when the test writes "term" or
+// "kill" into the file $3, or when that file's folder (the broker's QTemporaryDir) is gone. Wine
+// gives a Linux child no standard input to be told through, and no parent to watch (its parent
+// is init).
+const char *const wineWrapper
+    = "\"$1\" -c \"$2\" & pid=$!; dir=$(dirname \"$3\"); how=; "
+      "while kill -0 $pid 2>/dev/null; do "
+      "if [ -s \"$3\" ]; then how=$(cat \"$3\"); break; fi; "
+      "[ -d \"$dir\" ] || { how=term; break; }; sleep 0.1; done; "
+      "case $how in kill) kill -KILL $pid ;; term) kill -TERM $pid ;; esac 2>/dev/null; "
+      "wait $pid";
 
-bool MosquittoBroker::canStop()
-{
-#ifdef Q_OS_WIN
-    return !underWine();
-#else
-    return true;
-#endif
-}
+MosquittoBroker::MosquittoBroker() = default;
 
 MosquittoBroker::~MosquittoBroker()
 {
@@ -165,7 +168,15 @@ bool MosquittoBroker::start(QString *error, const QString &extraConfig)
 
     m_process = std::make_unique<QProcess>();
     m_process->setProcessChannelMode(QProcess::MergedChannels);
-    m_process->start(program, {QStringLiteral("-c"), hostPath(configPath)});
+    m_underWine = underWine();
+    QFile::remove(stopFile());
+    if (m_underWine)
+        m_process->start(QStringLiteral("/bin/bash"),
+                         {QStringLiteral("-c"), QString::fromLatin1(wineWrapper),
+                          QStringLiteral("mosquitto-wrapper"), program, hostPath(configPath),
+                          hostPath(stopFile())});
+    else
+        m_process->start(program, {QStringLiteral("-c"), hostPath(configPath)});
     if (!m_process->waitForStarted(5000)) {
         *error = QStringLiteral("mosquitto did not start: %1").arg(m_process->errorString());
         m_process.reset();
@@ -187,17 +198,47 @@ bool MosquittoBroker::start(QString *error, const QString &extraConfig)
         }
         QThread::msleep(20);
     }
-    *error = QStringLiteral("mosquitto did not listen on port %1 within 10 s: %2")
+    *error = QStringLiteral("mosquitto did not listen on port %1 within 10 s: %2 %3")
                  .arg(m_port)
-                 .arg(log());
+                 .arg(QString::fromUtf8(m_process->readAll()), log());
     stop();
     return false;
+}
+
+QString MosquittoBroker::stopFile() const
+{
+    return m_dir.filePath(QStringLiteral("mosquitto.stop"));
+}
+
+void MosquittoBroker::tellWrapper(const char *how) const
+{
+    QFile file(stopFile());
+    if (file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        file.write(how);
+}
+
+void MosquittoBroker::stopUnderWine(const char *how)
+{
+    tellWrapper(how);
+    // Stopped when nothing listens on its port any more.
+    const QDeadlineTimer deadline(5000);
+    while (!deadline.hasExpired()) {
+        QTcpSocket socket;
+        socket.connectToHost(QHostAddress::LocalHost, m_port);
+        if (!socket.waitForConnected(200))
+            break;
+        socket.abort();
+        QThread::msleep(50);
+    }
+    m_process.reset();
 }
 
 void MosquittoBroker::stop()
 {
     if (!m_process)
         return;
+    if (m_underWine)
+        return stopUnderWine("term");
     if (m_process->state() != QProcess::NotRunning) {
         m_process->terminate();
         if (!m_process->waitForFinished(5000)) {
@@ -212,6 +253,8 @@ void MosquittoBroker::kill()
 {
     if (!m_process)
         return;
+    if (m_underWine)
+        return stopUnderWine("kill");
     m_process->kill();
     m_process->waitForFinished(2000);
     m_process.reset();

@@ -37,16 +37,18 @@ public:
     // What the broker wrote (for failure messages).
     QString log() const;
 
-    // False under Wine (tools/windows/test.sh), where the broker is the host's Linux mosquitto and
-    // Wine cannot signal it: tests that stop or kill the broker skip there.
-    static bool canStop();
     // /usr/sbin/mosquitto or the first mosquitto in PATH; empty when not installed.
     static QString executable();
 
 private:
+    QString stopFile() const;
+    void tellWrapper(const char *how) const;
+    void stopUnderWine(const char *how);
+
     QTemporaryDir m_dir;
     std::unique_ptr<QProcess> m_process;
     quint16 m_port = 0;
+    bool m_underWine = false; // the broker runs under tests/mosquittobroker.cpp's wineWrapper
 };
 
 } // namespace TestUtil

@@ -1,6 +1,7 @@
 #include "testutil.h"
 
 #include <QCoreApplication>
+#include <QDebug>
 #include <QEventLoop>
 #include <QFile>
 #include <QJsonArray>
@@ -10,6 +11,10 @@
 #include <QSettings>
 #include <QStringList>
 #include <QTimer>
+
+#ifdef Q_OS_WIN
+#include <windows.h>
+#endif
 
 namespace TestUtil {
 
@@ -116,6 +121,34 @@ ProgramRun runProgram(const QString &program, const QStringList &arguments, int 
     r.out = QString::fromUtf8(p.readAllStandardOutput());
     r.err = QString::fromUtf8(p.readAllStandardError());
     return r;
+}
+
+bool underWine()
+{
+#ifdef Q_OS_WIN
+    return GetProcAddress(GetModuleHandleW(L"kernel32.dll"), "wine_get_unix_file_name") != nullptr;
+#else
+    return false;
+#endif
+}
+
+void startConsoleProgram(QProcess *process, const QString &program, const QStringList &arguments)
+{
+#ifdef Q_OS_WIN
+    process->setCreateProcessArgumentsModifier(
+        [](QProcess::CreateProcessArguments *args) { args->flags |= CREATE_NEW_PROCESS_GROUP; });
+#endif
+    process->start(program, arguments);
+}
+
+void stopConsoleProgram(QProcess *process)
+{
+#ifdef Q_OS_WIN
+    if (!GenerateConsoleCtrlEvent(CTRL_BREAK_EVENT, static_cast<DWORD>(process->processId())))
+        qWarning("GenerateConsoleCtrlEvent failed: error %lu", GetLastError());
+#else
+    process->terminate();
+#endif
 }
 
 } // namespace TestUtil

@@ -8,6 +8,8 @@
 #include <QString>
 #include <QStringList>
 
+class QProcess;
+
 #include <cstring>
 #include <span>
 
@@ -49,6 +51,17 @@ QString toFacon(std::span<const std::uint8_t> bytes);
 // Points QSettings at INI files in `directory` under the test's own application name, so the
 // developer's own settings never leak into a test (nor a test's into them).
 void useTestSettings(const QString &directory, const QString &applicationName);
+
+// True when a Windows test program runs under Wine (tools/windows/test.sh).
+bool underWine();
+
+// Starts a console program (fatek-gateway, fatek-sim) so that stopConsoleProgram() can ask it to
+// stop as a user would. On Windows it gets a process group of its own, the target of a Ctrl-Break.
+void startConsoleProgram(QProcess *process, const QString &program, const QStringList &arguments);
+// SIGTERM on Unix; on Windows a Ctrl-Break (QProcess::terminate() sends WM_CLOSE there, which a
+// console program, having no window, never gets). The program's stop path is the same as for a
+// user's Ctrl-C.
+void stopConsoleProgram(QProcess *process);
 
 // One run of a command-line program: exit code (-1: did not start or end in time, -2: crashed),
 // standard output and error.

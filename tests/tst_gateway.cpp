@@ -440,8 +440,6 @@ void TestGateway::readOnlyRefusesEverything()
 
 void TestGateway::brokerRestartRepublishes()
 {
-    if (!TestUtil::MosquittoBroker::canStop())
-        QSKIP("Wine cannot stop the Linux broker it started (tools/windows/test.sh)");
     QVERIFY(startGateway(false));
     {
         Inbox inbox;
@@ -475,8 +473,6 @@ void TestGateway::brokerRestartRepublishes()
 
 void TestGateway::publisherBoundsWhileBrokerAway()
 {
-    if (!TestUtil::MosquittoBroker::canStop())
-        QSKIP("Wine cannot stop the Linux broker it started (tools/windows/test.sh)");
     MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(m_broker->url());
     settings.reconnectMinMs = 50;
     settings.reconnectMaxMs = 200;
@@ -670,7 +666,7 @@ void TestGateway::executableWillAndCleanStop()
         QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
         file.write(configJson(false, keepAliveSec));
         file.close();
-        process->start(QStringLiteral(FATEK_GATEWAY_PATH), {configPath});
+        TestUtil::startConsoleProgram(process, QStringLiteral(FATEK_GATEWAY_PATH), {configPath});
         QVERIFY(process->waitForStarted(Wait));
         QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
     };
@@ -694,7 +690,12 @@ void TestGateway::executableWillAndCleanStop()
         QVERIFY(later.last.value(statusTopic()).retained);
     }
 
-    // SIGTERM: the gateway publishes offline itself at once (the will would take 90 s here).
+    // Wine 8 delivers no console control event (GenerateConsoleCtrlEvent fails with error 12
+    // without a console, 6 on a pty): the Windows stop path is tested on Windows only.
+    if (TestUtil::underWine())
+        QSKIP("Wine delivers no Ctrl-Break to a console program (GenerateConsoleCtrlEvent)");
+    // SIGTERM (Ctrl-Break on Windows): the gateway publishes offline itself at once (the will
+    // would take 90 s here).
     QProcess stopped;
     run(60, &stopped);
     if (QTest::currentTestFailed())
@@ -707,7 +708,7 @@ void TestGateway::executableWillAndCleanStop()
     QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(topic("R100") + QStringLiteral("/reply")).has_value(),
                              Wait);
     QVERIFY(!inbox.reply(topic("R100") + QStringLiteral("/reply"))->ok);
-    stopped.terminate();
+    TestUtil::stopConsoleProgram(&stopped);
     QVERIFY(stopped.waitForFinished(Wait));
     const QString log = QString::fromUtf8(stopped.readAllStandardError());
     QCOMPARE(stopped.exitStatus(), QProcess::NormalExit);

@@ -54,7 +54,7 @@ void onQuitSignal(QObject *context, std::function<void()> onQuit)
 }
 #elif defined(Q_OS_WIN)
 namespace {
-BOOL WINAPI onConsoleControl(DWORD)
+BOOL WINAPI onConsoleControl(DWORD event)
 {
     // Runs on a thread of its own: hand over to the context's thread.
     if (g_context)
@@ -65,6 +65,12 @@ BOOL WINAPI onConsoleControl(DWORD)
                     g_onQuit();
             },
             Qt::QueuedConnection);
+    // Closing the console window, logging off or shutting down ends the process as soon as the
+    // handler returns: wait here instead, so that the clean stop (the gateway's "offline") runs;
+    // the program's own exit ends this thread, and Windows kills a program that takes longer
+    // than about 5 s.
+    if (event == CTRL_CLOSE_EVENT || event == CTRL_LOGOFF_EVENT || event == CTRL_SHUTDOWN_EVENT)
+        Sleep(INFINITE);
     return TRUE;
 }
 } // namespace
@@ -73,6 +79,9 @@ void onQuitSignal(QObject *context, std::function<void()> onQuit)
 {
     g_onQuit = std::move(onQuit);
     g_context = context;
+    // A program started in a process group of its own (CREATE_NEW_PROCESS_GROUP, as service
+    // wrappers do) starts with Ctrl-C ignored: take it again, as the Unix side does for SIGINT.
+    SetConsoleCtrlHandler(nullptr, FALSE);
     SetConsoleCtrlHandler(onConsoleControl, TRUE);
 }
 #else

@@ -58,8 +58,14 @@ void setCork(int sock, bool on)
 
 std::string libraryError(int rc)
 {
-    if (rc == MOSQ_ERR_ERRNO)
+    if (rc == MOSQ_ERR_ERRNO) {
+#ifdef _WIN32
+        // libmosquitto puts WSAGetLastError() into errno on Windows: Winsock codes from 10000.
+        if (errno >= WSABASEERR)
+            return WakeSocket::errorText(errno);
+#endif
         return std::strerror(errno);
+    }
     return mosquitto_strerror(rc);
 }
 

@@ -1,6 +1,7 @@
 #include "wakesocket.h"
 
 #ifdef _WIN32
+#include <windows.h>
 #include <ws2tcpip.h>
 #else
 #include <arpa/inet.h>
@@ -19,7 +20,7 @@ namespace {
 #ifdef _WIN32
 std::string lastSocketError()
 {
-    return "Windows socket error " + std::to_string(WSAGetLastError());
+    return WakeSocket::errorText(WSAGetLastError());
 }
 void closeHandle(WakeSocket::Handle h)
 {
@@ -28,7 +29,7 @@ void closeHandle(WakeSocket::Handle h)
 #else
 std::string lastSocketError()
 {
-    return std::strerror(errno);
+    return WakeSocket::errorText(errno);
 }
 void closeHandle(WakeSocket::Handle h)
 {
@@ -107,6 +108,30 @@ int WakeSocket::poll(pollfd *fds, unsigned count, int timeoutMs)
     return ::WSAPoll(fds, count, timeoutMs);
 #else
     return ::poll(fds, count, timeoutMs);
+#endif
+}
+
+std::string WakeSocket::errorText(int code)
+{
+#ifdef _WIN32
+    wchar_t *buffer = nullptr;
+    const DWORD length = FormatMessageW(
+        FORMAT_MESSAGE_ALLOCATE_BUFFER | FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
+        nullptr, static_cast<DWORD>(code), 0, reinterpret_cast<wchar_t *>(&buffer), 0, nullptr);
+    std::string text;
+    if (length > 0) {
+        const int size = WideCharToMultiByte(CP_UTF8, 0, buffer, static_cast<int>(length), nullptr,
+                                             0, nullptr, nullptr);
+        text.resize(static_cast<std::size_t>(size));
+        WideCharToMultiByte(CP_UTF8, 0, buffer, static_cast<int>(length), text.data(), size,
+                            nullptr, nullptr);
+        LocalFree(buffer);
+    }
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' '))
+        text.pop_back();
+    return text.empty() ? "Windows socket error " + std::to_string(code) : text;
+#else
+    return std::strerror(code);
 #endif
 }
 

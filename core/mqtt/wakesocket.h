@@ -53,6 +53,11 @@ public:
     // poll() on Linux, WSAPoll() on Windows.
     static int poll(pollfd *fds, unsigned count, int timeoutMs);
 
+    // The system's words for a socket error: strerror() on Linux; on Windows the system message
+    // of a Winsock code (WSAECONNREFUSED: "No connection could be made because the target
+    // machine actively refused it."), which strerror() calls "Unknown error".
+    static std::string errorText(int code);
+
 private:
     Handle m_handle = InvalidHandle;
     std::string m_error;
