@@ -510,7 +510,8 @@ void TestProgram::cliBackupRestoreRoundTrip()
     // The last line is the outcome (the check comes first).
     const QJsonObject result
         = QJsonDocument::fromJson(restore.lines().constLast().toUtf8()).object();
-    QCOMPARE(result.value(QStringLiteral("verified")).toBool(), true);
+    QVERIFY2(result.value(QStringLiteral("verified")).toBool(),
+             qPrintable(restore.out + restore.err));
     QCOMPARE(result.value(QStringLiteral("changedPages")).toArray().size(), 5);
     QCOMPARE(plcPages(*m_rig.plc), imagePages(saved.image()));
 }

@@ -79,9 +79,6 @@ void onQuitSignal(QObject *context, std::function<void()> onQuit)
 {
     g_onQuit = std::move(onQuit);
     g_context = context;
-    // A program started in a process group of its own (CREATE_NEW_PROCESS_GROUP, as service
-    // wrappers do) starts with Ctrl-C ignored: take it again, as the Unix side does for SIGINT.
-    SetConsoleCtrlHandler(nullptr, FALSE);
     SetConsoleCtrlHandler(onConsoleControl, TRUE);
 }
 #else

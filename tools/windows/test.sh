@@ -13,7 +13,10 @@ build=build/windows-cross
 prefix=${FATEK_WIN_PREFIX:-$HOME/.cache/fatek-studio/qt6-mingw}
 [ -f $build/CTestTestfile.cmake ] || { echo "no Windows build with tests in $build: run tools/windows/build.sh"; exit 2; }
 export WINEPREFIX=${WINEPREFIX:-$PWD/$build/wine}
-export WINEARCH=win64 WINEDEBUG=-all
+# A Qt Test program with no console window (Wine run without a terminal) writes its report
+# with OutputDebugString instead of stdout: +debugstr shows it (and qDebug) on stderr, so CTest's
+# --output-on-failure has the failure text.
+export WINEARCH=win64 WINEDEBUG=-all,warn+debugstr
 # No Mono or Gecko download prompt: nothing here needs .NET or Wine's HTML engine.
 export WINEDLLOVERRIDES="mscoree,mshtml="
 unset DISPLAY
@@ -22,6 +25,8 @@ cleanup() {
     [ -z "${socat_pid:-}" ] || kill "$socat_pid" 2>/dev/null || true
     [ -z "${sim_pid:-}" ] || kill "$sim_pid" 2>/dev/null || true
     wineserver -k 2>/dev/null || true
+    # A test that crashed leaves its Linux broker (tests/mosquittobroker.cpp) behind.
+    pkill -f "mosquitto -c $WINEPREFIX/" 2>/dev/null || true
     rm -rf "$tmp"
 }
 trap cleanup EXIT
