@@ -99,7 +99,9 @@ installer_test() {
     local setup dir="C:\\FATEK Studio test" unixdir key out
     setup=$(ls $build/fatek-studio-*-win64.exe 2>/dev/null | head -1)
     [ -n "$setup" ] || { echo "!! no installer in $build: run tools/windows/build.sh"; return 1; }
-    wine "$setup" /S "/D=$dir"
+    # NSIS takes /D=PATH unquoted, spaces and all, as the command line's end; wine would quote an
+    # argument with spaces, cmd passes the line as written.
+    wine cmd /c "$(winepath -w "$setup") /S /D=$dir"
     unixdir=$(winepath -u "$dir")
     local f
     for f in bin/fatek-studio.exe bin/fatek-cli.exe bin/fatek-sim.exe bin/fatek-gateway.exe \
