@@ -20,8 +20,11 @@ sudo_cmd=()
 [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
 # deb-src beside the deb entries of the Debian archive the machine already uses.
 if ! grep -rqsE '^(deb-src|Types:.*deb-src)' /etc/apt/sources.list /etc/apt/sources.list.d/; then
-    mirror=$(grep -rhsE '^URIs:|^deb ' /etc/apt/sources.list /etc/apt/sources.list.d/*.sources \
-                 /etc/apt/sources.list.d/*.list 2>/dev/null | grep -v security | grep -oE 'https?://[^ ]+' | head -1)
+    # (grep says 2 for a glob that matched nothing, which pipefail and set -e would make fatal:
+    # a fresh root has only sources.list.)
+    mirror=$({ grep -rhsE '^URIs:|^deb ' /etc/apt/sources.list /etc/apt/sources.list.d/*.sources \
+                   /etc/apt/sources.list.d/*.list 2>/dev/null || true; } |
+                 { grep -v security || true; } | { grep -oE 'https?://[^ ]+' || true; } | head -1)
     mirror=${mirror:-http://deb.debian.org/debian}
     echo "Adding a deb-src entry for $mirror (bookworm)"
     printf 'Types: deb-src\nURIs: %s\nSuites: bookworm bookworm-updates\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
