@@ -13,10 +13,7 @@
 #include <unistd.h>
 #endif
 #ifdef Q_OS_WIN
-#include <QDir>
 #include <QRegularExpression>
-
-#include <windows.h>
 #endif
 
 namespace TestUtil {
@@ -24,25 +21,7 @@ namespace TestUtil {
 namespace {
 
 #ifdef Q_OS_WIN
-// The Windows build's tests run under Wine (tools/windows/test.sh), where the broker is the host's
-// Linux mosquitto (Wine starts Unix programs too). It reads Unix paths: Wine's kernel32 converts
-// the Windows paths of its configuration. On Windows itself the function is absent and paths stay.
-QString hostPath(const QString &path)
-{
-    using ToUnix = char *(*)(const wchar_t *);
-    static const auto toUnix = reinterpret_cast<ToUnix>(reinterpret_cast<void (*)()>(
-        GetProcAddress(GetModuleHandleW(L"kernel32.dll"), "wine_get_unix_file_name")));
-    if (!toUnix)
-        return path;
-    const std::wstring native = QDir::toNativeSeparators(path).toStdWString();
-    char *unixPath = toUnix(native.c_str());
-    if (!unixPath)
-        return path;
-    const QString result = QString::fromUtf8(unixPath);
-    HeapFree(GetProcessHeap(), 0, unixPath);
-    return result;
-}
-
+// The broker under Wine is a Linux program: it reads Unix paths (hostPath()).
 QString hostPaths(const QString &text)
 {
     static const QRegularExpression drivePath(QStringLiteral("[A-Za-z]:[/\\\\][^\\s]*"));
@@ -55,10 +34,6 @@ QString hostPaths(const QString &text)
     return result + text.mid(last);
 }
 #else
-QString hostPath(const QString &path)
-{
-    return path;
-}
 QString hostPaths(const QString &text)
 {
     return text;

@@ -1,7 +1,7 @@
 #include "testutil.h"
 
 #include <QCoreApplication>
-#include <QDebug>
+#include <QDir>
 #include <QEventLoop>
 #include <QFile>
 #include <QJsonArray>
@@ -123,12 +123,43 @@ ProgramRun runProgram(const QString &program, const QStringList &arguments, int 
     return r;
 }
 
+#ifdef Q_OS_WIN
+namespace {
+// Wine's kernel32 has it; Windows itself does not.
+using ToUnix = char *(*)(const wchar_t *);
+ToUnix wineToUnix()
+{
+    static const auto toUnix = reinterpret_cast<ToUnix>(reinterpret_cast<void (*)()>(
+        GetProcAddress(GetModuleHandleW(L"kernel32.dll"), "wine_get_unix_file_name")));
+    return toUnix;
+}
+} // namespace
+#endif
+
 bool underWine()
 {
 #ifdef Q_OS_WIN
-    return GetProcAddress(GetModuleHandleW(L"kernel32.dll"), "wine_get_unix_file_name") != nullptr;
+    return wineToUnix() != nullptr;
 #else
     return false;
+#endif
+}
+
+QString hostPath(const QString &path)
+{
+#ifdef Q_OS_WIN
+    const ToUnix toUnix = wineToUnix();
+    if (!toUnix)
+        return path;
+    const std::wstring native = QDir::toNativeSeparators(path).toStdWString();
+    char *unixPath = toUnix(native.c_str());
+    if (!unixPath)
+        return path;
+    const QString result = QString::fromUtf8(unixPath);
+    HeapFree(GetProcessHeap(), 0, unixPath);
+    return result;
+#else
+    return path;
 #endif
 }
 

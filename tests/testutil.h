@@ -54,6 +54,9 @@ void useTestSettings(const QString &directory, const QString &applicationName);
 
 // True when a Windows test program runs under Wine (tools/windows/test.sh).
 bool underWine();
+// Under Wine, the Unix path of a Windows path, for a Linux program the test starts (Wine starts
+// those too); elsewhere the path as it is.
+QString hostPath(const QString &path);
 
 // Starts a console program (fatek-gateway, fatek-sim) so that stopConsoleProgram() can ask it to
 // stop as a user would. On Windows it gets a process group of its own, the target of a Ctrl-Break.
