@@ -201,10 +201,11 @@ UiLoad uiLoad(const Options &options)
 
     int batches = 0;
     qint64 values = 0;
-    QObject::connect(connection, &Connection::values, &widget, [&](const QList<WatchValue> &v) {
-        ++batches;
-        values += v.size();
-    });
+    QObject::connect(connection, &Connection::itemValues, &widget,
+                     [&](const QList<WatchItemValue> &v) {
+                         ++batches;
+                         values += v.size();
+                     });
     // Warm up: the first batches fill the table.
     QElapsedTimer clock;
     clock.start();

@@ -121,7 +121,10 @@ void GatewayPeer::onMessage(const QString &topic, const QByteArray &payload)
             if (command->swapWords)
                 spec.swapWords = *command->swapWords;
             const ItemValues values(spec);
-            if (const Result<std::uint64_t> raw = values.parse(command->value)) {
+            if (command->words) {
+                it->words = *command->words; // the raw value as sent
+                publishItem(*it);
+            } else if (const Result<std::uint64_t> raw = values.parse(command->value)) {
                 it->words = values.split(*raw);
                 publishItem(*it);
             }

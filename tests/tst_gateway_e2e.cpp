@@ -2,7 +2,7 @@
 // TCP) → the real fatek-gateway executable → a real mosquitto → GatewayWatch, the one that serves
 // the GUI's tables. No protocol peer stands in for either side: what GatewayWatch shows was read
 // from the simulator, and a write it sends is counted in the simulator's own log.
-#include "core/mqtt/gatewaywatch.h"
+#include "core/link/gatewaywatch.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
 #include "mosquittobroker.h"
@@ -121,22 +121,28 @@ void TestGatewayEndToEnd::plcToWatchAndBack()
     settings.prefix = QStringLiteral("plant/fatek");
     settings.connection = QStringLiteral("line1");
     GatewayWatch watch(settings);
-    QHash<quint64, WatchValue> latest;
-    connect(&watch, &GatewayWatch::values, this, [&latest](const QList<WatchValue> &values) {
-        for (const WatchValue &value : values)
-            latest.insert(value.itemId, value);
+    QHash<quint64, WatchItemValue> latest;
+    connect(&watch, &PlcLink::itemValues, this, [&latest](const QList<WatchItemValue> &values) {
+        for (const WatchItemValue &value : values)
+            latest.insert(value.key, value);
     });
-    // The table's elements: the float's two words, the setpoint, and one the gateway does not
-    // publish.
-    watch.setWatchList({WatchEntry{1, 1, addr("R100"), 500}, WatchEntry{2, 1, addr("R101"), 500},
-                        WatchEntry{3, 1, addr("R200"), 500}, WatchEntry{4, 1, addr("R500"), 500}});
+    // The table's items: the float, the setpoint, and one the gateway does not publish.
+    const auto spec = [](const char *address, DisplayFormat format) {
+        WatchItemSpec item;
+        item.address = addr(address);
+        item.format = format;
+        return item;
+    };
+    watch.setItems({{1, spec("R100", DisplayFormat::Float32), 500},
+                    {3, spec("R200", DisplayFormat::Signed), 500},
+                    {4, spec("R500", DisplayFormat::Signed), 500}});
     watch.open();
 
-    auto good = [&latest](quint64 id, std::uint32_t value) {
-        const WatchValue v = latest.value(id);
-        return v.quality == ValueQuality::Good && v.value == value;
+    auto good = [&latest](quint64 key, std::uint64_t value) {
+        const WatchItemValue v = latest.value(key);
+        return v.quality == ValueQuality::Good && v.hasValue && v.raw == value;
     };
-    QTRY_VERIFY_WITH_TIMEOUT(good(1, bits & 0xFFFF) && good(2, bits >> 16) && good(3, 42), Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(good(1, bits) && good(3, 42), Wait);
     QCOMPARE(watch.linkState(), LinkState::Connected);
     // Stale while the gateway connected, then (after its items had time to come) an error that
     // says the gateway does not publish it.
@@ -150,9 +156,9 @@ void TestGatewayEndToEnd::plcToWatchAndBack()
 
     // An allowlisted write reaches the PLC (its own log and memory) and is answered ok.
     const int writesBefore = simWrites();
-    std::optional<GatewayPayload::Reply> reply;
-    watch.write(1, addr("R200"), QStringLiteral("77"), DisplayFormat::Signed, false, this,
-                [&reply](const GatewayPayload::Reply &r) { reply = r; });
+    std::optional<LinkWriteResult> reply;
+    watch.write(spec("R200", DisplayFormat::Signed), 77, this,
+                [&reply](const LinkWriteResult &r) { reply = r; });
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), Wait);
     QVERIFY2(reply->ok, qPrintable(QString::fromStdString(english(reply->error))));
     QCOMPARE(simWrites(), writesBefore + 1);
@@ -161,8 +167,8 @@ void TestGatewayEndToEnd::plcToWatchAndBack()
 
     // Outside the allowlist: refused with the reason, nothing reaches the PLC.
     reply.reset();
-    watch.write(1, addr("R100"), QStringLiteral("1.5"), DisplayFormat::Float32, false, this,
-                [&reply](const GatewayPayload::Reply &r) { reply = r; });
+    watch.write(spec("R100", DisplayFormat::Float32), 0x3FC00000, this,
+                [&reply](const LinkWriteResult &r) { reply = r; });
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), Wait);
     QVERIFY(!reply->ok);
     QVERIFY(!english(reply->error).empty());
@@ -174,7 +180,7 @@ void TestGatewayEndToEnd::plcToWatchAndBack()
     m_gateway->waitForFinished(5000);
     QTRY_VERIFY_WITH_TIMEOUT(watch.linkState() == LinkState::Lost, Wait);
     QTRY_COMPARE_WITH_TIMEOUT(latest.value(3).quality, ValueQuality::Stale, Wait);
-    QCOMPARE(latest.value(3).value, 77u);
+    QCOMPARE(latest.value(3).raw, 77u);
     QCOMPARE(latest.value(1).quality, ValueQuality::Stale);
 }
 

@@ -1,7 +1,7 @@
-// A gateway connection watched through a real mosquitto (GatewayWatch): element values from the
-// gateway's item payloads, quality when the gateway or the broker goes away, writes through /set
-// and /reply. The gateway side is a protocol peer (TestUtil::GatewayPeer) on the same broker.
-#include "core/mqtt/gatewaywatch.h"
+// A gateway connection watched through a real mosquitto (GatewayWatch): item values straight from
+// the gateway's item payloads, quality when the gateway or the broker goes away, writes through
+// /set and /reply. The gateway side is a protocol peer (TestUtil::GatewayPeer) on the same broker.
+#include "core/link/gatewaywatch.h"
 #include "core/session/session.h"
 #include "gatewaypeer.h"
 #include "mosquittobroker.h"
@@ -33,14 +33,27 @@ WatchItemSpec item(const char *address, DisplayFormat format, quint8 station = 1
     return spec;
 }
 
-WatchEntry entry(std::uint64_t id, const char *address, quint8 station = 1)
+WatchedItem watched(std::uint64_t key, const char *address, quint8 station = 1,
+                    DisplayFormat format = DisplayFormat::Signed)
 {
-    WatchEntry e;
-    e.id = id;
-    e.address = addr(address);
-    e.station = station;
-    return e;
+    return {key, item(address, format, station), 500};
 }
+WatchedItem watched(std::uint64_t key, const char *address, DisplayFormat format)
+{
+    return watched(key, address, 1, format);
+}
+
+// A write's outcome, once it came.
+struct Outcome
+{
+    std::optional<LinkWriteResult> result;
+    PlcLink::WriteCompletion completion()
+    {
+        return [this](const LinkWriteResult &r) {
+            result = r;
+        };
+    }
+};
 
 MqttBrokerSettings settingsFor(const TestUtil::MosquittoBroker &broker)
 {
@@ -50,29 +63,29 @@ MqttBrokerSettings settingsFor(const TestUtil::MosquittoBroker &broker)
     return settings;
 }
 
-// The latest value of every entry, as a table keeps them.
+// The latest value of every item, as a table keeps them.
 struct Values
 {
-    QHash<std::uint64_t, WatchValue> last;
+    QHash<std::uint64_t, WatchItemValue> last;
     int batches = 0;
 
     void connect(GatewayWatch *watch)
     {
-        QObject::connect(watch, &GatewayWatch::values, [this](const QList<WatchValue> &values) {
+        QObject::connect(watch, &PlcLink::itemValues, [this](const QList<WatchItemValue> &values) {
             ++batches;
-            for (const WatchValue &v : values)
-                last.insert(v.itemId, v);
+            for (const WatchItemValue &v : values)
+                last.insert(v.key, v);
         });
     }
-    // An entry not reported yet has no quality (a default WatchValue would read as Error and let
-    // a wait for Error pass at once).
+    // An item not reported yet has no quality (a default value would read as Error and let a
+    // wait for Error pass at once).
     std::optional<ValueQuality> quality(std::uint64_t id) const
     {
         if (!last.contains(id))
             return std::nullopt;
         return last.value(id).quality;
     }
-    std::uint32_t value(std::uint64_t id) const { return last.value(id).value; }
+    std::uint64_t value(std::uint64_t id) const { return last.value(id).raw; }
     QString error(std::uint64_t id) const { return englishText(last.value(id).error); }
     // "3: good 7; 5: error R500 ..." for failure messages.
     QString describe() const
@@ -82,7 +95,7 @@ struct Values
             parts << QStringLiteral("%1: %2 %3 %4")
                          .arg(it.key())
                          .arg(GatewayPayload::qualityName(it->quality))
-                         .arg(it->value)
+                         .arg(it->raw)
                          .arg(englishText(it->error));
         return parts.join(QStringLiteral("; "));
     }
@@ -159,27 +172,42 @@ void TestGatewayWatch::coveredElementsAndUnpublished()
     QString error;
     QVERIFY2(f.start(&error), qPrintable(error));
     QSignalSpy states(f.watch.get(), &GatewayWatch::linkStateChanged);
-    f.watch->setWatchList({entry(1, "R100"), entry(2, "R101"), entry(3, "R200"), entry(4, "Y0", 2),
-                           entry(5, "R500"), entry(6, "Y0", 1)});
+    f.watch->setItems({watched(1, "R100", DisplayFormat::Float32), watched(2, "R101"),
+                       watched(3, "R200"), watched(4, "Y0", 2, DisplayFormat::Bit),
+                       watched(5, "R500"), watched(6, "Y0", 1, DisplayFormat::Bit),
+                       watched(7, "R100", DisplayFormat::Double64), watched(8, "R100")});
     f.watch->open();
     QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
-    QCOMPARE(f.watch->gatewayLink(), QStringLiteral("TCP 127.0.0.1:500, FACON"));
-    // The float's words: R100 the low word, R101 the high one.
+    QCOMPARE(f.watch->peerText(), QStringLiteral("TCP 127.0.0.1:500, FACON"));
+    // The float's payload as it is: its two words joined, R100 the low word.
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(1), std::optional(ValueQuality::Good), timeoutMs);
-    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(2), std::optional(ValueQuality::Good), timeoutMs);
-    QCOMPARE(f.values.value(1), floatBits(12.5f) & 0xFFFFu);
-    QCOMPARE(f.values.value(2), floatBits(12.5f) >> 16);
-    QVERIFY(f.values.last.value(1).timestamp.isValid());
+    QCOMPARE(f.values.value(1), std::uint64_t(floatBits(12.5f)));
+    QCOMPARE(f.values.last.value(1).words,
+             (std::vector<std::uint32_t>{floatBits(12.5f) & 0xFFFFu, floatBits(12.5f) >> 16}));
+    QVERIFY(f.values.last.value(1).hasValue);
+    QVERIFY(f.values.last.value(1).time.isValid());
     QTRY_COMPARE_WITH_TIMEOUT(f.values.value(3), 42u, timeoutMs);
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(4), std::optional(ValueQuality::Good), timeoutMs);
     QCOMPARE(f.values.value(4), 1u);
+    // The same address in a format over fewer elements takes the first of them.
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(8), std::optional(ValueQuality::Good), timeoutMs);
+    QCOMPARE(f.values.value(8), std::uint64_t(floatBits(12.5f) & 0xFFFFu));
     // Not published (another address, or the same one at another station): an error that says so.
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(5), std::optional(ValueQuality::Error), timeoutMs);
     QCOMPARE(f.values.error(5),
              QStringLiteral("R500 (station 1) is not published by the gateway line1."));
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(6), std::optional(ValueQuality::Error), timeoutMs);
+    // R101 is the float's high word, but the gateway publishes no item there.
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(2), std::optional(ValueQuality::Error), timeoutMs);
+    QCOMPARE(f.values.error(2),
+             QStringLiteral("R101 (station 1) is not published by the gateway line1."));
+    // A double over R100 needs R102 and R103, which the float's payload does not carry.
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(7), std::optional(ValueQuality::Error), timeoutMs);
+    QCOMPARE(f.values.error(7),
+             QStringLiteral("R102 (station 1) is not published by the gateway line1."));
+    QVERIFY(!f.values.last.value(7).hasValue);
 
-    // A new value of one item reports that item's elements, not the whole list.
+    // A new value of one item reports that item, not the whole list.
     const int before = f.values.batches;
     f.values.last.clear();
     f.peer->setItem(item("R200", DisplayFormat::Signed), {7});
@@ -199,7 +227,7 @@ void TestGatewayWatch::staleWhileGatewayOfflineOrDown()
     Fixture f;
     QString error;
     QVERIFY2(f.start(&error), qPrintable(error));
-    f.watch->setWatchList({entry(1, "R100"), entry(3, "R200")});
+    f.watch->setItems({watched(1, "R100", DisplayFormat::Float32), watched(3, "R200")});
     f.watch->open();
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), std::optional(ValueQuality::Good), timeoutMs);
 
@@ -229,7 +257,8 @@ void TestGatewayWatch::staleOnBrokerLossThenGoodAgain()
     Fixture f;
     QString error;
     QVERIFY2(f.start(&error), qPrintable(error));
-    f.watch->setWatchList({entry(1, "R100"), entry(3, "R200"), entry(5, "R500")});
+    f.watch->setItems(
+        {watched(1, "R100", DisplayFormat::Float32), watched(3, "R200"), watched(5, "R500")});
     f.watch->open();
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), std::optional(ValueQuality::Good), timeoutMs);
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(5), std::optional(ValueQuality::Error), timeoutMs);
@@ -257,26 +286,30 @@ void TestGatewayWatch::writeRoundTrip()
     Fixture f;
     QString error;
     QVERIFY2(f.start(&error), qPrintable(error));
-    f.watch->setWatchList({entry(1, "R100"), entry(2, "R101")});
+    f.watch->setItems({watched(1, "R100", DisplayFormat::Float32)});
     f.watch->open();
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(1), std::optional(ValueQuality::Good), timeoutMs);
 
     QObject context;
-    std::optional<GatewayPayload::Reply> reply;
-    f.watch->write(1, addr("R100"), QStringLiteral("-3.25"), DisplayFormat::Float32, false,
-                   &context, [&](const GatewayPayload::Reply &r) { reply = r; });
-    QCOMPARE(f.watch->pendingWrites(), 1);
-    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
-    QVERIFY2(reply->ok, qPrintable(englishText(reply->error)));
-    QCOMPARE(f.watch->pendingWrites(), 0);
+    Outcome outcome;
+    f.watch->write(item("R100", DisplayFormat::Float32), floatBits(-3.25f), &context,
+                   outcome.completion());
+    QCOMPARE(f.watch->unansweredWrites(), 1);
+    QVERIFY(!outcome.result); // never inside the call
+    QTRY_VERIFY_WITH_TIMEOUT(outcome.result.has_value(), timeoutMs);
+    QVERIFY2(outcome.result->ok, qPrintable(englishText(outcome.result->error)));
+    QCOMPARE(f.watch->unansweredWrites(), 0);
     QCOMPARE(f.peer->setCount(), 1);
+    // The typed value travels as it is: the float's raw words and its format, no text.
     const GatewayPayload::SetCommand command = f.peer->commands().constFirst();
-    QCOMPARE(command.value, QStringLiteral("-3.25"));
+    QVERIFY(command.words.has_value());
+    QCOMPARE(*command.words,
+             (std::vector<std::uint32_t>{floatBits(-3.25f) & 0xFFFFu, floatBits(-3.25f) >> 16}));
+    QVERIFY(command.value.isEmpty());
     QVERIFY(command.format == DisplayFormat::Float32);
-    QCOMPARE(command.id, reply->id);
+    QVERIFY(!command.id.isEmpty());
     // The gateway's next publication carries the new value.
-    QTRY_COMPARE_WITH_TIMEOUT(f.values.value(2), floatBits(-3.25f) >> 16, timeoutMs);
-    QCOMPARE(f.values.value(1), floatBits(-3.25f) & 0xFFFFu);
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.value(1), std::uint64_t(floatBits(-3.25f)), timeoutMs);
 }
 
 void TestGatewayWatch::writeRefusedByGateway()
@@ -287,14 +320,13 @@ void TestGatewayWatch::writeRefusedByGateway()
     f.watch->open();
     QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
     f.peer->setRefusal(msg<MsgId::GatewaySetBadFormat>("weird"));
-    std::optional<GatewayPayload::Reply> reply;
-    f.watch->write(1, addr("R200"), QStringLiteral("5"), DisplayFormat::Signed, false, nullptr,
-                   [&](const GatewayPayload::Reply &r) { reply = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
-    QVERIFY(!reply->ok);
+    Outcome reply;
+    f.watch->write(item("R200", DisplayFormat::Signed), 5, nullptr, reply.completion());
+    QTRY_VERIFY_WITH_TIMEOUT(reply.result.has_value(), timeoutMs);
+    QVERIFY(!reply.result->ok);
     // The gateway's message, with its id: shown in the reader's language.
-    QCOMPARE(reply->error.id, MsgId::GatewaySetBadFormat);
-    QCOMPARE(englishText(reply->error), QStringLiteral("\"weird\" is not a value format."));
+    QCOMPARE(reply.result->error.id, MsgId::GatewaySetBadFormat);
+    QCOMPARE(englishText(reply.result->error), QStringLiteral("\"weird\" is not a value format."));
     QCOMPARE(f.peer->setCount(), 1);
 }
 
@@ -307,24 +339,23 @@ void TestGatewayWatch::writeTimesOut()
     f.watch->open();
     QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
     f.peer->setAnswering(false);
-    std::optional<GatewayPayload::Reply> reply;
-    f.watch->write(1, addr("R200"), QStringLiteral("5"), DisplayFormat::Signed, false, nullptr,
-                   [&](const GatewayPayload::Reply &r) { reply = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
-    QVERIFY(!reply->ok);
-    QCOMPARE(englishText(reply->error),
+    Outcome reply;
+    f.watch->write(item("R200", DisplayFormat::Signed), 5, nullptr, reply.completion());
+    QTRY_VERIFY_WITH_TIMEOUT(reply.result.has_value(), timeoutMs);
+    QVERIFY(!reply.result->ok);
+    QCOMPARE(englishText(reply.result->error),
              QStringLiteral("No reply from the gateway line1 within 1 s."));
     QTRY_COMPARE_WITH_TIMEOUT(f.peer->setCount(), 1, timeoutMs); // it was sent, nobody answered
-    QCOMPARE(f.watch->pendingWrites(), 0);
+    QCOMPARE(f.watch->unansweredWrites(), 0);
 
     // A context destroyed before the reply: the completion is dropped, not called.
     bool called = false;
     {
         QObject context;
-        f.watch->write(1, addr("R200"), QStringLiteral("6"), DisplayFormat::Signed, false, &context,
-                       [&](const GatewayPayload::Reply &) { called = true; });
+        f.watch->write(item("R200", DisplayFormat::Signed), 6, &context,
+                       [&](const LinkWriteResult &) { called = true; });
     }
-    QTRY_COMPARE_WITH_TIMEOUT(f.watch->pendingWrites(), 0, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->unansweredWrites(), 0, timeoutMs);
     QVERIFY(!called);
 }
 
@@ -336,23 +367,21 @@ void TestGatewayWatch::readOnlyPublishesNothing()
     f.watch->setReadOnly(true);
     f.watch->open();
     QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
-    std::optional<GatewayPayload::Reply> reply;
-    f.watch->write(1, addr("R200"), QStringLiteral("5"), DisplayFormat::Signed, false, nullptr,
-                   [&](const GatewayPayload::Reply &r) { reply = r; });
-    QVERIFY(!reply); // never inside the call
-    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
-    QVERIFY(!reply->ok);
-    QCOMPARE(reply->error.id, MsgId::SessionReadOnly);
+    Outcome reply;
+    f.watch->write(item("R200", DisplayFormat::Signed), 5, nullptr, reply.completion());
+    QVERIFY(!reply.result); // never inside the call
+    QTRY_VERIFY_WITH_TIMEOUT(reply.result.has_value(), timeoutMs);
+    QVERIFY(!reply.result->ok);
+    QCOMPARE(reply.result->error.id, MsgId::SessionReadOnly);
 
     // A write allowed after it goes through, so the peer would have seen the refused one first.
     f.watch->setReadOnly(false);
-    reply.reset();
-    f.watch->write(1, addr("R200"), QStringLiteral("9"), DisplayFormat::Signed, false, nullptr,
-                   [&](const GatewayPayload::Reply &r) { reply = r; });
-    QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), timeoutMs);
-    QVERIFY(reply->ok);
+    reply.result.reset();
+    f.watch->write(item("R200", DisplayFormat::Signed), 9, nullptr, reply.completion());
+    QTRY_VERIFY_WITH_TIMEOUT(reply.result.has_value(), timeoutMs);
+    QVERIFY(reply.result->ok);
     QCOMPARE(f.peer->setCount(), 1);
-    QCOMPARE(f.peer->commands().constFirst().value, QStringLiteral("9"));
+    QCOMPARE(f.peer->commands().constFirst().words, std::optional(std::vector<std::uint32_t>{9}));
 }
 
 QTEST_GUILESS_MAIN(TestGatewayWatch)

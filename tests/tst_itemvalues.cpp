@@ -1,6 +1,7 @@
 // ItemValues: a watch item split into poll entries and write requests, and the polled words joined
 // back into the item's value, for every kind of item (discretes, 16/32-bit registers, floats and
 // doubles over several registers, swapped word order).
+#include "core/watch/itemassembler.h"
 #include "core/watch/itemvalues.h"
 
 #include <QTest>
@@ -56,6 +57,8 @@ private Q_SLOTS:
     void typingErrors_data();
     void typingErrors();
     void setItemRenewsIdsOnlyWhenElementsChange();
+    void assemblerJoinsElementsIntoItems();
+    void assemblerKeepsWordsAcrossBatchesAndFormats();
 };
 
 void TestItemValues::elementsOfEachKind_data()
@@ -320,6 +323,103 @@ void TestItemValues::setItemRenewsIdsOnlyWhenElementsChange()
     QVERIFY(values.setItem(spec));
     QVERIFY(ids() != asFloat);
     QCOMPARE(addressesOf(values.pollEntries(100)), (QStringList{"R200", "R201"}));
+}
+
+namespace {
+
+WatchValue elementValue(std::uint64_t pollId, std::uint32_t value,
+                        ValueQuality quality = ValueQuality::Good, int second = 0)
+{
+    WatchValue v;
+    v.itemId = pollId;
+    v.value = value;
+    v.quality = quality;
+    v.timestamp = QDateTime(QDate(2026, 11, 27), QTime(8, 0, second), Qt::UTC);
+    if (quality != ValueQuality::Good)
+        v.error = Message::text("timeout");
+    return v;
+}
+
+} // namespace
+
+void TestItemValues::assemblerJoinsElementsIntoItems()
+{
+    ItemAssembler assembler;
+    assembler.setItems({{11, item("R100", DisplayFormat::Float32), 250},
+                        {12, item("X0", DisplayFormat::Bit), 1000},
+                        {13, item("DR10", DisplayFormat::Double64), 250}});
+    const QList<WatchEntry> entries = assembler.pollEntries();
+    QCOMPARE(addressesOf(entries), (QStringList{"R100", "R101", "X0", "DR10", "DR12"}));
+    QCOMPARE(entries.at(2).intervalMs, 1000);
+
+    // 1.5f = 0x3FC00000 (high word in R101); X0 not in this batch; the double's high half is
+    // stale: the item is stale, and has no value until every element was read once.
+    QList<WatchItemValue> values = assembler.assemble(
+        {elementValue(entries.at(1).id, 0x3FC0, ValueQuality::Good, 2),
+         elementValue(entries.at(0).id, 0x0000, ValueQuality::Good, 1),
+         elementValue(entries.at(3).id, 0), elementValue(entries.at(4).id, 7, ValueQuality::Stale),
+         elementValue(999999999, 5)});
+    QCOMPARE(values.size(), 2);
+    QCOMPARE(values.at(0).key, std::uint64_t(11));
+    QCOMPARE(values.at(0).raw, std::uint64_t(0x3FC00000));
+    QCOMPARE(values.at(0).words, words({0x0000, 0x3FC0}));
+    QVERIFY(values.at(0).hasValue);
+    QCOMPARE(values.at(0).quality, ValueQuality::Good);
+    QCOMPARE(values.at(0).time.time().second(), 2); // the newest element's time
+    QCOMPARE(values.at(1).key, std::uint64_t(13));
+    QCOMPARE(values.at(1).quality, ValueQuality::Stale);
+    QCOMPARE(values.at(1).error, Message::text("timeout"));
+    QVERIFY(!values.at(1).hasValue);
+    QCOMPARE(values.at(1).words, words({0, 0})); // a stale word is not taken as read
+
+    // Only one of the float's elements came: stale, "not read in this cycle", the last words kept.
+    values = assembler.assemble({elementValue(entries.at(0).id, 0x0001)});
+    QCOMPARE(values.size(), 1);
+    QCOMPARE(values.at(0).quality, ValueQuality::Stale);
+    QCOMPARE(values.at(0).error.id, MsgId::GatewayNoValueThisCycle);
+    QCOMPARE(values.at(0).raw, std::uint64_t(0x3FC00001));
+
+    // A refused element makes the item an error, whatever its other element says.
+    values = assembler.assemble({elementValue(entries.at(0).id, 0, ValueQuality::Error),
+                                 elementValue(entries.at(1).id, 0x4000)});
+    QCOMPARE(values.at(0).quality, ValueQuality::Error);
+
+    // The link went away: every item at once, the last words kept.
+    values = assembler.markAll(ValueQuality::Stale, Message::text("link lost"));
+    QCOMPARE(values.size(), 3);
+    QCOMPARE(values.at(0).raw, std::uint64_t(0x40000001));
+    QCOMPARE(values.at(2).error, Message::text("link lost"));
+}
+
+void TestItemValues::assemblerKeepsWordsAcrossBatchesAndFormats()
+{
+    ItemAssembler assembler;
+    assembler.setItems({{21, item("R0", DisplayFormat::Signed), 100},
+                        {22, item("R10", DisplayFormat::Unsigned), 100}});
+    QList<WatchEntry> entries = assembler.pollEntries();
+    assembler.assemble({elementValue(entries.at(0).id, 0xFFFF), elementValue(entries.at(1).id, 9)});
+
+    // Another one-register format over the same element: the same poll ids, the words stay.
+    // Another span, or another station: new poll ids, nothing of the old.
+    WatchItemSpec hex = item("R0", DisplayFormat::Hex);
+    WatchItemSpec otherStation = item("R10", DisplayFormat::Unsigned, false, 2);
+    assembler.setItems({{21, hex, 100}, {22, otherStation, 100}});
+    const QList<WatchEntry> next = assembler.pollEntries();
+    QCOMPARE(next.at(0).id, entries.at(0).id);
+    QVERIFY(next.at(1).id != entries.at(1).id);
+    QCOMPARE(next.at(1).station, std::uint8_t(2));
+    QList<WatchItemValue> values = assembler.markAll(ValueQuality::Stale, {});
+    QCOMPARE(values.at(0).raw, std::uint64_t(0xFFFF));
+    QVERIFY(values.at(0).hasValue);
+    QVERIFY(!values.at(1).hasValue);
+    // Values for the old poll ids match nothing.
+    QVERIFY(assembler.assemble({elementValue(entries.at(1).id, 3)}).isEmpty());
+
+    assembler.setItems({{21, item("R0", DisplayFormat::Float32), 100}});
+    QCOMPARE(assembler.itemCount(), 1);
+    QCOMPARE(assembler.pollEntries().size(), 2);
+    QVERIFY(assembler.assemble({elementValue(entries.at(0).id, 1)}).isEmpty());
+    QVERIFY(!assembler.markAll(ValueQuality::Stale, {}).at(0).hasValue);
 }
 
 QTEST_MAIN(TestItemValues)

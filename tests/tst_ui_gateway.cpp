@@ -2,7 +2,7 @@
 // window size: the connection dialog through the menu, a watch table served by the gateway's
 // topics on a real mosquitto, a write typed into a cell and confirmed, operator mode. The gateway
 // side is a protocol peer (TestUtil::GatewayPeer); what reached it is counted there.
-#include "core/mqtt/gatewaywatch.h"
+#include "core/link/gatewaywatch.h"
 #include "gatewaypeer.h"
 #include "mosquittobroker.h"
 #include "testutil.h"
@@ -267,8 +267,10 @@ private Q_SLOTS:
         const QString question = typeValue(table, 1, QStringLiteral("77"), answerYes);
         QVERIFY2(question.contains(QStringLiteral("R200")), qPrintable(question));
         QTRY_COMPARE_WITH_TIMEOUT(gateway.peer->setCount(), 1, longWait);
-        QCOMPARE(gateway.peer->commands().constFirst().value, QStringLiteral("77"));
-        QTRY_VERIFY2_WITH_TIMEOUT(table->message().contains(QStringLiteral("The gateway wrote")),
+        // The typed value itself, not its text.
+        QCOMPARE(gateway.peer->commands().constFirst().words,
+                 std::optional(std::vector<std::uint32_t>{77}));
+        QTRY_VERIFY2_WITH_TIMEOUT(table->message().contains(QStringLiteral("Wrote R200")),
                                   qPrintable(table->message()), longWait);
         QTRY_COMPARE_WITH_TIMEOUT(model->valueText(1), QStringLiteral("77"), longWait);
 
@@ -329,7 +331,8 @@ private Q_SLOTS:
         QVERIFY(!c->isReadOnly());
         typeValue(table, 0, QStringLiteral("6"), answerYes);
         QTRY_COMPARE_WITH_TIMEOUT(gateway.peer->setCount(), 1, longWait);
-        QCOMPARE(gateway.peer->commands().constFirst().value, QStringLiteral("6"));
+        QCOMPARE(gateway.peer->commands().constFirst().words,
+                 std::optional(std::vector<std::uint32_t>{6}));
     }
 };
 

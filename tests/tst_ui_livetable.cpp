@@ -208,7 +208,7 @@ private Q_SLOTS:
         QVERIFY(table);
         WatchTableModel *model = table->model();
         QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(0), longWait);
-        QSignalSpy batches(table->connection(), &Connection::values);
+        QSignalSpy batches(table->connection(), &Connection::itemValues);
 
         QTableView *view = table->view();
         const QModelIndex value = model->index(0, WatchTableModel::ValueColumn);
@@ -247,7 +247,7 @@ private Q_SLOTS:
         WatchTableModel *model = table->model();
         QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(0), longWait);
         QCOMPARE(model->item(0).format, DisplayFormat::Signed);
-        QSignalSpy batches(table->connection(), &Connection::values);
+        QSignalSpy batches(table->connection(), &Connection::itemValues);
 
         QTableView *view = table->view();
         const QModelIndex format = model->index(0, WatchTableModel::FormatColumn);

@@ -1,5 +1,6 @@
 // The watch table model and the typed-input parsing, without a window or a PLC: values arrive as
 // the session would deliver them.
+#include "core/watch/itemassembler.h"
 #include "core/watch/itemvalues.h"
 #include "ui/watch/watchinput.h"
 #include "ui/watch/watchtablemodel.h"
@@ -8,6 +9,28 @@
 #include <QTest>
 
 using namespace Fatek;
+
+// What a link does for a table (SessionLink): the items' elements as poll entries, and each batch
+// of element values joined into item values by the ItemAssembler.
+struct Feed
+{
+    Fatek::WatchTableModel &model;
+    Fatek::ItemAssembler assembler;
+
+    QList<Fatek::WatchEntry> entries(int intervalMs)
+    {
+        assembler.setItems(model.watchItems(intervalMs));
+        return assembler.pollEntries();
+    }
+    void apply(const QList<Fatek::WatchValue> &values)
+    {
+        model.applyValues(assembler.assemble(values));
+    }
+    void queue(const QList<Fatek::WatchValue> &values)
+    {
+        model.queueValues(assembler.assemble(values));
+    }
+};
 
 class TestUiWatchModel : public QObject
 {
@@ -77,14 +100,15 @@ private Q_SLOTS:
     void floatJoinsTwoRegisters()
     {
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R100", DisplayFormat::Float32)});
-        const QList<WatchEntry> entries = model.pollEntries(250);
+        const QList<WatchEntry> entries = feed.entries(250);
         QCOMPARE(entries.size(), 2);
         QCOMPARE(QString::fromStdString(entries.at(1).address.toString()), QStringLiteral("R101"));
         QCOMPARE(entries.at(0).intervalMs, 250);
         QVERIFY(!model.hasValue(0));
         // 1.5f = 0x3FC00000: high word in R101.
-        model.applyValues({good(entries.at(0).id, 0x0000), good(entries.at(1).id, 0x3FC0)});
+        feed.apply({good(entries.at(0).id, 0x0000), good(entries.at(1).id, 0x3FC0)});
         QVERIFY(model.hasValue(0));
         QCOMPARE(model.rawValue(0), std::uint64_t(0x3FC00000));
         QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(),
@@ -94,30 +118,32 @@ private Q_SLOTS:
     void doubleJoinsFourRegistersAndChangedValuesFlash()
     {
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Double64)});
-        const QList<WatchEntry> entries = model.pollEntries(500);
+        const QList<WatchEntry> entries = feed.entries(500);
         QCOMPARE(entries.size(), 4);
         // 1.0 = 0x3FF0000000000000: the highest word in R3.
-        model.applyValues({good(entries.at(0).id, 0), good(entries.at(1).id, 0),
-                           good(entries.at(2).id, 0), good(entries.at(3).id, 0x3FF0)});
+        feed.apply({good(entries.at(0).id, 0), good(entries.at(1).id, 0), good(entries.at(2).id, 0),
+                    good(entries.at(3).id, 0x3FF0)});
         QCOMPARE(model.valueText(0), QStringLiteral("1"));
         const QModelIndex value = model.index(0, WatchTableModel::ValueColumn);
         QVERIFY(value.data(Qt::BackgroundRole).isValid()); // a new value flashes ...
         QTRY_VERIFY_WITH_TIMEOUT(!value.data(Qt::BackgroundRole).isValid(), 10000); // ... briefly
         // The same value again does not flash.
-        model.applyValues({good(entries.at(3).id, 0x3FF0)});
+        feed.apply({good(entries.at(3).id, 0x3FF0)});
         QVERIFY(!value.data(Qt::BackgroundRole).isValid());
         // Swapped words: the same registers read the other way round.
         QVERIFY(model.setFormat(0, DisplayFormat::Double64, true).ok());
-        QCOMPARE(model.pollEntries(500).size(), 4);
+        QCOMPARE(feed.entries(500).size(), 4);
     }
 
     void batchGivesCoalescedDataChanged()
     {
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Signed), item("R1", DisplayFormat::Signed),
                         item("R2", DisplayFormat::Signed), item("R5", DisplayFormat::Signed)});
-        const QList<WatchEntry> entries = model.pollEntries(500);
+        const QList<WatchEntry> entries = feed.entries(500);
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         QSignalSpy reset(&model, &QAbstractItemModel::modelReset);
         // Every signal covers one column and a run of rows; "column,first,last" per signal.
@@ -155,19 +181,19 @@ private Q_SLOTS:
             return v;
         };
         // First values: value, quality ("waiting" ends) and time change, rows 0..1 and row 3.
-        model.applyValues({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 2)),
-                           at(good(entries.at(3).id, 4))});
+        feed.apply({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 2)),
+                    at(good(entries.at(3).id, 4))});
         QCOMPARE(reset.count(), 0);
         QCOMPARE(ranges(), expected({value, quality, updated}, {"0,1", "3,3"}));
         // The same values later: only the time changes (no format, name or value cell is touched).
         t = t.addMSecs(500);
-        model.applyValues({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 2)),
-                           at(good(entries.at(3).id, 4))});
+        feed.apply({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 2)),
+                    at(good(entries.at(3).id, 4))});
         QCOMPARE(ranges(), expected({updated}, {"0,1", "3,3"}));
         // One value moves: its value cell and the times.
         t = t.addMSecs(500);
-        model.applyValues({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 3)),
-                           at(good(entries.at(3).id, 4))});
+        feed.apply({at(good(entries.at(0).id, 1)), at(good(entries.at(1).id, 3)),
+                    at(good(entries.at(3).id, 4))});
         QStringList moved{QStringLiteral("%1,1,1").arg(value),
                           QStringLiteral("%1,0,1").arg(updated),
                           QStringLiteral("%1,3,3").arg(updated)};
@@ -182,10 +208,11 @@ private Q_SLOTS:
         // batch lacks row 4 and says row 3 is stale (timeout): rows 3 and 4 must keep their newest
         // good value (38 and 38 at t0 + 38 s) and row 3 must not look fresh.
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Unsigned), item("R1", DisplayFormat::Unsigned),
                         item("R2", DisplayFormat::Unsigned), item("R3", DisplayFormat::Unsigned),
                         item("R4", DisplayFormat::Unsigned), item("R5", DisplayFormat::Float32)});
-        const QList<WatchEntry> entries = model.pollEntries(100);
+        const QList<WatchEntry> entries = feed.entries(100);
         QCOMPARE(entries.size(), 7);
         const QDateTime t0 = QDateTime::currentDateTimeUtc();
         const auto time = [&t0](int k) {
@@ -207,7 +234,7 @@ private Q_SLOTS:
                 }
                 batch.append(v);
             }
-            model.queueValues(batch);
+            feed.queue(batch);
         }
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         QSignalSpy reset(&model, &QAbstractItemModel::modelReset);
@@ -261,8 +288,8 @@ private Q_SLOTS:
         // A batch applied now (applyValues) also takes what is still queued, newest last.
         QList<WatchValue> older{good(entries.at(0).id, 1000)};
         QList<WatchValue> newer{good(entries.at(0).id, 2000)};
-        model.queueValues(older);
-        model.applyValues(newer);
+        feed.queue(older);
+        feed.apply(newer);
         QVERIFY(!model.hasQueuedValues());
         QCOMPARE(model.rawValue(0), std::uint64_t(2000));
     }
@@ -272,9 +299,10 @@ private Q_SLOTS:
         // Values delivered before the link went down are applied first, then marked stale: a
         // queued good value must never turn a row fresh after markAllStale.
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Unsigned)});
-        const quint64 id = model.pollEntries(100).at(0).id;
-        model.queueValues({good(id, 7)});
+        const quint64 id = feed.entries(100).at(0).id;
+        feed.queue({good(id, 7)});
         model.markAllStale(QStringLiteral("link down"));
         QVERIFY(!model.hasQueuedValues());
         QCOMPARE(model.rawValue(0), std::uint64_t(7));
@@ -285,16 +313,17 @@ private Q_SLOTS:
 
     void rowsChangedWhileValuesAreQueued()
     {
-        // Queued values find their rows by poll id when applied: a row removed or re-spanned
+        // Queued values find their rows by item key when applied: a row removed or re-spanned
         // meanwhile gets nothing, the others get theirs.
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Unsigned), item("R1", DisplayFormat::Unsigned),
                         item("R2", DisplayFormat::Unsigned)});
-        const QList<WatchEntry> entries = model.pollEntries(100);
-        model.queueValues(
+        const QList<WatchEntry> entries = feed.entries(100);
+        feed.queue(
             {good(entries.at(0).id, 10), good(entries.at(1).id, 11), good(entries.at(2).id, 12)});
         QVERIFY(model.removeRows(0, 1));
-        QVERIFY(model.setFormat(1, DisplayFormat::Float32, false).ok()); // R2 gets new poll ids
+        QVERIFY(model.setFormat(1, DisplayFormat::Float32, false).ok()); // R2 gets a new item key
         QTRY_VERIFY(!model.hasQueuedValues());
         QCOMPARE(model.rowCount(), 2);
         QCOMPARE(model.rawValue(0), std::uint64_t(11));
@@ -304,15 +333,16 @@ private Q_SLOTS:
     void staleKeepsValueWithReason()
     {
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R7", DisplayFormat::Unsigned)});
-        const quint64 id = model.pollEntries(500).at(0).id;
-        model.applyValues({good(id, 42)});
+        const quint64 id = feed.entries(500).at(0).id;
+        feed.apply({good(id, 42)});
         WatchValue stale;
         stale.itemId = id;
         stale.value = 42;
         stale.quality = ValueQuality::Stale;
         stale.error = Message::text("timeout after 1000 ms");
-        model.applyValues({stale});
+        feed.apply({stale});
         QCOMPARE(model.quality(0), ValueQuality::Stale);
         QCOMPARE(model.data(model.index(0, WatchTableModel::ValueColumn)).toString(),
                  QStringLiteral("42"));
@@ -326,9 +356,10 @@ private Q_SLOTS:
     void typedValueBecomesWriteRequest()
     {
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R10", DisplayFormat::Hex), item("Y3", DisplayFormat::Bit)});
-        const QList<WatchEntry> entries = model.pollEntries(500);
-        model.applyValues({good(entries.at(0).id, 0), good(entries.at(1).id, 0)});
+        const QList<WatchEntry> entries = feed.entries(500);
+        feed.apply({good(entries.at(0).id, 0), good(entries.at(1).id, 0)});
         QSignalSpy writes(&model, &WatchTableModel::writeRequested);
         QSignalSpy rejected(&model, &WatchTableModel::inputRejected);
         QVERIFY(
@@ -348,6 +379,7 @@ private Q_SLOTS:
     void formatChangeRepollsAndIsValidated()
     {
         WatchTableModel model;
+        Feed feed{model, {}};
         model.addItems({item("R65535", DisplayFormat::Signed), item("X0", DisplayFormat::Bit)});
         QSignalSpy rejected(&model, &WatchTableModel::inputRejected);
         // R65535 as float would need R65536.
@@ -360,7 +392,7 @@ private Q_SLOTS:
         QSignalSpy repoll(&model, &WatchTableModel::pollListChanged);
         QVERIFY(model.setFormat(2, DisplayFormat::Double64, true).ok());
         QCOMPARE(repoll.count(), 1);
-        QCOMPARE(model.pollEntries(500).size(), 1 + 1 + 4);
+        QCOMPARE(feed.entries(500).size(), 1 + 1 + 4);
     }
 
     void writeRequestCoversEverySpannedRegister()

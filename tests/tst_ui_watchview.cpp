@@ -1,6 +1,7 @@
 // The watch table's view repaints only the visible cells that changed: a poll that changes the
 // value and time of some rows paints those cells, not their neighbours (Qt 6.4's QTableView
 // painted the next column and row of every changed range too).
+#include "core/watch/itemassembler.h"
 #include "ui/watch/watchdelegate.h"
 #include "ui/watch/watchtablemodel.h"
 #include "ui/watch/watchtableview.h"
@@ -12,6 +13,28 @@
 #include <QTest>
 
 using namespace Fatek;
+
+// What a link does for a table (SessionLink): the items' elements as poll entries, and each batch
+// of element values joined into item values by the ItemAssembler.
+struct Feed
+{
+    Fatek::WatchTableModel &model;
+    Fatek::ItemAssembler assembler;
+
+    QList<Fatek::WatchEntry> entries(int intervalMs)
+    {
+        assembler.setItems(model.watchItems(intervalMs));
+        return assembler.pollEntries();
+    }
+    void apply(const QList<Fatek::WatchValue> &values)
+    {
+        model.applyValues(assembler.assemble(values));
+    }
+    void queue(const QList<Fatek::WatchValue> &values)
+    {
+        model.queueValues(assembler.assemble(values));
+    }
+};
 
 namespace {
 
@@ -49,6 +72,7 @@ private Q_SLOTS:
     void pollRepaintsOnlyChangedCells()
     {
         WatchTableModel model;
+        Feed feed{model, {}};
         QList<WatchItemSpec> items;
         for (int n = 0; n < 200; ++n) {
             WatchItemSpec spec;
@@ -57,7 +81,7 @@ private Q_SLOTS:
             items.append(spec);
         }
         model.addItems(items);
-        const QList<WatchEntry> entries = model.pollEntries(100);
+        const QList<WatchEntry> entries = feed.entries(100);
         WatchTableView view;
         auto *delegate = new CountingDelegate(&view);
         view.setItemDelegate(delegate);
@@ -72,7 +96,7 @@ private Q_SLOTS:
         QList<WatchValue> first;
         for (const WatchEntry &e : entries)
             first.append(good(e.id, 1, t));
-        model.applyValues(first);
+        feed.apply(first);
         // The flash of the first values ends (a repaint of the value column) before counting.
         QTRY_VERIFY_WITH_TIMEOUT(
             !model.index(0, WatchTableModel::ValueColumn).data(Qt::BackgroundRole).isValid(),
@@ -85,7 +109,7 @@ private Q_SLOTS:
         QList<WatchValue> next;
         for (int row : {2, 3, 4, 5, 150})
             next.append(good(entries.at(row).id, 2, t));
-        model.applyValues(next);
+        feed.apply(next);
         QTRY_VERIFY(!delegate->painted.isEmpty());
         QTest::qWait(50);
         QSet<std::pair<int, int>> expected;
@@ -106,7 +130,7 @@ private Q_SLOTS:
         next.clear();
         for (int row : {2, 3, 4})
             next.append(good(entries.at(row).id, 3, t));
-        model.applyValues(next);
+        feed.apply(next);
         QTest::qWait(50);
         QVERIFY(editor);
         QCOMPARE(editor->text(), QStringLiteral("77"));

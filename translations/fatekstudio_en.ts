@@ -1474,6 +1474,14 @@
             <translation>&quot;%1&quot; is not a value format.</translation>
         </message>
         <message>
+            <source>&quot;words&quot; must be a list of whole numbers from 0 to 4294967295.</source>
+            <translation>&quot;words&quot; must be a list of whole numbers from 0 to 4294967295.</translation>
+        </message>
+        <message>
+            <source>The command has %1 word(s), but %2 in this format spans %3.</source>
+            <translation>The command has %1 word(s), but %2 in this format spans %3.</translation>
+        </message>
+        <message>
             <source>%1 (station %2) is not published by the gateway %3.</source>
             <translation>%1 (station %2) is not published by the gateway %3.</translation>
         </message>
@@ -3681,8 +3689,8 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Poll interval of this table</translation>
         </message>
         <message>
-            <source>The gateway polls at the interval of its configuration</source>
-            <translation>The gateway polls at the interval of its configuration</translation>
+            <source>Polled at the intervals %1 is configured with</source>
+            <translation>Polled at the intervals %1 is configured with</translation>
         </message>
         <message>
             <source>Pause</source>
@@ -3816,14 +3824,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>Operator mode (read-only): %1 cannot be written.</translation>
-        </message>
-        <message>
-            <source>Writing %1 through the gateway …</source>
-            <translation>Writing %1 through the gateway …</translation>
-        </message>
-        <message>
-            <source>The gateway wrote %1.</source>
-            <translation>The gateway wrote %1.</translation>
         </message>
     </context>
     <context>

@@ -1474,6 +1474,14 @@
             <translation>「%1」不是數值格式。</translation>
         </message>
         <message>
+            <source>&quot;words&quot; must be a list of whole numbers from 0 to 4294967295.</source>
+            <translation>{&quot;words&quot;: [...]} 必須是 0 到 4294967295 的整數清單。</translation>
+        </message>
+        <message>
+            <source>The command has %1 word(s), but %2 in this format spans %3.</source>
+            <translation>命令有 %1 個字組，但 %2 在此格式下佔 %3 個。</translation>
+        </message>
+        <message>
             <source>%1 (station %2) is not published by the gateway %3.</source>
             <translation>%1（站號 %2）未由閘道器 %3 發佈。</translation>
         </message>
@@ -3670,8 +3678,8 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>此監看表的輪詢間隔</translation>
         </message>
         <message>
-            <source>The gateway polls at the interval of its configuration</source>
-            <translation>閘道器依其設定中的間隔輪詢</translation>
+            <source>Polled at the intervals %1 is configured with</source>
+            <translation>依 %1 設定中的間隔輪詢</translation>
         </message>
         <message>
             <source>Pause</source>
@@ -3802,14 +3810,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>操作員模式（唯讀）：無法寫入 %1。</translation>
-        </message>
-        <message>
-            <source>Writing %1 through the gateway …</source>
-            <translation>正在透過閘道器寫入 %1 …</translation>
-        </message>
-        <message>
-            <source>The gateway wrote %1.</source>
-            <translation>閘道器已寫入 %1。</translation>
         </message>
     </context>
     <context>

@@ -7,8 +7,6 @@
 #include <QDateTime>
 #include <QJsonArray>
 
-#include <array>
-
 namespace Fatek {
 
 using namespace CliText;
@@ -19,23 +17,21 @@ void CliRunner::runMonitor()
     m_staleCycles = 0;
     m_monitorErrors = false;
     m_monitoring = true;
-    QList<WatchEntry> entries;
     QStringList columns{QStringLiteral("cycle"), QStringLiteral("time")};
     QList<int> widths{5, 12};
     const QList<WatchItemSpec> &items = step().items;
-    m_monitorItems.clear();
-    m_monitorIds.clear();
+    // The assembler's keys are the indexes into items (a float over R100 polls R100 and R101).
+    QList<WatchedItem> watched;
     for (qsizetype i = 0; i < items.size(); ++i) {
         const WatchItemSpec &item = items.at(i);
-        // A float over R100 polls R100 and R101: one entry per element.
-        const ItemValues &values = m_monitorItems.emplace_back(item);
-        for (const std::uint64_t id : values.pollIds())
-            m_monitorIds.insert(id, i);
-        entries += values.pollEntries(m_options.intervalMs);
+        watched.append({static_cast<std::uint64_t>(i), item, m_options.intervalMs});
         columns << (item.name.isEmpty() ? addressText(item.address) : DataLogger::columnName(item));
-        const int width = values.width();
+        const int width = ItemValues(item).width();
         widths << (width == 1 ? 1 : width <= 16 ? 6 : 12);
     }
+    m_monitorItems.setItems({}); // fresh poll ids: nothing of an earlier monitor step applies
+    m_monitorItems.setItems(watched);
+    const QList<WatchEntry> entries = m_monitorItems.pollEntries();
     if (!m_options.outputPath.isEmpty() && !m_logger.isOpen()) {
         // Every row reaches the disk at once: an interrupted monitor loses nothing.
         m_logger.setFlushIntervalMs(0);
@@ -59,31 +55,22 @@ void CliRunner::onValues(const QList<WatchValue> &values)
         return;
     ++m_cycle;
     const QList<WatchItemSpec> &items = step().items;
-    // Join the elements of each item back into one value; its quality is the worst part's.
+    // An item the cycle brought nothing of has no value this cycle.
     QList<DataLogger::Cell> cells(items.size());
-    QList<int> partsSeen(items.size(), 0);
-    std::vector<std::array<std::uint32_t, ItemValues::MaxElements>> words(
-        static_cast<std::size_t>(items.size()));
-    for (DataLogger::Cell &c : cells)
-        c.quality = DataLogger::Quality::Good;
-    for (const WatchValue &v : values) {
-        const qsizetype item = m_monitorIds.value(v.itemId, -1);
-        const int part
-            = item < 0 || item >= items.size()
-                  ? -1
-                  : m_monitorItems.at(static_cast<std::size_t>(item)).elementOf(v.itemId);
-        if (part < 0)
+    for (DataLogger::Cell &c : cells) {
+        c.quality = DataLogger::Quality::Missing;
+        c.reason = QStringLiteral("no value this cycle");
+    }
+    for (const WatchItemValue &v : m_monitorItems.assemble(values)) {
+        const auto item = static_cast<qsizetype>(v.key);
+        if (item >= items.size())
             continue;
         DataLogger::Cell &cell = cells[item];
-        ++partsSeen[item];
-        words[static_cast<std::size_t>(item)][static_cast<std::size_t>(part)] = v.value;
-        if (v.quality == ValueQuality::Error) {
-            cell.quality = DataLogger::Quality::Error;
-            cell.reason = englishText(v.error);
-        } else if (v.quality == ValueQuality::Stale && cell.quality == DataLogger::Quality::Good) {
-            cell.quality = DataLogger::Quality::Stale;
-            cell.reason = englishText(v.error);
-        }
+        cell.raw = v.raw;
+        cell.quality = v.quality == ValueQuality::Good    ? DataLogger::Quality::Good
+                       : v.quality == ValueQuality::Error ? DataLogger::Quality::Error
+                                                          : DataLogger::Quality::Stale;
+        cell.reason = v.quality == ValueQuality::Good ? QString() : englishText(v.error);
     }
     const QDateTime now = QDateTime::currentDateTime();
     QStringList tableCells{QString::number(m_cycle), now.toString(QStringLiteral("HH:mm:ss.zzz"))};
@@ -93,13 +80,6 @@ void CliRunner::onValues(const QList<WatchValue> &values)
     for (qsizetype i = 0; i < items.size(); ++i) {
         DataLogger::Cell &cell = cells[i];
         const WatchItemSpec &item = items.at(i);
-        const ItemValues &itemValues = m_monitorItems.at(static_cast<std::size_t>(i));
-        cell.raw = itemValues.join(words[static_cast<std::size_t>(i)]);
-        if (partsSeen.at(i) < itemValues.elementCount()
-            && cell.quality == DataLogger::Quality::Good) {
-            cell.quality = DataLogger::Quality::Missing;
-            cell.reason = QStringLiteral("no value this cycle");
-        }
         const QString name = addressText(item.address);
         jsonAddresses.append(name);
         if (cell.quality == DataLogger::Quality::Good) {

@@ -11,7 +11,7 @@
 #include "core/session/session.h"
 #include "core/session/stationscanner.h"
 #include "core/watch/datalogger.h"
-#include "core/watch/itemvalues.h"
+#include "core/watch/itemassembler.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -133,9 +133,8 @@ private:
     int m_staleCycles = 0;
     bool m_monitorErrors = false;
     QSet<QString> m_reported;
-    DataLogger m_logger;                          // --output
-    std::vector<ItemValues> m_monitorItems;       // step().items with their poll ids
-    QHash<std::uint64_t, qsizetype> m_monitorIds; // poll id -> item
+    DataLogger m_logger;          // --output
+    ItemAssembler m_monitorItems; // step().items (keys: their indexes), their elements joined
 
     // backup / restore
     std::unique_ptr<ProgramTransfer> m_program;

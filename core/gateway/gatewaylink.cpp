@@ -5,8 +5,6 @@
 #include "core/session/session.h"
 #include "gatewaypublisher.h"
 
-#include <array>
-
 namespace Fatek {
 
 using GatewayPayload::LinkStatus;
@@ -34,24 +32,21 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
     registerSessionMetaTypes();
     // Core refuses writes too, should a command ever slip past the checks below.
     m_session->setReadOnly(readOnly);
-    QList<WatchEntry> entries;
+    // The assembler's keys are the indexes into m_items.
+    QList<WatchedItem> watched;
     for (const WatchTableSpec &table : m_config.tables) {
         for (const WatchItemSpec &spec : table.items) {
             Item item;
             item.values = ItemValues(spec);
             item.topic = GatewayTopics::item(prefix, config.name, spec.station, spec.address);
-            item.intervalMs = table.intervalMs;
             item.words.assign(static_cast<std::size_t>(item.values.elementCount()), 0);
-            entries += item.values.pollEntries(table.intervalMs);
+            watched.append({m_items.size(), spec, table.intervalMs});
+            m_itemOfTopic.insert(item.topic, m_items.size());
             m_items.push_back(std::move(item));
         }
     }
-    for (std::size_t i = 0; i < m_items.size(); ++i) {
-        for (const std::uint64_t id : m_items[i].values.pollIds())
-            m_itemOfPollId.insert(id, i);
-        m_itemOfTopic.insert(m_items[i].topic, i);
-    }
-    m_session->setWatchList(entries);
+    m_assembler.setItems(watched);
+    m_session->setWatchList(m_assembler.pollEntries());
 
     connect(m_session, &Session::values, this, &GatewayLink::onValues);
     connect(m_session, &Session::linkStateChanged, this, &GatewayLink::onLinkState);
@@ -157,52 +152,8 @@ void GatewayLink::onValues(const QList<WatchValue> &values)
 {
     if (m_stopping)
         return;
-    struct Gathered
-    {
-        std::array<std::uint32_t, ItemValues::MaxElements> words{};
-        int seen = 0;
-        ValueQuality quality = ValueQuality::Good;
-        Message error;
-        QDateTime time;
-    };
-    QHash<std::size_t, Gathered> gathered;
-    for (const WatchValue &v : values) {
-        const auto found = m_itemOfPollId.constFind(v.itemId);
-        if (found == m_itemOfPollId.cend())
-            continue;
-        Item &item = m_items[*found];
-        const int element = item.values.elementOf(v.itemId);
-        if (element < 0 || element >= ItemValues::MaxElements)
-            continue;
-        const bool first = !gathered.contains(*found);
-        Gathered &g = gathered[*found];
-        if (first) // elements not in this batch keep their last words
-            std::copy(item.words.begin(), item.words.end(), g.words.begin());
-        g.words[static_cast<std::size_t>(element)] = v.value;
-        ++g.seen;
-        if (!g.time.isValid() || v.timestamp > g.time)
-            g.time = v.timestamp;
-        // The item's quality is its worst element's.
-        if (v.quality == ValueQuality::Error) {
-            g.quality = ValueQuality::Error;
-            g.error = v.error;
-        } else if (v.quality == ValueQuality::Stale && g.quality == ValueQuality::Good) {
-            g.quality = ValueQuality::Stale;
-            g.error = v.error;
-        }
-    }
-    for (auto it = gathered.begin(); it != gathered.end(); ++it) {
-        Item &item = m_items[it.key()];
-        Gathered &g = it.value();
-        const int count = item.values.elementCount();
-        if (g.seen < count && g.quality == ValueQuality::Good) {
-            // Good means every element was read now, not some of them.
-            g.quality = ValueQuality::Stale;
-            g.error = msg<MsgId::GatewayNoValueThisCycle>();
-        }
-        update(it.key(), std::vector<std::uint32_t>(g.words.begin(), g.words.begin() + count),
-               g.quality, g.error, g.time);
-    }
+    for (const WatchItemValue &v : m_assembler.assemble(values))
+        update(static_cast<std::size_t>(v.key), v.words, v.quality, v.error, v.time);
 }
 
 void GatewayLink::update(std::size_t index, const std::vector<std::uint32_t> &words,
@@ -397,7 +348,18 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
         if (!m_config.allows(element))
             return refuse(reply, msg<MsgId::GatewayWriteNotAllowed>(addressString(element)));
     }
-    const Result<std::uint64_t> raw = item.parse(command->value);
+    Result<std::uint64_t> raw = std::uint64_t(0);
+    if (command->words) {
+        // The raw value itself (the studio's writes): one word per element, nothing parsed.
+        if (std::ssize(*command->words) != item.elementCount())
+            return refuse(reply, msg<MsgId::GatewaySetWordCount>(
+                                     static_cast<int>(command->words->size()),
+                                     addressString(spec.address), item.elementCount()));
+        raw = item.join(*command->words);
+        reply.value = item.text(*raw); // for the reply and the log, as the PLC gets it
+    } else {
+        raw = item.parse(command->value);
+    }
     if (!raw)
         return refuse(reply, raw.error().message);
     if (m_pendingWrites >= MaxPendingWrites)

@@ -2,7 +2,7 @@
 
 #include "core/mqtt/gatewaypayload.h"
 #include "core/session/sessiontypes.h"
-#include "core/watch/itemvalues.h"
+#include "core/watch/itemassembler.h"
 #include "delayhistogram.h"
 #include "gatewayconfig.h"
 #include "gatewaystatistics.h"
@@ -71,7 +71,6 @@ private:
     {
         ItemValues values;
         QString topic;
-        int intervalMs = 500;
         std::vector<std::uint32_t> words;
         ValueQuality quality = ValueQuality::Stale;
         Message error;
@@ -103,7 +102,7 @@ private:
     MqttClient *m_client;
     GatewayPublisher *m_publisher;
     std::vector<Item> m_items;
-    QHash<std::uint64_t, std::size_t> m_itemOfPollId;
+    ItemAssembler m_assembler; // joins the session's element values into m_items' values
     QHash<QString, std::size_t> m_itemOfTopic;
     std::deque<std::size_t> m_dirty; // items to publish, oldest change first
     bool m_publishQueued = false;

@@ -323,7 +323,24 @@ std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteA
             return std::nullopt;
         }
         const QJsonValue value = object->value(QStringLiteral("value"));
-        if (value.isString())
+        if (object->contains(QStringLiteral("words"))) {
+            const QJsonValue words = object->value(QStringLiteral("words"));
+            std::vector<std::uint32_t> list;
+            bool valid = words.isArray() && !words.toArray().isEmpty();
+            for (const QJsonValue &word : words.toArray()) {
+                const double number = word.toDouble(-1);
+                valid = valid && word.isDouble() && number >= 0 && number <= 4294967295.0
+                        && number == static_cast<double>(static_cast<std::uint64_t>(number));
+                if (!valid)
+                    break;
+                list.push_back(static_cast<std::uint32_t>(number));
+            }
+            if (!valid) {
+                *error = msg<MsgId::GatewaySetBadWords>();
+                return std::nullopt;
+            }
+            command.words = std::move(list);
+        } else if (value.isString())
             command.value = value.toString();
         else if (value.isBool())
             command.value = value.toBool() ? QStringLiteral("ON") : QStringLiteral("OFF");
@@ -357,7 +374,15 @@ std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteA
 
 QByteArray GatewayPayload::encodeSet(const SetCommand &command)
 {
-    QJsonObject object{{QStringLiteral("value"), command.value}};
+    QJsonObject object;
+    if (command.words) {
+        QJsonArray words;
+        for (const std::uint32_t word : *command.words)
+            words.append(static_cast<qint64>(word));
+        object.insert(QStringLiteral("words"), words);
+    } else {
+        object.insert(QStringLiteral("value"), command.value);
+    }
     if (command.format)
         object.insert(QStringLiteral("format"), ValueFormat::name(*command.format));
     if (command.swapWords)

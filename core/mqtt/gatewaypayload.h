@@ -71,10 +71,14 @@ QString linkStatusName(LinkStatus state);
 
 // A write command on <item>/set: plain text ("12.5", "ON") or
 //   {"value":"12.5","format":"float","swapWords":false,"id":"anything"}
-// ("value" may be a JSON number or true/false; without "format" the gateway uses its item's).
+// ("value" may be a JSON number or true/false; without "format" the gateway uses its item's), or
+// the raw value itself, as the studio sends it:
+//   {"words":[0,16712],"format":"float","swapWords":false,"id":"..."}
+// ("words" as in an item's payload, element 0 first; it wins over "value").
 struct SetCommand
 {
     QString value;
+    std::optional<std::vector<std::uint32_t>> words;
     std::optional<DisplayFormat> format;
     std::optional<bool> swapWords;
     QString id;

@@ -40,6 +40,13 @@ FATEK_MSG(GatewaySetNoValue, 0,
                             "{\"value\": ...}."))
 FATEK_MSG(GatewaySetBadFormat, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a value format."))
+FATEK_MSG(GatewaySetBadWords, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"words\" must be a list of whole numbers from 0 to 4294967295."))
+// %1 how many words the command has, %2 the item's address, %3 how many elements it spans.
+FATEK_MSG(GatewaySetWordCount, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The command has %1 word(s), but %2 in this format spans %3."))
 
 // Watching a gateway connection from the GUI (core/mqtt/gatewaywatch.cpp): %1 the gateway's
 // connection name unless said otherwise.

@@ -1,5 +1,7 @@
 #include "uitext.h"
 
+#include "core/link/gatewaywatchsettings.h"
+
 namespace Fatek {
 
 namespace {

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "core/mqtt/gatewaywatch.h"
 #include "core/protocol/element.h"
 #include "core/protocol/message.h"
 #include "core/protocol/request.h"
@@ -12,6 +11,8 @@
 #include <QString>
 
 namespace Fatek {
+
+struct GatewayWatchSettings;
 
 // A core message (error, link reason, traffic-log note) in the UI language: its template
 // translated in the context "Fatek::Message", arguments that are messages translated too,

@@ -1,6 +1,9 @@
 #include "connection.h"
 
+#include "core/link/gatewaywatch.h"
+#include "core/link/sessionlink.h"
 #include "core/session/requesttracker.h"
+#include "core/session/session.h"
 #include "ui/common/uitext.h"
 
 #include <QSet>
@@ -15,31 +18,33 @@ Connection::Connection(const SavedConnection &saved, QObject *parent)
     m_rateTimer.setInterval(1000);
     connect(&m_rateTimer, &QTimer::timeout, this, &Connection::updateRate);
     m_rateClock.start();
-    if (saved.gateway) {
-        m_gateway = new GatewayWatch(*saved.gateway, this);
-        connect(m_gateway, &GatewayWatch::linkStateChanged, this, &Connection::onLinkState);
-        connect(m_gateway, &GatewayWatch::values, this, &Connection::values);
+    // The one place that picks the kind of link.
+    if (saved.gateway)
+        m_link = new GatewayWatch(*saved.gateway, this);
+    else
+        m_link = new SessionLink(saved.settings, this);
+    m_session = m_link->session();
+    connect(m_link, &PlcLink::linkStateChanged, this, &Connection::onLinkState);
+    connect(m_link, &PlcLink::itemValues, this, &Connection::itemValues);
+    connect(m_link, &PlcLink::statisticsChanged, this, [this](const SessionStatistics &statistics) {
+        m_statistics = statistics;
+        Q_EMIT changed();
+    });
+    if (!m_session)
         return;
-    }
-    m_session = new Session(saved.settings, this);
+    // What the PLC says it is, and its RUN/STOP state: asked through its own session.
     m_plcRequests = new RequestTracker(this);
     m_plcRequests->setSession(m_session);
     m_statusTimer.setInterval(plcStatusIntervalMs);
     connect(&m_statusTimer, &QTimer::timeout, this, &Connection::readStatus);
-    connect(m_session, &Session::linkStateChanged, this, &Connection::onLinkState);
-    connect(m_session, &Session::statisticsChanged, this,
-            [this](const SessionStatistics &statistics) {
-                m_statistics = statistics;
-                Q_EMIT changed();
-            });
-    connect(m_session, &Session::values, this, &Connection::values);
     m_rateTimer.start();
 }
 
 void Connection::onLinkState(LinkState state, const Message &reason)
 {
-    // Every failed attempt and every broken link passes through Lost once (a gateway watch stays
-    // Lost while its broker client retries, and says so again only when the reason changes).
+    // Every failed attempt and every broken link passes through Lost once; a link without a
+    // session of its own stays Lost while it retries, and says so again only when the reason
+    // changes.
     if (state == LinkState::Lost && (m_session || m_state != LinkState::Lost))
         ++m_linkFailures;
     if (state == LinkState::Connected)
@@ -64,10 +69,7 @@ void Connection::onLinkState(LinkState state, const Message &reason)
 Connection::~Connection()
 {
     // The session's destructor stops its thread; nothing may poll into a half-destroyed object.
-    if (m_session)
-        disconnect(m_session, nullptr, this, nullptr);
-    if (m_gateway)
-        disconnect(m_gateway, nullptr, this, nullptr);
+    disconnect(m_link, nullptr, this, nullptr);
 }
 
 void Connection::setStation(quint8 station)
@@ -100,9 +102,9 @@ QList<quint8> Connection::silentStations() const
         return silent; // a link that is down says so itself
     // Only stations someone uses: a station scan leaves every empty address unanswered.
     QSet<quint8> used{m_saved.station};
-    for (const QList<WatchEntry> &entries : m_pollEntries) {
-        for (const WatchEntry &e : entries)
-            used.insert(e.station);
+    for (const QList<WatchedItem> &items : m_watchItems) {
+        for (const WatchedItem &item : items)
+            used.insert(item.spec.station);
     }
     for (auto it = m_statistics.stations.cbegin(); it != m_statistics.stations.cend(); ++it) {
         if (it.value().unanswered > 0 && it.key() != 0 && used.contains(it.key()))
@@ -125,8 +127,8 @@ QString Connection::stateText() const
 
 QString Connection::plcText() const
 {
-    if (m_gateway)
-        return m_gateway->gatewayLink(); // what the gateway talks to
+    if (!m_session)
+        return m_link->peerText(); // what the far end talks to
     QStringList parts;
     if (m_detail) {
         if (const std::optional<std::string> model = m_detail->modelName())
@@ -184,82 +186,61 @@ void Connection::readStatus()
 
 void Connection::open()
 {
-    if (m_gateway)
-        m_gateway->open();
-    else
-        m_session->open();
+    m_link->open();
 }
 
 void Connection::reconnectNow()
 {
     if (m_state == LinkState::Connected || m_state == LinkState::Connecting)
         return;
-    if (m_gateway) {
-        // The broker client waits out its backoff; a new start skips it.
-        m_gateway->close();
-        m_gateway->open();
-        return;
-    }
-    m_session->open(); // during a backoff the worker connects at once
+    m_link->reconnectNow();
 }
 
 void Connection::close()
 {
-    if (m_gateway)
-        m_gateway->close();
-    else
-        m_session->close();
+    m_link->close();
 }
 
 void Connection::closeDiscard()
 {
-    if (m_gateway)
-        m_gateway->close();
-    else
-        m_session->close(CloseMode::Discard);
+    m_link->close(CloseMode::Discard);
 }
 
 void Connection::setReadOnly(bool readOnly)
 {
-    if (m_gateway)
-        m_gateway->setReadOnly(readOnly);
-    else
-        m_session->setReadOnly(readOnly);
+    m_link->setReadOnly(readOnly);
 }
 
 bool Connection::isReadOnly() const
 {
-    return m_gateway ? m_gateway->isReadOnly() : m_session->isReadOnly();
+    return m_link->isReadOnly();
 }
 
 int Connection::pendingWrites() const
 {
-    return m_gateway ? 0 : m_session->pendingWrites();
+    return m_link->pendingWrites();
 }
 
 int Connection::closeDrainMs() const
 {
-    return m_gateway ? 0 : m_session->closeDrainMs();
+    return m_link->closeDrainMs();
 }
 
-void Connection::setPollEntries(const QObject *owner, const QList<WatchEntry> &entries)
+void Connection::setWatchItems(const QObject *owner, const QList<WatchedItem> &items)
 {
-    if (entries.isEmpty())
-        m_pollEntries.remove(owner);
+    if (items.isEmpty())
+        m_watchItems.remove(owner);
     else
-        m_pollEntries.insert(owner, entries);
-    pushWatchList();
+        m_watchItems.insert(owner, items);
+    pushItems();
 }
 
-void Connection::pushWatchList()
+void Connection::pushItems()
 {
-    QList<WatchEntry> all;
-    for (auto it = m_pollEntries.cbegin(); it != m_pollEntries.cend(); ++it)
+    QList<WatchedItem> all;
+    for (auto it = m_watchItems.cbegin(); it != m_watchItems.cend(); ++it)
         all += it.value();
-    if (m_gateway)
-        m_gateway->setWatchList(all);
-    else
-        m_session->setWatchList(all);
+    m_link->setItems(all);
 }
 
 void Connection::updateRate()

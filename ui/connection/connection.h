@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/mqtt/gatewaywatch.h"
+#include "core/link/plclink.h"
 #include "core/protocol/plcstatus.h"
 #include "core/session/session.h"
 #include "linksettingsio.h"
@@ -14,12 +14,11 @@
 
 namespace Fatek {
 
-// One open link in the GUI: a named Session, the station tools act on, link state and rates.
-// Several watch tables may poll through one connection: each owner hands its entries in and the
-// connection gives the session their union (the session has a single watch list).
-// A connection of kind MQTT gateway has no Session (session() is nullptr): a GatewayWatch serves
-// the tables with the gateway's values and takes their writes; tools that need the PLC's own link
-// are not available on it.
+// One open link in the GUI: a named PlcLink, the station tools act on, link state and rates.
+// Several watch tables may watch through one connection: each owner hands its items in and the
+// connection gives the link their union (a link has a single list of items).
+// Tables read and write only through link(); the tools that talk to the PLC itself use session(),
+// which only a direct link has.
 class Connection : public QObject
 {
     Q_OBJECT
@@ -34,19 +33,17 @@ public:
     quint8 station() const { return m_saved.station; }
     void setStation(quint8 station);
 
-    // nullptr on a gateway connection.
+    PlcLink *link() const { return m_link; }
+    // The direct link's session; nullptr when another program owns the PLC link.
     Session *session() const { return m_session; }
-    // nullptr on a PLC connection.
-    GatewayWatch *gateway() const { return m_gateway; }
-    bool isGateway() const { return m_gateway != nullptr; }
+    bool isGateway() const { return m_link->kind() == PlcLink::Kind::Gateway; }
     // What the link is, in the UI language ("TCP 10.0.0.5:500, FACON", "MQTT gateway line1 ...").
     QString linkText() const { return m_saved.linkText(); }
 
-    // Operator mode, enforced by the session or the gateway watch.
+    // Operator mode, enforced by the link.
     void setReadOnly(bool readOnly);
     bool isReadOnly() const;
-    // Writes accepted and not finished; how long a close waits for them (0 for a gateway: its
-    // commands are gone once published).
+    // Writes accepted and not finished; how long a close waits for them.
     int pendingWrites() const;
     int closeDrainMs() const;
     LinkState linkState() const { return m_state; }
@@ -78,24 +75,24 @@ public:
     // Connects at once when the link is down (skips the reconnect backoff).
     void reconnectNow();
 
-    // Replaces what `owner` polls (an empty list removes it).
-    void setPollEntries(const QObject *owner, const QList<WatchEntry> &entries);
+    // Replaces what `owner` watches (an empty list removes it).
+    void setWatchItems(const QObject *owner, const QList<WatchedItem> &items);
 
 Q_SIGNALS:
     void changed(); // link state, statistics or rate
     void linkStateChanged(Fatek::LinkState state, const Fatek::Message &reason);
-    void values(const QList<Fatek::WatchValue> &values);
+    void itemValues(const QList<Fatek::WatchItemValue> &values);
 
 private:
     void onLinkState(LinkState state, const Message &reason);
     void updateRate();
-    void pushWatchList();
+    void pushItems();
     void readIdentity();
     void readStatus();
 
     SavedConnection m_saved;
-    Session *m_session = nullptr;
-    GatewayWatch *m_gateway = nullptr;
+    PlcLink *m_link = nullptr;
+    Session *m_session = nullptr; // m_link's, if it has one
     LinkState m_state = LinkState::Closed;
     quint64 m_linkFailures = 0;
     class RequestTracker *m_plcRequests = nullptr;
@@ -106,7 +103,7 @@ private:
     bool m_hasConnected = false;
     Message m_reason;
     SessionStatistics m_statistics;
-    QHash<const QObject *, QList<WatchEntry>> m_pollEntries;
+    QHash<const QObject *, QList<WatchedItem>> m_watchItems;
     QTimer m_rateTimer;
     QElapsedTimer m_rateClock;
     quint64 m_rateRequests = 0;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/mqtt/gatewaywatch.h"
+#include "core/link/gatewaywatchsettings.h"
 #include "core/transport/linksettings.h"
 
 #include <QString>

@@ -8,9 +8,7 @@
 #include <QPalette>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
-#include <span>
 #include <utility>
 
 namespace Fatek {
@@ -65,20 +63,22 @@ int WatchTableModel::columnCount(const QModelIndex &parent) const
     return parent.isValid() ? 0 : ColumnCount;
 }
 
-void WatchTableModel::resetParts(Row &row)
+void WatchTableModel::resetValue(Row &row)
 {
-    row.parts.assign(static_cast<std::size_t>(row.values.elementCount()), Part{});
-    row.complete = false;
+    row.itemKey = WatchedItem::newKey();
+    row.raw = 0;
+    row.quality = ValueQuality::Stale;
+    row.error = {};
+    row.updated = {};
+    row.received = false;
+    row.batch = 0;
 }
 
 void WatchTableModel::rebuildIndex()
 {
     m_index.clear();
-    for (int r = 0; r < m_rows.size(); ++r) {
-        const std::span<const std::uint64_t> ids = m_rows.at(r).values.pollIds();
-        for (std::size_t p = 0; p < ids.size(); ++p)
-            m_index.insert(ids[p], {r, static_cast<int>(p)});
-    }
+    for (int r = 0; r < m_rows.size(); ++r)
+        m_index.insert(m_rows.at(r).itemKey, r);
 }
 
 void WatchTableModel::addItems(const QList<WatchItemSpec> &items)
@@ -91,7 +91,7 @@ void WatchTableModel::addItems(const QList<WatchItemSpec> &items)
         Row row;
         row.values = ItemValues(withSymbols(spec));
         row.key = nextRowKey++;
-        resetParts(row);
+        resetValue(row);
         m_rows.append(std::move(row));
     }
     rebuildIndex();
@@ -166,7 +166,7 @@ Status WatchTableModel::setFormat(int row, DisplayFormat format, bool swapWords)
     Row &r = m_rows[row];
     const bool spanChanged = r.values.setItem(spec);
     if (spanChanged) {
-        resetParts(r);
+        resetValue(r);
         rebuildIndex();
     }
     Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
@@ -180,57 +180,33 @@ int WatchTableModel::valueWidth(int row) const
     return m_rows.at(row).values.width();
 }
 
-bool WatchTableModel::received(const Row &row) const
-{
-    return row.complete;
-}
-
 bool WatchTableModel::hasValue(int row) const
 {
-    return received(m_rows.at(row));
-}
-
-std::uint64_t WatchTableModel::combine(const Row &row)
-{
-    std::array<std::uint32_t, ItemValues::MaxElements> words{};
-    const std::size_t count = std::min(row.parts.size(), words.size());
-    for (std::size_t i = 0; i < count; ++i)
-        words[i] = row.parts[i].value;
-    return row.values.join(std::span(words).first(count));
+    return m_rows.at(row).received;
 }
 
 std::uint64_t WatchTableModel::rawValue(int row) const
 {
-    return combine(m_rows.at(row));
+    return m_rows.at(row).raw;
 }
 
 ValueQuality WatchTableModel::quality(int row) const
 {
-    ValueQuality worst = ValueQuality::Good;
-    for (const Part &p : m_rows.at(row).parts) {
-        if (p.quality == ValueQuality::Error)
-            return ValueQuality::Error;
-        if (p.quality == ValueQuality::Stale)
-            worst = ValueQuality::Stale;
-    }
-    return worst;
+    return m_rows.at(row).quality;
 }
 
 QString WatchTableModel::qualityReason(int row) const
 {
-    for (const Part &p : m_rows.at(row).parts) {
-        if (p.quality != ValueQuality::Good && !p.error.empty())
-            return translated(p.error);
-    }
-    return {};
+    const Row &r = m_rows.at(row);
+    return r.quality != ValueQuality::Good && !r.error.empty() ? translated(r.error) : QString();
 }
 
 QString WatchTableModel::valueText(int row) const
 {
     const Row &r = m_rows.at(row);
-    if (!received(r))
+    if (!r.received)
         return {};
-    return r.values.text(combine(r));
+    return r.values.text(r.raw);
 }
 
 void WatchTableModel::setWriteOutcome(int row, const QString &text)
@@ -330,7 +306,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
     const int r = index.row();
     const Row &row = m_rows.at(r);
     const WatchItemSpec &spec = row.spec();
-    const bool have = received(row);
+    const bool have = row.received;
     const ValueQuality q = quality(r);
     const bool discrete = isDiscrete(spec.address.type);
 
@@ -350,11 +326,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                 return tr("no answer");
             return (!have && q != ValueQuality::Error) ? tr("waiting") : qualityName(q);
         case UpdatedColumn: {
-            QDateTime latest;
-            for (const Part &p : row.parts) {
-                if (p.received && (!latest.isValid() || p.timestamp > latest))
-                    latest = p.timestamp;
-            }
+            const QDateTime &latest = row.updated;
             return latest.isValid() ? latest.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz"))
                                     : QString();
         }
@@ -372,7 +344,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         }
     case Qt::CheckStateRole:
         if (index.column() == ValueColumn && discrete && have)
-            return (combine(row) & 1u) ? Qt::Checked : Qt::Unchecked;
+            return (row.raw & 1u) ? Qt::Checked : Qt::Unchecked;
         return {};
     case Qt::ToolTipRole: {
         QStringList lines;

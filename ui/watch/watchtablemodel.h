@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/session/watchvalue.h"
-#include "core/watch/itemvalues.h"
+#include "core/watch/itemassembler.h"
 #include "core/watch/watchlist.h"
 
 #include <QAbstractTableModel>
@@ -21,10 +21,11 @@ class SymbolTable;
 
 // Rows of one watch table: what to watch (WatchItemSpec) plus the latest value, its quality and
 // time. Every item spans one or more elements (a float over R100 is R100+R101); ItemValues makes
-// them poll entries with their own ids and joins their words back into one raw value.
-// Values arrive in batches (applyValues, or queueValues while polling); changed rows are reported
-// with coalesced dataChanged, one per run of rows and changed column. Values are formatted in
-// data(), that is only for the rows a view asks about (the visible ones).
+// them. The link (PlcLink) reports each row's value as one item value, its elements joined
+// (ItemAssembler), under the row's item key. Values arrive in batches (applyValues, or queueValues
+// while polling); changed rows are reported with coalesced dataChanged, one per run of rows and
+// changed column. Values are formatted in data(), that is only for the rows a view asks about (the
+// visible ones).
 class WatchTableModel : public QAbstractTableModel
 {
     Q_OBJECT
@@ -79,20 +80,20 @@ public:
     QString qualityReason(int row) const;
     QString valueText(int row) const;
 
-    // What the session polls for this table.
-    QList<WatchEntry> pollEntries(int intervalMs) const;
+    // What the link watches for this table: one item per row, under the row's item key.
+    QList<WatchedItem> watchItems(int intervalMs) const;
     // Applies a batch now: every value is in the model when this returns.
-    void applyValues(const QList<WatchValue> &values);
+    void applyValues(const QList<WatchItemValue> &values);
     // Polling: the batch is kept and applied from the event loop, in slices of at most
     // sliceBudgetMs and at most one round of slices started per frameMs, so that a batch of
     // 10,000 values (or a burst of batches) never holds the UI thread for a frame. Batches queued
-    // meanwhile are coalesced: the newest value of each element wins, older ones are skipped,
-    // none is lost (an element missing from a newer batch keeps its newest older value).
-    void queueValues(const QList<WatchValue> &values);
+    // meanwhile are coalesced: the newest value of each item wins, older ones are skipped,
+    // none is lost (an item missing from a newer batch keeps its newest older value).
+    void queueValues(const QList<WatchItemValue> &values);
     bool hasQueuedValues() const { return !m_queue.empty(); }
     // Applies everything queued now. markAllStale does so first: a good value queued before must
     // not turn a row fresh after it. Rows may be added or removed meanwhile (values are found by
-    // poll id when applied; those of removed rows are dropped); setItems drops the queue.
+    // item key when applied; those of removed rows are dropped); setItems drops the queue.
     void flushValues();
     static constexpr int frameMs = 16;
     static constexpr int sliceBudgetMs = 3;
@@ -121,31 +122,28 @@ public:
 Q_SIGNALS:
     void writeRequested(int row, quint64 raw);
     void inputRejected(const QString &message);
-    // The set of polled elements changed: hand pollEntries() to the session again.
+    // The set of watched items changed: hand watchItems() to the link again.
     void pollListChanged();
 
 private:
-    struct Part
-    {
-        std::uint32_t value = 0;
-        ValueQuality quality = ValueQuality::Stale;
-        Message error; // translated when shown
-        QDateTime timestamp;
-        bool received = false;
-        // Sequence numbers of the batches that set the quality and the value: a newer batch wins,
-        // so applying queued batches newest first ends as applying them in order would.
-        quint64 qualityBatch = 0;
-        quint64 valueBatch = 0;
-    };
     struct Row
     {
-        ItemValues values; // the item, its poll ids (one per element) and their join
-        quint64 key = 0;
-        std::vector<Part> parts; // one per element
+        ItemValues values; // the item: its elements, their join, its text and parsing
+        quint64 key = 0;   // the row's handle (rowKey)
+        // What the link knows the item by; a new one when the item spans other elements, so
+        // that values still arriving for the old ones match nothing.
+        quint64 itemKey = 0;
+        std::uint64_t raw = 0;
+        ValueQuality quality = ValueQuality::Stale;
+        Message error;         // translated when shown
+        QDateTime updated;     // when its value was last read
+        bool received = false; // every element has been read once
+        // Sequence number of the batch that set it: a newer batch wins, so applying queued
+        // batches newest first ends as applying them in order would.
+        quint64 batch = 0;
         QString writeOutcome;
         qint64 flashUntil = 0;
         std::optional<bool> forced;
-        bool complete = false;    // every part has received a value
         quint64 slice = 0;        // last apply slice that touched the row
         std::uint64_t before = 0; // the row's value when that slice first touched it
         bool hadValue = false;    // and whether it had one
@@ -154,26 +152,24 @@ private:
     };
     struct Batch
     {
-        QList<WatchValue> values;
+        QList<WatchItemValue> values;
         quint64 sequence = 0;
         qsizetype next = 0; // values before this one are applied or skipped
     };
 
-    static void resetParts(Row &row);
+    static void resetValue(Row &row);
     WatchItemSpec withSymbols(WatchItemSpec spec) const;
     void applySymbols(const SymbolTable &previous);
     void rebuildIndex();
     void emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn);
     void scheduleSlice();
     void applySlice(qint64 budgetNs);
-    void applyOne(const WatchValue &v, quint64 batch);
+    void applyOne(const WatchItemValue &v, quint64 batch);
     void finishSlice();
     void expireFlashes();
-    bool received(const Row &row) const;
-    static std::uint64_t combine(const Row &row);
 
     QList<Row> m_rows;
-    QHash<quint64, std::pair<int, int>> m_index; // poll id -> row, part
+    QHash<quint64, int> m_index; // item key -> row
     QElapsedTimer m_clock;
     QTimer m_flashTimer;
     // Loaded once: a QIcon made per paint would parse its SVG every time.

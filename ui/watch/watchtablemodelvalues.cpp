@@ -1,5 +1,6 @@
-// WatchTableModel, the polled side: batches of values from the session are queued and applied in
-// time slices (at most one round per frame), and only the cells that really change are reported.
+// WatchTableModel, the polled side: batches of item values from the link are queued and applied
+// in time slices (at most one round per frame), and only the cells that really change are
+// reported.
 #include "watchtablemodel.h"
 
 #include <algorithm>
@@ -7,21 +8,22 @@
 
 namespace Fatek {
 
-QList<WatchEntry> WatchTableModel::pollEntries(int intervalMs) const
+QList<WatchedItem> WatchTableModel::watchItems(int intervalMs) const
 {
-    QList<WatchEntry> entries;
+    QList<WatchedItem> items;
+    items.reserve(m_rows.size());
     for (const Row &row : m_rows)
-        entries += row.values.pollEntries(intervalMs);
-    return entries;
+        items.append({row.itemKey, row.spec(), intervalMs});
+    return items;
 }
 
-void WatchTableModel::applyValues(const QList<WatchValue> &values)
+void WatchTableModel::applyValues(const QList<WatchItemValue> &values)
 {
     queueValues(values);
     flushValues();
 }
 
-void WatchTableModel::queueValues(const QList<WatchValue> &values)
+void WatchTableModel::queueValues(const QList<WatchItemValue> &values)
 {
     if (values.isEmpty())
         return;
@@ -56,12 +58,12 @@ void WatchTableModel::applySlice(qint64 budgetNs)
     ++m_slice;
     int sinceCheck = 0;
     bool outOfTime = false;
-    // Newest batch first: an element it sets is skipped in the older ones, so that a burst of
-    // batches costs one apply per element, and an element only older batches carry still gets
-    // its newest value.
+    // Newest batch first: an item it sets is skipped in the older ones, so that a burst of
+    // batches costs one apply per item, and an item only older batches carry still gets its
+    // newest value.
     while (!m_queue.empty() && !outOfTime) {
         Batch &batch = m_queue.back();
-        const WatchValue *values = std::as_const(batch.values).constData();
+        const WatchItemValue *values = std::as_const(batch.values).constData();
         const qsizetype count = batch.values.size();
         while (batch.next < count) {
             applyOne(values[batch.next++], batch.sequence);
@@ -79,55 +81,40 @@ void WatchTableModel::applySlice(qint64 budgetNs)
     finishSlice();
 }
 
-void WatchTableModel::applyOne(const WatchValue &v, quint64 batch)
+void WatchTableModel::applyOne(const WatchItemValue &v, quint64 batch)
 {
-    const auto it = m_index.constFind(v.itemId);
+    const auto it = m_index.constFind(v.key);
     if (it == m_index.cend())
         return;
-    const int r = it->first;
+    const int r = *it;
     Row &row = m_rows[r];
-    Part &part = row.parts[static_cast<std::size_t>(it->second)];
-    // The quality comes from the newest batch that has the element, the value and its time from
-    // the newest one that read it (a newer "stale" keeps an older good value, as in order).
-    const bool good = v.quality == ValueQuality::Good;
-    const bool newerQuality = batch >= part.qualityBatch;
-    const bool newerValue = good && batch >= part.valueBatch;
-    if (!newerQuality && !newerValue)
-        return; // newer batches have set it
+    if (batch < row.batch)
+        return; // a newer batch has set it
     if (row.slice != m_slice) {
         row.slice = m_slice;
-        row.hadValue = row.complete;
-        row.before = row.complete ? combine(row) : 0;
+        row.hadValue = row.received;
+        row.before = row.raw;
         m_touchedRows.push_back(r);
     }
     // Only the cells that really change are reported: an open editor (name, format, a value being
-    // typed) must not be disturbed, and unchanged cells need no repaint.
-    const bool qualityChanged
-        = newerQuality && (part.quality != v.quality || part.error != v.error);
-    const bool valueChanged = newerValue && (!part.received || part.value != v.value);
-    const bool updatedChanged = newerValue && part.timestamp != v.timestamp;
-    if (qualityChanged || (newerValue && !part.received))
+    // typed) must not be disturbed, and unchanged cells need no repaint. An item value carries
+    // its elements' last read words whatever its quality (a stale one keeps the good value).
+    const bool qualityChanged = row.quality != v.quality || row.error != v.error;
+    const bool valueChanged = v.hasValue && (!row.received || row.raw != v.raw);
+    const bool updatedChanged = v.hasValue && row.updated != v.time;
+    if (qualityChanged || (v.hasValue && !row.received))
         m_qualityRows.push_back(r); // "waiting" becomes a quality with the first value
     if (qualityChanged || valueChanged)
         m_valueRows.push_back(r); // the value's font, colour and tooltip follow the quality
     if (updatedChanged)
         m_updatedRows.push_back(r);
-    if (newerQuality) {
-        part.qualityBatch = batch;
-        if (qualityChanged) {
-            part.quality = v.quality;
-            part.error = v.error;
-        }
-    }
-    if (newerValue) {
-        part.valueBatch = batch;
-        part.value = v.value;
-        part.timestamp = v.timestamp;
-        if (!part.received) {
-            part.received = true;
-            row.complete = std::all_of(row.parts.cbegin(), row.parts.cend(),
-                                       [](const Part &p) { return p.received; });
-        }
+    row.batch = batch;
+    row.quality = v.quality;
+    row.error = v.error;
+    if (v.hasValue) {
+        row.raw = v.raw;
+        row.updated = v.time;
+        row.received = true;
     }
 }
 
@@ -137,7 +124,7 @@ void WatchTableModel::finishSlice()
     bool flashed = false;
     for (int r : m_touchedRows) {
         Row &row = m_rows[r];
-        if (row.complete && (!row.hadValue || combine(row) != row.before)) {
+        if (row.received && (!row.hadValue || row.raw != row.before)) {
             row.flashUntil = now + flashMs;
             flashed = true;
         }
@@ -156,12 +143,10 @@ void WatchTableModel::markAllStale(const Message &reason)
     flushValues();
     std::vector<int> touched;
     for (int r = 0; r < m_rows.size(); ++r) {
-        bool changed = false;
-        for (Part &p : m_rows[r].parts) {
-            changed = changed || p.quality != ValueQuality::Stale || p.error != reason;
-            p.quality = ValueQuality::Stale;
-            p.error = reason;
-        }
+        Row &row = m_rows[r];
+        const bool changed = row.quality != ValueQuality::Stale || row.error != reason;
+        row.quality = ValueQuality::Stale;
+        row.error = reason;
         if (changed)
             touched.push_back(r);
     }

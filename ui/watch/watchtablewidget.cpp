@@ -1,7 +1,5 @@
 #include "watchtablewidget.h"
 
-#include "core/session/requesttracker.h"
-#include "core/watch/itemvalues.h"
 #include "forcedmarks.h"
 #include "ui/common/messageline.h"
 #include "ui/common/toolconfirmation.h"
@@ -39,7 +37,6 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     , m_model(new WatchTableModel(this))
     , m_view(new WatchTableView(this))
     , m_forcedMarks(new ForcedMarks(m_model, this))
-    , m_writes(new RequestTracker(this))
 {
     m_addEdit = new QLineEdit(this);
     m_addEdit->setObjectName(QStringLiteral("addressEdit"));
@@ -200,7 +197,7 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
 WatchTableWidget::~WatchTableWidget()
 {
     if (m_connection)
-        m_connection->setPollEntries(this, {});
+        m_connection->setWatchItems(this, {});
 }
 
 void WatchTableWidget::refreshConnections()
@@ -216,19 +213,19 @@ void WatchTableWidget::setConnection(Connection *connection)
     if (connection == m_connection)
         return;
     if (m_connection) {
-        m_connection->setPollEntries(this, {});
+        m_connection->setWatchItems(this, {});
         disconnect(m_connection, nullptr, m_model, nullptr);
     }
-    m_writes->setSession(connection ? connection->session() : nullptr);
     m_connection = connection;
     if (connection) {
         // A paused table is frozen: a cycle already under way when it paused must not update it.
         // Batches are applied in time slices, coalesced per frame (WatchTableModel::queueValues).
-        connect(connection, &Connection::values, m_model, [this](const QList<WatchValue> &values) {
-            if (!isPaused())
-                m_model->queueValues(values);
-        });
-        // The session stops polling while its link is down (no batches come): mark the rows here.
+        connect(connection, &Connection::itemValues, m_model,
+                [this](const QList<WatchItemValue> &values) {
+                    if (!isPaused())
+                        m_model->queueValues(values);
+                });
+        // A link stops reporting while it is down (no batches come): mark the rows here.
         connect(connection, &Connection::linkStateChanged, m_model,
                 [this](LinkState state, const Message &reason) {
                     if (state == LinkState::Connected || state == LinkState::Connecting)
@@ -246,12 +243,13 @@ void WatchTableWidget::setConnection(Connection *connection)
         m_model->markAllStale(tr("no connection"));
     }
     m_forcedMarks->setSession(connection ? connection->session() : nullptr);
-    // Through a gateway its configuration sets the poll interval: the spin box would change
+    // A link whose far end sets the intervals (its own configuration): the spin box would change
     // nothing.
-    const bool gateway = connection && connection->isGateway();
-    m_interval->setEnabled(!gateway);
-    m_interval->setToolTip(gateway ? tr("The gateway polls at the interval of its configuration")
-                                   : tr("Poll interval of this table"));
+    const bool fixed = connection && !connection->link()->takesIntervals();
+    m_interval->setEnabled(!fixed);
+    m_interval->setToolTip(
+        fixed ? tr("Polled at the intervals %1 is configured with").arg(connection->linkText())
+              : tr("Poll interval of this table"));
     m_connectionCombo->setCurrentIndex(m_manager->indexOf(connection));
     pushPollList();
     Q_EMIT connectionChanged(connection);
@@ -261,8 +259,8 @@ void WatchTableWidget::pushPollList()
 {
     if (!m_connection)
         return;
-    m_connection->setPollEntries(this, isPaused() ? QList<WatchEntry>()
-                                                  : m_model->pollEntries(intervalMs()));
+    m_connection->setWatchItems(this, isPaused() ? QList<WatchedItem>()
+                                                 : m_model->watchItems(intervalMs()));
 }
 
 WatchTableSpec WatchTableWidget::spec() const
@@ -408,8 +406,7 @@ void WatchTableWidget::write(int row, quint64 raw)
         showMessage(tr("Cannot write %1: the table has no connection.").arg(what), true);
         return;
     }
-    // In operator mode the session (or the gateway watch) refuses the write with its own message:
-    // no question first.
+    // In operator mode the link refuses the write with its own message: no question first.
     if (confirmWrites() && !m_connection->isReadOnly()) {
         const QString question = tr("Write %1 to the PLC on %2?").arg(what, m_connection->name());
         // One rule for every question before the PLC changes: the safe answer is the default,
@@ -421,50 +418,28 @@ void WatchTableWidget::write(int row, quint64 raw)
             return;
         }
     }
-    if (GatewayWatch *gateway = m_connection->gateway()) {
-        // The gateway parses the text again in the item's format: send what the table shows.
-        gateway->write(
-            item.station, item.address, text, item.format, item.swapWords, this,
-            [this, rowKey = m_model->rowKey(row), what,
-             written = QPointer<Connection>(m_connection)](const GatewayPayload::Reply &reply) {
-                if (written == m_connection)
-                    onGatewayWritten(rowKey, what, reply);
-            });
-        showMessage(tr("Writing %1 through the gateway …").arg(what), false);
-        return;
-    }
-    m_writes->submit(ItemValues(item).writeRequest(raw),
-                     [this, rowKey = m_model->rowKey(row), what](const SessionResult &result) {
-                         onWritten(rowKey, what, result);
-                     });
+    // Answers meant for a connection the table has left since are dropped.
+    m_connection->link()->write(
+        item, raw, this,
+        [this, rowKey = m_model->rowKey(row), what,
+         written = QPointer<Connection>(m_connection)](const LinkWriteResult &result) {
+            if (written == m_connection)
+                onWritten(rowKey, what, result);
+        });
     showMessage(tr("Writing %1 …").arg(what), false);
 }
 
-void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const SessionResult &result)
+void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const LinkWriteResult &result)
 {
-    const QString outcome
-        = result.ok() ? tr("Wrote %1.").arg(what)
-                      : tr("Write of %1 failed: %2").arg(what, translated(result.errorMessage()));
+    const QString outcome = result.ok
+                                ? tr("Wrote %1.").arg(what)
+                                : tr("Write of %1 failed: %2").arg(what, translated(result.error));
     const int row = m_model->rowOfKey(rowKey);
     if (row >= 0)
         m_model->setWriteOutcome(
             row,
             tr("%1 %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
-    showMessage(outcome, !result.ok());
-}
-
-void WatchTableWidget::onGatewayWritten(quint64 rowKey, const QString &what,
-                                        const GatewayPayload::Reply &reply)
-{
-    const QString outcome = reply.ok
-                                ? tr("The gateway wrote %1.").arg(what)
-                                : tr("Write of %1 failed: %2").arg(what, translated(reply.error));
-    const int row = m_model->rowOfKey(rowKey);
-    if (row >= 0)
-        m_model->setWriteOutcome(
-            row,
-            tr("%1 %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
-    showMessage(outcome, !reply.ok);
+    showMessage(outcome, !result.ok);
 }
 
 void WatchTableWidget::removeSelected()

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "core/mqtt/gatewaypayload.h"
 #include "core/watch/watchlist.h"
 #include "ui/connection/connection.h"
 
@@ -32,7 +31,7 @@ using ConfirmHandler = std::function<bool(QWidget *parent, const QString &questi
 
 // One watch table: an entry line to add items, the table, its poll settings (interval, pause,
 // confirmation) and the connection it polls through. It turns edits into writes on that
-// connection's session (or its gateway watch) and shows their outcome; it does no I/O itself.
+// connection's link and shows their outcome; it does no I/O itself.
 class WatchTableWidget : public QWidget
 {
     Q_OBJECT
@@ -83,8 +82,7 @@ private:
     void showMessage(const QString &text, bool error);
     void pushPollList();
     void refreshConnections();
-    void onWritten(quint64 rowKey, const QString &what, const SessionResult &result);
-    void onGatewayWritten(quint64 rowKey, const QString &what, const GatewayPayload::Reply &reply);
+    void onWritten(quint64 rowKey, const QString &what, const LinkWriteResult &result);
     void removeSelected();
     void writeDialog();
     void toggleSwapWords();
@@ -105,7 +103,6 @@ private:
     ConfirmHandler m_confirm;
     ForcedMarks *m_forcedMarks;
     // The table's writes; an outcome counts only while the table uses the connection written to.
-    class RequestTracker *m_writes;
 };
 
 } // namespace Fatek

@@ -1,8 +1,8 @@
 #include "gatewaywatch.h"
 
+#include "core/mqtt/gatewaytopics.h"
+#include "core/mqtt/mqttclient.h"
 #include "core/session/session.h"
-#include "gatewaytopics.h"
-#include "mqttclient.h"
 
 #include <QThread>
 #include <QUuid>
@@ -18,24 +18,16 @@ std::string utf8(const QString &text)
     return text.toStdString();
 }
 
-std::string describe(int station, const Address &address, const QString &text)
+std::string describe(const WatchItemSpec &item, const QString &text)
 {
-    return address.toString() + " (station " + std::to_string(station) + ") = " + utf8(text);
+    return item.address.toString() + " (station " + std::to_string(item.station)
+           + ") = " + utf8(text);
 }
 
 } // namespace
 
-Message GatewayWatchSettings::validate() const
-{
-    if (!GatewayTopics::isValidPrefix(prefix))
-        return msg<MsgId::GatewayPrefixInvalid>(utf8(prefix));
-    if (!GatewayTopics::isValidConnectionName(connection))
-        return msg<MsgId::GatewayNameInvalid>(utf8(connection));
-    return broker.validate();
-}
-
 GatewayWatch::GatewayWatch(const GatewayWatchSettings &settings, QObject *parent)
-    : QObject(parent)
+    : PlcLink(parent)
     , m_settings(settings)
     , m_client(new MqttClient(settings.broker, this))
 {
@@ -77,7 +69,7 @@ void GatewayWatch::open()
     setState(LinkState::Connecting, {});
 }
 
-void GatewayWatch::close()
+void GatewayWatch::close(CloseMode)
 {
     m_client->close();
     m_brokerUp = false;
@@ -87,20 +79,25 @@ void GatewayWatch::close()
     // Unanswered writes end now: nobody will read their replies.
     const QStringList ids = m_writes.keys();
     for (const QString &id : ids) {
-        GatewayPayload::Reply reply = m_writes.value(id).request;
-        reply.error = msg<MsgId::GatewayWriteNotSent>(
-            describe(reply.station, reply.address, reply.value),
-            msg<MsgId::MqttClosed>(utf8(m_settings.broker.toUrl())));
-        finishWrite(id, reply);
+        finishWrite(id, {false, msg<MsgId::GatewayWriteNotSent>(
+                                    m_writes.value(id).what,
+                                    msg<MsgId::MqttClosed>(utf8(m_settings.broker.toUrl())))});
     }
+}
+
+void GatewayWatch::reconnectNow()
+{
+    if (m_state == LinkState::Connected || m_state == LinkState::Connecting)
+        return;
+    close();
+    open();
 }
 
 void GatewayWatch::onConnected()
 {
     m_brokerUp = true;
     // What the broker retains now is the truth: items and status come again after the subscribe.
-    m_elements.clear();
-    m_itemElements.clear();
+    m_published.clear();
     m_status.reset();
     m_settled = false;
     setState(LinkState::Connecting, msg<MsgId::GatewayNoStatus>(utf8(m_settings.connection)));
@@ -133,7 +130,7 @@ void GatewayWatch::onMessage(const QString &topic, const QByteArray &payload)
     if (!parsed || parsed->connection != m_settings.connection)
         return;
     switch (parsed->kind) {
-    case GatewayTopics::Kind::Item: onItem(topic, payload); break;
+    case GatewayTopics::Kind::Item: onItem(parsed->station, parsed->address, payload); break;
     case GatewayTopics::Kind::Status: onStatus(payload); break;
     case GatewayTopics::Kind::Reply: onReply(payload); break;
     case GatewayTopics::Kind::Set:
@@ -141,35 +138,21 @@ void GatewayWatch::onMessage(const QString &topic, const QByteArray &payload)
     }
 }
 
-void GatewayWatch::onItem(const QString &topic, const QByteArray &payload)
+void GatewayWatch::onItem(int station, const Address &address, const QByteArray &payload)
 {
-    QStringList keys;
+    const QString key = keyOf(station, address);
     // An empty payload removes a retained item (the gateway stopped publishing it); garbage from
     // another program on our topic counts as nothing published.
     if (const std::optional<GatewayPayload::ItemValue> item = GatewayPayload::decodeItem(payload)) {
-        for (std::size_t n = 0; n < item->words.size(); ++n) {
-            const QString key
-                = keyOf(item->station, item->address.advanced(static_cast<std::uint32_t>(n)));
-            Element &element = m_elements[key];
-            element.value = item->words[n];
-            element.quality = item->quality;
-            element.time = item->time;
-            element.error = item->quality == ValueQuality::Good ? Message{} : item->error;
-            keys << key;
-            markDirty(key);
-        }
+        Published &published = m_published[key];
+        published.words = item->words;
+        published.quality = item->quality;
+        published.time = item->time;
+        published.error = item->quality == ValueQuality::Good ? Message{} : item->error;
+    } else if (!m_published.remove(key)) {
+        return;
     }
-    const QStringList previous = m_itemElements.value(topic);
-    for (const QString &key : previous) {
-        if (!keys.contains(key)) {
-            m_elements.remove(key);
-            markDirty(key);
-        }
-    }
-    if (keys.isEmpty())
-        m_itemElements.remove(topic);
-    else
-        m_itemElements.insert(topic, keys);
+    markDirty(key);
 }
 
 void GatewayWatch::onStatus(const QByteArray &payload)
@@ -215,15 +198,18 @@ void GatewayWatch::onReply(const QByteArray &payload)
         return; // another client's write
     if (!reply->ok && reply->error.empty())
         reply->error = msg<MsgId::GatewayWriteFailed>(utf8(m_settings.connection));
-    finishWrite(reply->id, *reply);
+    finishWrite(reply->id, {reply->ok, reply->ok ? Message{} : reply->error});
 }
 
-void GatewayWatch::setWatchList(const QList<WatchEntry> &entries)
+void GatewayWatch::setItems(const QList<WatchedItem> &items)
 {
-    m_entries = entries;
-    m_entriesOf.clear();
-    for (int i = 0; i < m_entries.size(); ++i)
-        m_entriesOf[keyOf(m_entries.at(i).station, m_entries.at(i).address)].append(i);
+    m_items.clear();
+    m_itemsAt.clear();
+    for (const WatchedItem &item : items) {
+        const QString key = keyOf(item.spec.station, item.spec.address);
+        m_itemsAt[key].append(static_cast<int>(m_items.size()));
+        m_items.push_back({item, ItemValues(item.spec), key});
+    }
     m_dirty.clear();
     markAllDirty();
 }
@@ -233,10 +219,10 @@ QString GatewayWatch::keyOf(int station, const Address &address)
     return QString::number(station) + u'/' + QString::fromStdString(address.toString());
 }
 
-void GatewayWatch::markDirty(const QString &elementKey)
+void GatewayWatch::markDirty(const QString &key)
 {
-    const auto it = m_entriesOf.constFind(elementKey);
-    if (it == m_entriesOf.cend())
+    const auto it = m_itemsAt.constFind(key);
+    if (it == m_itemsAt.cend())
         return;
     m_dirty += it.value();
     m_flushTimer.start();
@@ -248,27 +234,37 @@ void GatewayWatch::markAllDirty()
     m_flushTimer.start();
 }
 
-WatchValue GatewayWatch::valueOf(const WatchEntry &entry) const
+WatchItemValue GatewayWatch::valueOf(const Watched &watched) const
 {
-    WatchValue value;
-    value.itemId = entry.id;
-    const auto element = m_elements.constFind(keyOf(entry.station, entry.address));
-    const bool covered = element != m_elements.cend();
-    if (covered) {
-        value.value = element->value;
-        value.timestamp = element->time;
+    WatchItemValue value;
+    value.key = watched.item.key;
+    const auto count = static_cast<std::size_t>(watched.values.elementCount());
+    value.words.assign(count, 0);
+    const auto published = m_published.constFind(watched.key);
+    std::size_t covered = 0;
+    if (published != m_published.cend()) {
+        // The gateway's item there, as it is: its words are the elements' (element 0 first).
+        covered = std::min(count, published->words.size());
+        std::copy_n(published->words.cbegin(), covered, value.words.begin());
+        value.raw = watched.values.join(value.words);
+        value.time = published->time;
+        value.hasValue = covered == count;
     }
     if (m_state != LinkState::Connected) {
         // Whatever the payload said, it is not fresh while the gateway or the broker is away.
         value.quality = ValueQuality::Stale;
         value.error = m_reason.empty() ? linkStateMessage(m_state) : m_reason;
-    } else if (covered) {
-        value.quality = element->quality;
-        value.error = element->error;
+    } else if (value.hasValue) {
+        value.quality = published->quality;
+        value.error = published->error;
     } else {
+        // Nothing there, or an item over fewer elements (R100 published as one word, watched
+        // as a float): the first element it lacks is not published.
+        const WatchItemSpec &spec = watched.item.spec;
         value.quality = ValueQuality::Error;
-        value.error = msg<MsgId::GatewayNotPublished>(entry.address.toString(), int(entry.station),
-                                                      utf8(m_settings.connection));
+        value.error = msg<MsgId::GatewayNotPublished>(
+            spec.address.advanced(static_cast<std::uint32_t>(covered)).toString(),
+            int(spec.station), utf8(m_settings.connection));
     }
     return value;
 }
@@ -277,8 +273,8 @@ void GatewayWatch::flush()
 {
     QList<int> indexes;
     if (m_allDirty) {
-        indexes.reserve(m_entries.size());
-        for (int i = 0; i < m_entries.size(); ++i)
+        indexes.reserve(static_cast<qsizetype>(m_items.size()));
+        for (int i = 0; i < static_cast<int>(m_items.size()); ++i)
             indexes << i;
     } else {
         std::sort(m_dirty.begin(), m_dirty.end());
@@ -287,72 +283,68 @@ void GatewayWatch::flush()
     }
     m_allDirty = false;
     m_dirty.clear();
-    QList<WatchValue> batch;
+    QList<WatchItemValue> batch;
     for (int i : std::as_const(indexes)) {
-        const WatchEntry &entry = m_entries.at(i);
+        const Watched &watched = m_items[static_cast<std::size_t>(i)];
         // Until the retained items had time to come, a missing one is not yet "not published".
-        const bool pending = m_state == LinkState::Connected && !m_settled
-                             && !m_elements.contains(keyOf(entry.station, entry.address));
+        const bool pending
+            = m_state == LinkState::Connected && !m_settled && !m_published.contains(watched.key);
         if (!pending)
-            batch << valueOf(entry);
+            batch << valueOf(watched);
     }
     if (!batch.isEmpty())
-        Q_EMIT values(batch);
+        Q_EMIT itemValues(batch);
 }
 
-void GatewayWatch::write(int station, const Address &address, const QString &text,
-                         DisplayFormat format, bool swapWords, QObject *context,
+void GatewayWatch::write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
                          WriteCompletion completion)
 {
     const QString id = QUuid::createUuid().toString(QUuid::WithoutBraces);
+    const ItemValues values(item);
     PendingWrite pending;
     pending.context = context;
     pending.hasContext = context != nullptr;
     pending.completion = std::move(completion);
-    pending.request.id = id;
-    pending.request.station = station;
-    pending.request.address = address;
-    pending.request.value = text;
+    pending.what = describe(item, values.text(raw));
     m_writes.insert(id, pending);
 
-    const std::string what = describe(station, address, text);
     Message refusal;
     // Enforced here, whatever the buttons show: operator mode changes nothing in any PLC.
     if (m_readOnly)
-        refusal = msg<MsgId::SessionReadOnly>(what);
+        refusal = msg<MsgId::SessionReadOnly>(pending.what);
     else if (!m_brokerUp || !m_status || m_status->state == GatewayPayload::LinkStatus::Offline)
-        refusal = msg<MsgId::GatewayWriteNotSent>(what, m_reason.empty() ? linkStateMessage(m_state)
-                                                                         : m_reason);
+        refusal = msg<MsgId::GatewayWriteNotSent>(
+            pending.what, m_reason.empty() ? linkStateMessage(m_state) : m_reason);
     if (refusal.empty()) {
+        // The typed value itself, not its text: the gateway writes these words as they are.
         GatewayPayload::SetCommand command;
-        command.value = text;
-        command.format = format;
-        command.swapWords = swapWords;
+        command.words = values.split(raw);
+        command.format = item.format;
+        command.swapWords = item.swapWords;
         command.id = id;
-        const QString topic
-            = GatewayTopics::itemSet(m_settings.prefix, m_settings.connection, station, address);
+        const QString topic = GatewayTopics::itemSet(m_settings.prefix, m_settings.connection,
+                                                     item.station, item.address);
         if (!m_client->publish(topic, GatewayPayload::encodeSet(command), 1, false))
             refusal = msg<MsgId::GatewayPublishFailed>(utf8(m_settings.broker.toUrl()));
     }
     if (!refusal.empty()) {
-        GatewayPayload::Reply reply = pending.request;
-        reply.error = refusal;
         // Like a reply, never inside the caller's call.
         QMetaObject::invokeMethod(
-            this, [this, id, reply] { finishWrite(id, reply); }, Qt::QueuedConnection);
+            this,
+            [this, id, refusal] {
+                finishWrite(id, {false, refusal});
+            },
+            Qt::QueuedConnection);
         return;
     }
     QTimer::singleShot(m_replyTimeoutMs, this, [this, id] {
-        if (!m_writes.contains(id))
-            return;
-        GatewayPayload::Reply reply = m_writes.value(id).request;
-        reply.error = msg<MsgId::GatewayNoReply>(utf8(m_settings.connection),
-                                                 (m_replyTimeoutMs + 999) / 1000);
-        finishWrite(id, reply);
+        if (m_writes.contains(id))
+            finishWrite(id, {false, msg<MsgId::GatewayNoReply>(utf8(m_settings.connection),
+                                                               (m_replyTimeoutMs + 999) / 1000)});
     });
 }
 
-void GatewayWatch::finishWrite(const QString &id, const GatewayPayload::Reply &reply)
+void GatewayWatch::finishWrite(const QString &id, const LinkWriteResult &result)
 {
     const auto it = m_writes.find(id);
     if (it == m_writes.end())
@@ -364,10 +356,11 @@ void GatewayWatch::finishWrite(const QString &id, const GatewayPayload::Reply &r
     if (!pending.completion)
         return;
     if (!pending.hasContext || pending.context->thread() == QThread::currentThread())
-        pending.completion(reply);
+        pending.completion(result);
     else
         QMetaObject::invokeMethod(
-            pending.context.data(), [completion = pending.completion, reply] { completion(reply); },
+            pending.context.data(),
+            [completion = pending.completion, result] { completion(result); },
             Qt::QueuedConnection);
 }
 

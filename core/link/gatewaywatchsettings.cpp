@@ -1,0 +1,16 @@
+#include "gatewaywatchsettings.h"
+
+#include "core/mqtt/gatewaytopics.h"
+
+namespace Fatek {
+
+Message GatewayWatchSettings::validate() const
+{
+    if (!GatewayTopics::isValidPrefix(prefix))
+        return msg<MsgId::GatewayPrefixInvalid>(prefix.toStdString());
+    if (!GatewayTopics::isValidConnectionName(connection))
+        return msg<MsgId::GatewayNameInvalid>(connection.toStdString());
+    return broker.validate();
+}
+
+} // namespace Fatek

@@ -1,0 +1,92 @@
+#pragma once
+
+#include "core/session/sessionstatistics.h"
+#include "core/session/sessiontypes.h"
+#include "core/watch/itemassembler.h"
+
+#include <QList>
+#include <QObject>
+#include <QString>
+
+#include <cstdint>
+#include <functional>
+
+namespace Fatek {
+
+class Session;
+
+// Makes the link's signal types known to queued connections and QSignalSpy (PlcLink's
+// constructor calls it).
+void registerLinkMetaTypes();
+
+// What a write through a link ended with: done, or why not (refused in operator mode, refused by
+// the PLC or the gateway, not sent, no answer).
+struct LinkWriteResult
+{
+    bool ok = false;
+    Message error;
+};
+
+// A place that holds the values of PLCs: watch items in, item values and the link's state out,
+// one write call with one result. The GUI and its tables talk only to this; a direct link
+// (SessionLink: a Session on a serial, TCP or UDP line) and a gateway's connection watched
+// through the broker (GatewayWatch) implement it. Lives in the thread that uses it; what it
+// reports arrives there.
+class PlcLink : public QObject
+{
+    Q_OBJECT
+
+public:
+    enum class Kind {
+        Direct,  // this program talks to the PLCs itself
+        Gateway, // fatek-gateway does, and this program watches it through an MQTT broker
+    };
+    using WriteCompletion = std::function<void(const LinkWriteResult &result)>;
+
+    explicit PlcLink(QObject *parent = nullptr);
+
+    virtual Kind kind() const = 0;
+    virtual void open() = 0;
+    // Drain: accepted writes finish first (bounded by closeDrainMs()); Discard: they are dropped.
+    virtual void close(CloseMode mode = CloseMode::Drain) = 0;
+    // Connects at once when the link is down (skips the reconnect backoff).
+    virtual void reconnectNow() = 0;
+    virtual LinkState linkState() const = 0;
+
+    // Replaces the watched items (keys unique in the process, WatchedItem::newKey()); their values
+    // come in itemValues().
+    virtual void setItems(const QList<WatchedItem> &items) = 0;
+    // Whether the items are read at the intervals they carry; false when the far end's own
+    // configuration decides (a gateway).
+    virtual bool takesIntervals() const { return true; }
+
+    // Operator mode, enforced here: write() refuses before anything reaches a wire or a broker.
+    virtual void setReadOnly(bool readOnly) = 0;
+    virtual bool isReadOnly() const = 0;
+    // Writes `raw` (ItemValues's raw value of `item`, in its format) into the item's elements;
+    // `completion` is called once on `context`'s thread with the outcome, never inside this call,
+    // and dropped if `context` is destroyed first.
+    virtual void write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
+                       WriteCompletion completion)
+        = 0;
+    // Writes accepted and not finished, and how long a close waits for them.
+    virtual int pendingWrites() const = 0;
+    virtual int closeDrainMs() const = 0;
+
+    // The session of a direct link, for the tools that talk to the PLC itself (control, forcing,
+    // program, snapshots, the raw console); nullptr when another program owns the PLC link.
+    virtual Session *session() const { return nullptr; }
+    // What the far end says it talks to ("TCP 10.0.0.7:500, FACON"); empty for a direct link.
+    virtual QString peerText() const { return {}; }
+
+Q_SIGNALS:
+    void linkStateChanged(Fatek::LinkState state, const Fatek::Message &reason);
+    // The items whose values were reported (one batch per poll cycle or per burst of messages).
+    void itemValues(const QList<Fatek::WatchItemValue> &values);
+    // A direct link's counters (at most 4 times a second).
+    void statisticsChanged(const Fatek::SessionStatistics &statistics);
+};
+
+} // namespace Fatek
+
+Q_DECLARE_METATYPE(Fatek::WatchItemValue)
