@@ -5,7 +5,7 @@
 #include "core/commission/snapshotfile.h"
 #include "core/commission/snapshotreader.h"
 #include "core/commission/valuesrestorer.h"
-#include "core/session/qtmessage.h"
+#include "core/qtbridge/qtmessage.h"
 #include "core/session/session.h"
 #include "core/sim/modelprofile.h"
 #include "core/sim/simserver.h"

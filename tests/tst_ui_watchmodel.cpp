@@ -1,7 +1,7 @@
 // The watch table model and the typed-input parsing, without a window or a PLC: values arrive as
 // the session would deliver them.
-#include "core/watch/itemassembler.h"
 #include "core/watch/itemvalues.h"
+#include "itemfeed.h"
 #include "ui/watch/watchinput.h"
 #include "ui/watch/watchtablemodel.h"
 
@@ -9,28 +9,6 @@
 #include <QTest>
 
 using namespace Fatek;
-
-// What a link does for a table (SessionLink): the items' elements as poll entries, and each batch
-// of element values joined into item values by the ItemAssembler.
-struct Feed
-{
-    Fatek::WatchTableModel &model;
-    Fatek::ItemAssembler assembler;
-
-    QList<Fatek::WatchEntry> entries(int intervalMs)
-    {
-        assembler.setItems(model.watchItems(intervalMs));
-        return assembler.pollEntries();
-    }
-    void apply(const QList<Fatek::WatchValue> &values)
-    {
-        model.applyValues(assembler.assemble(values));
-    }
-    void queue(const QList<Fatek::WatchValue> &values)
-    {
-        model.queueValues(assembler.assemble(values));
-    }
-};
 
 class TestUiWatchModel : public QObject
 {
@@ -100,7 +78,7 @@ private Q_SLOTS:
     void floatJoinsTwoRegisters()
     {
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R100", DisplayFormat::Float32)});
         const QList<WatchEntry> entries = feed.entries(250);
         QCOMPARE(entries.size(), 2);
@@ -118,7 +96,7 @@ private Q_SLOTS:
     void doubleJoinsFourRegistersAndChangedValuesFlash()
     {
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Double64)});
         const QList<WatchEntry> entries = feed.entries(500);
         QCOMPARE(entries.size(), 4);
@@ -140,7 +118,7 @@ private Q_SLOTS:
     void batchGivesCoalescedDataChanged()
     {
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Signed), item("R1", DisplayFormat::Signed),
                         item("R2", DisplayFormat::Signed), item("R5", DisplayFormat::Signed)});
         const QList<WatchEntry> entries = feed.entries(500);
@@ -208,7 +186,7 @@ private Q_SLOTS:
         // batch lacks row 4 and says row 3 is stale (timeout): rows 3 and 4 must keep their newest
         // good value (38 and 38 at t0 + 38 s) and row 3 must not look fresh.
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Unsigned), item("R1", DisplayFormat::Unsigned),
                         item("R2", DisplayFormat::Unsigned), item("R3", DisplayFormat::Unsigned),
                         item("R4", DisplayFormat::Unsigned), item("R5", DisplayFormat::Float32)});
@@ -299,7 +277,7 @@ private Q_SLOTS:
         // Values delivered before the link went down are applied first, then marked stale: a
         // queued good value must never turn a row fresh after markAllStale.
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Unsigned)});
         const quint64 id = feed.entries(100).at(0).id;
         feed.queue({good(id, 7)});
@@ -316,7 +294,7 @@ private Q_SLOTS:
         // Queued values find their rows by item key when applied: a row removed or re-spanned
         // meanwhile gets nothing, the others get theirs.
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R0", DisplayFormat::Unsigned), item("R1", DisplayFormat::Unsigned),
                         item("R2", DisplayFormat::Unsigned)});
         const QList<WatchEntry> entries = feed.entries(100);
@@ -333,7 +311,7 @@ private Q_SLOTS:
     void staleKeepsValueWithReason()
     {
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R7", DisplayFormat::Unsigned)});
         const quint64 id = feed.entries(500).at(0).id;
         feed.apply({good(id, 42)});
@@ -356,7 +334,7 @@ private Q_SLOTS:
     void typedValueBecomesWriteRequest()
     {
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R10", DisplayFormat::Hex), item("Y3", DisplayFormat::Bit)});
         const QList<WatchEntry> entries = feed.entries(500);
         feed.apply({good(entries.at(0).id, 0), good(entries.at(1).id, 0)});
@@ -379,7 +357,7 @@ private Q_SLOTS:
     void formatChangeRepollsAndIsValidated()
     {
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         model.addItems({item("R65535", DisplayFormat::Signed), item("X0", DisplayFormat::Bit)});
         QSignalSpy rejected(&model, &WatchTableModel::inputRejected);
         // R65535 as float would need R65536.

@@ -1,7 +1,7 @@
 // The watch table's view repaints only the visible cells that changed: a poll that changes the
 // value and time of some rows paints those cells, not their neighbours (Qt 6.4's QTableView
 // painted the next column and row of every changed range too).
-#include "core/watch/itemassembler.h"
+#include "itemfeed.h"
 #include "ui/watch/watchdelegate.h"
 #include "ui/watch/watchtablemodel.h"
 #include "ui/watch/watchtableview.h"
@@ -13,28 +13,6 @@
 #include <QTest>
 
 using namespace Fatek;
-
-// What a link does for a table (SessionLink): the items' elements as poll entries, and each batch
-// of element values joined into item values by the ItemAssembler.
-struct Feed
-{
-    Fatek::WatchTableModel &model;
-    Fatek::ItemAssembler assembler;
-
-    QList<Fatek::WatchEntry> entries(int intervalMs)
-    {
-        assembler.setItems(model.watchItems(intervalMs));
-        return assembler.pollEntries();
-    }
-    void apply(const QList<Fatek::WatchValue> &values)
-    {
-        model.applyValues(assembler.assemble(values));
-    }
-    void queue(const QList<Fatek::WatchValue> &values)
-    {
-        model.queueValues(assembler.assemble(values));
-    }
-};
 
 namespace {
 
@@ -72,7 +50,7 @@ private Q_SLOTS:
     void pollRepaintsOnlyChangedCells()
     {
         WatchTableModel model;
-        Feed feed{model, {}};
+        TestUtil::ItemFeed feed{model, {}};
         QList<WatchItemSpec> items;
         for (int n = 0; n < 200; ++n) {
             WatchItemSpec spec;

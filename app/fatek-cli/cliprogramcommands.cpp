@@ -3,7 +3,7 @@
 #include "clirunner.h"
 
 #include "clitext.h"
-#include "core/session/qtmessage.h"
+#include "core/qtbridge/qtmessage.h"
 
 #include <QFileInfo>
 #include <QJsonArray>

@@ -4,7 +4,7 @@
 #include "clitext.h"
 #include "core/commission/snapshotreader.h"
 #include "core/commission/valuesrestorer.h"
-#include "core/session/qtmessage.h"
+#include "core/qtbridge/qtmessage.h"
 
 #include <QJsonArray>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/session/qtmessage.h"
+#include "core/qtbridge/qtmessage.h"
 #include "mqttbrokersettings.h"
 
 #include <QByteArray>

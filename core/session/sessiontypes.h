@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/protocol/request.h"
-#include "qtmessage.h"
+#include "core/qtbridge/qtmessage.h"
 
 #include <QMetaType>
 #include <QString>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "qtmessage.h"
+#include "core/qtbridge/qtmessage.h"
 
 #include <QByteArray>
 #include <QDateTime>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/protocol/address.h"
-#include "qtmessage.h"
+#include "core/qtbridge/qtmessage.h"
 
 #include <QDateTime>
 #include <QMetaType>

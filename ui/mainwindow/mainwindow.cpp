@@ -72,17 +72,17 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     connect(m_tabs->tabBar(), &QTabBar::tabBarDoubleClicked, this, &MainWindow::renameWatchTable);
 
     m_connectionsPanel = new ConnectionsPanel(m_manager, this);
-    auto *connectionsDock = new QDockWidget(tr("Connections"), this);
-    connectionsDock->setObjectName(QStringLiteral("connectionsDock"));
-    connectionsDock->setWidget(m_connectionsPanel);
-    addDockWidget(Qt::BottomDockWidgetArea, connectionsDock);
+    m_connectionsDock = new QDockWidget(tr("Connections"), this);
+    m_connectionsDock->setObjectName(QStringLiteral("connectionsDock"));
+    m_connectionsDock->setWidget(m_connectionsPanel);
+    addDockWidget(Qt::BottomDockWidgetArea, m_connectionsDock);
 
     m_linkStatus = new LinkStatusLabel(this);
     statusBar()->addPermanentWidget(m_linkStatus);
 
     connect(m_document, &WatchListDocument::statusMessage, this, &MainWindow::showStatus);
     createActions();
-    m_tools = new ToolDocks(this, m_toolsMenu, m_viewMenu);
+    m_tools = new ToolDocks(this, m_connectionsDock, m_toolsMenu, m_viewMenu);
     connect(m_tools, &ToolDocks::statusMessage, this, &MainWindow::showStatus);
     for (ForcingPanel *forcing : findChildren<ForcingPanel *>()) // made by ToolDocks
         forcing->setSymbols(m_document->symbols());
@@ -112,8 +112,7 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     });
 
     resize(1280, 800);
-    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("connectionsDock")))
-        resizeDocks({dock}, {150}, Qt::Vertical);
+    resizeDocks({m_connectionsDock}, {150}, Qt::Vertical);
     QSettings settings;
     restoreGeometry(settings.value(geometryKey).toByteArray());
     restoreState(settings.value(stateKey).toByteArray());
@@ -198,8 +197,11 @@ void MainWindow::createActions()
     m_viewMenu->addAction(toolBar->toggleViewAction());
 
     m_toolsMenu = menuBar()->addMenu(tr("&Tools"));
-    m_trend = new TrendLogging(this, m_toolsMenu, m_viewMenu);
+    m_trend = new TrendLogging(
+        this, m_connectionsDock, [this] { return currentWatchTable(); }, m_toolsMenu, m_viewMenu);
     connect(m_trend, &TrendLogging::statusMessage, this, &MainWindow::showStatus);
+    // The demo shows its sine wave and its ramp in the trend from the start.
+    connect(this, &MainWindow::demoReady, m_trend, &TrendLogging::showDemo);
     m_operatorMode = new OperatorMode(m_readOnly, this);
     m_toolsMenu->addSeparator();
     m_toolsMenu->addAction(m_operatorMode->toggleAction());

@@ -115,6 +115,7 @@ private:
     bool m_quitConfirmed = false;
     ConnectionManager *m_manager;
     ConnectionsPanel *m_connectionsPanel;
+    QDockWidget *m_connectionsDock;
     QTabWidget *m_tabs;
     LinkStatusLabel *m_linkStatus;
     QMenu *m_recentMenu = nullptr;

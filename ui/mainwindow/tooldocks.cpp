@@ -19,7 +19,7 @@
 
 namespace Fatek {
 
-ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
+ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu, QMenu *viewMenu)
     : QObject(window)
     , m_window(window)
 {
@@ -61,11 +61,8 @@ ToolDocks::ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
     // user arranges after that.
     control->hide();
     forcing->hide();
-    if (auto *connectionsDock
-        = window->findChild<QDockWidget *>(QStringLiteral("connectionsDock"))) {
-        window->tabifyDockWidget(connectionsDock, console);
-        connectionsDock->raise();
-    }
+    window->tabifyDockWidget(tabWith, console);
+    tabWith->raise();
     toolsMenu->addSeparator();
     m_loopbackAction = toolsMenu->addAction(tr("&Loopback Test…"), this, [this] {
         openDialog(new LoopbackDialog(m_window), QStringLiteral("loopbackDialog"));

@@ -27,8 +27,9 @@ class ToolDocks : public QObject
     Q_OBJECT
 
 public:
-    // Adds the docks to `window` (the side ones hidden) and the entries to the menus.
-    ToolDocks(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu);
+    // Adds the docks to `window` (the side ones hidden; the console as a tab beside `tabWith`,
+    // the connections dock) and the entries to the menus.
+    ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu, QMenu *viewMenu);
 
     // Opens a tool: "control", "forcing", "console" (docks) or "loopback" (dialog, started at
     // once). Returns the tool's widget, or nullptr for another name.

@@ -1,8 +1,8 @@
 #include "watchlistdocument.h"
 
 #include "core/watch/symbolimport.h"
-#include "lastdirectory.h"
 #include "mainwindow.h"
+#include "ui/common/lastdirectory.h"
 #include "ui/common/symbolnames.h"
 #include "ui/common/uitext.h"
 #include "ui/watch/watchtablemodel.h"

@@ -2,10 +2,10 @@
 
 #include "tablelogger.h"
 #include "trendview.h"
+#include "ui/common/lastdirectory.h"
 #include "ui/common/uitext.h"
-#include "ui/mainwindow/lastdirectory.h"
-#include "ui/mainwindow/mainwindow.h"
 #include "ui/watch/watchtablemodel.h"
+#include "ui/watch/watchtablewidget.h"
 
 #include <QAction>
 #include <QDir>
@@ -13,6 +13,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
 #include <QStatusBar>
@@ -21,9 +22,12 @@
 
 namespace Fatek {
 
-TrendLogging::TrendLogging(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu)
+TrendLogging::TrendLogging(QMainWindow *window, QDockWidget *tabWith, CurrentTable currentTable,
+                           QMenu *toolsMenu, QMenu *viewMenu)
     : QObject(window)
     , m_window(window)
+    , m_tabWith(tabWith)
+    , m_currentTable(std::move(currentTable))
 {
     setObjectName(QStringLiteral("trendLogging"));
     m_trendView = new TrendView(window);
@@ -64,27 +68,27 @@ TrendLogging::TrendLogging(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu
                                      tr("Data logging stopped:\n%1").arg(error));
         }
     });
+}
 
-    // The demo shows its sine wave (+-1000) and its ramp (0..99999) in the trend from the start:
-    // two ranges far apart, each on its own axis.
-    connect(window, &MainWindow::demoReady, this, [this] {
-        WatchTableWidget *table = m_window->currentWatchTable();
-        if (!table)
-            return;
-        const WatchTableModel *model = table->model();
-        QList<int> rows;
-        for (const char *address : {"R1", "DR10"}) {
-            for (int r = 0; r < model->rowCount(); ++r) {
-                if (model->item(r).address.toString() == address)
-                    rows << r;
-            }
+void TrendLogging::showDemo()
+{
+    // Two ranges far apart, each on its own axis.
+    WatchTableWidget *table = m_currentTable();
+    if (!table)
+        return;
+    const WatchTableModel *model = table->model();
+    QList<int> rows;
+    for (const char *address : {"R1", "DR10"}) {
+        for (int r = 0; r < model->rowCount(); ++r) {
+            if (model->item(r).address.toString() == address)
+                rows << r;
         }
-        if (rows.isEmpty())
-            return;
-        m_trendView->addItems(table->model(), rows);
-        // One sine period fills the window: the wave is visible within seconds.
-        m_trendView->setWindowMs(10000);
-    });
+    }
+    if (rows.isEmpty())
+        return;
+    m_trendView->addItems(table->model(), rows);
+    // One sine period fills the window: the wave is visible within seconds.
+    m_trendView->setWindowMs(10000);
 }
 
 QWidget *TrendLogging::showTrend()
@@ -95,7 +99,7 @@ QWidget *TrendLogging::showTrend()
     // A chart needs room: on first showing, the trend becomes a tab of the bottom area (beside the
     // connections and the console) with the full width and a good height; afterwards the user's
     // arrangement stays.
-    auto *connectionsDock = m_window->findChild<QDockWidget *>(QStringLiteral("connectionsDock"));
+    QDockWidget *connectionsDock = m_tabWith.data();
     if (wasHidden && connectionsDock && !connectionsDock->isHidden() && !m_trendDock->isFloating()
         && m_window->dockWidgetArea(m_trendDock) == Qt::BottomDockWidgetArea
         && m_window->dockWidgetArea(connectionsDock) == Qt::BottomDockWidgetArea
@@ -118,7 +122,7 @@ void TrendLogging::addToTrend(WatchTableWidget *table, const QList<int> &rows)
 
 Status TrendLogging::startLogging(const QString &path)
 {
-    WatchTableWidget *table = m_window->currentWatchTable();
+    WatchTableWidget *table = m_currentTable();
     if (!table)
         return makeError(ErrorKind::InvalidRequest, tr("No watch table to log.").toStdString());
     if (const Status s = m_tableLogger->start(table->model(), path); !s)
@@ -142,7 +146,7 @@ void TrendLogging::stopLogging()
 
 void TrendLogging::startLoggingDialog()
 {
-    WatchTableWidget *table = m_window->currentWatchTable();
+    WatchTableWidget *table = m_currentTable();
     if (!table || table->model()->rowCount() == 0) {
         QMessageBox::information(m_window, tr("Data Logging"),
                                  tr("Add items to a watch table first: logging writes the rows of "

@@ -4,30 +4,37 @@
 
 #include <QList>
 #include <QObject>
+#include <QPointer>
+
+#include <functional>
 
 class QAction;
 class QDockWidget;
 class QLabel;
+class QMainWindow;
 class QMenu;
 class QWidget;
 
 namespace Fatek {
 
-class MainWindow;
 class TableLogger;
 class TrendView;
 class WatchTableWidget;
 
 // Trends and data logging in the main window: the trend dock (Tools > Trend), the Start/Stop Data
-// Logging actions and the status bar label of a running log. The demo's sine and ramp go into the
-// trend as soon as the demo is ready.
+// Logging actions and the status bar label of a running log.
 class TrendLogging : public QObject
 {
     Q_OBJECT
 
 public:
+    using CurrentTable = std::function<WatchTableWidget *()>;
+
     // Adds the (hidden) trend dock to `window` and the entries to `toolsMenu` and `viewMenu`.
-    TrendLogging(MainWindow *window, QMenu *toolsMenu, QMenu *viewMenu);
+    // The trend opens as a tab beside `tabWith` (the connections dock); logging and the demo
+    // act on the table `currentTable` returns.
+    TrendLogging(QMainWindow *window, QDockWidget *tabWith, CurrentTable currentTable,
+                 QMenu *toolsMenu, QMenu *viewMenu);
 
     TrendView *trendView() const { return m_trendView; }
     TableLogger *tableLogger() const { return m_tableLogger; }
@@ -38,6 +45,8 @@ public:
     // Logs the current watch table to `path` (CSV, appended); a log already running stops first.
     Status startLogging(const QString &path);
     void stopLogging();
+    // The demo's sine (R1, +-1000) and ramp (DR10, 0..99999) of the current table into the trend.
+    void showDemo();
 
 Q_SIGNALS:
     void statusMessage(const QString &text);
@@ -46,7 +55,9 @@ private:
     void startLoggingDialog();
     void updateLoggingStatus();
 
-    MainWindow *m_window;
+    QMainWindow *m_window;
+    QPointer<QDockWidget> m_tabWith;
+    CurrentTable m_currentTable;
     TrendView *m_trendView;
     QDockWidget *m_trendDock;
     TableLogger *m_tableLogger;
