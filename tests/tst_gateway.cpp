@@ -352,6 +352,21 @@ void TestGateway::allowlistedWriteReachesPlc()
     QVERIFY2(m_gatewayLog.contains(QStringLiteral("write station 1 R100 = \"77\" (id \"w1\"): "
                                                   "written")),
              qPrintable(m_gatewayLog.join(u'\n')));
+
+    // The raw words and the format, as the studio sends a typed value: written as they are, and
+    // the reply and the log say the value in the format's text.
+    QVERIFY(client->publish(topic("R150") + QStringLiteral("/set"),
+                            R"({"words":[0,16320],"format":"float","id":"w2"})", 1, false));
+    const QString floatReply = topic("R150") + QStringLiteral("/reply");
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(floatReply).has_value(), Wait);
+    QVERIFY2(inbox.reply(floatReply)->ok, inbox.last.value(floatReply).payload.constData());
+    QCOMPARE(inbox.reply(floatReply)->value, QStringLiteral("1.5"));
+    QCOMPARE(m_plc->value(addr("R150")), std::optional<std::uint32_t>(0));
+    QCOMPARE(m_plc->value(addr("R151")), std::optional<std::uint32_t>(0x3FC0));
+    QCOMPARE(simWrites(), 3);
+    QVERIFY2(m_gatewayLog.contains(QStringLiteral("write station 1 R150 = \"1.5\" (id \"w2\"): "
+                                                  "written")),
+             qPrintable(m_gatewayLog.join(u'\n')));
 }
 
 void TestGateway::refusedWritesReachNothing()
@@ -389,6 +404,12 @@ void TestGateway::refusedWritesReachNothing()
         {"R152", "twelve", false, MsgId::Text},
         {"R154", QByteArray(GatewayLink::MaxCommandBytes + 1, 'x'), false,
          MsgId::GatewayWriteTooLong},
+        // The raw value (as the studio sends it): one word per element, whole numbers.
+        {"R155", R"({"words":[1,2],"format":"signed","id":"count"})", false,
+         MsgId::GatewaySetWordCount},
+        {"R156", R"({"words":[-1],"id":"negative"})", false, MsgId::GatewaySetBadWords},
+        {"R157", R"({"words":[1.5],"id":"fraction"})", false, MsgId::GatewaySetBadWords},
+        {"R158", R"({"words":"7","id":"text"})", false, MsgId::GatewaySetBadWords},
     };
     for (const Case &c : cases) {
         QVERIFY(client->publish(topic(c.address) + QStringLiteral("/set"), c.payload, 1, c.retain));

@@ -427,6 +427,27 @@ void TestMqtt::setCommands()
     QCOMPARE(englishText(error), QStringLiteral("\"quad\" is not a value format."));
     QVERIFY(!GatewayPayload::decodeSet("  ", &error));
     QVERIFY(!GatewayPayload::decodeSet(R"({"id":"x"})", &error));
+
+    // The raw value, as the studio sends a typed one: words win over a value.
+    GatewayPayload::SetCommand raw;
+    raw.words = std::vector<std::uint32_t>{0, 0x3FC0, 4294967295u};
+    raw.format = DisplayFormat::Float32;
+    raw.id = QStringLiteral("r1");
+    const QByteArray encoded = GatewayPayload::encodeSet(raw);
+    QVERIFY2(!encoded.contains("\"value\""), encoded.constData());
+    command = GatewayPayload::decodeSet(encoded, &error);
+    QVERIFY(command);
+    QCOMPARE(command->words, raw.words);
+    QCOMPARE(command->format, DisplayFormat::Float32);
+    QCOMPARE(command->id, QStringLiteral("r1"));
+    command = GatewayPayload::decodeSet(R"({"words":[5],"value":"7"})", &error);
+    QVERIFY(command);
+    QCOMPARE(command->words, std::optional(std::vector<std::uint32_t>{5}));
+    for (const char *bad : {R"({"words":[]})", R"({"words":[-1]})", R"({"words":[4294967296]})",
+                            R"({"words":[0.5]})", R"({"words":["1"]})", R"({"words":7})"}) {
+        QVERIFY2(!GatewayPayload::decodeSet(bad, &error), bad);
+        QCOMPARE(error.id, MsgId::GatewaySetBadWords);
+    }
 }
 
 void TestMqtt::replyAndStatusRoundTrip()
