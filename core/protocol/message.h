@@ -13,7 +13,7 @@ namespace Fatek {
 
 // Every sentence core shows to a person, by id. The English templates (with %1..%n) are in
 // messagelist.h, marked for lupdate in the context "Fatek::Message"; english() fills them in for
-// logs, the CLI and tests, the UI translates them (ui/common/messagetext.h).
+// logs, the CLI and tests, the UI translates them (translated(), ui/common/uitext.h).
 enum class MsgId : std::uint16_t {
 #define FATEK_MSG(id, argc, text) id,
 #ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
