@@ -39,7 +39,6 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
             Item item;
             item.values = ItemValues(spec);
             item.topic = GatewayTopics::item(prefix, config.name, spec.station, spec.address);
-            item.words.assign(static_cast<std::size_t>(item.values.elementCount()), 0);
             watched.append({m_items.size(), spec, table.intervalMs});
             m_itemOfTopic.insert(item.topic, m_items.size());
             m_items.push_back(std::move(item));
@@ -152,8 +151,10 @@ void GatewayLink::onValues(const QList<WatchValue> &values)
 {
     if (m_stopping)
         return;
+    // An item whose elements were never all read has no words: nothing invented goes out.
     for (const WatchItemValue &v : m_assembler.assemble(values))
-        update(static_cast<std::size_t>(v.key), v.words, v.quality, v.error, v.time);
+        update(static_cast<std::size_t>(v.key), v.hasValue ? v.words : std::vector<std::uint32_t>{},
+               v.quality, v.error, v.time);
 }
 
 void GatewayLink::update(std::size_t index, const std::vector<std::uint32_t> &words,

@@ -71,7 +71,7 @@ private:
     {
         ItemValues values;
         QString topic;
-        std::vector<std::uint32_t> words;
+        std::vector<std::uint32_t> words; // empty until every element was read once
         ValueQuality quality = ValueQuality::Stale;
         Message error;
         QDateTime time;

@@ -257,6 +257,11 @@ WatchItemValue GatewayWatch::valueOf(const Watched &watched) const
     } else if (value.hasValue) {
         value.quality = published->quality;
         value.error = published->error;
+    } else if (published != m_published.cend() && published->words.empty()) {
+        // The gateway has the item but never read it (its PLC link was never up).
+        value.quality
+            = published->quality == ValueQuality::Good ? ValueQuality::Stale : published->quality;
+        value.error = published->error;
     } else {
         // Nothing there, or an item over fewer elements (R100 published as one word, watched
         // as a float): the first element it lacks is not published.

@@ -192,8 +192,10 @@ QByteArray GatewayPayload::encodeItem(const ItemValues &item,
     // the gateway encodes one per item per change, and building a QJsonObject took most of the
     // gateway's time per message (docs/performance.md). tst_mqtt checks the bytes against Qt's.
     const WatchItemSpec &spec = item.item();
+    // No words: never read (a dead link from the start). No value is invented for it.
+    const bool read = !words.empty();
     const std::uint64_t raw = item.join(words);
-    const QString text = item.text(raw);
+    const QString text = read ? item.text(raw) : QString();
     QByteArray out;
     out.reserve(320);
     out += "{\"address\":";
@@ -213,11 +215,14 @@ QByteArray GatewayPayload::encodeItem(const ItemValues &item,
     out += ",\"swapWords\":";
     out += spec.swapWords ? "true" : "false";
     out += ",\"text\":";
-    appendJsonString(out, text);
+    if (read)
+        appendJsonString(out, text);
+    else
+        out += "null";
     out += ",\"time\":";
     appendJsonString(out, timeText(time));
     out += ",\"value\":";
-    appendJsonValue(out, numericValue(item, raw, text));
+    appendJsonValue(out, read ? numericValue(item, raw, text) : QJsonValue(QJsonValue::Null));
     out += ",\"words\":[";
     for (std::size_t i = 0; i < words.size(); ++i) {
         if (i > 0)

@@ -42,6 +42,8 @@ struct ItemValue
 };
 
 // Builds the payload of `item` from its elements' words (join, text and value through ItemValues).
+// No words: the item was never read; "text" and "value" are null and "words" is empty (a consumer's
+// retained last value is never replaced by an invented 0).
 QByteArray encodeItem(const ItemValues &item, const std::vector<std::uint32_t> &words,
                       ValueQuality quality, const QDateTime &time, const Message &error);
 // nullopt for anything that is not an item payload (a reader's garbage, another program's topic).

@@ -104,6 +104,7 @@ private Q_SLOTS:
     void brokerRestartRepublishes();
     void publisherBoundsWhileBrokerAway();
     void plcRestartGoesStaleThenGood();
+    void neverReadItemsHaveNoValue();
     void stalledBrokerKeepsNewestPerItem();
     void delayHistogramPercentiles();
     void logTextEscapesControls();
@@ -131,10 +132,12 @@ private:
     std::unique_ptr<GatewayLink> m_link;
     QStringList m_simLog;
     QStringList m_gatewayLog;
+    quint16 m_plcPort = 0; // the PLC's port while the simulator is closed (else its own)
 };
 
 void TestGateway::init()
 {
+    m_plcPort = 0;
     m_dir = std::make_unique<QTemporaryDir>();
     QVERIFY(m_dir->isValid());
     QFile list(m_dir->filePath(QStringLiteral("line1.json")));
@@ -178,7 +181,7 @@ QByteArray TestGateway::configJson(bool readOnly, int keepAliveSec) const
     json.insert(QStringLiteral("readOnly"), readOnly);
     QJsonObject connection = json.value(QStringLiteral("connections")).toArray().at(0).toObject();
     QJsonObject link = connection.value(QStringLiteral("link")).toObject();
-    link.insert(QStringLiteral("port"), m_server->tcpPort());
+    link.insert(QStringLiteral("port"), m_plcPort != 0 ? m_plcPort : m_server->tcpPort());
     connection.insert(QStringLiteral("link"), link);
     json.insert(QStringLiteral("connections"), QJsonArray{connection});
     return QJsonDocument(json).toJson();
@@ -533,6 +536,39 @@ void TestGateway::publisherBoundsWhileBrokerAway()
     m_broker->kill();
     QVERIFY2(m_broker->start(&error), qPrintable(error));
     QTRY_COMPARE_WITH_TIMEOUT(publisher.counters().published, quint64(12), Wait);
+}
+
+void TestGateway::neverReadItemsHaveNoValue()
+{
+    // The PLC is not there when the gateway starts: its items go out stale without a value, so
+    // that a consumer's retained last value is not replaced by an invented 0.
+    const quint16 port = m_server->tcpPort();
+    m_server->close();
+    m_plcPort = port;
+    QVERIFY(startGateway(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Down), Wait);
+    for (const char *address : {"R100", "R200", "Y0"}) {
+        QTRY_VERIFY2_WITH_TIMEOUT(inbox.item(topic(address)).has_value(), address, Wait);
+        const GatewayPayload::ItemValue item = *inbox.item(topic(address));
+        QCOMPARE(item.quality, ValueQuality::Stale);
+        QVERIFY2(item.words.empty(), address);
+        QVERIFY2(!item.error.empty(), address);
+        const QJsonObject json
+            = QJsonDocument::fromJson(inbox.last.value(topic(address)).payload).object();
+        QVERIFY2(json.value(QStringLiteral("value")).isNull(), address);
+        QVERIFY2(json.value(QStringLiteral("text")).isNull(), address);
+        QCOMPARE(json.value(QStringLiteral("words")).toArray().size(), 0);
+    }
+
+    // The PLC comes: its real values, good.
+    QString error;
+    QVERIFY2(m_server->listenTcp(port, &error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R100"))->quality, ValueQuality::Good, Wait);
+    QCOMPARE(inbox.item(topic("R100"))->text, QStringLiteral("1234"));
+    QCOMPARE(inbox.item(topic("R100"))->words, std::vector<std::uint32_t>{1234});
 }
 
 void TestGateway::plcRestartGoesStaleThenGood()

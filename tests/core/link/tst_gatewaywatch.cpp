@@ -220,6 +220,14 @@ void TestGatewayWatch::coveredElementsAndUnpublished()
                     Message::text("PLC error 2"));
     QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), std::optional(ValueQuality::Error), timeoutMs);
     QCOMPARE(f.values.error(3), QStringLiteral("PLC error 2"));
+
+    // An item the gateway never read (no words): stale with the gateway's reason, no value, and
+    // not "not published".
+    f.peer->setItem(item("R200", DisplayFormat::Signed), {}, ValueQuality::Stale,
+                    Message::text("link down"));
+    QTRY_COMPARE_WITH_TIMEOUT(f.values.quality(3), std::optional(ValueQuality::Stale), timeoutMs);
+    QVERIFY(!f.values.last.value(3).hasValue);
+    QCOMPARE(f.values.error(3), QStringLiteral("link down"));
 }
 
 void TestGatewayWatch::staleWhileGatewayOfflineOrDown()

@@ -302,6 +302,20 @@ void TestMqtt::itemPayloadSignedBitAndNan()
                .object();
     QVERIFY(json.value(QStringLiteral("value")).isNull());
     QCOMPARE(json.value(QStringLiteral("text")).toString(), QStringLiteral("NaN"));
+
+    // Never read: no words, and no value or text invented for them; Qt writes the same bytes.
+    const QByteArray never
+        = GatewayPayload::encodeItem(ItemValues(spec), {}, ValueQuality::Stale, now, why);
+    const QJsonDocument document = QJsonDocument::fromJson(never);
+    QCOMPARE(document.toJson(QJsonDocument::Compact), never);
+    json = document.object();
+    QVERIFY(json.value(QStringLiteral("value")).isNull());
+    QVERIFY(json.value(QStringLiteral("text")).isNull());
+    QCOMPARE(json.value(QStringLiteral("words")).toArray().size(), 0);
+    const auto decodedNever = GatewayPayload::decodeItem(never);
+    QVERIFY(decodedNever);
+    QVERIFY(decodedNever->words.empty());
+    QCOMPARE(decodedNever->quality, ValueQuality::Stale);
 }
 
 void TestMqtt::itemPayloadRejectsGarbage()
