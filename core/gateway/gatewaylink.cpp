@@ -32,6 +32,9 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
     registerSessionMetaTypes();
     // Core refuses writes too, should a command ever slip past the checks below.
     m_session->setReadOnly(readOnly);
+    // Nothing reads a gateway link's traffic: its log would hold 10,000 frames per link for
+    // nothing (about 7 MB for 200 items).
+    m_session->trafficLog()->setCapacity(0);
     // The assembler's keys are the indexes into m_items.
     QList<WatchedItem> watched;
     for (const WatchTableSpec &table : m_config.tables) {

@@ -10,7 +10,7 @@ namespace Fatek {
 
 TrafficLog::TrafficLog(int capacity, QObject *parent)
     : QObject(parent)
-    , m_capacity(std::max(1, capacity))
+    , m_capacity(std::max(0, capacity))
 {}
 
 int TrafficLog::capacity() const
@@ -22,7 +22,7 @@ int TrafficLog::capacity() const
 void TrafficLog::setCapacity(int capacity)
 {
     const std::lock_guard locker(m_mutex);
-    m_capacity = std::max(1, capacity);
+    m_capacity = std::max(0, capacity);
     trimLocked();
 }
 
@@ -62,6 +62,8 @@ quint64 TrafficLog::append(TrafficEntry::Direction direction, const QByteArray &
     {
         const std::lock_guard locker(m_mutex);
         sequence = ++m_lastSequence;
+        if (m_capacity == 0)
+            return sequence; // off: nothing reads this log, nothing is kept or announced
         Message note = error;
         QByteArray kept = bytes;
         if (kept.size() > maxEntryBytes) {

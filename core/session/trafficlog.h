@@ -40,6 +40,8 @@ public:
     explicit TrafficLog(int capacity = 10000, QObject *parent = nullptr);
 
     int capacity() const;
+    // 0 turns the log off: entries are counted (sequence numbers) but not kept (a program that
+    // never reads its session's traffic, such as the gateway, keeps no memory for it).
     void setCapacity(int capacity);
     // Besides the entry count, the frame bytes held are bounded too: a peer flooding the link
     // with large chunks cannot grow the log beyond this (oldest entries go first), and one entry

@@ -245,6 +245,10 @@ void TestGateway::valuesArriveRetained()
                                  && early.item(topic("Y0")) && early.item(topic("R300"))
                                  && early.item(topic("DR10")),
                              Wait);
+    // The link's frames were counted, none kept: nothing reads a gateway's traffic log.
+    QVERIFY(m_link->session()->trafficLog()->lastSequence() > 0);
+    QCOMPARE(m_link->session()->trafficLog()->size(), 0);
+    QCOMPARE(m_link->session()->trafficLog()->bytesHeld(), 0);
 
     // A subscriber that comes later gets every item from the broker's retained store.
     Inbox late;
