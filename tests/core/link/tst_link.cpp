@@ -129,12 +129,18 @@ void TestLink::itemsInValuesOutWritesOnTheWire()
     QVERIFY(!latest.values.value(missing).hasValue);
     QTRY_VERIFY_WITH_TIMEOUT(latest.good(flow, std::bit_cast<std::uint32_t>(-3.25f)), timeoutMs);
 
-    // The PLC goes away: the link says so.
+    // The PLC goes away: the link says so, in its state and in its signal (which arrives queued
+    // from the session's thread, after the state can already be read).
+    const auto reported = [&states] {
+        return states.isEmpty() ? LinkState::Closed : states.last().at(0).value<LinkState>();
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(reported(), LinkState::Connected, timeoutMs);
     server.close();
     QTRY_VERIFY_WITH_TIMEOUT(link.linkState() != LinkState::Connected, timeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(reported() != LinkState::Connected, timeoutMs);
     link.close(CloseMode::Discard);
     QTRY_COMPARE_WITH_TIMEOUT(link.linkState(), LinkState::Closed, timeoutMs);
-    QVERIFY(states.count() >= 3);
+    QTRY_COMPARE_WITH_TIMEOUT(reported(), LinkState::Closed, timeoutMs);
 }
 
 QTEST_GUILESS_MAIN(TestLink)
