@@ -330,9 +330,10 @@ std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteA
         const QJsonValue value = object->value(QStringLiteral("value"));
         if (object->contains(QStringLiteral("words"))) {
             const QJsonValue words = object->value(QStringLiteral("words"));
+            const QJsonArray array = words.toArray();
             std::vector<std::uint32_t> list;
-            bool valid = words.isArray() && !words.toArray().isEmpty();
-            for (const QJsonValue &word : words.toArray()) {
+            bool valid = words.isArray() && !array.isEmpty();
+            for (const auto &word : array) {
                 const double number = word.toDouble(-1);
                 valid = valid && word.isDouble() && number >= 0 && number <= 4294967295.0
                         && number == static_cast<double>(static_cast<std::uint64_t>(number));
