@@ -646,6 +646,22 @@
             <translation>not executed</translation>
         </message>
         <message>
+            <source>Station %1 does not answer (%2 requests in a row); polled again at %3.</source>
+            <translation>Station %1 does not answer (%2 requests in a row); polled again at %3.</translation>
+        </message>
+        <message>
+            <source>Late: no new value for %1 s (polled every %2 ms); the line is busy or slow.</source>
+            <translation>Late: no new value for %1 s (polled every %2 ms); the line is busy or slow.</translation>
+        </message>
+        <message>
+            <source>station %1 demoted after %2 requests without an answer; next try at %3</source>
+            <translation>station %1 demoted after %2 requests without an answer; next try at %3</translation>
+        </message>
+        <message>
+            <source>station %1 answers again; polled as usual</source>
+            <translation>station %1 answers again; polled as usual</translation>
+        </message>
+        <message>
             <source>Empty address: type an element such as R12 or X0.</source>
             <translation>Empty address: type an element such as R12 or X0.</translation>
         </message>
@@ -712,6 +728,14 @@
         <message>
             <source>Retries %1 is out of range (0 to 10).</source>
             <translation>Retries %1 is out of range (0 to 10).</translation>
+        </message>
+        <message>
+            <source>Demote after %1 unanswered requests is out of range (0 to 100; 0 never demotes).</source>
+            <translation>Demote after %1 unanswered requests is out of range (0 to 100; 0 never demotes).</translation>
+        </message>
+        <message>
+            <source>A demotion of %1 ms is out of range (1000 to 600000 ms).</source>
+            <translation>A demotion of %1 ms is out of range (1000 to 600000 ms).</translation>
         </message>
         <message>
             <source>Inter-frame silence %1 ms is out of range (0 to 1000 ms).</source>
@@ -3572,6 +3596,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>good</source>
             <translation>good</translation>
+        </message>
+        <message>
+            <source>late</source>
+            <translation>late</translation>
         </message>
         <message>
             <source>stale</source>

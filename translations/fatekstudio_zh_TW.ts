@@ -646,6 +646,22 @@
             <translation>未執行</translation>
         </message>
         <message>
+            <source>Station %1 does not answer (%2 requests in a row); polled again at %3.</source>
+            <translation>站號 %1 沒有回應（連續 %2 個請求）；將於 %3 再次輪詢。</translation>
+        </message>
+        <message>
+            <source>Late: no new value for %1 s (polled every %2 ms); the line is busy or slow.</source>
+            <translation>延遲：已 %1 秒沒有新值（每 %2 毫秒輪詢一次）；線路忙碌或速度過慢。</translation>
+        </message>
+        <message>
+            <source>station %1 demoted after %2 requests without an answer; next try at %3</source>
+            <translation>站號 %1 連續 %2 個請求無回應，已降級；下次嘗試於 %3</translation>
+        </message>
+        <message>
+            <source>station %1 answers again; polled as usual</source>
+            <translation>站號 %1 已恢復回應；恢復正常輪詢</translation>
+        </message>
+        <message>
             <source>Empty address: type an element such as R12 or X0.</source>
             <translation>位址空白：請輸入元件，例如 R12 或 X0。</translation>
         </message>
@@ -712,6 +728,14 @@
         <message>
             <source>Retries %1 is out of range (0 to 10).</source>
             <translation>重試次數 %1 超出範圍（0 到 10）。</translation>
+        </message>
+        <message>
+            <source>Demote after %1 unanswered requests is out of range (0 to 100; 0 never demotes).</source>
+            <translation>降級前的無回應請求數 %1 超出範圍（0 到 100；0 表示永不降級）。</translation>
+        </message>
+        <message>
+            <source>A demotion of %1 ms is out of range (1000 to 600000 ms).</source>
+            <translation>降級時間 %1 毫秒超出範圍（1000 到 600000 毫秒）。</translation>
         </message>
         <message>
             <source>Inter-frame silence %1 ms is out of range (0 to 1000 ms).</source>
@@ -3561,6 +3585,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>good</source>
             <translation>良好</translation>
+        </message>
+        <message>
+            <source>late</source>
+            <translation>延遲</translation>
         </message>
         <message>
             <source>stale</source>

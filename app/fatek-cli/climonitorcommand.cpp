@@ -67,9 +67,7 @@ void CliRunner::onValues(const QList<WatchValue> &values)
             continue;
         DataLogger::Cell &cell = cells[item];
         cell.raw = v.raw;
-        cell.quality = v.quality == ValueQuality::Good    ? DataLogger::Quality::Good
-                       : v.quality == ValueQuality::Error ? DataLogger::Quality::Error
-                                                          : DataLogger::Quality::Stale;
+        cell.quality = DataLogger::qualityOf(v.quality);
         cell.reason = v.quality == ValueQuality::Good ? QString() : englishText(v.error);
     }
     const QDateTime now = QDateTime::currentDateTime();

@@ -169,6 +169,7 @@ QString GatewayPayload::qualityName(ValueQuality quality)
 {
     switch (quality) {
     case ValueQuality::Good: return QStringLiteral("good");
+    case ValueQuality::Late: return QStringLiteral("late");
     case ValueQuality::Stale: return QStringLiteral("stale");
     case ValueQuality::Error: return QStringLiteral("error");
     }
@@ -177,7 +178,8 @@ QString GatewayPayload::qualityName(ValueQuality quality)
 
 std::optional<ValueQuality> GatewayPayload::qualityFromName(const QString &name)
 {
-    for (ValueQuality quality : {ValueQuality::Good, ValueQuality::Stale, ValueQuality::Error}) {
+    for (ValueQuality quality :
+         {ValueQuality::Good, ValueQuality::Late, ValueQuality::Stale, ValueQuality::Error}) {
         if (qualityName(quality) == name)
             return quality;
     }

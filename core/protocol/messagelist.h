@@ -157,6 +157,23 @@ FATEK_MSG(SessionFewerValues, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "The answer carries fewer values than asked."))
 FATEK_MSG(SessionCouldNotWrite, 1, QT_TRANSLATE_NOOP("Fatek::Message", "Could not write to %1."))
 FATEK_MSG(SessionNotExecuted, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not executed"))
+// Polling a silent station (issue 31): %1 the station, %2 requests in a row without an answer, %3
+// the time (HH:mm:ss) of the next try.
+FATEK_MSG(SessionStationDemoted, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Station %1 does not answer (%2 requests in a row); polled again at "
+                            "%3."))
+// %1 seconds since the value was read, %2 the interval in ms.
+FATEK_MSG(SessionValueLate, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Late: no new value for %1 s (polled every %2 ms); the line is busy "
+                            "or slow."))
+FATEK_MSG(LogStationDemoted, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "station %1 demoted after %2 requests without an answer; next try "
+                            "at %3"))
+FATEK_MSG(LogStationAnswersAgain, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "station %1 answers again; polled as usual"))
 
 // Addresses typed by the user.
 FATEK_MSG(AddressEmpty, 0,
@@ -187,6 +204,13 @@ FATEK_MSG(AddressRunPast, 4,
           QT_TRANSLATE_NOOP("Fatek::Message", "%1 elements from %2 run past %3, the last %4."))
 
 // Link settings checks.
+FATEK_MSG(SettingsDemoteAfter, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Demote after %1 unanswered requests is out of range (0 to 100; 0 "
+                            "never demotes)."))
+FATEK_MSG(SettingsDemotion, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "A demotion of %1 ms is out of range (1000 to 600000 ms)."))
 FATEK_MSG(SettingsNoHost, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "Enter the PLC's IP address or host name."))
 FATEK_MSG(SettingsPortZero, 0,

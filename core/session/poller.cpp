@@ -4,9 +4,25 @@
 
 namespace Fatek {
 
-Poller::Poller(SubmitFunction submit, QObject *parent)
+namespace {
+
+// Nobody answered at all. A refusal, a damaged frame or a wrong answer means someone is there.
+bool noAnswer(const SessionResult &result)
+{
+    return !result.ok() && result.errorKind() == ErrorKind::Timeout;
+}
+
+QString secondsText(qint64 ms)
+{
+    return QString::number(static_cast<double>(ms) / 1000.0, 'f', 1);
+}
+
+} // namespace
+
+Poller::Poller(SubmitFunction submit, Policy policy, QObject *parent)
     : QObject(parent)
     , m_submit(std::move(submit))
+    , m_policy(policy)
 {
     m_clock.start();
     m_timer.setSingleShot(true);
@@ -17,7 +33,7 @@ Poller::Poller(SubmitFunction submit, QObject *parent)
 void Poller::setProtocol(Protocol protocol)
 {
     m_planner.emplace(protocol);
-    for (auto &[interval, group] : m_groups)
+    for (auto &[key, group] : m_groups)
         replan(group);
 }
 
@@ -26,19 +42,34 @@ void Poller::setWatchList(const QList<WatchEntry> &entries)
     // Results of cycles still on the wire belong to the old list: the generation tells them apart.
     m_groups.clear();
     QHash<std::uint64_t, LastGood> lastGood;
+    std::set<quint8> stations;
     for (const WatchEntry &entry : entries) {
         if (m_lastGood.contains(entry.id))
             lastGood.insert(entry.id, m_lastGood.value(entry.id));
         const int interval = std::max(10, entry.intervalMs);
-        Group &group = m_groups[interval];
+        Group &group = m_groups[{interval, entry.station}];
         group.intervalMs = interval;
+        group.station = entry.station;
         group.items.push_back({entry.id, entry.station, entry.address});
+        stations.insert(entry.station);
     }
     m_lastGood = lastGood; // forget items that left the list
+    // A station that left the list starts afresh if it comes back.
+    for (auto it = m_health.begin(); it != m_health.end();) {
+        if (stations.contains(it->first)) {
+            it->second.trialOut = false; // a trial of the old list is answered to nobody
+            ++it;
+            continue;
+        }
+        if (it->second.demoted)
+            Q_EMIT stationHealthChanged(it->first, false, {}, 0);
+        it = m_health.erase(it);
+    }
     const qint64 now = m_clock.elapsed();
-    for (auto &[interval, group] : m_groups) {
+    for (auto &[key, group] : m_groups) {
         group.generation = ++m_generation;
         group.deadline = now;
+        group.lastDelivery = now;
         replan(group);
     }
     reschedule();
@@ -48,9 +79,12 @@ void Poller::setLinkUp(bool up)
 {
     m_linkUp = up;
     if (up) {
+        // Lateness counts from here: a link that was down has said so already.
         const qint64 now = m_clock.elapsed();
-        for (auto &[interval, group] : m_groups)
+        for (auto &[key, group] : m_groups) {
             group.deadline = std::max(group.deadline, now);
+            group.lastDelivery = std::max(group.lastDelivery, now);
+        }
     }
     reschedule();
 }
@@ -70,9 +104,14 @@ void Poller::reschedule()
     if (!m_linkUp)
         return;
     std::optional<qint64> next;
-    for (const auto &[interval, group] : m_groups) {
+    const auto consider = [&next](qint64 at) {
+        next = next ? std::min(*next, at) : at;
+    };
+    for (const auto &[key, group] : m_groups) {
         if (!group.inFlight)
-            next = next ? std::min(*next, group.deadline) : group.deadline;
+            consider(group.deadline);
+        if (!group.lateReported && !group.goodLastTime.empty())
+            consider(group.lastDelivery + 2 * group.intervalMs);
     }
     if (!next)
         return;
@@ -84,66 +123,201 @@ void Poller::onTimer()
     if (!m_linkUp)
         return;
     const qint64 now = m_clock.elapsed();
-    for (auto &[interval, group] : m_groups) {
+    for (auto &[key, group] : m_groups) {
         if (!group.inFlight && group.deadline <= now)
             startCycle(group);
+    }
+    for (auto &[key, group] : m_groups) {
+        if (!group.lateReported && now >= group.lastDelivery + 2 * group.intervalMs)
+            reportLate(group, now);
     }
     reschedule();
 }
 
+std::set<StationAddress> Poller::elementsOf(const PlanStep &step)
+{
+    std::set<StationAddress> elements;
+    if (step.request.command == Command::MixedRead) {
+        for (const Address &address : step.request.addresses)
+            elements.insert({step.request.station, address});
+    } else {
+        elements.insert({step.request.station, step.request.start});
+    }
+    return elements;
+}
+
+bool Poller::isRefusal(const PlanStep &step) const
+{
+    // Isolated elements are planned alone: a step of one refused element.
+    if (m_refusals.empty() || step.itemSlots.empty())
+        return false;
+    const std::set<StationAddress> elements = elementsOf(step);
+    return elements.size() == 1 && m_refusals.contains(*elements.begin());
+}
+
 void Poller::startCycle(Group &group)
 {
-    group.inFlight = true;
-    group.cycleStart = m_clock.elapsed();
-    group.cycleValues.clear();
-
-    // Several stations on one link: alternate between them so none waits for the others' batches.
-    std::map<std::uint8_t, std::vector<const PlanStep *>> byStation;
-    for (const PlanStep &step : group.plan.steps)
-        byStation[step.request.station].push_back(&step);
-    std::vector<const PlanStep *> order;
-    for (std::size_t round = 0; order.size() < group.plan.steps.size(); ++round) {
-        for (auto &[station, steps] : byStation) {
-            if (round < steps.size())
-                order.push_back(steps[round]);
+    const qint64 now = m_clock.elapsed();
+    StationHealth &health = m_health[group.station];
+    group.trial = false;
+    if (health.demoted) {
+        if (now < health.until || health.trialOut) {
+            // Resting (its items already say so), or another group is trying the station.
+            group.deadline = health.trialOut ? now + group.intervalMs : health.until;
+            return;
         }
+        health.trialOut = true;
+        group.trial = true;
     }
-    group.outstanding = static_cast<int>(order.size());
-    if (order.empty()) {
+    group.inFlight = true;
+    group.cycleStart = now;
+    group.cycleValues.clear();
+    group.pending.clear();
+    group.outstanding = 0;
+    const QDateTime wallNow = QDateTime::currentDateTimeUtc();
+    for (const PlanStep &step : group.plan.steps) {
+        if (isRefusal(step)) {
+            const Refusal &refusal = m_refusals.at(*elementsOf(step).begin());
+            if (now < refusal.recheckAt) {
+                // Known to be refused: shown as such without asking the PLC every cycle.
+                for (const PlanSlot &slot : step.itemSlots)
+                    group.cycleValues.insert(slot.itemId, {slot.itemId, 0, wallNow,
+                                                           ValueQuality::Error, refusal.reason});
+                continue;
+            }
+        }
+        group.pending.push_back(step);
+    }
+    submitNext(group);
+}
+
+void Poller::submitNext(Group &group)
+{
+    // One request of the group in the queue at a time: the stations of a line and one-shot
+    // requests take turns with it. A request refused at once (link down) finishes inside
+    // m_submit; the loop then goes on instead of recursing.
+    group.submitting = true;
+    while (group.outstanding == 0 && !group.pending.empty()) {
+        const PlanStep step = std::move(group.pending.front());
+        group.pending.pop_front();
+        ++group.outstanding;
+        RequestOptions options;
+        if (m_health[group.station].unanswered > 0)
+            options.retries = 0; // a station that left a request unanswered gets one attempt
+        options.expectRefusal = isRefusal(step);
+        const GroupKey key{group.intervalMs, group.station};
+        const quint64 generation = group.generation;
+        m_submit(step.request, options, [this, key, generation, step](const SessionResult &result) {
+            onStepDone(key, generation, step, result);
+        });
+    }
+    group.submitting = false;
+    if (group.outstanding == 0 && group.pending.empty() && group.inFlight)
         finishCycle(group);
+}
+
+void Poller::noteAnswer(quint8 station, const SessionResult &result)
+{
+    StationHealth &health = m_health[station];
+    if (!noAnswer(result)) {
+        if (!result.ok()
+            && (result.errorKind() == ErrorKind::LinkError
+                || result.errorKind() == ErrorKind::Cancelled))
+            return; // says nothing about the station
+        const bool wasDemoted = health.demoted;
+        health = StationHealth{};
+        if (wasDemoted) {
+            Q_EMIT stationHealthChanged(station, false, {}, 0);
+            const qint64 now = m_clock.elapsed();
+            for (auto &[key, group] : m_groups) {
+                if (group.station == station && !group.inFlight)
+                    group.deadline = std::min(group.deadline, now);
+            }
+        }
         return;
     }
-    // Copies: a step may be split while the plan is replaced.
-    const std::vector<PlanStep> steps = [&order] {
-        std::vector<PlanStep> copy;
-        copy.reserve(order.size());
-        for (const PlanStep *step : order)
-            copy.push_back(*step);
-        return copy;
-    }();
-    for (const PlanStep &step : steps)
-        submitStep(group, step);
+    ++health.unanswered;
+    const bool trialFailed = health.demoted && health.trialOut;
+    if (m_policy.demoteAfter <= 0
+        || (!trialFailed && (health.demoted || health.unanswered < m_policy.demoteAfter)))
+        return;
+    const qint64 now = m_clock.elapsed();
+    health.demoted = true;
+    health.trialOut = false;
+    health.until = now + m_policy.demotionMs;
+    Q_EMIT stationHealthChanged(station, true,
+                                QDateTime::currentDateTimeUtc().addMSecs(m_policy.demotionMs),
+                                health.unanswered);
+    const QDateTime wallNow = QDateTime::currentDateTimeUtc();
+    for (auto &[key, group] : m_groups) {
+        if (group.station != station)
+            continue;
+        if (group.inFlight) {
+            // The rest of the cycle is not sent: the station would only hold up the line.
+            markDemoted(group, {group.pending.begin(), group.pending.end()});
+            group.pending.clear();
+            continue;
+        }
+        // Resting groups say so at once, with the next try.
+        const Message reason = demotedReason(station);
+        QList<WatchValue> batch;
+        for (const WatchItem &item : group.items) {
+            const LastGood last = m_lastGood.value(item.id);
+            batch.append({item.id, last.value, last.timestamp.isValid() ? last.timestamp : wallNow,
+                          ValueQuality::Stale, reason});
+        }
+        group.goodLastTime.clear();
+        group.lastDelivery = now;
+        group.deadline = health.until;
+        if (!batch.isEmpty())
+            Q_EMIT values(batch);
+    }
 }
 
-void Poller::submitStep(Group &group, const PlanStep &step)
+Message Poller::demotedReason(quint8 station) const
 {
-    const int interval = group.intervalMs;
-    const quint64 generation = group.generation;
-    m_submit(step.request, [this, interval, generation, step](const SessionResult &result) {
-        onStepDone(interval, generation, step, result);
-    });
+    const auto it = m_health.find(station);
+    const StationHealth health = it != m_health.end() ? it->second : StationHealth{};
+    const QDateTime next = QDateTime::currentDateTime().addMSecs(
+        std::max<qint64>(0, health.until - m_clock.elapsed()));
+    return msg<MsgId::SessionStationDemoted>(
+        station, health.unanswered, next.toString(QStringLiteral("HH:mm:ss")).toStdString());
 }
 
-void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step,
+void Poller::markDemoted(Group &group, const std::vector<PlanStep> &steps)
+{
+    const Message reason = demotedReason(group.station);
+    for (const PlanStep &step : steps) {
+        for (const PlanSlot &slot : step.itemSlots) {
+            const LastGood last = m_lastGood.value(slot.itemId);
+            group.cycleValues.insert(
+                slot.itemId,
+                {slot.itemId, last.value,
+                 last.timestamp.isValid() ? last.timestamp : QDateTime::currentDateTimeUtc(),
+                 ValueQuality::Stale, reason});
+        }
+    }
+}
+
+void Poller::onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
                         const SessionResult &result)
 {
-    auto it = m_groups.find(intervalMs);
+    noteAnswer(step.request.station, result); // whether or not the list changed meanwhile
+    auto it = m_groups.find(key);
     if (it == m_groups.end() || it->second.generation != generation)
         return; // the watch list changed meanwhile
     Group &group = it->second;
     const QDateTime now = QDateTime::currentDateTimeUtc();
+    const bool recheck = isRefusal(step);
 
     if (result.ok()) {
+        if (recheck) {
+            // The PLC takes the element now (another PLC, a changed configuration).
+            const StationAddress element = *elementsOf(step).begin();
+            m_refusals.erase(element);
+            m_isolated.erase(element);
+            group.replan = true;
+        }
         const Response &response = result.response();
         for (const PlanSlot &slot : step.itemSlots) {
             WatchValue value;
@@ -164,20 +338,14 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
         // One bad address must not blank the whole batch: split until it is found.
         const std::vector<PlanStep> halves = m_planner->split(step);
         if (!halves.empty()) {
-            group.outstanding += static_cast<int>(halves.size());
-            for (const PlanStep &half : halves)
-                submitStep(group, half);
+            for (auto half = halves.rbegin(); half != halves.rend(); ++half)
+                group.pending.push_front(*half);
         } else {
-            std::set<StationAddress> elements;
-            if (step.request.command == Command::MixedRead) {
-                for (const Address &address : step.request.addresses)
-                    elements.insert({step.request.station, address});
-            } else {
-                elements.insert({step.request.station, step.request.start});
-            }
-            for (const StationAddress &element : elements) {
+            const qint64 recheckAt = m_clock.elapsed() + refusalRecheckMs;
+            for (const StationAddress &element : elementsOf(step)) {
                 if (m_isolated.insert(element).second)
                     group.replan = true;
+                m_refusals[element] = {result.errorMessage(), recheckAt};
             }
             for (const PlanSlot &slot : step.itemSlots)
                 group.cycleValues.insert(
@@ -192,16 +360,45 @@ void Poller::onStepDone(int intervalMs, quint64 generation, const PlanStep &step
             group.cycleValues.insert(
                 slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorMessage()});
     } else {
-        // Timeout, link down, damaged answers: the old value is kept, marked stale.
+        // Timeout, link down, damaged answers: the old value is kept, marked stale (with the
+        // demotion, when this was the request that demoted the station).
+        const auto health = m_health.find(step.request.station);
+        const Message reason
+            = noAnswer(result) && health != m_health.end() && health->second.demoted
+                  ? demotedReason(step.request.station)
+                  : result.errorMessage();
         for (const PlanSlot &slot : step.itemSlots) {
             const LastGood last = m_lastGood.value(slot.itemId);
             group.cycleValues.insert(slot.itemId, {slot.itemId, last.value, last.timestamp,
-                                                   ValueQuality::Stale, result.errorMessage()});
+                                                   ValueQuality::Stale, reason});
         }
     }
 
-    if (--group.outstanding == 0)
+    --group.outstanding;
+    if (group.submitting)
+        return; // submitNext() goes on
+    if (!group.pending.empty())
+        submitNext(group);
+    else if (group.outstanding == 0)
         finishCycle(group);
+}
+
+void Poller::reportLate(Group &group, qint64 now)
+{
+    group.lateReported = true;
+    const QDateTime wallNow = QDateTime::currentDateTimeUtc();
+    QList<WatchValue> batch;
+    for (const std::uint64_t id : group.goodLastTime) {
+        const LastGood last = m_lastGood.value(id);
+        const qint64 age
+            = last.timestamp.isValid() ? last.timestamp.msecsTo(wallNow) : now - group.lastDelivery;
+        batch.append(
+            {id, last.value, last.timestamp, ValueQuality::Late,
+             msg<MsgId::SessionValueLate>(secondsText(age).toStdString(), group.intervalMs)});
+    }
+    group.goodLastTime.clear();
+    if (!batch.isEmpty())
+        Q_EMIT values(batch);
 }
 
 void Poller::finishCycle(Group &group)
@@ -212,17 +409,34 @@ void Poller::finishCycle(Group &group)
     for (const UnplannableItem &item : group.plan.unplannable)
         group.cycleValues.insert(item.itemId, {item.itemId, 0, QDateTime::currentDateTimeUtc(),
                                                ValueQuality::Error, item.reason});
+    group.goodLastTime.clear();
     for (const WatchItem &item : group.items) {
         auto it = group.cycleValues.constFind(item.id);
-        if (it != group.cycleValues.constEnd())
-            batch.append(*it);
+        if (it == group.cycleValues.constEnd())
+            continue;
+        batch.append(*it);
+        if (it->quality == ValueQuality::Good)
+            group.goodLastTime.push_back(item.id);
     }
     group.inFlight = false;
+    StationHealth &health = m_health[group.station];
+    if (group.trial) {
+        group.trial = false;
+        if (health.trialOut) {
+            // The trial got no verdict (the link went, or nothing was asked): try again.
+            health.trialOut = false;
+            health.until = std::min(health.until, now);
+        }
+    }
     if (group.replan)
         replan(group);
     // Absolute deadlines: the next cycle is one interval after the previous deadline, or right
     // now if this cycle overran it (never a burst of missed cycles).
     group.deadline = std::max(group.deadline + group.intervalMs, now);
+    if (health.demoted)
+        group.deadline = std::max(group.deadline, health.until);
+    group.lastDelivery = now;
+    group.lateReported = false;
     Q_EMIT cycleCompleted(static_cast<double>(now - group.cycleStart));
     Q_EMIT values(batch);
     reschedule();

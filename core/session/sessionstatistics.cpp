@@ -38,9 +38,9 @@ bool StationStatistics::operator==(const StationStatistics &other) const
     return requests == other.requests && answers == other.answers && timeouts == other.timeouts
            && checksumErrors == other.checksumErrors && plcErrors == other.plcErrors
            && frameErrors == other.frameErrors && retries == other.retries
-           && unanswered == other.unanswered && bytesOut == other.bytesOut
-           && bytesIn == other.bytesIn && rttLastMs == other.rttLastMs
-           && rttMeanMs == other.rttMeanMs;
+           && unanswered == other.unanswered && demoted == other.demoted && nextTry == other.nextTry
+           && demotions == other.demotions && bytesOut == other.bytesOut && bytesIn == other.bytesIn
+           && rttLastMs == other.rttLastMs && rttMeanMs == other.rttMeanMs;
 }
 
 } // namespace Fatek

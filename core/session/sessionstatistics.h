@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QDateTime>
 #include <QList>
 #include <QMap>
 #include <QMetaType>
@@ -22,6 +23,10 @@ struct StationStatistics
     // Requests in a row that got no answer at all (every attempt timed out); 0 again at the next
     // answer. Non-zero: the station is silent (wrong station number, PLC off, cable).
     quint64 unanswered = 0;
+    // Polling of a silent station is demoted (issue 31): not polled until nextTry, then tried once.
+    bool demoted = false;
+    QDateTime nextTry; // UTC; valid while demoted
+    quint64 demotions = 0;
     quint64 bytesOut = 0;
     quint64 bytesIn = 0;
     double rttLastMs = 0; // query written -> answer complete, last good answer

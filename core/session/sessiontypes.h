@@ -46,6 +46,9 @@ struct RequestOptions
     // Raw frames with framing: the protocol whose framing to add. Unset: the link's protocol,
     // detected first under auto-detect.
     std::optional<Protocol> framing;
+    // A poll asking again for an element the PLC refused before: another refusal is expected and
+    // is not counted as a PLC error (the counters are for faults).
+    bool expectRefusal = false;
 };
 
 } // namespace Fatek

@@ -53,15 +53,18 @@ SessionWorker::SessionWorker(const LinkSettings &settings, std::shared_ptr<Sessi
     m_lastActivity.start();
 
     m_poller = new Poller(
-        [this](const Request &request, std::function<void(const SessionResult &)> done) {
+        [this](const Request &request, const RequestOptions &options,
+               std::function<void(const SessionResult &)> done) {
             SessionJob job;
             job.request = request;
             job.priority = Priority::Poll;
+            job.options = options;
             job.done = std::move(done);
             enqueue(std::move(job));
         },
-        this);
+        {m_settings.demoteAfter, m_settings.demotionMs}, this);
     connect(m_poller, &Poller::values, this, &SessionWorker::values);
+    connect(m_poller, &Poller::stationHealthChanged, this, &SessionWorker::onStationHealth);
     connect(m_poller, &Poller::cycleCompleted, this, [this](double ms) {
         ++m_statistics.pollCycles;
         m_statistics.lastCycleMs = ms;
@@ -329,6 +332,28 @@ void SessionWorker::publishStatistics()
 void SessionWorker::resetStatistics()
 {
     m_statistics = SessionStatistics();
+    statisticsChangedInternally();
+    publishStatistics();
+}
+
+void SessionWorker::onStationHealth(quint8 station, bool demoted, const QDateTime &nextTry,
+                                    int unanswered)
+{
+    StationStatistics &stats = m_statistics.stations[station];
+    stats.demoted = demoted;
+    stats.nextTry = nextTry;
+    if (demoted) {
+        ++stats.demotions;
+        ++m_statistics.total.demotions;
+        m_log->append(
+            TrafficEntry::Direction::Event, {},
+            msg<MsgId::LogStationDemoted>(
+                station, unanswered,
+                nextTry.toLocalTime().toString(QStringLiteral("HH:mm:ss")).toStdString()));
+    } else {
+        m_log->append(TrafficEntry::Direction::Event, {},
+                      msg<MsgId::LogStationAnswersAgain>(station));
+    }
     statisticsChangedInternally();
     publishStatistics();
 }

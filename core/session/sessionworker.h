@@ -129,6 +129,7 @@ private:
     void statisticsChangedInternally();
     void countDeframerNoise();
     void publishStatistics();
+    void onStationHealth(quint8 station, bool demoted, const QDateTime &nextTry, int unanswered);
     Message summarize(const QByteArray &frame) const;
 
     LinkSettings m_settings;

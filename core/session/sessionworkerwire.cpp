@@ -188,8 +188,10 @@ void SessionWorker::onBytes(const QByteArray &bytes)
         m_log->append(TrafficEntry::Direction::In, frame, summarize(frame),
                       decoded ? Message{} : decoded.error().message);
         const double rtt = static_cast<double>(m_roundTrip.nsecsElapsed()) / 1e6;
-        const bool plcError = !decoded && decoded.error().kind == ErrorKind::PlcError;
-        const bool malformed = !decoded && !plcError;
+        const bool refusal = !decoded && decoded.error().kind == ErrorKind::PlcError;
+        // A poll asking again for an element the PLC refused before expects the refusal.
+        const bool plcError = refusal && !m_current->options.expectRefusal;
+        const bool malformed = !decoded && !refusal;
         countForStation(station, [rtt, plcError, malformed](StationStatistics &s) {
             ++s.answers;
             s.unanswered = 0;

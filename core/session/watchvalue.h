@@ -22,6 +22,7 @@ struct WatchEntry
 
 enum class ValueQuality {
     Good,  // read in this cycle
+    Late,  // good when read, but no new value for twice the interval (the line is behind)
     Stale, // not read this cycle (timeout, link down): value is the last good one (0 if none)
     Error, // the PLC refuses this element (error A / 2) or it cannot be polled at all
 };

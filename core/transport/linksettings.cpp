@@ -154,6 +154,10 @@ Message LinkSettings::validate() const
         return msg<MsgId::SettingsTimeout>(timeoutMs);
     if (retries < 0 || retries > 10)
         return msg<MsgId::SettingsRetries>(retries);
+    if (demoteAfter < 0 || demoteAfter > 100)
+        return msg<MsgId::SettingsDemoteAfter>(demoteAfter);
+    if (demotionMs < 1000 || demotionMs > 600000)
+        return msg<MsgId::SettingsDemotion>(demotionMs);
     if (interFrameMs < 0 || interFrameMs > 1000)
         return msg<MsgId::SettingsInterFrame>(interFrameMs);
     if (connectTimeoutMs < 1)

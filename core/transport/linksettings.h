@@ -43,6 +43,10 @@ struct LinkSettings
     bool autoReconnect = true;
     int reconnectMinMs = 500;   // first reconnect delay, doubled after each failure ...
     int reconnectMaxMs = 10000; // ... up to this
+    // A station that leaves this many poll requests in a row unanswered is demoted: not polled
+    // for demotionMs, then tried once, so that it does not hold up the other stations (0: never).
+    int demoteAfter = 3;
+    int demotionMs = 10000;
 
     static LinkSettings tcp(const QString &host, quint16 port = 500,
                             ProtocolChoice protocol = ProtocolChoice::Facon);

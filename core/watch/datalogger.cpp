@@ -103,11 +103,23 @@ QString DataLogger::qualityName(Quality quality)
 {
     switch (quality) {
     case Quality::Good: return QStringLiteral("ok");
+    case Quality::Late: return QStringLiteral("late");
     case Quality::Stale: return QStringLiteral("stale");
     case Quality::Error: return QStringLiteral("error");
     case Quality::Missing: return QStringLiteral("missing");
     }
     return QStringLiteral("missing");
+}
+
+DataLogger::Quality DataLogger::qualityOf(ValueQuality quality)
+{
+    switch (quality) {
+    case ValueQuality::Good: return Quality::Good;
+    case ValueQuality::Late: return Quality::Late;
+    case ValueQuality::Stale: return Quality::Stale;
+    case ValueQuality::Error: return Quality::Error;
+    }
+    return Quality::Error;
 }
 
 QString DataLogger::headerLine(const QList<WatchItemSpec> &items)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/result.h"
+#include "core/session/watchvalue.h"
 #include "watchlist.h"
 
 #include <QDateTime>
@@ -41,7 +42,7 @@ namespace Fatek {
 class DataLogger
 {
 public:
-    enum class Quality { Good, Stale, Error, Missing };
+    enum class Quality { Good, Late, Stale, Error, Missing };
     struct Cell
     {
         std::uint64_t raw = 0;
@@ -79,6 +80,8 @@ public:
     static QStringList columnNames(const QList<WatchItemSpec> &items);
     static QString csvCell(const QString &text);
     static QString qualityName(Quality quality);
+    // A value's quality as a cell's (the table, the CLI and the data log say the same).
+    static Quality qualityOf(ValueQuality quality);
     // The header line and one row line (without line end), as open() and writeRow() write them;
     // for output that is not a file (fatek-cli monitor --csv on stdout).
     static QString headerLine(const QList<WatchItemSpec> &items);

@@ -112,8 +112,11 @@ QList<WatchItemValue> ItemAssembler::assemble(const QList<WatchValue> &batch)
         if (v.quality == ValueQuality::Error) {
             g.quality = ValueQuality::Error;
             g.error = v.error;
-        } else if (v.quality == ValueQuality::Stale && g.quality == ValueQuality::Good) {
+        } else if (v.quality == ValueQuality::Stale && g.quality != ValueQuality::Error) {
             g.quality = ValueQuality::Stale;
+            g.error = v.error;
+        } else if (v.quality == ValueQuality::Late && g.quality == ValueQuality::Good) {
+            g.quality = ValueQuality::Late;
             g.error = v.error;
         }
     }

@@ -83,10 +83,7 @@ void TableLogger::writeRow()
                                : DataLogger::Quality::Missing;
             cell.reason = m_model->qualityReason(row);
         } else {
-            const ValueQuality q = m_model->quality(row);
-            cell.quality = q == ValueQuality::Good    ? DataLogger::Quality::Good
-                           : q == ValueQuality::Stale ? DataLogger::Quality::Stale
-                                                      : DataLogger::Quality::Error;
+            cell.quality = DataLogger::qualityOf(m_model->quality(row));
             cell.raw = m_model->rawValue(row);
             cell.reason = m_model->qualityReason(row);
         }

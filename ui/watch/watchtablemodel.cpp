@@ -21,6 +21,7 @@ QString qualityName(ValueQuality quality)
 {
     switch (quality) {
     case ValueQuality::Good: return WatchTableModel::tr("good");
+    case ValueQuality::Late: return WatchTableModel::tr("late");
     case ValueQuality::Stale: return WatchTableModel::tr("stale");
     case ValueQuality::Error: return WatchTableModel::tr("error");
     }
@@ -386,7 +387,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             if (q == ValueQuality::Error
                 || (q == ValueQuality::Stale && m_silentStations.contains(spec.station)))
                 return m_errorIcon;
-            if (q == ValueQuality::Stale && have)
+            if ((q == ValueQuality::Stale || q == ValueQuality::Late) && have)
                 return m_staleIcon;
             if (q == ValueQuality::Good && have)
                 return m_goodIcon;

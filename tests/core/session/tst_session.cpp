@@ -1197,10 +1197,16 @@ void TestSession::serialMultiDrop()
     QCOMPARE(plc2.value(addr("R5")), std::optional<std::uint32_t>(77));
     QCOMPARE(m_plc->value(addr("R5")), std::optional<std::uint32_t>(0));
 
-    // Polling both stations through one port.
+    // Polling both stations through one port (each station's items come in batches of their own).
+    std::map<std::uint64_t, WatchValue> latest;
     QList<WatchValue> last;
-    connect(session.get(), &Session::values, this,
-            [&last](const QList<WatchValue> &v) { last = v; });
+    connect(session.get(), &Session::values, this, [&latest, &last](const QList<WatchValue> &v) {
+        for (const WatchValue &value : v)
+            latest[value.itemId] = value;
+        last.clear();
+        for (const auto &[id, value] : latest)
+            last.append(value);
+    });
     session->setWatchList({{1, 1, addr("R0"), 50},
                            {2, 2, addr("R0"), 50},
                            {3, 1, addr("Y3"), 50},
