@@ -231,6 +231,10 @@
             <translation>Station %1: %2 requests, %3 errors, RTT %4 ms</translation>
         </message>
         <message>
+            <source>; not answering, polled again at %1</source>
+            <translation>; not answering, polled again at %1</translation>
+        </message>
+        <message>
             <source>Name</source>
             <translation>Name</translation>
         </message>
@@ -3946,6 +3950,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>%1, no answer from station %2</source>
             <translation>%1, no answer from station %2</translation>
+        </message>
+        <message>
+            <source>station %1 rests until %2</source>
+            <translation>station %1 rests until %2</translation>
         </message>
     </context>
     <context>

@@ -231,6 +231,10 @@
             <translation>站號 %1：%2 次請求，%3 次錯誤，RTT %4 ms</translation>
         </message>
         <message>
+            <source>; not answering, polled again at %1</source>
+            <translation>；沒有回應，將於 %1 再次輪詢</translation>
+        </message>
+        <message>
             <source>Name</source>
             <translation>名稱</translation>
         </message>
@@ -3932,6 +3936,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>%1, no answer from station %2</source>
             <translation>%1，站號 %2 沒有回應</translation>
+        </message>
+        <message>
+            <source>station %1 rests until %2</source>
+            <translation>站號 %1 暫停輪詢至 %2</translation>
         </message>
     </context>
     <context>

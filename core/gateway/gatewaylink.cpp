@@ -164,8 +164,11 @@ void GatewayLink::update(std::size_t index, const std::vector<std::uint32_t> &wo
                          ValueQuality quality, const Message &error, const QDateTime &time)
 {
     Item &item = m_items[index];
+    // A stale item goes out again when its reason changes kind (no answer -> station demoted),
+    // not for every new detail (the next try's time).
     const bool changed = !item.published || words != item.words || quality != item.quality
-                         || (quality == ValueQuality::Error && error != item.error);
+                         || (quality == ValueQuality::Error && error != item.error)
+                         || (quality != ValueQuality::Good && error.id != item.error.id);
     if (!changed)
         return;
     item.words = words;

@@ -1,5 +1,6 @@
 #include "gatewaystatistics.h"
 
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -32,6 +33,23 @@ QByteArray GatewayStatistics::encode(const GatewayStatistics &gateway,
         {QStringLiteral("bytesDiscarded"), n(session.bytesDiscarded)},
         {QStringLiteral("linkLosses"), n(session.linkLosses)},
     };
+    // Per station: a silent one is demoted (issue 31); when it is tried again.
+    QJsonArray stations;
+    for (auto it = session.stations.cbegin(); it != session.stations.cend(); ++it) {
+        const StationStatistics &s = it.value();
+        QJsonObject station{
+            {QStringLiteral("station"), it.key()},
+            {QStringLiteral("requests"), n(s.requests)},
+            {QStringLiteral("timeouts"), n(s.timeouts)},
+            {QStringLiteral("unanswered"), n(s.unanswered)},
+            {QStringLiteral("demoted"), s.demoted},
+            {QStringLiteral("demotions"), n(s.demotions)},
+        };
+        if (s.demoted && s.nextTry.isValid())
+            station.insert(QStringLiteral("nextTry"),
+                           s.nextTry.toUTC().toString(Qt::ISODateWithMs));
+        stations.append(station);
+    }
     const QJsonObject gatewayJson{
         {QStringLiteral("published"), n(gateway.published)},
         {QStringLiteral("superseded"), n(gateway.superseded)},
@@ -48,6 +66,7 @@ QByteArray GatewayStatistics::encode(const GatewayStatistics &gateway,
         {QStringLiteral("time"), time.toUTC().toString(Qt::ISODateWithMs)},
         {QStringLiteral("link"), link},
         {QStringLiteral("session"), sessionJson},
+        {QStringLiteral("stations"), stations},
         {QStringLiteral("gateway"), gatewayJson},
     };
     return QJsonDocument(object).toJson(QJsonDocument::Compact);

@@ -352,7 +352,21 @@ private Q_SLOTS:
                                   qPrintable(linkStatus->text()), budget);
         QVERIFY(!model->hasValue(0));
 
-        // The PLC is set to station 5: answers come and the warnings go.
+        // Issue 31: after 3 requests without an answer the station is demoted; the link and the
+        // row say until when it rests. Budget: the 3 poll requests and the connection's own status
+        // reads between them, each with its retries, plus the statistics report and slack.
+        const int demotedBudget
+            = saved.settings.timeoutMs * (saved.settings.retries + 1) * 6 + 1750;
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            state.data().toString().contains(QStringLiteral("station 5 rests until ")),
+            qPrintable(state.data().toString()), demotedBudget);
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            quality.data(Qt::ToolTipRole).toString().contains(QStringLiteral("polled again at ")),
+            qPrintable(quality.data(Qt::ToolTipRole).toString()), demotedBudget);
+        QCOMPARE(quality.data().toString(), QStringLiteral("no answer"));
+
+        // The PLC is set to station 5: answers come (at the next try of the demoted station) and
+        // the warnings go.
         plc.server.setStation(5);
         QTRY_COMPARE_WITH_TIMEOUT(model->quality(0), ValueQuality::Good, longWait);
         QTRY_VERIFY_WITH_TIMEOUT(!state.data().toString().contains(expected), longWait);

@@ -120,9 +120,20 @@ QString Connection::stateText() const
     if (silent.isEmpty())
         return state;
     QStringList numbers;
-    for (quint8 s : silent)
+    QStringList demoted;
+    for (quint8 s : silent) {
+        const StationStatistics station = m_statistics.stations.value(s);
+        if (station.demoted && station.nextTry.isValid())
+            demoted << tr("station %1 rests until %2")
+                           .arg(s)
+                           .arg(station.nextTry.toLocalTime().toString(QStringLiteral("HH:mm:ss")));
         numbers << QString::number(s);
-    return tr("%1, no answer from station %2").arg(state, numbers.join(QStringLiteral(", ")));
+    }
+    QString text
+        = tr("%1, no answer from station %2").arg(state, numbers.join(QStringLiteral(", ")));
+    if (!demoted.isEmpty())
+        text += QStringLiteral(" (%1)").arg(demoted.join(QStringLiteral(", ")));
+    return text;
 }
 
 QString Connection::plcText() const

@@ -108,6 +108,10 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
                              .arg(s.requests)
                              .arg(s.timeouts + s.checksumErrors + s.plcErrors)
                              .arg(s.rttMeanMs, 0, 'f', 1);
+                if (s.demoted && s.nextTry.isValid())
+                    lines.last()
+                        += tr("; not answering, polled again at %1")
+                               .arg(s.nextTry.toLocalTime().toString(QStringLiteral("HH:mm:ss")));
             }
             return lines.join(QLatin1Char('\n'));
         }

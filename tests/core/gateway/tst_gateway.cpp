@@ -105,6 +105,7 @@ private Q_SLOTS:
     void publisherBoundsWhileBrokerAway();
     void plcRestartGoesStaleThenGood();
     void neverReadItemsHaveNoValue();
+    void silentStationIsDemoted();
     void stalledBrokerKeepsNewestPerItem();
     void delayHistogramPercentiles();
     void logTextEscapesControls();
@@ -573,6 +574,44 @@ void TestGateway::neverReadItemsHaveNoValue()
     QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R100"))->quality, ValueQuality::Good, Wait);
     QCOMPARE(inbox.item(topic("R100"))->text, QStringLiteral("1234"));
     QCOMPARE(inbox.item(topic("R100"))->words, std::vector<std::uint32_t>{1234});
+}
+
+void TestGateway::silentStationIsDemoted()
+{
+    // Station 7 on the line does not answer: it is demoted, the statistics say until when, its
+    // item is stale with that reason, and station 1 goes on being published.
+    QFile list(m_dir->filePath(QStringLiteral("line1.json")));
+    QVERIFY(list.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    list.write(R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
+  {"name":"Main","intervalMs":100,"items":[{"address":"R100"},{"address":"R0","station":7}]}]})json");
+    list.close();
+    QVERIFY(startGateway(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    const QString statistics
+        = GatewayTopics::statistics(QStringLiteral("fatek"), QStringLiteral("line1"));
+    const auto station7 = [&inbox, &statistics] {
+        const QJsonArray stations = QJsonDocument::fromJson(inbox.last.value(statistics).payload)
+                                        .object()
+                                        .value(QStringLiteral("stations"))
+                                        .toArray();
+        for (const QJsonValue &station : stations) {
+            if (station.toObject().value(QStringLiteral("station")).toInt() == 7)
+                return station.toObject();
+        }
+        return QJsonObject();
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(station7().value(QStringLiteral("demoted")).toBool(), Wait);
+    QVERIFY(QDateTime::fromString(station7().value(QStringLiteral("nextTry")).toString(),
+                                  Qt::ISODateWithMs)
+                .isValid());
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R0", 7))->error.id, MsgId::SessionStationDemoted,
+                              Wait);
+    QCOMPARE(inbox.item(topic("R0", 7))->quality, ValueQuality::Stale);
+    m_plc->setValue(addr("R100"), 4321);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R100"))->text, QStringLiteral("4321"), Wait);
+    QCOMPARE(inbox.item(topic("R100"))->quality, ValueQuality::Good);
 }
 
 void TestGateway::plcRestartGoesStaleThenGood()
