@@ -4,6 +4,7 @@
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/messagejson.h"
 #include "core/mqtt/mqttclient.h"
+#include "core/mqtt/mqttmessages.h"
 #include "core/watch/itemvalues.h"
 #include "mosquittobroker.h"
 #include "testutil.h"
