@@ -1,5 +1,6 @@
 // fatek-cli commands on memory snapshots: snapshot, diff, restore-values (core/commission).
 #include "clirunner.h"
+#include "core/commission/commissionmessages.h"
 
 #include "clitext.h"
 #include "core/commission/snapshotreader.h"

@@ -4,6 +4,7 @@
 #include "app/common/quitsignal.h"
 #include "core/gateway/gatewayconfig.h"
 #include "core/gateway/gatewaylink.h"
+#include "core/gateway/gatewaymessages.h"
 #include "core/protocol/logtext.h"
 
 #include <QCommandLineParser>

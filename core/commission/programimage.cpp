@@ -1,5 +1,7 @@
 #include "programimage.h"
 
+#include "commissionmessages.h"
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>

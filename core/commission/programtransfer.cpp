@@ -1,5 +1,6 @@
 #include "programtransfer.h"
 
+#include "commissionmessages.h"
 #include "core/protocol/plcstatus.h"
 #include "core/session/session.h"
 

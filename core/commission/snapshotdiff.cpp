@@ -1,5 +1,6 @@
 #include "snapshotdiff.h"
 
+#include "commissionmessages.h"
 #include "core/watch/valueformat.h"
 
 namespace Fatek::SnapshotDiff {

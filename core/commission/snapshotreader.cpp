@@ -1,5 +1,6 @@
 #include "snapshotreader.h"
 
+#include "commissionmessages.h"
 #include "core/session/session.h"
 
 #include <QTimer>

@@ -1,5 +1,6 @@
 #include "valuesrestorer.h"
 
+#include "commissionmessages.h"
 #include "core/session/session.h"
 
 #include <QTimer>

@@ -1,6 +1,7 @@
 #include "gatewayconfig.h"
 
 #include "core/mqtt/gatewaytopics.h"
+#include "gatewaymessages.h"
 
 #include <QDir>
 #include <QFile>

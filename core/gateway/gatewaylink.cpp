@@ -2,7 +2,9 @@
 
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/mqttclient.h"
+#include "core/mqtt/mqttmessages.h"
 #include "core/session/session.h"
+#include "gatewaymessages.h"
 #include "gatewaypublisher.h"
 
 namespace Fatek {

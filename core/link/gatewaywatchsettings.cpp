@@ -1,6 +1,7 @@
 #include "gatewaywatchsettings.h"
 
 #include "core/mqtt/gatewaytopics.h"
+#include "linkmessages.h"
 
 namespace Fatek {
 

@@ -2,6 +2,7 @@
 
 #include "core/watch/itemvalues.h"
 #include "messagejson.h"
+#include "mqttmessages.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,20 +1,30 @@
 #include "messagejson.h"
 
+#include "core/watch/watchmessages.h"
+#include "mqttmessages.h"
+
 #include <QHash>
 #include <QJsonArray>
 #include <QString>
+
+#include <span>
 
 namespace Fatek {
 
 namespace {
 
-std::optional<MsgId> idFromName(const QString &name)
+// The ids a message on the wire may have: those of the libraries up to this one. A gateway sends
+// messages of these (its replies' refusals are in mqttmessagelist.h); a name not found here comes
+// back as the English text (MessageJson::fromJson).
+std::optional<MessageId> idFromName(const QString &name)
 {
-    static const QHash<QString, MsgId> ids = [] {
-        QHash<QString, MsgId> map;
-        for (std::size_t i = 0; i < messageIdCount; ++i) {
-            const auto id = static_cast<MsgId>(i);
-            map.insert(QString::fromLatin1(messageIdName(id)), id);
+    static const QHash<QString, MessageId> ids = [] {
+        QHash<QString, MessageId> map;
+        for (const auto &list : {std::span<const MessageDef *const>(protocolMessages),
+                                 std::span<const MessageDef *const>(watchMessages),
+                                 std::span<const MessageDef *const>(mqttMessages)}) {
+            for (const MessageDef *def : list)
+                map.insert(QString::fromLatin1(def->name), *def);
         }
         return map;
     }();
@@ -48,7 +58,7 @@ std::optional<Message> MessageJson::fromJson(const QJsonObject &json)
             return std::nullopt;
         return Message::text(englishText.toStdString());
     };
-    const std::optional<MsgId> id = idFromName(json.value(QStringLiteral("id")).toString());
+    const std::optional<MessageId> id = idFromName(json.value(QStringLiteral("id")).toString());
     const QJsonArray args = json.value(QStringLiteral("args")).toArray();
     if (!id || args.size() != messageArgCount(*id))
         return fallback();

@@ -1,5 +1,7 @@
 #include "mqttbrokersettings.h"
 
+#include "mqttmessages.h"
+
 #include <QFileInfo>
 #include <QUrl>
 

@@ -1,6 +1,7 @@
 #include "mqttclient.h"
 
 #include "core/session/crossthreadcall.h"
+#include "mqttmessages.h"
 #include "wakesocket.h"
 
 #include <QCoreApplication>

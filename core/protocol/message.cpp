@@ -1,57 +1,13 @@
 #include "message.h"
 
-// The protocol layer is plain C++: the lupdate marks of messagelist.h are defined here as what
-// Qt defines them to be, the text itself.
-#ifndef QT_TRANSLATE_NOOP
-#define QT_TRANSLATE_NOOP(scope, x) x
-#endif
-
-#include <cassert>
 #include <cctype>
 
 namespace Fatek {
-
-namespace {
-
-struct Entry
-{
-    const char *name;
-    const char *text;
-};
-
-constexpr Entry entries[] = {
-#define FATEK_MSG(id, argc, text) {#id, text},
-#include "messagelist.h"
-#include "messagelistframes.h"
-#include "messagelistgateway.h"
-#include "messagelistmqtt.h"
-#include "messagelistnames.h"
-#include "messagelistprogram.h"
-#include "messagelistsnapshot.h"
-#undef FATEK_MSG
-};
-
-static_assert(std::size(entries) == messageIdCount);
-
-} // namespace
 
 bool Message::empty() const
 {
     return id == MsgId::Text
            && (args.empty() || (!args.front().message && args.front().text.empty()));
-}
-
-const char *messageTemplate(MsgId id)
-{
-    const auto index = static_cast<std::size_t>(id);
-    assert(index < messageIdCount);
-    return index < messageIdCount ? entries[index].text : "";
-}
-
-const char *messageIdName(MsgId id)
-{
-    const auto index = static_cast<std::size_t>(id);
-    return index < messageIdCount ? entries[index].name : "?";
 }
 
 std::string fillTemplate(std::string_view templ, const std::vector<std::string> &args)

@@ -11,45 +11,82 @@
 
 namespace Fatek {
 
-// Every sentence core shows to a person, by id. The English templates (with %1..%n) are in
-// messagelist.h, marked for lupdate in the context "Fatek::Message"; english() fills them in for
-// logs, the CLI and tests, the UI translates them (translated(), ui/common/uitext.h).
-enum class MsgId : std::uint16_t {
-#define FATEK_MSG(id, argc, text) id,
+// The lupdate marks of the message lists, defined as Qt defines them (the text itself): the
+// protocol layer is plain C++, and a list may be read before any Qt header.
+#ifndef QT_TRANSLATE_NOOP
+#define QT_TRANSLATE_NOOP(scope, x) x
+#endif
+
+// Every sentence core shows to a person has an id: a MessageDef with its name, the number of
+// arguments (%1..%n) of its English template, and the template, marked for lupdate in the context
+// "Fatek::Message". Each library owns the ids it uses, in an X-macro list of its own folder
+// (messagelist.h and messagelistframes.h here, core/watch/watchmessagelist.h, ...), and defines
+// them in the namespace MsgId with its <library>messages.h header, which also lists them all
+// (protocolMessages below, watchMessages, ...) for lookups by name and for tests. english() fills
+// a template in for logs, the CLI and tests; the UI translates it (translated(),
+// ui/common/uitext.h). An id is the address of its definition: never copied, never numbered.
+struct MessageDef
+{
+    const char *name; // the id's name ("AddressEmpty"): how a message travels on the wire
+    int argc;
+    const char *text; // the English template
+
+    constexpr MessageDef(const char *idName, int argCount, const char *templ)
+        : name(idName)
+        , argc(argCount)
+        , text(templ)
+    {}
+    // A copy would be another id: msg<>() and comparisons take the definition itself.
+    MessageDef(const MessageDef &) = delete;
+    MessageDef &operator=(const MessageDef &) = delete;
+};
+
+// Which message a Message is: a MsgId::X (a MessageDef) converts to it, compares by identity.
+class MessageId
+{
+public:
+    constexpr MessageId(const MessageDef &def) noexcept
+        : m_def(&def)
+    {}
+
+    constexpr const char *name() const { return m_def->name; }
+    constexpr int argCount() const { return m_def->argc; }
+    constexpr const char *text() const { return m_def->text; }
+
+    friend constexpr bool operator==(MessageId a, MessageId b) { return a.m_def == b.m_def; }
+
+private:
+    const MessageDef *m_def;
+};
+
+// Defines the ids of an X-macro list in the namespace MsgId (FATEK_MSG_DEFINE) and lists their
+// addresses (FATEK_MSG_ADDRESS): see the <library>messages.h headers.
+#define FATEK_MSG_DEFINE(id, argc, text) inline constexpr MessageDef id{#id, argc, text};
+#define FATEK_MSG_ADDRESS(id, argc, text) &MsgId::id,
+
+namespace MsgId {
+#define FATEK_MSG FATEK_MSG_DEFINE
 #ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
 #include "messagelist.h"
 #include "messagelistframes.h"
-#include "messagelistgateway.h"
-#include "messagelistmqtt.h"
-#include "messagelistnames.h"
-#include "messagelistprogram.h"
-#include "messagelistsnapshot.h"
 #endif
 #undef FATEK_MSG
-};
+} // namespace MsgId
 
-namespace MessageDetail {
-inline constexpr int argCounts[] = {
-#define FATEK_MSG(id, argc, text) argc,
-#ifndef Q_MOC_RUN // moc stops at the second list file (the list means nothing to it anyway)
+// The ids of the two lists above.
+inline constexpr const MessageDef *protocolMessages[] = {
+#define FATEK_MSG FATEK_MSG_ADDRESS
+#ifndef Q_MOC_RUN
 #include "messagelist.h"
 #include "messagelistframes.h"
-#include "messagelistgateway.h"
-#include "messagelistmqtt.h"
-#include "messagelistnames.h"
-#include "messagelistprogram.h"
-#include "messagelistsnapshot.h"
 #endif
 #undef FATEK_MSG
 };
-} // namespace MessageDetail
-
-inline constexpr std::size_t messageIdCount = std::size(MessageDetail::argCounts);
 
 // How many arguments (%1..%n) the template of `id` takes.
-constexpr int messageArgCount(MsgId id)
+constexpr int messageArgCount(MessageId id)
 {
-    return MessageDetail::argCounts[static_cast<std::size_t>(id)];
+    return id.argCount();
 }
 
 struct Message;
@@ -83,7 +120,7 @@ struct MessageArg
 
 struct Message
 {
-    MsgId id = MsgId::Text;
+    MessageId id = MsgId::Text;
     std::vector<MessageArg> args;
 
     // A text shown verbatim in every language (the empty message by default): a message from
@@ -106,18 +143,25 @@ inline bool MessageArg::operator==(const MessageArg &other) const
 }
 
 // Builds a message; the number of arguments is checked against the template when compiling.
-template<MsgId Id, typename... Args>
+template<const MessageDef &Id, typename... Args>
 Message msg(Args &&...args)
 {
-    static_assert(sizeof...(Args) == messageArgCount(Id),
-                  "argument count differs from the message template (messagelist.h)");
+    static_assert(sizeof...(Args) == Id.argc,
+                  "argument count differs from the message template (its message list)");
     return Message{Id, {MessageArg(std::forward<Args>(args))...}};
 }
 
 // The English template of `id`, with its %1..%n.
-const char *messageTemplate(MsgId id);
-// The id's name in messagelist.h ("AddressEmpty"), for tests and diagnostics.
-const char *messageIdName(MsgId id);
+constexpr const char *messageTemplate(MessageId id)
+{
+    return id.text();
+}
+// The id's name in its list ("AddressEmpty"): how it travels on the wire, for tests and
+// diagnostics.
+constexpr const char *messageIdName(MessageId id)
+{
+    return id.name();
+}
 // The lupdate context of the templates.
 inline constexpr const char *messageContext = "Fatek::Message";
 

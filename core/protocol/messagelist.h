@@ -1,10 +1,12 @@
-// The messages of core, one line each: FATEK_MSG(id, argument count, English template). An X-macro
-// list, included only by message.h and message.cpp (no include guard on purpose). The template
-// is the text the program has always written in English; its %1..%n take the arguments in order
-// (the count is checked where a message is built). lupdate reads the QT_TRANSLATE_NOOP marks
-// (context "Fatek::Message"); tst_messages checks every id against both translations.
-// Append new ids anywhere: nothing stores them, they are compiled in. The list goes on in
-// messagelistframes.h (included right after this file, to keep each file under 600 lines).
+// The messages of the protocol layer and the layers up to core/watch that need no list of their
+// own, one line each: FATEK_MSG(id, argument count, English template). An X-macro list, included
+// only by message.h (no include guard on purpose). The template is the text the program has always
+// written in English; its %1..%n take the arguments in order (the count is checked where a message
+// is built). lupdate reads the QT_TRANSLATE_NOOP marks (context "Fatek::Message"); tst_messages
+// checks every id against both translations. Add new ids anywhere: nothing stores their order,
+// they are compiled in and go on the wire by name. The list goes on in messagelistframes.h
+// (included right after this file, to keep each file under 600 lines); the other libraries' lists
+// are in their own folders (docs/architecture.md, "Messages").
 
 // A text shown as it is in every language (data, or an operating system's own error text).
 FATEK_MSG(Text, 1, "%1")
@@ -385,3 +387,7 @@ FATEK_MSG(PlaceNotSaved, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Not saved"))
 FATEK_MSG(WatchListTooManyItems, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "%1 items are more than one table holds (at most %2)"))
+
+// The program header (page 0, programheader.cpp): %1 the family ("FBs", "M"), %2 the program
+// size in words.
+FATEK_MSG(ProgramModel, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 series, %2-word program"))

@@ -1,5 +1,7 @@
 #include "itemassembler.h"
 
+#include "watchmessages.h"
+
 #include <algorithm>
 #include <atomic>
 

@@ -4,6 +4,7 @@
 
 #include "csvfield.h"
 #include "watchlisterrors.h"
+#include "watchmessages.h"
 
 #include <QFile>
 #include <QStringDecoder>

@@ -5,6 +5,7 @@
 
 #include "core/protocol/addressrange.h"
 #include "watchlisterrors.h"
+#include "watchmessages.h"
 
 namespace Fatek::WatchList {
 

@@ -1,4 +1,5 @@
 #include "watchlist.h"
+#include "watchmessages.h"
 
 // The watch list file: versioned JSON, read and written.
 

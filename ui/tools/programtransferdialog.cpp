@@ -1,5 +1,6 @@
 #include "programtransferdialog.h"
 
+#include "core/commission/commissionmessages.h"
 #include "core/protocol/plcstatus.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"

@@ -1,5 +1,6 @@
 #include "snapshotdialog.h"
 
+#include "core/commission/commissionmessages.h"
 #include "core/commission/snapshotfile.h"
 #include "core/commission/snapshotreader.h"
 #include "core/commission/valuesrestorer.h"

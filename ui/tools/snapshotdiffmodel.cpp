@@ -1,5 +1,6 @@
 #include "snapshotdiffmodel.h"
 
+#include "core/commission/commissionmessages.h"
 #include "ui/common/uitext.h"
 
 namespace Fatek {

@@ -8,6 +8,7 @@
 #include "core/mqtt/gatewaypayload.h"
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/mqttclient.h"
+#include "core/mqtt/mqttmessages.h"
 #include "core/protocol/logtext.h"
 #include "core/session/session.h"
 #include "core/sim/simserver.h"
@@ -400,7 +401,7 @@ void TestGateway::refusedWritesReachNothing()
         const char *address;
         QByteArray payload;
         bool retain;
-        MsgId expected;
+        MessageId expected;
     };
     const QList<Case> cases{
         {"R300", R"({"value":"5","id":"outside"})", false, MsgId::GatewayWriteNotAllowed},

@@ -2,6 +2,7 @@
 // the gateway's item payloads, quality when the gateway or the broker goes away, writes through
 // /set and /reply. The gateway side is a protocol peer (TestUtil::GatewayPeer) on the same broker.
 #include "core/link/gatewaywatch.h"
+#include "core/mqtt/mqttmessages.h"
 #include "core/session/session.h"
 #include "gatewaypeer.h"
 #include "mosquittobroker.h"

@@ -4,7 +4,9 @@
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/messagejson.h"
 #include "core/mqtt/mqttclient.h"
+#include "core/mqtt/mqttmessages.h"
 #include "core/watch/itemvalues.h"
+#include "core/watch/watchmessages.h"
 #include "mosquittobroker.h"
 #include "testutil.h"
 
@@ -17,6 +19,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <span>
 
 using namespace Fatek;
 using TestUtil::addr;
@@ -64,6 +67,7 @@ private Q_SLOTS:
     void topicsRoundTrip();
     void topicsRejectOthers();
     void messageJsonKeepsIdsAndNesting();
+    void messageJsonKnowsTheIdsAGatewaySends();
     void messageJsonFallsBackToEnglish();
     void itemPayloadFloat();
     void itemPayloadSignedBitAndNan();
@@ -220,6 +224,23 @@ void TestMqtt::messageJsonKeepsIdsAndNesting()
     const std::optional<Message> back = MessageJson::fromJson(json);
     QVERIFY(back);
     QVERIFY(*back == outer);
+}
+
+void TestMqtt::messageJsonKnowsTheIdsAGatewaySends()
+{
+    // Every id of the lists up to core/mqtt (what a gateway publishes: replies, statuses, item
+    // errors) comes back as itself, by name; the gateway's own list is not on the wire.
+    for (const auto &list : {std::span<const MessageDef *const>(protocolMessages),
+                             std::span<const MessageDef *const>(watchMessages),
+                             std::span<const MessageDef *const>(mqttMessages)}) {
+        for (const MessageDef *def : list) {
+            Message m{*def, {}};
+            for (int i = 1; i <= def->argc; ++i)
+                m.args.emplace_back(std::to_string(i));
+            const std::optional<Message> back = MessageJson::fromJson(MessageJson::toJson(m));
+            QVERIFY2(back && *back == m, def->name);
+        }
+    }
 }
 
 void TestMqtt::messageJsonFallsBackToEnglish()

@@ -1,12 +1,18 @@
-// Core messages (core/protocol/messagelist.h): every id has an English template whose placeholders
+// Core messages (every library's list: core/protocol/messagelist.h, core/watch/watchmessagelist.h,
+// ...; docs/architecture.md): every id has an English template whose placeholders
 // are the %1..%n its argument count promises (the count msg<>() checks when compiling), both
 // shipped translations (the .qm files the program embeds) carry it with the same placeholders,
 // and the Chinese one is Chinese. english() and the UI's translated() fill them in alike.
 #include "ui/common/uitext.h"
 
+#include "core/commission/commissionmessages.h"
+#include "core/gateway/gatewaymessages.h"
+#include "core/link/linkmessages.h"
+#include "core/mqtt/mqttmessages.h"
 #include "core/protocol/message.h"
 #include "core/protocol/protocolerror.h"
 #include "core/protocol/request.h"
+#include "core/watch/watchmessages.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -14,24 +20,32 @@
 #include <QTest>
 #include <QTranslator>
 
-#include <set>
+#include <span>
 
 using namespace Fatek;
 
 namespace {
 
 // Templates whose Chinese text is rightly the same as the English one: joins of two parts.
-const std::set<MsgId> sameInChinese = {MsgId::Spaced};
+const QList<MessageId> sameInChinese = {MsgId::Spaced};
 
-QList<MsgId> allIds()
+// The ids of every library's list (a name twice would not compile here: one namespace MsgId).
+QList<MessageId> allIds()
 {
-    QList<MsgId> ids;
-    for (std::size_t i = 0; i < messageIdCount; ++i)
-        ids.append(static_cast<MsgId>(i));
+    QList<MessageId> ids;
+    for (const auto &list : {std::span<const MessageDef *const>(protocolMessages),
+                             std::span<const MessageDef *const>(watchMessages),
+                             std::span<const MessageDef *const>(commissionMessages),
+                             std::span<const MessageDef *const>(mqttMessages),
+                             std::span<const MessageDef *const>(linkMessages),
+                             std::span<const MessageDef *const>(gatewayMessages)}) {
+        for (const MessageDef *def : list)
+            ids.append(*def);
+    }
     return ids;
 }
 
-QString templateOf(MsgId id)
+QString templateOf(MessageId id)
 {
     return QString::fromUtf8(messageTemplate(id));
 }
@@ -46,7 +60,7 @@ QSet<int> placeholders(const QString &text)
     return found;
 }
 
-QSet<int> expected(MsgId id)
+QSet<int> expected(MessageId id)
 {
     QSet<int> numbers;
     for (int i = 1; i <= messageArgCount(id); ++i)
@@ -55,7 +69,7 @@ QSet<int> expected(MsgId id)
 }
 
 // A message of `id` with distinct token arguments ("<1>", "<2>", ...).
-Message sample(MsgId id)
+Message sample(MessageId id)
 {
     Message m{id, {}};
     for (int i = 1; i <= messageArgCount(id); ++i)
@@ -88,7 +102,7 @@ private Q_SLOTS:
     void templates()
     {
         QSet<QString> names;
-        for (MsgId id : allIds()) {
+        for (MessageId id : allIds()) {
             const QString name = QString::fromUtf8(messageIdName(id));
             QVERIFY2(!names.contains(name), qPrintable(name));
             names.insert(name);
@@ -106,7 +120,7 @@ private Q_SLOTS:
 
     void bothLanguages()
     {
-        for (MsgId id : allIds()) {
+        for (MessageId id : allIds()) {
             if (id == MsgId::Text)
                 continue; // data, never translated
             const QString name = QString::fromUtf8(messageIdName(id));
@@ -119,7 +133,7 @@ private Q_SLOTS:
                      qPrintable(name + QLatin1String(": no zh_TW translation")));
             QVERIFY2(placeholders(chinese) == expected(id),
                      qPrintable(name + QLatin1String(": ") + chinese));
-            if (sameInChinese.count(id) == 0) {
+            if (!sameInChinese.contains(id)) {
                 QVERIFY2(chinese != english,
                          qPrintable(name + QLatin1String(": zh_TW is the English text")));
                 // Pure joins ("%1: %2") carry only punctuation; every sentence has Chinese words.
@@ -135,7 +149,7 @@ private Q_SLOTS:
     void translatedFillsArguments()
     {
         QCoreApplication::installTranslator(&m_chinese);
-        for (MsgId id : allIds()) {
+        for (MessageId id : allIds()) {
             const Message m = sample(id);
             const QString shown = translated(m);
             for (int i = 1; i <= messageArgCount(id); ++i)

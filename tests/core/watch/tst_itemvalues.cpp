@@ -3,6 +3,7 @@
 // doubles over several registers, swapped word order).
 #include "core/watch/itemassembler.h"
 #include "core/watch/itemvalues.h"
+#include "core/watch/watchmessages.h"
 
 #include <QTest>
 

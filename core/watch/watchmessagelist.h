@@ -1,5 +1,8 @@
-// The messages of core, continued (see messagelist.h for the format): the names part of
-// commissioning (issue 18). X-macro list, included only by message.h and message.cpp.
+// The messages of core/watch that are not in core/protocol/messagelist.h, one line each:
+// FATEK_MSG(id, argument count, English template), the format of core/protocol/messagelist.h.
+// An X-macro list, included only by watchmessages.h (no include guard on purpose).
+
+// The names part of commissioning (issue 18).
 
 // Importing a comment/symbol list of the ladder project (core/watch/symbolimport.cpp).
 FATEK_MSG(SymbolsCannotRead, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Cannot read %1: %2"))
@@ -27,3 +30,7 @@ FATEK_MSG(SymbolsMoreSkipped, 1, QT_TRANSLATE_NOOP("Fatek::Message", "and %1 mor
 FATEK_MSG(SymbolsReadAsBig5, 1, QT_TRANSLATE_NOOP("Fatek::Message", "%1; read as Big5"))
 // Watch list files: the place of an error in "symbols" (%1 counts from 1).
 FATEK_MSG(PlaceSymbol, 1, QT_TRANSLATE_NOOP("Fatek::Message", "symbol %1"))
+
+// An item of a gateway connection not read in the last cycle (core/watch/itemassembler.cpp; the
+// gateway publishes it as the item's error).
+FATEK_MSG(GatewayNoValueThisCycle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not read in this cycle"))

@@ -1,5 +1,6 @@
-// The messages of core, continued (see messagelist.h for the format): the MQTT client and the
-// gateway's payloads (issue 20). X-macro list, included only by message.h and message.cpp.
+// The messages of the MQTT client and the gateway's payloads (core/mqtt; issue 20), one line each:
+// FATEK_MSG(id, argument count, English template), the format of core/protocol/messagelist.h.
+// An X-macro list, included only by mqttmessages.h (no include guard on purpose).
 
 // Broker settings (core/mqtt/mqttbrokersettings.cpp).
 FATEK_MSG(MqttUrlEmpty, 0, QT_TRANSLATE_NOOP("Fatek::Message", "No broker given."))
@@ -48,36 +49,19 @@ FATEK_MSG(GatewaySetWordCount, 3,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The command has %1 word(s), but %2 in this format spans %3."))
 
-// Watching a gateway connection from the GUI (core/mqtt/gatewaywatch.cpp): %1 the gateway's
-// connection name unless said otherwise.
-FATEK_MSG(GatewayNotPublished, 3,
+// The refusals of a write command, in the gateway's reply (core/gateway/gatewaylink.cpp), which
+// the studio decodes and shows.
+FATEK_MSG(GatewayWriteReadOnly, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Refused: the gateway is read-only."))
+FATEK_MSG(GatewayWriteNotAllowed, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "%1 (station %2) is not published by the gateway %3."))
-FATEK_MSG(GatewayNoStatus, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "No status from the gateway %1 yet."))
-FATEK_MSG(GatewayConnecting, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "The gateway %1 is connecting to its PLC."))
-FATEK_MSG(GatewayOffline, 1, QT_TRANSLATE_NOOP("Fatek::Message", "The gateway %1 is offline."))
-FATEK_MSG(GatewayOfflineBecause, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message", "The gateway %1 is offline: %2"))
-FATEK_MSG(GatewayDown, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "The gateway %1 lost its link to the PLC."))
-FATEK_MSG(GatewayDownBecause, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message", "The gateway %1 lost its link to the PLC: %2"))
-// %1 what was to be written ("R100 (station 1) = 12.5"), %2 why.
-FATEK_MSG(GatewayWriteNotSent, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 was not sent: %2"))
-FATEK_MSG(GatewayPublishFailed, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "The broker %1 did not take the command."))
-// %2 seconds.
-FATEK_MSG(GatewayNoReply, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message", "No reply from the gateway %1 within %2 s."))
-FATEK_MSG(GatewayWriteFailed, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "The gateway %1 did not write the value."))
-FATEK_MSG(GatewayPrefixInvalid, 1,
+                            "Refused: %1 is not in this connection's write allowlist."))
+FATEK_MSG(GatewayWriteRetained, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "\"%1\" is not a topic prefix: levels separated by /, without + or #."))
-FATEK_MSG(
-    GatewayNameInvalid, 1,
-    QT_TRANSLATE_NOOP("Fatek::Message",
-                      "\"%1\" is not a gateway connection name: 1 to 64 letters, digits, -, _ "
-                      "or ., and not a number."))
+                            "Refused: a retained command would write again at every restart; "
+                            "publish commands without the retain flag."))
+FATEK_MSG(GatewayWriteTooLong, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Refused: a command longer than %1 bytes."))
+FATEK_MSG(GatewayWriteBusy, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Refused: %1 writes are already waiting on this connection."))

@@ -1,6 +1,6 @@
-// The messages of core, continued (see messagelist.h for the format): the MQTT gateway
-// (fatek-gateway, core/gateway; issue 20). X-macro list, included only by message.h and
-// message.cpp.
+// The messages of the MQTT gateway (fatek-gateway, core/gateway; issue 20), one line each:
+// FATEK_MSG(id, argument count, English template), the format of core/protocol/messagelist.h.
+// An X-macro list, included only by gatewaymessages.h (no include guard on purpose).
 
 // The configuration file (core/gateway/gatewayconfig.cpp). Places nest with AtPlace:
 // "connection 2 (line1): link: port 70000 is out of range (1..65535)".
@@ -65,22 +65,8 @@ FATEK_MSG(GatewayPlaceBroker, 0, QT_TRANSLATE_NOOP("Fatek::Message", "broker"))
 FATEK_MSG(GatewayPlaceWatchList, 1, QT_TRANSLATE_NOOP("Fatek::Message", "watch list %1"))
 FATEK_MSG(GatewayPlaceAllow, 1, QT_TRANSLATE_NOOP("Fatek::Message", "allow \"%1\""))
 
-// Item values and writes (core/gateway/gatewaylink.cpp).
-FATEK_MSG(GatewayNoValueThisCycle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not read in this cycle"))
-FATEK_MSG(GatewayWriteReadOnly, 0,
-          QT_TRANSLATE_NOOP("Fatek::Message", "Refused: the gateway is read-only."))
-FATEK_MSG(GatewayWriteNotAllowed, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Refused: %1 is not in this connection's write allowlist."))
-FATEK_MSG(GatewayWriteRetained, 0,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Refused: a retained command would write again at every restart; "
-                            "publish commands without the retain flag."))
-FATEK_MSG(GatewayWriteTooLong, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "Refused: a command longer than %1 bytes."))
-FATEK_MSG(GatewayWriteBusy, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Refused: %1 writes are already waiting on this connection."))
+// Writes (core/gateway/gatewaylink.cpp): the log's outcome of a write, an ignored command. The
+// refusals a reply carries are core/mqtt's (mqttmessagelist.h): the studio decodes them.
 FATEK_MSG(GatewayWriteDone, 0, QT_TRANSLATE_NOOP("Fatek::Message", "written"))
 FATEK_MSG(GatewayWriteBadTopic, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",

@@ -1,0 +1,28 @@
+#pragma once
+
+// The messages of the MQTT client and the gateway's payloads: the ids of mqttmessagelist.h, in the
+// namespace MsgId.
+// core/protocol/message.h explains the ids and their lists. Include this header where one of them
+// is used; a new message of this library goes into mqttmessagelist.h.
+#include "core/protocol/message.h"
+
+namespace Fatek {
+
+namespace MsgId {
+#define FATEK_MSG FATEK_MSG_DEFINE
+#ifndef Q_MOC_RUN
+#include "mqttmessagelist.h"
+#endif
+#undef FATEK_MSG
+} // namespace MsgId
+
+// Every id of mqttmessagelist.h, for lookups by name and for tests.
+inline constexpr const MessageDef *mqttMessages[] = {
+#define FATEK_MSG FATEK_MSG_ADDRESS
+#ifndef Q_MOC_RUN
+#include "mqttmessagelist.h"
+#endif
+#undef FATEK_MSG
+};
+
+} // namespace Fatek
