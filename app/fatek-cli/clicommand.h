@@ -5,6 +5,10 @@
 
 #include <QObject>
 
+#include <cstdint>
+#include <functional>
+#include <vector>
+
 namespace Fatek {
 
 class CliContext;
@@ -44,6 +48,11 @@ protected:
     void succeed();
     // Prints the command's result and succeeds.
     void succeedWith(const OutputBlock &block);
+    // One row per element from `start` (station, address, `column`: text(value)) and one JSON
+    // object with the values under `column`; then succeeds.
+    void succeedWithElements(const Address &start, const std::vector<std::uint32_t> &values,
+                             const QString &column,
+                             const std::function<QString(std::uint32_t)> &text);
 
     CliContext &m_context;
 

@@ -42,14 +42,7 @@ void CliRestoreValuesCommand::run()
         m_context.failWithError(makeError(ErrorKind::InvalidRequest, msg<MsgId::RestoreNothing>()));
         return;
     }
-    if (!m_restorer) {
-        m_restorer = std::make_unique<ValuesRestorer>();
-        m_restorer->setSession(m_context.session());
-        connect(m_restorer.get(), &ValuesRestorer::progress, this,
-                [this] { m_context.armWatchdog(m_context.requestBudgetMs()); });
-    }
-    disconnect(m_restorer.get(), &ValuesRestorer::finished, this, nullptr);
-    ValuesRestorer *restorer = m_restorer.get();
+    ValuesRestorer *restorer = worker(m_restorer);
     connect(restorer, &ValuesRestorer::finished, this, [this, restorer] {
         if (m_context.isDone())
             return;

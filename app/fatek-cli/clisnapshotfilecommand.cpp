@@ -57,16 +57,14 @@ QString CliSnapshotFileCommand::parseFileAndRanges(CliStepArgs &a)
     return rangesArg(a, 1);
 }
 
+void CliSnapshotFileCommand::rearmWatchdog()
+{
+    m_context.armWatchdog(m_context.requestBudgetMs());
+}
+
 void CliSnapshotFileCommand::readSnapshot(std::vector<AddressRange> ranges, ReadHandler onRead)
 {
-    if (!m_reader) {
-        m_reader = std::make_unique<SnapshotReader>();
-        m_reader->setSession(m_context.session());
-        connect(m_reader.get(), &SnapshotReader::progress, this,
-                [this] { m_context.armWatchdog(m_context.requestBudgetMs()); });
-    }
-    disconnect(m_reader.get(), &SnapshotReader::finished, this, nullptr);
-    SnapshotReader *reader = m_reader.get();
+    SnapshotReader *reader = worker(m_reader);
     connect(reader, &SnapshotReader::finished, this, [this, reader, onRead = std::move(onRead)] {
         if (m_context.isDone())
             return;

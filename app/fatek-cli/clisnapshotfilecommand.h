@@ -1,6 +1,7 @@
 #pragma once
 
 #include "clicommand.h"
+#include "clicontext.h"
 #include "core/commission/memorysnapshot.h"
 #include "core/commission/snapshotdiff.h"
 
@@ -30,6 +31,20 @@ public:
     void abandon() override;
 
 protected:
+    // The command's reader or restorer (core/commission) on the session, made once, the watchdog
+    // re-armed on its progress; nothing connected to its finished() any more.
+    template<class Worker>
+    Worker *worker(std::unique_ptr<Worker> &owned)
+    {
+        if (!owned) {
+            owned = std::make_unique<Worker>();
+            owned->setSession(m_context.session());
+            connect(owned.get(), &Worker::progress, this, &CliSnapshotFileCommand::rearmWatchdog);
+        }
+        disconnect(owned.get(), &Worker::finished, this, nullptr);
+        return owned.get();
+    }
+    void rearmWatchdog();
     // A snapshot file name: .json or .csv.
     static QString snapshotFileArg(CliStepArgs &args, const QString &path, QString *out);
     using ReadHandler = std::function<void(const SnapshotReader &reader)>;

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "clicommand.h"
+#include "core/protocol/request.h"
+#include "core/session/session.h"
 
 namespace Fatek {
 
@@ -14,6 +16,10 @@ public:
 
 protected:
     void run() override;
+
+private:
+    // The brief status (40), and the detail status (53) or why there is none.
+    void report(const Bytes &briefBytes, const SessionResult &detail);
 };
 
 } // namespace Fatek

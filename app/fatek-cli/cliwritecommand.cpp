@@ -7,8 +7,6 @@
 #include "core/watch/itemvalues.h"
 #include "core/watch/watchlist.h"
 
-#include <QJsonArray>
-
 namespace Fatek {
 
 using namespace CliText;
@@ -71,20 +69,8 @@ void CliWriteCommand::run()
     m_context.submit(request, [this, start](const SessionResult &r) {
         if (!r.ok())
             return m_context.failWith(r);
-        OutputBlock block;
-        block.columns
-            = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("written")};
-        QJsonArray all;
-        for (std::size_t i = 0; i < step().values.size(); ++i) {
-            const Address a = start.advanced(static_cast<std::uint32_t>(i));
-            block.rows << QStringList{m_context.stationText(), addressText(a),
-                                      QString::number(step().values[i])};
-            all.append(static_cast<qint64>(step().values[i]));
-        }
-        QJsonObject json = m_context.itemJson(start);
-        json.insert(QStringLiteral("written"), all);
-        block.json << json;
-        succeedWith(block);
+        succeedWithElements(start, step().values, QStringLiteral("written"),
+                            [](std::uint32_t value) { return QString::number(value); });
     });
 }
 
