@@ -1,8 +1,10 @@
 // fatek-cli monitor: planned polling, one line per cycle, optional CSV log.
-#include "clirunner.h"
+#include "climonitorcommand.h"
 
+#include "clicommands.h"
+#include "clicontext.h"
 #include "clitext.h"
-#include "core/protocol/plcstatus.h"
+#include "core/watch/watchlist.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -11,12 +13,66 @@ namespace Fatek {
 
 using namespace CliText;
 
-void CliRunner::runMonitor()
+// monitor ADDR[:FORMAT]...
+QString CliMonitorCommand::parse(CliStepArgs &a)
+{
+    CliStep &s = a.step;
+    for (const QString &text : std::as_const(a.positional)) {
+        // "R0..R3:hex": a format after the colon applies to every element of the argument.
+        const qsizetype colon = text.indexOf(QLatin1Char(':'));
+        std::optional<DisplayFormat> format;
+        if (colon >= 0) {
+            format = ValueFormat::fromName(text.mid(colon + 1).trimmed());
+            if (!format)
+                return QStringLiteral("Unknown format \"%1\" in %2 (%3).")
+                    .arg(text.mid(colon + 1), text, CliText::formatNames());
+        }
+        auto more = WatchList::expandRange(colon >= 0 ? text.left(colon) : text);
+        if (!more)
+            return CliText::error(more.error());
+        s.addresses += more.value();
+        for (qsizetype n = 0; n < more.value().size(); ++n)
+            s.formats << format;
+    }
+    if (s.addresses.size() > WatchList::MaxRangeItems)
+        return QStringLiteral("monitor watches at most %1 elements.").arg(WatchList::MaxRangeItems);
+    return {};
+}
+
+QString CliMonitorCommand::resolveItems(CliStep &step, const CliOptions &o)
+{
+    for (qsizetype i = 0; i < step.addresses.size(); ++i) {
+        WatchItemSpec item;
+        item.address = step.addresses.at(i);
+        item.station = o.station;
+        item.format = step.formats.value(i).value_or(
+            o.valueFormat.value_or(ValueFormat::defaultFormat(item.address)));
+        // A global --format that does not fit an element (bit for R0) falls back to the
+        // element's default; a format asked for that element alone must fit.
+        if (!step.formats.value(i) && ValueFormat::valueWidth(item.address, item.format) == 0)
+            item.format = ValueFormat::defaultFormat(item.address);
+        // Station 0 is refused before for monitor; validate with a real one.
+        WatchItemSpec check = item;
+        check.station = 1;
+        if (const Status valid = WatchList::validateEntry(check); !valid)
+            return CliText::error(valid.error());
+        step.items << item;
+    }
+    return {};
+}
+
+CliMonitorCommand::CliMonitorCommand(CliContext &context)
+    : CliCommand(context)
+{
+    connect(m_context.session(), &Session::values, this, &CliMonitorCommand::onValues);
+}
+
+void CliMonitorCommand::run()
 {
     m_cycle = 0;
     m_staleCycles = 0;
-    m_monitorErrors = false;
-    m_monitoring = true;
+    m_errors = false;
+    m_context.setPolling(true);
     QStringList columns{QStringLiteral("cycle"), QStringLiteral("time")};
     QList<int> widths{5, 12};
     const QList<WatchItemSpec> &items = step().items;
@@ -24,34 +80,33 @@ void CliRunner::runMonitor()
     QList<WatchedItem> watched;
     for (qsizetype i = 0; i < items.size(); ++i) {
         const WatchItemSpec &item = items.at(i);
-        watched.append({static_cast<std::uint64_t>(i), item, m_options.intervalMs});
+        watched.append({static_cast<std::uint64_t>(i), item, options().intervalMs});
         columns << (item.name.isEmpty() ? addressText(item.address) : DataLogger::columnName(item));
         const int width = ItemValues(item).width();
         widths << (width == 1 ? 1 : width <= 16 ? 6 : 12);
     }
-    m_monitorItems.setItems({}); // fresh poll ids: nothing of an earlier monitor step applies
-    m_monitorItems.setItems(watched);
-    const QList<WatchEntry> entries = m_monitorItems.pollEntries();
-    if (!m_options.outputPath.isEmpty() && !m_logger.isOpen()) {
+    m_items.setItems({}); // fresh poll ids: nothing of an earlier monitor step applies
+    m_items.setItems(watched);
+    const QList<WatchEntry> entries = m_items.pollEntries();
+    if (!options().outputPath.isEmpty() && !m_logger.isOpen()) {
         // Every row reaches the disk at once: an interrupted monitor loses nothing.
         m_logger.setFlushIntervalMs(0);
-        if (const Status s = m_logger.open(m_options.outputPath, items); !s) {
-            m_out.error(QString::fromStdString(s.error().text()), ExitCode::Usage);
-            return finish(ExitCode::Usage);
+        if (const Status s = m_logger.open(options().outputPath, items); !s) {
+            out().error(QString::fromStdString(s.error().text()), ExitCode::Usage);
+            return m_context.finish(ExitCode::Usage);
         }
     }
-    if (m_options.format == OutputFormat::Csv)
-        m_out.line(DataLogger::headerLine(items));
+    if (options().format == OutputFormat::Csv)
+        out().line(DataLogger::headerLine(items));
     else
-        m_out.beginStream(columns, widths);
-    armWatchdog(m_options.intervalMs
-                + requestBudgetMs() * (1 + static_cast<int>(entries.size()) / 16));
-    m_session->setWatchList(entries);
+        out().beginStream(columns, widths);
+    armForNextCycle(entries.size());
+    m_context.session()->setWatchList(entries);
 }
 
-void CliRunner::onValues(const QList<WatchValue> &values)
+void CliMonitorCommand::onValues(const QList<WatchValue> &values)
 {
-    if (m_done || !m_monitoring || step().command != CliCommand::Monitor)
+    if (m_context.isDone() || !m_context.isPolling())
         return;
     ++m_cycle;
     const QList<WatchItemSpec> &items = step().items;
@@ -61,7 +116,7 @@ void CliRunner::onValues(const QList<WatchValue> &values)
         c.quality = DataLogger::Quality::Missing;
         c.reason = QStringLiteral("no value this cycle");
     }
-    for (const WatchItemValue &v : m_monitorItems.assemble(values)) {
+    for (const WatchItemValue &v : m_items.assemble(values)) {
         const auto item = static_cast<qsizetype>(v.key);
         if (item >= items.size())
             continue;
@@ -92,57 +147,83 @@ void CliRunner::onValues(const QList<WatchValue> &values)
         jsonValues.append(QJsonValue::Null);
         jsonTexts.append(QJsonValue::Null);
         if (cell.quality == DataLogger::Quality::Error)
-            m_monitorErrors = true;
+            m_errors = true;
         else
             staleReason = cell.reason;
         if (!m_reported.contains(name + cell.reason)) {
             m_reported.insert(name + cell.reason);
-            m_out.note(QStringLiteral("%1: %2").arg(name, cell.reason));
+            out().note(QStringLiteral("%1: %2").arg(name, cell.reason));
         }
     }
     if (m_logger.isOpen()) {
         if (const Status s = m_logger.writeRow(now, cells); !s) {
-            m_out.error(QString::fromStdString(s.error().text()), ExitCode::Internal);
-            return finish(ExitCode::Internal);
+            out().error(QString::fromStdString(s.error().text()), ExitCode::Internal);
+            return m_context.finish(ExitCode::Internal);
         }
     }
     QJsonObject json;
     json.insert(QStringLiteral("cycle"), m_cycle);
     json.insert(QStringLiteral("time"), now.toString(Qt::ISODateWithMs));
-    json.insert(QStringLiteral("station"), m_options.station);
+    json.insert(QStringLiteral("station"), m_context.station());
     json.insert(QStringLiteral("addresses"), jsonAddresses);
     json.insert(QStringLiteral("values"), jsonValues);
     json.insert(QStringLiteral("text"), jsonTexts);
-    if (m_options.format == OutputFormat::Csv)
-        m_out.line(DataLogger::rowLine(now, items, cells));
+    if (options().format == OutputFormat::Csv)
+        out().line(DataLogger::rowLine(now, items, cells));
     else
-        m_out.streamRow(tableCells, json);
+        out().streamRow(tableCells, json);
 
     // Nothing read for three cycles in a row: the link is gone for practical purposes.
     m_staleCycles = (!anyGood && !staleReason.isEmpty()) ? m_staleCycles + 1 : 0;
     if (m_staleCycles >= 3) {
-        m_out.error(QStringLiteral("Nothing read for 3 cycles: %1").arg(staleReason),
+        out().error(QStringLiteral("Nothing read for 3 cycles: %1").arg(staleReason),
                     ExitCode::Link);
-        return finish(ExitCode::Link);
+        return m_context.finish(ExitCode::Link);
     }
-    if (m_options.cycles > 0 && m_cycle >= m_options.cycles) {
-        if (m_monitorErrors)
-            m_out.note(QStringLiteral("Some elements were refused by the PLC (see above)."));
-        if (m_monitorErrors)
-            return finish(ExitCode::Plc);
-        m_session->setWatchList({});
-        m_monitoring = false;
-        if (const Status s = m_logger.close(); !s) {
-            m_out.error(QString::fromStdString(s.error().text()), ExitCode::Internal);
-            return finish(ExitCode::Internal);
-        }
-        return stepDone();
+    if (options().cycles > 0 && m_cycle >= options().cycles) {
+        if (m_errors)
+            out().note(QStringLiteral("Some elements were refused by the PLC (see above)."));
+        if (m_errors)
+            return m_context.finish(ExitCode::Plc);
+        m_context.session()->setWatchList({});
+        m_context.setPolling(false);
+        if (closeLog())
+            succeed();
+        return;
     }
-    armWatchdog(m_options.intervalMs
-                + requestBudgetMs() * (1 + static_cast<int>(step().addresses.size()) / 16));
+    armForNextCycle(step().addresses.size());
 }
 
-// --- raw
-// ------------------------------------------------------------------------------------------------
+void CliMonitorCommand::armForNextCycle(qsizetype elements)
+{
+    m_context.armWatchdog(options().intervalMs
+                          + m_context.requestBudgetMs() * (1 + static_cast<int>(elements) / 16));
+}
+
+bool CliMonitorCommand::closeLog()
+{
+    if (const Status s = m_logger.close(); !s) {
+        out().error(QString::fromStdString(s.error().text()), ExitCode::Internal);
+        m_context.finish(ExitCode::Internal);
+        return false;
+    }
+    return true;
+}
+
+void CliMonitorCommand::interrupt()
+{
+    if (!m_context.isPolling())
+        return CliCommand::interrupt();
+    m_context.setPolling(false);
+    if (m_errors)
+        out().note(QStringLiteral("Some elements were refused by the PLC (see above)."));
+    if (closeLog())
+        m_context.finish(m_errors ? ExitCode::Plc : ExitCode::Ok);
+}
+
+void CliMonitorCommand::abandon()
+{
+    m_logger.close(); // a monitor ended by an error keeps the rows it logged
+}
 
 } // namespace Fatek

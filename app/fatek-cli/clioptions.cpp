@@ -2,8 +2,8 @@
 
 #include "app/common/linkarguments.h"
 #include "clicommands.h"
+#include "climonitorcommand.h"
 #include "clitext.h"
-#include "core/protocol/frametext.h"
 #include "core/watch/watchlist.h"
 
 namespace Fatek {
@@ -78,27 +78,6 @@ QString usageText()
         "restore not confirmed), 3 link failure (timeout, no connection), 4 PLC error (also RUN\n"
         "during restore, program verification failed), 5 refused by --read-only, 6 differences\n"
         "found (diff; restore-values read back other values).\n");
-}
-
-QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
-                        bool *isHex)
-{
-    const QString t = text.trimmed();
-    if (t.isEmpty()) {
-        *error = QStringLiteral("raw needs the bytes to send.");
-        return {};
-    }
-    const FrameText::Typed typed = forceHex     ? FrameText::Typed::Hex
-                                   : forceAscii ? FrameText::Typed::Ascii
-                                                : FrameText::Typed::Guess;
-    const Result<Bytes> bytes = FrameText::parse(t.toStdString(), typed, isHex);
-    if (!bytes) {
-        *error
-            = QStringLiteral("\"%1\": %2").arg(text, QString::fromStdString(bytes.error().text()));
-        return {};
-    }
-    return QByteArray(reinterpret_cast<const char *>(bytes->data()),
-                      static_cast<qsizetype>(bytes->size()));
 }
 
 CliParseResult parseCommandLine(const QStringList &arguments)
@@ -285,27 +264,12 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                 QStringLiteral("%1 needs an answer: station 0 is broadcast, PLCs do not answer it "
                                "(use --station 1..254).")
                     .arg(step.name));
-        if (step.command == CliCommand::Monitor) {
-            for (qsizetype i = 0; i < step.addresses.size(); ++i) {
-                WatchItemSpec item;
-                item.address = step.addresses.at(i);
-                item.station = o.station;
-                item.format = step.formats.value(i).value_or(
-                    o.valueFormat.value_or(ValueFormat::defaultFormat(item.address)));
-                // A global --format that does not fit an element (bit for R0) falls back to the
-                // element's default; a format asked for that element alone must fit.
-                if (!step.formats.value(i)
-                    && ValueFormat::valueWidth(item.address, item.format) == 0)
-                    item.format = ValueFormat::defaultFormat(item.address);
-                // Station 0 is refused above for monitor; validate with a real one.
-                WatchItemSpec check = item;
-                check.station = 1;
-                if (const Status valid = WatchList::validateEntry(check); !valid)
-                    return fail(CliText::error(valid.error()));
-                step.items << item;
-            }
+        if (step.command == CliCommandKind::Monitor) {
+            if (const QString itemError = CliMonitorCommand::resolveItems(step, o);
+                !itemError.isEmpty())
+                return fail(itemError);
         }
-        if (step.command == CliCommand::Monitor && o.cycles == 0 && n + 1 < parts.size())
+        if (step.command == CliCommandKind::Monitor && o.cycles == 0 && n + 1 < parts.size())
             return fail(
                 QStringLiteral("monitor before --then needs --cycles: it would never end."));
         o.steps << step;

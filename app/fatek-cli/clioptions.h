@@ -28,7 +28,7 @@ inline constexpr int Interrupted
     = 130; // Ctrl-C / SIGTERM before the command finished (128 + SIGINT)
 } // namespace ExitCode
 
-enum class CliCommand {
+enum class CliCommandKind {
     ShowStatus,
     Run,
     Stop,
@@ -51,7 +51,7 @@ enum class OutputFormat { Table, Json, Csv };
 // One command of the command line (several may be chained with --then).
 struct CliStep
 {
-    CliCommand command = CliCommand::ShowStatus;
+    CliCommandKind command = CliCommandKind::ShowStatus;
     QString name;
 
     // read / write / forced / control / monitor
@@ -118,10 +118,5 @@ struct CliParseResult
 CliParseResult parseCommandLine(const QStringList &arguments);
 
 QString usageText();
-
-// "01 40 0A" (two-digit hex tokens, or one token starting 0x / hex:) -> bytes; else the ASCII text
-// with <02>/<STX> escapes (FrameText::parse). `hex` (if given) tells which of the two it was.
-QByteArray parseRawText(const QString &text, bool forceHex, bool forceAscii, QString *error,
-                        bool *hex = nullptr);
 
 } // namespace Fatek

@@ -1,293 +1,69 @@
-// fatek-cli: the link, the step sequence, exit codes. The commands live in cli*.cpp by group.
+// fatek-cli: the step sequence. The link is CliContext's, the commands are cli*command.cpp.
 #include "clirunner.h"
 
-#include "clitext.h"
-#include "core/commission/snapshotreader.h"
-#include "core/commission/valuesrestorer.h"
-#include "core/protocol/plcstatus.h"
-#include "core/sim/modelprofile.h"
-#include "core/sim/simserver.h"
-#include "core/sim/simulatedplc.h"
-#include "core/watch/symbolimport.h"
+#include "clicommand.h"
+#include "clicommands.h"
 
 namespace Fatek {
 
-using namespace CliText;
-
 CliRunner::CliRunner(const CliOptions &options, QObject *parent)
     : QObject(parent)
-    , m_options(options)
-    , m_out(options.format)
+    , m_context(options)
 {
-    m_watchdog.setSingleShot(true);
-    connect(&m_watchdog, &QTimer::timeout, this, [this] {
-        m_out.error(QStringLiteral("No result within %1 s: the link stalled.")
-                        .arg(m_watchdog.interval() / 1000.0),
-                    ExitCode::Link);
-        finish(ExitCode::Link);
-    });
+    connect(&m_context, &CliContext::ready, this, &CliRunner::runStep);
+    connect(&m_context, &CliContext::finished, this, &CliRunner::onFinished);
 }
 
 CliRunner::~CliRunner()
 {
-    // The scanner, program transfer, reader and restorer cancel through the session: drop them
-    // first.
-    m_scanner.reset();
-    m_program.reset();
-    m_snapshotReader.reset();
-    m_restorer.reset();
-    m_session.reset();
-}
-
-bool CliRunner::startSimulator(QString *error)
-{
-    m_plc = std::make_unique<SimulatedPlc>(ModelProfile::fbs());
-    m_plc->setRunning(true);
-    m_server = std::make_unique<SimServer>(m_plc.get());
-    m_server->setStation(m_options.station == 0 ? std::uint8_t{1} : m_options.station);
-    m_server->setBindAddress(QHostAddress(QHostAddress::LocalHost));
-    m_server->setDemoLadder(true);
-    if (!m_server->listenTcp(0, error))
-        return false;
-    const LinkSettings policy = m_options.link;
-    m_options.link
-        = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort(), policy.protocol);
-    m_options.link.timeoutMs = policy.timeoutMs;
-    m_options.link.retries = policy.retries;
-    m_options.link.autoReconnect = false;
-    return true;
-}
-
-bool CliRunner::applyNames()
-{
-    // The same import as the GUI's File > Import Names and Comments…: the items of every
-    // monitor step take their address's name, which the table, CSV and data log headers show.
-    const auto names = SymbolImport::fromFile(m_options.namesPath);
-    if (!names) {
-        m_out.error(englishText(names.error().message), ExitCode::Usage);
-        finish(ExitCode::Usage);
-        return false;
-    }
-    if (names->skipped() > 0)
-        m_out.note(englishText(names->summary()));
-    for (CliStep &s : m_options.steps) {
-        for (WatchItemSpec &item : s.items) {
-            if (item.name.isEmpty())
-                item.name = names->symbols().name(item.address);
-        }
-    }
-    return true;
+    // The scanner, program transfer, reader and restorer cancel through the session: the
+    // commands go first.
+    m_current = nullptr;
+    m_commands.clear();
 }
 
 void CliRunner::start()
 {
-    registerSessionMetaTypes();
-    if (m_options.offline) {
-        // diff FILE FILE2: nothing to connect to.
-        m_dispatched = true;
-        dispatch();
-        return;
-    }
-    if (m_options.sim) {
-        QString error;
-        if (!startSimulator(&error)) {
-            m_out.error(QStringLiteral("The embedded simulator could not listen: %1").arg(error),
-                        ExitCode::Internal);
-            finish(ExitCode::Internal);
-            return;
-        }
-    }
-    if (const Message problem = m_options.link.validate(); !problem.empty()) {
-        m_out.error(englishText(problem), ExitCode::Usage);
-        finish(ExitCode::Usage);
-        return;
-    }
-    if (!m_options.namesPath.isEmpty() && !applyNames())
-        return;
-    m_session = std::make_unique<Session>(m_options.link);
-    m_session->setReadOnly(m_options.readOnly);
-    connect(m_session.get(), &Session::linkStateChanged, this, &CliRunner::onLinkState);
-    m_requests.setSession(m_session.get());
-    connect(m_session.get(), &Session::values, this, &CliRunner::onValues);
-    armWatchdog(m_options.link.connectTimeoutMs + 2000);
-    m_session->open();
-}
-
-void CliRunner::onLinkState(LinkState state, const Message &reason)
-{
-    if (m_done)
-        return;
-    if (state == LinkState::Connected) {
-        if (!m_dispatched) {
-            m_dispatched = true;
-            dispatch();
-        }
-        return;
-    }
-    if (state == LinkState::Lost || (state == LinkState::Closed && !m_dispatched)) {
-        // Requests in flight finish with LinkError and report it themselves; polling and a link
-        // that never came up have nobody else to tell.
-        if (!m_dispatched || m_monitoring || m_requests.pendingCount() == 0) {
-            m_out.error(QStringLiteral("No connection to %1: %2")
-                            .arg(m_options.link.toString(), englishText(reason)),
-                        ExitCode::Link);
-            finish(ExitCode::Link);
-        }
-    }
-}
-
-int CliRunner::requestBudgetMs() const
-{
-    // Every attempt may time out; an undetected protocol is probed in both protocols first.
-    const int attempts = m_options.link.retries + 1;
-    const bool probing = m_options.link.protocol == LinkSettings::ProtocolChoice::Auto
-                         && !m_session->isProtocolKnown();
-    return m_options.link.timeoutMs * attempts * (probing ? 3 : 1) + 3000;
-}
-
-void CliRunner::armWatchdog(int ms)
-{
-    m_watchdog.start(ms);
-}
-
-void CliRunner::submit(const Request &request, Handler handler)
-{
-    m_requests.submit(request, watched(std::move(handler)));
-    armWatchdog(requestBudgetMs());
-}
-
-CliRunner::Handler CliRunner::watched(Handler handler)
-{
-    return [this, handler = std::move(handler)](const SessionResult &result) {
-        if (m_requests.pendingCount() == 0)
-            m_watchdog.stop();
-        handler(result);
-    };
-}
-
-int CliRunner::exitCodeFor(ErrorKind kind)
-{
-    switch (kind) {
-    case ErrorKind::PlcError: return ExitCode::Plc;
-    case ErrorKind::ReadOnly: return ExitCode::ReadOnly;
-    case ErrorKind::InvalidAddress:
-    case ErrorKind::LimitExceeded:
-    case ErrorKind::InvalidRequest:
-    case ErrorKind::Unsupported: return ExitCode::Usage;
-    default: return ExitCode::Link;
-    }
-}
-
-void CliRunner::failWith(const SessionResult &result)
-{
-    const int code = exitCodeFor(result.errorKind());
-    QJsonObject extra;
-    extra.insert(
-        QStringLiteral("kind"),
-        QString::fromLatin1(errorKindName(result.errorKind()).data(),
-                            static_cast<qsizetype>(errorKindName(result.errorKind()).size())));
-    if (result.errorKind() == ErrorKind::PlcError)
-        extra.insert(QStringLiteral("plcError"),
-                     QString::number(result.error().plcCode, 16).toUpper());
-    QString text = result.errorText();
-    if (text.isEmpty())
-        text = QString::fromStdString(result.error().text());
-    m_out.error(text, code, extra);
-    finish(code);
+    m_context.open();
 }
 
 void CliRunner::interrupt()
 {
-    if (m_done)
+    if (m_context.isDone())
         return;
-    if (m_monitoring && step().command == CliCommand::Monitor) {
-        m_monitoring = false;
-        if (m_monitorErrors)
-            m_out.note(QStringLiteral("Some elements were refused by the PLC (see above)."));
-        if (const Status s = m_logger.close(); !s) {
-            m_out.error(QString::fromStdString(s.error().text()), ExitCode::Internal);
-            return finish(ExitCode::Internal);
-        }
-        return finish(m_monitorErrors ? ExitCode::Plc : ExitCode::Ok);
+    if (m_current)
+        m_current->interrupt();
+    else
+        m_context.endInterrupted();
+}
+
+void CliRunner::runStep()
+{
+    const CliStep &step = m_context.options().steps.at(m_stepIndex);
+    std::unique_ptr<CliCommand> &command = m_commands[step.command];
+    if (!command) {
+        command = createCommand(step.command, m_context);
+        connect(command.get(), &CliCommand::succeeded, this, &CliRunner::stepDone);
     }
-    if (m_program && m_program->isRunning()) {
-        // Stopped between pages: the transfer says how far it got, then the program ends.
-        m_interrupted = true;
-        m_program->cancel();
-        return;
-    }
-    m_out.error(QStringLiteral("Interrupted."), ExitCode::Interrupted);
-    finish(ExitCode::Interrupted);
-}
-
-void CliRunner::finish(int exitCode)
-{
-    if (m_done)
-        return;
-    m_done = true;
-    m_watchdog.stop();
-    m_requests.forgetPending(); // results that still come are not reported
-    if (m_scanner)
-        m_scanner->cancel();
-    if (m_snapshotReader)
-        m_snapshotReader->cancel();
-    if (m_restorer)
-        m_restorer->cancel();
-    if (m_session)
-        m_session->setWatchList({});
-    m_logger.close(); // a monitor ended by an error keeps the rows it logged
-    Q_EMIT done(exitCode);
-}
-
-// {"address": ..., "station": ...}: how every JSON result names what it is about.
-QJsonObject CliRunner::itemJson(const Address &address) const
-{
-    return {{QStringLiteral("address"), addressText(address)},
-            {QStringLiteral("station"), m_options.station}};
-}
-
-QString CliRunner::stationText() const
-{
-    return QString::number(m_options.station);
-}
-
-const CliStep &CliRunner::step() const
-{
-    return m_options.steps.at(m_stepIndex);
+    m_current = command.get();
+    command->start(step);
 }
 
 void CliRunner::stepDone()
 {
-    if (m_done)
+    if (m_context.isDone())
         return;
-    if (m_stepIndex + 1 >= m_options.steps.size())
-        return finish(ExitCode::Ok);
+    if (m_stepIndex + 1 >= m_context.options().steps.size())
+        return m_context.finish(ExitCode::Ok);
     ++m_stepIndex;
-    dispatch();
+    runStep();
 }
 
-void CliRunner::dispatch()
+void CliRunner::onFinished(int exitCode)
 {
-    switch (step().command) {
-    case CliCommand::ShowStatus: runStatus(); break;
-    case CliCommand::Run: runRunStop(true); break;
-    case CliCommand::Stop: runRunStop(false); break;
-    case CliCommand::Read: runRead(); break;
-    case CliCommand::Write: runWrite(); break;
-    case CliCommand::Control: runControl(); break;
-    case CliCommand::Forced: runForced(); break;
-    case CliCommand::Loopback: runLoopback(); break;
-    case CliCommand::Monitor: runMonitor(); break;
-    case CliCommand::Raw: runRaw(); break;
-    case CliCommand::Scan: runScan(); break;
-    case CliCommand::Backup: runBackup(); break;
-    case CliCommand::Restore: runRestore(); break;
-    case CliCommand::Snapshot: runSnapshot(); break;
-    case CliCommand::Diff: runDiff(); break;
-    case CliCommand::RestoreValues: runRestoreValues(); break;
-    }
+    for (const auto &[kind, command] : m_commands)
+        command->abandon();
+    Q_EMIT done(exitCode);
 }
-
-// --- status ------------------------------------------------------------------------------------
 
 } // namespace Fatek

@@ -1,7 +1,9 @@
 // fatek-cli commands that carry the PLC's program: backup FILE, restore FILE (core's
 // ProgramTransfer over 4F/50; the file is core's ProgramImage).
-#include "clirunner.h"
+#include "cliprogramcommand.h"
 
+#include "clicommands.h"
+#include "clicontext.h"
 #include "clitext.h"
 #include "core/qtbridge/qtmessage.h"
 
@@ -40,20 +42,46 @@ void endProgressLine(bool *shown)
 
 } // namespace
 
-void CliRunner::startTransfer()
+// backup FILE, restore FILE
+QString CliProgramCommand::parse(CliStepArgs &a)
 {
-    m_program = std::make_unique<ProgramTransfer>();
-    m_program->setSession(m_session.get());
-    m_program->setStation(m_options.station);
-    m_progressShown = false;
-    connect(m_program.get(), &ProgramTransfer::progress, this, &CliRunner::showTransferProgress);
-    armWatchdog(requestBudgetMs());
+    a.step.file = a.positional.at(0);
+    if (a.step.file.trimmed().isEmpty())
+        return QStringLiteral("%1 needs a file name.").arg(a.cmd());
+    return {};
 }
 
-void CliRunner::showTransferProgress(int done, int total)
+void CliProgramCommand::run()
+{
+    if (step().command == CliCommandKind::Backup)
+        runBackup();
+    else
+        runRestore();
+}
+
+void CliProgramCommand::interrupt()
+{
+    if (!m_program || !m_program->isRunning())
+        return CliCommand::interrupt();
+    m_interrupted = true;
+    m_program->cancel();
+}
+
+void CliProgramCommand::startTransfer()
+{
+    m_program = std::make_unique<ProgramTransfer>();
+    m_program->setSession(m_context.session());
+    m_program->setStation(m_context.station());
+    m_progressShown = false;
+    connect(m_program.get(), &ProgramTransfer::progress, this,
+            &CliProgramCommand::showTransferProgress);
+    m_context.armWatchdog(m_context.requestBudgetMs());
+}
+
+void CliProgramCommand::showTransferProgress(int done, int total)
 {
     // Every page is a request: the watchdog waits for the next one.
-    armWatchdog(requestBudgetMs());
+    m_context.armWatchdog(m_context.requestBudgetMs());
     if (!stderrIsTerminal() || total <= 0)
         return;
     QTextStream err(stderr);
@@ -62,11 +90,11 @@ void CliRunner::showTransferProgress(int done, int total)
     m_progressShown = true;
 }
 
-void CliRunner::failTransfer(const ProgramTransferResult &result)
+void CliProgramCommand::failTransfer(const ProgramTransferResult &result)
 {
     using Problem = ProgramTransferResult::Problem;
     endProgressLine(&m_progressShown);
-    m_watchdog.stop();
+    m_context.stopWatchdog();
     int code = ExitCode::Link;
     QString text = englishText(result.message);
     switch (result.problem) {
@@ -82,36 +110,36 @@ void CliRunner::failTransfer(const ProgramTransferResult &result)
                                "FILE`.");
         break;
     case Problem::ModelMismatch: code = ExitCode::Usage; break;
-    case Problem::Request: code = exitCodeFor(result.errorKind); break;
+    case Problem::Request: code = CliContext::exitCodeFor(result.errorKind); break;
     case Problem::VerifyFailed: code = ExitCode::Plc; break;
     case Problem::Cancelled: code = ExitCode::Interrupted; break;
     }
     QJsonObject extra;
-    extra.insert(QStringLiteral("station"), m_options.station);
+    extra.insert(QStringLiteral("station"), m_context.station());
     extra.insert(QStringLiteral("file"), step().file);
     if (!result.pages.empty())
         extra.insert(QStringLiteral("pages"), pagesJson(result.pages));
     if (result.stoppedAtPage >= 0)
         extra.insert(QStringLiteral("stoppedAtPage"), result.stoppedAtPage);
-    m_out.error(text, code, extra);
-    finish(code);
+    out().error(text, code, extra);
+    m_context.finish(code);
 }
 
 // --- backup ---------------------------------------------------------------------------------
 
-void CliRunner::runBackup()
+void CliProgramCommand::runBackup()
 {
     startTransfer();
     connect(m_program.get(), &ProgramTransfer::finished, this,
             [this](const ProgramTransferResult &result) {
                 if (!result.ok() || m_interrupted)
                     return failTransfer(result);
-                m_watchdog.stop();
+                m_context.stopWatchdog();
                 endProgressLine(&m_progressShown);
                 const ProgramImage &image = m_program->plcImage();
                 if (const auto error = image.save(step().file)) {
-                    m_out.error(QString::fromStdString(error->text()), ExitCode::Internal);
-                    return finish(ExitCode::Internal);
+                    out().error(QString::fromStdString(error->text()), ExitCode::Internal);
+                    return m_context.finish(ExitCode::Internal);
                 }
                 OutputBlock block;
                 block.columns = {QStringLiteral("station"), QStringLiteral("file"),
@@ -120,14 +148,14 @@ void CliRunner::runBackup()
                 const QString model = image.modelText().isEmpty()
                                           ? englishText(image.header().model())
                                           : image.modelText();
-                block.rows << QStringList{stationText(),
+                block.rows << QStringList{m_context.stationText(),
                                           step().file,
                                           QString::number(image.pageCount()),
                                           QString::number(image.header().ladderSize),
                                           model,
                                           crcText(image.checksum())};
                 QJsonObject json;
-                json.insert(QStringLiteral("station"), m_options.station);
+                json.insert(QStringLiteral("station"), m_context.station());
                 json.insert(QStringLiteral("file"), step().file);
                 json.insert(QStringLiteral("pages"), image.pageCount());
                 json.insert(QStringLiteral("programWords"), image.header().ladderSize);
@@ -135,20 +163,19 @@ void CliRunner::runBackup()
                 json.insert(QStringLiteral("crc32"), crcText(image.checksum()));
                 json.insert(QStringLiteral("ok"), true);
                 block.json << json;
-                m_out.print(block);
-                stepDone();
+                succeedWith(block);
             });
     m_program->backup();
 }
 
 // --- restore --------------------------------------------------------------------------------
 
-void CliRunner::runRestore()
+void CliProgramCommand::runRestore()
 {
     const ProgramImage::LoadResult loaded = ProgramImage::load(step().file);
     if (!loaded.ok()) {
-        m_out.error(QString::fromStdString(loaded.error().text()), ExitCode::Usage);
-        return finish(ExitCode::Usage);
+        out().error(QString::fromStdString(loaded.error().text()), ExitCode::Usage);
+        return m_context.finish(ExitCode::Usage);
     }
     const ProgramImage &image = loaded.image(); // the lambdas below keep copies
     startTransfer();
@@ -164,50 +191,51 @@ void CliRunner::runRestore()
     m_program->checkRestore(image);
 }
 
-void CliRunner::confirmRestore(const ProgramImage &image, const ProgramTransferResult &check)
+void CliProgramCommand::confirmRestore(const ProgramImage &image,
+                                       const ProgramTransferResult &check)
 {
-    m_watchdog.stop();
+    m_context.stopWatchdog();
     endProgressLine(&m_progressShown);
     const QString model = englishText(image.header().model());
-    m_out.note(QStringLiteral("Restore %1 to station %2: %3 (%4), %5 pages, saved %6.")
-                   .arg(QFileInfo(step().file).fileName(), stationText(), model,
+    out().note(QStringLiteral("Restore %1 to station %2: %3 (%4), %5 pages, saved %6.")
+                   .arg(QFileInfo(step().file).fileName(), m_context.stationText(), model,
                         image.modelText().isEmpty() ? QStringLiteral("model not recorded")
                                                     : image.modelText())
                    .arg(image.pageCount())
                    .arg(image.date().isValid() ? image.date().toString(Qt::ISODate)
                                                : QStringLiteral("at an unknown date")));
-    m_out.note(englishText(check.message));
+    out().note(englishText(check.message));
     const Confirmation answer = confirm(QStringLiteral("Write %1 pages to the PLC at station %2?")
                                             .arg(image.pageCount())
-                                            .arg(stationText()),
-                                        m_options.assumeYes);
+                                            .arg(m_context.stationText()),
+                                        options().assumeYes);
     if (answer != Confirmation::Yes) {
         const QString why = answer == Confirmation::NoTerminal
                                 ? QStringLiteral("Restore writes the PLC's program: give --yes "
                                                  "when standard input is not a terminal. Nothing "
                                                  "was written.")
                                 : QStringLiteral("Not confirmed: nothing was written.");
-        m_out.error(why, ExitCode::Usage);
-        return finish(ExitCode::Usage);
+        out().error(why, ExitCode::Usage);
+        return m_context.finish(ExitCode::Usage);
     }
     const std::vector<std::uint16_t> differing = check.pages;
     connect(m_program.get(), &ProgramTransfer::finished, this,
             [this, image, differing](const ProgramTransferResult &result) {
                 if (!result.ok() || m_interrupted)
                     return failTransfer(result);
-                m_watchdog.stop();
+                m_context.stopWatchdog();
                 endProgressLine(&m_progressShown);
                 OutputBlock block;
                 block.columns
                     = {QStringLiteral("station"), QStringLiteral("file"), QStringLiteral("pages"),
                        QStringLiteral("changed pages"), QStringLiteral("result")};
                 block.rows << QStringList{
-                    stationText(), step().file, QString::number(image.pageCount()),
+                    m_context.stationText(), step().file, QString::number(image.pageCount()),
                     differing.empty() ? QStringLiteral("none")
                                       : QString::fromStdString(pageListText(differing)),
                     QStringLiteral("written and verified")};
                 QJsonObject json;
-                json.insert(QStringLiteral("station"), m_options.station);
+                json.insert(QStringLiteral("station"), m_context.station());
                 json.insert(QStringLiteral("file"), step().file);
                 json.insert(QStringLiteral("pages"), image.pageCount());
                 json.insert(QStringLiteral("programWords"), image.header().ladderSize);
@@ -215,10 +243,9 @@ void CliRunner::confirmRestore(const ProgramImage &image, const ProgramTransferR
                 json.insert(QStringLiteral("verified"), true);
                 json.insert(QStringLiteral("ok"), true);
                 block.json << json;
-                m_out.print(block);
-                stepDone();
+                succeedWith(block);
             });
-    armWatchdog(requestBudgetMs());
+    m_context.armWatchdog(m_context.requestBudgetMs());
     m_program->restore(image);
 }
 

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "clisnapshotfilecommand.h"
+
+#include <memory>
+
+namespace Fatek {
+
+class ValuesRestorer;
+
+// restore-values FILE [RANGES]: writes FILE's values back after a confirmation, then reads them
+// back and compares.
+class CliRestoreValuesCommand : public CliSnapshotFileCommand
+{
+    Q_OBJECT
+
+public:
+    explicit CliRestoreValuesCommand(CliContext &context);
+    ~CliRestoreValuesCommand() override;
+
+    void abandon() override;
+
+protected:
+    void run() override;
+
+private:
+    std::unique_ptr<ValuesRestorer> m_restorer;
+};
+
+} // namespace Fatek
