@@ -127,7 +127,7 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
     }
     const QDateTime now = QDateTime::currentDateTime();
     QStringList tableCells{QString::number(m_cycle), now.toString(QStringLiteral("HH:mm:ss.zzz"))};
-    QJsonArray jsonValues, jsonTexts, jsonAddresses;
+    QJsonArray jsonValues, jsonTexts, jsonAddresses, jsonQualities;
     bool anyGood = false;
     QString staleReason;
     for (qsizetype i = 0; i < items.size(); ++i) {
@@ -135,12 +135,22 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
         const WatchItemSpec &item = items.at(i);
         const QString name = addressText(item.address);
         jsonAddresses.append(name);
+        jsonQualities.append(DataLogger::qualityName(cell.quality));
         if (cell.quality == DataLogger::Quality::Good) {
             anyGood = true;
             const QString text = DataLogger::valueText(item, cell.raw);
             tableCells << text;
             jsonValues.append(static_cast<qint64>(cell.raw));
             jsonTexts.append(text);
+            continue;
+        }
+        if (cell.quality == DataLogger::Quality::Late) {
+            // The last value read, said to be old: the line is behind (issue 31).
+            const QString text = DataLogger::valueText(item, cell.raw);
+            tableCells << QStringLiteral("%1 (late)").arg(text);
+            jsonValues.append(static_cast<qint64>(cell.raw));
+            jsonTexts.append(text);
+            out().note(QStringLiteral("%1: %2").arg(name, cell.reason));
             continue;
         }
         tableCells << QStringLiteral("?");
@@ -168,6 +178,7 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
     json.insert(QStringLiteral("addresses"), jsonAddresses);
     json.insert(QStringLiteral("values"), jsonValues);
     json.insert(QStringLiteral("text"), jsonTexts);
+    json.insert(QStringLiteral("quality"), jsonQualities);
     if (options().format == OutputFormat::Csv)
         out().line(DataLogger::rowLine(now, items, cells));
     else

@@ -8,6 +8,7 @@
 
 #include <QEventLoop>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -74,6 +75,7 @@ private Q_SLOTS:
     void writesReachThePlc_data();
     void writesReachThePlc();
     void rawUnframedUnderAutoNeedsNoProbe();
+    void monitorShowsLateValues();
     void rawFramedUnderAuto_data();
     void rawFramedUnderAuto();
 
@@ -203,6 +205,38 @@ void TestDelivery::rawUnframedUnderAutoNeedsNoProbe()
              qPrintable(r.out));
     QCOMPARE(m_server->counters().frames, quint64(1));
     QCOMPARE(m_server->counters().otherStation, quint64(0));
+}
+
+void TestDelivery::monitorShowsLateValues()
+{
+    // Issue 31: a PLC that answers after 300 ms, polled every 100 ms. The line is behind: between
+    // two answers the last value read is shown late, with its value, never as fresh.
+    FaultConfig faults;
+    faults.latencyMs = 300;
+    m_server->setFaults(faults);
+    m_plc->setValue(Address::parse("R0").value(), 4321);
+    const QStringList args
+        = link(QStringLiteral("tcp"))
+          + QStringList{
+              QStringLiteral("--station"), QStringLiteral("9"),        QStringLiteral("--json"),
+              QStringLiteral("monitor"),   QStringLiteral("R0"),       QStringLiteral("--interval"),
+              QStringLiteral("100"),       QStringLiteral("--cycles"), QStringLiteral("8")};
+    const Run r = runCli(args);
+    RUN_OK(r);
+    int late = 0;
+    int good = 0;
+    for (const QString &line : r.lines()) {
+        const QJsonObject json = QJsonDocument::fromJson(line.toUtf8()).object();
+        const QString quality = json.value(QStringLiteral("quality")).toArray().at(0).toString();
+        QCOMPARE(json.value(QStringLiteral("values")).toArray().at(0).toInteger(), 4321);
+        if (quality == QLatin1String("late"))
+            ++late;
+        else if (quality == QLatin1String("ok"))
+            ++good;
+    }
+    qInfo("8 lines: %d good, %d late", good, late);
+    QVERIFY2(late > 0 && good > 0, qPrintable(r.out));
+    QVERIFY2(r.err.contains(QStringLiteral("R0: Late: no new value for ")), qPrintable(r.err));
 }
 
 void TestDelivery::rawFramedUnderAuto_data()
