@@ -16,11 +16,14 @@
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QComboBox>
+#include <QDialog>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QPointer>
+#include <QProgressBar>
 #include <QScopeGuard>
 #include <QSignalSpy>
 #include <QTableView>
@@ -103,7 +106,9 @@ private:
     QStringList m_questions;
 
     // The window at a laptop's size, connected to `port`, with `items` typed into its first table.
-    WatchTableWidget *openTable(quint16 port, const QString &items, quint8 station = 1)
+    WatchTableWidget *openTable(quint16 port, const QString &items, quint8 station = 1,
+                                LinkSettings::ProtocolChoice protocol
+                                = LinkSettings::ProtocolChoice::Facon)
     {
         m_window = std::make_unique<MainWindow>();
         m_window->setConfirmHandler([this](QWidget *, const QString &question) {
@@ -114,7 +119,9 @@ private:
         m_window->show();
         if (!QTest::qWaitForWindowExposed(m_window.get()))
             return nullptr;
-        Connection *c = m_window->openConnection(savedFor(port, station), false);
+        SavedConnection saved = savedFor(port, station);
+        saved.settings.protocol = protocol;
+        Connection *c = m_window->openConnection(saved, false);
         if (!QTest::qWaitFor([c] { return c->linkState() == LinkState::Connected; }, longWait))
             return nullptr;
         WatchTableWidget *table = m_window->currentWatchTable();
@@ -313,6 +320,36 @@ private Q_SLOTS:
         plc.plc.setDisabled(addr("M1500"), false);
         QTRY_COMPARE_WITH_TIMEOUT(model->isForced(m1500), std::optional<bool>(false), longWait);
         QVERIFY(!mark.data(Qt::DecorationRole).isValid());
+    }
+
+    // Issue 31.2: connected to station 7 (nobody answers) under auto-detect, a table polling it:
+    // Tools > Scan Stations still gets the line between the polls and finds station 1.
+    void scanRunsBehindSilentStation()
+    {
+        DemoPlc plc;
+        QVERIFY(plc.port != 0);
+        WatchTableWidget *table = openTable(plc.port, QStringLiteral("R0 M0 D0"), 7,
+                                            LinkSettings::ProtocolChoice::Auto);
+        QVERIFY(table);
+        QTest::qWait(1500); // the polls and status reads of station 7 are under way
+        auto *action = m_window->findChild<QAction *>(QStringLiteral("scanStationsAction"));
+        QVERIFY(action);
+        QElapsedTimer clock;
+        clock.start();
+        action->trigger();
+        QDialog *dialog = m_window->findChild<QDialog *>(QStringLiteral("stationScanDialog"));
+        QVERIFY(dialog);
+        auto *progress = dialog->findChild<QProgressBar *>(QStringLiteral("scanProgress"));
+        auto *stations = dialog->findChild<QListWidget *>(QStringLiteral("stationList"));
+        QVERIFY(progress && stations);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            progress->maximum() > 0 && progress->value() == progress->maximum(), 30000);
+        qInfo("scan of %d stations behind a silent station: %lld ms", progress->maximum(),
+              static_cast<long long>(clock.elapsed()));
+        QCOMPARE(stations->count(), 1);
+        QVERIFY2(stations->item(0)->text().startsWith(QStringLiteral("Station 1 ")),
+                 qPrintable(stations->item(0)->text()));
+        dialog->close();
     }
 
     // Issue 16.4: station 5 asked, the PLC is station 1: the link and the rows say so in time.
