@@ -2,6 +2,7 @@
 // sine, Y0 blinking) over loopback TCP: typing into the table's own editor while values change,
 // choosing a format with the mouse, forced points marked in the table, a wrong station number.
 // What reached the PLC is counted on the simulator's side of the wire (its request log).
+#include "core/sim/faultconfig.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
 #include "testutil.h"
@@ -320,6 +321,37 @@ private Q_SLOTS:
         plc.plc.setDisabled(addr("M1500"), false);
         QTRY_COMPARE_WITH_TIMEOUT(model->isForced(m1500), std::optional<bool>(false), longWait);
         QVERIFY(!mark.data(Qt::DecorationRole).isValid());
+    }
+
+    // Issue 31.1: a PLC answering after 200 ms, polled every 50 ms: between answers the row keeps
+    // its last value and says "late", then "good" again with the next answer.
+    void lateValuesShowAsLate()
+    {
+        DemoPlc plc;
+        QVERIFY(plc.port != 0);
+        FaultConfig faults;
+        faults.latencyMs = 200;
+        plc.server.setFaults(faults);
+        WatchTableWidget *table = openTable(plc.port, QStringLiteral("R0"));
+        QVERIFY(table);
+        table->setIntervalMs(50);
+        WatchTableModel *model = table->model();
+        const QModelIndex quality = model->index(0, WatchTableModel::QualityColumn);
+        QStringList seen; // every quality text the row showed, with its value
+        connect(model, &QAbstractItemModel::dataChanged, table, [&] {
+            const QString text = quality.data().toString();
+            if (seen.isEmpty() || !seen.last().startsWith(text + QLatin1Char(' ')))
+                seen << text + QLatin1Char(' ')
+                            + model->index(0, WatchTableModel::ValueColumn).data().toString();
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(
+            seen.size() >= 4 && seen.filter(QStringLiteral("late ")).size() >= 2, longWait);
+        qInfo("the row showed: %s", qPrintable(seen.join(QStringLiteral(" | "))));
+        for (const QString &shown : seen.filter(QStringLiteral("late "))) {
+            QVERIFY2(!shown.endsWith(QStringLiteral("…")), qPrintable(shown)); // a value, kept
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(quality.data().toString(), QStringLiteral("good"), longWait);
+        QVERIFY(quality.data(Qt::DecorationRole).isValid());
     }
 
     // Issue 31.2: connected to station 7 (nobody answers) under auto-detect, a table polling it:
