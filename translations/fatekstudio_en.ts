@@ -1698,6 +1698,22 @@
             <translation>Refused: %1 writes are already waiting on this connection.</translation>
         </message>
         <message>
+            <source>Expired: the command is %1 s old (commands older than %2 s are not carried out); send it again.</source>
+            <translation>Expired: the command is %1 s old (commands older than %2 s are not carried out); send it again.</translation>
+        </message>
+        <message>
+            <source>Expired: the command waited at the broker while the gateway was away, up to %1 s (commands older than %2 s are not carried out); send it again.</source>
+            <translation>Expired: the command waited at the broker while the gateway was away, up to %1 s (commands older than %2 s are not carried out); send it again.</translation>
+        </message>
+        <message>
+            <source>Not carried out: the command waited at the broker while the gateway was away, for a time nobody knows; send it again, with &quot;time&quot; so that its age can be checked (at most %1 s).</source>
+            <translation>Not carried out: the command waited at the broker while the gateway was away, for a time nobody knows; send it again, with &quot;time&quot; so that its age can be checked (at most %1 s).</translation>
+        </message>
+        <message>
+            <source>&quot;time&quot; must be a date and time in ISO 8601 with its offset (2026-11-27T10:15:00.000Z), not &quot;%1&quot;.</source>
+            <translation>&quot;time&quot; must be a date and time in ISO 8601 with its offset (2026-11-27T10:15:00.000Z), not &quot;%1&quot;.</translation>
+        </message>
+        <message>
             <source>written</source>
             <translation>written</translation>
         </message>

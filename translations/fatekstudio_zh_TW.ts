@@ -1698,6 +1698,22 @@
             <translation>拒絕：此連線已有 %1 個寫入在等待。</translation>
         </message>
         <message>
+            <source>Expired: the command is %1 s old (commands older than %2 s are not carried out); send it again.</source>
+            <translation>已逾時：此命令已發出 %1 秒（超過 %2 秒的命令不予執行）；請重新傳送。</translation>
+        </message>
+        <message>
+            <source>Expired: the command waited at the broker while the gateway was away, up to %1 s (commands older than %2 s are not carried out); send it again.</source>
+            <translation>已逾時：閘道離線期間此命令在代理伺服器等候，最長 %1 秒（超過 %2 秒的命令不予執行）；請重新傳送。</translation>
+        </message>
+        <message>
+            <source>Not carried out: the command waited at the broker while the gateway was away, for a time nobody knows; send it again, with &quot;time&quot; so that its age can be checked (at most %1 s).</source>
+            <translation>未執行：閘道離線期間此命令在代理伺服器等候，等候時間無從得知；請重新傳送，並在命令中附上 {&quot;time&quot;: ...} 以便檢查其時效（最多 %1 秒）。</translation>
+        </message>
+        <message>
+            <source>&quot;time&quot; must be a date and time in ISO 8601 with its offset (2026-11-27T10:15:00.000Z), not &quot;%1&quot;.</source>
+            <translation>{&quot;time&quot;: ...} 必須是含時區偏移的日期時間（例如 2026-11-27T10:15:00.000Z），而不是 &quot;%1&quot;。</translation>
+        </message>
+        <message>
             <source>written</source>
             <translation>已寫入</translation>
         </message>

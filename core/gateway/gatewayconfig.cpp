@@ -377,6 +377,7 @@ Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
         r.problem = msg<MsgId::GatewayConfigBadName>(c->name.toStdString());
     r.integerInto(QStringLiteral("statisticsIntervalMs"), GatewayConfig::MinStatisticsIntervalMs,
                   GatewayConfig::MaxStatisticsIntervalMs, &c->statisticsIntervalMs);
+    r.integerInto(QStringLiteral("commandMaxAgeSec"), 1, 3600, &c->commandMaxAgeSec);
     const QJsonObject link = r.object(QStringLiteral("link"), true);
     r.known({QStringLiteral("allow"), QStringLiteral("watchLists")}); // read below
     r.rejectUnknown();

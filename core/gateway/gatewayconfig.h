@@ -32,6 +32,9 @@ struct GatewayConnectionConfig
     // Elements a write may touch; empty: no writes at all.
     std::vector<AddressRange> allow;
     int statisticsIntervalMs = 5000;
+    // A write command older than this (its "time", or how long it waited at the broker while the
+    // gateway was away) is refused instead of carried out late.
+    int commandMaxAgeSec = 10;
 
     // Whether `address` lies in one of the allowlist's ranges.
     bool allows(const Address &address) const;

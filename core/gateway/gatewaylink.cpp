@@ -18,6 +18,19 @@ std::string addressString(const Address &address)
     return address.toString();
 }
 
+// A persistent session (issue 33): with a client id fixed per connection the broker keeps the
+// subscription and the QoS 1 commands sent while the gateway is away, so that every command is
+// answered (carried out, or refused as too old) when it comes back.
+MqttBrokerSettings persistentSession(MqttBrokerSettings broker, const QString &prefix,
+                                     const QString &connection)
+{
+    const QString base
+        = broker.clientId.isEmpty() ? QStringLiteral("fatek-gateway-") + prefix : broker.clientId;
+    broker.clientId = base + QLatin1Char('-') + connection;
+    broker.cleanSession = false;
+    return broker;
+}
+
 } // namespace
 
 GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &prefix,
@@ -28,7 +41,7 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
     , m_readOnly(readOnly)
     , m_linkText(config.link.toString())
     , m_session(new Session(config.link, this))
-    , m_client(new MqttClient(broker, this))
+    , m_client(new MqttClient(persistentSession(broker, prefix, config.name), this))
     , m_publisher(new GatewayPublisher(m_client, this))
 {
     registerSessionMetaTypes();
@@ -56,9 +69,14 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
     connect(m_session, &Session::linkStateChanged, this, &GatewayLink::onLinkState);
     connect(m_client, &MqttClient::messageReceived, this, &GatewayLink::onCommand);
     connect(m_client, &MqttClient::connected, this, [this] {
+        m_brokerDown = false;
         Q_EMIT logEvent(msg<MsgId::GatewayLogBrokerUp>(m_client->settings().toUrl().toStdString()));
     });
     connect(m_client, &MqttClient::disconnected, this, [this](const Message &reason) {
+        if (!m_brokerDown) {
+            m_brokerDown = true;
+            m_brokerDownAt = QDateTime::currentDateTimeUtc();
+        }
         if (!m_stopping)
             Q_EMIT logEvent(msg<MsgId::GatewayLogBrokerDown>(reason));
     });
@@ -302,7 +320,32 @@ void GatewayLink::refuse(GatewayPayload::Reply reply, const Message &why)
     answer(reply);
 }
 
-void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, bool retained)
+Message GatewayLink::tooOld(const GatewayPayload::SetCommand &command, bool queued) const
+{
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    const qint64 maxMs = qint64(m_config.commandMaxAgeSec) * 1000;
+    const auto seconds = [](qint64 ms) {
+        return QString::number(static_cast<double>(ms) / 1000.0, 'f', 1).toStdString();
+    };
+    if (command.time) {
+        const qint64 age = command.time->msecsTo(now);
+        return age > maxMs
+                   ? msg<MsgId::GatewayWriteExpired>(seconds(age), m_config.commandMaxAgeSec)
+                   : Message{};
+    }
+    if (!queued)
+        return {}; // came straight through: as old as the broker's hand-over
+    // Kept by the broker while this gateway was away: at most as old as the outage.
+    if (!m_brokerDownAt.isValid())
+        return msg<MsgId::GatewayWriteAgeUnknown>(m_config.commandMaxAgeSec);
+    const qint64 waited = m_brokerDownAt.msecsTo(now);
+    return waited > maxMs
+               ? msg<MsgId::GatewayWriteWaited>(seconds(waited), m_config.commandMaxAgeSec)
+               : Message{};
+}
+
+void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, bool retained,
+                            bool queued)
 {
     const std::optional<GatewayTopics::Parsed> parsed = GatewayTopics::parse(m_prefix, topic);
     if (m_stopping)
@@ -332,6 +375,8 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
         return refuse(reply, decodeError);
     if (m_readOnly)
         return refuse(reply, msg<MsgId::GatewayWriteReadOnly>());
+    if (Message old = tooOld(*command, queued); !old.empty())
+        return refuse(reply, old);
 
     // The item's spec: the command's format, else the watched item's at this address, else the
     // address's default (as a new row of a watch table gets).

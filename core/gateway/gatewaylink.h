@@ -81,7 +81,9 @@ private:
 
     void onValues(const QList<WatchValue> &values);
     void onLinkState(LinkState state, const Message &reason);
-    void onCommand(const QString &topic, const QByteArray &payload, bool retained);
+    void onCommand(const QString &topic, const QByteArray &payload, bool retained, bool queued);
+    // Why a command is too old to carry out (empty: it is not).
+    Message tooOld(const GatewayPayload::SetCommand &command, bool queued) const;
     void update(std::size_t index, const std::vector<std::uint32_t> &words, ValueQuality quality,
                 const Message &error, const QDateTime &time);
     void markDirty(std::size_t index);
@@ -118,6 +120,8 @@ private:
     QElapsedTimer m_stopClock;
     int m_stopTimeoutMs = 0;
     bool m_stopping = false;
+    bool m_brokerDown = true;
+    QDateTime m_brokerDownAt; // when the link to the broker last went down (invalid: never)
     bool m_stopped = false;
 };
 

@@ -329,6 +329,7 @@ void GatewayWatch::write(const WatchItemSpec &item, std::uint64_t raw, QObject *
         command.format = item.format;
         command.swapWords = item.swapWords;
         command.id = id;
+        command.time = QDateTime::currentDateTimeUtc(); // a late delivery is refused, not done
         const QString topic = GatewayTopics::itemSet(m_settings.prefix, m_settings.connection,
                                                      item.station, item.address);
         if (!m_client->publish(topic, GatewayPayload::encodeSet(command), 1, false))

@@ -371,6 +371,16 @@ std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteA
         if (object->contains(QStringLiteral("swapWords")))
             command.swapWords = object->value(QStringLiteral("swapWords")).toBool();
         command.id = object->value(QStringLiteral("id")).toString();
+        if (object->contains(QStringLiteral("time"))) {
+            const QString text = object->value(QStringLiteral("time")).toString();
+            const QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
+            if (!time.isValid() || time.timeSpec() == Qt::LocalTime) {
+                // Without an offset the sender's clock zone is a guess: refuse to guess.
+                *error = msg<MsgId::GatewaySetBadTime>(text.left(40).toStdString());
+                return std::nullopt;
+            }
+            command.time = time;
+        }
         return command;
     }
     if (trimmed.isEmpty()) {
@@ -398,6 +408,8 @@ QByteArray GatewayPayload::encodeSet(const SetCommand &command)
         object.insert(QStringLiteral("swapWords"), *command.swapWords);
     if (!command.id.isEmpty())
         object.insert(QStringLiteral("id"), command.id);
+    if (command.time)
+        object.insert(QStringLiteral("time"), command.time->toUTC().toString(Qt::ISODateWithMs));
     return QJsonDocument(object).toJson(QJsonDocument::Compact);
 }
 

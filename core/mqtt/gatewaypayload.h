@@ -84,6 +84,9 @@ struct SetCommand
     std::optional<DisplayFormat> format;
     std::optional<bool> swapWords;
     QString id;
+    // When the command was sent (optional): a command older than the connection's
+    // commandMaxAgeSec is refused, not carried out late.
+    std::optional<QDateTime> time;
 };
 // nullopt: the payload is neither text nor a JSON object with a value; `error` says why.
 std::optional<SetCommand> decodeSet(const QByteArray &payload, Message *error);

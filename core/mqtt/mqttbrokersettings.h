@@ -23,6 +23,10 @@ struct MqttBrokerSettings
     QString password;
     // Empty: one is made up ("fatek-<host>-<pid>-<n>").
     QString clientId;
+    // false: a persistent session (MQTT clean session off): with a fixed clientId the broker keeps
+    // the subscriptions and queues QoS 1 messages while the client is away (the gateway's
+    // commands, issue 33).
+    bool cleanSession = true;
     int keepAliveSec = 30;
     // Reconnect: first delay, doubled after each failure up to the maximum.
     int reconnectMinMs = 500;

@@ -122,8 +122,12 @@ struct MqttClientShared
         QString topic;
         QByteArray payload;
         bool retained = false;
+        bool queued = false;
     };
     std::vector<Incoming> inbox;
+    // Network thread only: the broker resumed a persistent session; what it sends before the
+    // answer to our SUBSCRIBE waited at the broker while this client was away.
+    bool resumed = false;
 
     // CrossThreadCall: a queued call with the marks ThreadSanitizer needs to see the hand-over
     // (Debian's Qt is not built with TSan; a plain invokeMethod reads as a race).
@@ -155,9 +159,10 @@ MqttClientShared *sharedOf(void *userdata)
     return static_cast<MqttClientShared *>(userdata);
 }
 
-void onConnect(struct mosquitto *mosq, void *userdata, int rc)
+void onConnect(struct mosquitto *mosq, void *userdata, int rc, int flags)
 {
     MqttClientShared *shared = sharedOf(userdata);
+    shared->resumed = rc == 0 && (flags & 1) != 0; // CONNACK's "session present"
     if (rc != 0) {
         const Message reason
             = msg<MsgId::MqttRefused>(shared->url, Message::text(mosquitto_connack_string(rc)));
@@ -175,6 +180,11 @@ void onConnect(struct mosquitto *mosq, void *userdata, int rc)
         mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
     shared->connackSeen = true;
     shared->post([](MqttClient *client) { Q_EMIT client->connected(); });
+}
+
+void onSubscribe(struct mosquitto *, void *userdata, int, int, const int *)
+{
+    sharedOf(userdata)->resumed = false; // queued messages came before this answer
 }
 
 void onDisconnect(struct mosquitto *, void *userdata, int rc)
@@ -195,7 +205,7 @@ void onMessage(struct mosquitto *, void *userdata, const struct mosquitto_messag
     shared->inbox.push_back(
         {QString::fromUtf8(message->topic),
          QByteArray(static_cast<const char *>(message->payload), message->payloadlen),
-         message->retain});
+         message->retain, shared->resumed});
 }
 
 } // namespace
@@ -225,7 +235,7 @@ void MqttClientShared::deliverInbox()
     // One queued call per batch of received messages, not one per message.
     post([batch = std::move(inbox)](MqttClient *client) {
         for (const Incoming &in : batch)
-            Q_EMIT client->messageReceived(in.topic, in.payload, in.retained);
+            Q_EMIT client->messageReceived(in.topic, in.payload, in.retained, in.queued);
     });
     inbox.clear();
 }
@@ -421,7 +431,8 @@ bool MqttClient::open()
     }
     if (!wakerError.empty())
         return failWith(msg<MsgId::MqttLibraryError>(Message::text(wakerError)));
-    struct mosquitto *mosq = mosquitto_new(s.clientId.toUtf8().constData(), true, m_shared.get());
+    struct mosquitto *mosq
+        = mosquitto_new(s.clientId.toUtf8().constData(), s.cleanSession, m_shared.get());
     if (!mosq)
         return failWith(msg<MsgId::MqttLibraryError>(Message::text(libraryError(MOSQ_ERR_ERRNO))));
     auto fail = [&](int rc) {
@@ -432,7 +443,8 @@ bool MqttClient::open()
     // Nagle's algorithm held a message back until the broker's delayed ACK (40 ms on Linux):
     // batches are corked instead (handOver()).
     mosquitto_int_option(mosq, MOSQ_OPT_TCP_NODELAY, 1);
-    mosquitto_connect_callback_set(mosq, onConnect);
+    mosquitto_connect_with_flags_callback_set(mosq, onConnect);
+    mosquitto_subscribe_callback_set(mosq, onSubscribe);
     mosquitto_disconnect_callback_set(mosq, onDisconnect);
     mosquitto_publish_callback_set(mosq, onPublish);
     mosquitto_message_callback_set(mosq, onMessage);

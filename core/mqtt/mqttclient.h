@@ -53,7 +53,10 @@ Q_SIGNALS:
     // The link to the broker went down, or a connection attempt failed (reason says which); the
     // network thread tries again after the backoff delay.
     void disconnected(const Fatek::Message &reason);
-    void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
+    // `queued`: the broker kept it for this client's persistent session while the client was
+    // away (it may be old: a command's sender may have given up).
+    void messageReceived(const QString &topic, const QByteArray &payload, bool retained,
+                         bool queued);
 
 private:
     std::shared_ptr<MqttClientShared> m_shared;

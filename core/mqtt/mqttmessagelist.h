@@ -65,3 +65,23 @@ FATEK_MSG(GatewayWriteTooLong, 1,
 FATEK_MSG(GatewayWriteBusy, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Refused: %1 writes are already waiting on this connection."))
+// Commands kept by the broker while the gateway was away (issue 33): never carried out late.
+// %1 seconds, %2 the connection's commandMaxAgeSec.
+FATEK_MSG(GatewayWriteExpired, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Expired: the command is %1 s old (commands older than %2 s are not "
+                            "carried out); send it again."))
+FATEK_MSG(GatewayWriteWaited, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Expired: the command waited at the broker while the gateway was "
+                            "away, up to %1 s (commands older than %2 s are not carried out); "
+                            "send it again."))
+FATEK_MSG(GatewayWriteAgeUnknown, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Not carried out: the command waited at the broker while the "
+                            "gateway was away, for a time nobody knows; send it again, with "
+                            "\"time\" so that its age can be checked (at most %1 s)."))
+FATEK_MSG(GatewaySetBadTime, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"time\" must be a date and time in ISO 8601 with its offset "
+                            "(2026-11-27T10:15:00.000Z), not \"%1\"."))

@@ -107,6 +107,8 @@ private Q_SLOTS:
     void plcRestartGoesStaleThenGood();
     void neverReadItemsHaveNoValue();
     void silentStationIsDemoted();
+    void commandsWhileAwayAreAnswered();
+    void oldCommandIsRefused();
     void stalledBrokerKeepsNewestPerItem();
     void delayHistogramPercentiles();
     void logTextEscapesControls();
@@ -613,6 +615,79 @@ void TestGateway::silentStationIsDemoted()
     m_plc->setValue(addr("R100"), 4321);
     QTRY_COMPARE_WITH_TIMEOUT(inbox.item(topic("R100"))->text, QStringLiteral("4321"), Wait);
     QCOMPARE(inbox.item(topic("R100"))->quality, ValueQuality::Good);
+}
+
+void TestGateway::commandsWhileAwayAreAnswered()
+{
+    // Issue 33 (major 5): the gateway keeps a persistent session, so commands published while it
+    // is away wait at the broker and are all answered when it comes back: carried out when their
+    // "time" says they are fresh, refused when their age cannot be known. Nothing vanishes.
+    QVERIFY(startGateway(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    m_link.reset(); // the gateway stops (a restart, an update)
+    QTest::qWait(200);
+    QCOMPARE(simWrites(), 0);
+
+    const QString now = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
+    for (int i = 0; i < 10; ++i) {
+        const QByteArray address = QByteArray("R") + QByteArray::number(101 + i);
+        const QByteArray payload = R"({"value":")" + QByteArray::number(500 + i) + R"(","id":"c)"
+                                   + QByteArray::number(i) + R"(","time":")" + now.toUtf8()
+                                   + R"("})";
+        QVERIFY(client->publish(topic(address.constData()) + QStringLiteral("/set"), payload, 1,
+                                false));
+    }
+    // Without a time: how long it waited while the gateway was away is not known.
+    QVERIFY(client->publish(topic("R150") + QStringLiteral("/set"), R"({"value":"9","id":"u"})", 1,
+                            false));
+    QTest::qWait(300); // at the broker, not at the gateway
+
+    QVERIFY(startGateway(false));
+    for (int i = 0; i < 10; ++i) {
+        const QByteArray address = QByteArray("R") + QByteArray::number(101 + i);
+        const QString reply = topic(address.constData()) + QStringLiteral("/reply");
+        QTRY_VERIFY2_WITH_TIMEOUT(inbox.reply(reply).has_value(), address.constData(), Wait);
+        QVERIFY2(inbox.reply(reply)->ok, inbox.last.value(reply).payload.constData());
+        QCOMPARE(inbox.reply(reply)->id, QStringLiteral("c%1").arg(i));
+        QCOMPARE(m_plc->value(addr(address.constData())), std::optional<std::uint32_t>(500 + i));
+    }
+    const QString unknown = topic("R150") + QStringLiteral("/reply");
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(unknown).has_value(), Wait);
+    QVERIFY(!inbox.reply(unknown)->ok);
+    QCOMPARE(inbox.reply(unknown)->error.id, MsgId::GatewayWriteAgeUnknown);
+    QCOMPARE(m_plc->value(addr("R150")), std::optional<std::uint32_t>(0));
+    QCOMPARE(simWrites(), 10); // counted on the wire: the ten, nothing else
+}
+
+void TestGateway::oldCommandIsRefused()
+{
+    // A command whose time is older than commandMaxAgeSec (10 s) is refused, not carried out late.
+    QVERIFY(startGateway(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    const QByteArray old
+        = QDateTime::currentDateTimeUtc().addSecs(-12).toString(Qt::ISODateWithMs).toUtf8();
+    QVERIFY(client->publish(topic("R100") + QStringLiteral("/set"),
+                            R"({"value":"5","id":"old","time":")" + old + R"("})", 1, false));
+    const QString reply = topic("R100") + QStringLiteral("/reply");
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(reply).has_value(), Wait);
+    QVERIFY(!inbox.reply(reply)->ok);
+    QCOMPARE(inbox.reply(reply)->error.id, MsgId::GatewayWriteExpired);
+    QVERIFY2(QString::fromStdString(english(inbox.reply(reply)->error))
+                 .startsWith(QStringLiteral("Expired: the command is 12.")),
+             qPrintable(QString::fromStdString(english(inbox.reply(reply)->error))));
+    // A time without its offset is refused as such (the sender's zone would be a guess).
+    QVERIFY(client->publish(topic("R100") + QStringLiteral("/set"),
+                            R"({"value":"5","id":"local","time":"2026-11-27T10:00:00"})", 1,
+                            false));
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.reply(reply)->error.id, MsgId::GatewaySetBadTime, Wait);
+    QCOMPARE(simWrites(), 0);
+    QCOMPARE(m_plc->value(addr("R100")), std::optional<std::uint32_t>(1234));
 }
 
 void TestGateway::plcRestartGoesStaleThenGood()
