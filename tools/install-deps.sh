@@ -31,6 +31,8 @@ packages=(
     shared-mime-info libxml2-utils libglib2.0-bin
     # the MQTT gateway: the client library, and the broker its integration tests start
     libmosquitto-dev mosquitto
+    # certificates for the TLS tests of the MQTT client (a CA and a broker certificate per test)
+    openssl
 )
 
 missing=()

@@ -1474,6 +1474,22 @@
             <translation>Cannot reach the broker %1: %2</translation>
         </message>
         <message>
+            <source>the broker closed the connection before accepting it</source>
+            <translation>the broker closed the connection before accepting it</translation>
+        </message>
+        <message>
+            <source>%1; the broker may require a client certificate, and none is configured (certFile, keyFile)</source>
+            <translation>%1; the broker may require a client certificate, and none is configured (certFile, keyFile)</translation>
+        </message>
+        <message>
+            <source>the TLS handshake failed</source>
+            <translation>the TLS handshake failed</translation>
+        </message>
+        <message>
+            <source>%1 (the library says: %2)</source>
+            <translation>%1 (the library says: %2)</translation>
+        </message>
+        <message>
             <source>The broker %1 refused us: %2</source>
             <translation>The broker %1 refused us: %2</translation>
         </message>

@@ -1474,6 +1474,22 @@
             <translation>無法連線到代理伺服器 %1：%2</translation>
         </message>
         <message>
+            <source>the broker closed the connection before accepting it</source>
+            <translation>代理伺服器在接受連線前就關閉了連線</translation>
+        </message>
+        <message>
+            <source>%1; the broker may require a client certificate, and none is configured (certFile, keyFile)</source>
+            <translation>%1；代理伺服器可能要求用戶端憑證，但尚未設定（{&quot;certFile&quot;: ...}、{&quot;keyFile&quot;: ...}）</translation>
+        </message>
+        <message>
+            <source>the TLS handshake failed</source>
+            <translation>TLS 交握失敗</translation>
+        </message>
+        <message>
+            <source>%1 (the library says: %2)</source>
+            <translation>%1（函式庫訊息：%2）</translation>
+        </message>
+        <message>
             <source>The broker %1 refused us: %2</source>
             <translation>代理伺服器 %1 拒絕連線：%2</translation>
         </message>

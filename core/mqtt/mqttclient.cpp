@@ -125,6 +125,11 @@ struct MqttClientShared
         bool queued = false;
     };
     std::vector<Incoming> inbox;
+    // Network thread only: what the library said went wrong in this connection attempt (its
+    // TLS errors name the check that failed, "certificate verify failed"), and whether the
+    // attempt's failure was reported already (a refusing CONNACK).
+    std::vector<std::string> attemptErrors;
+    bool attemptReported = false;
     // Network thread only: the broker resumed a persistent session; what it sends before the
     // answer to our SUBSCRIBE waited at the broker while this client was away.
     bool resumed = false;
@@ -150,6 +155,7 @@ struct MqttClientShared
     void linkDown(int rc);
     void handOver(bool *stopping);
     void deliverInbox();
+    Message attemptMessage(const Message &general) const;
 };
 
 namespace {
@@ -164,6 +170,7 @@ void onConnect(struct mosquitto *mosq, void *userdata, int rc, int flags)
     MqttClientShared *shared = sharedOf(userdata);
     shared->resumed = rc == 0 && (flags & 1) != 0; // CONNACK's "session present"
     if (rc != 0) {
+        shared->attemptReported = true;
         const Message reason
             = msg<MsgId::MqttRefused>(shared->url, Message::text(mosquitto_connack_string(rc)));
         shared->post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
@@ -180,6 +187,21 @@ void onConnect(struct mosquitto *mosq, void *userdata, int rc, int flags)
         mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
     shared->connackSeen = true;
     shared->post([](MqttClient *client) { Q_EMIT client->connected(); });
+}
+
+void onLog(struct mosquitto *, void *userdata, int level, const char *text)
+{
+    if (level != MOSQ_LOG_ERR || !text)
+        return;
+    std::string line(text);
+    // "OpenSSL Error[0]: error:0A000086:SSL routines::certificate verify failed"
+    if (const auto routines = line.find("routines::"); routines != std::string::npos)
+        line = line.substr(routines + 10);
+    else if (const auto colon = line.find("]: "); colon != std::string::npos)
+        line = line.substr(colon + 3);
+    std::vector<std::string> &errors = sharedOf(userdata)->attemptErrors;
+    if (errors.size() < 3 && std::find(errors.begin(), errors.end(), line) == errors.end())
+        errors.push_back(line);
 }
 
 void onSubscribe(struct mosquitto *, void *userdata, int, int, const int *)
@@ -226,6 +248,23 @@ void MqttClientShared::linkDown(int rc)
     const Message reason = rc == 0 ? msg<MsgId::MqttClosed>(url)
                                    : msg<MsgId::MqttLinkLost>(url, Message::text(libraryError(rc)));
     post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
+}
+
+Message MqttClientShared::attemptMessage(const Message &general) const
+{
+    // "A TLS error occurred." alone does not say which check failed: the library's own lines do
+    // ("certificate verify failed", "tlsv13 alert certificate required").
+    if (attemptErrors.empty()) {
+        // The library said nothing more (its alert came on a path that does not log it): on TLS
+        // without a client certificate, the likeliest cause is the one to name.
+        if (settings.tls && settings.certFile.isEmpty())
+            return msg<MsgId::MqttMaybeNeedsCertificate>(general);
+        return general;
+    }
+    std::string detail;
+    for (const std::string &error : attemptErrors)
+        detail += (detail.empty() ? "" : "; ") + error;
+    return msg<MsgId::MqttErrorDetail>(general, detail);
 }
 
 void MqttClientShared::deliverInbox()
@@ -338,6 +377,8 @@ void MqttClientShared::run()
             if (stop)
                 break;
         }
+        attemptErrors.clear();
+        attemptReported = false;
         const int rc = first ? mosquitto_connect(mosq, settings.host.toUtf8().constData(),
                                                  settings.port, settings.keepAliveSec)
                              : mosquitto_reconnect(mosq);
@@ -350,11 +391,21 @@ void MqttClientShared::run()
             // Normally the library reported the loss already (onDisconnect()); if it did not,
             // the owner must still learn that the link is down.
             linkDown(MOSQ_ERR_CONN_LOST);
-            if (connackSeen.exchange(false))
+            if (connackSeen.exchange(false)) {
                 delayMs = settings.reconnectMinMs;
+            } else if (!attemptReported) {
+                // Connected, then dropped before the broker accepted us: a TLS handshake the
+                // broker failed (no client certificate), or a broker closing at once. Every
+                // such attempt is reported (the backoff paces them), with what the library saw.
+                const Message reason = msg<MsgId::MqttConnectFailed>(
+                    url,
+                    attemptMessage(attemptErrors.empty() ? msg<MsgId::MqttClosedBeforeAccepting>()
+                                                         : msg<MsgId::MqttTlsFailed>()));
+                post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
+            }
         } else {
-            const Message reason
-                = msg<MsgId::MqttConnectFailed>(url, Message::text(libraryError(rc)));
+            const Message reason = msg<MsgId::MqttConnectFailed>(
+                url, attemptMessage(Message::text(libraryError(rc))));
             post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
         }
         std::unique_lock lock(mutex);
@@ -448,6 +499,7 @@ bool MqttClient::open()
     mosquitto_disconnect_callback_set(mosq, onDisconnect);
     mosquitto_publish_callback_set(mosq, onPublish);
     mosquitto_message_callback_set(mosq, onMessage);
+    mosquitto_log_callback_set(mosq, onLog);
     if (!s.username.isEmpty()) {
         const QByteArray user = s.username.toUtf8();
         const QByteArray password = s.password.toUtf8();

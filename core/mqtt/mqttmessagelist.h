@@ -27,6 +27,17 @@ FATEK_MSG(MqttTimingInvalid, 0,
 FATEK_MSG(MqttConnectFailed, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "Cannot reach the broker %1: %2"))
 FATEK_MSG(MqttRefused, 2, QT_TRANSLATE_NOOP("Fatek::Message", "The broker %1 refused us: %2"))
+// A connection attempt the broker dropped before its CONNACK (TLS: no client certificate).
+FATEK_MSG(MqttClosedBeforeAccepting, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "the broker closed the connection before accepting it"))
+FATEK_MSG(MqttMaybeNeedsCertificate, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1; the broker may require a client certificate, and none is "
+                            "configured (certFile, keyFile)"))
+FATEK_MSG(MqttTlsFailed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "the TLS handshake failed"))
+// %1 a reason, %2 the MQTT library's own words on it (its TLS checks), as it gives them.
+FATEK_MSG(MqttErrorDetail, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 (the library says: %2)"))
 FATEK_MSG(MqttLinkLost, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Link to the broker %1 lost: %2"))
 FATEK_MSG(MqttClosed, 1, QT_TRANSLATE_NOOP("Fatek::Message", "Disconnected from the broker %1."))
 FATEK_MSG(MqttLibraryError, 1, QT_TRANSLATE_NOOP("Fatek::Message", "MQTT library error: %1"))

@@ -10,10 +10,16 @@
 #include "mosquittobroker.h"
 #include "testutil.h"
 
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTest>
 #include <QTimeZone>
 
@@ -64,6 +70,8 @@ private Q_SLOTS:
     void brokerUrls();
     void brokerSettingsValidate();
     void brokerTlsWhereTheLibraryHasIt();
+    void tlsFailuresSayWhich_data();
+    void tlsFailuresSayWhich();
     void topicsRoundTrip();
     void topicsRejectOthers();
     void messageJsonKeepsIdsAndNesting();
@@ -169,6 +177,92 @@ void TestMqtt::brokerTlsWhereTheLibraryHasIt()
 #else
     QVERIFY(MqttBrokerSettings::tlsAvailable());
     QVERIFY(settings->validate().empty());
+#endif
+}
+
+void TestMqtt::tlsFailuresSayWhich_data()
+{
+    QTest::addColumn<bool>("rightCa");
+    QTest::addColumn<QString>("expected");
+    // The broker wants a client certificate and the client has none: TLS 1.3 tells after the
+    // handshake, so the connection opens and closes before any CONNACK.
+    QTest::newRow("no client certificate")
+        << true << QStringLiteral("certificate required|may require a client certificate");
+    QTest::newRow("wrong CA") << false << QStringLiteral("certificate verify failed");
+}
+
+// Issue 33 (major 3): a failed TLS connection is reported at once, every attempt, naming the check
+// that failed (not "A TLS error occurred." alone, and not silence while the broker sees retries).
+void TestMqtt::tlsFailuresSayWhich()
+{
+#ifdef Q_OS_WIN
+    QSKIP("the Windows build's MQTT library has no TLS (brokerTlsWhereTheLibraryHasIt)");
+#else
+    QFETCH(bool, rightCa);
+    QFETCH(QString, expected);
+    TestUtil::MosquittoBroker broker;
+    const QDir dir(broker.directory());
+    const QString openssl = QStandardPaths::findExecutable(QStringLiteral("openssl"));
+    if (openssl.isEmpty())
+        QSKIP("openssl is not installed (tools/install-deps.sh installs it)");
+    const auto run = [&](const QStringList &args) {
+        QProcess p;
+        p.setWorkingDirectory(dir.path());
+        p.start(openssl, args);
+        return p.waitForFinished(30000) && p.exitCode() == 0;
+    };
+    const QStringList ec{QStringLiteral("-newkey"), QStringLiteral("ec"),
+                         QStringLiteral("-pkeyopt"), QStringLiteral("ec_paramgen_curve:prime256v1"),
+                         QStringLiteral("-nodes")};
+    for (const char *ca : {"ca", "other"}) {
+        const QString name = QString::fromLatin1(ca);
+        QVERIFY(run(QStringList{QStringLiteral("req"), QStringLiteral("-x509")} + ec
+                    + QStringList{QStringLiteral("-keyout"), name + QStringLiteral(".key"),
+                                  QStringLiteral("-out"), name + QStringLiteral(".crt"),
+                                  QStringLiteral("-days"), QStringLiteral("2"),
+                                  QStringLiteral("-subj"), QStringLiteral("/CN=test ") + name}));
+    }
+    QFile ext(dir.filePath(QStringLiteral("ext.cnf")));
+    QVERIFY(ext.open(QIODevice::WriteOnly));
+    ext.write("subjectAltName=IP:127.0.0.1\n");
+    ext.close();
+    QVERIFY(run(QStringList{QStringLiteral("req")} + ec
+                + QStringList{QStringLiteral("-keyout"), QStringLiteral("server.key"),
+                              QStringLiteral("-out"), QStringLiteral("server.csr"),
+                              QStringLiteral("-subj"), QStringLiteral("/CN=127.0.0.1")}));
+    QVERIFY(
+        run({QStringLiteral("x509"), QStringLiteral("-req"), QStringLiteral("-in"),
+             QStringLiteral("server.csr"), QStringLiteral("-CA"), QStringLiteral("ca.crt"),
+             QStringLiteral("-CAkey"), QStringLiteral("ca.key"), QStringLiteral("-CAcreateserial"),
+             QStringLiteral("-out"), QStringLiteral("server.crt"), QStringLiteral("-days"),
+             QStringLiteral("2"), QStringLiteral("-extfile"), QStringLiteral("ext.cnf")}));
+    QString error;
+    QVERIFY2(broker.start(&error, QStringLiteral("cafile %1\ncertfile %2\nkeyfile %3\n"
+                                                 "require_certificate true\n")
+                                      .arg(dir.filePath(QStringLiteral("ca.crt")),
+                                           dir.filePath(QStringLiteral("server.crt")),
+                                           dir.filePath(QStringLiteral("server.key")))),
+             qPrintable(error + broker.log()));
+
+    MqttBrokerSettings settings = settingsFor(broker);
+    settings.tls = true;
+    settings.caFile
+        = dir.filePath(rightCa ? QStringLiteral("ca.crt") : QStringLiteral("other.crt"));
+    MqttClient client(settings);
+    QSignalSpy failures(&client, &MqttClient::disconnected);
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(client.open());
+    QTRY_VERIFY_WITH_TIMEOUT(failures.size() >= 4, 5000); // each attempt, not only the first
+    qInfo("%lld attempts reported in %lld ms", static_cast<long long>(failures.size()),
+          static_cast<long long>(clock.elapsed()));
+    for (const QList<QVariant> &failure : failures) {
+        const QString reason = englishText(failure.front().value<Message>());
+        qInfo("%s", qPrintable(reason));
+        QVERIFY2(reason.startsWith(QStringLiteral("Cannot reach the broker ")), qPrintable(reason));
+        QVERIFY2(reason.contains(QRegularExpression(expected)), qPrintable(reason));
+    }
+    QVERIFY(!client.isConnected());
 #endif
 }
 
