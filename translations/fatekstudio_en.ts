@@ -1714,6 +1714,10 @@
             <translation>Refused: %1 writes are already waiting on this connection.</translation>
         </message>
         <message>
+            <source>Refused: no item &quot;%2&quot; on station &quot;%1&quot; (write the address as a watch table shows it, R100, and the station as 1 to 254).</source>
+            <translation>Refused: no item &quot;%2&quot; on station &quot;%1&quot; (write the address as a watch table shows it, R100, and the station as 1 to 254).</translation>
+        </message>
+        <message>
             <source>Expired: the command is %1 s old (commands older than %2 s are not carried out); send it again.</source>
             <translation>Expired: the command is %1 s old (commands older than %2 s are not carried out); send it again.</translation>
         </message>

@@ -1714,6 +1714,10 @@
             <translation>拒絕：此連線已有 %1 個寫入在等待。</translation>
         </message>
         <message>
+            <source>Refused: no item &quot;%2&quot; on station &quot;%1&quot; (write the address as a watch table shows it, R100, and the station as 1 to 254).</source>
+            <translation>拒絕：站號 &quot;%1&quot; 沒有項目 &quot;%2&quot;（位址請依監看表的寫法，例如 R100；站號為 1 到 254）。</translation>
+        </message>
+        <message>
             <source>Expired: the command is %1 s old (commands older than %2 s are not carried out); send it again.</source>
             <translation>已逾時：此命令已發出 %1 秒（超過 %2 秒的命令不予執行）；請重新傳送。</translation>
         </message>

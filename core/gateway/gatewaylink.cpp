@@ -3,6 +3,7 @@
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/mqttclient.h"
 #include "core/mqtt/mqttmessages.h"
+#include "core/protocol/logtext.h"
 #include "core/session/session.h"
 #include "gatewaymessages.h"
 #include "gatewaypublisher.h"
@@ -350,6 +351,25 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
     const std::optional<GatewayTopics::Parsed> parsed = GatewayTopics::parse(m_prefix, topic);
     if (m_stopping)
         return;
+    if (!parsed) {
+        // <prefix>/<connection>/<station>/<address>/set with levels that name no item: the
+        // sender waits on the matching reply topic, so it is answered there.
+        const QStringList levels = topic.mid(m_prefix.size() + 1).split(u'/');
+        if (topic.startsWith(m_prefix + u'/') && levels.size() == 4 && levels[0] == m_config.name
+            && levels[3] == u"set") {
+            ++m_counters.writesRefused;
+            GatewayPayload::Reply reply;
+            reply.stationLevel = levels[1];
+            reply.addressLevel = levels[2];
+            reply.error = msg<MsgId::GatewayNoSuchItem>(escapedForLog(levels[1].toStdString()),
+                                                        escapedForLog(levels[2].toStdString()));
+            reply.time = QDateTime::currentDateTimeUtc();
+            m_publisher->publishReply(topic.left(topic.size() - 3) + QStringLiteral("reply"),
+                                      GatewayPayload::encodeReply(reply));
+            Q_EMIT logEvent(msg<MsgId::GatewayWriteBadTopic>(topic.toStdString()));
+            return;
+        }
+    }
     if (!parsed || parsed->kind != GatewayTopics::Kind::Set
         || parsed->connection != m_config.name) {
         // Nowhere to answer: only counted and logged.

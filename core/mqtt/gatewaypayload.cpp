@@ -423,6 +423,10 @@ QByteArray GatewayPayload::encodeReply(const Reply &reply)
         {QStringLiteral("value"), reply.value},
         {QStringLiteral("time"), timeText(reply.time)},
     };
+    if (!reply.stationLevel.isEmpty() || !reply.addressLevel.isEmpty()) {
+        object.insert(QStringLiteral("station"), reply.stationLevel);
+        object.insert(QStringLiteral("address"), reply.addressLevel);
+    }
     if (!reply.ok)
         object.insert(QStringLiteral("error"), MessageJson::toJson(reply.error));
     return QJsonDocument(object).toJson(QJsonDocument::Compact);

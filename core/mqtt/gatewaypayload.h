@@ -104,6 +104,10 @@ struct Reply
     QString value;
     Message error;
     QDateTime time;
+    // A command on a topic that names no item (R99999, r100, station 01): the topic's levels as
+    // they were, in place of `station` and `address`.
+    QString stationLevel;
+    QString addressLevel;
 };
 QByteArray encodeReply(const Reply &reply);
 std::optional<Reply> decodeReply(const QByteArray &payload);

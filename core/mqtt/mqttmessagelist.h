@@ -76,6 +76,12 @@ FATEK_MSG(GatewayWriteTooLong, 1,
 FATEK_MSG(GatewayWriteBusy, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Refused: %1 writes are already waiting on this connection."))
+// A command on <prefix>/<connection>/<station>/<address>/set whose levels name no item: %1 the
+// station level, %2 the address level, as written.
+FATEK_MSG(GatewayNoSuchItem, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Refused: no item \"%2\" on station \"%1\" (write the address as a "
+                            "watch table shows it, R100, and the station as 1 to 254)."))
 // Commands kept by the broker while the gateway was away (issue 33): never carried out late.
 // %1 seconds, %2 the connection's commandMaxAgeSec.
 FATEK_MSG(GatewayWriteExpired, 2,

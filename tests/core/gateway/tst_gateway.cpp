@@ -109,6 +109,7 @@ private Q_SLOTS:
     void silentStationIsDemoted();
     void commandsWhileAwayAreAnswered();
     void oldCommandIsRefused();
+    void commandOnNoItemIsAnswered();
     void stalledBrokerKeepsNewestPerItem();
     void delayHistogramPercentiles();
     void logTextEscapesControls();
@@ -660,6 +661,30 @@ void TestGateway::commandsWhileAwayAreAnswered()
     QCOMPARE(inbox.reply(unknown)->error.id, MsgId::GatewayWriteAgeUnknown);
     QCOMPARE(m_plc->value(addr("R150")), std::optional<std::uint32_t>(0));
     QCOMPARE(simWrites(), 10); // counted on the wire: the ten, nothing else
+}
+
+void TestGateway::commandOnNoItemIsAnswered()
+{
+    // Issue 33 (minor): a command whose topic names no item is answered on its reply topic.
+    QVERIFY(startGateway(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    for (const char *level : {"1/R99999", "1/r100", "1/R0100", "01/R100"}) {
+        const QString base = QStringLiteral("fatek/line1/") + QLatin1String(level);
+        QVERIFY(
+            client->publish(base + QStringLiteral("/set"), R"({"value":"1","id":"n"})", 1, false));
+        const QString reply = base + QStringLiteral("/reply");
+        QTRY_VERIFY2_WITH_TIMEOUT(inbox.last.contains(reply), level, Wait);
+        const QJsonObject json = QJsonDocument::fromJson(inbox.last.value(reply).payload).object();
+        QCOMPARE(json.value(QStringLiteral("ok")).toBool(true), false);
+        QCOMPARE(json.value(QStringLiteral("error")).toObject().value(QStringLiteral("id")),
+                 QJsonValue(QStringLiteral("GatewayNoSuchItem")));
+        QCOMPARE(json.value(QStringLiteral("address")).toString(),
+                 QString::fromLatin1(level).section(u'/', 1));
+    }
+    QCOMPARE(simWrites(), 0);
 }
 
 void TestGateway::oldCommandIsRefused()
