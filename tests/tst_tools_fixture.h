@@ -23,10 +23,11 @@ struct Rig
     // Starts the simulator (RUN) and opens a session in `protocol`; false if it did not connect.
     bool start(Fatek::LinkSettings::ProtocolChoice protocol
                = Fatek::LinkSettings::ProtocolChoice::Facon,
-               int timeoutMs = 1000, int retries = 1)
+               int timeoutMs = 1000, int retries = 1,
+               const Fatek::ModelProfile &profile = Fatek::ModelProfile::fbs())
     {
         Fatek::registerSessionMetaTypes();
-        plc = std::make_unique<Fatek::SimulatedPlc>(Fatek::ModelProfile::fbs());
+        plc = std::make_unique<Fatek::SimulatedPlc>(profile);
         plc->setRunning(true);
         server = std::make_unique<Fatek::SimServer>(plc.get());
         QString error;

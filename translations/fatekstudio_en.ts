@@ -602,6 +602,10 @@
             <translation>Protocol auto-detect: station %1 answered neither in FACON nor in binary (%2)</translation>
         </message>
         <message>
+            <source>Not sent: a broadcast (station 0) has no station to detect the protocol with; give --protocol for a broadcast (or choose FACON or binary in the connection)</source>
+            <translation>Not sent: a broadcast (station 0) has no station to detect the protocol with; give --protocol for a broadcast (or choose FACON or binary in the connection)</translation>
+        </message>
+        <message>
             <source>No answer from station %1 within %2 ms (attempt %3 of %4).</source>
             <translation>No answer from station %1 within %2 ms (attempt %3 of %4).</translation>
         </message>
@@ -1206,12 +1210,24 @@
             <translation>The backup is for a %1, the PLC holds a %2: not restored, nothing was written.</translation>
         </message>
         <message>
+            <source>%1 with a %2-word program</source>
+            <translation>%1 with a %2-word program</translation>
+        </message>
+        <message>
+            <source>%1-word program (the PLC does not name its model)</source>
+            <translation>%1-word program (the PLC does not name its model)</translation>
+        </message>
+        <message>
             <source>Reading program page %1 failed: %2</source>
             <translation>Reading program page %1 failed: %2</translation>
         </message>
         <message>
             <source>Writing program page %1 failed: %2</source>
             <translation>Writing program page %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>%1 The PLC now holds a mixed program (%2 of %3 pages written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</source>
+            <translation>%1 The PLC now holds a mixed program (%2 of %3 pages written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</translation>
         </message>
         <message>
             <source>Verification failed: %1 pages on the PLC differ from the backup (%2).</source>
@@ -1428,6 +1444,10 @@
         <message>
             <source>Writing %1 failed: %2</source>
             <translation>Writing %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>%1 %2 of %3 values had been written when it stopped; the others may still hold their old values: restore the same file again.</source>
+            <translation>%1 %2 of %3 values had been written when it stopped; the others may still hold their old values: restore the same file again.</translation>
         </message>
         <message>
             <source>Reading the values back failed: %1</source>
@@ -3157,6 +3177,26 @@ Switch the PLC to STOP now?</translation>
         <message>
             <source>STOP failed: %1</source>
             <translation>STOP failed: %1</translation>
+        </message>
+        <message>
+            <source>%1 The PLC is in RUN.</source>
+            <translation>%1 The PLC is in RUN.</translation>
+        </message>
+        <message>
+            <source>%1 RUN failed: %2</source>
+            <translation>%1 RUN failed: %2</translation>
+        </message>
+        <message>
+            <source>%1 The PLC stays in STOP: switch it to RUN when the machine is ready.</source>
+            <translation>%1 The PLC stays in STOP: switch it to RUN when the machine is ready.</translation>
+        </message>
+        <message>
+            <source>%1
+
+Switch the PLC at %2 to RUN now? It starts the restored program.</source>
+            <translation>%1
+
+Switch the PLC at %2 to RUN now? It starts the restored program.</translation>
         </message>
         <message numerus="yes">
             <source>, about %n s left</source>

@@ -602,6 +602,10 @@
             <translation>通訊協定自動偵測：站號 %1 對 FACON 與二進位協定皆無回應（%2）</translation>
         </message>
         <message>
+            <source>Not sent: a broadcast (station 0) has no station to detect the protocol with; give --protocol for a broadcast (or choose FACON or binary in the connection)</source>
+            <translation>未送出：廣播（站號 0）沒有可用來偵測通訊協定的站號；廣播請指定 --protocol（或在連線設定中選擇 FACON 或二進位）</translation>
+        </message>
+        <message>
             <source>No answer from station %1 within %2 ms (attempt %3 of %4).</source>
             <translation>站號 %1 在 %2 ms 內沒有回應（第 %3 次，共 %4 次）。</translation>
         </message>
@@ -1206,12 +1210,24 @@
             <translation>此備份適用於 %1，PLC 為 %2：未還原，未寫入任何資料。</translation>
         </message>
         <message>
+            <source>%1 with a %2-word program</source>
+            <translation>%1，程式容量 %2 字組</translation>
+        </message>
+        <message>
+            <source>%1-word program (the PLC does not name its model)</source>
+            <translation>%1 字組程式（PLC 未提供機型）</translation>
+        </message>
+        <message>
             <source>Reading program page %1 failed: %2</source>
             <translation>讀取程式第 %1 頁失敗：%2</translation>
         </message>
         <message>
             <source>Writing program page %1 failed: %2</source>
             <translation>寫入程式第 %1 頁失敗：%2</translation>
+        </message>
+        <message>
+            <source>%1 The PLC now holds a mixed program (%2 of %3 pages written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</source>
+            <translation>%1 PLC 目前的程式新舊混合（%3 頁中已由備份寫入 %2 頁，其餘仍為舊程式），並維持在 STOP：請先以同一個檔案再還原一次，再切換到 RUN。</translation>
         </message>
         <message>
             <source>Verification failed: %1 pages on the PLC differ from the backup (%2).</source>
@@ -1428,6 +1444,10 @@
         <message>
             <source>Writing %1 failed: %2</source>
             <translation>寫入 %1 失敗：%2</translation>
+        </message>
+        <message>
+            <source>%1 %2 of %3 values had been written when it stopped; the others may still hold their old values: restore the same file again.</source>
+            <translation>%1 停止時 %3 個數值中已寫入 %2 個；其餘可能仍是舊值：請以同一個檔案再還原一次。</translation>
         </message>
         <message>
             <source>Reading the values back failed: %1</source>
@@ -3150,6 +3170,26 @@ Switch the PLC to STOP now?</source>
         <message>
             <source>STOP failed: %1</source>
             <translation>STOP 失敗：%1</translation>
+        </message>
+        <message>
+            <source>%1 The PLC is in RUN.</source>
+            <translation>%1 PLC 已在 RUN。</translation>
+        </message>
+        <message>
+            <source>%1 RUN failed: %2</source>
+            <translation>%1 RUN 失敗：%2</translation>
+        </message>
+        <message>
+            <source>%1 The PLC stays in STOP: switch it to RUN when the machine is ready.</source>
+            <translation>%1 PLC 維持 STOP：機台準備好後再切換至 RUN。</translation>
+        </message>
+        <message>
+            <source>%1
+
+Switch the PLC at %2 to RUN now? It starts the restored program.</source>
+            <translation>%1
+
+現在將 %2 的 PLC 切換至 RUN 嗎？將開始執行還原的程式。</translation>
         </message>
         <message numerus="yes">
             <source>, about %n s left</source>

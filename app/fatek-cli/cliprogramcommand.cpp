@@ -11,6 +11,8 @@
 #include <QJsonArray>
 #include <QTextStream>
 
+#include <algorithm>
+
 namespace Fatek {
 
 using namespace CliText;
@@ -243,6 +245,18 @@ void CliProgramCommand::confirmRestore(const ProgramImage &image,
                 json.insert(QStringLiteral("verified"), true);
                 json.insert(QStringLiteral("ok"), true);
                 block.json << json;
+                // The PLC stays in STOP unless the command line goes on to RUN it.
+                const QList<CliStep> &steps = options().steps;
+                const auto self = std::find_if(steps.begin(), steps.end(),
+                                               [this](const CliStep &s) { return &s == &step(); });
+                const bool runsNext = self != steps.end()
+                                      && std::any_of(self + 1, steps.end(), [](const CliStep &s) {
+                                             return s.command == CliCommandKind::Run;
+                                         });
+                if (!runsNext)
+                    out().note(QStringLiteral("The PLC stays in STOP: `fatek-cli run` starts the "
+                                              "restored program (or chain it: `fatek-cli stop "
+                                              "--then restore FILE --then run`)."));
                 succeedWith(block);
             });
     m_context.armWatchdog(m_context.requestBudgetMs());

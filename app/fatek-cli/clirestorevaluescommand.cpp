@@ -35,6 +35,7 @@ CliRestoreValuesCommand::~CliRestoreValuesCommand() = default;
 
 void CliRestoreValuesCommand::run()
 {
+    m_interrupted = false;
     const std::optional<MemorySnapshot> file = loadSnapshot(step().file);
     if (!file)
         return;
@@ -48,6 +49,10 @@ void CliRestoreValuesCommand::run()
         if (m_context.isDone())
             return;
         m_context.stopWatchdog();
+        if (m_interrupted) {
+            out().error(englishText(restorer->outcome()), ExitCode::Interrupted);
+            return m_context.finish(ExitCode::Interrupted);
+        }
         if (restorer->error())
             return m_context.failWithError(*restorer->error());
         printDifferences(restorer->mismatches(), true);
@@ -82,6 +87,16 @@ void CliRestoreValuesCommand::run()
     // In operator mode the restorer refuses at once (ErrorKind::ReadOnly, exit 5), nothing sent.
     m_context.armWatchdog(m_context.requestBudgetMs());
     restorer->start(m_context.station(), std::move(values));
+}
+
+void CliRestoreValuesCommand::interrupt()
+{
+    if (m_restorer && m_restorer->isRunning()) {
+        m_interrupted = true;
+        m_restorer->cancel(); // finished() at once: the handler above reports it
+        return;
+    }
+    CliSnapshotFileCommand::interrupt();
 }
 
 void CliRestoreValuesCommand::abandon()

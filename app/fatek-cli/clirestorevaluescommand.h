@@ -19,12 +19,15 @@ public:
     ~CliRestoreValuesCommand() override;
 
     void abandon() override;
+    // Ctrl-C while writing: the restore stops and says how many values it wrote.
+    void interrupt() override;
 
 protected:
     void run() override;
 
 private:
     std::unique_ptr<ValuesRestorer> m_restorer;
+    bool m_interrupted = false;
 };
 
 } // namespace Fatek

@@ -60,11 +60,23 @@ FATEK_MSG(ProgramModelMismatch, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The backup is for a %1, the PLC holds a %2: not restored, nothing "
                             "was written."))
+// The PLC's side of ProgramModelMismatch before its page 0 is read, from the detail status:
+// %1 the model it names ("FBs-28MC"), %2 the program size in words.
+FATEK_MSG(ProgramPlcModelSize, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 with a %2-word program"))
+FATEK_MSG(ProgramPlcUnknownModelSize, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1-word program (the PLC does not name its model)"))
 // %1 the page number, %2 why (a message).
 FATEK_MSG(ProgramReadPageFailed, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "Reading program page %1 failed: %2"))
 FATEK_MSG(ProgramWritePageFailed, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "Writing program page %1 failed: %2"))
+// A restore stopped by a fault while writing: %1 what failed (a message), %2 pages written,
+// %3 pages in all.
+FATEK_MSG(ProgramRestoreInterrupted, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 The PLC now holds a mixed program (%2 of %3 pages written from "
+                            "the backup, the rest from its old program) and stays in STOP: "
+                            "restore the same file again before switching it to RUN."))
 // %1 how many pages, %2 the page list ("3, 7-9").
 FATEK_MSG(ProgramVerifyFailed, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
@@ -157,6 +169,11 @@ FATEK_MSG(RestoreNothing, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The chosen ranges hold no value of the snapshot: nothing to write."))
 FATEK_MSG(RestoreWriteFailed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Writing %1 failed: %2"))
+// Writing stopped half-way (a fault, a cancel): %1 why, %2 values written, %3 values in all.
+FATEK_MSG(RestoreInterrupted, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 %2 of %3 values had been written when it stopped; the others may "
+                            "still hold their old values: restore the same file again."))
 FATEK_MSG(RestoreVerifyFailed, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "Reading the values back failed: %1"))
 FATEK_MSG(RestoreDiffer, 2,

@@ -11,6 +11,21 @@ namespace {
 using Problem = ProgramTransferResult::Problem;
 using TransferStatus = ProgramTransferResult::Status;
 
+// The model a backup records: the detail status's summary when it names the model ("FBs-28MC,
+// OS V3.1, program 13184 words"). Its main-unit bytes are documented for the FB series only, so
+// for any other PLC the family comes from the program header ("M series, OS V3.1, ...").
+QString modelTextOf(const DetailStatus &detail, const std::optional<ProgramHeader> &header)
+{
+    if (detail.modelName() || !header)
+        return QString::fromStdString(detail.summary());
+    std::string text = header->familyName() + " series";
+    if (const std::optional<std::string> os = detail.osVersionText())
+        text += ", OS " + *os;
+    if (detail.ladderSize)
+        text += ", program " + std::to_string(*detail.ladderSize) + " words";
+    return QString::fromStdString(text);
+}
+
 ProgramPage toPage(const std::vector<std::uint32_t> &values)
 {
     ProgramPage page{};
@@ -96,7 +111,9 @@ bool ProgramTransfer::start(Job job)
     m_pageCount = 0;
     m_done = 0;
     m_total = 0;
-    m_modelText.clear();
+    m_plcModelName.reset();
+    m_detail = {};
+    m_running = false;
     m_result = {};
     setPhase(Phase::Checking);
     Session *session = m_tracker.session();
@@ -139,9 +156,10 @@ void ProgramTransfer::readStatus()
             return failRequest(r, -1, false);
         if (stopIfCancelled(-1))
             return;
+        // RUN is reported only after the model and size checks: a restore that would be refused
+        // for another model must not have the PLC stopped for it first.
         const Bytes &status = r.response().data;
-        if (!status.empty() && PlcStatus::fromStatus1(status.front()).running)
-            return fail(Problem::Running, msg<MsgId::ProgramNotStopped>());
+        m_running = !status.empty() && PlcStatus::fromStatus1(status.front()).running;
         readSize();
     });
 }
@@ -156,7 +174,8 @@ void ProgramTransfer::readSize()
         const DetailStatus detail = DetailStatus::decode(r.response().data);
         if (!detail.ladderSize || *detail.ladderSize == 0)
             return fail(Problem::NoSize, msg<MsgId::ProgramNoSize>());
-        m_modelText = QString::fromStdString(detail.summary());
+        m_detail = detail;
+        m_plcModelName = detail.modelName();
         ProgramHeader size;
         size.ladderSize = *detail.ladderSize;
         m_pageCount = size.pageCount();
@@ -166,10 +185,12 @@ void ProgramTransfer::readSize()
         case Job::Restore: m_total = 2 * m_pageCount; break;
         }
         if (m_job != Job::Backup && m_image.header().ladderSize != size.ladderSize) {
-            return fail(
-                Problem::ModelMismatch,
-                msg<MsgId::ProgramModelMismatch>(m_image.header().model(),
-                                                 msg<MsgId::ProgramModel>("?", size.ladderSize)));
+            // The PLC's page 0 is not read yet: its model as the detail status names it.
+            const Message plcModel
+                = m_plcModelName ? msg<MsgId::ProgramPlcModelSize>(*m_plcModelName, size.ladderSize)
+                                 : msg<MsgId::ProgramPlcUnknownModelSize>(size.ladderSize);
+            return fail(Problem::ModelMismatch,
+                        msg<MsgId::ProgramModelMismatch>(m_image.header().model(), plcModel));
         }
         setPhase(m_job == Job::Restore ? Phase::Checking : Phase::Reading);
         emitProgress();
@@ -187,7 +208,8 @@ void ProgramTransfer::readPage(std::uint16_t page)
             ++m_done;
             emitProgress();
         }
-        if (m_job == Job::Restore || m_pages.size() == m_pageCount)
+        // In RUN only page 0 is read: the model check, before the PLC is asked to stop.
+        if (m_job == Job::Restore || m_running || m_pages.size() == m_pageCount)
             return afterRead();
         if (stopIfCancelled(page + 1))
             return;
@@ -204,7 +226,7 @@ void ProgramTransfer::afterRead()
         m_pages.clear();
         if (!image)
             return fail(Problem::NoHeader, msg<MsgId::ProgramPlcNoHeader>());
-        image->setModelText(m_modelText);
+        image->setModelText(modelTextOf(m_detail, plcHeader));
         image->setStation(m_station);
         image->setDate(QDateTime::currentDateTimeUtc());
         m_plcImage = std::move(*image);
@@ -220,11 +242,14 @@ void ProgramTransfer::afterRead()
     if (plcHeader && !plcHeader->sameModel(m_image.header()))
         return fail(Problem::ModelMismatch,
                     msg<MsgId::ProgramModelMismatch>(m_image.header().model(), plcHeader->model()));
+    // The backup fits this PLC: only now is RUN a reason to stop (and to ask for STOP).
+    if (m_running)
+        return fail(Problem::Running, msg<MsgId::ProgramNotStopped>());
     if (m_job == Job::Check) {
         ProgramImage plc;
         if (auto read = ProgramImage::fromPages(m_pages))
             plc = std::move(*read);
-        plc.setModelText(m_modelText);
+        plc.setModelText(modelTextOf(m_detail, plcHeader));
         plc.setStation(m_station);
         plc.setDate(QDateTime::currentDateTimeUtc());
         // Compared page by page (a PLC without a header has no image: every page compared).
@@ -318,6 +343,8 @@ void ProgramTransfer::failRequest(const SessionResult &r, int page, bool writing
         message = writing ? msg<MsgId::ProgramWritePageFailed>(page, why)
                           : msg<MsgId::ProgramReadPageFailed>(page, why);
     }
+    if (writing && m_job == Job::Restore)
+        message = msg<MsgId::ProgramRestoreInterrupted>(message, m_done, m_pageCount);
     ProgramTransferResult result;
     result.status = TransferStatus::Failed;
     result.problem = r.errorKind() == ErrorKind::ReadOnly ? Problem::ReadOnly : Problem::Request;
@@ -338,8 +365,11 @@ void ProgramTransfer::fail(Problem problem, Message message, ErrorKind kind)
     result.status = TransferStatus::Failed;
     result.problem = problem;
     result.errorKind = kind;
-    result.message = std::move(message);
     const bool writing = m_job == Job::Restore && m_phase == Phase::Writing;
+    // The connection went away half-way through writing: the program is mixed.
+    result.message
+        = writing ? msg<MsgId::ProgramRestoreInterrupted>(std::move(message), m_done, m_pageCount)
+                  : std::move(message);
     result.pagesDone = m_job == Job::Restore
                            ? (writing ? m_done : (m_phase == Phase::Verifying ? m_pageCount : 0))
                            : m_done;

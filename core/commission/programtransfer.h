@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/protocol/plcstatus.h"
 #include "core/protocol/protocolerror.h"
 #include "core/session/requesttracker.h"
 #include "programimage.h"
@@ -9,6 +10,7 @@
 #include <QObject>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace Fatek {
@@ -53,10 +55,11 @@ struct ProgramTransferResult
 // page, finished() once at the end. cancel() stops between pages.
 //
 //   backup():        53 (program size), then 4F pages 0..N
-//   checkRestore():  refused in operator mode and in RUN (40), 53, 4F pages 0..N, model check:
-//                    finished() lists the pages that differ (nothing is written)
-//   restore():       refused in operator mode and in RUN, 53 and 4F page 0 (model check), 50
-//                    pages 0..N, then 4F every page back and compare
+//   checkRestore():  refused in operator mode; 40, 53, 4F pages 0..N, model check: finished()
+//                    lists the pages that differ (nothing is written). In RUN only page 0 is
+//                    read: a backup of another model is refused as such, then RUN is refused
+//   restore():       refused in operator mode; 40, 53 and 4F page 0 (model check, then RUN
+//                    refused), 50 pages 0..N, then 4F every page back and compare
 class ProgramTransfer : public QObject
 {
     Q_OBJECT
@@ -127,7 +130,9 @@ private:
     ProgramImage m_plcImage;
     std::vector<ProgramPage> m_pages; // pages read so far
     std::uint16_t m_pageCount = 0;
-    QString m_modelText;
+    DetailStatus m_detail;                     // 53 of this transfer
+    std::optional<std::string> m_plcModelName; // 53's model ("FBs-28MC"), when it names one
+    bool m_running = false;                    // restore: 40 said RUN (refused after the checks)
     int m_done = 0;
     int m_total = 0;
     std::vector<std::uint16_t> m_badPages;

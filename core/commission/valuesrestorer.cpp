@@ -146,6 +146,14 @@ int ValuesRestorer::requestsDone() const
     return m_written + m_reader.requestsDone();
 }
 
+int ValuesRestorer::valuesWritten() const
+{
+    std::size_t values = 0;
+    for (int i = 0; i < m_written && i < static_cast<int>(m_writes.size()); ++i)
+        values += m_writes[static_cast<std::size_t>(i)].values.size();
+    return static_cast<int>(values);
+}
+
 int ValuesRestorer::requestsTotal() const
 {
     return static_cast<int>(m_writes.size()) + std::max(1, m_reader.requestsTotal());
@@ -243,6 +251,10 @@ void ValuesRestorer::fail(ProtocolError error)
     if (!m_running)
         return;
     m_running = false;
+    // Stopped while writing: some values are new, some old. Say how many were written.
+    if (!m_writes.empty() && m_written < static_cast<int>(m_writes.size()))
+        error.message = msg<MsgId::RestoreInterrupted>(std::move(error.message), valuesWritten(),
+                                                       m_values.size());
     m_error = std::move(error);
     m_tracker.forgetPending();
     Q_EMIT finished();

@@ -40,6 +40,8 @@ public:
     int requestsDone() const;
     int requestsTotal() const;
     int writeRequestCount() const { return static_cast<int>(m_writes.size()); }
+    // Values of the writes the PLC confirmed so far.
+    int valuesWritten() const;
 
     // After finished(): written and read back equal.
     bool ok() const { return !m_error && m_mismatches.empty(); }

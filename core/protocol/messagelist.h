@@ -130,6 +130,11 @@ FATEK_MSG(LinkAutoDetectFailed, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Protocol auto-detect: station %1 answered neither in FACON nor in "
                             "binary (%2)"))
+FATEK_MSG(LinkBroadcastNeedsProtocol, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Not sent: a broadcast (station 0) has no station to detect the "
+                            "protocol with; give --protocol for a broadcast (or choose FACON or "
+                            "binary in the connection)"))
 
 // Requests the session did not complete.
 FATEK_MSG(SessionNoAnswerFromStation, 4,

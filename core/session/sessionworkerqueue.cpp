@@ -167,6 +167,17 @@ bool SessionWorker::prepare(SessionJob &job)
     // A raw frame goes as typed, or in the framing the caller chose: it needs no protocol.
     const bool needsProtocol = !job.raw || (job.addFraming && !job.options.framing);
     if (!m_protocol && !job.probe && needsProtocol) {
+        // A broadcast has no station to ask: probing station 1 for it would talk to a PLC the
+        // broadcast is not about (or to none). Refused here, nothing sent.
+        const bool broadcast = job.raw ? job.options.station == Limits::broadcastStation
+                                       : job.request.station == Limits::broadcastStation;
+        if (broadcast) {
+            deliver(job,
+                    SessionResult::fromError(makeError(ErrorKind::InvalidRequest,
+                                                       msg<MsgId::LinkBroadcastNeedsProtocol>()),
+                                             {}, job.raw));
+            return false;
+        }
         // Auto-detect: ask the job's station for its status in FACON, then binary.
         const quint8 station = stationOf(job) == 0 ? 1 : stationOf(job);
         auto waiting = std::make_shared<SessionJob>(std::move(job));

@@ -159,8 +159,12 @@ ModelProfile ModelProfile::mSeries()
     p.registers = {10000, 10000, 65536, 65536, 65536};
     p.status2 = 0x00;
     p.status3 = 0x00;
-    p.mainUnitType = 0x01;
-    p.ioPointsCode = 0x03;
+    // 53's main unit type and I/O points are documented for the FB series only (00 MA/MU,
+    // 01 MC; other values reserved) and the binary (M series) document lists no 53 answer: an M
+    // PLC must not read as an FBs model, so both bytes hold a reserved value and the M series
+    // shows through the program header's family instead.
+    p.mainUnitType = 0xFF;
+    p.ioPointsCode = 0xFF;
     p.osVersion = 0x31;
     p.programWords = 16384;
     p.programFamily = 'M';

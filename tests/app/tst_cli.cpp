@@ -15,6 +15,8 @@
 #endif
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -98,6 +100,7 @@ private Q_SLOTS:
     void plcErrorExit4();
     void linkFailureExit3();
     void readOnlyExit5();
+    void broadcastUnderAutoExit2();
 
     void reference_data();
     void reference();
@@ -616,6 +619,48 @@ void TestCli::readOnlyExit5()
                               QStringLiteral("read"), QStringLiteral("R100")}));
     RUN_OK(r);
     QCOMPARE(r.json().value(QStringLiteral("values")).toArray(), ints({0}));
+}
+
+// What a fatek-cli run put on a loopback TCP listener: the kernel accepts and buffers while the
+// test waits for the process, so everything sent is read afterwards.
+static QByteArray bytesReceivedBy(QTcpServer &server)
+{
+    QByteArray received;
+    while (server.waitForNewConnection(200)) {
+        while (QTcpSocket *peer = server.nextPendingConnection()) {
+            while (peer->waitForReadyRead(200))
+                received += peer->readAll();
+            received += peer->readAll();
+            delete peer;
+        }
+    }
+    return received;
+}
+
+// A broadcast has no station to detect the protocol with: under auto it is refused as a usage
+// error and nothing reaches the wire; with --protocol it goes out.
+void TestCli::broadcastUnderAutoExit2()
+{
+    QTcpServer listener;
+    QVERIFY(listener.listen(QHostAddress::LocalHost, 0));
+    const QString where = QStringLiteral("127.0.0.1:%1").arg(listener.serverPort());
+    const QStringList write{QStringLiteral("--station"), QStringLiteral("0"),
+                            QStringLiteral("write"), QStringLiteral("R6"), QStringLiteral("4321")};
+
+    const Run r = runCli(QStringList{QStringLiteral("--tcp"), where} + write);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(QLatin1String("give --protocol for a broadcast")), qPrintable(r.err));
+    QCOMPARE(bytesReceivedBy(listener), QByteArray());
+
+    const Run facon = runCli(QStringList{QStringLiteral("--tcp"), where,
+                                         QStringLiteral("--protocol"), QStringLiteral("facon")}
+                             + write);
+    RUN_OK(facon);
+    // STX, station 00, command 47 (write registers): the broadcast, with no probe in front.
+    const QByteArray sent = bytesReceivedBy(listener);
+    QVERIFY2(sent.startsWith("\x02"
+                             "0047"),
+             sent.constData());
 }
 
 void TestCli::reference_data()

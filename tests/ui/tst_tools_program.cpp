@@ -47,6 +47,9 @@ private Q_SLOTS:
     void restoreDeclinedWritesNothing();
     void operatorModeRefusesRestore();
     void damagedFileShown();
+    void otherModelRefusedBeforeAnyQuestion();
+    void restoreCutOffSaysTheProgramIsMixed();
+    void runDeclinedAfterRestore();
 
 private:
     void open(bool running);
@@ -124,21 +127,27 @@ void TestToolsProgram::backupThenRestoreByClicks()
     QVERIFY(ProgramImage::load(m_file).ok());
 
     // The program changes on the PLC; the restore asks to switch to STOP, then shows what it
-    // will write, then writes and verifies.
+    // will write, then writes and verifies, then offers RUN again (answered yes here).
     std::vector<std::uint32_t> page(64, 0x1234);
     QVERIFY(m_rig.plc->setProgramPage(3, page));
     QVERIFY(m_rig.plc->setProgramPage(4, page));
     QTest::mouseClick(button("restoreButton"), Qt::LeftButton);
     QVERIFY(waitIdle(*m_dialog));
-    QCOMPARE(m_rig.questions.size(), 2);
+    QCOMPARE(m_rig.questions.size(), 3);
     QVERIFY2(m_rig.questions.at(0).contains(QStringLiteral("STOP")),
              qPrintable(m_rig.questions.at(0)));
     QVERIFY2(m_rig.questions.at(1).contains(QStringLiteral("2 pages differ from the PLC (3-4)")),
              qPrintable(m_rig.questions.at(1)));
     QVERIFY2(m_rig.questions.at(1).contains(QStringLiteral("207 pages")),
              qPrintable(m_rig.questions.at(1)));
-    QVERIFY(!m_rig.plc->isRunning());
+    QVERIFY2(m_rig.questions.at(2).contains(QStringLiteral("to RUN now")),
+             qPrintable(m_rig.questions.at(2)));
+    QVERIFY2(m_rig.questions.at(2).contains(QStringLiteral("207 pages written and verified")),
+             qPrintable(m_rig.questions.at(2)));
+    QVERIFY(m_rig.plc->isRunning());
     QVERIFY2(m_dialog->messageText().contains(QStringLiteral("207 pages written and verified")),
+             qPrintable(m_dialog->messageText()));
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("The PLC is in RUN")),
              qPrintable(m_dialog->messageText()));
     QCOMPARE(plcPages(*m_rig.plc), original);
     QCOMPARE(bar->value(), 2 * 207);
@@ -204,6 +213,84 @@ void TestToolsProgram::damagedFileShown()
     QVERIFY2(m_dialog->messageText().contains(QStringLiteral("JSON")),
              qPrintable(m_dialog->messageText()));
     QCOMPARE(plcPages(*m_rig.plc), before);
+}
+
+// An M-series PLC in RUN and a backup of an FBs: refused for the model before any question, and
+// the PLC is never stopped for a restore that cannot happen.
+void TestToolsProgram::otherModelRefusedBeforeAnyQuestion()
+{
+    m_rig = Rig();
+    QVERIFY(m_rig.start(LinkSettings::ProtocolChoice::Facon, 1000, 1, ModelProfile::mSeries()));
+    QVERIFY(m_rig.plc->isRunning());
+    m_file = m_dir.filePath(QStringLiteral("fbs.fprog"));
+    QVERIFY(!ProgramImage::fromWords(ModelProfile::fbs().powerOnProgram())->save(m_file));
+    m_dialog = std::make_unique<ProgramTransferDialog>();
+    m_dialog->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_dialog->setConfirmer(m_rig.confirmer());
+    m_dialog->setFileChooser([this](bool) { return m_file; });
+    m_dialog->show();
+    const auto before = plcPages(*m_rig.plc);
+    QTest::mouseClick(button("restoreButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QVERIFY2(m_rig.questions.isEmpty(), qPrintable(m_rig.questions.join(QLatin1Char('|'))));
+    QVERIFY(m_rig.plc->isRunning());
+    QVERIFY(m_dialog->messageIsError());
+    const QString message = m_dialog->messageText();
+    QVERIFY2(message.contains(QStringLiteral("The backup is for a FBs series, 13184-word program")),
+             qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("16384-word program")), qPrintable(message));
+    QVERIFY2(!message.contains(QLatin1Char('?')), qPrintable(message));
+    QCOMPARE(plcPages(*m_rig.plc), before);
+}
+
+// The link drops while pages are written: the PLC holds part of each program and stays in STOP;
+// the message says so and what to do.
+void TestToolsProgram::restoreCutOffSaysTheProgramIsMixed()
+{
+    open(false);
+    std::vector<std::uint16_t> words = ModelProfile::fbs().powerOnProgram();
+    for (std::size_t i = 64; i < words.size(); ++i)
+        words[i] = static_cast<std::uint16_t>(i);
+    QVERIFY(!ProgramImage::fromWords(words)->save(m_file));
+    // The simulator goes away once 20 pages are written (the bar counts writing, then reading
+    // back: 2 x 207).
+    auto *bar = m_dialog->findChild<QProgressBar *>(QStringLiteral("progressBar"));
+    bool cut = false;
+    connect(bar, &QProgressBar::valueChanged, this, [&](int value) {
+        if (!cut && bar->maximum() == 2 * 207 && value >= 20) {
+            cut = true;
+            QTimer::singleShot(0, this, [this] { m_rig.server.reset(); });
+        }
+    });
+    QTest::mouseClick(button("restoreButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QVERIFY(cut);
+    QVERIFY(m_dialog->messageIsError());
+    const QString message = m_dialog->messageText();
+    QVERIFY2(message.contains(QStringLiteral("Writing program page")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("holds a mixed program")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("restore the same file again")), qPrintable(message));
+    QVERIFY(!m_rig.plc->isRunning());
+    // Only the question before writing: no RUN offered after a failure.
+    QCOMPARE(m_rig.questions.size(), 1);
+}
+
+// After a restore the PLC stays in STOP unless the person says otherwise (the default is No).
+void TestToolsProgram::runDeclinedAfterRestore()
+{
+    open(false);
+    std::vector<std::uint16_t> words = ModelProfile::fbs().powerOnProgram();
+    words[70] = 0x5555;
+    QVERIFY(!ProgramImage::fromWords(words)->save(m_file));
+    int asked = 0;
+    m_dialog->setConfirmer([&asked](const QString &) { return ++asked == 1; });
+    QTest::mouseClick(button("restoreButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QCOMPARE(asked, 2);
+    QVERIFY(!m_rig.plc->isRunning());
+    QVERIFY2(m_dialog->messageText().contains(QStringLiteral("stays in STOP")),
+             qPrintable(m_dialog->messageText()));
+    QVERIFY(!m_dialog->messageIsError());
 }
 
 QTEST_MAIN(TestToolsProgram)

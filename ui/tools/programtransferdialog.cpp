@@ -196,6 +196,32 @@ void ProgramTransferDialog::askToStop()
     });
 }
 
+void ProgramTransferDialog::offerRun(const QString &done)
+{
+    // Default No: a new program starts machinery; the person says when the machine is ready
+    // (an Enter pressed by habit must not start it). The PLC was in STOP for the restore.
+    const QString question
+        = tr("%1\n\nSwitch the PLC at %2 to RUN now? It starts the restored program.")
+              .arg(done, ToolConfirmation::target(m_station, m_connectionName));
+    if (!ToolConfirmation::ask(this, tr("Restore Program"), question, m_confirmer)) {
+        showMessage(
+            tr("%1 The PLC stays in STOP: switch it to RUN when the machine is ready.").arg(done),
+            false);
+        return;
+    }
+    m_stopping = true;
+    updateControls();
+    m_requests->submit(Request::runStop(m_station, true), [this, done](const SessionResult &r) {
+        m_stopping = false;
+        updateControls();
+        if (!r.ok()) {
+            showMessage(tr("%1 RUN failed: %2").arg(done, translated(r.errorMessage())), true);
+            return;
+        }
+        showMessage(tr("%1 The PLC is in RUN.").arg(done), false);
+    });
+}
+
 void ProgramTransferDialog::onProgress(int done, int total)
 {
     m_progress->setRange(0, qMax(1, total));
@@ -251,6 +277,10 @@ void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
         m_elapsed.start();
         m_transfer->restore(m_image);
         updateControls();
+        return;
+    }
+    if (step == Step::Restore && result.ok()) {
+        offerRun(translated(result.message));
         return;
     }
     if (step == Step::Check && result.problem == ProgramTransferResult::Problem::Running

@@ -20,8 +20,9 @@ class RequestTracker;
 class Session;
 
 // Tools → Program Backup / Restore…: the PLC's program to a file and back (core's
-// ProgramTransfer over 4F/50). A restore asks to switch a PLC in RUN to STOP, shows what it will
-// write (model, size, the pages that differ) before it writes, and is refused in operator mode.
+// ProgramTransfer over 4F/50). A restore checks the model first, then asks to switch a PLC in RUN
+// to STOP, shows what it will write (model, size, the pages that differ) before it writes, offers
+// RUN again once verified (default No), and is refused in operator mode.
 class ProgramTransferDialog : public QDialog
 {
     Q_OBJECT
@@ -54,6 +55,8 @@ private:
     void onFinished(const ProgramTransferResult &result);
     void onProgress(int done, int total);
     void askToStop();
+    // After a restore that verified: RUN again? (default No).
+    void offerRun(const QString &done);
     void showMessage(const QString &text, bool error);
     void updateControls();
 
@@ -67,7 +70,7 @@ private:
     Confirmer m_confirmer;
     FileChooser m_chooser;
     Step m_step = Step::None;
-    bool m_stopping = false;
+    bool m_stopping = false; // a STOP or RUN request is on its way
     bool m_askedStop = false;
     QString m_path;
     ProgramImage m_image;

@@ -83,6 +83,7 @@ private Q_SLOTS:
     void modelMismatchRefused();
     void cancelledRestoreSaysWhereItStopped();
     void restoreRefusedInRun();
+    void mSeriesNamedInBackup();
     void restoreRefusedInOperatorMode();
     void cancelledBackup();
     void verificationNamesThePagesThatDiffer();
@@ -405,8 +406,24 @@ void TestProgram::restoreRefusedInRun()
     QCOMPARE(r.status, ProgramTransferResult::Status::Failed);
     QCOMPARE(r.problem, ProgramTransferResult::Problem::Running);
     QVERIFY2(text(r.message).contains(QStringLiteral("STOP")), qPrintable(text(r.message)));
-    QCOMPARE(frames() - framesBefore, quint64{1}); // the 40 alone
+    // 40, 53 and page 0: the model is checked before RUN is reported (the question to STOP
+    // comes only for a restore that can go ahead).
+    QCOMPARE(frames() - framesBefore, quint64{3});
     QCOMPARE(plcPages(*m_rig.plc), before);
+}
+
+// The M profile's detail status names no FBs model: its backup names the M series (from the
+// program header's family), never "FBs-40MC".
+void TestProgram::mSeriesNamedInBackup()
+{
+    QVERIFY(m_rig.start(LinkSettings::ProtocolChoice::Facon, 1000, 1, ModelProfile::mSeries()));
+    ProgramTransfer transfer;
+    const ProgramTransferResult r = run(transfer, [&] { return transfer.backup(); });
+    QVERIFY2(r.ok(), qPrintable(text(r.message)));
+    const QString model = transfer.plcImage().modelText();
+    QVERIFY2(model.startsWith(QStringLiteral("M series")), qPrintable(model));
+    QVERIFY2(!model.contains(QStringLiteral("FBs")), qPrintable(model));
+    QVERIFY2(model.contains(QStringLiteral("16384")), qPrintable(model));
 }
 
 void TestProgram::restoreRefusedInOperatorMode()
@@ -519,6 +536,19 @@ void TestProgram::cliBackupRestoreRoundTrip()
              qPrintable(restore.out + restore.err));
     QCOMPARE(result.value(QStringLiteral("changedPages")).toArray().size(), 5);
     QCOMPARE(plcPages(*m_rig.plc), imagePages(saved.image()));
+    // The PLC stays in STOP; the output says how to start it.
+    QVERIFY(!m_rig.plc->isRunning());
+    QVERIFY2(restore.err.contains(QStringLiteral("--then restore FILE --then run")),
+             qPrintable(restore.err));
+    // Chained to RUN: started, and no such hint.
+    const Run chained
+        = runCli(link()
+                 + QStringList{QStringLiteral("--yes"), QStringLiteral("stop"),
+                               QStringLiteral("--then"), QStringLiteral("restore"), file,
+                               QStringLiteral("--then"), QStringLiteral("run")});
+    RUN_OK(chained);
+    QVERIFY2(!chained.err.contains(QStringLiteral("stays in STOP")), qPrintable(chained.err));
+    QVERIFY(m_rig.plc->isRunning());
 }
 
 void TestProgram::cliRestoreNeedsConfirmation()

@@ -17,12 +17,17 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
 #include <memory>
+
+#ifdef Q_OS_UNIX
+#include <csignal>
+#endif
 
 using namespace Fatek;
 
@@ -73,9 +78,11 @@ private Q_SLOTS:
     void restoreRoundTrip();
     void restoreRefusedInReadOnly();
     void cancel();
+    void interruptedRestoreSaysHowManyWritten();
 
     void cliSnapshotDiffRestore();
     void cliRestoreWithoutYesNotTerminal();
+    void cliRestoreInterruptedSaysHowManyWritten();
     void cliDiffOfTwoFilesOffline();
     void cliDamagedFile();
 
@@ -461,6 +468,32 @@ void TestSnapshot::cancel()
     QCOMPARE(m_plc->value(addr("D64")), std::optional<std::uint32_t>(0));
 }
 
+// A restore of values stopped half-way leaves some values new, some old: it says how many were
+// written (the PLC confirmed them), and what to do.
+void TestSnapshot::interruptedRestoreSaysHowManyWritten()
+{
+    ValuesRestorer restorer;
+    restorer.setSession(m_session.get());
+    QSignalSpy restored(&restorer, &ValuesRestorer::finished);
+    std::vector<SnapshotValue> values;
+    for (std::uint32_t n = 0; n < 1000; ++n)
+        values.push_back({Address{ElementType::D, n}, 7});
+    // Stopped once three writes of 64 registers are confirmed.
+    connect(&restorer, &ValuesRestorer::progress, this, [&restorer](int done) {
+        if (done == 3)
+            restorer.cancel();
+    });
+    restorer.start(1, values);
+    QVERIFY(restored.wait(20000));
+    QCOMPARE(restorer.valuesWritten(), 192);
+    const QString outcome = englishText(restorer.outcome());
+    QVERIFY2(outcome.contains(QLatin1String("192 of 1000 values had been written")),
+             qPrintable(outcome));
+    QVERIFY2(outcome.contains(QLatin1String("restore the same file again")), qPrintable(outcome));
+    QCOMPARE(m_plc->value(addr("D191")), std::optional<std::uint32_t>(7));
+    QCOMPARE(m_plc->value(addr("D999")), std::optional<std::uint32_t>(0));
+}
+
 void TestSnapshot::cliSnapshotDiffRestore()
 {
     m_plc->setValue(addr("R5"), 55);
@@ -531,6 +564,48 @@ void TestSnapshot::cliRestoreWithoutYesNotTerminal()
     QVERIFY2(r.err.contains(QLatin1String("Nothing was written")), qPrintable(r.err));
     QCOMPARE(m_server->counters().frames, framesBefore);
     QCOMPARE(m_plc->value(addr("R0")), std::optional<std::uint32_t>(1000));
+}
+
+// Ctrl-C during restore-values: not just "Interrupted.", but how many values were written.
+void TestSnapshot::cliRestoreInterruptedSaysHowManyWritten()
+{
+#ifdef Q_OS_UNIX
+    const QString file = m_dir->filePath(QStringLiteral("many.csv"));
+    for (std::uint32_t n = 0; n < 1000; ++n)
+        m_plc->setValue(Address{ElementType::D, n}, 5);
+    Run r = runCli(link()
+                   + QStringList{QStringLiteral("snapshot"), file, QStringLiteral("D0..D999")});
+    RUN_IS(r, 0);
+    for (std::uint32_t n = 0; n < 1000; ++n)
+        m_plc->setValue(Address{ElementType::D, n}, 0);
+    // Slow answers: 16 writes of 64 registers take seconds, Ctrl-C comes after the second.
+    FaultConfig slow;
+    slow.latencyMs = 150;
+    m_server->setFaults(slow);
+    const quint64 framesBefore = m_server->counters().frames;
+    QProcess p;
+    p.start(QStringLiteral(FATEK_CLI_PATH),
+            link() + QStringList{QStringLiteral("--yes"), QStringLiteral("restore-values"), file});
+    QVERIFY(p.waitForStarted(10000));
+    // The link's first query is a status (53) or a write: wait for three frames.
+    QTRY_VERIFY_WITH_TIMEOUT(m_server->counters().frames >= framesBefore + 3, 20000);
+    ::kill(static_cast<pid_t>(p.processId()), SIGINT);
+    QTRY_VERIFY_WITH_TIMEOUT(p.state() == QProcess::NotRunning, 10000);
+    const QString err = QString::fromUtf8(p.readAllStandardError());
+    QCOMPARE(p.exitCode(), 130);
+    static const QRegularExpression written(
+        QStringLiteral("(\\d+) of 1000 values had been written when it stopped"));
+    const QRegularExpressionMatch m = written.match(err);
+    QVERIFY2(m.hasMatch(), qPrintable(err));
+    QVERIFY2(err.contains(QLatin1String("restore the same file again")), qPrintable(err));
+    // The count is what the PLC holds: that many values from D0 on are written.
+    const int count = m.captured(1).toInt();
+    QVERIFY2(count >= 64 && count % 64 == 0 && count < 1000, qPrintable(err));
+    QCOMPARE(m_plc->value(Address{ElementType::D, static_cast<std::uint32_t>(count - 1)}),
+             std::optional<std::uint32_t>(5));
+#else
+    QSKIP("Unix signals");
+#endif
 }
 
 void TestSnapshot::cliDiffOfTwoFilesOffline()

@@ -138,6 +138,7 @@ private Q_SLOTS:
     void closeDrainIsBounded();
     void retriedWriteReportedOnce();
     void rawUnderAutoNeedsNoProbe();
+    void broadcastUnderAuto();
 
 private:
     // Opens the simulator endpoint for `transport` and fills `settings`; false (with QSKIP) if
@@ -1480,6 +1481,45 @@ void TestSession::rawUnderAutoNeedsNoProbe()
     QCOMPARE(session->protocol(), Protocol::Facon);
     QCOMPARE(m_server->counters().frames, quint64(3)); // the probe of station 9, then the frame
     QCOMPARE(m_server->counters().otherStation, quint64(0));
+}
+
+// A broadcast has no station to detect the protocol with: before the protocol is known it is
+// refused with nothing on the wire (not a probe of station 1); once a request detected it, a
+// broadcast goes out alone, without a probe in front.
+void TestSession::broadcastUnderAuto()
+{
+    LinkSettings settings;
+    QVERIFY(makeLink(QStringLiteral("tcp"), LinkSettings::ProtocolChoice::Auto, settings));
+    m_server->setStation(9);
+    auto session = openSession(settings);
+    Results results(session.get());
+    m_plc->setValue(addr("R6"), 1);
+
+    SessionResult r = run(*session, results, Request::writeRegisters(0, addr("R6"), {4321}));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errorKind(), ErrorKind::InvalidRequest);
+    QVERIFY2(r.errorText().contains(QStringLiteral("give --protocol for a broadcast")),
+             qPrintable(r.errorText()));
+    // The console's broadcast with framing to add: refused the same way.
+    RequestOptions broadcast;
+    broadcast.station = 0;
+    const quint64 id = session->sendRaw("0041", true, broadcast);
+    QVERIFY(results.waitFor(id));
+    QCOMPARE(results.map.value(id).errorKind(), ErrorKind::InvalidRequest);
+    QTest::qWait(200); // anything sent would have arrived by now
+    QCOMPARE(m_server->counters().bytesIn, quint64(0));
+    QCOMPARE(m_plc->value(addr("R6")), std::optional<std::uint32_t>(1));
+    QVERIFY(!session->isProtocolKnown());
+
+    // A request to a station detects the protocol (the probe, then the request) ...
+    CHECK_OK(run(*session, results, Request::readRegisters(9, addr("R6"), 1)));
+    QVERIFY(session->isProtocolKnown());
+    QCOMPARE(m_server->counters().frames, quint64(2));
+    // ... and the broadcast then goes out in it, alone.
+    CHECK_OK(run(*session, results, Request::writeRegisters(0, addr("R6"), {4321})));
+    QTRY_COMPARE_WITH_TIMEOUT(m_plc->value(addr("R6")), std::optional<std::uint32_t>(4321), 5000);
+    QTest::qWait(100);
+    QCOMPARE(m_server->counters().frames, quint64(3));
 }
 
 #include "tst_session.moc"
