@@ -202,12 +202,15 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
                 .arg(native, QDir::toNativeSeparators(info.absoluteDir().absolutePath())));
 
     m_file.setFileName(path);
-    // Read+append: an existing log's header is checked before anything is added to it.
-    if (!m_file.open(QIODevice::ReadWrite | QIODevice::Append))
+    // Read+append: an existing log's header is checked before anything is added to it. A device
+    // or a named pipe (QFileInfo follows links) cannot be read back nor sought: it is written
+    // only, each row flushed and checked like a file's.
+    const bool regular = !info.exists() || info.isFile();
+    if (!m_file.open(regular ? QIODevice::ReadWrite | QIODevice::Append : QIODevice::WriteOnly))
         return fileError(
             QStringLiteral("Cannot open %1 for writing: %2").arg(native, m_file.errorString()));
-    const bool isNew = m_file.size() == 0;
-    if (!isNew && m_file.isSequential() == false) {
+    const bool isNew = !regular || m_file.size() == 0;
+    if (!isNew) {
         m_file.seek(0);
         const QString existing = firstLine(m_file);
         if (existing != header) {
@@ -227,7 +230,8 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
     m_path = path;
     m_items = items;
     m_columns = columns;
-    if (isNew && m_file.write((header + QLatin1Char('\n')).toUtf8()) < 0)
+    if (const QByteArray head = (header + QLatin1Char('\n')).toUtf8();
+        isNew && m_file.write(head) != head.size())
         return fail(QStringLiteral("Cannot write to %1").arg(native));
     // The header reaches the disk at once: an unwritable medium shows up at start, not later.
     if (!m_file.flush())

@@ -63,6 +63,8 @@ public:
     Status close();
 
     bool isOpen() const { return m_file.isOpen(); }
+    // A write failed (disk full, removed medium): the log is closed, every call returns why.
+    bool writeFailed() const { return m_failure.has_value(); }
     QString path() const { return m_path; }
     qint64 rowCount() const { return m_rows; }
     QStringList columns() const { return m_columns; }
