@@ -12,10 +12,6 @@
 
 namespace Fatek::SafeFile {
 
-namespace {
-
-// Every byte or the device's reason: a short write (a full disk takes what fits) is retried,
-// and the retry gives the system's error.
 QString writeAll(QFileDevice &file, const QByteArray &data)
 {
     qint64 done = 0;
@@ -29,6 +25,8 @@ QString writeAll(QFileDevice &file, const QByteArray &data)
         return file.errorString();
     return {};
 }
+
+namespace {
 
 QString writeDirectly(const QString &path, const QByteArray &data)
 {

@@ -3,6 +3,8 @@
 #include <QByteArray>
 #include <QString>
 
+class QFileDevice;
+
 namespace Fatek::SafeFile {
 
 // Writes a whole file so that nothing half-written can pass as saved: the one place every writer
@@ -18,5 +20,11 @@ namespace Fatek::SafeFile {
 // Returns an empty text when the file is written, else the reason from the system in its words
 // ("No space left on device"), for the caller's sentence that names the file.
 QString write(const QString &path, const QByteArray &data);
+
+// Writes all of `data` to an open file (best opened Unbuffered, so each write reaches the system
+// and its result is the real one), then flushes it. A short write (the disk took what fit) is
+// retried, and the retry gives the system's error. Empty when written, else the reason. For the
+// data log, which appends row by row.
+QString writeAll(QFileDevice &file, const QByteArray &data);
 
 } // namespace Fatek::SafeFile

@@ -147,19 +147,32 @@ private Q_SLOTS:
     }
 
     // /dev/full takes no byte: each writer says why, and /dev/full stays the device it was (a
-    // temporary file renamed over it would replace the device node, as root).
+    // temporary file renamed over it would replace the device node, as root). Reached directly
+    // and through a link named as the writer wants (a snapshot's name says its format).
     void fullDeviceIsWrittenNotReplaced_data() { writers(); }
     void fullDeviceIsWrittenNotReplaced()
     {
         QFETCH(QString, writer);
+        QFETCH(QString, name);
         if (!isCharacterDevice(fullDevice))
             QSKIP("/dev/full is not a character device here");
         QTest::failOnWarning(QRegularExpression(QStringLiteral(".*")));
         const QStringList before = besideFullDevice();
-        const QString reason = saveWith(writer, fullDevice);
+        if (writer != QLatin1String("snapshot")) {
+            const QString direct = saveWith(writer, fullDevice);
+            QVERIFY2(direct.contains(noSpace), qPrintable(direct));
+            QVERIFY(isCharacterDevice(fullDevice));
+        }
+        QTemporaryDir dir(m_dir.filePath(QStringLiteral("link-XXXXXX")));
+        const QString link = dir.filePath(name);
+        QVERIFY(QFile::link(fullDevice, link));
+        const QString reason = saveWith(writer, link);
         QVERIFY2(reason.contains(noSpace), qPrintable(reason));
         QVERIFY(isCharacterDevice(fullDevice));
         QCOMPARE(besideFullDevice(), before);
+        // The link is still the link (not replaced by a file either).
+        QVERIFY(QFileInfo(link).isSymLink());
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::System), QStringList{name});
     }
 
     void dataLogOnFullDevice()
