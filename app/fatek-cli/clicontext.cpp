@@ -23,6 +23,12 @@ CliContext::CliContext(const CliOptions &options, QObject *parent)
                     ExitCode::Link);
         finish(ExitCode::Link);
     });
+    // stdout failed: the program ends at once (a monitor would otherwise poll on for no reader);
+    // queued, so that the command that was writing finishes its step first.
+    m_out.setOnFailure([this] {
+        QMetaObject::invokeMethod(
+            this, [this] { finish(m_out.failureExitCode()); }, Qt::QueuedConnection);
+    });
 }
 
 CliContext::~CliContext()
@@ -210,6 +216,9 @@ void CliContext::finish(int exitCode)
     if (m_done)
         return;
     m_done = true;
+    // Whatever the command made of it, output that did not arrive is not a success.
+    if (exitCode == ExitCode::Ok)
+        exitCode = m_out.failureExitCode();
     m_watchdog.stop();
     m_requests.forgetPending(); // results that still come are not reported
     if (m_session)

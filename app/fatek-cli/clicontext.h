@@ -57,7 +57,8 @@ public:
     int requestBudgetMs() const;
 
     bool isDone() const { return m_done; }
-    // Ends the program with `exitCode` (once): finished() follows at once.
+    // Ends the program with `exitCode` (once): finished() follows at once. Ok becomes the
+    // output's failure code when stdout could not be written (CliOutput::failureExitCode).
     void finish(int exitCode);
     // Reports a failed result (stderr / JSON) and ends with its exit code.
     void failWith(const SessionResult &result);

@@ -92,8 +92,11 @@ void CliMonitorCommand::run()
         // Every row reaches the disk at once: an interrupted monitor loses nothing.
         m_logger.setFlushIntervalMs(0);
         if (const Status s = m_logger.open(options().outputPath, items); !s) {
-            out().error(QString::fromStdString(s.error().text()), ExitCode::Usage);
-            return m_context.finish(ExitCode::Usage);
+            // A file that could not be written (full disk, /dev/full) is exit 1, like every file
+            // not written; a wrong path or another log's columns is a usage error.
+            const int code = m_logger.writeFailed() ? ExitCode::Internal : ExitCode::Usage;
+            out().error(QString::fromStdString(s.error().text()), code);
+            return m_context.finish(code);
         }
     }
     if (options().format == OutputFormat::Csv)
@@ -166,10 +169,10 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
         }
     }
     if (m_logger.isOpen()) {
-        if (const Status s = m_logger.writeRow(now, cells); !s) {
+        // A log that cannot be written (full disk) is said at once; the values go on on stdout,
+        // and the program ends with exit 1 (file not written) when the monitor ends.
+        if (const Status s = m_logger.writeRow(now, cells); !s)
             out().error(QString::fromStdString(s.error().text()), ExitCode::Internal);
-            return m_context.finish(ExitCode::Internal);
-        }
     }
     QJsonObject json;
     json.insert(QStringLiteral("cycle"), m_cycle);
@@ -213,8 +216,10 @@ void CliMonitorCommand::armForNextCycle(qsizetype elements)
 
 bool CliMonitorCommand::closeLog()
 {
+    const bool saidBefore = m_logger.writeFailed();
     if (const Status s = m_logger.close(); !s) {
-        out().error(QString::fromStdString(s.error().text()), ExitCode::Internal);
+        if (!saidBefore)
+            out().error(QString::fromStdString(s.error().text()), ExitCode::Internal);
         m_context.finish(ExitCode::Internal);
         return false;
     }

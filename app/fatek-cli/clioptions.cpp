@@ -74,10 +74,11 @@ QString usageText()
         "  restore-values FILE [RANGES]   write FILE's values back (default: all but X), after a\n"
         "                           confirmation (--yes), then read them back and compare\n"
         "\n"
-        "Exit codes: 0 ok, 1 file not written, 2 usage (also a damaged file, another model, a\n"
-        "restore not confirmed), 3 link failure (timeout, no connection), 4 PLC error (also RUN\n"
-        "during restore, program verification failed), 5 refused by --read-only, 6 differences\n"
-        "found (diff; restore-values read back other values).\n");
+        "Exit codes: 0 ok, 1 file or output not written (reason on stderr), 2 usage (also a\n"
+        "damaged file, another model, a restore not confirmed), 3 link failure (timeout, no\n"
+        "connection), 4 PLC error (also RUN during restore, program verification failed),\n"
+        "5 refused by --read-only, 6 differences found (diff; restore-values read back other\n"
+        "values), 130 interrupted (Ctrl-C), 141 the output's reader is gone (a closed pipe).\n");
 }
 
 CliParseResult parseCommandLine(const QStringList &arguments)

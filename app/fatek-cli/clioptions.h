@@ -18,7 +18,8 @@ namespace Fatek {
 // Exit codes of fatek-cli (documented in docs/cli.md).
 namespace ExitCode {
 inline constexpr int Ok = 0;
-inline constexpr int Internal = 1; // the tool itself failed (e.g. the simulator could not listen)
+inline constexpr int Internal
+    = 1; // the tool itself failed: a file or the output not written, the simulator could not listen
 inline constexpr int Usage = 2;    // bad command line, or a request that cannot be valid
 inline constexpr int Link = 3;     // timeout, no connection, broken answers
 inline constexpr int Plc = 4;      // the PLC answered with an error code
@@ -26,6 +27,8 @@ inline constexpr int ReadOnly = 5; // refused by --read-only
 inline constexpr int Differ = 6;   // diff found differences; restore-values read back others
 inline constexpr int Interrupted
     = 130; // Ctrl-C / SIGTERM before the command finished (128 + SIGINT)
+inline constexpr int ClosedPipe
+    = 141; // stdout's reader is gone ("| head"): ended quietly, as SIGPIPE would (128 + 13)
 } // namespace ExitCode
 
 enum class CliCommandKind {

@@ -1,14 +1,20 @@
 #include "clioutput.h"
 
+#include <QFile>
 #include <QJsonDocument>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+
+#ifdef Q_OS_UNIX
+#include <unistd.h>
+#endif
 
 namespace Fatek {
 
 CliOutput::CliOutput(OutputFormat format)
     : m_format(format)
-    , m_out(stdout)
     , m_err(stderr)
 {}
 
@@ -44,19 +50,20 @@ void CliOutput::print(const OutputBlock &block)
     switch (m_format) {
     case OutputFormat::Json:
         for (const QJsonObject &object : block.json)
-            m_out << jsonLine(object) << '\n';
+            write(jsonLine(object) + QLatin1Char('\n'));
         break;
     case OutputFormat::Csv: {
         QStringList header;
         for (const QString &c : block.columns)
             header << csvCell(c);
-        m_out << header.join(QLatin1Char(',')) << '\n';
+        QString text = header.join(QLatin1Char(',')) + QLatin1Char('\n');
         for (const QStringList &row : block.rows) {
             QStringList cells;
             for (const QString &c : row)
                 cells << csvCell(c);
-            m_out << cells.join(QLatin1Char(',')) << '\n';
+            text += cells.join(QLatin1Char(',')) + QLatin1Char('\n');
         }
+        write(text);
         break;
     }
     case OutputFormat::Table: {
@@ -67,6 +74,7 @@ void CliOutput::print(const OutputBlock &block)
             for (qsizetype i = 0; i < row.size() && i < widths.size(); ++i)
                 widths[i] = std::max(widths[i], static_cast<int>(row.at(i).size()));
         }
+        QString out;
         auto line = [&](const QStringList &cells, bool header) {
             QString text;
             for (qsizetype i = 0; i < cells.size(); ++i) {
@@ -79,16 +87,16 @@ void CliOutput::print(const OutputBlock &block)
                 else
                     text += last ? cells.at(i) : cells.at(i).leftJustified(w);
             }
-            m_out << text << '\n';
+            out += text + QLatin1Char('\n');
         };
         if (block.tableHeader)
             line(block.columns, true);
         for (const QStringList &row : block.rows)
             line(row, false);
+        write(out);
         break;
     }
     }
-    m_out.flush();
 }
 
 void CliOutput::beginStream(const QStringList &columns, const QList<int> &minWidths)
@@ -108,35 +116,32 @@ void CliOutput::beginStream(const QStringList &columns, const QList<int> &minWid
             header << (i == 0 ? columns.at(i).leftJustified(m_streamWidths.at(i))
                               : columns.at(i).rightJustified(m_streamWidths.at(i)));
     }
-    m_out << header.join(m_format == OutputFormat::Csv ? QStringLiteral(",") : QStringLiteral("  "))
-          << '\n';
-    m_out.flush();
+    write(header.join(m_format == OutputFormat::Csv ? QStringLiteral(",") : QStringLiteral("  "))
+          + QLatin1Char('\n'));
 }
 
 void CliOutput::streamRow(const QStringList &cells, const QJsonObject &json)
 {
     if (m_format == OutputFormat::Json) {
-        m_out << jsonLine(json) << '\n';
+        write(jsonLine(json) + QLatin1Char('\n'));
     } else if (m_format == OutputFormat::Csv) {
         QStringList out;
         for (const QString &c : cells)
             out << csvCell(c);
-        m_out << out.join(QLatin1Char(',')) << '\n';
+        write(out.join(QLatin1Char(',')) + QLatin1Char('\n'));
     } else {
         QStringList out;
         for (qsizetype i = 0; i < cells.size(); ++i) {
             const int w = i < m_streamWidths.size() ? m_streamWidths.at(i) : 0;
             out << (i == 0 ? cells.at(i).leftJustified(w) : cells.at(i).rightJustified(w));
         }
-        m_out << out.join(QLatin1String("  ")) << '\n';
+        write(out.join(QLatin1String("  ")) + QLatin1Char('\n'));
     }
-    m_out.flush();
 }
 
 void CliOutput::line(const QString &text)
 {
-    m_out << text << '\n';
-    m_out.flush();
+    write(text + QLatin1Char('\n'));
 }
 
 void CliOutput::error(const QString &message, int exitCode, const QJsonObject &extra)
@@ -147,9 +152,78 @@ void CliOutput::error(const QString &message, int exitCode, const QJsonObject &e
         QJsonObject object = extra;
         object.insert(QStringLiteral("error"), message);
         object.insert(QStringLiteral("code"), exitCode);
-        m_out << jsonLine(object) << '\n';
-        m_out.flush();
+        write(jsonLine(object) + QLatin1Char('\n'));
     }
+}
+
+QString CliOutput::writeStdout(const QByteArray &bytes, bool *closedPipe)
+{
+    if (closedPipe)
+        *closedPipe = false;
+#ifdef Q_OS_UNIX
+    // Straight to the descriptor: no stdio buffer that would fail later, unseen.
+    qint64 done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(STDOUT_FILENO, bytes.constData() + done,
+                                  static_cast<size_t>(bytes.size() - done));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            const int error = n < 0 ? errno : ENOSPC;
+            // Qt ignores SIGPIPE (for its sockets): a closed pipe shows up as EPIPE here.
+            if (closedPipe)
+                *closedPipe = error == EPIPE;
+            return QString::fromLocal8Bit(std::strerror(error));
+        }
+        done += n;
+    }
+    return {};
+#else
+    QFile out;
+    if (!out.open(stdout, QIODevice::WriteOnly, QFileDevice::DontCloseHandle))
+        return out.errorString();
+    if (out.write(bytes) != bytes.size() || !out.flush())
+        return out.errorString();
+    return {};
+#endif
+}
+
+int CliOutput::printStdout(const QString &text)
+{
+    bool closedPipe = false;
+    const QString reason = writeStdout(text.toUtf8(), &closedPipe);
+    if (reason.isEmpty())
+        return ExitCode::Ok;
+    if (closedPipe)
+        return ExitCode::ClosedPipe;
+    QTextStream(stderr) << "fatek-cli: Cannot write the output: " << reason << '\n';
+    return ExitCode::Internal;
+}
+
+void CliOutput::write(const QString &text)
+{
+    if (m_failure != Failure::None || text.isEmpty())
+        return;
+    bool closedPipe = false;
+    const QString reason = writeStdout(text.toUtf8(), &closedPipe);
+    if (reason.isEmpty())
+        return;
+    m_failure = closedPipe ? Failure::ClosedPipe : Failure::WriteError;
+    // A closed pipe ends the program quietly, as other Unix tools do.
+    if (!closedPipe)
+        note(QStringLiteral("Cannot write the output: %1").arg(reason));
+    if (m_onFailure)
+        m_onFailure();
+}
+
+int CliOutput::failureExitCode() const
+{
+    switch (m_failure) {
+    case Failure::None: return ExitCode::Ok;
+    case Failure::ClosedPipe: return ExitCode::ClosedPipe;
+    case Failure::WriteError: return ExitCode::Internal;
+    }
+    return ExitCode::Internal;
 }
 
 void CliOutput::note(const QString &message)

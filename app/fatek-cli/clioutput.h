@@ -9,6 +9,8 @@
 #include <QTextStream>
 #include <QVariant>
 
+#include <functional>
+
 namespace Fatek {
 
 // One result of a command in the three output shapes: table rows and CSV rows share the columns;
@@ -22,9 +24,17 @@ struct OutputBlock
 };
 
 // Writes results to stdout and reasons to stderr in the chosen format.
+//
+// Every write to stdout is checked. When stdout cannot take more, nothing more is written to it
+// and failed() says how: a closed pipe (the reader is gone, as with "| head") ends the program
+// quietly with ExitCode::ClosedPipe; any other failure (a full disk, /dev/full) is said once on
+// stderr ("Cannot write the output: No space left on device") and ends it with
+// ExitCode::Internal. The owner hears of it through setOnFailure (to end a monitor at once).
 class CliOutput
 {
 public:
+    enum class Failure { None, ClosedPipe, WriteError };
+
     explicit CliOutput(OutputFormat format);
 
     OutputFormat format() const { return m_format; }
@@ -45,9 +55,24 @@ public:
 
     static QString csvCell(const QString &text);
 
+    Failure failure() const { return m_failure; }
+    // The exit code a failed stdout ends the program with (ExitCode::Ok while it works).
+    int failureExitCode() const;
+    // Called once, at the first failed write to stdout.
+    void setOnFailure(std::function<void()> onFailure) { m_onFailure = std::move(onFailure); }
+
+    // Writes all of `bytes` to stdout (unbuffered); an empty text when written, else the reason
+    // from the system, and *closedPipe tells whether the reader is gone (EPIPE).
+    static QString writeStdout(const QByteArray &bytes, bool *closedPipe = nullptr);
+    // --help, --version: stdout without a CliOutput; the exit code (Ok, or the failure's).
+    static int printStdout(const QString &text);
+
 private:
+    void write(const QString &text);
+
     OutputFormat m_format;
-    QTextStream m_out;
+    Failure m_failure = Failure::None;
+    std::function<void()> m_onFailure;
     QTextStream m_err;
     QStringList m_streamColumns;
     QList<int> m_streamWidths;

@@ -1,5 +1,6 @@
 #include "app/common/quitsignal.h"
 #include "clioptions.h"
+#include "clioutput.h"
 #include "clirunner.h"
 
 #include <QCoreApplication>
@@ -10,10 +11,20 @@
 
 #include <cstdlib>
 
+#ifdef Q_OS_UNIX
+#include <csignal>
+#endif
+
 using namespace Fatek;
 
 int main(int argc, char *argv[])
 {
+#ifdef Q_OS_UNIX
+    // Qt ignores SIGPIPE once it opens a socket; ignored from the start, a closed stdout is always
+    // EPIPE, which CliOutput turns into a quiet end with ExitCode::ClosedPipe (also for --help and
+    // serial links, where no socket is opened), and the data log is closed on the way out.
+    ::signal(SIGPIPE, SIG_IGN);
+#endif
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("fatek-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
@@ -27,18 +38,16 @@ int main(int argc, char *argv[])
             // Scripts parsing stdout get the error in their format too.
             const QJsonObject error{{QStringLiteral("error"), parsed.error},
                                     {QStringLiteral("code"), ExitCode::Usage}};
-            QTextStream(stdout) << QJsonDocument(error).toJson(QJsonDocument::Compact) << '\n';
+            CliOutput::printStdout(
+                QString::fromUtf8(QJsonDocument(error).toJson(QJsonDocument::Compact)) + '\n');
         }
         return ExitCode::Usage;
     }
-    if (parsed.options->help) {
-        QTextStream(stdout) << usageText();
-        return ExitCode::Ok;
-    }
-    if (parsed.options->version) {
-        QTextStream(stdout) << "fatek-cli " << QCoreApplication::applicationVersion() << '\n';
-        return ExitCode::Ok;
-    }
+    if (parsed.options->help)
+        return CliOutput::printStdout(usageText());
+    if (parsed.options->version)
+        return CliOutput::printStdout(
+            QStringLiteral("fatek-cli %1\n").arg(QCoreApplication::applicationVersion()));
 
     CliRunner runner(*parsed.options);
     QObject::connect(

@@ -1,12 +1,12 @@
 #include "programimage.h"
 
 #include "commissionmessages.h"
+#include "core/watch/safefile.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 namespace Fatek {
 
@@ -222,17 +222,10 @@ ProgramImage::LoadResult ProgramImage::fromJson(const QByteArray &json)
 
 std::optional<ProgramFileError> ProgramImage::save(const QString &path) const
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        return fileError(ProgramFileError::Kind::Unwritable,
-                         msg<MsgId::ProgramFileUnwritable>(path.toStdString(),
-                                                           file.errorString().toStdString()));
-    }
-    file.write(toJson());
-    if (!file.commit()) {
-        return fileError(ProgramFileError::Kind::Unwritable,
-                         msg<MsgId::ProgramFileUnwritable>(path.toStdString(),
-                                                           file.errorString().toStdString()));
+    if (const QString reason = SafeFile::write(path, toJson()); !reason.isEmpty()) {
+        return fileError(
+            ProgramFileError::Kind::Unwritable,
+            msg<MsgId::ProgramFileUnwritable>(path.toStdString(), reason.toStdString()));
     }
     return std::nullopt;
 }

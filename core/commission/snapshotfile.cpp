@@ -1,12 +1,12 @@
 #include "snapshotfile.h"
 
 #include "commissionmessages.h"
+#include "core/watch/safefile.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QStringList>
 
 #include <cmath>
@@ -363,21 +363,10 @@ std::optional<Error> saveToFile(const MemorySnapshot &snapshot, const QString &p
     if (!format)
         return Error{Kind::Io, 0, 0, msg<MsgId::SnapshotFileUnknownType>(path.toStdString())};
     const QByteArray data = save(snapshot, *format);
-    QSaveFile out(path);
-    auto ioError = [&path](const QString &reason) {
+    if (const QString reason = SafeFile::write(path, data); !reason.isEmpty())
         return Error{Kind::Io, 0, 0,
                      msg<MsgId::SnapshotFileCannotWrite>(path.toStdString(),
                                                          Message::text(reason.toStdString()))};
-    };
-    if (!out.open(QIODevice::WriteOnly))
-        return ioError(out.errorString());
-    if (out.write(data) != data.size()) {
-        const QString reason = out.errorString();
-        out.cancelWriting();
-        return ioError(reason);
-    }
-    if (!out.commit())
-        return ioError(out.errorString());
     return std::nullopt;
 }
 

@@ -1,5 +1,7 @@
 #include "datalogger.h"
 
+#include "safefile.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QStringConverter>
@@ -202,12 +204,18 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
                 .arg(native, QDir::toNativeSeparators(info.absoluteDir().absolutePath())));
 
     m_file.setFileName(path);
-    // Read+append: an existing log's header is checked before anything is added to it.
-    if (!m_file.open(QIODevice::ReadWrite | QIODevice::Append))
+    // Read+append: an existing log's header is checked before anything is added to it. A device
+    // or a named pipe (QFileInfo follows links) cannot be read back nor sought: it is written
+    // only, each row flushed and checked like a file's.
+    const bool regular = !info.exists() || info.isFile();
+    // Unbuffered: each row reaches the system at once and its write's result is the real one
+    // (a buffered row that fails later, at a flush, loses the system's reason).
+    if (!m_file.open(regular ? QIODevice::ReadWrite | QIODevice::Append | QIODevice::Unbuffered
+                             : QIODevice::WriteOnly | QIODevice::Unbuffered))
         return fileError(
             QStringLiteral("Cannot open %1 for writing: %2").arg(native, m_file.errorString()));
-    const bool isNew = m_file.size() == 0;
-    if (!isNew && m_file.isSequential() == false) {
+    const bool isNew = !regular || m_file.size() == 0;
+    if (!isNew) {
         m_file.seek(0);
         const QString existing = firstLine(m_file);
         if (existing != header) {
@@ -221,17 +229,21 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
         char last = '\n';
         m_file.getChar(&last);
         m_file.seek(m_file.size());
-        if (last != '\n' && m_file.write("\n") != 1)
-            return fail(QStringLiteral("Cannot write to %1").arg(native));
+        if (last != '\n') {
+            if (const QString reason = SafeFile::writeAll(m_file, "\n"); !reason.isEmpty())
+                return fail(QStringLiteral("Cannot write to %1").arg(native), reason);
+        }
     }
     m_path = path;
     m_items = items;
     m_columns = columns;
-    if (isNew && m_file.write((header + QLatin1Char('\n')).toUtf8()) < 0)
-        return fail(QStringLiteral("Cannot write to %1").arg(native));
     // The header reaches the disk at once: an unwritable medium shows up at start, not later.
-    if (!m_file.flush())
-        return fail(QStringLiteral("Cannot write to %1").arg(native));
+    if (isNew) {
+        if (const QString reason
+            = SafeFile::writeAll(m_file, (header + QLatin1Char('\n')).toUtf8());
+            !reason.isEmpty())
+            return fail(QStringLiteral("Cannot write to %1").arg(native), reason);
+    }
     m_sinceFlush.start();
     return Ok{};
 }
@@ -243,8 +255,9 @@ Status DataLogger::writeRow(const QDateTime &time, const QList<Cell> &cells)
     if (!m_file.isOpen())
         return fileError(QStringLiteral("The data log is not open."));
     const QByteArray line = (rowLine(time, m_items, cells) + QLatin1Char('\n')).toUtf8();
-    if (m_file.write(line) != line.size())
-        return fail(QStringLiteral("Cannot write to %1").arg(QDir::toNativeSeparators(m_path)));
+    if (const QString reason = SafeFile::writeAll(m_file, line); !reason.isEmpty())
+        return fail(QStringLiteral("Cannot write to %1").arg(QDir::toNativeSeparators(m_path)),
+                    reason);
     ++m_rows;
     if (m_flushIntervalMs <= 0 || m_sinceFlush.elapsed() >= m_flushIntervalMs)
         return flush();
@@ -259,7 +272,8 @@ Status DataLogger::flush()
         return Ok{};
     m_sinceFlush.restart();
     if (!m_file.flush())
-        return fail(QStringLiteral("Cannot write to %1").arg(QDir::toNativeSeparators(m_path)));
+        return fail(QStringLiteral("Cannot write to %1").arg(QDir::toNativeSeparators(m_path)),
+                    m_file.errorString());
     return Ok{};
 }
 
@@ -272,11 +286,10 @@ Status DataLogger::close()
     return s;
 }
 
-Status DataLogger::fail(const QString &what)
+Status DataLogger::fail(const QString &what, const QString &reason)
 {
-    // QFile keeps the OS reason (e.g. "No space left on device").
-    m_failure
-        = fileError(QStringLiteral("%1: %2. Logging stopped.").arg(what, m_file.errorString()));
+    // The OS reason (e.g. "No space left on device").
+    m_failure = fileError(QStringLiteral("%1: %2. Logging stopped.").arg(what, reason));
     // Whatever the buffer still holds cannot be written either; drop it rather than retry.
     m_file.close();
     return *m_failure;

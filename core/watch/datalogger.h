@@ -36,9 +36,11 @@ namespace Fatek {
 //   item is fresh for one cause (the link is down); "ok" when every cell is fresh.
 //
 // The file is opened for appending: an empty or new file gets the header; an existing log must
-// have the same header (else open() refuses rather than mixing columns). Rows go through the
-// QFile buffer (bounded) and are flushed every flushIntervalMs; a failed write (disk full,
-// removed medium) closes the log and every later call returns that error.
+// have the same header (else open() refuses rather than mixing columns). A device or a named pipe
+// is written only (no header check). Each row is written unbuffered and checked
+// (SafeFile::writeAll): a failed write (disk full, removed medium) is returned by that row's
+// writeRow with the system's reason, closes the log, and every later call returns that error.
+// flushIntervalMs is kept for the callers; the rows reach the system as they are written.
 class DataLogger
 {
 public:
@@ -63,6 +65,8 @@ public:
     Status close();
 
     bool isOpen() const { return m_file.isOpen(); }
+    // A write failed (disk full, removed medium): the log is closed, every call returns why.
+    bool writeFailed() const { return m_failure.has_value(); }
     QString path() const { return m_path; }
     qint64 rowCount() const { return m_rows; }
     QStringList columns() const { return m_columns; }
@@ -89,7 +93,7 @@ public:
                            const QList<Cell> &cells);
 
 private:
-    Status fail(const QString &what);
+    Status fail(const QString &what, const QString &reason);
 
     QFile m_file;
     QString m_path;

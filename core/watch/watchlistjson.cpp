@@ -3,6 +3,7 @@
 
 // The watch list file: versioned JSON, read and written.
 
+#include "safefile.h"
 #include "watchlisterrors.h"
 
 #include <QFile>
@@ -11,7 +12,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
-#include <QSaveFile>
 
 #include <cmath>
 
@@ -303,16 +303,8 @@ Status saveToFile(const WatchListFile &file, const QString &path)
     if (Status s = validate(file); !s)
         return atPlace(msg<MsgId::PlaceNotSaved>(), s.error());
     const QByteArray data = save(file);
-    QSaveFile out(path);
-    if (!out.open(QIODevice::WriteOnly))
-        return fileError(QStringLiteral("Cannot write %1: %2").arg(path, out.errorString()));
-    if (out.write(data) != data.size()) {
-        const QString reason = out.errorString();
-        out.cancelWriting();
+    if (const QString reason = SafeFile::write(path, data); !reason.isEmpty())
         return fileError(QStringLiteral("Cannot write %1: %2").arg(path, reason));
-    }
-    if (!out.commit())
-        return fileError(QStringLiteral("Cannot write %1: %2").arg(path, out.errorString()));
     return Ok{};
 }
 

@@ -3,6 +3,7 @@
 // and UDP in both protocols.
 #include "testutil.h"
 
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -12,6 +13,7 @@
 
 #ifdef Q_OS_UNIX
 #include <csignal>
+#include <sys/stat.h>
 #endif
 #include <QRegularExpression>
 #include <QStandardPaths>
@@ -19,6 +21,8 @@
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <algorithm>
 
 namespace {
 
@@ -66,6 +70,89 @@ QStringList sim(const QStringList &args)
     return QStringList{QStringLiteral("--sim")} + args;
 }
 
+const QString fullDevice = QStringLiteral("/dev/full");
+const QString noSpace = QStringLiteral("No space left on device");
+
+bool isCharacterDevice(const QString &path)
+{
+#ifdef Q_OS_UNIX
+    struct stat st = {};
+    return ::stat(QFile::encodeName(path).constData(), &st) == 0 && S_ISCHR(st.st_mode);
+#else
+    Q_UNUSED(path);
+    return false;
+#endif
+}
+
+// fatek-cli with its standard output into `path` (a file or a device).
+Run runCliInto(const QString &path, const QStringList &arguments)
+{
+    QProcess p;
+    p.setStandardOutputFile(path);
+    p.start(QStringLiteral(FATEK_CLI_PATH), arguments);
+    Run r;
+    if (!p.waitForStarted(10000))
+        return r;
+    if (!p.waitForFinished(30000)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("fatek-cli did not end");
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QByteArray fileBytes(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("(unreadable)");
+}
+
+bool writeFile(const QString &path, const QByteArray &bytes)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size()
+           && f.flush();
+}
+
+// Every line on stderr is fatek-cli's own: no Qt warning slipped through.
+bool onlyOwnLines(const QString &err)
+{
+    const QStringList lines = err.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    return std::all_of(lines.begin(), lines.end(), [](const QString &line) {
+        return line.startsWith(QLatin1String("fatek-cli: "));
+    });
+}
+
+// A 64 KiB tmpfs at `dir` with 40000 bytes taken (the report's setup); unmounted by the guard.
+// An empty text when mounted, else why not.
+QString mountSmallDisk(const QString &dir)
+{
+    QDir().mkpath(dir);
+    QProcess mount;
+    mount.start(QStringLiteral("mount"),
+                {QStringLiteral("-t"), QStringLiteral("tmpfs"), QStringLiteral("-o"),
+                 QStringLiteral("size=64k"), QStringLiteral("tmpfs"), dir});
+    if (!mount.waitForFinished(10000) || mount.exitStatus() != QProcess::NormalExit
+        || mount.exitCode() != 0)
+        return QStringLiteral("Cannot mount a 64 KiB tmpfs (needs root and the right to mount in "
+                              "this container): %1")
+            .arg(QString::fromLocal8Bit(mount.readAllStandardError()).trimmed());
+    return {};
+}
+
+struct Unmount
+{
+    QString dir;
+    ~Unmount()
+    {
+        if (!dir.isEmpty())
+            QProcess::execute(QStringLiteral("umount"), {dir});
+    }
+};
+
 } // namespace
 
 #define RUN_OK(r)                                                                                  \
@@ -101,6 +188,16 @@ private Q_SLOTS:
     void linkFailureExit3();
     void readOnlyExit5();
     void broadcastUnderAutoExit2();
+
+    void filesOnFullDevice_data();
+    void filesOnFullDevice();
+    void filesOnFullDisk_data();
+    void filesOnFullDisk();
+    void monitorLogOnFullDevice();
+    void monitorLogFillsTheDisk();
+    void outputOnFullDevice_data();
+    void outputOnFullDevice();
+    void outputIntoClosedPipe();
 
     void reference_data();
     void reference();
@@ -918,6 +1015,178 @@ void TestCli::referenceMonitorCsvLog()
         = runCli(link + QStringList{QStringLiteral("monitor"), QStringLiteral("R0:hexx")});
     QCOMPARE(bad.code, 2);
     QVERIFY(bad.err.contains(QLatin1String("float")));
+}
+
+void TestCli::filesOnFullDevice_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("name"); // a link to /dev/full, named as the command wants
+    QTest::newRow("backup") << QStringList{QStringLiteral("backup")} << QString();
+    QTest::newRow("backup via link")
+        << QStringList{QStringLiteral("backup")} << QStringLiteral("b.fprog");
+    QTest::newRow("snapshot json")
+        << QStringList{QStringLiteral("snapshot")} << QStringLiteral("s.json");
+    QTest::newRow("snapshot csv") << QStringList{QStringLiteral("snapshot")}
+                                  << QStringLiteral("s.csv");
+}
+
+// The report: "backup /dev/full" ended with 0. Now exit 1 with the system's reason, and /dev/full
+// (also reached through a link) is written as the device it is, never replaced by a file.
+void TestCli::filesOnFullDevice()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, name);
+    if (!isCharacterDevice(fullDevice))
+        QSKIP("/dev/full is not a character device here");
+    QTemporaryDir dir;
+    QString path = fullDevice;
+    if (!name.isEmpty()) {
+        path = dir.filePath(name);
+        QVERIFY(QFile::link(fullDevice, path));
+    }
+    const QStringList before
+        = QDir(QStringLiteral("/dev")).entryList({QStringLiteral("full*")}, QDir::System);
+    const Run r = runCli(sim(arguments + QStringList{path}));
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(noSpace), qPrintable(r.err));
+    QVERIFY2(onlyOwnLines(r.err), qPrintable(r.err));
+    QVERIFY(isCharacterDevice(fullDevice));
+    QCOMPARE(QDir(QStringLiteral("/dev")).entryList({QStringLiteral("full*")}, QDir::System),
+             before);
+    if (!name.isEmpty())
+        QVERIFY(QFileInfo(path).isSymLink());
+}
+
+void TestCli::filesOnFullDisk_data()
+{
+    QTest::addColumn<QString>("command");
+    QTest::addColumn<QString>("name");
+    QTest::newRow("backup") << QStringLiteral("backup") << QStringLiteral("b.fprog");
+    QTest::newRow("snapshot json") << QStringLiteral("snapshot") << QStringLiteral("s.json");
+    QTest::newRow("snapshot csv") << QStringLiteral("snapshot") << QStringLiteral("s.csv");
+}
+
+// The report: a backup onto a disk with 24 KB free ended with 0 and a CRC, the file cut short.
+// Now exit 1 with the reason, and the backup that was there before is as it was.
+void TestCli::filesOnFullDisk()
+{
+    QFETCH(QString, command);
+    QFETCH(QString, name);
+    QTemporaryDir dir;
+    const QString disk = dir.filePath(QStringLiteral("small"));
+    if (const QString problem = mountSmallDisk(disk); !problem.isEmpty())
+        QSKIP(qPrintable(problem));
+    const Unmount unmount{disk};
+    QVERIFY(writeFile(QDir(disk).filePath(QStringLiteral("f")), QByteArray(40000, '\0')));
+    const QString path = QDir(disk).filePath(name);
+    const QByteArray old = "the backup of yesterday\n";
+    QVERIFY(writeFile(path, old));
+    const QStringList files = QDir(disk).entryList(QDir::Files);
+    // The snapshot of every element of the model (about 470 KB) does not fit either.
+    const Run r = runCli(sim({command, path}));
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(noSpace), qPrintable(r.err));
+    QCOMPARE(fileBytes(path), old);
+    QCOMPARE(QDir(disk).entryList(QDir::Files), files);
+}
+
+// monitor --output /dev/full: exit 1 at once with the reason, no Qt warning on stderr.
+void TestCli::monitorLogOnFullDevice()
+{
+    if (!isCharacterDevice(fullDevice))
+        QSKIP("/dev/full is not a character device here");
+    const Run r
+        = runCli(sim({QStringLiteral("monitor"), QStringLiteral("R0"), QStringLiteral("--interval"),
+                      QStringLiteral("100"), QStringLiteral("--output"), fullDevice}),
+                 10000);
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(noSpace) && r.err.contains(fullDevice), qPrintable(r.err));
+    QVERIFY2(onlyOwnLines(r.err), qPrintable(r.err));
+    QVERIFY(isCharacterDevice(fullDevice));
+}
+
+// A data log that fills the disk half way: said at once (once), the monitor goes on polling to its
+// last cycle, and ends with exit 1 (the file was not written whole).
+void TestCli::monitorLogFillsTheDisk()
+{
+    QTemporaryDir dir;
+    const QString disk = dir.filePath(QStringLiteral("small"));
+    if (const QString problem = mountSmallDisk(disk); !problem.isEmpty())
+        QSKIP(qPrintable(problem));
+    const Unmount unmount{disk};
+    // One page left: the header and a few rows of 100 elements (about 530 bytes each) fit, then
+    // the disk is full.
+    QVERIFY(writeFile(QDir(disk).filePath(QStringLiteral("f")), QByteArray(61440, '\0')));
+    const QString path = QDir(disk).filePath(QStringLiteral("log.csv"));
+    const Run r = runCli(
+        sim({QStringLiteral("--json"), QStringLiteral("monitor"), QStringLiteral("R0..R99:hex"),
+             QStringLiteral("--interval"), QStringLiteral("100"), QStringLiteral("--cycles"),
+             QStringLiteral("20"), QStringLiteral("--output"), path}));
+    QCOMPARE(r.code, 1);
+    QCOMPARE(r.err.count(noSpace), 1);
+    QVERIFY2(onlyOwnLines(r.err), qPrintable(r.err));
+    // Every cycle was shown, also those after the log stopped (the last line: the error object).
+    QStringList cycles = r.lines();
+    cycles.removeIf([](const QString &l) { return !l.contains(QLatin1String("\"cycle\"")); });
+    QCOMPARE(cycles.size(), 20);
+    QVERIFY(fileBytes(path).startsWith("timestamp,R0,R1,"));
+}
+
+void TestCli::outputOnFullDevice_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::newRow("read") << sim({QStringLiteral("read"), QStringLiteral("R0")});
+    QTest::newRow("read --json") << sim(
+        {QStringLiteral("--json"), QStringLiteral("read"), QStringLiteral("R0")});
+    QTest::newRow("monitor") << sim({QStringLiteral("monitor"), QStringLiteral("R0"),
+                                     QStringLiteral("--interval"), QStringLiteral("100")});
+    QTest::newRow("--help") << QStringList{QStringLiteral("--help")};
+}
+
+// The report: "read R0 > /dev/full" ended with 0. Output that cannot be written is exit 1 with the
+// reason on stderr; a monitor (which would run for ever) ends at once.
+void TestCli::outputOnFullDevice()
+{
+    QFETCH(QStringList, arguments);
+    if (!isCharacterDevice(fullDevice))
+        QSKIP("/dev/full is not a character device here");
+    const Run r = runCliInto(fullDevice, arguments);
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("Cannot write the output: ") + noSpace),
+             qPrintable(r.err));
+    QVERIFY2(onlyOwnLines(r.err), qPrintable(r.err));
+    QVERIFY(isCharacterDevice(fullDevice));
+}
+
+// The report: "monitor R0 | head -2" never returned. The reader (head, as in the report) reads
+// two lines and closes its end of the pipe: the monitor ends within a few seconds, quietly, with
+// 141 (as if by SIGPIPE). (QProcess::closeReadChannel only stops reading, it keeps the pipe open.)
+void TestCli::outputIntoClosedPipe()
+{
+    const QString headProgram = QStandardPaths::findExecutable(QStringLiteral("head"));
+    if (headProgram.isEmpty())
+        QSKIP("head not found on PATH");
+    QProcess p;
+    QProcess head;
+    p.setStandardOutputProcess(&head);
+    head.start(headProgram, {QStringLiteral("-n"), QStringLiteral("2")});
+    p.start(QStringLiteral(FATEK_CLI_PATH),
+            sim({QStringLiteral("monitor"), QStringLiteral("R0"), QStringLiteral("--interval"),
+                 QStringLiteral("100")}));
+    QVERIFY(head.waitForStarted(10000));
+    QVERIFY(p.waitForStarted(10000));
+    QVERIFY2(head.waitForFinished(20000), "head did not get two lines");
+    QCOMPARE(head.readAllStandardOutput().count('\n'), 2);
+    const bool ended = p.waitForFinished(5000);
+    if (!ended) {
+        p.kill();
+        p.waitForFinished();
+    }
+    QVERIFY2(ended, "fatek-cli kept running with nobody reading its output");
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(p.exitCode(), 141);
+    const QString err = QString::fromUtf8(p.readAllStandardError());
+    QVERIFY2(!err.contains(QLatin1String("Cannot write")), qPrintable(err));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

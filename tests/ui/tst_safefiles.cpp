@@ -10,6 +10,7 @@
 
 #include <QAction>
 #include <QFile>
+#include <QFileInfo>
 #include <QMenu>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -182,6 +183,30 @@ private Q_SLOTS:
         QCOMPARE(texts.size(), 1);
         QVERIFY2(texts.first().startsWith(QStringLiteral("2 saved connection")),
                  qPrintable(texts.first()));
+    }
+
+    // The studio's watch list save on a device that takes nothing (/dev/full): the system's
+    // reason, the last list is not set to it, the device is not replaced; then a save that works
+    // still works and one on a device leaves the saved file as it was.
+    void watchListSaveOnFullDevice()
+    {
+        const QString full = QStringLiteral("/dev/full");
+        if (!QFileInfo(full).exists() || QFileInfo(full).isFile())
+            QSKIP("no /dev/full device here");
+        MainWindow window;
+        window.currentWatchTable()->setSpec(WatchList::load(goodList).value().tables.first());
+        const QString path = m_dir.filePath(QStringLiteral("saved.json"));
+        QVERIFY(window.saveWatchList(path).ok());
+        const QByteArray saved = readAll(path);
+        QVERIFY(!saved.isEmpty());
+        const Status s = window.saveWatchList(full);
+        QVERIFY(!s.ok());
+        const QString message = QString::fromStdString(s.error().text());
+        QVERIFY2(message.contains(QStringLiteral("No space left on device")), qPrintable(message));
+        QCOMPARE(QSettings().value(QStringLiteral("preferences/lastWatchList")).toString(),
+                 QFileInfo(path).absoluteFilePath());
+        QVERIFY(!QFileInfo(full).isFile());
+        QCOMPARE(readAll(path), saved);
     }
 };
 

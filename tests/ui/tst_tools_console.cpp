@@ -10,6 +10,7 @@
 
 #include <QCheckBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -314,6 +315,19 @@ void TestToolsConsole::filtersPauseClearSave()
     QVERIFY(lines.first().startsWith(QStringLiteral("Time\tDirection")));
     QVERIFY(lines.at(1).contains(QStringLiteral("<STX>01460")));
     QVERIFY(!m_console->saveToFile(dir.filePath(QStringLiteral("no/such/dir/x.tsv"))).isEmpty());
+    // A device that takes nothing: the reason, and the traffic saved before is as it was.
+    const QByteArray saved = [&path] {
+        QFile f(path);
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }();
+    if (QFileInfo(QStringLiteral("/dev/full")).exists()) {
+        const QString full = m_console->saveToFile(QStringLiteral("/dev/full"));
+        QVERIFY2(full.contains(QLatin1String("No space left on device")), qPrintable(full));
+        QVERIFY(!QFileInfo(QStringLiteral("/dev/full")).isFile());
+    }
+    QFile again(path);
+    QVERIFY(again.open(QIODevice::ReadOnly));
+    QCOMPARE(again.readAll(), saved);
 
     QCOMPARE(m_console->copyRows().split(QLatin1Char('\n')).size(), before + 2);
     m_console->clear();

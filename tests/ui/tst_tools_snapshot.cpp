@@ -6,6 +6,7 @@
 #include "ui/tools/snapshotdiffmodel.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -135,6 +136,13 @@ void TestToolsSnapshot::compareFilesAndExport()
     QVERIFY(f.open(QIODevice::ReadOnly));
     QCOMPARE(f.readAll(),
              QByteArray("address,before,after,beforeHex,afterHex\nD2,0,7,0x0000,0x0007\n"));
+    // A device that takes nothing: refused with the system's reason in the message line.
+    if (QFileInfo(QStringLiteral("/dev/full")).exists()) {
+        QVERIFY(!m_dialog->exportDifferences(QStringLiteral("/dev/full")));
+        QVERIFY2(m_dialog->messageText().contains(QLatin1String("No space left on device")),
+                 qPrintable(m_dialog->messageText()));
+        QVERIFY(!QFileInfo(QStringLiteral("/dev/full")).isFile());
+    }
     // A damaged file: refused, named in the message line.
     QFile bad(m_dir.filePath(QStringLiteral("bad.json")));
     QVERIFY(bad.open(QIODevice::WriteOnly));

@@ -1,6 +1,7 @@
 #include "rawconsole.h"
 
 #include "core/session/session.h"
+#include "core/watch/safefile.h"
 #include "rawsendbar.h"
 #include "trafficfilterproxy.h"
 #include "trafficlogmodel.h"
@@ -18,7 +19,6 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScrollBar>
 #include <QSpinBox>
 #include <QTableView>
@@ -261,16 +261,13 @@ QString RawConsole::copyRows() const
 
 QString RawConsole::saveToFile(const QString &path) const
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
-        return tr("Cannot write %1: %2").arg(path, file.errorString());
     QStringList header;
     for (int c = 0; c < TrafficLogModel::ColumnCount; ++c)
         header << m_model->headerData(c, Qt::Horizontal).toString();
-    file.write(header.join(QLatin1Char('\t')).toUtf8() + '\n');
-    file.write(rowsText(false).toUtf8() + '\n');
-    if (!file.commit())
-        return tr("Cannot write %1: %2").arg(path, file.errorString());
+    const QByteArray text
+        = header.join(QLatin1Char('\t')).toUtf8() + '\n' + rowsText(false).toUtf8() + '\n';
+    if (const QString reason = SafeFile::write(path, text); !reason.isEmpty())
+        return tr("Cannot write %1: %2").arg(path, reason);
     return {};
 }
 

@@ -5,6 +5,7 @@
 #include "core/commission/snapshotreader.h"
 #include "core/commission/valuesrestorer.h"
 #include "core/session/session.h"
+#include "core/watch/safefile.h"
 #include "snapshotdiffmodel.h"
 #include "ui/common/messageline.h"
 #include "ui/common/uitext.h"
@@ -18,7 +19,6 @@
 #include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSortFilterProxyModel>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -356,11 +356,9 @@ bool SnapshotDialog::compareWithFile(const QString &path)
 
 bool SnapshotDialog::exportDifferences(const QString &path)
 {
-    QSaveFile out(path);
-    const QByteArray csv = m_model->toCsv();
-    if (!out.open(QIODevice::WriteOnly) || out.write(csv) != csv.size() || !out.commit()) {
+    if (const QString reason = SafeFile::write(path, m_model->toCsv()); !reason.isEmpty()) {
         showMessage(translated(msg<MsgId::SnapshotFileCannotWrite>(
-                        path.toStdString(), Message::text(out.errorString().toStdString()))),
+                        path.toStdString(), Message::text(reason.toStdString()))),
                     true);
         return false;
     }
