@@ -274,6 +274,22 @@ void Poller::noteAnswer(quint8 station, const SessionResult &result)
     }
 }
 
+bool Poller::isSuspect(quint8 station) const
+{
+    const auto it = m_health.find(station);
+    return it != m_health.end() && it->second.unanswered > 0;
+}
+
+bool Poller::isResting(quint8 station, Message *reason) const
+{
+    const auto it = m_health.find(station);
+    if (it == m_health.end() || !it->second.demoted)
+        return false;
+    if (reason)
+        *reason = demotedReason(station);
+    return true;
+}
+
 Message Poller::demotedReason(quint8 station) const
 {
     const auto it = m_health.find(station);

@@ -62,6 +62,15 @@ public:
     // Elements remembered as refused by the PLC.
     const std::set<StationAddress> &isolated() const { return m_isolated; }
 
+    // The station's health, for the session's other requests to it: a station that left a
+    // request unanswered is suspect (one attempt, no retries); a demoted one rests, and its
+    // routine reads are not sent (`reason` says until when).
+    bool isSuspect(quint8 station) const;
+    bool isResting(quint8 station, Message *reason = nullptr) const;
+    // What a request of someone else told about the station (an answer ends a demotion early,
+    // no answer counts towards one).
+    void noteAnswer(quint8 station, const SessionResult &result);
+
 Q_SIGNALS:
     void values(const QList<Fatek::WatchValue> &values);
     void cycleCompleted(double milliseconds);
@@ -106,7 +115,6 @@ private:
     void submitNext(Group &group);
     void onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
                     const SessionResult &result);
-    void noteAnswer(quint8 station, const SessionResult &result);
     // The station's items of `steps` are stale because it is demoted.
     void markDemoted(Group &group, const std::vector<PlanStep> &steps);
     Message demotedReason(quint8 station) const;

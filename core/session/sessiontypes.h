@@ -26,7 +26,8 @@ Message linkStateMessage(LinkState state);
 enum class Priority {
     User,       // writes, RUN/STOP, forcing, loopback, raw frames, one-off reads
     Background, // long user jobs that must not block single actions (station scan)
-    Poll,       // cyclic reads of the watch list
+    Poll,       // cyclic reads: the watch list, and the tools' routine reads (status, forced
+                // marks), which are answered at once, not sent, while their station rests
 };
 
 // What closing a link does with writes already accepted.

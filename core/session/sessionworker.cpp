@@ -58,6 +58,7 @@ SessionWorker::SessionWorker(const LinkSettings &settings, std::shared_ptr<Sessi
             SessionJob job;
             job.request = request;
             job.priority = Priority::Poll;
+            job.fromPoller = true;
             job.options = options;
             job.done = std::move(done);
             enqueue(std::move(job));

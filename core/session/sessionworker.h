@@ -49,6 +49,7 @@ struct SessionJob
     Priority priority = Priority::User;
     RequestOptions options;
     std::optional<Protocol> probe; // protocol auto-detect probe in this protocol
+    bool fromPoller = false;       // the poller's own (it keeps the stations' health itself)
     std::function<void(const SessionResult &)> done;
     int attempts = 0;
     bool pendingWrite = false; // counted in SessionShared::pendingWrites

@@ -220,6 +220,18 @@ bool SessionWorker::prepare(SessionJob &job)
         (*probeIn)(Protocol::Facon);
         return false;
     }
+    if (!job.raw && !job.probe && !job.fromPoller
+        && job.request.station != Limits::broadcastStation) {
+        // A station the poller found silent: the tools' routine reads (status, forced marks) wait
+        // for its next try instead of holding up the line; other requests get one attempt.
+        Message resting;
+        if (job.priority == Priority::Poll && m_poller->isResting(job.request.station, &resting)) {
+            deliver(job, SessionResult::fromError(makeError(ErrorKind::Timeout, resting)));
+            return false;
+        }
+        if (job.options.retries < 0 && m_poller->isSuspect(job.request.station))
+            job.options.retries = 0;
+    }
     if (!job.raw) {
         const Protocol protocol = job.probe ? *job.probe : *m_protocol;
         const Status valid = validateRequest(job.request, protocol);

@@ -319,6 +319,9 @@ void SessionWorker::finishCurrent(SessionResult result)
     // Probes count too: with auto-detect a silent station never gets past them.
     if (!job.raw && !result.ok() && result.errorKind() == ErrorKind::Timeout)
         countForStation(stationOf(job), [](StationStatistics &s) { ++s.unanswered; });
+    if (!job.raw && !job.probe && !job.fromPoller
+        && job.request.station != Limits::broadcastStation)
+        m_poller->noteAnswer(job.request.station, result);
     publishStatistics(); // before the result, so statistics() already counts it
     deliver(job, std::move(result));
     schedulePump();

@@ -384,6 +384,48 @@ private Q_SLOTS:
         dialog->close();
     }
 
+    // Issue 31.1: R0 moved to station 7 (nobody answers), R1 stays on station 1 at 500 ms. Once
+    // station 7 rests, the Connections dock and the status bar show the requests station 1 still
+    // gets, every second, not 0.0.
+    void rateCountsBesideSilentStation()
+    {
+        DemoPlc plc;
+        QVERIFY(plc.port != 0);
+        WatchTableWidget *table = openTable(plc.port, QStringLiteral("R0 R1"));
+        QVERIFY(table);
+        table->setIntervalMs(500);
+        WatchTableModel *model = table->model();
+        QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(rowOf(model, "R1")), longWait);
+        QTableView *view = table->view();
+        doubleClick(view, model->index(rowOf(model, "R0"), WatchTableModel::StationColumn));
+        QTRY_VERIFY(view->viewport()->findChild<QLineEdit *>());
+        QLineEdit *editor = view->viewport()->findChild<QLineEdit *>();
+        editor->selectAll();
+        QTest::keyClicks(editor, QStringLiteral("7"), {}, keyDelayMs);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTRY_COMPARE(model->item(rowOf(model, "R0")).station, quint8(7));
+
+        auto *panel = m_window->findChild<ConnectionsPanel *>();
+        QVERIFY(panel);
+        const QModelIndex state
+            = panel->view()->model()->index(0, ConnectionListModel::StateColumn);
+        QTRY_VERIFY2_WITH_TIMEOUT(state.data().toString().contains(QStringLiteral("rests until")),
+                                  qPrintable(state.data().toString()), longWait);
+        const QModelIndex rate = panel->view()->model()->index(0, ConnectionListModel::RateColumn);
+        auto *linkStatus = m_window->findChild<QLabel *>(QStringLiteral("linkStatus"));
+        QVERIFY(linkStatus);
+        QStringList shown;
+        for (int i = 0; i < 8; ++i) {
+            QTest::qWait(400);
+            shown << rate.data().toString();
+            // R1 twice a second, and the connection's status reads: at least 1.5 per second.
+            QVERIFY2(rate.data().toString().toDouble() >= 1.5, qPrintable(shown.join(u' ')));
+            QVERIFY2(linkStatus->text().contains(rate.data().toString() + QStringLiteral(" req/s")),
+                     qPrintable(linkStatus->text()));
+        }
+        qInfo("Req/s while station 7 rests: %s", qPrintable(shown.join(u' ')));
+    }
+
     // Issue 16.4: station 5 asked, the PLC is station 1: the link and the rows say so in time.
     void wrongStationSaysNoAnswer()
     {

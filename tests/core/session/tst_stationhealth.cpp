@@ -81,6 +81,7 @@ private Q_SLOTS:
     void lateValuesAreMarked();
     void scanRunsBehindDeadStation();
     void refusedElementReportedOnce();
+    void toolReadsSpareRestingStation();
 
 private:
     std::unique_ptr<Session> openSession(LinkSettings::ProtocolChoice protocol);
@@ -229,6 +230,58 @@ void TestStationHealth::refusedElementReportedOnce()
     // Still shown as refused, and the good neighbour keeps its rate.
     QCOMPARE(log.last(1)->quality, ValueQuality::Error);
     QVERIFY(log.goodTimes(2, log.now() - 3000, log.now()).size() >= 15);
+}
+
+void TestStationHealth::toolReadsSpareRestingStation()
+{
+    // The studio's own routine reads (status, forced marks) of a station the poller demoted are
+    // answered at once with the reason instead of holding up the line for a timeout and its
+    // retries; a user's request still goes out, once; an answer to it ends the rest early.
+    m_server->setVerbose(true);
+    int silentFrames = 0; // frames for station 7 on the wire
+    connect(m_server.get(), &SimServer::logLine, this, [&](const QString &line) {
+        if (line.contains(QStringLiteral("for station 7 ignored")))
+            ++silentFrames;
+    });
+    auto session = openSession(LinkSettings::ProtocolChoice::Facon);
+    session->setWatchList({{1, 7, addr("R0"), 500}, {2, 1, addr("R1"), 500}});
+    QTRY_VERIFY_WITH_TIMEOUT(session->statistics().stations.value(7).demoted, 15000);
+    const int framesAtDemotion = silentFrames;
+
+    QList<SessionResult> routine;
+    QElapsedTimer took;
+    took.start();
+    for (int i = 0; i < 3; ++i)
+        session->submit(
+            Request::briefStatus(7), this,
+            [&](const SessionResult &result) { routine.append(result); }, Priority::Poll);
+    QTRY_COMPARE_WITH_TIMEOUT(routine.size(), 3, 2000);
+    qInfo("3 status reads of a resting station answered in %lld ms", took.elapsed());
+    for (const SessionResult &result : routine) {
+        QCOMPARE(result.errorKind(), ErrorKind::Timeout);
+        QCOMPARE(result.error().message.id, MsgId::SessionStationDemoted);
+    }
+    QCOMPARE(silentFrames, framesAtDemotion); // none of them went out
+
+    // Someone asks on purpose: one attempt, no retries.
+    std::optional<SessionResult> asked;
+    session->submit(Request::briefStatus(7), this,
+                    [&](const SessionResult &result) { asked = result; });
+    QTRY_VERIFY_WITH_TIMEOUT(asked.has_value(), 5000);
+    QCOMPARE(asked->errorKind(), ErrorKind::Timeout);
+    QCOMPARE(asked->attempts(), 1);
+    QCOMPARE(silentFrames, framesAtDemotion + 1);
+
+    // The PLC is set to station 7 and answers the next question: the rest ends then, not at the
+    // next poll trial (10 s after the demotion).
+    m_server->setStation(7);
+    asked.reset();
+    session->submit(Request::briefStatus(7), this,
+                    [&](const SessionResult &result) { asked = result; });
+    QTRY_VERIFY_WITH_TIMEOUT(asked.has_value(), 5000);
+    QVERIFY2(asked->ok(), qPrintable(asked->errorText()));
+    QVERIFY(!session->statistics().stations.value(7).demoted);
+    QVERIFY2(took.elapsed() < 8000, "the rest ended only at the poll trial");
 }
 
 QTEST_GUILESS_MAIN(TestStationHealth)
