@@ -758,6 +758,30 @@
             <translation>Reconnect delays must be positive, the maximum not below the minimum.</translation>
         </message>
         <message>
+            <source>No link given: write tcp://HOST[:PORT], udp://HOST[:PORT] or serial://PORT.</source>
+            <translation>No link given: write tcp://HOST[:PORT], udp://HOST[:PORT] or serial://PORT.</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: start it with tcp://, udp:// or serial:// (for example tcp://192.168.1.5:500 or serial:///dev/ttyUSB0).</source>
+            <translation>Link &quot;%1&quot;: start it with tcp://, udp:// or serial:// (for example tcp://192.168.1.5:500 or serial:///dev/ttyUSB0).</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: write HOST or HOST:PORT with a port from 1 to 65535; an IPv6 address goes in brackets, as in [fe80::1]:500.</source>
+            <translation>Link &quot;%1&quot;: write HOST or HOST:PORT with a port from 1 to 65535; an IPv6 address goes in brackets, as in [fe80::1]:500.</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: name the serial port, as in serial:///dev/ttyUSB0 or serial://COM3.</source>
+            <translation>Link &quot;%1&quot;: name the serial port, as in serial:///dev/ttyUSB0 or serial://COM3.</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: no setting &quot;%2&quot; (this link takes %3).</source>
+            <translation>Link &quot;%1&quot;: no setting &quot;%2&quot; (this link takes %3).</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: %2 takes %4, not &quot;%3&quot;.</source>
+            <translation>Link &quot;%1&quot;: %2 takes %4, not &quot;%3&quot;.</translation>
+        </message>
+        <message>
             <source>Incomplete range &quot;%1&quot;: write it as first..last, e.g. R100..R163.</source>
             <translation>Incomplete range &quot;%1&quot;: write it as first..last, e.g. R100..R163.</translation>
         </message>
@@ -3975,6 +3999,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Watch list to open (.json); with a link option its tables watch that connection.</source>
             <translation>Watch list to open (.json); with a link option its tables watch that connection.</translation>
+        </message>
+        <message>
+            <source>Open a link by URL (tcp://HOST[:PORT], udp://HOST[:PORT], serial://PORT?baud=19200&amp;format=7E1) or by its name in links.conf (@line1).</source>
+            <translation>Open a link by URL (tcp://HOST[:PORT], udp://HOST[:PORT], serial://PORT?baud=19200&amp;format=7E1) or by its name in links.conf (@line1).</translation>
         </message>
         <message>
             <source>Open a FATEK link over TCP (port 500 if not given).</source>

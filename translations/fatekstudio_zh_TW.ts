@@ -758,6 +758,30 @@
             <translation>重新連線延遲必須為正數，且最大值不得小於最小值。</translation>
         </message>
         <message>
+            <source>No link given: write tcp://HOST[:PORT], udp://HOST[:PORT] or serial://PORT.</source>
+            <translation>未指定連線：請寫 tcp://主機[:埠]、udp://主機[:埠] 或 serial://埠。</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: start it with tcp://, udp:// or serial:// (for example tcp://192.168.1.5:500 or serial:///dev/ttyUSB0).</source>
+            <translation>連線「%1」：請以 tcp://、udp:// 或 serial:// 開頭（例如 tcp://192.168.1.5:500 或 serial:///dev/ttyUSB0）。</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: write HOST or HOST:PORT with a port from 1 to 65535; an IPv6 address goes in brackets, as in [fe80::1]:500.</source>
+            <translation>連線「%1」：請寫 主機 或 主機:埠，埠號為 1 到 65535；IPv6 位址要放在方括號內。</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: name the serial port, as in serial:///dev/ttyUSB0 or serial://COM3.</source>
+            <translation>連線「%1」：請指定序列埠，例如 serial:///dev/ttyUSB0 或 serial://COM3。</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: no setting &quot;%2&quot; (this link takes %3).</source>
+            <translation>連線「%1」：沒有設定「%2」（此連線可用：%3）。</translation>
+        </message>
+        <message>
+            <source>Link &quot;%1&quot;: %2 takes %4, not &quot;%3&quot;.</source>
+            <translation>連線「%1」：%2 應為 %4，而不是「%3」。</translation>
+        </message>
+        <message>
             <source>Incomplete range &quot;%1&quot;: write it as first..last, e.g. R100..R163.</source>
             <translation>範圍「%1」不完整：請寫成 起點..終點，例如 R100..R163。</translation>
         </message>
@@ -3961,6 +3985,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Watch list to open (.json); with a link option its tables watch that connection.</source>
             <translation>要開啟的監看清單（.json）；搭配連線選項時，其表格監看該連線。</translation>
+        </message>
+        <message>
+            <source>Open a link by URL (tcp://HOST[:PORT], udp://HOST[:PORT], serial://PORT?baud=19200&amp;format=7E1) or by its name in links.conf (@line1).</source>
+            <translation>以網址開啟連線（tcp://主機[:埠]、udp://主機[:埠]、serial://埠?baud=19200&amp;format=7E1），或以 links.conf 中的名稱開啟（@line1）。</translation>
         </message>
         <message>
             <source>Open a FATEK link over TCP (port 500 if not given).</source>

@@ -1,6 +1,8 @@
 #include "linkarguments.h"
 
 #include "core/protocol/request.h"
+#include "core/qtbridge/qtmessage.h"
+#include "namedlinks.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -8,38 +10,6 @@
 namespace Fatek {
 
 namespace {
-
-// "plc1:502", "plc1" (port 500), "[::1]:502".
-bool parseHostPort(const QString &text, QString *host, quint16 *port)
-{
-    QString h = text.trimmed();
-    QString p;
-    if (h.startsWith(QLatin1Char('['))) {
-        const qsizetype close = h.indexOf(QLatin1Char(']'));
-        if (close < 0)
-            return false;
-        const QString rest = h.mid(close + 1);
-        if (rest.startsWith(QLatin1Char(':')))
-            p = rest.mid(1);
-        else if (!rest.isEmpty())
-            return false;
-        h = h.mid(1, close - 1);
-    } else if (h.count(QLatin1Char(':')) == 1) {
-        p = h.section(QLatin1Char(':'), 1);
-        h = h.section(QLatin1Char(':'), 0, 0);
-    }
-    if (h.isEmpty())
-        return false;
-    *host = h;
-    *port = 500;
-    if (!p.isEmpty()) {
-        qint64 v = 0;
-        if (!parseIntInRange(p, 1, 65535, &v))
-            return false;
-        *port = static_cast<quint16>(v);
-    }
-    return true;
-}
 
 struct OptionText
 {
@@ -51,6 +21,10 @@ struct OptionText
 // The help texts of commandLineOptions(), in the order of names(); fatek-studio shows them in
 // its language (context "main", scanned by lupdate with app/fatek-studio/main.cpp).
 const OptionText optionTexts[] = {
+    {"link", "url|@name",
+     QT_TRANSLATE_NOOP("main", "Open a link by URL (tcp://HOST[:PORT], udp://HOST[:PORT], "
+                               "serial://PORT?baud=19200&format=7E1) or by its name in "
+                               "links.conf (@line1).")},
     {"tcp", "host[:port]",
      QT_TRANSLATE_NOOP("main", "Open a FATEK link over TCP (port 500 if not given).")},
     {"udp", "host[:port]",
@@ -91,33 +65,36 @@ const QStringList &LinkArguments::names()
 
 bool LinkArguments::set(const QString &name, const QString &value)
 {
-    if (name == QLatin1String("tcp")) {
-        tcp = value;
-        ++links;
-    } else if (name == QLatin1String("udp")) {
-        udp = value;
-        ++links;
-    } else if (name == QLatin1String("serial")) {
-        serial = value;
-        ++links;
-    } else if (name == QLatin1String("baud"))
-        baud = value;
+    QString *field = nullptr;
+    if (name == QLatin1String("link"))
+        field = &link;
+    else if (name == QLatin1String("tcp"))
+        field = &tcp;
+    else if (name == QLatin1String("udp"))
+        field = &udp;
+    else if (name == QLatin1String("serial"))
+        field = &serial;
+    else if (name == QLatin1String("baud"))
+        field = &baud;
     else if (name == QLatin1String("parity"))
-        parity = value;
+        field = &parity;
     else if (name == QLatin1String("data"))
-        data = value;
+        field = &data;
     else if (name == QLatin1String("stop"))
-        stop = value;
+        field = &stop;
     else if (name == QLatin1String("protocol"))
-        protocol = value;
+        field = &protocol;
     else if (name == QLatin1String("station"))
-        station = value;
+        field = &station;
     else if (name == QLatin1String("timeout"))
-        timeout = value;
+        field = &timeout;
     else if (name == QLatin1String("retries"))
-        retries = value;
+        field = &retries;
     else
         return false;
+    *field = value;
+    if (field == &link || field == &tcp || field == &udp || field == &serial)
+        media << name;
     return true;
 }
 
@@ -144,8 +121,9 @@ LinkArguments LinkArguments::fromParser(const QCommandLineParser &parser)
 
 bool LinkArguments::any() const
 {
-    return links > 0 || !baud.isEmpty() || !parity.isEmpty() || !data.isEmpty() || !stop.isEmpty()
-           || !protocol.isEmpty() || !station.isEmpty() || !timeout.isEmpty() || !retries.isEmpty();
+    return !media.isEmpty() || !baud.isEmpty() || !parity.isEmpty() || !data.isEmpty()
+           || !stop.isEmpty() || !protocol.isEmpty() || !station.isEmpty() || !timeout.isEmpty()
+           || !retries.isEmpty();
 }
 
 LinkArgumentsResult resolveLinkArguments(const LinkArguments &a, const LinkArgumentRules &rules)
@@ -155,40 +133,99 @@ LinkArgumentsResult resolveLinkArguments(const LinkArguments &a, const LinkArgum
         r.error = message;
         return r;
     };
-    const int given = a.links + (rules.alternativeGiven ? 1 : 0);
+    QString medium = a.media.isEmpty() ? QString() : a.media.constLast();
+    QString linkText = a.link;
+    QString linkSource = QStringLiteral("--link");
+    QString stationText = a.station;
+    QString stationSource = QStringLiteral("--station");
+    int given = static_cast<int>(a.media.size()) + (rules.alternativeGiven ? 1 : 0);
+    if (rules.environment) {
+        const QString envLink = qEnvironmentVariable("FATEK_LINK").trimmed();
+        if (given == 0 && !envLink.isEmpty()) {
+            medium = QStringLiteral("link");
+            linkText = envLink;
+            linkSource = QStringLiteral("FATEK_LINK");
+            given = 1;
+        }
+        const QString envStation = qEnvironmentVariable("FATEK_STATION").trimmed();
+        if (stationText.isEmpty() && !envStation.isEmpty() && given > 0) {
+            stationText = envStation;
+            stationSource = QStringLiteral("FATEK_STATION");
+        }
+    }
+    const QString media = rules.alternative.isEmpty()
+                              ? QStringLiteral("--link URL, --tcp HOST[:PORT], --udp HOST[:PORT] "
+                                               "or --serial DEV")
+                              : QStringLiteral("--link URL, --tcp HOST[:PORT], --udp "
+                                               "HOST[:PORT], --serial DEV or %1")
+                                    .arg(rules.alternative);
     if (given == 0 && rules.linkRequired)
-        return fail(rules.alternative.isEmpty()
-                        ? QStringLiteral("No link given: use --tcp HOST[:PORT], --udp HOST[:PORT] "
-                                         "or --serial DEV.")
-                        : QStringLiteral("No link given: use --tcp HOST[:PORT], --udp HOST[:PORT], "
-                                         "--serial DEV or %1.")
-                              .arg(rules.alternative));
+        return fail(QStringLiteral("No link given: use %1.").arg(media));
     if (given > 1)
         return fail(rules.alternative.isEmpty()
-                        ? QStringLiteral("Give only one of --tcp, --udp and --serial.")
-                        : QStringLiteral("Give only one of --tcp, --udp, --serial and %1.")
+                        ? QStringLiteral("Give only one of --link, --tcp, --udp and --serial.")
+                        : QStringLiteral("Give only one of --link, --tcp, --udp, --serial and %1.")
                               .arg(rules.alternative));
-    if (a.serial.isEmpty()
-        && !(a.baud.isEmpty() && a.parity.isEmpty() && a.data.isEmpty() && a.stop.isEmpty()))
-        return fail(QStringLiteral("--baud, --parity, --data and --stop only apply to --serial."));
     if (given == 0
         && !(a.protocol.isEmpty() && a.station.isEmpty() && a.timeout.isEmpty()
-             && a.retries.isEmpty()))
-        return fail(QStringLiteral("--protocol, --station, --timeout and --retries need a link: "
-                                   "--tcp HOST[:PORT], --udp HOST[:PORT] or --serial DEV."));
-    if (!a.tcp.isEmpty() || !a.udp.isEmpty()) {
+             && a.retries.isEmpty() && a.baud.isEmpty() && a.parity.isEmpty() && a.data.isEmpty()
+             && a.stop.isEmpty()))
+        return fail(QStringLiteral("--protocol, --station, --timeout, --retries and the serial "
+                                   "options need a link: %1.")
+                        .arg(media));
+    LinkSettings defaults;
+    defaults.protocol = rules.defaultProtocol;
+    r.link = defaults;
+    if (medium == QLatin1String("tcp") || medium == QLatin1String("udp")) {
         QString host;
         quint16 port = 500;
-        const QString &text = a.tcp.isEmpty() ? a.udp : a.tcp;
-        if (!parseHostPort(text, &host, &port))
+        const QString &text = medium == QLatin1String("tcp") ? a.tcp : a.udp;
+        if (!LinkSettings::hostPortFromText(text, &host, &port))
             return fail(
-                QStringLiteral("--%1 needs HOST or HOST:PORT (port 1..65535), not \"%2\".")
-                    .arg(a.tcp.isEmpty() ? QStringLiteral("udp") : QStringLiteral("tcp"), text));
-        r.link = a.tcp.isEmpty() ? LinkSettings::udp(host, port) : LinkSettings::tcp(host, port);
+                text.contains(QLatin1String("://"))
+                    ? QStringLiteral("--%1 needs HOST or HOST:PORT, not a URL (\"%2\"): write "
+                                     "--link %2.")
+                          .arg(medium, text)
+                    : QStringLiteral("--%1 needs HOST or HOST:PORT (port 1..65535; IPv6 in "
+                                     "brackets), not \"%2\".")
+                          .arg(medium, text));
+        r.link.kind
+            = medium == QLatin1String("tcp") ? LinkSettings::Kind::Tcp : LinkSettings::Kind::Udp;
+        r.link.host = host;
+        r.link.port = port;
         r.hasLink = true;
-    } else if (!a.serial.isEmpty()) {
-        r.link = LinkSettings::serial(a.serial);
+    } else if (medium == QLatin1String("serial")) {
+        if (a.serial.trimmed().isEmpty())
+            return fail(QStringLiteral("--serial needs a port, such as /dev/ttyUSB0 or COM3."));
+        r.link.kind = LinkSettings::Kind::Serial;
+        r.link.portName = a.serial.trimmed();
         r.hasLink = true;
+    } else if (medium == QLatin1String("link")) {
+        QString url = linkText.trimmed();
+        if (url.startsWith(QLatin1Char('@'))) {
+            QString error;
+            url = lookUpNamedLink(url.mid(1), &error);
+            if (url.isEmpty())
+                return fail(QStringLiteral("%1: %2").arg(linkSource, error));
+        }
+        Message error;
+        const std::optional<LinkSettings::Parsed> parsed
+            = LinkSettings::fromUrl(url, &error, defaults);
+        if (!parsed)
+            return fail(QStringLiteral("%1: %2").arg(linkSource, englishText(error)));
+        r.link = parsed->settings;
+        if (parsed->station)
+            r.station = static_cast<std::uint8_t>(*parsed->station);
+        const QString query = url.section(QLatin1Char('?'), 1).toLower();
+        r.protocolGiven = query.contains(QLatin1String("protocol="));
+        r.timeoutGiven = query.contains(QLatin1String("timeout="));
+        r.hasLink = true;
+    }
+    if (r.hasLink && r.link.kind != LinkSettings::Kind::Serial
+        && !(a.baud.isEmpty() && a.parity.isEmpty() && a.data.isEmpty() && a.stop.isEmpty()))
+        return fail(QStringLiteral("--baud, --parity, --data and --stop only apply to a serial "
+                                   "link."));
+    if (r.hasLink && r.link.kind == LinkSettings::Kind::Serial) {
         qint64 v = 0;
         if (!a.baud.isEmpty()) {
             if (!parseIntInRange(a.baud, 50, 10000000, &v))
@@ -216,29 +253,28 @@ LinkArgumentsResult resolveLinkArguments(const LinkArguments &a, const LinkArgum
             r.link.stopBits = *bits;
         }
     }
-    r.link.protocol = rules.defaultProtocol;
     if (!a.protocol.isEmpty()) {
-        const QString p = a.protocol.toLower();
-        r.protocolGiven = true;
-        if (p == QLatin1String("facon"))
-            r.link.protocol = LinkSettings::ProtocolChoice::Facon;
-        else if (p == QLatin1String("binary"))
-            r.link.protocol = LinkSettings::ProtocolChoice::Binary;
-        else if (p == QLatin1String("auto"))
-            r.link.protocol = LinkSettings::ProtocolChoice::Auto;
-        else
+        const std::optional<LinkSettings::ProtocolChoice> choice
+            = protocolChoiceFromText(a.protocol);
+        if (!choice)
             return fail(QStringLiteral("--protocol takes facon, binary or auto, not \"%1\".")
                             .arg(a.protocol));
+        r.link.protocol = *choice;
+        r.protocolGiven = true;
     }
     qint64 v = 0;
-    if (!a.station.isEmpty()) {
-        if (!parseIntInRange(a.station, rules.minStation, Limits::maxStation, &v))
-            return fail(rules.minStation == 0
-                            ? QStringLiteral("--station takes 0..254, not \"%1\".").arg(a.station)
-                            : QStringLiteral("--station takes %1..254, not \"%2\".")
-                                  .arg(rules.minStation)
-                                  .arg(a.station));
+    if (!stationText.isEmpty()) {
+        if (!parseIntInRange(stationText, rules.minStation, Limits::maxStation, &v))
+            return fail(QStringLiteral("%1 takes %2..254, not \"%3\".")
+                            .arg(stationSource)
+                            .arg(rules.minStation)
+                            .arg(stationText));
         r.station = static_cast<std::uint8_t>(v);
+    } else if (r.station < rules.minStation) {
+        return fail(QStringLiteral("%1: station %2 is not allowed here (%3..254).")
+                        .arg(linkSource)
+                        .arg(r.station)
+                        .arg(rules.minStation));
     }
     if (!a.timeout.isEmpty()) {
         if (!parseIntInRange(a.timeout, 10, 60000, &v))

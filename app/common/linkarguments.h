@@ -13,16 +13,18 @@ class QCommandLineParser;
 
 namespace Fatek {
 
-// The link options fatek-cli and fatek-studio share: --tcp HOST[:PORT], --udp HOST[:PORT],
-// --serial DEV with --baud --parity --data --stop, --protocol facon|binary|auto, --station N,
-// --timeout MS and --retries N. The one place that turns their text into LinkSettings (and the
-// one place their usage errors are worded), whichever command-line parser collected the text.
+// The link options all four programs share: --link URL|@NAME, --tcp HOST[:PORT],
+// --udp HOST[:PORT], --serial DEV with --baud --parity --data --stop, --protocol
+// facon|binary|auto, --station N, --timeout MS and --retries N. The one place that turns their
+// text into LinkSettings (and the one place their usage errors are worded), whichever
+// command-line parser collected the text. A link URL is read by LinkSettings::fromUrl; a name
+// (@line1) is looked up in the named links file (namedlinks.h).
 struct LinkArguments
 {
-    QString tcp, udp, serial;
+    QString link, tcp, udp, serial;
     QString baud, parity, data, stop;
     QString protocol, station, timeout, retries;
-    int links = 0; // how many of --tcp, --udp and --serial were given (each time counts)
+    QStringList media; // the media options given, in order ("link", "tcp", ...), each time
 
     // The names of the options above (without "--"); each takes a value.
     static const QStringList &names();
@@ -47,6 +49,9 @@ struct LinkArgumentRules
     // fatek-cli may send to station 0 (broadcast); a window watching values may not.
     int minStation = 0;
     LinkSettings::ProtocolChoice defaultProtocol = LinkSettings::ProtocolChoice::Auto;
+    // Scripts: without a link option, FATEK_LINK (a URL or @NAME) is the link, and without
+    // --station, FATEK_STATION the station.
+    bool environment = false;
 };
 
 struct LinkArgumentsResult

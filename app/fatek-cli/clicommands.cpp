@@ -81,7 +81,7 @@ constexpr CommandSpec commands[] = {
      make<CliProgramCommand>},
     {"snapshot", CliCommandKind::Snapshot, 1, -1, true, CliSnapshotFileCommand::parseFileAndRanges,
      make<CliSnapshotCommand>},
-    {"diff", CliCommandKind::Diff, 1, 2, true, CliDiffCommand::parse, make<CliDiffCommand>},
+    {"diff", CliCommandKind::Diff, 1, -1, true, CliDiffCommand::parse, make<CliDiffCommand>},
     {"restore-values", CliCommandKind::RestoreValues, 1, -1, true,
      CliSnapshotFileCommand::parseFileAndRanges, make<CliRestoreValuesCommand>},
 };

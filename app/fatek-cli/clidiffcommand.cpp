@@ -8,23 +8,32 @@
 
 namespace Fatek {
 
-// diff FILE [FILE2]
+// diff FILE [FILE2] [RANGES]: the second argument is a file when it names one (or has a
+// snapshot's extension), else the first range.
 QString CliDiffCommand::parse(CliStepArgs &a)
 {
     if (QString err = snapshotFileArg(a, a.positional.at(0), &a.step.file); !err.isEmpty())
         return err;
-    if (a.positional.size() > 1)
-        return snapshotFileArg(a, a.positional.at(1), &a.step.file2);
-    return {};
+    qsizetype next = 1;
+    if (a.positional.size() > 1 && isSnapshotFileName(a.positional.at(1))) {
+        if (QString err = snapshotFileArg(a, a.positional.at(1), &a.step.file2); !err.isEmpty())
+            return err;
+        next = 2;
+    }
+    return rangesArg(a, next);
 }
 
 void CliDiffCommand::run()
 {
-    const std::optional<MemorySnapshot> before = loadSnapshot(step().file);
+    std::optional<MemorySnapshot> before = loadSnapshot(step().file);
     if (!before)
         return;
+    // Only the elements in the ranges given (all without ranges), on both sides.
+    const std::vector<AddressRange> ranges = step().ranges;
+    before->values = before->select(ranges);
     // Differences end with exit 6 (like diff(1) ends with 1): scripts test for equality.
-    auto report = [this](const MemorySnapshot &a, const MemorySnapshot &b) {
+    auto report = [this, ranges](const MemorySnapshot &a, MemorySnapshot b) {
+        b.values = b.select(ranges);
         std::size_t compared = 0;
         const auto differences = SnapshotDiff::compare(a, b, &compared);
         printDifferences(differences, false);

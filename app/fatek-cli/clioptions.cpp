@@ -3,6 +3,7 @@
 #include "app/common/linkarguments.h"
 #include "clicommands.h"
 #include "climonitorcommand.h"
+#include "clisnapshotfilecommand.h"
 #include "clitext.h"
 #include "core/watch/watchlist.h"
 
@@ -13,7 +14,12 @@ QString usageText()
     return QStringLiteral(
         "Usage: fatek-cli [LINK] [OPTIONS] COMMAND [ARGS]\n"
         "\n"
-        "Link (exactly one):\n"
+        "Link (exactly one; without one, FATEK_LINK, and FATEK_STATION for --station):\n"
+        "  --link URL|@NAME         tcp://HOST[:PORT], udp://HOST[:PORT],\n"
+        "                           serial:///dev/ttyUSB0?baud=19200&format=7E1 (or COM3); "
+        "settings\n"
+        "                           protocol, timeout, retries, station; @NAME: a line NAME = URL\n"
+        "                           in ~/.config/fatek-studio/links.conf\n"
         "  --tcp HOST[:PORT]        FATEK over TCP (port 500 if not given)\n"
         "  --udp HOST[:PORT]        FATEK over UDP (port 500 if not given)\n"
         "  --serial DEV             serial line, with --baud N (9600) --parity N|E|O (E) --data "
@@ -69,8 +75,8 @@ QString usageText()
         "  snapshot FILE [RANGES]   save element values to FILE (.json or .csv); RANGES like\n"
         "                           \"R0..R99, X0..X255\" (default: every element the PLC "
         "reports)\n"
-        "  diff FILE [FILE2]        differences, one line per element: FILE against the PLC, or\n"
-        "                           against FILE2 (no link needed)\n"
+        "  diff FILE [FILE2] [RANGES]   differences, one line per element: FILE against the PLC,\n"
+        "                           or against FILE2 (no link needed); RANGES: only these\n"
         "  restore-values FILE [RANGES]   write FILE's values back (default: all but X), after a\n"
         "                           confirmation (--yes), then read them back and compare\n"
         "\n"
@@ -168,11 +174,13 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         else if (name == QLatin1String("sim")) {
             o.sim = true;
             linkCount = true;
-        } else if (name == QLatin1String("json"))
-            o.format = OutputFormat::Json;
-        else if (name == QLatin1String("csv"))
-            o.format = OutputFormat::Csv;
-        else if (name == QLatin1String("read-only"))
+        } else if (name == QLatin1String("json") || name == QLatin1String("csv")) {
+            const OutputFormat format
+                = name == QLatin1String("json") ? OutputFormat::Json : OutputFormat::Csv;
+            if (o.format != OutputFormat::Table && o.format != format)
+                return fail(QStringLiteral("Give only one of --json and --csv."));
+            o.format = format;
+        } else if (name == QLatin1String("read-only"))
             o.readOnly = true;
         else if (name == QLatin1String("yes"))
             o.assumeYes = true;
@@ -194,10 +202,14 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     rules.alternativeGiven = linkCount;
     rules.defaultProtocol
         = o.sim ? LinkSettings::ProtocolChoice::Facon : LinkSettings::ProtocolChoice::Auto;
+    rules.environment = true;
+    // "diff FILE FILE2 [RANGES]" compares two files: no PLC, so no link is needed.
+    o.offline = !linkCount && link.media.isEmpty() && positional.size() >= 3
+                && positional.first().compare(QLatin1String("diff"), Qt::CaseInsensitive) == 0
+                && CliSnapshotFileCommand::isSnapshotFileName(positional.at(2));
+    if (o.offline)
+        rules.environment = false; // FATEK_LINK does not turn a file comparison into a PLC one
     const LinkArgumentsResult resolved = resolveLinkArguments(link, rules);
-    // "diff FILE FILE2" alone compares two files: no PLC, so no link is needed.
-    o.offline = !linkCount && positional.size() == 3
-                && positional.first().compare(QLatin1String("diff"), Qt::CaseInsensitive) == 0;
     if (!resolved.error.isEmpty() && !o.offline)
         return fail(resolved.error);
     o.link = resolved.link;

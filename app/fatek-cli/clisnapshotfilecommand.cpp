@@ -19,8 +19,16 @@ QString jsonValue(const std::optional<std::uint32_t> &v)
     return v ? QString::number(*v) : QString();
 }
 
+} // namespace
+
+CliSnapshotFileCommand::CliSnapshotFileCommand(CliContext &context)
+    : CliCommand(context)
+{}
+
+CliSnapshotFileCommand::~CliSnapshotFileCommand() = default;
+
 // RANGES: every further argument, "R0..R99, X0..X255" or "R0..R99 X0..X255".
-QString rangesArg(CliStepArgs &a, qsizetype from)
+QString CliSnapshotFileCommand::rangesArg(CliStepArgs &a, qsizetype from)
 {
     const QString text = a.positional.mid(from).join(QLatin1Char(' '));
     if (text.trimmed().isEmpty())
@@ -32,13 +40,10 @@ QString rangesArg(CliStepArgs &a, qsizetype from)
     return {};
 }
 
-} // namespace
-
-CliSnapshotFileCommand::CliSnapshotFileCommand(CliContext &context)
-    : CliCommand(context)
-{}
-
-CliSnapshotFileCommand::~CliSnapshotFileCommand() = default;
+bool CliSnapshotFileCommand::isSnapshotFileName(const QString &path)
+{
+    return SnapshotFile::formatFor(path).has_value();
+}
 
 // A snapshot file name: .json or .csv.
 QString CliSnapshotFileCommand::snapshotFileArg(CliStepArgs &a, const QString &path, QString *out)

@@ -23,6 +23,9 @@ class CliSnapshotFileCommand : public CliCommand
     Q_OBJECT
 
 public:
+    // Whether `path` names a snapshot file (.json or .csv), not a range.
+    static bool isSnapshotFileName(const QString &path);
+
     explicit CliSnapshotFileCommand(CliContext &context);
     ~CliSnapshotFileCommand() override;
 
@@ -45,6 +48,8 @@ protected:
         return owned.get();
     }
     void rearmWatchdog();
+    // RANGES from the argument `from` on (none: every element).
+    static QString rangesArg(CliStepArgs &args, qsizetype from);
     // A snapshot file name: .json or .csv.
     static QString snapshotFileArg(CliStepArgs &args, const QString &path, QString *out);
     using ReadHandler = std::function<void(const SnapshotReader &reader)>;

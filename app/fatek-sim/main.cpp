@@ -1,5 +1,6 @@
 // fatek-sim: a simulated FATEK PLC on TCP, UDP and/or a serial port, both protocols everywhere.
 
+#include "app/common/linkarguments.h"
 #include "app/common/quitsignal.h"
 #include "core/commission/programimage.h"
 #include "core/protocol/logtext.h"
@@ -50,21 +51,20 @@ bool parseRate(const QString &text, double *value)
     return true;
 }
 
-// "7E1" -> data bits, parity, stop bits, read by the one parser of LinkSettings; empty or the
-// reason it is not a serial format.
-QString parseSerialFormat(const QString &text, SerialSettings *s)
+// The serial line's settings as the other programs read them (--baud, --parity, --data, --stop).
+SerialSettings serialSettings(const LinkSettings &link)
 {
-    LinkSettings format;
-    if (QString error = format.setSerialFormat(text); !error.isEmpty())
-        return error;
-    s->dataBits = format.dataBits == 8 ? QSerialPort::Data8 : QSerialPort::Data7;
-    switch (format.parity) {
-    case LinkSettings::Parity::None: s->parity = QSerialPort::NoParity; break;
-    case LinkSettings::Parity::Even: s->parity = QSerialPort::EvenParity; break;
-    case LinkSettings::Parity::Odd: s->parity = QSerialPort::OddParity; break;
+    SerialSettings s;
+    s.portName = link.portName;
+    s.baudRate = link.baudRate;
+    s.dataBits = link.dataBits == 8 ? QSerialPort::Data8 : QSerialPort::Data7;
+    switch (link.parity) {
+    case LinkSettings::Parity::None: s.parity = QSerialPort::NoParity; break;
+    case LinkSettings::Parity::Even: s.parity = QSerialPort::EvenParity; break;
+    case LinkSettings::Parity::Odd: s.parity = QSerialPort::OddParity; break;
     }
-    s->stopBits = format.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop;
-    return {};
+    s.stopBits = link.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop;
+    return s;
 }
 
 int fail(const QString &message)
@@ -98,13 +98,14 @@ int main(int argc, char *argv[])
         QStringLiteral("serial"),
         QStringLiteral("Serve on serial port <device> (e.g. /dev/pts/7, COM3)."),
         QStringLiteral("device"));
-    const QCommandLineOption serialBaudOpt(QStringLiteral("serial-baud"),
-                                           QStringLiteral("Serial port speed (default 9600)."),
-                                           QStringLiteral("baud"), QStringLiteral("9600"));
-    const QCommandLineOption serialFormatOpt(
-        QStringLiteral("serial-format"),
-        QStringLiteral("Serial data bits, parity, stop bits (default 7E1)."),
-        QStringLiteral("format"), QStringLiteral("7E1"));
+    // The serial line's settings: the link options of fatek-cli and fatek-studio, same words.
+    QList<QCommandLineOption> serialLineOpts;
+    for (const QCommandLineOption &option : LinkArguments::commandLineOptions()) {
+        const QString name = option.names().constFirst();
+        if (name == QLatin1String("baud") || name == QLatin1String("parity")
+            || name == QLatin1String("data") || name == QLatin1String("stop"))
+            serialLineOpts << option;
+    }
     const QCommandLineOption bindOpt(
         QStringLiteral("bind"),
         QStringLiteral("Address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)."),
@@ -119,8 +120,8 @@ int main(int argc, char *argv[])
         QStringLiteral("demo-ladder"),
         QStringLiteral("Run the demo ladder in RUN mode (R0 counter, R1 sine, Y0 blink, DR10 ramp, "
                        "X0..X7 walking bit)."));
-    const QCommandLineOption stopOpt(QStringLiteral("stop"),
-                                     QStringLiteral("Start in STOP instead of RUN."));
+    const QCommandLineOption stoppedOpt(QStringLiteral("stopped"),
+                                        QStringLiteral("Start in STOP instead of RUN."));
     const QCommandLineOption refuseOpt(
         QStringLiteral("refuse-run"),
         QStringLiteral("Answer RUN commands with error <code> (5, 6, 7 or 9)."),
@@ -141,7 +142,7 @@ int main(int argc, char *argv[])
     const QCommandLineOption turnaroundOpt(QStringLiteral("turnaround"),
                                            QStringLiteral("Slave turnaround delay in ms."),
                                            QStringLiteral("ms"));
-    const QCommandLineOption baudOpt(QStringLiteral("baud"),
+    const QCommandLineOption paceOpt(QStringLiteral("pace"),
                                      QStringLiteral("Line-speed emulation: delay each answer by "
                                                     "its wire time at <baud> (10 bits per byte)."),
                                      QStringLiteral("baud"));
@@ -172,12 +173,30 @@ int main(int argc, char *argv[])
     const QCommandLineOption seedOpt(QStringLiteral("seed"),
                                      QStringLiteral("Seed of the random faults (default 1)."),
                                      QStringLiteral("n"), QStringLiteral("1"));
-    parser.addOptions({tcpOpt,        udpOpt,     serialOpt,  serialBaudOpt, serialFormatOpt,
-                       bindOpt,       stationOpt, profileOpt, ladderOpt,     stopOpt,
-                       refuseOpt,     verboseOpt, latencyOpt, jitterOpt,     turnaroundOpt,
-                       baudOpt,       dropOpt,    corruptOpt, garbageOpt,    chunkOpt,
-                       chunkDelayOpt, closeOpt,   wrongOpt,   seedOpt,       programOpt});
-    parser.process(app);
+    parser.addOptions({tcpOpt,        udpOpt,     serialOpt, bindOpt,    stationOpt, profileOpt,
+                       ladderOpt,     stoppedOpt, refuseOpt, verboseOpt, latencyOpt, jitterOpt,
+                       turnaroundOpt, paceOpt,    dropOpt,   corruptOpt, garbageOpt, chunkOpt,
+                       chunkDelayOpt, closeOpt,   wrongOpt,  seedOpt,    programOpt});
+    parser.addOptions(serialLineOpts);
+    // Usage errors exit 2, as in the other programs (process() would exit 1).
+    if (!parser.parse(QCoreApplication::arguments()))
+        return fail(parser.errorText());
+    if (parser.isSet(QStringLiteral("help")))
+        parser.showHelp(0);
+    if (parser.isSet(QStringLiteral("version")))
+        parser.showVersion();
+    LinkArguments serialLine;
+    for (const QString &name :
+         {QStringLiteral("serial"), QStringLiteral("baud"), QStringLiteral("parity"),
+          QStringLiteral("data"), QStringLiteral("stop")}) {
+        if (parser.isSet(name))
+            serialLine.set(name, parser.value(name));
+    }
+    LinkArgumentRules serialRules;
+    serialRules.linkRequired = false;
+    const LinkArgumentsResult serialResolved = resolveLinkArguments(serialLine, serialRules);
+    if (!serialResolved.error.isEmpty())
+        return fail(serialResolved.error);
 
     if (!parser.isSet(tcpOpt) && !parser.isSet(udpOpt) && !parser.isSet(serialOpt))
         return fail(
@@ -206,7 +225,7 @@ int main(int argc, char *argv[])
         {&latencyOpt, &faults.latencyMs, 600000},
         {&jitterOpt, &faults.jitterMs, 600000},
         {&turnaroundOpt, &faults.turnaroundMs, 600000},
-        {&baudOpt, &faults.baud, 10000000},
+        {&paceOpt, &faults.baud, 10000000},
         {&garbageOpt, &faults.garbageBytes, 100000},
         {&chunkOpt, &faults.chunkSize, 100000},
         {&chunkDelayOpt, &faults.chunkDelayMs, 600000},
@@ -241,7 +260,7 @@ int main(int argc, char *argv[])
             QStringLiteral("--seed needs a whole number, not \"%1\".").arg(parser.value(seedOpt)));
 
     SimulatedPlc plc(*profile);
-    plc.setRunning(!parser.isSet(stopOpt));
+    plc.setRunning(!parser.isSet(stoppedOpt));
     if (parser.isSet(refuseOpt)) {
         const QString code = parser.value(refuseOpt);
         if (code != QLatin1String("5") && code != QLatin1String("6") && code != QLatin1String("7")
@@ -295,17 +314,7 @@ int main(int argc, char *argv[])
         out() << "listening on udp " << bind.toString() << ':' << server.udpPort() << Qt::endl;
     }
     if (parser.isSet(serialOpt)) {
-        SerialSettings serial;
-        serial.portName = parser.value(serialOpt);
-        int baud = 0;
-        if (!parseInt(parser.value(serialBaudOpt), 50, 10000000, &baud))
-            return fail(QStringLiteral("--serial-baud needs a speed, not \"%1\".")
-                            .arg(parser.value(serialBaudOpt)));
-        serial.baudRate = baud;
-        if (const QString formatError = parseSerialFormat(parser.value(serialFormatOpt), &serial);
-            !formatError.isEmpty())
-            return fail(
-                QStringLiteral("--serial-format takes e.g. 7E1 or 8N1: %1").arg(formatError));
+        const SerialSettings serial = serialSettings(serialResolved.link);
         if (!server.openSerial(serial, &error))
             return fail(error);
         out() << "listening on serial " << serial.portName << Qt::endl;

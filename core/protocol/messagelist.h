@@ -239,6 +239,30 @@ FATEK_MSG(SettingsInterFrame, 1,
                             "Inter-frame silence %1 ms is out of range (0 to 1000 ms)."))
 FATEK_MSG(SettingsConnectTimeout, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "Connect timeout must be at least 1 ms."))
+// Link URLs (LinkSettings::fromUrl): %1 the URL as given.
+FATEK_MSG(SettingsUrlEmpty, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "No link given: write tcp://HOST[:PORT], udp://HOST[:PORT] or "
+                            "serial://PORT."))
+FATEK_MSG(SettingsUrlScheme, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Link \"%1\": start it with tcp://, udp:// or serial:// (for example "
+                            "tcp://192.168.1.5:500 or serial:///dev/ttyUSB0)."))
+FATEK_MSG(SettingsUrlHostPort, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Link \"%1\": write HOST or HOST:PORT with a port from 1 to 65535; an "
+                            "IPv6 address goes in brackets, as in [fe80::1]:500."))
+FATEK_MSG(SettingsUrlNoPort, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Link \"%1\": name the serial port, as in serial:///dev/ttyUSB0 or "
+                            "serial://COM3."))
+// %2 the setting's name, %3 the settings the link takes.
+FATEK_MSG(SettingsUrlUnknown, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Link \"%1\": no setting \"%2\" (this link takes %3)."))
+// %2 the setting's name, %3 its value, %4 what it takes.
+FATEK_MSG(SettingsUrlValue, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Link \"%1\": %2 takes %4, not \"%3\"."))
 FATEK_MSG(SettingsReconnectDelays, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Reconnect delays must be positive, the maximum not below the "

@@ -1,5 +1,8 @@
 #include "linksettings.h"
 
+#include <QRegularExpression>
+#include <QUrl>
+
 namespace Fatek {
 
 LinkSettings LinkSettings::tcp(const QString &host, quint16 port, ProtocolChoice protocol)
@@ -37,6 +40,214 @@ QString protocolChoiceName(LinkSettings::ProtocolChoice choice)
     case LinkSettings::ProtocolChoice::Auto: return QStringLiteral("auto-detect");
     }
     return {};
+}
+
+std::optional<LinkSettings::ProtocolChoice> protocolChoiceFromText(const QString &text)
+{
+    const QString p = text.trimmed().toLower();
+    if (p == QLatin1String("facon"))
+        return LinkSettings::ProtocolChoice::Facon;
+    if (p == QLatin1String("binary"))
+        return LinkSettings::ProtocolChoice::Binary;
+    if (p == QLatin1String("auto"))
+        return LinkSettings::ProtocolChoice::Auto;
+    return std::nullopt;
+}
+
+bool LinkSettings::hostPortFromText(const QString &text, QString *host, quint16 *port)
+{
+    QString h = text.trimmed();
+    QString p;
+    if (h.startsWith(QLatin1Char('['))) {
+        const qsizetype close = h.indexOf(QLatin1Char(']'));
+        if (close < 0)
+            return false;
+        const QString rest = h.mid(close + 1);
+        if (rest.startsWith(QLatin1Char(':')))
+            p = rest.mid(1);
+        else if (!rest.isEmpty())
+            return false;
+        h = h.mid(1, close - 1);
+    } else if (h.count(QLatin1Char(':')) == 1) {
+        p = h.section(QLatin1Char(':'), 1);
+        h = h.section(QLatin1Char(':'), 0, 0);
+        if (p.isEmpty())
+            return false; // "plc1:" lost its port
+    } else if (h.contains(QLatin1Char(':'))) {
+        return false; // "h:p:5", "tcp://h", or an IPv6 address without brackets
+    }
+    if (h.isEmpty() || h.contains(QLatin1Char('/')) || h.contains(QLatin1Char(' ')))
+        return false;
+    *host = h;
+    *port = 500;
+    if (!p.isEmpty()) {
+        bool ok = false;
+        const int v = p.toInt(&ok, 10);
+        if (!ok || v < 1 || v > 65535)
+            return false;
+        *port = static_cast<quint16>(v);
+    }
+    return true;
+}
+
+std::optional<LinkSettings::Parsed> LinkSettings::fromUrl(const QString &url, Message *error,
+                                                          const LinkSettings &defaults)
+{
+    auto fail = [error](Message message) -> std::optional<Parsed> {
+        if (error)
+            *error = std::move(message);
+        return std::nullopt;
+    };
+    const QString text = url.trimmed();
+    if (text.isEmpty())
+        return fail(msg<MsgId::SettingsUrlEmpty>());
+    const std::string quoted = url.toStdString();
+    QString scheme;
+    QString rest = text;
+    if (const qsizetype at = text.indexOf(QLatin1String("://")); at >= 0) {
+        scheme = text.left(at).toLower();
+        rest = text.mid(at + 3);
+    } else {
+        // Without a scheme only a serial port is plain: a device path or a Windows COM name.
+        static const QRegularExpression comName(QStringLiteral(R"(^(\\\\\.\\)?COM[0-9]+($|\?))"),
+                                                QRegularExpression::CaseInsensitiveOption);
+        if (!text.startsWith(QLatin1Char('/')) && !comName.match(text).hasMatch())
+            return fail(msg<MsgId::SettingsUrlScheme>(quoted));
+        scheme = QStringLiteral("serial");
+    }
+    QString target = rest.section(QLatin1Char('?'), 0, 0);
+    const QString query
+        = rest.contains(QLatin1Char('?')) ? rest.section(QLatin1Char('?'), 1) : QString();
+    Parsed parsed;
+    LinkSettings &s = parsed.settings;
+    s = defaults;
+    if (scheme == QLatin1String("tcp") || scheme == QLatin1String("udp")) {
+        QString host;
+        quint16 port = 500;
+        if (!hostPortFromText(QUrl::fromPercentEncoding(target.toUtf8()), &host, &port))
+            return fail(msg<MsgId::SettingsUrlHostPort>(quoted));
+        s.kind = scheme == QLatin1String("tcp") ? Kind::Tcp : Kind::Udp;
+        s.host = host;
+        s.port = port;
+    } else if (scheme == QLatin1String("serial")) {
+        target = QUrl::fromPercentEncoding(target.toUtf8()).trimmed();
+        if (target.isEmpty())
+            return fail(msg<MsgId::SettingsUrlNoPort>(quoted));
+        s.kind = Kind::Serial;
+        s.portName = target;
+    } else {
+        return fail(msg<MsgId::SettingsUrlScheme>(quoted));
+    }
+    const bool serialLink = s.kind == Kind::Serial;
+    const char *known = serialLink ? "baud, format, flow, protocol, timeout, retries, station"
+                                   : "protocol, timeout, retries, station";
+    for (const QString &pair : query.split(QLatin1Char('&'), Qt::SkipEmptyParts)) {
+        const QString key = QUrl::fromPercentEncoding(pair.section(QLatin1Char('='), 0, 0).toUtf8())
+                                .trimmed()
+                                .toLower();
+        const QString value
+            = QUrl::fromPercentEncoding(pair.section(QLatin1Char('='), 1).toUtf8()).trimmed();
+        auto bad = [&](const char *takes) {
+            return fail(msg<MsgId::SettingsUrlValue>(quoted, key.toStdString(), value.toStdString(),
+                                                     std::string(takes)));
+        };
+        auto number = [&value](int min, int max) -> std::optional<int> {
+            bool ok = false;
+            const int v = value.toInt(&ok, 10);
+            return ok && v >= min && v <= max ? std::optional<int>(v) : std::nullopt;
+        };
+        if (key == QLatin1String("protocol")) {
+            const auto choice = protocolChoiceFromText(value);
+            if (!choice)
+                return bad("facon, binary or auto");
+            s.protocol = *choice;
+        } else if (key == QLatin1String("timeout")) {
+            const auto v = number(10, 60000);
+            if (!v)
+                return bad("10 to 60000 (ms)");
+            s.timeoutMs = *v;
+        } else if (key == QLatin1String("retries")) {
+            const auto v = number(0, 10);
+            if (!v)
+                return bad("0 to 10");
+            s.retries = *v;
+        } else if (key == QLatin1String("station")) {
+            const auto v = number(0, 254);
+            if (!v)
+                return bad("0 to 254");
+            parsed.station = *v;
+        } else if (serialLink && key == QLatin1String("baud")) {
+            const auto v = number(50, 10000000);
+            if (!v)
+                return bad("a speed such as 9600 or 19200");
+            s.baudRate = *v;
+        } else if (serialLink && key == QLatin1String("format")) {
+            if (!s.setSerialFormat(value).isEmpty())
+                return bad("data bits, parity and stop bits such as 7E1 or 8N1");
+        } else if (serialLink && key == QLatin1String("flow")) {
+            const QString flow = value.toLower();
+            if (flow == QLatin1String("none"))
+                s.flowControl = FlowControl::None;
+            else if (flow == QLatin1String("rtscts"))
+                s.flowControl = FlowControl::Hardware;
+            else if (flow == QLatin1String("xonxoff"))
+                s.flowControl = FlowControl::Software;
+            else
+                return bad("none, rtscts or xonxoff");
+        } else {
+            return fail(
+                msg<MsgId::SettingsUrlUnknown>(quoted, key.toStdString(), std::string(known)));
+        }
+    }
+    return parsed;
+}
+
+std::optional<LinkSettings::Parsed> LinkSettings::fromUrl(const QString &url, Message *error)
+{
+    return fromUrl(url, error, LinkSettings());
+}
+
+QString LinkSettings::toUrl(int station) const
+{
+    const LinkSettings defaults;
+    QStringList settings;
+    QString url;
+    switch (kind) {
+    case Kind::Tcp:
+    case Kind::Udp: {
+        const QString h = host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host;
+        url = QStringLiteral("%1://%2:%3")
+                  .arg(kind == Kind::Tcp ? QStringLiteral("tcp") : QStringLiteral("udp"), h)
+                  .arg(port);
+        break;
+    }
+    case Kind::Serial:
+        url = QStringLiteral("serial://")
+              + QString::fromUtf8(QUrl::toPercentEncoding(portName, "/\\:."));
+        if (baudRate != defaults.baudRate)
+            settings << QStringLiteral("baud=%1").arg(baudRate);
+        if (serialFormat() != defaults.serialFormat())
+            settings << QStringLiteral("format=") + serialFormat();
+        if (flowControl == FlowControl::Hardware)
+            settings << QStringLiteral("flow=rtscts");
+        else if (flowControl == FlowControl::Software)
+            settings << QStringLiteral("flow=xonxoff");
+        break;
+    }
+    // Always named: the programs differ in their default (fatek-cli and the studio detect).
+    settings << QStringLiteral("protocol=")
+                    + (protocol == ProtocolChoice::Facon    ? QStringLiteral("facon")
+                       : protocol == ProtocolChoice::Binary ? QStringLiteral("binary")
+                                                            : QStringLiteral("auto"));
+    if (timeoutMs != defaults.timeoutMs)
+        settings << QStringLiteral("timeout=%1").arg(timeoutMs);
+    if (retries != defaults.retries)
+        settings << QStringLiteral("retries=%1").arg(retries);
+    if (station > 0)
+        settings << QStringLiteral("station=%1").arg(station);
+    if (!settings.isEmpty())
+        url += QLatin1Char('?') + settings.join(QLatin1Char('&'));
+    return url;
 }
 
 QChar LinkSettings::parityLetter(Parity parity)

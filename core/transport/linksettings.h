@@ -70,13 +70,39 @@ struct LinkSettings
 
     // "TCP 127.0.0.1:500, FACON", "UDP plc1:500, binary", "/dev/ttyUSB0 9600 7E1, auto-detect".
     QString toString() const;
+
+    // A link a script can name (fatek-cli --link, FATEK_LINK, named links, the gateway's config):
+    //   tcp://HOST[:PORT]   udp://HOST[:PORT]   (port 500; IPv6 in brackets: tcp://[fe80::1]:500)
+    //   serial:///dev/ttyUSB0   serial://COM3   /dev/ttyUSB0   COM3   (9600 7E1)
+    // with settings after '?', joined by '&': protocol=facon|binary|auto, timeout=MS, retries=N,
+    // station=N and, on serial links, baud=N, format=7E1, flow=none|rtscts|xonxoff.
+    // Settings not given keep the defaults of `defaults` (the medium's fields are replaced).
+    // On error returns nothing and sets `error` to what is wrong, naming the part.
+    struct Parsed;
+    static std::optional<Parsed> fromUrl(const QString &url, Message *error,
+                                         const LinkSettings &defaults);
+    static std::optional<Parsed> fromUrl(const QString &url, Message *error);
+    // The URL of these settings: the protocol and the settings that differ from the defaults;
+    // fromUrl reads it back to equal settings (station 0 or less: none).
+    QString toUrl(int station = -1) const;
+    // "plc1:502", "plc1" (port 500), "[::1]:502": false if the text is not one of these.
+    static bool hostPortFromText(const QString &text, QString *host, quint16 *port);
     // Empty when usable, else one sentence saying what to fix.
     Message validate() const;
 
     bool operator==(const LinkSettings &) const = default;
 };
 
+// What LinkSettings::fromUrl read: the settings, and the station when the URL named one.
+struct LinkSettings::Parsed
+{
+    LinkSettings settings;
+    std::optional<int> station;
+};
+
 QString protocolChoiceName(LinkSettings::ProtocolChoice choice);
+// "facon", "binary", "auto" (any case): the choice; nothing for another text.
+std::optional<LinkSettings::ProtocolChoice> protocolChoiceFromText(const QString &text);
 
 } // namespace Fatek
 

@@ -104,9 +104,10 @@ void TestStudioStartup::help()
 {
     const Run r = runStudio({QStringLiteral("--help")}, 60000);
     QCOMPARE(r.code, 0);
-    for (const char *option : {"--tcp", "--udp", "--serial", "--baud", "--parity", "--data",
-                               "--stop", "--protocol", "--station", "--timeout", "--retries",
-                               "--demo", "--read-only", "--screenshot", "--language", "[file]"})
+    for (const char *option :
+         {"--link", "--tcp", "--udp", "--serial", "--baud", "--parity", "--data", "--stop",
+          "--protocol", "--station", "--timeout", "--retries", "--demo", "--read-only",
+          "--screenshot", "--language", "[file]"})
         QVERIFY2(r.out.contains(QLatin1String(option)), qPrintable(option + (": " + r.out)));
 }
 
@@ -119,19 +120,21 @@ void TestStudioStartup::usageErrors_data()
     };
     row("missing value", QStringLiteral("--tcp"), QStringLiteral("Missing value after '--tcp'"));
     row("bad port", QStringLiteral("--tcp 127.0.0.1:99999"),
-        QStringLiteral("--tcp needs HOST or HOST:PORT (port 1..65535), not \"127.0.0.1:99999\"."));
+        QStringLiteral("--tcp needs HOST or HOST:PORT (port 1..65535; IPv6 in brackets), not "
+                       "\"127.0.0.1:99999\"."));
     row("two links", QStringLiteral("--tcp plc1 --udp plc2"),
-        QStringLiteral("Give only one of --tcp, --udp, --serial and --demo."));
+        QStringLiteral("Give only one of --link, --tcp, --udp, --serial and --demo."));
     row("demo and link", QStringLiteral("--demo --tcp 127.0.0.1"),
-        QStringLiteral("Give only one of --tcp, --udp, --serial and --demo."));
+        QStringLiteral("Give only one of --link, --tcp, --udp, --serial and --demo."));
     row("demo and station", QStringLiteral("--demo --station 3"),
         QStringLiteral("--demo runs its own simulator"));
     row("station without link", QStringLiteral("--station 3"),
-        QStringLiteral("--protocol, --station, --timeout and --retries need a link"));
+        QStringLiteral(
+            "--protocol, --station, --timeout, --retries and the serial options need a link"));
     row("broadcast station", QStringLiteral("--tcp plc1 --station 0"),
         QStringLiteral("--station takes 1..254, not \"0\"."));
     row("baud without serial", QStringLiteral("--tcp plc1 --baud 9600"),
-        QStringLiteral("--baud, --parity, --data and --stop only apply to --serial."));
+        QStringLiteral("--baud, --parity, --data and --stop only apply to a serial link."));
     row("bad parity", QStringLiteral("--serial /dev/ttyUSB0 --parity X"),
         QStringLiteral("--parity takes N, E or O, not \"X\"."));
     row("bad protocol", QStringLiteral("--tcp plc1 --protocol modbus"),

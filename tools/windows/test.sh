@@ -73,7 +73,7 @@ serial_test() {
         [ -f build/release/build.ninja ] || cmake --preset release >/dev/null
         cmake --build build/release --target fatek-sim >/dev/null
     }
-    build/release/app/fatek-sim/fatek-sim --serial "$tmp/b" --serial-baud 19200 --serial-format 7E1 \
+    build/release/app/fatek-sim/fatek-sim --serial "$tmp/b" --baud 19200 --parity E --data 7 --stop 1 \
         --station 3 --verbose >"$tmp/sim.log" 2>&1 &
     sim_pid=$!
     sleep 1

@@ -18,6 +18,10 @@ private Q_SLOTS:
     void reject();
     void formatRoundTrip();
     void parts();
+    void urls_data();
+    void urls();
+    void badUrls_data();
+    void badUrls();
 };
 
 void TestLinkSettings::parse_data()
@@ -108,6 +112,90 @@ void TestLinkSettings::parts()
     QVERIFY(LinkSettings::stopBitsFromText(QStringLiteral("2")) == 2);
     QVERIFY(!LinkSettings::stopBitsFromText(QStringLiteral("0")));
     QCOMPARE(LinkSettings::parityLetter(Parity::Odd), QChar(u'O'));
+}
+
+// Links a script can name (issue 32): every form reads to the settings meant, and toUrl() reads
+// back to equal settings.
+void TestLinkSettings::urls_data()
+{
+    QTest::addColumn<QString>("url");
+    QTest::addColumn<LinkSettings>("expected");
+    QTest::addColumn<int>("station"); // -1: none named
+    LinkSettings tcp = LinkSettings::tcp(QStringLiteral("plc1"), 502);
+    QTest::newRow("tcp") << QStringLiteral("tcp://plc1:502") << tcp << -1;
+    QTest::newRow("tcp default port")
+        << QStringLiteral("TCP://plc1") << LinkSettings::tcp(QStringLiteral("plc1")) << -1;
+    QTest::newRow("ipv6") << QStringLiteral("udp://[fe80::1]:600")
+                          << LinkSettings::udp(QStringLiteral("fe80::1"), 600) << -1;
+    LinkSettings tuned = tcp;
+    tuned.protocol = LinkSettings::ProtocolChoice::Binary;
+    tuned.timeoutMs = 250;
+    tuned.retries = 0;
+    QTest::newRow("settings") << QStringLiteral("tcp://plc1:502?protocol=binary&timeout=250&"
+                                                "retries=0&station=7")
+                              << tuned << 7;
+    LinkSettings serial = LinkSettings::serial(QStringLiteral("/dev/ttyUSB0"), 19200);
+    serial.setSerialFormat(QStringLiteral("8N2"));
+    serial.flowControl = LinkSettings::FlowControl::Hardware;
+    QTest::newRow("serial") << QStringLiteral(
+        "serial:///dev/ttyUSB0?baud=19200&format=8N2&flow=rtscts")
+                            << serial << -1;
+    QTest::newRow("plain device") << QStringLiteral("/dev/ttyS1")
+                                  << LinkSettings::serial(QStringLiteral("/dev/ttyS1")) << -1;
+    QTest::newRow("com name") << QStringLiteral("COM3?station=2")
+                              << LinkSettings::serial(QStringLiteral("COM3")) << 2;
+    QTest::newRow("com url") << QStringLiteral("serial://COM12")
+                             << LinkSettings::serial(QStringLiteral("COM12")) << -1;
+}
+
+void TestLinkSettings::urls()
+{
+    QFETCH(QString, url);
+    QFETCH(LinkSettings, expected);
+    QFETCH(int, station);
+    Message error;
+    const auto parsed = LinkSettings::fromUrl(url, &error);
+    QVERIFY2(parsed, english(error).c_str());
+    QCOMPARE(parsed->settings, expected);
+    QCOMPARE(parsed->station.value_or(-1), station);
+    const QString back = parsed->settings.toUrl(station);
+    const auto again = LinkSettings::fromUrl(back, &error);
+    QVERIFY2(again, qPrintable(back));
+    QCOMPARE(again->settings, expected);
+    QCOMPARE(again->station.value_or(-1), station);
+}
+
+void TestLinkSettings::badUrls_data()
+{
+    QTest::addColumn<QString>("url");
+    QTest::addColumn<QString>("id");
+    QTest::newRow("empty") << QString() << QStringLiteral("SettingsUrlEmpty");
+    QTest::newRow("no scheme") << QStringLiteral("plc1:500") << QStringLiteral("SettingsUrlScheme");
+    QTest::newRow("other scheme") << QStringLiteral("modbus://plc1")
+                                  << QStringLiteral("SettingsUrlScheme");
+    QTest::newRow("no host") << QStringLiteral("tcp://:500")
+                             << QStringLiteral("SettingsUrlHostPort");
+    QTest::newRow("bad port") << QStringLiteral("tcp://plc1:70000")
+                              << QStringLiteral("SettingsUrlHostPort");
+    QTest::newRow("three parts") << QStringLiteral("tcp://h:p:5")
+                                 << QStringLiteral("SettingsUrlHostPort");
+    QTest::newRow("no serial port")
+        << QStringLiteral("serial://") << QStringLiteral("SettingsUrlNoPort");
+    QTest::newRow("serial setting on tcp")
+        << QStringLiteral("tcp://plc1?baud=9600") << QStringLiteral("SettingsUrlUnknown");
+    QTest::newRow("bad value") << QStringLiteral("serial://COM3?format=7X1")
+                               << QStringLiteral("SettingsUrlValue");
+    QTest::newRow("bad station") << QStringLiteral("tcp://plc1?station=255")
+                                 << QStringLiteral("SettingsUrlValue");
+}
+
+void TestLinkSettings::badUrls()
+{
+    QFETCH(QString, url);
+    QFETCH(QString, id);
+    Message error;
+    QVERIFY(!LinkSettings::fromUrl(url, &error));
+    QCOMPARE(QString::fromLatin1(error.id.name()), id);
 }
 
 QTEST_GUILESS_MAIN(TestLinkSettings)
