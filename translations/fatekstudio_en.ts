@@ -1789,6 +1789,18 @@
             <source>stopped (status offline)</source>
             <translation>stopped (status offline)</translation>
         </message>
+        <message>
+            <source>reloading %1: changed connections restart, the others keep running</source>
+            <translation>reloading %1: changed connections restart, the others keep running</translation>
+        </message>
+        <message>
+            <source>not reloaded, the running configuration stays: %1: %2</source>
+            <translation>not reloaded, the running configuration stays: %1: %2</translation>
+        </message>
+        <message>
+            <source>reloaded</source>
+            <translation>reloaded</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

@@ -1789,6 +1789,18 @@
             <source>stopped (status offline)</source>
             <translation>已停止（狀態為離線）</translation>
         </message>
+        <message>
+            <source>reloading %1: changed connections restart, the others keep running</source>
+            <translation>重新載入 %1：變更的連線重新啟動，其餘繼續執行</translation>
+        </message>
+        <message>
+            <source>not reloaded, the running configuration stays: %1: %2</source>
+            <translation>未重新載入，維持執行中的設定：%1：%2</translation>
+        </message>
+        <message>
+            <source>reloaded</source>
+            <translation>已重新載入</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::UiText</name>

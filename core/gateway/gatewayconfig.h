@@ -22,6 +22,8 @@ struct GatewayConnectionConfig
     {
         QString file;                  // as written in the configuration
         std::optional<int> intervalMs; // overrides every table's interval of that file
+
+        bool operator==(const WatchListFileRef &) const = default;
     };
 
     QString name;
@@ -35,6 +37,9 @@ struct GatewayConnectionConfig
     // A write command older than this (its "time", or how long it waited at the broker while the
     // gateway was away) is refused instead of carried out late.
     int commandMaxAgeSec = 10;
+
+    // A reload restarts a link only when its connection's settings changed.
+    bool operator==(const GatewayConnectionConfig &) const = default;
 
     // Whether `address` lies in one of the allowlist's ranges.
     bool allows(const Address &address) const;

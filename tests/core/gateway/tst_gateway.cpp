@@ -114,9 +114,13 @@ private Q_SLOTS:
     void delayHistogramPercentiles();
     void logTextEscapesControls();
     void executableWillAndCleanStop();
+    void sighupReloadsChangedLinksOnly();
 
 private:
     QByteArray configJson(bool readOnly, int keepAliveSec = 30) const;
+    // configJson's connection line1 once per name, all to the same simulator.
+    QByteArray configJsonOf(const QStringList &connections) const;
+    void writeFile(const QString &path, const QByteArray &content);
     bool startGateway(bool readOnly);
     std::unique_ptr<MqttClient> subscriber(Inbox *inbox);
     QString topic(const char *address, int station = 1) const
@@ -190,6 +194,27 @@ QByteArray TestGateway::configJson(bool readOnly, int keepAliveSec) const
     connection.insert(QStringLiteral("link"), link);
     json.insert(QStringLiteral("connections"), QJsonArray{connection});
     return QJsonDocument(json).toJson();
+}
+
+QByteArray TestGateway::configJsonOf(const QStringList &connections) const
+{
+    QJsonObject json = QJsonDocument::fromJson(configJson(false)).object();
+    const QJsonObject line1 = json.value(QStringLiteral("connections")).toArray().at(0).toObject();
+    QJsonArray list;
+    for (const QString &name : connections) {
+        QJsonObject connection = line1;
+        connection.insert(QStringLiteral("name"), name);
+        list.append(connection);
+    }
+    json.insert(QStringLiteral("connections"), list);
+    return QJsonDocument(json).toJson();
+}
+
+void TestGateway::writeFile(const QString &path, const QByteArray &content)
+{
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    QCOMPARE(file.write(content), content.size());
 }
 
 bool TestGateway::startGateway(bool readOnly)
@@ -921,6 +946,80 @@ void TestGateway::executableWillAndCleanStop()
     QVERIFY2(log.contains(QStringLiteral("\"5\\n") + QString::fromUtf8(forged)), qPrintable(log));
     for (const QString &line : log.split(u'\n'))
         QVERIFY2(!line.endsWith(QStringLiteral("(id \"x\"): written")), qPrintable(log));
+}
+
+// SIGHUP (issue 33): the configuration file again; a connection added starts, one removed stops
+// (offline), one unchanged keeps running with its session untouched (nothing new on its status
+// topic); a file that does not load leaves the running configuration.
+void TestGateway::sighupReloadsChangedLinksOnly()
+{
+#ifndef Q_OS_UNIX
+    QSKIP("SIGHUP is a Unix signal");
+#else
+    const QString configPath = m_dir->filePath(QStringLiteral("gateway.json"));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    const auto status = [](const char *connection) {
+        return GatewayTopics::status(QStringLiteral("fatek"), QString::fromLatin1(connection));
+    };
+    const auto r100 = [](const char *connection) {
+        return GatewayTopics::item(QStringLiteral("fatek"), QString::fromLatin1(connection), 1,
+                                   addr("R100"));
+    };
+    writeFile(configPath, configJsonOf({QStringLiteral("line1"), QStringLiteral("line2")}));
+    QProcess gateway;
+    TestUtil::startConsoleProgram(&gateway, QStringLiteral(FATEK_GATEWAY_PATH), {configPath});
+    QVERIFY(gateway.waitForStarted(Wait));
+    const auto stop = qScopeGuard([&gateway] {
+        TestUtil::stopConsoleProgram(&gateway);
+        gateway.waitForFinished(Wait);
+    });
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(status("line1")), std::optional(LinkStatus::Up), Wait);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(status("line2")), std::optional(LinkStatus::Up), Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.item(r100("line1")).has_value(), Wait);
+
+    // line2 goes, line3 comes, line1 stays as it was.
+    writeFile(configPath, configJsonOf({QStringLiteral("line1"), QStringLiteral("line3")}));
+    const auto line1Status = [&inbox, &status] {
+        return std::count_if(inbox.all.cbegin(), inbox.all.cend(),
+                             [&status](const auto &e) { return e.topic == status("line1"); });
+    };
+    const auto line1Before = line1Status();
+    m_plc->setValue(addr("R100"), 4321);
+    QCOMPARE(::kill(static_cast<pid_t>(gateway.processId()), SIGHUP), 0);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(status("line2")), std::optional(LinkStatus::Offline),
+                              Wait);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(status("line3")), std::optional(LinkStatus::Up), Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.item(r100("line3")).has_value()
+                                 && inbox.item(r100("line3"))->words
+                                        == std::vector<std::uint32_t>{4321},
+                             Wait);
+    // line1 read the new value through the session it had all along.
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(r100("line1"))->words, std::vector<std::uint32_t>{4321},
+                              Wait);
+    QCOMPARE(line1Status(), line1Before);
+    QCOMPARE(gateway.state(), QProcess::Running);
+    // line2 no longer polls: its value stays the one before the reload.
+    m_plc->setValue(addr("R100"), 5555);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.item(r100("line1"))->words, std::vector<std::uint32_t>{5555},
+                              Wait);
+    QCOMPARE(inbox.item(r100("line2"))->words, std::vector<std::uint32_t>{1234});
+
+    // A file that does not load: logged with its error, everything keeps running.
+    writeFile(configPath, R"({"format":"fatek-gateway","version":1,"readonly":true})");
+    QCOMPARE(::kill(static_cast<pid_t>(gateway.processId()), SIGHUP), 0);
+    QString log;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (log += QString::fromUtf8(gateway.readAllStandardError()))
+            .contains(QStringLiteral("not reloaded, the running configuration stays")),
+        Wait);
+    QVERIFY2(log.contains(QStringLiteral("readOnly")), qPrintable(log));
+    QCOMPARE(gateway.state(), QProcess::Running);
+    QCOMPARE(line1Status(), line1Before);
+    QCOMPARE(inbox.status(status("line3")), std::optional(LinkStatus::Up));
+    QVERIFY2(!log.contains(QStringLiteral("line1: stopped")), qPrintable(log));
+#endif
 }
 
 QTEST_GUILESS_MAIN(TestGateway)
