@@ -7,6 +7,7 @@
 #include "core/gateway/gatewayconfig.h"
 #include "core/gateway/gatewaymessages.h"
 #include "core/protocol/logtext.h"
+#include "systemdnotifier.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -116,25 +117,36 @@ int main(int argc, char *argv[])
               << Qt::endl;
         return 2;
     }
+    // Under systemd (Type=notify): ready once the links run, alive while the loop turns.
+    SystemdNotifier systemd;
+    systemd.notify("READY=1");
+    systemd.startWatchdog();
     // Every link publishes "offline" and disconnects; the program ends when all have.
     QObject::connect(&gateway, &Gateway::stopped, &app, &QCoreApplication::quit);
-    onQuitSignal(&app, [&gateway] { gateway.stop(); });
+    onQuitSignal(&app, [&gateway, &systemd] {
+        systemd.notify("STOPPING=1");
+        gateway.stop();
+    });
     // SIGHUP: the file again; one that does not load leaves the running configuration as it is.
     const QString self = QStringLiteral("fatek-gateway");
     const bool forceReadOnly = parser.isSet(readOnlyOpt);
-    onReloadSignal(&app, [&gateway, &path, &self, forceReadOnly] {
+    onReloadSignal(&app, [&gateway, &systemd, &path, &self, forceReadOnly] {
+        systemd.reloading();
         logLine(self, msg<MsgId::GatewayLogReloading>(path.toStdString()));
         Result<GatewayConfig> reloaded = GatewayConfig::loadFromFile(path);
         if (!reloaded) {
             logLine(self, msg<MsgId::GatewayLogReloadFailed>(path.toStdString(),
                                                              reloaded.error().message));
+            systemd.notify("READY=1");
             return;
         }
         if (forceReadOnly)
             reloaded.value().readOnly = true;
         gateway.reload(reloaded.value());
     });
-    QObject::connect(&gateway, &Gateway::reloaded, &app,
-                     [&self] { logLine(self, msg<MsgId::GatewayLogReloaded>()); });
+    QObject::connect(&gateway, &Gateway::reloaded, &app, [&self, &systemd] {
+        logLine(self, msg<MsgId::GatewayLogReloaded>());
+        systemd.notify("READY=1");
+    });
     return app.exec();
 }

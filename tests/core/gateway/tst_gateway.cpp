@@ -30,6 +30,13 @@
 #ifdef Q_OS_UNIX
 #include <csignal>
 #endif
+#ifdef Q_OS_LINUX
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <cstddef>
+#endif
 #include <cstring>
 #include <memory>
 
@@ -115,6 +122,7 @@ private Q_SLOTS:
     void logTextEscapesControls();
     void executableWillAndCleanStop();
     void sighupReloadsChangedLinksOnly();
+    void systemdNotifyReadyAndWatchdog();
 
 private:
     QByteArray configJson(bool readOnly, int keepAliveSec = 30) const;
@@ -1019,6 +1027,82 @@ void TestGateway::sighupReloadsChangedLinksOnly()
     QCOMPARE(line1Status(), line1Before);
     QCOMPARE(inbox.status(status("line3")), std::optional(LinkStatus::Up));
     QVERIFY2(!log.contains(QStringLiteral("line1: stopped")), qPrintable(log));
+#endif
+}
+
+// systemd's notify protocol (issue 33): with $NOTIFY_SOCKET (a path, then an abstract name) the
+// gateway sends READY=1 once its links run, WATCHDOG=1 at half of $WATCHDOG_USEC from its event
+// loop, RELOADING=1 ... READY=1 around a reload and STOPPING=1 when told to stop.
+void TestGateway::systemdNotifyReadyAndWatchdog()
+{
+#ifndef Q_OS_LINUX
+    QSKIP("sd_notify is Linux only");
+#else
+    const QString configPath = m_dir->filePath(QStringLiteral("gateway.json"));
+    writeFile(configPath, configJson(false));
+    Inbox inbox;
+    const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+    QVERIFY(client);
+    for (const bool abstract : {false, true}) {
+        const QByteArray name
+            = abstract
+                  ? "@fatek-gateway-test-" + QByteArray::number(QCoreApplication::applicationPid())
+                  : QFile::encodeName(m_dir->filePath(QStringLiteral("notify")));
+        const int fd = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
+        QVERIFY(fd >= 0);
+        const auto closeSocket = qScopeGuard([fd] { ::close(fd); });
+        sockaddr_un address = {};
+        address.sun_family = AF_UNIX;
+        QVERIFY(std::size_t(name.size()) < sizeof address.sun_path);
+        std::memcpy(address.sun_path, name.constData(), std::size_t(name.size()));
+        if (abstract)
+            address.sun_path[0] = '\0';
+        const auto length
+            = static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + std::size_t(name.size()));
+        QCOMPARE(::bind(fd, reinterpret_cast<const sockaddr *>(&address), length), 0);
+        QStringList received;
+        const auto receive = [fd, &received]() -> const QStringList & {
+            char buffer[512];
+            ssize_t n = 0;
+            while ((n = ::recv(fd, buffer, sizeof buffer, 0)) > 0)
+                received.append(QString::fromUtf8(buffer, n));
+            return received;
+        };
+        QProcess gateway;
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.insert(QStringLiteral("NOTIFY_SOCKET"), QString::fromUtf8(name));
+        environment.insert(QStringLiteral("WATCHDOG_USEC"), QStringLiteral("400000"));
+        gateway.setProcessEnvironment(environment);
+        TestUtil::startConsoleProgram(&gateway, QStringLiteral(FATEK_GATEWAY_PATH), {configPath});
+        QVERIFY(gateway.waitForStarted(Wait));
+        const auto stop = qScopeGuard([&gateway] {
+            TestUtil::stopConsoleProgram(&gateway);
+            gateway.waitForFinished(Wait);
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(receive().contains(QStringLiteral("READY=1")), Wait);
+        // Ready means started: the link's first status went out before.
+        QTRY_VERIFY_WITH_TIMEOUT(inbox.status(statusTopic()).has_value(), Wait);
+        // Every 200 ms: five within 2 s even on a loaded machine, a hung loop sends none.
+        QTRY_VERIFY_WITH_TIMEOUT(receive().count(QStringLiteral("WATCHDOG=1")) >= 5, Wait);
+        QVERIFY(!receive().contains(QStringLiteral("STOPPING=1")));
+
+        QCOMPARE(::kill(static_cast<pid_t>(gateway.processId()), SIGHUP), 0);
+        const auto reloading = [&receive] {
+            const QStringList &all = receive();
+            return std::find_if(all.cbegin(), all.cend(), [](const QString &m) {
+                return m.startsWith(QStringLiteral("RELOADING=1\nMONOTONIC_USEC="));
+            });
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(reloading() != received.cend(), Wait);
+        QTRY_VERIFY_WITH_TIMEOUT(std::find(reloading(), received.cend(), QStringLiteral("READY=1"))
+                                     != received.cend(),
+                                 Wait);
+
+        TestUtil::stopConsoleProgram(&gateway);
+        QVERIFY(gateway.waitForFinished(Wait));
+        QVERIFY(receive().contains(QStringLiteral("STOPPING=1")));
+        QCOMPARE(gateway.exitCode(), 0);
+    }
 #endif
 }
 
