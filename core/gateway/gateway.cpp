@@ -2,11 +2,25 @@
 
 #include "gatewaylink.h"
 #include "gatewaymessages.h"
+#include "homeassistantdiscovery.h"
+
+#include <QSet>
 
 #include <algorithm>
 #include <utility>
 
 namespace Fatek {
+
+namespace {
+
+std::vector<HomeAssistantDiscovery::Entry> discoveryOf(const GatewayConfig &config,
+                                                       const GatewayConnectionConfig &connection)
+{
+    return HomeAssistantDiscovery::entries(config.homeAssistant.prefix, config.prefix, connection,
+                                           config.readOnly);
+}
+
+} // namespace
 
 Gateway::Gateway(QObject *parent)
     : QObject(parent)
@@ -40,6 +54,8 @@ bool Gateway::startLink(const GatewayConnectionConfig &connection, int pollDelay
 {
     auto link = std::make_unique<GatewayLink>(connection, m_config.prefix, m_config.broker,
                                               m_config.readOnly);
+    if (m_config.homeAssistant.discovery)
+        link->setDiscovery(discoveryOf(m_config, connection));
     const QString name = connection.name;
     connect(link.get(), &GatewayLink::logEvent, this,
             [this, name](const Message &event) { Q_EMIT logEvent(name, event); });
@@ -63,7 +79,16 @@ void Gateway::reload(const GatewayConfig &config)
         return;
     }
     const bool everything = config.broker != m_config.broker || config.prefix != m_config.prefix
-                            || config.readOnly != m_config.readOnly;
+                            || config.readOnly != m_config.readOnly
+                            || config.homeAssistant != m_config.homeAssistant;
+    // Discovery configs that stay: a retiring link clears the others (entities removed).
+    QSet<QString> keep;
+    if (config.homeAssistant.discovery) {
+        for (const GatewayConnectionConfig &c : config.connections) {
+            for (const HomeAssistantDiscovery::Entry &entry : discoveryOf(config, c))
+                keep.insert(entry.topic);
+        }
+    }
     m_config = config;
     m_reloading = true;
     m_waiting.clear();
@@ -83,8 +108,10 @@ void Gateway::reload(const GatewayConfig &config)
             m_waiting.append(c);
     }
     for (Running &running : m_links) {
-        if (running.retiring)
-            running.link->stop();
+        if (!running.retiring)
+            continue;
+        running.link->clearDiscovery(keep);
+        running.link->stop();
     }
     startWaiting();
 }

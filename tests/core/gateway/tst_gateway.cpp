@@ -96,6 +96,35 @@ struct Inbox
     }
 };
 
+// The fatek-gateway executable on a configuration file, stopped as a user would (SIGTERM) when
+// it goes out of scope.
+class GatewayProcess
+{
+public:
+    explicit GatewayProcess(const QString &configPath, const QProcessEnvironment &environment
+                                                       = QProcessEnvironment::systemEnvironment())
+    {
+        process.setProcessEnvironment(environment);
+        TestUtil::startConsoleProgram(&process, QStringLiteral(FATEK_GATEWAY_PATH), {configPath});
+    }
+    ~GatewayProcess()
+    {
+        if (process.state() == QProcess::NotRunning)
+            return;
+        TestUtil::stopConsoleProgram(&process);
+        process.waitForFinished(Wait);
+    }
+#ifdef Q_OS_UNIX
+    // SIGHUP: read the configuration file again.
+    bool reload() const
+    {
+        return ::kill(static_cast<pid_t>(process.processId()), SIGHUP) == 0;
+    }
+#endif
+
+    QProcess process;
+};
+
 } // namespace
 
 class TestGateway : public QObject
@@ -123,6 +152,7 @@ private Q_SLOTS:
     void executableWillAndCleanStop();
     void sighupReloadsChangedLinksOnly();
     void systemdNotifyReadyAndWatchdog();
+    void homeAssistantDiscovery();
 
 private:
     QByteArray configJson(bool readOnly, int keepAliveSec = 30) const;
@@ -976,16 +1006,12 @@ void TestGateway::sighupReloadsChangedLinksOnly()
                                    addr("R100"));
     };
     writeFile(configPath, configJsonOf({QStringLiteral("line1"), QStringLiteral("line2")}));
-    QProcess gateway;
-    TestUtil::startConsoleProgram(&gateway, QStringLiteral(FATEK_GATEWAY_PATH), {configPath});
-    QVERIFY(gateway.waitForStarted(Wait));
-    const auto stop = qScopeGuard([&gateway] {
-        TestUtil::stopConsoleProgram(&gateway);
-        gateway.waitForFinished(Wait);
-    });
+    GatewayProcess gateway(configPath);
+    QVERIFY(gateway.process.waitForStarted(Wait));
     QTRY_COMPARE_WITH_TIMEOUT(inbox.status(status("line1")), std::optional(LinkStatus::Up), Wait);
     QTRY_COMPARE_WITH_TIMEOUT(inbox.status(status("line2")), std::optional(LinkStatus::Up), Wait);
     QTRY_VERIFY_WITH_TIMEOUT(inbox.item(r100("line1")).has_value(), Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.item(r100("line2")).has_value(), Wait);
 
     // line2 goes, line3 comes, line1 stays as it was.
     writeFile(configPath, configJsonOf({QStringLiteral("line1"), QStringLiteral("line3")}));
@@ -995,7 +1021,7 @@ void TestGateway::sighupReloadsChangedLinksOnly()
     };
     const auto line1Before = line1Status();
     m_plc->setValue(addr("R100"), 4321);
-    QCOMPARE(::kill(static_cast<pid_t>(gateway.processId()), SIGHUP), 0);
+    QVERIFY(gateway.reload());
     QTRY_COMPARE_WITH_TIMEOUT(inbox.status(status("line2")), std::optional(LinkStatus::Offline),
                               Wait);
     QTRY_COMPARE_WITH_TIMEOUT(inbox.status(status("line3")), std::optional(LinkStatus::Up), Wait);
@@ -1007,7 +1033,7 @@ void TestGateway::sighupReloadsChangedLinksOnly()
     QTRY_COMPARE_WITH_TIMEOUT(inbox.item(r100("line1"))->words, std::vector<std::uint32_t>{4321},
                               Wait);
     QCOMPARE(line1Status(), line1Before);
-    QCOMPARE(gateway.state(), QProcess::Running);
+    QCOMPARE(gateway.process.state(), QProcess::Running);
     // line2 no longer polls: its value stays the one before the reload.
     m_plc->setValue(addr("R100"), 5555);
     QTRY_COMPARE_WITH_TIMEOUT(inbox.item(r100("line1"))->words, std::vector<std::uint32_t>{5555},
@@ -1016,14 +1042,14 @@ void TestGateway::sighupReloadsChangedLinksOnly()
 
     // A file that does not load: logged with its error, everything keeps running.
     writeFile(configPath, R"({"format":"fatek-gateway","version":1,"readonly":true})");
-    QCOMPARE(::kill(static_cast<pid_t>(gateway.processId()), SIGHUP), 0);
+    QVERIFY(gateway.reload());
     QString log;
     QTRY_VERIFY_WITH_TIMEOUT(
-        (log += QString::fromUtf8(gateway.readAllStandardError()))
+        (log += QString::fromUtf8(gateway.process.readAllStandardError()))
             .contains(QStringLiteral("not reloaded, the running configuration stays")),
         Wait);
     QVERIFY2(log.contains(QStringLiteral("readOnly")), qPrintable(log));
-    QCOMPARE(gateway.state(), QProcess::Running);
+    QCOMPARE(gateway.process.state(), QProcess::Running);
     QCOMPARE(line1Status(), line1Before);
     QCOMPARE(inbox.status(status("line3")), std::optional(LinkStatus::Up));
     QVERIFY2(!log.contains(QStringLiteral("line1: stopped")), qPrintable(log));
@@ -1068,17 +1094,11 @@ void TestGateway::systemdNotifyReadyAndWatchdog()
                 received.append(QString::fromUtf8(buffer, n));
             return received;
         };
-        QProcess gateway;
         QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
         environment.insert(QStringLiteral("NOTIFY_SOCKET"), QString::fromUtf8(name));
         environment.insert(QStringLiteral("WATCHDOG_USEC"), QStringLiteral("400000"));
-        gateway.setProcessEnvironment(environment);
-        TestUtil::startConsoleProgram(&gateway, QStringLiteral(FATEK_GATEWAY_PATH), {configPath});
-        QVERIFY(gateway.waitForStarted(Wait));
-        const auto stop = qScopeGuard([&gateway] {
-            TestUtil::stopConsoleProgram(&gateway);
-            gateway.waitForFinished(Wait);
-        });
+        GatewayProcess gateway(configPath, environment);
+        QVERIFY(gateway.process.waitForStarted(Wait));
         QTRY_VERIFY_WITH_TIMEOUT(receive().contains(QStringLiteral("READY=1")), Wait);
         // Ready means started: the link's first status went out before.
         QTRY_VERIFY_WITH_TIMEOUT(inbox.status(statusTopic()).has_value(), Wait);
@@ -1086,7 +1106,7 @@ void TestGateway::systemdNotifyReadyAndWatchdog()
         QTRY_VERIFY_WITH_TIMEOUT(receive().count(QStringLiteral("WATCHDOG=1")) >= 5, Wait);
         QVERIFY(!receive().contains(QStringLiteral("STOPPING=1")));
 
-        QCOMPARE(::kill(static_cast<pid_t>(gateway.processId()), SIGHUP), 0);
+        QVERIFY(gateway.reload());
         const auto reloading = [&receive] {
             const QStringList &all = receive();
             return std::find_if(all.cbegin(), all.cend(), [](const QString &m) {
@@ -1098,10 +1118,149 @@ void TestGateway::systemdNotifyReadyAndWatchdog()
                                      != received.cend(),
                                  Wait);
 
-        TestUtil::stopConsoleProgram(&gateway);
-        QVERIFY(gateway.waitForFinished(Wait));
+        TestUtil::stopConsoleProgram(&gateway.process);
+        QVERIFY(gateway.process.waitForFinished(Wait));
         QVERIFY(receive().contains(QStringLiteral("STOPPING=1")));
-        QCOMPARE(gateway.exitCode(), 0);
+        QCOMPARE(gateway.process.exitCode(), 0);
+    }
+#endif
+}
+
+// Home Assistant's MQTT discovery (issue 33), read as Home Assistant would: one retained config
+// per item under homeassistant/, valid JSON with the keys it needs, availability on topics that
+// really carry the gateway's status and the item's quality, a command topic the gateway answers;
+// a reload that removes a connection clears its configs (empty retained payloads).
+void TestGateway::homeAssistantDiscovery()
+{
+#ifndef Q_OS_UNIX
+    QSKIP("the reload is SIGHUP, a Unix signal");
+#else
+    const QString configPath = m_dir->filePath(QStringLiteral("gateway.json"));
+    const auto withDiscovery = [](const QByteArray &json) {
+        QJsonObject root = QJsonDocument::fromJson(json).object();
+        root.insert(QStringLiteral("homeAssistant"),
+                    QJsonObject{{QStringLiteral("discovery"), true}});
+        return QJsonDocument(root).toJson();
+    };
+    writeFile(configPath,
+              withDiscovery(configJsonOf({QStringLiteral("line1"), QStringLiteral("line2")})));
+    Inbox inbox;
+    MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(m_broker->url());
+    MqttClient client(settings);
+    inbox.attach(&client);
+    client.subscribe(QStringLiteral("fatek/#"), 1);
+    client.subscribe(QStringLiteral("homeassistant/#"), 1);
+    QVERIFY(client.open());
+    GatewayProcess gateway(configPath);
+    QVERIFY(gateway.process.waitForStarted(Wait));
+    const auto configs = [&inbox](const QString &connection) {
+        QHash<QString, QJsonObject> found;
+        for (const Inbox::Entry &e : std::as_const(inbox.last)) {
+            if (e.topic.startsWith(QStringLiteral("homeassistant/"))
+                && e.topic.contains(QStringLiteral("/fatek_") + connection + u'/'))
+                found.insert(e.topic, QJsonDocument::fromJson(e.payload).object());
+        }
+        return found;
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(configs(QStringLiteral("line1")).size(), 5, Wait);
+    QTRY_COMPARE_WITH_TIMEOUT(configs(QStringLiteral("line2")).size(), 5, Wait);
+    QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.item(topic("DR10")).has_value(), Wait);
+
+    // Which entity each item is: R100 and Y0 are allowlisted (number, switch), the rest not.
+    const QString node = QStringLiteral("homeassistant/%1/fatek_line1/s1_%2/config");
+    const QHash<QString, QJsonObject> line1 = configs(QStringLiteral("line1"));
+    for (const auto &[component, address] : {std::pair{"number", "R100"},
+                                             {"sensor", "R200"},
+                                             {"switch", "Y0"},
+                                             {"sensor", "R300"},
+                                             {"sensor", "DR10"}}) {
+        const QString configTopic = node.arg(QLatin1String(component), QLatin1String(address));
+        QVERIFY2(line1.contains(configTopic), qPrintable(configTopic));
+        const QJsonObject config = line1.value(configTopic);
+        for (const char *key :
+             {"name", "unique_id", "state_topic", "value_template", "availability", "device"})
+            QVERIFY2(config.contains(QLatin1String(key)), key);
+        QCOMPARE(config.value(QStringLiteral("state_topic")).toString(), topic(address));
+        QVERIFY(config.value(QStringLiteral("value_template"))
+                    .toString()
+                    .contains(QStringLiteral("value_json.value")));
+        QCOMPARE(config.value(QStringLiteral("unique_id")).toString(),
+                 QStringLiteral("fatek_line1_s1_") + QLatin1String(address));
+        QCOMPARE(config.value(QStringLiteral("device"))
+                     .toObject()
+                     .value(QStringLiteral("identifiers"))
+                     .toArray()
+                     .at(0)
+                     .toString(),
+                 QStringLiteral("fatek-gateway_fatek_line1"));
+        // Availability: the connection's status (also the will) and the item's own quality, on
+        // topics the gateway really publishes, in the words the templates compare.
+        const QJsonArray availability = config.value(QStringLiteral("availability")).toArray();
+        QCOMPARE(availability.size(), 2);
+        const QJsonObject status = availability.at(0).toObject();
+        QCOMPARE(status.value(QStringLiteral("topic")).toString(), statusTopic());
+        QCOMPARE(status.value(QStringLiteral("payload_available")).toString(),
+                 QStringLiteral("up"));
+        QVERIFY(status.value(QStringLiteral("value_template"))
+                    .toString()
+                    .contains(QStringLiteral("value_json.state == '")
+                              + GatewayPayload::linkStatusName(LinkStatus::Up)));
+        const QJsonObject quality = availability.at(1).toObject();
+        QCOMPARE(quality.value(QStringLiteral("topic")).toString(), topic(address));
+        QVERIFY(quality.value(QStringLiteral("value_template"))
+                    .toString()
+                    .contains(QStringLiteral("value_json.quality == '")
+                              + GatewayPayload::qualityName(ValueQuality::Good)));
+        QTRY_VERIFY_WITH_TIMEOUT(inbox.item(topic(address))
+                                     && inbox.item(topic(address))->quality == ValueQuality::Good,
+                                 Wait);
+        QCOMPARE(config.value(QStringLiteral("availability_mode")).toString(),
+                 QStringLiteral("all"));
+    }
+    QCOMPARE(line1.value(node.arg(QStringLiteral("number"), QStringLiteral("R100")))
+                 .value(QStringLiteral("name"))
+                 .toString(),
+             QStringLiteral("Speed")); // the watch list's name
+    QCOMPARE(line1.value(node.arg(QStringLiteral("sensor"), QStringLiteral("R300")))
+                 .value(QStringLiteral("name"))
+                 .toString(),
+             QStringLiteral("R300")); // no name: the address
+
+    // The number's command topic takes what Home Assistant sends: the plain value.
+    const QJsonObject number
+        = line1.value(node.arg(QStringLiteral("number"), QStringLiteral("R100")));
+    QVERIFY(
+        client.publish(number.value(QStringLiteral("command_topic")).toString(), "77", 1, false));
+    QTRY_VERIFY_WITH_TIMEOUT(inbox.reply(topic("R100") + QStringLiteral("/reply")).has_value(),
+                             Wait);
+    QVERIFY(inbox.reply(topic("R100") + QStringLiteral("/reply"))->ok);
+    QTRY_COMPARE_WITH_TIMEOUT(m_plc->value(addr("R100")), std::optional<std::uint32_t>(77), Wait);
+
+    // line2 removed: its entities go (empty retained configs), line1's stay.
+    writeFile(configPath, withDiscovery(configJsonOf({QStringLiteral("line1")})));
+    QVERIFY(gateway.reload());
+    QTRY_COMPARE_WITH_TIMEOUT(
+        inbox.status(GatewayTopics::status(QStringLiteral("fatek"), QStringLiteral("line2"))),
+        std::optional(LinkStatus::Offline), Wait);
+    for (const QString &configTopic : configs(QStringLiteral("line2")).keys())
+        QVERIFY2(inbox.last.value(configTopic).payload.isEmpty(), qPrintable(configTopic));
+    for (const QString &configTopic : line1.keys())
+        QVERIFY(!inbox.last.value(configTopic).payload.isEmpty());
+    {
+        // A Home Assistant that starts now finds line1's configs only.
+        Inbox later;
+        MqttClient reader(settings);
+        later.attach(&reader);
+        reader.subscribe(QStringLiteral("homeassistant/#"), 1);
+        QVERIFY(reader.open());
+        QTRY_COMPARE_WITH_TIMEOUT(later.last.size(), 5, Wait);
+        QTest::qWait(300);
+        QCOMPARE(later.last.size(), 5);
+        for (const Inbox::Entry &e : std::as_const(later.last)) {
+            QVERIFY(e.retained);
+            QVERIFY2(e.topic.contains(QStringLiteral("/fatek_line1/")), qPrintable(e.topic));
+        }
     }
 #endif
 }
