@@ -153,6 +153,7 @@ private Q_SLOTS:
     void sighupReloadsChangedLinksOnly();
     void systemdNotifyReadyAndWatchdog();
     void homeAssistantDiscovery();
+    void statusOnceEachAtStart();
 
 private:
     QByteArray configJson(bool readOnly, int keepAliveSec = 30) const;
@@ -1263,6 +1264,43 @@ void TestGateway::homeAssistantDiscovery()
         }
     }
 #endif
+}
+
+// At start the status goes connecting, then up, each at most once (issue 33: a retained topic
+// handed to the client in the moment between its connection and the connected signal went out
+// twice).
+void TestGateway::statusOnceEachAtStart()
+{
+    for (int run = 0; run < 5; ++run) {
+        Inbox inbox;
+        const std::unique_ptr<MqttClient> client = subscriber(&inbox);
+        QVERIFY(client);
+        QTRY_VERIFY_WITH_TIMEOUT(client->isConnected(), Wait);
+        QTest::qWait(100); // the subscription is in place
+        QVERIFY(startGateway(false));
+        QTRY_COMPARE_WITH_TIMEOUT(inbox.status(statusTopic()), std::optional(LinkStatus::Up), Wait);
+        QTest::qWait(500);
+        QStringList states;
+        for (const Inbox::Entry &e : std::as_const(inbox.all)) {
+            if (e.topic == statusTopic())
+                states << GatewayPayload::linkStatusName(
+                    GatewayPayload::decodeStatus(e.payload)->state);
+        }
+        // "connecting" may be replaced before it went out (a retained topic keeps its newest
+        // state while the broker is not there yet); nothing goes twice.
+        const QString text = states.join(u',');
+        QVERIFY2(text == QStringLiteral("connecting,up") || text == QStringLiteral("up"),
+                 qPrintable(text));
+        m_link->stop();
+        QTRY_VERIFY_WITH_TIMEOUT(m_link->isStopped(), Wait);
+        m_link.reset();
+        // The next run's subscriber must not get this run's retained status.
+        MqttClient cleaner(*MqttBrokerSettings::fromUrl(m_broker->url()));
+        QVERIFY(cleaner.open());
+        QTRY_VERIFY_WITH_TIMEOUT(cleaner.isConnected(), Wait);
+        QVERIFY(cleaner.publish(statusTopic(), {}, 1, true));
+        QTRY_COMPARE_WITH_TIMEOUT(cleaner.outstanding(), 0, Wait);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestGateway)
