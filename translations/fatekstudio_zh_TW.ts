@@ -1522,6 +1522,10 @@
             <translation>已與代理伺服器 %1 斷線。</translation>
         </message>
         <message>
+            <source>keep-alive timeout: the broker did not answer within %1 s</source>
+            <translation>保持連線逾時：代理伺服器在 %1 秒內沒有回應</translation>
+        </message>
+        <message>
             <source>MQTT library error: %1</source>
             <translation>MQTT 程式庫錯誤：%1</translation>
         </message>
@@ -1536,6 +1540,10 @@
         <message>
             <source>&quot;%1&quot; is not a value format.</source>
             <translation>「%1」不是數值格式。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be %2 or %3.</source>
+            <translation>「%1」必須為 %2 或 %3。</translation>
         </message>
         <message>
             <source>&quot;words&quot; must be a list of whole numbers from 0 to 4294967295.</source>
