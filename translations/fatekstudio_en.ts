@@ -1546,6 +1546,10 @@
             <translation>Disconnected from the broker %1.</translation>
         </message>
         <message>
+            <source>keep-alive timeout: the broker did not answer within %1 s</source>
+            <translation>keep-alive timeout: the broker did not answer within %1 s</translation>
+        </message>
+        <message>
             <source>MQTT library error: %1</source>
             <translation>MQTT library error: %1</translation>
         </message>
@@ -1560,6 +1564,10 @@
         <message>
             <source>&quot;%1&quot; is not a value format.</source>
             <translation>&quot;%1&quot; is not a value format.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be %2 or %3.</source>
+            <translation>&quot;%1&quot; must be %2 or %3.</translation>
         </message>
         <message>
             <source>&quot;words&quot; must be a list of whole numbers from 0 to 4294967295.</source>
@@ -1812,6 +1820,18 @@
         <message>
             <source>stopped (status offline)</source>
             <translation>stopped (status offline)</translation>
+        </message>
+        <message>
+            <source>reloading %1: changed connections restart, the others keep running</source>
+            <translation>reloading %1: changed connections restart, the others keep running</translation>
+        </message>
+        <message>
+            <source>not reloaded, the running configuration stays: %1: %2</source>
+            <translation>not reloaded, the running configuration stays: %1: %2</translation>
+        </message>
+        <message>
+            <source>reloaded</source>
+            <translation>reloaded</translation>
         </message>
     </context>
     <context>

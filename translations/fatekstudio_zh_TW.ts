@@ -1546,6 +1546,10 @@
             <translation>已與代理伺服器 %1 斷線。</translation>
         </message>
         <message>
+            <source>keep-alive timeout: the broker did not answer within %1 s</source>
+            <translation>保持連線逾時：代理伺服器在 %1 秒內沒有回應</translation>
+        </message>
+        <message>
             <source>MQTT library error: %1</source>
             <translation>MQTT 程式庫錯誤：%1</translation>
         </message>
@@ -1560,6 +1564,10 @@
         <message>
             <source>&quot;%1&quot; is not a value format.</source>
             <translation>「%1」不是數值格式。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be %2 or %3.</source>
+            <translation>「%1」必須為 %2 或 %3。</translation>
         </message>
         <message>
             <source>&quot;words&quot; must be a list of whole numbers from 0 to 4294967295.</source>
@@ -1812,6 +1820,18 @@
         <message>
             <source>stopped (status offline)</source>
             <translation>已停止（狀態為離線）</translation>
+        </message>
+        <message>
+            <source>reloading %1: changed connections restart, the others keep running</source>
+            <translation>重新載入 %1：變更的連線重新啟動，其餘繼續執行</translation>
+        </message>
+        <message>
+            <source>not reloaded, the running configuration stays: %1: %2</source>
+            <translation>未重新載入，維持執行中的設定：%1：%2</translation>
+        </message>
+        <message>
+            <source>reloaded</source>
+            <translation>已重新載入</translation>
         </message>
     </context>
     <context>

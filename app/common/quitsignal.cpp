@@ -23,12 +23,14 @@ QPointer<QObject> g_context;
 
 #ifdef Q_OS_UNIX
 namespace {
-// Self-pipe: the handler only writes a byte (async-signal-safe), the event loop reads it.
+// Self-pipe: the handler only writes the signal's number (async-signal-safe), the event loop
+// reads it.
 int g_signalPipe[2] = {-1, -1};
+std::function<void()> g_onReload;
 
-void onSignal(int)
+void onSignal(int signal)
 {
-    const char c = 1;
+    const auto c = static_cast<char>(signal);
     [[maybe_unused]] const auto n = ::write(g_signalPipe[1], &c, 1);
 }
 } // namespace
@@ -42,15 +44,28 @@ void onQuitSignal(QObject *context, std::function<void()> onQuit)
     auto *notifier = new QSocketNotifier(g_signalPipe[0], QSocketNotifier::Read, context);
     QObject::connect(notifier, &QSocketNotifier::activated, context, [] {
         char c = 0;
-        [[maybe_unused]] const auto n = ::read(g_signalPipe[0], &c, 1);
-        if (g_onQuit)
-            g_onQuit();
+        if (::read(g_signalPipe[0], &c, 1) != 1)
+            return;
+        const std::function<void()> &handler = c == SIGHUP ? g_onReload : g_onQuit;
+        if (handler)
+            handler();
     });
     struct sigaction action = {};
     action.sa_handler = onSignal;
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+}
+
+void onReloadSignal(QObject *, std::function<void()> onReload)
+{
+    if (g_signalPipe[0] < 0)
+        return;
+    g_onReload = std::move(onReload);
+    struct sigaction action = {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGHUP, &action, nullptr);
 }
 #elif defined(Q_OS_WIN)
 namespace {
@@ -81,8 +96,11 @@ void onQuitSignal(QObject *context, std::function<void()> onQuit)
     g_context = context;
     SetConsoleCtrlHandler(onConsoleControl, TRUE);
 }
+
+void onReloadSignal(QObject *, std::function<void()>) {}
 #else
 void onQuitSignal(QObject *, std::function<void()>) {}
+void onReloadSignal(QObject *, std::function<void()>) {}
 #endif
 
 } // namespace Fatek

@@ -13,4 +13,9 @@ namespace Fatek {
 // Call once per program.
 void onQuitSignal(QObject *context, std::function<void()> onQuit);
 
+// Calls onReload in the event loop of context's thread on SIGHUP (Unix; elsewhere nothing is
+// installed): the daemon convention for "read your configuration again" (systemctl reload).
+// Call after onQuitSignal, once per program.
+void onReloadSignal(QObject *context, std::function<void()> onReload);
+
 } // namespace Fatek

@@ -1,20 +1,18 @@
 // fatek-gateway: publishes FATEK PLC values to an MQTT broker and takes allowlisted writes back
-// (docs/gateway.md). One GatewayLink per connection of the configuration file.
+// (docs/gateway.md). One GatewayLink per connection of the configuration file (Gateway); SIGHUP
+// reloads the file.
 
 #include "app/common/quitsignal.h"
+#include "core/gateway/gateway.h"
 #include "core/gateway/gatewayconfig.h"
-#include "core/gateway/gatewaylink.h"
 #include "core/gateway/gatewaymessages.h"
 #include "core/protocol/logtext.h"
+#include "systemdnotifier.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QTextStream>
-
-#include <algorithm>
-#include <memory>
-#include <vector>
 
 using namespace Fatek;
 
@@ -75,7 +73,7 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(
         QStringLiteral("Publishes the values of FATEK PLCs to an MQTT broker and carries out "
                        "allowlisted writes.\nRuns until SIGINT or SIGTERM; logs one line per "
-                       "event on standard error."));
+                       "event on standard error; SIGHUP reloads the configuration."));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption checkOpt(
@@ -110,46 +108,45 @@ int main(int argc, char *argv[])
         return 0;
     }
 
-    // Link i of n opens i/n of the shortest interval (at most 1 s) after the first, so that their
-    // poll cycles, and the bursts of publications they cause, are spread over the interval.
-    int shortestMs = 1000;
-    for (const GatewayConnectionConfig &c : config.connections) {
-        for (const WatchTableSpec &table : c.tables)
-            shortestMs = std::min(shortestMs, table.intervalMs);
+    Gateway gateway;
+    QObject::connect(&gateway, &Gateway::logEvent, &logLine);
+    QString failed;
+    Message error;
+    if (!gateway.start(config, &failed, &error)) {
+        err() << "fatek-gateway: " << failed << ": " << QString::fromStdString(english(error))
+              << Qt::endl;
+        return 2;
     }
-    const auto linkCount = static_cast<int>(config.connections.size());
-    std::vector<std::unique_ptr<GatewayLink>> links;
-    for (const GatewayConnectionConfig &c : config.connections) {
-        const int pollDelayMs = static_cast<int>(links.size()) * shortestMs / linkCount;
-        auto link = std::make_unique<GatewayLink>(c, config.prefix, config.broker, config.readOnly);
-        const QString name = c.name;
-        QObject::connect(link.get(), &GatewayLink::logEvent,
-                         [name](const Message &event) { logLine(name, event); });
-        Message error;
-        if (!link->start(&error, pollDelayMs)) {
-            err() << "fatek-gateway: " << name << ": " << QString::fromStdString(english(error))
-                  << Qt::endl;
-            return 2;
-        }
-        logLine(name, msg<MsgId::GatewayLogStarted>(c.itemCount(), c.link.toString().toStdString(),
-                                                    config.broker.toUrl().toStdString()));
-        links.push_back(std::move(link));
-    }
+    // Under systemd (Type=notify): ready once the links run, alive while the loop turns.
+    SystemdNotifier systemd;
+    systemd.notify("READY=1");
+    systemd.startWatchdog();
     // Every link publishes "offline" and disconnects; the program ends when all have.
-    const auto quitWhenAllStopped = [&links] {
-        for (const auto &link : links) {
-            if (!link->isStopped())
-                return;
-        }
-        QCoreApplication::quit();
-    };
-    for (const auto &link : links)
-        QObject::connect(link.get(), &GatewayLink::stopped, &app, quitWhenAllStopped);
-    onQuitSignal(&app, [&links] {
-        for (const auto &link : links)
-            link->stop();
+    QObject::connect(&gateway, &Gateway::stopped, &app, &QCoreApplication::quit);
+    onQuitSignal(&app, [&gateway, &systemd] {
+        systemd.notify("STOPPING=1");
+        gateway.stop();
     });
-    const int rc = app.exec();
-    links.clear();
-    return rc;
+    // SIGHUP: the file again; one that does not load leaves the running configuration as it is.
+    const QString self = QStringLiteral("fatek-gateway");
+    const bool forceReadOnly = parser.isSet(readOnlyOpt);
+    onReloadSignal(&app, [&gateway, &systemd, &path, &self, forceReadOnly] {
+        systemd.reloading();
+        logLine(self, msg<MsgId::GatewayLogReloading>(path.toStdString()));
+        Result<GatewayConfig> reloaded = GatewayConfig::loadFromFile(path);
+        if (!reloaded) {
+            logLine(self, msg<MsgId::GatewayLogReloadFailed>(path.toStdString(),
+                                                             reloaded.error().message));
+            systemd.notify("READY=1");
+            return;
+        }
+        if (forceReadOnly)
+            reloaded.value().readOnly = true;
+        gateway.reload(reloaded.value());
+    });
+    QObject::connect(&gateway, &Gateway::reloaded, &app, [&self, &systemd] {
+        logLine(self, msg<MsgId::GatewayLogReloaded>());
+        systemd.notify("READY=1");
+    });
+    return app.exec();
 }

@@ -258,6 +258,19 @@ Problem readBroker(const QJsonObject &json, const QString &baseDirectory, MqttBr
     return std::nullopt;
 }
 
+Problem readHomeAssistant(const QJsonObject &json, GatewayConfig::HomeAssistant *out)
+{
+    Reader r(json);
+    out->discovery = r.boolean(QStringLiteral("discovery"), false);
+    out->prefix = r.string(QStringLiteral("prefix"), out->prefix);
+    r.rejectUnknown();
+    if (r.problem)
+        return r.problem;
+    if (!GatewayTopics::isValidPrefix(out->prefix))
+        return msg<MsgId::GatewayConfigBadPrefix>(out->prefix.toStdString());
+    return std::nullopt;
+}
+
 Problem readLink(const QJsonObject &json, LinkSettings *out)
 {
     Reader r(json);
@@ -453,6 +466,7 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
     config.prefix = r.string(QStringLiteral("prefix"), config.prefix);
     config.readOnly = r.boolean(QStringLiteral("readOnly"), false);
     const QJsonObject broker = r.object(QStringLiteral("broker"), false);
+    const QJsonObject homeAssistant = r.object(QStringLiteral("homeAssistant"), false);
     const QJsonArray connections = r.array(QStringLiteral("connections"));
     r.known({QStringLiteral("format"), QStringLiteral("version")}); // checked above
     r.rejectUnknown();
@@ -462,6 +476,9 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
         return fail(msg<MsgId::GatewayConfigBadPrefix>(config.prefix.toStdString()));
     if (Problem p = readBroker(broker, baseDirectory, &config.broker))
         return fail(at(msg<MsgId::GatewayPlaceBroker>(), *p));
+    // The place is the key itself, as typed (not a word to translate).
+    if (Problem p = readHomeAssistant(homeAssistant, &config.homeAssistant))
+        return fail(at(Message::text("homeAssistant"), *p));
     if (connections.isEmpty())
         return fail(msg<MsgId::GatewayConfigNoConnections>());
     QSet<QString> names;

@@ -22,6 +22,8 @@ struct GatewayConnectionConfig
     {
         QString file;                  // as written in the configuration
         std::optional<int> intervalMs; // overrides every table's interval of that file
+
+        bool operator==(const WatchListFileRef &) const = default;
     };
 
     QString name;
@@ -36,6 +38,9 @@ struct GatewayConnectionConfig
     // gateway was away) is refused instead of carried out late.
     int commandMaxAgeSec = 10;
 
+    // A reload restarts a link only when its connection's settings changed.
+    bool operator==(const GatewayConnectionConfig &) const = default;
+
     // Whether `address` lies in one of the allowlist's ranges.
     bool allows(const Address &address) const;
     int itemCount() const;
@@ -45,7 +50,7 @@ struct GatewayConnectionConfig
 //   {"format":"fatek-gateway","version":1,"broker":{"url":"mqtt://127.0.0.1:1883",...},
 //    "prefix":"fatek","readOnly":false,"connections":[{"name":"line1","link":{...},
 //    "watchLists":[{"file":"line1.json","intervalMs":1000}],"allow":["R100..R199"],
-//    "statisticsIntervalMs":5000}]}
+//    "statisticsIntervalMs":5000}],"homeAssistant":{"discovery":true,"prefix":"homeassistant"}}
 // Everything is checked when loading; an error names its place ("connection 2 (line1): link:
 // port 70000 is out of range (1..65535)"). Watch lists and the password file are read relative
 // to the configuration file.
@@ -56,9 +61,19 @@ struct GatewayConfig
     static constexpr int MinStatisticsIntervalMs = 100;
     static constexpr int MaxStatisticsIntervalMs = 3600000;
 
+    // Home Assistant's MQTT discovery (HomeAssistantDiscovery): off unless asked for.
+    struct HomeAssistant
+    {
+        bool discovery = false;
+        QString prefix = QStringLiteral("homeassistant"); // Home Assistant's discovery prefix
+
+        bool operator==(const HomeAssistant &) const = default;
+    };
+
     MqttBrokerSettings broker;
     QString prefix = QStringLiteral("fatek");
     bool readOnly = false;
+    HomeAssistant homeAssistant;
     QList<GatewayConnectionConfig> connections;
 
     // `baseDirectory`: where relative file names start.

@@ -110,6 +110,8 @@ bool GatewayLink::start(Message *error, int pollDelayMs)
         return false;
     }
     publishStatus(LinkStatus::Connecting, {});
+    for (const HomeAssistantDiscovery::Entry &entry : m_discovery)
+        m_publisher->publishRetained(entry.topic, entry.payload);
     if (pollDelayMs > 0) {
         QTimer::singleShot(pollDelayMs, this, [this] {
             if (!m_stopping)
@@ -120,6 +122,19 @@ bool GatewayLink::start(Message *error, int pollDelayMs)
     }
     m_statisticsTimer.start();
     return true;
+}
+
+void GatewayLink::setDiscovery(std::vector<HomeAssistantDiscovery::Entry> entries)
+{
+    m_discovery = std::move(entries);
+}
+
+void GatewayLink::clearDiscovery(const QSet<QString> &keep)
+{
+    for (const HomeAssistantDiscovery::Entry &entry : m_discovery) {
+        if (!keep.contains(entry.topic))
+            m_publisher->publishRetained(entry.topic, {});
+    }
 }
 
 void GatewayLink::stop(int timeoutMs)

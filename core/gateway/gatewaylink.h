@@ -6,11 +6,13 @@
 #include "delayhistogram.h"
 #include "gatewayconfig.h"
 #include "gatewaystatistics.h"
+#include "homeassistantdiscovery.h"
 
 #include <QDateTime>
 #include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
+#include <QSet>
 #include <QTimer>
 
 #include <deque>
@@ -57,6 +59,12 @@ public:
     // disconnects and closes the PLC link (accepted writes drain first); stopped() when done.
     void stop(int timeoutMs = 3000);
     bool isStopped() const { return m_stopped; }
+    // Home Assistant's discovery configs for this link's items (retained, QoS 1): published when
+    // the link starts and, as every retained topic, again after each reconnect. Before start().
+    void setDiscovery(std::vector<HomeAssistantDiscovery::Entry> entries);
+    // Clears the discovery configs of this link that `keep` does not hold (an empty retained
+    // payload: Home Assistant removes the entity), before stop() when a reload removes items.
+    void clearDiscovery(const QSet<QString> &keep);
 
     GatewayStatistics statistics() const;
     Session *session() const { return m_session; }
@@ -104,6 +112,7 @@ private:
     MqttClient *m_client;
     GatewayPublisher *m_publisher;
     std::vector<Item> m_items;
+    std::vector<HomeAssistantDiscovery::Entry> m_discovery;
     ItemAssembler m_assembler; // joins the session's element values into m_items' values
     QHash<QString, std::size_t> m_itemOfTopic;
     std::deque<std::size_t> m_dirty; // items to publish, oldest change first

@@ -83,3 +83,11 @@ FATEK_MSG(GatewayLogBrokerDown, 1, QT_TRANSLATE_NOOP("Fatek::Message", "broker d
 FATEK_MSG(GatewayLogStarted, 3,
           QT_TRANSLATE_NOOP("Fatek::Message", "started: %1 items from %2, broker %3"))
 FATEK_MSG(GatewayLogStopped, 0, QT_TRANSLATE_NOOP("Fatek::Message", "stopped (status offline)"))
+// SIGHUP: %1 the configuration file; %2 why it was not taken.
+FATEK_MSG(GatewayLogReloading, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "reloading %1: changed connections restart, the others keep running"))
+FATEK_MSG(GatewayLogReloadFailed, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "not reloaded, the running configuration stays: %1: %2"))
+FATEK_MSG(GatewayLogReloaded, 0, QT_TRANSLATE_NOOP("Fatek::Message", "reloaded"))

@@ -12,6 +12,7 @@ GatewayPublisher::GatewayPublisher(MqttClient *client, QObject *parent)
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &GatewayPublisher::flush);
     connect(client, &MqttClient::connected, this, &GatewayPublisher::onConnected);
+    connect(client, &MqttClient::disconnected, this, [this] { m_online = false; });
 }
 
 void GatewayPublisher::publishRetained(const QString &topic, const QByteArray &payload, int qos)
@@ -47,7 +48,10 @@ bool GatewayPublisher::hasRoom() const
 
 void GatewayPublisher::flush()
 {
-    if (!m_client->isConnected())
+    // Not before onConnected(): the client is connected a moment before its signal arrives here,
+    // and what went out in that moment would go again from onConnected() (issue 33: "connecting"
+    // and "up" twice at start).
+    if (!m_online || !m_client->isConnected())
         return; // onConnected() sends everything
     // Replies first: someone waits for them; a retained value is only the newest state.
     while (!m_replies.empty() && m_client->outstanding() < m_limits.maxOutstanding) {
@@ -69,6 +73,7 @@ void GatewayPublisher::flush()
 
 void GatewayPublisher::onConnected()
 {
+    m_online = true;
     // The broker may have restarted without persistence: every retained topic goes again.
     for (auto it = m_retained.cbegin(); it != m_retained.cend(); ++it)
         m_dirty.insert(it.key());

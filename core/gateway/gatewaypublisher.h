@@ -65,7 +65,8 @@ private:
     QHash<QString, int> m_qos;             // ... and its QoS
     QSet<QString> m_dirty;                 // retained topics not sent since they changed
     std::deque<std::pair<QString, QByteArray>> m_replies;
-    QTimer m_retry; // flush again while held back by the outstanding bound
+    QTimer m_retry;        // flush again while held back by the outstanding bound
+    bool m_online = false; // onConnected() ran for the client's present connection
 };
 
 } // namespace Fatek

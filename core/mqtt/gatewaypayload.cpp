@@ -368,8 +368,14 @@ std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteA
                 return std::nullopt;
             }
         }
-        if (object->contains(QStringLiteral("swapWords")))
-            command.swapWords = object->value(QStringLiteral("swapWords")).toBool();
+        if (object->contains(QStringLiteral("swapWords"))) {
+            const QJsonValue swap = object->value(QStringLiteral("swapWords"));
+            if (!swap.isBool()) {
+                *error = msg<MsgId::GatewaySetNotBool>("swapWords", "true", "false");
+                return std::nullopt;
+            }
+            command.swapWords = swap.toBool();
+        }
         command.id = object->value(QStringLiteral("id")).toString();
         if (object->contains(QStringLiteral("time"))) {
             const QString text = object->value(QStringLiteral("time")).toString();

@@ -6,6 +6,7 @@
 
 #include <QCoreApplication>
 #include <QMetaObject>
+#include <QRandomGenerator>
 
 #include <mosquitto.h>
 
@@ -68,6 +69,13 @@ std::string libraryError(int rc)
         return std::strerror(errno);
     }
     return mosquitto_strerror(rc);
+}
+
+// The backoff spread over 75..125 %: the links of a gateway (and gateways) that lost the same
+// broker at the same instant do not all try again in the same instant (issue 33).
+int jittered(int delayMs)
+{
+    return delayMs * 3 / 4 + static_cast<int>(QRandomGenerator::global()->bounded(delayMs / 2 + 1));
 }
 
 QString madeUpClientId(const MqttBrokerSettings &settings)
@@ -245,8 +253,11 @@ void MqttClientShared::linkDown(int rc)
     }
     if (!wasConnected)
         return;
-    const Message reason = rc == 0 ? msg<MsgId::MqttClosed>(url)
-                                   : msg<MsgId::MqttLinkLost>(url, Message::text(libraryError(rc)));
+    const Message why = rc == MOSQ_ERR_KEEPALIVE
+                            ? msg<MsgId::MqttKeepaliveTimeout>(settings.keepAliveSec)
+                            : Message::text(libraryError(rc));
+    const Message reason
+        = rc == 0 ? msg<MsgId::MqttClosed>(url) : msg<MsgId::MqttLinkLost>(url, why);
     post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
 }
 
@@ -409,7 +420,7 @@ void MqttClientShared::run()
             post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
         }
         std::unique_lock lock(mutex);
-        wake.wait_for(lock, std::chrono::milliseconds(delayMs), [this] { return stop; });
+        wake.wait_for(lock, std::chrono::milliseconds(jittered(delayMs)), [this] { return stop; });
         delayMs = std::min(delayMs * 2, settings.reconnectMaxMs);
     }
 }

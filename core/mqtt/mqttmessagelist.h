@@ -40,6 +40,11 @@ FATEK_MSG(MqttTlsFailed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "the TLS handsha
 FATEK_MSG(MqttErrorDetail, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 (the library says: %2)"))
 FATEK_MSG(MqttLinkLost, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Link to the broker %1 lost: %2"))
 FATEK_MSG(MqttClosed, 1, QT_TRANSLATE_NOOP("Fatek::Message", "Disconnected from the broker %1."))
+// %2 of MqttLinkLost when the broker stopped answering (libmosquitto's MOSQ_ERR_KEEPALIVE, which
+// its own mosquitto_strerror() calls "Unknown error"): %1 the keep-alive in seconds.
+FATEK_MSG(MqttKeepaliveTimeout, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "keep-alive timeout: the broker did not answer within %1 s"))
 FATEK_MSG(MqttLibraryError, 1, QT_TRANSLATE_NOOP("Fatek::Message", "MQTT library error: %1"))
 
 // Write commands on <item>/set (core/mqtt/gatewaypayload.cpp).
@@ -52,6 +57,9 @@ FATEK_MSG(GatewaySetNoValue, 0,
                             "{\"value\": ...}."))
 FATEK_MSG(GatewaySetBadFormat, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a value format."))
+// A boolean key with another value ("swapWords":"yes"): refused, never read as false. %1 the
+// key, %2 and %3 the values it takes (typed as they are, so arguments).
+FATEK_MSG(GatewaySetNotBool, 3, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2 or %3."))
 FATEK_MSG(GatewaySetBadWords, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "\"words\" must be a list of whole numbers from 0 to 4294967295."))

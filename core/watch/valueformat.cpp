@@ -1,9 +1,11 @@
 #include "valueformat.h"
 
 #include <QLocale>
+#include <QRegularExpression>
 
 #include <array>
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <limits>
 
@@ -161,6 +163,26 @@ bool isRawNotation(QStringView text)
            || (text.size() > 1 && text.back().toLower() == QLatin1Char('h'));
 }
 
+// A decimal number in a notation the integer grammar does not take ("1e308", "-2.5e9") whose
+// value lies outside a register of `width` bits: too large, not "not a number" (issue 33).
+bool decimalOutOfRange(const QString &text, int width)
+{
+    static const QRegularExpression decimal(
+        QStringLiteral(R"(^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$)"));
+    if (!decimal.match(text).hasMatch())
+        return false;
+    const QByteArray latin = text.toLatin1();
+    // from_chars: no locale (the desktop's decimal comma), and no leading '+'.
+    const char *begin = latin.constData() + (latin.startsWith('+') ? 1 : 0);
+    double value = 0;
+    const auto [end, error] = std::from_chars(begin, latin.constData() + latin.size(), value);
+    if (error == std::errc::result_out_of_range)
+        return true; // beyond a double: 1e400
+    if (error != std::errc{} || end != latin.constData() + latin.size())
+        return false;
+    return value > static_cast<double>(widthMask(width)) || value < -std::ldexp(1.0, width - 1);
+}
+
 // Integer text as the interpreted value (before the word swap), masked to `width`.
 Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat format)
 {
@@ -198,6 +220,9 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
             return valueError(msg<MsgId::ValueNotHex>(str(text)));
         if (base == 2)
             return valueError(msg<MsgId::ValueNotBinary>(str(text)));
+        if (decimalOutOfRange(text, width))
+            return valueError(
+                msg<MsgId::ValueTooLarge>(str(text), widthPhrase(width), str(rangeText(width))));
         return valueError(msg<MsgId::ValueNotNumber>(str(text)));
     };
 

@@ -176,6 +176,16 @@ void TestGatewayConfig::errors_data()
                                "none empty, without '+' or '#'.";
     QTest::newRow("readOnly type")
         << QVariantList{"readOnly"} << QJsonValue("yes") << "\"readOnly\" must be true or false.";
+    QTest::newRow("homeAssistant discovery type")
+        << QVariantList{"homeAssistant", "discovery"} << QJsonValue("yes")
+        << "homeAssistant: \"discovery\" must be true or false.";
+    QTest::newRow("homeAssistant prefix")
+        << QVariantList{"homeAssistant", "prefix"} << QJsonValue("ha/#")
+        << "homeAssistant: \"ha/#\" is not a usable topic prefix: levels separated by '/', "
+           "none empty, without '+' or '#'.";
+    QTest::newRow("homeAssistant unknown key")
+        << QVariantList{"homeAssistant", "discover"} << QJsonValue(true)
+        << "homeAssistant: \"discover\" is not a known setting; did you mean \"discovery\"?";
     QTest::newRow("broker url") << QVariantList{"broker", "url"} << QJsonValue("http://x")
                                 << "broker: \"http://x\" is not a broker address: write "
                                    "mqtt://host:1883 or mqtts://user@host:8883.";

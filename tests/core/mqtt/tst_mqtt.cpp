@@ -18,12 +18,16 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
 #include <QTimeZone>
 
 #include <algorithm>
+#ifdef Q_OS_UNIX
+#include <csignal>
+#endif
 #include <cstring>
 #include <span>
 
@@ -89,6 +93,8 @@ private Q_SLOTS:
     void clientRefusedConnectionSaysWhy();
     void clientWrongPasswordSaysWhy();
     void clientReconnectsAfterBrokerRestart();
+    void clientStalledBrokerSaysKeepalive();
+    void clientsDoNotReconnectInLockstep();
     void clientBurstArrivesWholeAndInOrder();
 };
 
@@ -554,6 +560,9 @@ void TestMqtt::setCommands()
              QStringLiteral("The command starts with { but is not a JSON object."));
     QVERIFY(!GatewayPayload::decodeSet(R"({"value":"1","format":"quad"})", &error));
     QCOMPARE(englishText(error), QStringLiteral("\"quad\" is not a value format."));
+    // A boolean key with another value is refused, not read as false (issue 33).
+    QVERIFY(!GatewayPayload::decodeSet(R"({"value":"1","swapWords":"yes"})", &error));
+    QCOMPARE(englishText(error), QStringLiteral("\"swapWords\" must be true or false."));
     QVERIFY(!GatewayPayload::decodeSet("  ", &error));
     QVERIFY(!GatewayPayload::decodeSet(R"({"id":"x"})", &error));
 
@@ -726,6 +735,74 @@ void TestMqtt::clientReconnectsAfterBrokerRestart()
     QVERIFY(publisher.publish(QStringLiteral("fatek/r/x"), "after restart"));
     QTRY_COMPARE_WITH_TIMEOUT(inbox.last.value(QStringLiteral("fatek/r/x")),
                               QByteArray("after restart"), 5000);
+}
+
+// A broker that stops answering (SIGSTOP: its socket stays open) is given up after the
+// keep-alive, and the reason says so (issue 33: libmosquitto's own text is "Unknown error").
+void TestMqtt::clientStalledBrokerSaysKeepalive()
+{
+#ifndef Q_OS_UNIX
+    QSKIP("stopping the broker (SIGSTOP) has no Windows counterpart");
+#else
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    MqttBrokerSettings settings = settingsFor(broker);
+    settings.keepAliveSec = 5; // the library's least
+    MqttClient client(settings);
+    QSignalSpy up(&client, &MqttClient::connected);
+    QSignalSpy down(&client, &MqttClient::disconnected);
+    QVERIFY(client.open());
+    QVERIFY(up.wait(5000));
+    const auto pid = static_cast<pid_t>(broker.processId());
+    QVERIFY(pid > 0);
+    QCOMPARE(::kill(pid, SIGSTOP), 0);
+    const auto resume = qScopeGuard([pid] { ::kill(pid, SIGCONT); });
+    QTRY_VERIFY_WITH_TIMEOUT(!down.isEmpty(), 20000);
+    const QString reason = englishText(down.first().first().value<Message>());
+    QVERIFY2(reason.endsWith(QStringLiteral("lost: keep-alive timeout: the broker did not answer "
+                                            "within 5 s")),
+             qPrintable(reason));
+#endif
+}
+
+// Clients that lose the broker in the same instant try again at spread instants (issue 33: a
+// gateway's links, all with the same backoff, hit a restarted broker together).
+void TestMqtt::clientsDoNotReconnectInLockstep()
+{
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    MqttBrokerSettings settings = settingsFor(broker);
+    settings.reconnectMinMs = 400;
+    settings.reconnectMaxMs = 400;
+    constexpr int Clients = 8;
+    std::vector<std::unique_ptr<MqttClient>> clients;
+    std::vector<std::vector<qint64>> downs(Clients); // when each reported a loss or a failed try
+    QElapsedTimer clock;
+    clock.start();
+    for (int i = 0; i < Clients; ++i) {
+        clients.push_back(std::make_unique<MqttClient>(settings));
+        connect(clients.back().get(), &MqttClient::disconnected, this, [&downs, &clock, i] {
+            downs[static_cast<std::size_t>(i)].push_back(clock.elapsed());
+        });
+        QVERIFY(clients.back()->open());
+    }
+    for (const auto &client : clients)
+        QTRY_VERIFY_WITH_TIMEOUT(client->isConnected(), 5000);
+    broker.kill();
+    // The loss, then the first try again (refused at once): its delay is the backoff's.
+    QTRY_VERIFY_WITH_TIMEOUT(
+        std::all_of(downs.cbegin(), downs.cend(), [](const auto &d) { return d.size() >= 2; }),
+        10000);
+    std::vector<qint64> delays;
+    for (const auto &d : downs)
+        delays.push_back(d[1] - d[0]);
+    const auto [least, most] = std::minmax_element(delays.cbegin(), delays.cend());
+    QVERIFY2(*least >= 280 && *most <= 600,
+             qPrintable(QStringLiteral("%1..%2").arg(*least).arg(*most)));
+    // Without jitter all eight wait 400 ms, within a few ms of each other.
+    QVERIFY2(*most - *least >= 40, qPrintable(QStringLiteral("%1..%2").arg(*least).arg(*most)));
 }
 
 QTEST_GUILESS_MAIN(TestMqtt)

@@ -362,6 +362,15 @@ void TestValueFormat::rejects_data()
                              << "0x10000 does not fit a 16-bit register (-32768..65535)";
     QTest::newRow("12G") << "12G" << 16 << F::Signed << "\"12G\" is not a number";
     QTest::newRow("1.5 integer") << "1.5" << 16 << F::Signed << "\"1.5\" is not a number";
+    // Out of range in exponent notation (issue 33): too large, not "not a number".
+    QTest::newRow("1e308") << "1e308" << 16 << F::Signed
+                           << "1e308 does not fit a 16-bit register (-32768..65535)";
+    QTest::newRow("-2.5e9 32-bit")
+        << "-2.5e9" << 32 << F::Signed
+        << "-2.5e9 does not fit a 32-bit value (-2147483648..4294967295)";
+    QTest::newRow("1e400") << "1e400" << 16 << F::Unsigned
+                           << "1e400 does not fit a 16-bit register (-32768..65535)";
+    QTest::newRow("1e3 in range") << "1e3" << 16 << F::Signed << "\"1e3\" is not a number";
     QTest::newRow("sign space") << "- 5" << 16 << F::Signed << "\"- 5\" is not a number";
     QTest::newRow("0x only") << "0x" << 16 << F::Signed << "\"0x\" is not a number";
     QTest::newRow("bad hex") << "0x1G" << 16 << F::Signed << "\"0x1G\" is not a hexadecimal number";

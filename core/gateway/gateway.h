@@ -1,0 +1,67 @@
+#pragma once
+
+#include "core/protocol/message.h"
+#include "gatewayconfig.h"
+
+#include <QObject>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace Fatek {
+
+class GatewayLink;
+
+// The running gateway: one GatewayLink per connection of a configuration, and the reload of a
+// new configuration (SIGHUP) that restarts only the links it changes. A link whose connection
+// is unchanged keeps running: its MQTT session, its values and its status stay as they are.
+class Gateway : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit Gateway(QObject *parent = nullptr);
+    ~Gateway() override;
+
+    // Starts a link per connection; false (nothing left running) when one cannot start, with
+    // `error` saying why. Link i of n opens i/n of the shortest poll interval after the first.
+    bool start(const GatewayConfig &config, QString *connection, Message *error);
+    // Applies `config`: links of connections that were removed or changed stop, and the new or
+    // changed ones start once their old link has stopped (a restarted link keeps its MQTT client
+    // id: two at once would throw each other off the broker). A change of the broker, the
+    // prefix or read-only restarts every link.
+    void reload(const GatewayConfig &config);
+    // Every link publishes offline and disconnects; stopped() when all have.
+    void stop();
+
+Q_SIGNALS:
+    // One log line's worth; `connection` names the link it is about.
+    void logEvent(const QString &connection, const Fatek::Message &event);
+    void stopped();
+    // A reload is done: every link of the new configuration runs (or failed to start: logged).
+    void reloaded();
+
+private:
+    struct Running
+    {
+        GatewayConnectionConfig config;
+        std::unique_ptr<GatewayLink> link;
+        bool retiring = false; // stopping for a reload: removed when stopped
+    };
+
+    bool startLink(const GatewayConnectionConfig &connection, int pollDelayMs, Message *error);
+    void onLinkStopped();
+    void startWaiting();
+
+    GatewayConfig m_config;
+    std::vector<Running> m_links;
+    // Connections of a reload waiting for their old link to stop before they start.
+    QList<GatewayConnectionConfig> m_waiting;
+    bool m_reloading = false;
+    // A configuration given while a reload was under way: applied when it is done.
+    std::optional<GatewayConfig> m_next;
+    bool m_stopping = false;
+};
+
+} // namespace Fatek
