@@ -256,10 +256,17 @@ void Connection::pushItems()
 
 void Connection::updateRate()
 {
-    const qint64 ms = m_rateClock.restart();
-    const quint64 requests = m_statistics.total.requests;
-    const quint64 delta = requests >= m_rateRequests ? requests - m_rateRequests : 0;
-    m_rateRequests = requests;
+    // Over the last 3 s, not 1: the counts arrive in 250 ms reports, so a 1 s window would show
+    // a line polled twice a second as 1.0 one second and 3.0 the next.
+    constexpr qint64 rateWindowMs = 3000;
+    const qint64 now = m_rateClock.elapsed();
+    m_rateSamples.emplace_back(now, m_statistics.total.requests);
+    while (m_rateSamples.size() > 2 && now - m_rateSamples[1].first >= rateWindowMs)
+        m_rateSamples.pop_front();
+    const auto &[since, requestsThen] = m_rateSamples.front();
+    const quint64 requests = m_rateSamples.back().second;
+    const quint64 delta = requests >= requestsThen ? requests - requestsThen : 0;
+    const qint64 ms = now - since;
     const double rate
         = ms > 0 ? static_cast<double>(delta) * 1000.0 / static_cast<double>(ms) : 0.0;
     if (rate != m_rate) {

@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <deque>
 #include <optional>
 
 namespace Fatek {
@@ -106,7 +107,8 @@ private:
     QHash<const QObject *, QList<WatchedItem>> m_watchItems;
     QTimer m_rateTimer;
     QElapsedTimer m_rateClock;
-    quint64 m_rateRequests = 0;
+    // (ms on m_rateClock, requests counted then) over the last rateWindowMs.
+    std::deque<std::pair<qint64, quint64>> m_rateSamples;
     double m_rate = 0;
 };
 
