@@ -183,6 +183,7 @@ private Q_SLOTS:
     void simJsonShape();
     void simCsvShape();
     void simMixedRead();
+    void simReadSplitsAndFormats();
     void simMonitorNames();
     void plcErrorExit4();
     void linkFailureExit3();
@@ -317,9 +318,10 @@ void TestCli::usageErrors_data()
     QTest::newRow("float past the last register")
         << sim({QStringLiteral("write"), QStringLiteral("R65535:float"), QStringLiteral("1.5")})
         << QStringLiteral("needs 2 elements");
+    // More than one request carries is read in several (issue 32), up to a monitor's limit.
     QTest::newRow("count too big")
-        << sim({QStringLiteral("read"), QStringLiteral("R0"), QStringLiteral("65")})
-        << QStringLiteral("1..64");
+        << sim({QStringLiteral("read"), QStringLiteral("R0"), QStringLiteral("1025")})
+        << QStringLiteral("1..1024");
     QTest::newRow("set on register")
         << sim({QStringLiteral("set"), QStringLiteral("R0")}) << QStringLiteral("discretes");
     QTest::newRow("bad raw hex") << sim(
@@ -677,6 +679,39 @@ void TestCli::simMixedRead()
     QCOMPARE(r.json(2).value(QStringLiteral("values")).toArray(), ints({99}));
     QCOMPARE(r.json(3).value(QStringLiteral("values")).toArray(), ints({1}));
     QCOMPARE(r.json(4).value(QStringLiteral("values")).toArray(), ints({0}));
+}
+
+// Issue 32: read takes what monitor and write take: a range longer than one request carries
+// (R0..R99: two requests) and ADDR:FORMAT.
+void TestCli::simReadSplitsAndFormats()
+{
+    const Run r = runCli(sim(
+        {QStringLiteral("--json"),     QStringLiteral("write"),      QStringLiteral("R63"),
+         QStringLiteral("7"),          QStringLiteral("9"),          QStringLiteral("--then"),
+         QStringLiteral("write"),      QStringLiteral("R200:float"), QStringLiteral("-2.25"),
+         QStringLiteral("--then"),     QStringLiteral("read"),       QStringLiteral("R0..R99"),
+         QStringLiteral("--then"),     QStringLiteral("read"),       QStringLiteral("R200:float"),
+         QStringLiteral("R63:hex"),    QStringLiteral("--then"),     QStringLiteral("read"),
+         QStringLiteral("R200:float"), QStringLiteral("2")}));
+    RUN_OK(r);
+    QCOMPARE(r.lines().size(), 7);
+    const QJsonArray all = r.json(2).value(QStringLiteral("values")).toArray();
+    QCOMPARE(all.size(), 100);
+    QCOMPARE(all.at(63).toInt(), 7); // the last element of the first request
+    QCOMPARE(all.at(64).toInt(), 9); // the first of the second
+    QCOMPARE(r.json(3).value(QStringLiteral("format")).toString(), QStringLiteral("float"));
+    QCOMPARE(r.json(3).value(QStringLiteral("value")).toString(), QStringLiteral("-2.25"));
+    QCOMPARE(r.json(3).value(QStringLiteral("words")).toArray().size(), 2);
+    QCOMPARE(r.json(4).value(QStringLiteral("address")).toString(), QStringLiteral("R63"));
+    QCOMPARE(r.json(4).value(QStringLiteral("value")).toString(), QStringLiteral("0x0007"));
+    // A COUNT after ADDR:FORMAT counts items: R200 and R202.
+    QCOMPARE(r.json(5).value(QStringLiteral("value")).toString(), QStringLiteral("-2.25"));
+    QCOMPARE(r.json(6).value(QStringLiteral("address")).toString(), QStringLiteral("R202"));
+
+    const Run bad = runCli(sim({QStringLiteral("read"), QStringLiteral("R0:bogus")}));
+    QCOMPARE(bad.code, 2);
+    QVERIFY2(bad.err.contains(QLatin1String("Unknown format \"bogus\" in R0:bogus")),
+             qPrintable(bad.err));
 }
 
 void TestCli::plcErrorExit4()
