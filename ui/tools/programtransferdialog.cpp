@@ -16,6 +16,8 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace Fatek {
 
 ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
@@ -55,6 +57,10 @@ ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
     layout->addWidget(m_progress);
     m_progressLabel = new QLabel(this);
     m_progressLabel->setObjectName(QStringLiteral("progressLabel"));
+    // Two lines kept for it: a longer count wraps instead of widening the dialog.
+    m_progressLabel->setWordWrap(true);
+    m_progressLabel->setMinimumHeight(2 * fontMetrics().lineSpacing());
+    m_progressLabel->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     layout->addWidget(m_progressLabel);
     m_message = new MessageLine(3, this);
     m_message->setObjectName(QStringLiteral("programMessage"));
@@ -72,6 +78,12 @@ ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
     connect(m_requests, &RequestTracker::sessionDestroyed, this,
             [this] { setTarget(nullptr, m_station, {}); });
     setTarget(nullptr, 1, {});
+    // A width of its own: room for the title beside a window manager's icon and buttons (a
+    // narrow dialog shows "Program Backup /… e"), and no resizing while the texts change.
+    const QFontMetrics fm = fontMetrics();
+    setFixedWidth(std::max({sizeHint().width(),
+                            fm.horizontalAdvance(windowTitle()) + 24 * fm.averageCharWidth(),
+                            56 * fm.averageCharWidth()}));
 }
 
 void ProgramTransferDialog::setTarget(Session *session, quint8 station,
