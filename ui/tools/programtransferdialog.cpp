@@ -244,16 +244,31 @@ void ProgramTransferDialog::onProgress(int done, int total)
         const int seconds = qMax(1, int(perPage * (total - done) / 1000.0 + 0.5));
         left = tr(", about %n s left", nullptr, seconds);
     }
-    m_progressLabel->setText(
-        tr("%1: %2 of %3 pages%4")
-            .arg(translated(ProgramTransfer::phaseMessage(m_transfer->phase())))
-            .arg(done)
-            .arg(total)
-            .arg(left));
+    m_progressLine = progressLine(done, total);
+    m_progressLabel->setText(m_progressLine + left);
+}
+
+QString ProgramTransferDialog::progressLine(int done, int total) const
+{
+    // A restore counts every page twice, written then read back: each half is named (207 pages
+    // are "writing 207, verifying 207", not "414 of 414 pages").
+    if (m_step == Step::Restore && total > 0) {
+        const int pages = total / 2;
+        return tr("Writing %1 of %2 pages, verifying %3 of %2")
+            .arg(qMin(done, pages))
+            .arg(pages)
+            .arg(qMax(0, done - pages));
+    }
+    return tr("%1: %2 of %3 pages")
+        .arg(translated(ProgramTransfer::phaseMessage(m_transfer->phase())))
+        .arg(done)
+        .arg(total);
 }
 
 void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
 {
+    // Done, cancelled or failed: the count stays, the time left goes.
+    m_progressLabel->setText(m_progressLine);
     const Step step = m_step;
     m_step = Step::None;
     updateControls();

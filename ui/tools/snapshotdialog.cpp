@@ -383,16 +383,12 @@ void SnapshotDialog::restoreValues()
         return;
     }
     // An empty field restores what fatek-cli restore-values without RANGES does.
-    std::vector<AddressRange> ranges;
-    if (!m_restoreRanges->text().trimmed().isEmpty()) {
-        auto parsed = Snapshot::parseRanges(m_restoreRanges->text());
-        if (!parsed) {
-            showMessage(translated(parsed.error().message), true);
-            return;
-        }
-        ranges = std::move(parsed.value());
+    const auto ranges = Snapshot::parseRanges(m_restoreRanges->text());
+    if (!ranges) {
+        showMessage(translated(ranges.error().message), true);
+        return;
     }
-    std::vector<SnapshotValue> values = m_snapshot->toRestore(ranges);
+    std::vector<SnapshotValue> values = m_snapshot->toRestore(ranges.value());
     if (values.empty()) {
         showMessage(translated(msg<MsgId::RestoreNothing>()), true);
         return;
