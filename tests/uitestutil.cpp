@@ -1,6 +1,8 @@
 #include "uitestutil.h"
 
 #include <QApplication>
+#include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTest>
@@ -45,6 +47,19 @@ std::function<void(QWidget *)> clickButton(const char *objectName)
         }
         QTest::mouseClick(button, Qt::LeftButton);
     };
+}
+
+QLabel *sendRawFrame(QWidget *console, const QString &frame)
+{
+    auto *input = console->findChild<QLineEdit *>(QStringLiteral("sendInput"));
+    auto *send = console->findChild<QPushButton *>(QStringLiteral("sendButton"));
+    auto *result = console->findChild<QLabel *>(QStringLiteral("sendResult"));
+    if (!input || !send || !result)
+        return nullptr;
+    QTest::mouseClick(input, Qt::LeftButton);
+    QTest::keyClicks(input, frame, {}, 20);
+    QTest::mouseClick(send, Qt::LeftButton);
+    return result;
 }
 
 } // namespace UiTestUtil

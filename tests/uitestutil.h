@@ -4,6 +4,7 @@
 
 #include <functional>
 
+class QLabel;
 class QWidget;
 
 namespace UiTestUtil {
@@ -16,5 +17,9 @@ QString answerModal(const std::function<void()> &action,
 
 // An answer for answerModal: clicks the dialog's button with this object name.
 std::function<void(QWidget *)> clickButton(const char *objectName);
+
+// In a raw console: clicks the send line, types `frame` (hex) at a person's pace and clicks Send.
+// Returns the line that shows what was sent and what came back (nullptr: no send line).
+QLabel *sendRawFrame(QWidget *console, const QString &frame);
 
 } // namespace UiTestUtil

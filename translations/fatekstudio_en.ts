@@ -3080,10 +3080,16 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>Cancelled: nothing sent.</translation>
         </message>
         <message>
-            <source>Sent    %1
+            <source>Sending %1
 waiting for the answer …</source>
-            <translation>Sent    %1
+            <translation>Sending %1
 waiting for the answer …</translation>
+        </message>
+        <message>
+            <source>Not sent: %1
+%2</source>
+            <translation>Not sent: %1
+%2</translation>
         </message>
         <message>
             <source>Sent    %1</source>
@@ -3250,8 +3256,12 @@ Switch the PLC at %2 to RUN now? It starts the restored program.</translation>
             </translation>
         </message>
         <message>
-            <source>%1: %2 of %3 pages%4</source>
-            <translation>%1: %2 of %3 pages%4</translation>
+            <source>%1: %2 of %3 pages</source>
+            <translation>%1: %2 of %3 pages</translation>
+        </message>
+        <message>
+            <source>Writing %1 of %2 pages, verifying %3 of %2</source>
+            <translation>Writing %1 of %2 pages, verifying %3 of %2</translation>
         </message>
         <message>
             <source>%1 Saved in %2.</source>
@@ -3957,6 +3967,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Write of %1 failed: %2</source>
             <translation>Write of %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>%1 is connected again; %2 was not written.</source>
+            <translation>%1 is connected again; %2 was not written.</translation>
         </message>
         <message>
             <source>%1 %2</source>

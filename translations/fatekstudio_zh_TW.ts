@@ -3073,10 +3073,16 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>已取消：未送出任何資料。</translation>
         </message>
         <message>
-            <source>Sent    %1
+            <source>Sending %1
 waiting for the answer …</source>
-            <translation>已送出  %1
+            <translation>送出中 %1
 等待回應 …</translation>
+        </message>
+        <message>
+            <source>Not sent: %1
+%2</source>
+            <translation>未送出：%1
+%2</translation>
         </message>
         <message>
             <source>Sent    %1</source>
@@ -3242,8 +3248,12 @@ Switch the PLC at %2 to RUN now? It starts the restored program.</source>
             </translation>
         </message>
         <message>
-            <source>%1: %2 of %3 pages%4</source>
-            <translation>%1：第 %2／%3 頁%4</translation>
+            <source>%1: %2 of %3 pages</source>
+            <translation>%1：第 %2／%3 頁</translation>
+        </message>
+        <message>
+            <source>Writing %1 of %2 pages, verifying %3 of %2</source>
+            <translation>寫入 %1／%2 頁，驗證 %3／%2 頁</translation>
         </message>
         <message>
             <source>%1 Saved in %2.</source>
@@ -3944,6 +3954,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Write of %1 failed: %2</source>
             <translation>寫入 %1 失敗：%2</translation>
+        </message>
+        <message>
+            <source>%1 is connected again; %2 was not written.</source>
+            <translation>%1 已重新連線；%2 未寫入。</translation>
         </message>
         <message>
             <source>%1 %2</source>

@@ -31,8 +31,6 @@ CliSnapshotFileCommand::~CliSnapshotFileCommand() = default;
 QString CliSnapshotFileCommand::rangesArg(CliStepArgs &a, qsizetype from)
 {
     const QString text = a.positional.mid(from).join(QLatin1Char(' '));
-    if (text.trimmed().isEmpty())
-        return {};
     const auto ranges = Snapshot::parseRanges(text);
     if (!ranges)
         return QStringLiteral("%1: %2").arg(a.cmd(), CliText::error(ranges.error()));

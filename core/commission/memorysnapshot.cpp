@@ -79,6 +79,10 @@ std::vector<AddressRange> defaultRanges(const DetailStatus &status)
 
 Result<std::vector<AddressRange>> parseRanges(const QString &text)
 {
+    // Nothing typed is no mistake: it asks for the default set (the one rule for the CLI's
+    // missing RANGES and the dialogs' empty fields).
+    if (text.trimmed().isEmpty())
+        return std::vector<AddressRange>{};
     return AddressRange::parseList(text.toStdString());
 }
 

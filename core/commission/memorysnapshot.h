@@ -63,7 +63,9 @@ inline constexpr std::size_t MaxValues = 400000;
 // Every element the PLC reports in its 53 detail status: X Y M S T C (discreteCount), RT and RC
 // (timers, counters), R and D. Nothing when the answer does not give the sizes.
 std::vector<AddressRange> defaultRanges(const DetailStatus &status);
-// "R0..R99, X0..X255 D0-9": AddressRange::parseList (commas, semicolons or blanks).
+// "R0..R99, X0..X255 D0-9": AddressRange::parseList (commas, semicolons or blanks). Blank text
+// gives no ranges: the default set (a snapshot reads every element the PLC reports, a restore
+// writes every value but the inputs X).
 Result<std::vector<AddressRange>> parseRanges(const QString &text);
 // Consecutive addresses as ranges (sorted input): R0 R1 R2 R7 -> R0..R2, R7.
 std::vector<AddressRange> rangesOf(std::span<const Address> sortedAddresses);

@@ -222,10 +222,19 @@ void ConnectionDialog::updateKind()
 {
     const auto kind = static_cast<LinkSettings::Kind>(m_kind->currentData().toInt());
     m_pages->setCurrentIndex(isGateway() ? 2 : kind == LinkSettings::Kind::Serial ? 0 : 1);
+    // A stack is as tall as its tallest page: only the page shown counts, so TCP's two rows are
+    // not followed by the empty room of the serial page's six.
+    for (int i = 0; i < m_pages->count(); ++i)
+        m_pages->widget(i)->setSizePolicy(QSizePolicy::Preferred, i == m_pages->currentIndex()
+                                                                      ? QSizePolicy::Preferred
+                                                                      : QSizePolicy::Ignored);
+    m_pages->updateGeometry();
     // The gateway has its own protocol, timeout and retries per PLC link.
     for (QWidget *row : {static_cast<QWidget *>(m_protocol), static_cast<QWidget *>(m_timeout),
                          static_cast<QWidget *>(m_retries)})
         m_form->setRowVisible(row, !isGateway());
+    layout()->activate();
+    resize(width(), sizeHint().height());
 }
 
 Result<GatewayWatchSettings> ConnectionDialog::gatewaySettings() const

@@ -23,8 +23,10 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QTableView>
@@ -112,10 +114,57 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     });
 
     resize(1280, 800);
-    resizeDocks({m_connectionsDock}, {150}, Qt::Vertical);
+    // Tall enough for the raw console's send line and its answer (its tab shares this area).
+    resizeDocks({m_connectionsDock}, {13 * fontMetrics().lineSpacing()}, Qt::Vertical);
     QSettings settings;
     restoreGeometry(settings.value(geometryKey).toByteArray());
     restoreState(settings.value(stateKey).toByteArray());
+    fitIntoScreen();
+}
+
+void MainWindow::fitIntoScreen()
+{
+    const QScreen *screen = this->screen();
+    if (!screen || isMaximized() || isFullScreen())
+        return;
+    const QRect available = screen->availableGeometry();
+    QRect frame = frameGeometry();
+    QMargins margins(geometry().left() - frame.left(), geometry().top() - frame.top(),
+                     frame.right() - geometry().right(), frame.bottom() - geometry().bottom());
+    // Before the first show the frame is not known yet: allow for a title bar and borders.
+    if (!isVisible() && margins.isNull()) {
+        const int border = style()->pixelMetric(QStyle::PM_DefaultFrameWidth) + 2;
+        margins = QMargins(border, style()->pixelMetric(QStyle::PM_TitleBarHeight) + border, border,
+                           border);
+    }
+    const QSize room = available.size().shrunkBy(margins);
+    const QSize size = this->size().boundedTo(room).expandedTo(minimumSize());
+    if (size != this->size())
+        resize(size);
+    frame = QRect(geometry().topLeft(), size).marginsAdded(margins);
+    const QPoint inside(
+        std::clamp(frame.left(), available.left(),
+                   std::max(available.left(), available.right() - frame.width() + 1)),
+        std::clamp(frame.top(), available.top(),
+                   std::max(available.top(), available.bottom() - frame.height() + 1)));
+    if (inside != frame.topLeft())
+        move(inside); // move() places the frame
+}
+
+void MainWindow::resizeEvent(QResizeEvent *event)
+{
+    QMainWindow::resizeEvent(event);
+    // A dock shown or moved may have grown the window past the screen on its way (Qt grows a
+    // window to its minimum, and never shrinks it back): once the layout has settled, fit it.
+    if (isVisible())
+        QMetaObject::invokeMethod(this, &MainWindow::fitIntoScreen, Qt::QueuedConnection);
+}
+
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    // Now the window system knows the frame: place it again if it does not fit.
+    fitIntoScreen();
 }
 
 MainWindow::~MainWindow()

@@ -78,6 +78,8 @@ Q_SIGNALS:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     // Quitting with writes not sent yet: asks to wait for them or drop them; false: stay open.
@@ -95,6 +97,9 @@ private:
     // Makes the connection of the table in front the current one (the tools' target).
     void followTable(Connection *connection);
     void showStatus(const QString &text);
+    // Brings the window (its frame too) inside the screen's available area: the default size
+    // and a geometry saved on a larger screen would put the status bar below a laptop's screen.
+    void fitIntoScreen();
 
 public:
     // Trends and data logging (see TrendLogging).

@@ -1,6 +1,7 @@
 #include "tooldocks.h"
 
 #include "mainwindow.h"
+#include "toolscrollarea.h"
 #include "ui/connection/connection.h"
 #include "ui/connection/stationscandialog.h"
 #include "ui/tools/forcingpanel.h"
@@ -28,14 +29,23 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
                                                        const QKeySequence &shortcut) {
         auto *dock = new QDockWidget(title, window);
         dock->setObjectName(name);
-        // In a scroll area a tool's own minimum (rows of controls, long status lines) no longer
-        // sets the window's: with every tool open it still fits 1366x768, or 1920x1080 at 150 %.
-        auto *scroll = new QScrollArea(dock);
+        // In a scroll area a tool's own minimum height (rows of controls, long status lines) no
+        // longer sets the window's: with every tool open it still fits 1366x768, or 1920x1080
+        // at 150 %. Its width is kept whole: nothing needs a sideways scroll.
+        auto *scroll = new ToolScrollArea(tool, dock);
         scroll->setObjectName(name + QStringLiteral("Scroll"));
-        scroll->setWidgetResizable(true);
-        scroll->setFrameShape(QFrame::NoFrame);
-        scroll->setWidget(tool);
         dock->setWidget(scroll);
+        // A side dock opens as wide as its tool needs (its buttons at the side reachable),
+        // however it is opened; it does not widen later on its own.
+        connect(dock, &QDockWidget::visibilityChanged, this, [window, dock, scroll](bool shown) {
+            const Qt::DockWidgetArea side = window->dockWidgetArea(dock);
+            if (shown && !dock->isFloating()
+                && (side == Qt::LeftDockWidgetArea || side == Qt::RightDockWidgetArea)
+                && scroll->viewport()->width() < scroll->wholeWidth())
+                window->resizeDocks(
+                    {dock}, {dock->width() - scroll->viewport()->width() + scroll->wholeWidth()},
+                    Qt::Horizontal);
+        });
         window->addDockWidget(area, dock);
         QAction *action = dockAction(dock, shortcut, window);
         toolsMenu->addAction(action);

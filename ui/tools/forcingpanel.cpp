@@ -66,16 +66,20 @@ ForcingPanel::ForcingPanel(QWidget *parent)
     m_autoRefresh = new QCheckBox(tr("Refresh every second"), table);
     m_autoRefresh->setObjectName(QStringLiteral("autoRefresh"));
     m_autoRefresh->setChecked(true);
+    // Two rows: in one the dock would need more than a laptop's side of the screen.
     row->addWidget(new QLabel(tr("Type:"), table));
     row->addWidget(m_type);
-    row->addWidget(new QLabel(tr("From:"), table));
-    row->addWidget(m_start);
-    row->addWidget(new QLabel(tr("Points:"), table));
-    row->addWidget(m_count);
-    row->addWidget(m_readButton);
     row->addStretch(1);
     row->addWidget(m_autoRefresh);
     layout->addLayout(row);
+    auto *rangeRow = new QHBoxLayout;
+    rangeRow->addWidget(new QLabel(tr("From:"), table));
+    rangeRow->addWidget(m_start);
+    rangeRow->addWidget(new QLabel(tr("Points:"), table));
+    rangeRow->addWidget(m_count);
+    rangeRow->addWidget(m_readButton);
+    rangeRow->addStretch(1);
+    layout->addLayout(rangeRow);
 
     m_model->setPalette(palette());
     m_view = new QTableView(table);

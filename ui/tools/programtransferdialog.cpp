@@ -16,6 +16,8 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace Fatek {
 
 ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
@@ -55,6 +57,10 @@ ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
     layout->addWidget(m_progress);
     m_progressLabel = new QLabel(this);
     m_progressLabel->setObjectName(QStringLiteral("progressLabel"));
+    // Two lines kept for it: a longer count wraps instead of widening the dialog.
+    m_progressLabel->setWordWrap(true);
+    m_progressLabel->setMinimumHeight(2 * fontMetrics().lineSpacing());
+    m_progressLabel->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     layout->addWidget(m_progressLabel);
     m_message = new MessageLine(3, this);
     m_message->setObjectName(QStringLiteral("programMessage"));
@@ -72,6 +78,12 @@ ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
     connect(m_requests, &RequestTracker::sessionDestroyed, this,
             [this] { setTarget(nullptr, m_station, {}); });
     setTarget(nullptr, 1, {});
+    // A width of its own: room for the title beside a window manager's icon and buttons (a
+    // narrow dialog shows "Program Backup /… e"), and no resizing while the texts change.
+    const QFontMetrics fm = fontMetrics();
+    setFixedWidth(std::max({sizeHint().width(),
+                            fm.horizontalAdvance(windowTitle()) + 24 * fm.averageCharWidth(),
+                            56 * fm.averageCharWidth()}));
 }
 
 void ProgramTransferDialog::setTarget(Session *session, quint8 station,
@@ -232,16 +244,31 @@ void ProgramTransferDialog::onProgress(int done, int total)
         const int seconds = qMax(1, int(perPage * (total - done) / 1000.0 + 0.5));
         left = tr(", about %n s left", nullptr, seconds);
     }
-    m_progressLabel->setText(
-        tr("%1: %2 of %3 pages%4")
-            .arg(translated(ProgramTransfer::phaseMessage(m_transfer->phase())))
-            .arg(done)
-            .arg(total)
-            .arg(left));
+    m_progressLine = progressLine(done, total);
+    m_progressLabel->setText(m_progressLine + left);
+}
+
+QString ProgramTransferDialog::progressLine(int done, int total) const
+{
+    // A restore counts every page twice, written then read back: each half is named (207 pages
+    // are "writing 207, verifying 207", not "414 of 414 pages").
+    if (m_step == Step::Restore && total > 0) {
+        const int pages = total / 2;
+        return tr("Writing %1 of %2 pages, verifying %3 of %2")
+            .arg(qMin(done, pages))
+            .arg(pages)
+            .arg(qMax(0, done - pages));
+    }
+    return tr("%1: %2 of %3 pages")
+        .arg(translated(ProgramTransfer::phaseMessage(m_transfer->phase())))
+        .arg(done)
+        .arg(total);
 }
 
 void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
 {
+    // Done, cancelled or failed: the count stays, the time left goes.
+    m_progressLabel->setText(m_progressLine);
     const Step step = m_step;
     m_step = Step::None;
     updateControls();

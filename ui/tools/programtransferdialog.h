@@ -54,6 +54,8 @@ private:
     void startCheck();
     void onFinished(const ProgramTransferResult &result);
     void onProgress(int done, int total);
+    // "Reading the program: 12 of 207 pages", without the time left.
+    QString progressLine(int done, int total) const;
     void askToStop();
     // After a restore that verified: RUN again? (default No).
     void offerRun(const QString &done);
@@ -75,6 +77,7 @@ private:
     QString m_path;
     ProgramImage m_image;
     QElapsedTimer m_elapsed;
+    QString m_progressLine; // the last count, without the time left
 
     QLabel *m_targetLabel;
     QLabel *m_modeLabel;

@@ -37,6 +37,10 @@ RawConsole::RawConsole(QWidget *parent)
     m_targetLabel = new QLabel(this);
     m_targetLabel->setObjectName(QStringLiteral("targetLabel"));
     layout->addWidget(m_targetLabel);
+    // The send line and its answer first: the console shares the bottom of the window with the
+    // connections, and on a laptop only its top part shows without dragging the splitter.
+    m_sendBar = new RawSendBar(this);
+    layout->addWidget(m_sendBar);
 
     auto *filters = new QHBoxLayout;
     m_direction = new QComboBox(this);
@@ -111,8 +115,6 @@ RawConsole::RawConsole(QWidget *parent)
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("consoleStatus"));
     layout->addWidget(m_status);
-    m_sendBar = new RawSendBar(this);
-    layout->addWidget(m_sendBar);
 
     connect(m_direction, &QComboBox::currentIndexChanged, this, &RawConsole::applyFilters);
     connect(m_stationFilter, &QSpinBox::valueChanged, this, &RawConsole::applyFilters);

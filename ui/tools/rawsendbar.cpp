@@ -174,8 +174,9 @@ void RawSendBar::send()
     }
     m_busy = true;
     updateEnabled();
+    // "Sending": the session may still refuse it before the wire (operator mode, a link down).
     ToolPalette::showMessage(
-        m_result, tr("Sent    %1\nwaiting for the answer \u2026").arg(asciiOf(frame)), false);
+        m_result, tr("Sending %1\nwaiting for the answer \u2026").arg(asciiOf(frame)), false);
     // The station the frame is for (the session's statistics); the framing is named, so no
     // auto-detect probe goes first.
     RequestOptions options;
@@ -191,6 +192,13 @@ void RawSendBar::onAnswer(const QByteArray &sent, const SessionResult &result)
 {
     m_busy = false;
     updateEnabled();
+    if (!result.ok() && result.attempts() == 0) {
+        // Refused before the wire: nothing was sent, so no "Sent" line.
+        ToolPalette::showMessage(
+            m_result, tr("Not sent: %1\n%2").arg(asciiOf(sent), translated(result.errorMessage())),
+            true);
+        return;
+    }
     const QString sentLine = tr("Sent    %1").arg(asciiOf(sent));
     if (!result.ok()) {
         ToolPalette::showMessage(

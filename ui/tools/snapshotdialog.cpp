@@ -10,6 +10,7 @@
 #include "ui/common/messageline.h"
 #include "ui/common/uitext.h"
 
+#include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -111,6 +112,11 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
     m_message = new MessageLine(2, this);
     m_message->setObjectName(QStringLiteral("message"));
     layout->addWidget(m_message);
+    auto *box = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    layout->addWidget(box);
+    connect(box, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    // Closed while it reads or writes: nothing goes on behind the person's back.
+    connect(this, &QDialog::rejected, this, &SnapshotDialog::cancel);
 
     connect(m_take, &QPushButton::clicked, this, &SnapshotDialog::takeSnapshot);
     connect(m_cancel, &QPushButton::clicked, this, &SnapshotDialog::cancel);
@@ -377,16 +383,12 @@ void SnapshotDialog::restoreValues()
         return;
     }
     // An empty field restores what fatek-cli restore-values without RANGES does.
-    std::vector<AddressRange> ranges;
-    if (!m_restoreRanges->text().trimmed().isEmpty()) {
-        auto parsed = Snapshot::parseRanges(m_restoreRanges->text());
-        if (!parsed) {
-            showMessage(translated(parsed.error().message), true);
-            return;
-        }
-        ranges = std::move(parsed.value());
+    const auto ranges = Snapshot::parseRanges(m_restoreRanges->text());
+    if (!ranges) {
+        showMessage(translated(ranges.error().message), true);
+        return;
     }
-    std::vector<SnapshotValue> values = m_snapshot->toRestore(ranges);
+    std::vector<SnapshotValue> values = m_snapshot->toRestore(ranges.value());
     if (values.empty()) {
         showMessage(translated(msg<MsgId::RestoreNothing>()), true);
         return;

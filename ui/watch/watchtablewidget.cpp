@@ -228,6 +228,13 @@ void WatchTableWidget::setConnection(Connection *connection)
         // A link stops reporting while it is down (no batches come): mark the rows here.
         connect(connection, &Connection::linkStateChanged, m_model,
                 [this](LinkState state, const Message &reason) {
+                    // The link is back: a red "write failed" would say the link is still down.
+                    // It becomes a plain note that the value was not written (not repeated:
+                    // the person decides whether it is still wanted).
+                    if (state == LinkState::Connected && !m_failedWrite.isEmpty())
+                        showMessage(tr("%1 is connected again; %2 was not written.")
+                                        .arg(m_connection->name(), m_failedWrite),
+                                    false);
                     if (state == LinkState::Connected || state == LinkState::Connecting)
                         return;
                     m_model->markAllStale(
@@ -332,6 +339,7 @@ QString WatchTableWidget::message() const
 
 void WatchTableWidget::showMessage(const QString &text, bool error)
 {
+    m_failedWrite.clear();
     m_message->setMessage(text, error);
     Q_EMIT statusMessage(text);
 }
@@ -440,6 +448,8 @@ void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const Link
             row,
             tr("%1 %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
     showMessage(outcome, !result.ok);
+    if (!result.ok)
+        m_failedWrite = what;
 }
 
 void WatchTableWidget::removeSelected()

@@ -91,6 +91,8 @@ private:
     ConnectionManager *m_manager;
     QPointer<Connection> m_connection;
     QString m_name;
+    // The write whose failure the message line shows in red ("" when it shows something else).
+    QString m_failedWrite;
     WatchTableModel *m_model;
     QTableView *m_view;
     QLineEdit *m_addEdit;
