@@ -38,8 +38,12 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
         // A side dock opens as wide as its tool needs (its buttons at the side reachable),
         // however it is opened; it does not widen later on its own.
         connect(dock, &QDockWidget::visibilityChanged, this, [window, dock, scroll](bool shown) {
+            // Hidden: nothing to do, and the window may be closing down (its layout half gone:
+            // dockWidgetArea() would crash, as tst_ui_mainwindow saw under ctest -j2).
+            if (!shown || !window->isVisible())
+                return;
             const Qt::DockWidgetArea side = window->dockWidgetArea(dock);
-            if (shown && !dock->isFloating()
+            if (!dock->isFloating()
                 && (side == Qt::LeftDockWidgetArea || side == Qt::RightDockWidgetArea)
                 && scroll->viewport()->width() < scroll->wholeWidth())
                 window->resizeDocks(
