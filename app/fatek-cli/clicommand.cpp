@@ -16,11 +16,18 @@ CliCommand::~CliCommand() = default;
 void CliCommand::start(const CliStep &step)
 {
     m_step = &step;
+    m_interruptAfterAnswer = false;
     run();
 }
 
 void CliCommand::interrupt()
 {
+    // A write on its way may already have reached the PLC: its answer says whether it did, and
+    // comes within the request's timeout. A second Ctrl-C does not wait.
+    if (changesPlc() && !m_interruptAfterAnswer && m_context.requests().pendingCount() > 0) {
+        m_interruptAfterAnswer = true;
+        return;
+    }
     m_context.endInterrupted();
 }
 
@@ -36,6 +43,8 @@ CliOutput &CliCommand::out()
 
 void CliCommand::succeed()
 {
+    if (m_interruptAfterAnswer)
+        return m_context.endInterrupted(); // the result is printed; no further step runs
     Q_EMIT succeeded();
 }
 

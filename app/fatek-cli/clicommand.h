@@ -29,7 +29,8 @@ public:
     // else the context finishes the program; either may come at once.
     void start(const CliStep &step);
     // Ctrl-C / SIGTERM while this command's step runs: by default the program ends with
-    // ExitCode::Interrupted.
+    // ExitCode::Interrupted. A command that changes the PLC with a request already sent
+    // (changesPlc()) first waits for its answer and prints it: what reached the PLC is said.
     virtual void interrupt();
     // The program ends (a failure, an interrupt, the last step): stop what still runs.
     virtual void abandon() {}
@@ -40,6 +41,8 @@ Q_SIGNALS:
 
 protected:
     virtual void run() = 0;
+    // Whether the command writes to the PLC (write, set/reset/enable/disable, run/stop).
+    virtual bool changesPlc() const { return false; }
 
     const CliStep &step() const { return *m_step; }
     const CliOptions &options() const;
@@ -58,6 +61,7 @@ protected:
 
 private:
     const CliStep *m_step = nullptr;
+    bool m_interruptAfterAnswer = false;
 };
 
 } // namespace Fatek

@@ -176,7 +176,7 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
     }
     QJsonObject json;
     json.insert(QStringLiteral("cycle"), m_cycle);
-    json.insert(QStringLiteral("time"), now.toString(Qt::ISODateWithMs));
+    json.insert(QStringLiteral("time"), DataLogger::timestampText(now)); // as the CSV log
     json.insert(QStringLiteral("station"), m_context.station());
     json.insert(QStringLiteral("addresses"), jsonAddresses);
     json.insert(QStringLiteral("values"), jsonValues);

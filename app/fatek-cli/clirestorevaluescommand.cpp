@@ -64,12 +64,19 @@ void CliRestoreValuesCommand::run()
     if (!options().readOnly) {
         // What will be written, then the one confirmation of dangerous commands.
         const auto frames = ValuesRestorer::writeRequests(m_context.station(), values).size();
-        out().note(QStringLiteral("restore-values: %1 values of %2 (%3) to station %4 in %5 write "
-                                  "requests: %6")
-                       .arg(values.size())
-                       .arg(step().file, file->info.taken.toString(Qt::ISODate))
+        // Counts with their nouns (1 value, 1 write request) and the date only when the file
+        // has one.
+        const QString taken
+            = file->info.taken.isValid()
+                  ? QStringLiteral(" (%1)").arg(file->info.taken.toString(Qt::ISODate))
+                  : QString();
+        out().note(QStringLiteral("restore-values: %1 of %2%3 to station %4 in %5: %6")
+                       .arg(values.size() == 1 ? QStringLiteral("1 value")
+                                               : QStringLiteral("%1 values").arg(values.size()),
+                            step().file, taken)
                        .arg(m_context.station())
-                       .arg(frames)
+                       .arg(frames == 1 ? QStringLiteral("1 write request")
+                                        : QStringLiteral("%1 write requests").arg(frames))
                        .arg(rangesText(values)));
         m_context.stopWatchdog(); // a person may take their time
         switch (confirm(QStringLiteral("Write these values to the PLC?"), options().assumeYes)) {

@@ -18,6 +18,7 @@ public:
 
 protected:
     void run() override;
+    bool changesPlc() const override { return true; }
 };
 
 } // namespace Fatek

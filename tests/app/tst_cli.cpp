@@ -509,6 +509,14 @@ void TestCli::simMonitorThreeCycles()
         // The demo ladder counts scans in R0: it never goes back.
         QVERIFY(v.at(0).toInteger() >= lastScans);
         lastScans = v.at(0).toInteger();
+        // ISO 8601 with the UTC offset, as the CSV log writes it (issue 32).
+        const QString time = o.value(QStringLiteral("time")).toString();
+        QVERIFY2(QRegularExpression(
+                     QStringLiteral(R"(^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}[+-]\d\d:\d\d$)"))
+                     .match(time)
+                     .hasMatch(),
+                 qPrintable(time));
+        QVERIFY(QDateTime::fromString(time, Qt::ISODateWithMs).isValid());
     }
 }
 

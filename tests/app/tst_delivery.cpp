@@ -12,10 +12,12 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <csignal>
 
 #ifdef Q_OS_UNIX
 #include <fcntl.h>
@@ -78,6 +80,7 @@ private Q_SLOTS:
     void monitorShowsLateValues();
     void rawFramedUnderAuto_data();
     void rawFramedUnderAuto();
+    void interruptedWriteIsReported();
 
 private:
     // The link arguments for `medium` ("tcp" or "serial"); empty (after QSKIP) if impossible.
@@ -237,6 +240,40 @@ void TestDelivery::monitorShowsLateValues()
     qInfo("8 lines: %d good, %d late", good, late);
     QVERIFY2(late > 0 && good > 0, qPrintable(r.out));
     QVERIFY2(r.err.contains(QStringLiteral("R0: Late: no new value for ")), qPrintable(r.err));
+}
+
+// Issue 32: Ctrl-C while a write is on its way: the write reaches the PLC, and stdout says so
+// before the program ends with 130; the next step of the chain does not run.
+void TestDelivery::interruptedWriteIsReported()
+{
+#ifndef Q_OS_UNIX
+    QSKIP("SIGINT is Unix's");
+#else
+    FaultConfig faults;
+    faults.latencyMs = 1500; // the answer comes 1.5 s after the question
+    m_server->setFaults(faults);
+    QProcess p;
+    p.start(QStringLiteral(FATEK_CLI_PATH),
+            link(QStringLiteral("tcp"))
+                + QStringList{QStringLiteral("--station"), QStringLiteral("9"),
+                              QStringLiteral("--protocol"), QStringLiteral("facon"),
+                              QStringLiteral("--timeout"), QStringLiteral("5000"),
+                              QStringLiteral("--json"), QStringLiteral("write"),
+                              QStringLiteral("R5"), QStringLiteral("42"), QStringLiteral("--then"),
+                              QStringLiteral("read"), QStringLiteral("R6")});
+    QVERIFY(p.waitForStarted(10000));
+    // Interrupted once the write has reached the simulator, its answer still 1.5 s away.
+    QTRY_VERIFY_WITH_TIMEOUT(m_server->counters().frames >= 1, 10000);
+    ::kill(static_cast<pid_t>(p.processId()), SIGINT);
+    QTRY_VERIFY_WITH_TIMEOUT(p.state() == QProcess::NotRunning, 15000);
+    const QString out = QString::fromUtf8(p.readAllStandardOutput());
+    const QString err = QString::fromUtf8(p.readAllStandardError());
+    QCOMPARE(p.exitCode(), 130);
+    QCOMPARE(m_plc->value(Address::parse("R5").value()), std::optional<std::uint32_t>(42));
+    QVERIFY2(out.contains(QLatin1String("\"written\":[42]")), qPrintable(out + err));
+    QVERIFY2(!out.contains(QLatin1String("R6")), qPrintable(out)); // the chain stopped
+    QVERIFY2(err.contains(QLatin1String("Interrupted.")), qPrintable(err));
+#endif
 }
 
 void TestDelivery::rawFramedUnderAuto_data()
