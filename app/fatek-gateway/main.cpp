@@ -86,7 +86,15 @@ int main(int argc, char *argv[])
     parser.addOption(readOnlyOpt);
     parser.addPositionalArgument(QStringLiteral("config"),
                                  QStringLiteral("The configuration file (JSON)."));
-    parser.process(app);
+    // Usage errors exit 2, as in the other programs (process() would exit 1).
+    if (!parser.parse(QCoreApplication::arguments())) {
+        err() << "fatek-gateway: " << parser.errorText() << Qt::endl;
+        return 2;
+    }
+    if (parser.isSet(QStringLiteral("help")))
+        parser.showHelp(0);
+    if (parser.isSet(QStringLiteral("version")))
+        parser.showVersion();
 
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1) {

@@ -391,13 +391,35 @@ Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
     r.integerInto(QStringLiteral("statisticsIntervalMs"), GatewayConfig::MinStatisticsIntervalMs,
                   GatewayConfig::MaxStatisticsIntervalMs, &c->statisticsIntervalMs);
     r.integerInto(QStringLiteral("commandMaxAgeSec"), 1, 3600, &c->commandMaxAgeSec);
-    const QJsonObject link = r.object(QStringLiteral("link"), true);
+    // The link as an object of settings, or as the URL the other programs take
+    // ("tcp://192.168.1.5?protocol=binary", "serial:///dev/ttyUSB0?baud=19200&format=7E1").
+    const bool linkUrl = json.value(QStringLiteral("link")).isString();
+    const QString url = linkUrl ? r.string(QStringLiteral("link")) : QString();
+    const QJsonObject link = linkUrl ? QJsonObject() : r.object(QStringLiteral("link"), true);
     r.known({QStringLiteral("allow"), QStringLiteral("watchLists")}); // read below
     r.rejectUnknown();
     if (r.problem)
         return r.problem;
-    if (Problem p = readLink(link, &c->link))
+    if (linkUrl) {
+        LinkSettings defaults;
+        defaults.autoReconnect = true; // a gateway never gives up on its PLC
+        Message error;
+        const std::optional<LinkSettings::Parsed> parsed
+            = LinkSettings::fromUrl(url, &error, defaults);
+        if (!parsed)
+            return at(msg<MsgId::GatewayPlaceLink>(), error);
+        // The station is the watch lists' (each item names its own).
+        if (parsed->station)
+            return at(msg<MsgId::GatewayPlaceLink>(),
+                      msg<MsgId::SettingsUrlUnknown>(url.toStdString(), "station",
+                                                     "protocol, timeout, retries and, on "
+                                                     "serial links, baud, format, flow"));
+        if (const Message m = parsed->settings.validate(); !m.empty())
+            return at(msg<MsgId::GatewayPlaceLink>(), m);
+        c->link = parsed->settings;
+    } else if (Problem p = readLink(link, &c->link)) {
         return at(msg<MsgId::GatewayPlaceLink>(), *p);
+    }
     const QJsonArray allow = r.array(QStringLiteral("allow"));
     if (r.problem)
         return r.problem;

@@ -19,6 +19,7 @@ class TestGatewayConfig : public QObject
 private Q_SLOTS:
     void initTestCase();
     void loadsEverything();
+    void linkAsUrl();
     void allowlistMembership();
     void errors_data();
     void errors();
@@ -157,6 +158,43 @@ void TestGatewayConfig::allowlistMembership()
     QVERIFY(c.allows(*Address::parse("M10")));
     QVERIFY(!c.allows(*Address::parse("M11")));
     QVERIFY(!GatewayConnectionConfig{}.allows(*Address::parse("R100"))); // none: no writes
+}
+
+// Issue 32: a connection's link may be the URL fatek-cli --link takes; the same settings come
+// out as from the object form, and a station in it (the watch lists' business) is refused.
+void TestGatewayConfig::linkAsUrl()
+{
+    QJsonObject json = replaced(validConfig(), {"connections", 0, "link"},
+                                QJsonValue("tcp://10.0.0.5:500?protocol=binary&timeout=800&"
+                                           "retries=1"))
+                           .toObject();
+    json = replaced(json, {"connections", 1, "link"},
+                    QJsonValue("serial:///dev/ttyUSB0?baud=19200&format=8N1&protocol=facon"))
+               .toObject();
+    const Result<GatewayConfig> fromUrl
+        = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());
+    QVERIFY2(fromUrl.ok(), fromUrl.ok() ? "" : fromUrl.error().text().c_str());
+    const Result<GatewayConfig> fromObject
+        = GatewayConfig::load(QJsonDocument(validConfig()).toJson(), m_dir.path());
+    QVERIFY(fromObject.ok());
+    QCOMPARE(fromUrl->connections.at(0).link, fromObject->connections.at(0).link);
+    QCOMPARE(fromUrl->connections.at(1).link, fromObject->connections.at(1).link);
+
+    json = replaced(validConfig(), {"connections", 0, "link"},
+                    QJsonValue("tcp://10.0.0.5?station=3"))
+               .toObject();
+    Result<GatewayConfig> bad = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());
+    QVERIFY(!bad.ok());
+    QVERIFY2(QString::fromStdString(bad.error().text())
+                 .contains(QLatin1String("no setting \"station\"")),
+             bad.error().text().c_str());
+    json = replaced(validConfig(), {"connections", 0, "link"}, QJsonValue("10.0.0.5:500"))
+               .toObject();
+    bad = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());
+    QVERIFY(!bad.ok());
+    QVERIFY2(
+        QString::fromStdString(bad.error().text()).contains(QLatin1String("start it with tcp://")),
+        bad.error().text().c_str());
 }
 
 void TestGatewayConfig::errors_data()
@@ -382,6 +420,10 @@ void TestGatewayConfig::checkUsage()
     TestUtil::ProgramRun run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {});
     QCOMPARE(run.code, 2);
     QVERIFY2(run.err.contains(QStringLiteral("give one configuration file")), qPrintable(run.err));
+    // An unknown option is a usage error: exit 2, as in the other programs.
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--bogus", "x.json"});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(run.err.contains(QStringLiteral("Unknown option 'bogus'")), qPrintable(run.err));
     run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--help"});
     QCOMPARE(run.code, 0);
     for (const char *option : {"--check", "--read-only", "--version"})
