@@ -76,6 +76,7 @@ expected=(
     ./usr/share/icons/hicolor/scalable/apps/fatek-studio.svg
     ./usr/share/man/man1/fatek-cli.1.gz ./usr/share/man/man1/fatek-sim.1.gz
     ./usr/share/man/man1/fatek-studio.1.gz ./usr/share/man/man1/fatek-gateway.1.gz
+    ./usr/share/bash-completion/completions/fatek-cli ./usr/share/zsh/vendor-completions/_fatek-cli
 )
 for size in 16 22 24 32 48 64 128 256; do
     expected+=("./usr/share/icons/hicolor/${size}x${size}/apps/fatek-studio.png")

@@ -12,81 +12,125 @@ namespace Fatek {
 QString usageText()
 {
     return QStringLiteral(
-        "Usage: fatek-cli [LINK] [OPTIONS] COMMAND [ARGS]\n"
-        "\n"
-        "Link (exactly one; without one, FATEK_LINK, and FATEK_STATION for --station):\n"
-        "  --link URL|@NAME         tcp://HOST[:PORT], udp://HOST[:PORT],\n"
-        "                           serial:///dev/ttyUSB0?baud=19200&format=7E1 (or COM3); "
-        "settings\n"
-        "                           protocol, timeout, retries, station; @NAME: a line NAME = URL\n"
-        "                           in ~/.config/fatek-studio/links.conf\n"
-        "  --tcp HOST[:PORT]        FATEK over TCP (port 500 if not given)\n"
-        "  --udp HOST[:PORT]        FATEK over UDP (port 500 if not given)\n"
-        "  --serial DEV             serial line, with --baud N (9600) --parity N|E|O (E) --data "
-        "7|8 (7) --stop 1|2 (1)\n"
-        "  --sim                    embedded simulator (FBs profile, demo ladder, RUN) on "
-        "127.0.0.1\n"
-        "\n"
-        "Options:\n"
-        "  --protocol facon|binary|auto   (auto for a real link, facon for --sim)\n"
-        "  --station N              station 1..254 (0 = broadcast, no answer) [1]\n"
-        "  --timeout MS             per attempt [1000]\n"
-        "  --retries N              extra attempts after a timeout [2]\n"
-        "  --read-only              operator mode: writes, RUN/STOP, forcing and raw frames are "
-        "refused\n"
-        "  --yes                    confirm restore / restore-values without asking (needed when\n"
-        "                           standard input is not a terminal)\n"
-        "  --json | --csv           output one JSON object per line / CSV instead of a table\n"
-        "  --help, --version\n"
-        "\n"
-        "Commands:\n"
-        "  status                   STATUS1 bits and the detail status (53)\n"
-        "  run | stop               switch the PLC to RUN / STOP\n"
-        "  read ADDR[:FORMAT] [COUNT]   consecutive elements (ADDR may be a range R0..R99, read\n"
-        "                           in as many requests as it takes); with a FORMAT, COUNT items\n"
-        "                           in it (R200:float 2 reads R200..R203 as two floats)\n"
-        "  read ADDR[:FORMAT]...    a mixed list (48 without formats)\n"
-        "  write ADDR[:FORMAT] VALUE...   typed as in a watch table: 12, -5, 0x1A, 1Ah, 0b1010;\n"
-        "                           discretes 0/1/on/off; R0:float 1.5 writes R0 and R1; several "
-        "=\n"
-        "                           consecutive items\n"
-        "  set|reset|enable|disable ADDR   discrete control (42)\n"
-        "  forced ADDR [COUNT]      which discretes are disabled (forced) (43)\n"
-        "  loopback [TEXT] [--count N]     round trips: min/mean/max, mismatches, timeouts\n"
-        "  monitor ADDR[:FORMAT]... [--interval MS] [--cycles N] [--format FORMAT] [--output "
-        "FILE]\n"
-        "                           poll, one line per cycle (ADDR may be a range); FORMAT: "
-        "unsigned,\n"
-        "                           signed, hex, binary, bcd, float, double, bit; --output "
-        "appends a CSV\n"
-        "                           data log (timestamp, values, status) to FILE; --names "
-        "LIST\n"
-        "                           names the columns from the ladder project's comment/symbol\n"
-        "                           list (CSV or tab-separated: address, name, comment)\n"
-        "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" "
-        "ASCII);\n"
-        "                           --frame adds the protocol's framing and checksum (under "
-        "auto:\n"
-        "                           binary framing for hex bytes, FACON for ASCII text)\n"
-        "  scan [FROM..TO]          which stations answer (default 1..254)\n"
-        "  backup FILE              read the PLC's program (53, 4F every page) into FILE (JSON)\n"
-        "  restore FILE             write the program in FILE to the PLC (50 every page, read\n"
-        "                           back and compared); shows the pages that differ and asks "
-        "first;\n"
-        "                           the PLC must be in STOP (fatek-cli stop --then restore FILE)\n"
-        "  snapshot FILE [RANGES]   save element values to FILE (.json or .csv); RANGES like\n"
-        "                           \"R0..R99, X0..X255\" (default: every element the PLC "
-        "reports)\n"
-        "  diff FILE [FILE2] [RANGES]   differences, one line per element: FILE against the PLC,\n"
-        "                           or against FILE2 (no link needed); RANGES: only these\n"
-        "  restore-values FILE [RANGES]   write FILE's values back (default: all but X), after a\n"
-        "                           confirmation (--yes), then read them back and compare\n"
-        "\n"
-        "Exit codes: 0 ok, 1 file or output not written (reason on stderr), 2 usage (also a\n"
-        "damaged file, another model, a restore not confirmed), 3 link failure (timeout, no\n"
-        "connection), 4 PLC error (also RUN during restore, program verification failed),\n"
-        "5 refused by --read-only, 6 differences found (diff; restore-values read back other\n"
-        "values), 130 interrupted (Ctrl-C), 141 the output's reader is gone (a closed pipe).\n");
+               "Usage: fatek-cli [LINK] [OPTIONS] COMMAND [ARGS]\n"
+               "\n"
+               "Link (exactly one; without one, FATEK_LINK, and FATEK_STATION for --station):\n"
+               "  --link URL|@NAME         tcp://HOST[:PORT], udp://HOST[:PORT],\n"
+               "                           serial:///dev/ttyUSB0?baud=19200&format=7E1 (or COM3); "
+               "settings\n"
+               "                           protocol, timeout, retries, station; @NAME: a line NAME "
+               "= URL\n"
+               "                           in ~/.config/fatek-studio/links.conf\n"
+               "  --tcp HOST[:PORT]        FATEK over TCP (port 500 if not given)\n"
+               "  --udp HOST[:PORT]        FATEK over UDP (port 500 if not given)\n"
+               "  --serial DEV             serial line, with --baud N (9600) --parity N|E|O (E) "
+               "--data "
+               "7|8 (7) --stop 1|2 (1)\n"
+               "  --sim                    embedded simulator (FBs profile, demo ladder, RUN) on "
+               "127.0.0.1\n"
+               "\n"
+               "Options:\n"
+               "  --protocol facon|binary|auto   (auto for a real link, facon for --sim)\n"
+               "  --station N              station 1..254 (0 = broadcast, no answer) [1]\n"
+               "  --timeout MS             per attempt [1000]\n"
+               "  --retries N              extra attempts after a timeout [2]\n"
+               "  --read-only              operator mode: writes, RUN/STOP, forcing and raw frames "
+               "are "
+               "refused\n"
+               "  --yes                    confirm restore / restore-values without asking (needed "
+               "when\n"
+               "                           standard input is not a terminal)\n"
+               "  --json | --csv           output one JSON object per line / CSV instead of a "
+               "table\n"
+               "  --then                   run the next command on the same link (status --then "
+               "read R0)\n"
+               "  --completion bash|zsh    print the shell completion script (the .deb installs "
+               "both)\n"
+               "  --help, --version\n"
+               "\n"
+               "Commands:\n"
+               "  status                   STATUS1 bits and the detail status (53)\n"
+               "  run | stop               switch the PLC to RUN / STOP\n"
+               "  read ADDR[:FORMAT] [COUNT]   consecutive elements (ADDR may be a range R0..R99, "
+               "read\n"
+               "                           in as many requests as it takes); with a FORMAT, COUNT "
+               "items\n"
+               "                           in it (R200:float 2 reads R200..R203 as two floats)\n"
+               "  read ADDR[:FORMAT]...    a mixed list (48 without formats)\n"
+               "  write ADDR[:FORMAT] VALUE...   typed as in a watch table: 12, -5, 0x1A, 1Ah, "
+               "0b1010;\n"
+               "                           discretes 0/1/on/off; R0:float 1.5 writes R0 and R1; "
+               "several "
+               "=\n"
+               "                           consecutive items\n"
+               "  set|reset|enable|disable ADDR   discrete control (42)\n"
+               "  forced ADDR [COUNT]      which discretes are disabled (forced) (43)\n"
+               "  loopback [TEXT] [--count N]     round trips: min/mean/max, mismatches, timeouts\n"
+               "  monitor ADDR[:FORMAT]... [--interval MS] [--cycles N] [--format FORMAT] "
+               "[--output "
+               "FILE]\n"
+               "                           poll, one line per cycle (ADDR may be a range); "
+               "FORMAT:\n"
+               "                           %1;\n"
+               "                           --output appends a CSV\n"
+               "                           data log (timestamp, values, status) to FILE; --names "
+               "LIST\n"
+               "                           names the columns from the ladder project's "
+               "comment/symbol\n"
+               "                           list (CSV or tab-separated: address, name, comment)\n"
+               "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" "
+               "ASCII);\n"
+               "                           --frame adds the protocol's framing and checksum (under "
+               "auto:\n"
+               "                           binary framing for hex bytes, FACON for ASCII text)\n"
+               "  scan [FROM..TO]          which stations answer (default 1..254)\n"
+               "  backup FILE              read the PLC's program (53, 4F every page) into FILE "
+               "(JSON)\n"
+               "  restore FILE             write the program in FILE to the PLC (50 every page, "
+               "read\n"
+               "                           back and compared); shows the pages that differ and "
+               "asks "
+               "first;\n"
+               "                           the PLC must be in STOP (fatek-cli stop --then restore "
+               "FILE)\n"
+               "  snapshot FILE [RANGES]   save element values to FILE (.json or .csv); RANGES "
+               "like\n"
+               "                           \"R0..R99, X0..X255\" (default: every element the PLC "
+               "reports)\n"
+               "  diff FILE [FILE2] [RANGES]   differences, one line per element: FILE against the "
+               "PLC,\n"
+               "                           or against FILE2 (no link needed); RANGES: only these\n"
+               "  restore-values FILE [RANGES]   write FILE's values back (default: all but X), "
+               "after a\n"
+               "                           confirmation (--yes), then read them back and compare\n"
+               "\n"
+               "Exit codes: 0 ok, 1 file or output not written (reason on stderr), 2 usage (also "
+               "a\n"
+               "damaged file, another model, a restore not confirmed), 3 link failure (timeout, "
+               "no\n"
+               "connection), 4 PLC error (also RUN during restore, program verification failed),\n"
+               "5 refused by --read-only, 6 differences found (diff; restore-values read back "
+               "other\n"
+               "values), 130 interrupted (Ctrl-C), 141 the output's reader is gone (a closed "
+               "pipe).\n")
+        .arg(CliText::formatNames());
+}
+
+QStringList valuedOptionNames()
+{
+    return LinkArguments::names()
+           + QStringList{QStringLiteral("count"),     QStringLiteral("interval"),
+                         QStringLiteral("cycles"),    QStringLiteral("output"),
+                         QStringLiteral("format"),    QStringLiteral("names"),
+                         QStringLiteral("completion")};
+}
+
+QStringList flagOptionNames()
+{
+    return {QStringLiteral("help"),  QStringLiteral("version"), QStringLiteral("sim"),
+            QStringLiteral("json"),  QStringLiteral("csv"),     QStringLiteral("read-only"),
+            QStringLiteral("yes"),   QStringLiteral("frame"),   QStringLiteral("hex"),
+            QStringLiteral("ascii"), QStringLiteral("then")};
 }
 
 CliParseResult parseCommandLine(const QStringList &arguments)
@@ -102,10 +146,7 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         return CliParseResult{std::nullopt, message};
     };
 
-    const QStringList valued
-        = LinkArguments::names() + QStringList{QStringLiteral("count"),  QStringLiteral("interval"),
-                                               QStringLiteral("cycles"), QStringLiteral("output"),
-                                               QStringLiteral("format"), QStringLiteral("names")};
+    const QStringList valued = valuedOptionNames();
     bool onlyPositional = false;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
         const QString &arg = arguments.at(i);
@@ -142,6 +183,13 @@ CliParseResult parseCommandLine(const QStringList &arguments)
             }
             if (link.set(name, value))
                 continue;
+            if (name == QLatin1String("completion")) {
+                if (value != QLatin1String("bash") && value != QLatin1String("zsh"))
+                    return fail(
+                        QStringLiteral("--completion takes bash or zsh, not \"%1\".").arg(value));
+                o.completion = value;
+                continue;
+            }
             if (name == QLatin1String("count")) {
                 countText = value;
                 countGiven = true;
@@ -195,7 +243,7 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         else
             return fail(QStringLiteral("Unknown option --%1 (see --help).").arg(name));
     }
-    if (o.help || o.version)
+    if (o.help || o.version || !o.completion.isEmpty())
         return {o, {}};
 
     // The link.

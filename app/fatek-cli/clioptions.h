@@ -108,6 +108,7 @@ struct CliOptions
     QString outputPath; // monitor --output: CSV data log, appended
     QString namesPath;  // monitor --names: the ladder project's comment/symbol list
     std::optional<DisplayFormat> valueFormat; // monitor --format
+    QString completion; // --completion bash|zsh: print that shell's completion script
 };
 
 struct CliParseResult
@@ -121,5 +122,8 @@ struct CliParseResult
 CliParseResult parseCommandLine(const QStringList &arguments);
 
 QString usageText();
+// The options that take a value and those that do not (without "--"), for the completions.
+QStringList valuedOptionNames();
+QStringList flagOptionNames();
 
 } // namespace Fatek

@@ -1,4 +1,5 @@
 #include "app/common/quitsignal.h"
+#include "clicompletion.h"
 #include "clioptions.h"
 #include "clioutput.h"
 #include "clirunner.h"
@@ -45,6 +46,8 @@ int main(int argc, char *argv[])
     }
     if (parsed.options->help)
         return CliOutput::printStdout(usageText());
+    if (!parsed.options->completion.isEmpty())
+        return CliOutput::printStdout(completionScript(parsed.options->completion));
     if (parsed.options->version)
         return CliOutput::printStdout(
             QStringLiteral("fatek-cli %1\n").arg(QCoreApplication::applicationVersion()));

@@ -183,6 +183,7 @@ private Q_SLOTS:
     void simJsonShape();
     void simCsvShape();
     void simMixedRead();
+    void completions();
     void simReadSplitsAndFormats();
     void simMonitorNames();
     void plcErrorExit4();
@@ -687,6 +688,83 @@ void TestCli::simMixedRead()
     QCOMPARE(r.json(2).value(QStringLiteral("values")).toArray(), ints({99}));
     QCOMPARE(r.json(3).value(QStringLiteral("values")).toArray(), ints({1}));
     QCOMPARE(r.json(4).value(QStringLiteral("values")).toArray(), ints({0}));
+}
+
+// Issue 32: the bash completion, made by the program from its command table, completes what a
+// person types: commands, options, formats, the named links of links.conf, commands after --then,
+// files after backup. (zsh's script is checked for syntax where zsh is installed.)
+void TestCli::completions()
+{
+#ifndef Q_OS_UNIX
+    QSKIP("bash and zsh completions are for Unix shells");
+#else
+    const QString bash = QStandardPaths::findExecutable(QStringLiteral("bash"));
+    QVERIFY(!bash.isEmpty());
+    QTemporaryDir dir;
+    const Run script = runCli({QStringLiteral("--completion"), QStringLiteral("bash")});
+    RUN_OK(script);
+    QFile file(dir.filePath(QStringLiteral("fatek-cli.bash")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(script.out.toUtf8());
+    file.close();
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("config/fatek-studio")));
+    QFile links(dir.filePath(QStringLiteral("config/fatek-studio/links.conf")));
+    QVERIFY(links.open(QIODevice::WriteOnly));
+    links.write("# bench\nline1 = tcp://10.0.0.5\npress=serial://COM3  # east\n");
+    links.close();
+    // What the shell offers for the words typed so far (the last one being completed).
+    auto offers = [&](const QStringList &words) {
+        QStringList quoted;
+        for (const QString &w : words)
+            quoted << QLatin1Char('\'') + w + QLatin1Char('\'');
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+        env.remove(QStringLiteral("FATEK_LINKS"));
+        p.setProcessEnvironment(env);
+        p.setWorkingDirectory(dir.path());
+        p.start(bash,
+                {QStringLiteral("-c"),
+                 QStringLiteral("source fatek-cli.bash; COMP_WORDS=(fatek-cli %1); "
+                                "COMP_CWORD=%2; _fatek_cli; printf '%s\\n' \"${COMPREPLY[@]}\"")
+                     .arg(quoted.join(QLatin1Char(' ')))
+                     .arg(words.size())});
+        p.waitForFinished(10000);
+        return QString::fromUtf8(p.readAllStandardOutput())
+            .split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    };
+    QCOMPARE(offers({QStringLiteral("re")}),
+             (QStringList{QStringLiteral("read"), QStringLiteral("reset"),
+                          QStringLiteral("restore"), QStringLiteral("restore-values")}));
+    QCOMPARE(offers({QStringLiteral("--link"), QStringLiteral("@")}),
+             (QStringList{QStringLiteral("@line1"), QStringLiteral("@press")}));
+    QVERIFY(offers({QStringLiteral("--format"), QString()}).contains(QStringLiteral("ascii")));
+    QCOMPARE(offers({QStringLiteral("--protocol"), QStringLiteral("b")}),
+             QStringList{QStringLiteral("binary")});
+    QCOMPARE(offers({QStringLiteral("--js")}), QStringList{QStringLiteral("--json")});
+    QVERIFY(offers({QStringLiteral("--th")}).contains(QStringLiteral("--then")));
+    // After --then a new command; after a command's own words nothing but its files.
+    QVERIFY(offers({QStringLiteral("--sim"), QStringLiteral("status"), QStringLiteral("--then"),
+                    QStringLiteral("mon")})
+            == QStringList{QStringLiteral("monitor")});
+    QCOMPARE(offers({QStringLiteral("--tcp"), QStringLiteral("plc1"), QStringLiteral("backup"),
+                     QStringLiteral("fatek-cli.b")}),
+             QStringList{QStringLiteral("fatek-cli.bash")});
+
+    const QString zsh = QStandardPaths::findExecutable(QStringLiteral("zsh"));
+    if (!zsh.isEmpty()) {
+        const Run z = runCli({QStringLiteral("--completion"), QStringLiteral("zsh")});
+        RUN_OK(z);
+        QProcess p;
+        p.start(zsh, {QStringLiteral("-n")});
+        p.write(z.out.toUtf8());
+        p.closeWriteChannel();
+        QVERIFY(p.waitForFinished(10000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+    }
+    const Run bad = runCli({QStringLiteral("--completion"), QStringLiteral("fish")});
+    QCOMPARE(bad.code, 2);
+#endif
 }
 
 // Issue 32: read takes what monitor and write take: a range longer than one request carries

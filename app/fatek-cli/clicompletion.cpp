@@ -1,0 +1,149 @@
+#include "clicompletion.h"
+
+#include "clicommands.h"
+#include "clioptions.h"
+#include "core/watch/valueformat.h"
+
+#include <QStringList>
+
+namespace Fatek {
+
+namespace {
+
+QString formats()
+{
+    QStringList names;
+    for (const DisplayFormat f : ValueFormat::allFormats())
+        names << ValueFormat::name(f);
+    return names.join(QLatin1Char(' '));
+}
+
+QString dashed(const QStringList &names)
+{
+    QStringList out;
+    for (const QString &name : names)
+        out << QStringLiteral("--") + name;
+    return out.join(QLatin1Char(' '));
+}
+
+// The commands whose arguments are files.
+const char *const fileCommands = "backup restore snapshot diff restore-values";
+
+// Prints "@NAME" for every line NAME = URL of the named links file (app/common/namedlinks.h).
+const char *const namedLinksShell
+    = R"sh(sed -n 's/^[[:space:]]*\([^#=[:space:]]\{1,\}\)[[:space:]]*=.*/@\1/p' \
+        "${FATEK_LINKS:-${XDG_CONFIG_HOME:-$HOME/.config}/fatek-studio/links.conf}" 2>/dev/null)sh";
+
+QString bash()
+{
+    const QString valued
+        = dashed(valuedOptionNames()).replace(QLatin1Char(' '), QLatin1String(" | "));
+    return QStringLiteral(R"sh(# bash completion for fatek-cli (made by fatek-cli --completion bash)
+_fatek_cli() {
+    local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}
+    COMPREPLY=()
+    case $prev in
+    --serial)
+        COMPREPLY=($(compgen -W "$(ls -d /dev/ttyUSB* /dev/ttyACM* /dev/ttyS* /dev/serial/by-id/* 2>/dev/null)" -- "$cur"))
+        return ;;
+    --link)
+        COMPREPLY=($(compgen -W "$(%1) tcp:// udp:// serial://" -- "$cur"))
+        compopt -o nospace 2>/dev/null
+        return ;;
+    --protocol) COMPREPLY=($(compgen -W "facon binary auto" -- "$cur")); return ;;
+    --format) COMPREPLY=($(compgen -W "%2" -- "$cur")); return ;;
+    --parity) COMPREPLY=($(compgen -W "N E O" -- "$cur")); return ;;
+    --data) COMPREPLY=($(compgen -W "7 8" -- "$cur")); return ;;
+    --stop) COMPREPLY=($(compgen -W "1 2" -- "$cur")); return ;;
+    --completion) COMPREPLY=($(compgen -W "bash zsh" -- "$cur")); return ;;
+    --output | --names) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    %3) return ;;
+    esac
+    if [[ $cur == -* ]]; then
+        COMPREPLY=($(compgen -W "%4" -- "$cur"))
+        return
+    fi
+    # The command of this step: the first word after the program or the last --then that is
+    # neither an option nor an option's value.
+    local i word command=
+    for ((i = 1; i < COMP_CWORD; i++)); do
+        word=${COMP_WORDS[i]}
+        case $word in
+        --then) command= ;;
+        %3) ((i++)) ;;
+        -*) ;;
+        *) [[ -z $command ]] && command=$word ;;
+        esac
+    done
+    if [[ -z $command ]]; then
+        COMPREPLY=($(compgen -W "%5" -- "$cur"))
+    elif [[ " %6 " == *" $command "* ]]; then
+        COMPREPLY=($(compgen -f -- "$cur"))
+    fi
+}
+complete -F _fatek_cli fatek-cli
+)sh")
+        .arg(QString::fromLatin1(namedLinksShell), formats(), valued,
+             dashed(valuedOptionNames() + flagOptionNames()), commandNames().join(QLatin1Char(' ')),
+             QString::fromLatin1(fileCommands));
+}
+
+QString zsh()
+{
+    // _arguments specs: valued options with what their value is, then the flags.
+    QStringList specs;
+    auto valued = [&specs](const QString &name, const QString &action) {
+        specs << QStringLiteral("'--%1=[]:%1:%2'").arg(name, action);
+    };
+    for (const QString &name : valuedOptionNames()) {
+        if (name == QLatin1String("serial"))
+            valued(name, QStringLiteral("_files -g \"/dev/tty*(N) /dev/serial/by-id/*(N)\""));
+        else if (name == QLatin1String("link"))
+            valued(name, QStringLiteral("(tcp:// udp:// serial:// ${links})"));
+        else if (name == QLatin1String("protocol"))
+            valued(name, QStringLiteral("(facon binary auto)"));
+        else if (name == QLatin1String("format"))
+            valued(name, QStringLiteral("(%1)").arg(formats()));
+        else if (name == QLatin1String("parity"))
+            valued(name, QStringLiteral("(N E O)"));
+        else if (name == QLatin1String("data"))
+            valued(name, QStringLiteral("(7 8)"));
+        else if (name == QLatin1String("stop"))
+            valued(name, QStringLiteral("(1 2)"));
+        else if (name == QLatin1String("completion"))
+            valued(name, QStringLiteral("(bash zsh)"));
+        else if (name == QLatin1String("output") || name == QLatin1String("names"))
+            valued(name, QStringLiteral("_files"));
+        else
+            valued(name, QStringLiteral(" "));
+    }
+    for (const QString &name : flagOptionNames())
+        specs << QStringLiteral("'*--%1[]'").arg(name);
+    return QStringLiteral(R"sh(#compdef fatek-cli
+# zsh completion for fatek-cli (made by fatek-cli --completion zsh)
+local -a links commands
+links=(${(f)"$(%1)"})
+commands=(%2)
+_arguments -S \
+  %3 \
+  '*:: :->step'
+if [[ $state == step ]]; then
+  if (( CURRENT == 1 )) || [[ ${words[CURRENT-1]} == --then ]]; then
+    _describe command commands
+  elif [[ " %4 " == *" ${words[1]} "* ]]; then
+    _files
+  fi
+fi
+)sh")
+        .arg(QString::fromLatin1(namedLinksShell), commandNames().join(QLatin1Char(' ')),
+             specs.join(QStringLiteral(" \\\n  ")), QString::fromLatin1(fileCommands));
+}
+
+} // namespace
+
+QString completionScript(const QString &shell)
+{
+    return shell == QLatin1String("zsh") ? zsh() : bash();
+}
+
+} // namespace Fatek
