@@ -10,6 +10,8 @@
 #include "qtbytes.h"
 #include "trafficlog.h"
 
+#include <QRandomGenerator>
+
 #include <algorithm>
 
 namespace Fatek {
@@ -254,7 +256,11 @@ void SessionWorker::onDisconnected(const Message &reason)
     m_log->append(TrafficEntry::Direction::Event, {}, msg<MsgId::LogLinkLost>(), reason);
     failAll(ErrorKind::LinkError, msg<MsgId::LinkLostBecause>(reason), true);
     if (m_wantOpen && m_settings.autoReconnect) {
-        const int delay = m_backoffMs;
+        // Up to a quarter longer, at random: the links of a gateway (or a studio) that lost
+        // their PLCs together do not all come back in the same instant.
+        const int delay
+            = m_backoffMs
+              + static_cast<int>(QRandomGenerator::global()->bounded(m_backoffMs / 4 + 1));
         m_backoffMs = std::min(m_settings.reconnectMaxMs, m_backoffMs * 2);
         setState(LinkState::Reconnecting,
                  msg<MsgId::LinkNextAttempt>(

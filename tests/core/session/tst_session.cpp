@@ -11,8 +11,10 @@
 #include <QFile>
 #include <QProcess>
 #include <QSerialPort>
+#include <QSet>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTcpServer>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -118,6 +120,7 @@ private Q_SLOTS:
     void autoDetect();
     void autoDetectNobody();
     void reconnectAfterSimulatorRestart();
+    void reconnectsAreSpread();
     void closeCancelsPending();
     void statistics();
     void trafficLogBounded();
@@ -747,6 +750,38 @@ void TestSession::reconnectAfterSimulatorRestart()
     QVERIFY2(m_server->listenTcp(port, &error), qPrintable(error)); // ... and comes back
     QTRY_VERIFY_WITH_TIMEOUT(session->linkState() == LinkState::Connected, 10000);
     CHECK_OK(run(*session, results, Request::briefStatus(1)));
+}
+
+// Issue 33: links that lost their PLCs together do not all try again in the same instant: each
+// waits its backoff and up to a quarter more, at random.
+void TestSession::reconnectsAreSpread()
+{
+    QTcpServer probe; // a port nobody listens on: every attempt is refused at once
+    QVERIFY(probe.listen(QHostAddress::LocalHost));
+    const quint16 port = probe.serverPort();
+    probe.close();
+    LinkSettings settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), port);
+    settings.reconnectMinMs = 2000;
+    settings.reconnectMaxMs = 2000;
+    QStringList delays; // "2.0" .. "2.5"
+    std::vector<std::unique_ptr<Session>> sessions;
+    for (int i = 0; i < 8; ++i) {
+        sessions.push_back(std::make_unique<Session>(settings));
+        connect(sessions.back().get(), &Session::linkStateChanged, this,
+                [&delays](LinkState state, const Message &reason) {
+                    if (state == LinkState::Reconnecting && reason.id == MsgId::LinkNextAttempt)
+                        delays << QString::fromStdString(reason.args.at(1).text);
+                });
+        sessions.back()->open();
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(delays.size(), 8, 10000);
+    qInfo("first reconnect delays of 8 links: %s", qPrintable(delays.join(QLatin1Char(' '))));
+    for (const QString &delay : std::as_const(delays)) {
+        const double seconds = delay.toDouble();
+        QVERIFY2(seconds >= 2.0 && seconds <= 2.5, qPrintable(delay)); // never sooner
+    }
+    QVERIFY2(QSet<QString>(delays.cbegin(), delays.cend()).size() > 1,
+             qPrintable(delays.join(QLatin1Char(' '))));
 }
 
 void TestSession::closeCancelsPending()
