@@ -405,8 +405,11 @@ private Q_SLOTS:
 // A screen of a laptop's size: the offscreen platform reads it from a configuration file.
 int main(int argc, char *argv[])
 {
-    QTemporaryDir dir;
-    const QString config = dir.filePath(QStringLiteral("screen.json"));
+    // In the working folder, named relative to it: the platform's arguments are separated by
+    // ':', so a Windows path ("C:\\...") would cut the file name short.
+    QTemporaryDir dir(QDir::current().filePath(QStringLiteral("laptop-screen-XXXXXX")));
+    const QString config
+        = QDir::current().relativeFilePath(dir.filePath(QStringLiteral("screen.json")));
     QFile file(config);
     if (!file.open(QIODevice::WriteOnly))
         return 1;
