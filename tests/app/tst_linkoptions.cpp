@@ -38,6 +38,7 @@ private:
     Run run(const QString &program, const QStringList &arguments,
             const QMap<QString, QString> &environment = {});
     QTemporaryDir m_dir;
+    QMap<QString, QString> m_environment; // for every run
 };
 
 void TestLinkOptions::initTestCase()
@@ -62,6 +63,8 @@ Run TestLinkOptions::run(const QString &program, const QStringList &arguments,
     env.remove(QStringLiteral("FATEK_LINK"));
     env.remove(QStringLiteral("FATEK_STATION"));
     env.remove(QStringLiteral("FATEK_LINKS"));
+    for (auto it = m_environment.cbegin(); it != m_environment.cend(); ++it)
+        env.insert(it.key(), it.value());
     for (auto it = environment.cbegin(); it != environment.cend(); ++it)
         env.insert(it.key(), it.value());
     env.insert(QStringLiteral("XDG_RUNTIME_DIR"), m_dir.filePath(QStringLiteral("run")));
@@ -185,6 +188,10 @@ void TestLinkOptions::linksByUrlNameAndEnvironment()
     QVERIFY(links.open(QIODevice::WriteOnly | QIODevice::Text));
     links.write("# the test bench\nbench = " + url.toUtf8() + "   # station 3\nother = tcp://a\n");
     links.close();
+#ifdef Q_OS_WIN
+    // Windows keeps it in %LOCALAPPDATA%, which the test cannot move: name the file instead.
+    m_environment.insert(QStringLiteral("FATEK_LINKS"), links.fileName());
+#endif
     r = run(cli, QStringList{QStringLiteral("--link"), QStringLiteral("@bench")} + read);
     QVERIFY2(readsValue(r), qPrintable(r.out + r.err));
     r = run(cli, QStringList{QStringLiteral("--link"), QStringLiteral("@nope")} + read);
