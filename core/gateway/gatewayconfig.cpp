@@ -302,15 +302,12 @@ Problem readLink(const QJsonObject &json, LinkSettings *out)
         if (const QString error = link.setSerialFormat(format); !error.isEmpty())
             return Message::text(error.toStdString());
     }
-    if (protocol == u"facon")
-        link.protocol = LinkSettings::ProtocolChoice::Facon;
-    else if (protocol == u"binary")
-        link.protocol = LinkSettings::ProtocolChoice::Binary;
-    else if (protocol == u"auto")
-        link.protocol = LinkSettings::ProtocolChoice::Auto;
-    else
+    // The one reading of a protocol name (also --protocol and a link URL's protocol=).
+    const std::optional<LinkSettings::ProtocolChoice> choice = protocolChoiceFromText(protocol);
+    if (!choice)
         return msg<MsgId::GatewayConfigBadProtocol>(protocol.toStdString(), "facon", "binary",
                                                     "auto");
+    link.protocol = *choice;
     if (const Message m = link.validate(); !m.empty())
         return m;
     *out = link;
