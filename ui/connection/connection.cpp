@@ -18,6 +18,8 @@ Connection::Connection(const SavedConnection &saved, QObject *parent)
     m_rateTimer.setInterval(1000);
     connect(&m_rateTimer, &QTimer::timeout, this, &Connection::updateRate);
     m_rateClock.start();
+    // The session's count starts at 0 with the link: the first second already has a rate.
+    m_rateSamples.emplace_back(0, 0);
     // The one place that picks the kind of link.
     if (saved.gateway)
         m_link = new GatewayWatch(*saved.gateway, this);
