@@ -396,6 +396,13 @@ private Q_SLOTS:
         table->setIntervalMs(500);
         WatchTableModel *model = table->model();
         QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(rowOf(model, "R1")), longWait);
+        // From the first seconds on, not only once a window of samples has filled.
+        auto *dock = m_window->findChild<ConnectionsPanel *>();
+        QVERIFY(dock);
+        const QModelIndex firstRate
+            = dock->view()->model()->index(0, ConnectionListModel::RateColumn);
+        QTRY_VERIFY2_WITH_TIMEOUT(firstRate.data().toString().toDouble() > 0,
+                                  qPrintable(firstRate.data().toString()), 1500);
         QTableView *view = table->view();
         doubleClick(view, model->index(rowOf(model, "R0"), WatchTableModel::StationColumn));
         QTRY_VERIFY(view->viewport()->findChild<QLineEdit *>());
