@@ -3760,6 +3760,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>No value yet</translation>
         </message>
         <message>
+            <source>The gateway&apos;s name for this item; type a name to use your own.</source>
+            <translation>The gateway&apos;s name for this item; type a name to use your own.</translation>
+        </message>
+        <message>
             <source>Click the box to toggle</source>
             <translation>Click the box to toggle</translation>
         </message>

@@ -3749,6 +3749,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>尚無數值</translation>
         </message>
         <message>
+            <source>The gateway&apos;s name for this item; type a name to use your own.</source>
+            <translation>此名稱來自閘道器的監看清單；輸入名稱即改用您自己的。</translation>
+        </message>
+        <message>
             <source>Click the box to toggle</source>
             <translation>按一下方塊可切換</translation>
         </message>

@@ -150,6 +150,7 @@ void GatewayWatch::onItem(int station, const Address &address, const QByteArray 
         published.words = item->words;
         published.quality = item->quality;
         published.time = item->time;
+        published.name = item->name;
         published.error = item->quality == ValueQuality::Good ? Message{} : item->error;
     } else if (!m_published.remove(key)) {
         return;
@@ -251,6 +252,7 @@ WatchItemValue GatewayWatch::valueOf(const Watched &watched) const
         value.raw = watched.values.join(value.words);
         value.time = published->time;
         value.hasValue = covered == count;
+        value.name = published->name;
     }
     if (m_state != LinkState::Connected) {
         // Whatever the payload said, it is not fresh while the gateway or the broker is away.

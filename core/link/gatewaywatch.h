@@ -79,6 +79,7 @@ private:
         ValueQuality quality = ValueQuality::Error;
         QDateTime time;
         Message error;
+        QString name;
     };
     struct Watched
     {

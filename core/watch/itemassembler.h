@@ -38,6 +38,9 @@ struct WatchItemValue
     ValueQuality quality = ValueQuality::Error;
     Message error;
     QDateTime time;
+    // What the far end calls the item (the name in a gateway's watch list); empty for a direct
+    // link, whose names are the window's own.
+    QString name;
 };
 
 // The one place that turns element values (what a session polls) into item values (what a table,

@@ -79,7 +79,9 @@ struct Gateway
         settings.reconnectMaxMs = 200;
         peer = std::make_unique<TestUtil::GatewayPeer>(settings, QStringLiteral("fatek"),
                                                        QStringLiteral("line1"));
-        peer->setItem(item("R100", DisplayFormat::Float32),
+        WatchItemSpec tank = item("R100", DisplayFormat::Float32);
+        tank.name = QStringLiteral("Tank level");
+        peer->setItem(tank,
                       {floatBits(12.5f) & 0xFFFFu, floatBits(12.5f) >> 16});
         peer->setItem(item("R200", DisplayFormat::Signed), {42});
         return peer->open();
@@ -246,6 +248,12 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(model->valueText(0), QStringLiteral("12.5"), longWait);
         QCOMPARE(model->quality(0), ValueQuality::Good);
         QTRY_COMPARE_WITH_TIMEOUT(model->valueText(1), QStringLiteral("42"), longWait);
+        // The names of the gateway's watch list fill the rows that have none.
+        const QModelIndex tankName = model->index(0, WatchTableModel::NameColumn);
+        QCOMPARE(model->data(tankName).toString(), QStringLiteral("Tank level"));
+        QVERIFY(model->data(tankName, Qt::ToolTipRole).toString().contains(
+            QStringLiteral("gateway's name")));
+        QVERIFY(model->data(model->index(1, WatchTableModel::NameColumn)).toString().isEmpty());
         // The tooltip, not the quality: a row nothing was reported for yet may read as Error.
         QTRY_VERIFY_WITH_TIMEOUT(
             model->data(model->index(2, WatchTableModel::QualityColumn), Qt::ToolTipRole)

@@ -314,7 +314,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
     switch (role) {
     case Qt::DisplayRole:
         switch (index.column()) {
-        case NameColumn: return spec.name;
+        // A row without its own name shows the gateway's; typing one replaces it.
+        case NameColumn: return spec.name.isEmpty() ? row.peerName : spec.name;
         case AddressColumn: return QString::fromStdString(spec.address.toString());
         case StationColumn: return spec.station;
         case ValueColumn: return have ? valueText(r) : QStringLiteral("…");
@@ -367,6 +368,9 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             if (index.column() == ValueColumn)
                 lines << (discrete ? tr("Click the box to toggle")
                                    : tr("Double-click or F2 to write"));
+        } else if (index.column() == NameColumn && spec.name.isEmpty()
+                   && !row.peerName.isEmpty()) {
+            lines << tr("The gateway's name for this item; type a name to use your own.");
         } else if (index.column() == AddressColumn) {
             const int count = row.values.elementCount();
             lines << (count > 1 ? tr("%1 .. %2 (%3 elements)")

@@ -137,6 +137,7 @@ private:
         ValueQuality quality = ValueQuality::Stale;
         Message error;         // translated when shown
         QDateTime updated;     // when its value was last read
+        QString peerName;      // the far end's name for the item, shown when it has none
         bool received = false; // every element has been read once
         // Sequence number of the batch that set it: a newer batch wins, so applying queued
         // batches newest first ends as applying them in order would.
@@ -193,6 +194,7 @@ private:
     std::vector<int> m_valueRows;
     std::vector<int> m_qualityRows;
     std::vector<int> m_updatedRows;
+    std::vector<int> m_nameRows;
 };
 
 } // namespace Fatek

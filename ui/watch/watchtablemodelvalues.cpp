@@ -108,6 +108,11 @@ void WatchTableModel::applyOne(const WatchItemValue &v, quint64 batch)
         m_valueRows.push_back(r); // the value's font, colour and tooltip follow the quality
     if (updatedChanged)
         m_updatedRows.push_back(r);
+    if (row.peerName != v.name) {
+        row.peerName = v.name;
+        if (row.spec().name.isEmpty())
+            m_nameRows.push_back(r);
+    }
     row.batch = batch;
     row.quality = v.quality;
     row.error = v.error;
@@ -135,6 +140,7 @@ void WatchTableModel::finishSlice()
     emitRowsChanged(std::exchange(m_valueRows, {}), ValueColumn, ValueColumn);
     emitRowsChanged(std::exchange(m_qualityRows, {}), QualityColumn, QualityColumn);
     emitRowsChanged(std::exchange(m_updatedRows, {}), UpdatedColumn, UpdatedColumn);
+    emitRowsChanged(std::exchange(m_nameRows, {}), NameColumn, NameColumn);
 }
 
 void WatchTableModel::markAllStale(const Message &reason)
