@@ -3,6 +3,7 @@
 #include "testutil.h"
 
 #include <QDeadlineTimer>
+#include <QDir>
 #include <QFile>
 #include <QStandardPaths>
 #include <QTcpServer>
@@ -92,6 +93,76 @@ QString MosquittoBroker::log() const
     if (!file.open(QIODevice::ReadOnly))
         return {};
     return QString::fromUtf8(file.readAll());
+}
+
+bool MosquittoBroker::startWithTls(QString *error)
+{
+    const QString openssl = QStandardPaths::findExecutable(QStringLiteral("openssl"));
+    if (openssl.isEmpty()) {
+        *error = QStringLiteral("openssl is not installed (tools/install-deps.sh installs it)");
+        return false;
+    }
+    const QDir dir(m_dir.path());
+    const auto run = [&](const QStringList &args) {
+        QProcess p;
+        p.setWorkingDirectory(dir.path());
+        p.setProcessChannelMode(QProcess::MergedChannels);
+        p.start(openssl, args);
+        if (p.waitForFinished(30000) && p.exitCode() == 0)
+            return true;
+        *error = QStringLiteral("openssl %1: %2")
+                     .arg(args.join(QLatin1Char(' ')), QString::fromLocal8Bit(p.readAll()));
+        return false;
+    };
+    const QStringList ec{QStringLiteral("-newkey"), QStringLiteral("ec"),
+                         QStringLiteral("-pkeyopt"), QStringLiteral("ec_paramgen_curve:prime256v1"),
+                         QStringLiteral("-nodes")};
+    for (const QString &name : {QStringLiteral("ca"), QStringLiteral("other")}) {
+        if (!run(QStringList{QStringLiteral("req"), QStringLiteral("-x509")} + ec
+                 + QStringList{QStringLiteral("-keyout"), name + QStringLiteral(".key"),
+                               QStringLiteral("-out"), name + QStringLiteral(".crt"),
+                               QStringLiteral("-days"), QStringLiteral("2"),
+                               QStringLiteral("-subj"), QStringLiteral("/CN=test ") + name}))
+            return false;
+    }
+    QFile ext(dir.filePath(QStringLiteral("ext.cnf")));
+    if (!ext.open(QIODevice::WriteOnly)) {
+        *error = QStringLiteral("cannot write %1").arg(ext.fileName());
+        return false;
+    }
+    ext.write("subjectAltName=IP:127.0.0.1\n");
+    ext.close();
+    // The broker's certificate (for 127.0.0.1) and the client's, both signed by ca.
+    for (const QString &name : {QStringLiteral("server"), QStringLiteral("client")}) {
+        QStringList sign{QStringLiteral("x509"),
+                         QStringLiteral("-req"),
+                         QStringLiteral("-in"),
+                         name + QStringLiteral(".csr"),
+                         QStringLiteral("-CA"),
+                         QStringLiteral("ca.crt"),
+                         QStringLiteral("-CAkey"),
+                         QStringLiteral("ca.key"),
+                         QStringLiteral("-CAcreateserial"),
+                         QStringLiteral("-out"),
+                         name + QStringLiteral(".crt"),
+                         QStringLiteral("-days"),
+                         QStringLiteral("2")};
+        if (name == QStringLiteral("server"))
+            sign << QStringLiteral("-extfile") << QStringLiteral("ext.cnf");
+        if (!run(QStringList{QStringLiteral("req")} + ec
+                 + QStringList{QStringLiteral("-keyout"), name + QStringLiteral(".key"),
+                               QStringLiteral("-out"), name + QStringLiteral(".csr"),
+                               QStringLiteral("-subj"),
+                               name == QStringLiteral("server") ? QStringLiteral("/CN=127.0.0.1")
+                                                                : QStringLiteral("/CN=studio")})
+            || !run(sign))
+            return false;
+    }
+    return start(error, QStringLiteral("cafile %1\ncertfile %2\nkeyfile %3\n"
+                                       "require_certificate true\n")
+                            .arg(dir.filePath(QStringLiteral("ca.crt")),
+                                 dir.filePath(QStringLiteral("server.crt")),
+                                 dir.filePath(QStringLiteral("server.key"))));
 }
 
 bool MosquittoBroker::start(QString *error, const QString &extraConfig)

@@ -22,6 +22,12 @@ public:
     // ("password_file ...", "allow_anonymous false", TLS lines). False with `error` set when the
     // broker is not installed or does not come up.
     bool start(QString *error, const QString &extraConfig = {});
+    // Starts the broker with TLS and a client certificate required (mosquitto's
+    // require_certificate), after writing test certificates with openssl into directory():
+    // ca.crt (signed the broker's and client.crt/client.key), other.crt (a CA that signed
+    // nothing here). The broker's certificate names 127.0.0.1. False with `error` set when
+    // openssl is missing or a step fails.
+    bool startWithTls(QString *error);
     // SIGTERM and wait: the broker closes its clients' connections.
     void stop();
     // SIGKILL: as if the broker's machine lost power.

@@ -212,8 +212,32 @@
             <translation>Certificates (*.crt *.pem);;All files (*)</translation>
         </message>
         <message>
-            <source>A TLS CA file needs an mqtts:// broker URL.</source>
-            <translation>A TLS CA file needs an mqtts:// broker URL.</translation>
+            <source>Client c&amp;ertificate:</source>
+            <translation>Client c&amp;ertificate:</translation>
+        </message>
+        <message>
+            <source>Client Certificate</source>
+            <translation>Client Certificate</translation>
+        </message>
+        <message>
+            <source>Client &amp;key:</source>
+            <translation>Client &amp;key:</translation>
+        </message>
+        <message>
+            <source>with the client certificate</source>
+            <translation>with the client certificate</translation>
+        </message>
+        <message>
+            <source>Client Key</source>
+            <translation>Client Key</translation>
+        </message>
+        <message>
+            <source>Keys (*.key *.pem);;All files (*)</source>
+            <translation>Keys (*.key *.pem);;All files (*)</translation>
+        </message>
+        <message>
+            <source>TLS files need an mqtts:// broker URL.</source>
+            <translation>TLS files need an mqtts:// broker URL.</translation>
         </message>
     </context>
     <context>

@@ -212,8 +212,32 @@
             <translation>憑證 (*.crt *.pem);;所有檔案 (*)</translation>
         </message>
         <message>
-            <source>A TLS CA file needs an mqtts:// broker URL.</source>
-            <translation>TLS CA 檔案需搭配 mqtts:// 代理伺服器網址。</translation>
+            <source>Client c&amp;ertificate:</source>
+            <translation>用戶端憑證(&amp;E)：</translation>
+        </message>
+        <message>
+            <source>Client Certificate</source>
+            <translation>用戶端憑證</translation>
+        </message>
+        <message>
+            <source>Client &amp;key:</source>
+            <translation>用戶端金鑰(&amp;K)：</translation>
+        </message>
+        <message>
+            <source>with the client certificate</source>
+            <translation>搭配用戶端憑證</translation>
+        </message>
+        <message>
+            <source>Client Key</source>
+            <translation>用戶端金鑰</translation>
+        </message>
+        <message>
+            <source>Keys (*.key *.pem);;All files (*)</source>
+            <translation>金鑰 (*.key *.pem);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>TLS files need an mqtts:// broker URL.</source>
+            <translation>TLS 檔案需搭配 mqtts:// 代理伺服器網址。</translation>
         </message>
     </context>
     <context>

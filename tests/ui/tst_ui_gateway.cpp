@@ -18,6 +18,7 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
@@ -30,6 +31,7 @@
 #include <QTest>
 
 #include <cstring>
+#include <utility>
 
 using namespace Fatek;
 using TestUtil::floatBits;
@@ -81,8 +83,7 @@ struct Gateway
                                                        QStringLiteral("line1"));
         WatchItemSpec tank = item("R100", DisplayFormat::Float32);
         tank.name = QStringLiteral("Tank level");
-        peer->setItem(tank,
-                      {floatBits(12.5f) & 0xFFFFu, floatBits(12.5f) >> 16});
+        peer->setItem(tank, {floatBits(12.5f) & 0xFFFFu, floatBits(12.5f) >> 16});
         peer->setItem(item("R200", DisplayFormat::Signed), {42});
         return peer->open();
     }
@@ -251,8 +252,9 @@ private Q_SLOTS:
         // The names of the gateway's watch list fill the rows that have none.
         const QModelIndex tankName = model->index(0, WatchTableModel::NameColumn);
         QCOMPARE(model->data(tankName).toString(), QStringLiteral("Tank level"));
-        QVERIFY(model->data(tankName, Qt::ToolTipRole).toString().contains(
-            QStringLiteral("gateway's name")));
+        QVERIFY(model->data(tankName, Qt::ToolTipRole)
+                    .toString()
+                    .contains(QStringLiteral("gateway's name")));
         QVERIFY(model->data(model->index(1, WatchTableModel::NameColumn)).toString().isEmpty());
         // The tooltip, not the quality: a row nothing was reported for yet may read as Error.
         QTRY_VERIFY_WITH_TIMEOUT(
@@ -306,6 +308,84 @@ private Q_SLOTS:
         QCOMPARE(model->quality(0), ValueQuality::Stale);
         QTRY_VERIFY2_WITH_TIMEOUT(status->toolTip().contains(QStringLiteral("line1 is offline")),
                                   qPrintable(status->toolTip()), longWait);
+    }
+
+    // Issue 33: a broker that wants a client certificate. The dialog takes the CA, the
+    // certificate and the key (a certificate without its key is refused in the dialog), the
+    // values come, and the recent connection keeps the three paths.
+    void clientCertificateThroughTheDialog()
+    {
+#ifdef Q_OS_WIN
+        QSKIP("the Windows build's MQTT library has no TLS (docs/windows.md)");
+#else
+        TestUtil::MosquittoBroker broker;
+        QString error;
+        QVERIFY2(broker.startWithTls(&error), qPrintable(error + broker.log()));
+        const QDir dir(broker.directory());
+        const QString url = QStringLiteral("mqtts://127.0.0.1:%1").arg(broker.port());
+        MqttBrokerSettings settings = *MqttBrokerSettings::fromUrl(url);
+        settings.caFile = dir.filePath(QStringLiteral("ca.crt"));
+        settings.certFile = dir.filePath(QStringLiteral("client.crt"));
+        settings.keyFile = dir.filePath(QStringLiteral("client.key"));
+        settings.reconnectMinMs = 50;
+        settings.reconnectMaxMs = 200;
+        TestUtil::GatewayPeer peer(settings, QStringLiteral("fatek"), QStringLiteral("line1"));
+        peer.setItem(item("R200", DisplayFormat::Signed), {42});
+        QVERIFY(peer.open());
+        QTRY_VERIFY_WITH_TIMEOUT(peer.isConnected(), longWait);
+
+        MainWindow window;
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QAction *newConnection = menuAction(window, QStringLiteral("&New Connection…"));
+        QVERIFY(newConnection);
+        QString refusal;
+        answerModal(
+            [&] { newConnection->trigger(); },
+            [&](QWidget *dialog) {
+                auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("linkKindCombo"));
+                kind->setFocus();
+                kind->setCurrentIndex(kind->findData(ConnectionDialog::gatewayKind));
+                auto *name = dialog->findChild<QLineEdit *>(QStringLiteral("connectionNameEdit"));
+                name->selectAll();
+                typeSlowly(name, QStringLiteral("Line 1"));
+                typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("brokerUrlEdit")), url);
+                typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("gatewayNameEdit")),
+                           QStringLiteral("line1"));
+                const std::pair<const char *, QString> files[]
+                    = {{"brokerCaEdit", settings.caFile}, {"brokerCertEdit", settings.certFile}};
+                for (const auto &[field, path] : files) {
+                    auto *edit = dialog->findChild<QLineEdit *>(QLatin1String(field));
+                    QVERIFY(edit && edit->isVisible());
+                    typeSlowly(edit, path);
+                }
+                auto *connect = dialog->findChild<QPushButton *>(QStringLiteral("connectButton"));
+                QTest::mouseClick(connect, Qt::LeftButton);
+                // Still open, saying what is missing.
+                auto *problem = dialog->findChild<QLabel *>(QStringLiteral("connectionErrorLabel"));
+                QVERIFY(dialog->isVisible() && problem && problem->isVisible());
+                refusal = problem->text();
+                auto *key = dialog->findChild<QLineEdit *>(QStringLiteral("brokerKeyEdit"));
+                QVERIFY(key && key->isVisible());
+                typeSlowly(key, settings.keyFile);
+                QTest::mouseClick(connect, Qt::LeftButton);
+            });
+        QVERIFY2(refusal.contains(QStringLiteral("key")), qPrintable(refusal));
+        Connection *c = window.connections()->find(QStringLiteral("Line 1"));
+        QVERIFY(c);
+        QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, longWait);
+        WatchTableWidget *table = window.currentWatchTable();
+        typeSlowly(table->addressEdit(), QStringLiteral("R200"));
+        QTest::keyClick(table->addressEdit(), Qt::Key_Return);
+        QTRY_COMPARE_WITH_TIMEOUT(table->model()->valueText(0), QStringLiteral("42"), longWait);
+
+        const QList<SavedConnection> recent = window.connections()->recent();
+        QVERIFY(!recent.isEmpty() && recent.first().gateway);
+        QCOMPARE(recent.first().gateway->broker.certFile, settings.certFile);
+        QCOMPARE(recent.first().gateway->broker.keyFile, settings.keyFile);
+        QCOMPARE(recent.first().gateway->broker.caFile, settings.caFile);
+#endif
     }
 
     void operatorModeWritesNothing()

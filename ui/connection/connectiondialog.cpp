@@ -125,24 +125,38 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_brokerPassword->setEchoMode(QLineEdit::Password);
     m_brokerPassword->setPlaceholderText(tr("optional; not saved"));
     gatewayForm->addRow(tr("Pass&word:"), m_brokerPassword);
-    m_caFile = new QLineEdit(gatewayPage);
-    m_caFile->setObjectName(QStringLiteral("brokerCaEdit"));
-    m_caFile->setPlaceholderText(tr("optional; mqtts:// only"));
-    auto *browseCa = new QPushButton(tr("Browse…"), gatewayPage);
-    auto *caRow = new QHBoxLayout;
-    caRow->addWidget(m_caFile, 1);
-    caRow->addWidget(browseCa);
-    // A row of a layout gets no buddy from addRow: without one the label shows its "&" as text.
-    auto *caLabel = new QLabel(tr("TLS C&A file:"), gatewayPage);
-    caLabel->setBuddy(m_caFile);
-    gatewayForm->addRow(caLabel, caRow);
-    connect(browseCa, &QPushButton::clicked, this, [this] {
-        const QString file
-            = QFileDialog::getOpenFileName(this, tr("CA Certificate"), m_caFile->text(),
-                                           tr("Certificates (*.crt *.pem);;All files (*)"));
-        if (!file.isEmpty())
-            m_caFile->setText(file);
-    });
+    // A TLS file: its path typed or picked, with a label that has a buddy (a row of a layout gets
+    // none from addRow, and without one the label shows its "&" as text).
+    const auto addFileRow
+        = [&](const QString &label, const QString &objectName, const QString &placeholder,
+              const QString &pickTitle, const QString &filter) {
+              auto *edit = new QLineEdit(gatewayPage);
+              edit->setObjectName(objectName);
+              edit->setPlaceholderText(placeholder);
+              auto *browse = new QPushButton(tr("Browse…"), gatewayPage);
+              auto *row = new QHBoxLayout;
+              row->addWidget(edit, 1);
+              row->addWidget(browse);
+              auto *rowLabel = new QLabel(label, gatewayPage);
+              rowLabel->setBuddy(edit);
+              gatewayForm->addRow(rowLabel, row);
+              connect(browse, &QPushButton::clicked, this, [this, edit, pickTitle, filter] {
+                  const QString file
+                      = QFileDialog::getOpenFileName(this, pickTitle, edit->text(), filter);
+                  if (!file.isEmpty())
+                      edit->setText(file);
+              });
+              return edit;
+          };
+    const QString certificates = tr("Certificates (*.crt *.pem);;All files (*)");
+    m_caFile = addFileRow(tr("TLS C&A file:"), QStringLiteral("brokerCaEdit"),
+                          tr("optional; mqtts:// only"), tr("CA Certificate"), certificates);
+    // Brokers that ask for a client certificate (require_certificate in mosquitto).
+    m_certFile = addFileRow(tr("Client c&ertificate:"), QStringLiteral("brokerCertEdit"),
+                            tr("optional; mqtts:// only"), tr("Client Certificate"), certificates);
+    m_keyFile = addFileRow(tr("Client &key:"), QStringLiteral("brokerKeyEdit"),
+                           tr("with the client certificate"), tr("Client Key"),
+                           tr("Keys (*.key *.pem);;All files (*)"));
 
     m_pages = new QStackedWidget(this);
     m_pages->addWidget(serialPage);
@@ -173,6 +187,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     form->addRow(tr("R&etries:"), m_retries);
 
     m_error = new QLabel(this);
+    m_error->setObjectName(QStringLiteral("connectionErrorLabel"));
     m_error->setWordWrap(true);
     m_error->setVisible(false);
     m_buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
@@ -250,6 +265,8 @@ Result<GatewayWatchSettings> ConnectionDialog::gatewaySettings() const
     if (!m_brokerPassword->text().isEmpty())
         settings.broker.password = m_brokerPassword->text();
     settings.broker.caFile = m_caFile->text().trimmed();
+    settings.broker.certFile = m_certFile->text().trimmed();
+    settings.broker.keyFile = m_keyFile->text().trimmed();
     settings.prefix = m_prefix->text().trimmed();
     settings.connection = m_gatewayName->text().trimmed();
     return settings;
@@ -285,6 +302,8 @@ void ConnectionDialog::setConnection(const SavedConnection &c)
     m_brokerUser->setText(gateway.broker.username);
     m_brokerPassword->setText(gateway.broker.password);
     m_caFile->setText(gateway.broker.caFile);
+    m_certFile->setText(gateway.broker.certFile);
+    m_keyFile->setText(gateway.broker.keyFile);
     m_prefix->setText(gateway.prefix);
     m_gatewayName->setText(gateway.connection);
     updateKind();
@@ -327,8 +346,10 @@ void ConnectionDialog::accept()
         const Result<GatewayWatchSettings> gateway = gatewaySettings();
         problem
             = !gateway.ok() ? translated(gateway.error().message) : translated(gateway->validate());
-        if (problem.isEmpty() && !gateway->broker.caFile.isEmpty() && !gateway->broker.tls)
-            problem = tr("A TLS CA file needs an mqtts:// broker URL.");
+        const MqttBrokerSettings &b = gateway.ok() ? gateway->broker : MqttBrokerSettings{};
+        if (problem.isEmpty() && !b.tls
+            && !(b.caFile.isEmpty() && b.certFile.isEmpty() && b.keyFile.isEmpty()))
+            problem = tr("TLS files need an mqtts:// broker URL.");
     }
     if (problem.isEmpty() && c.settings.kind == LinkSettings::Kind::Serial
         && c.settings.baudRate <= 0)

@@ -58,6 +58,8 @@ private:
     QLineEdit *m_brokerUser;
     QLineEdit *m_brokerPassword;
     QLineEdit *m_caFile;
+    QLineEdit *m_certFile;
+    QLineEdit *m_keyFile;
     QFormLayout *m_form;
     QComboBox *m_protocol;
     QSpinBox *m_station;

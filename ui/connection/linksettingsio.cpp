@@ -52,6 +52,9 @@ QVariantMap toMap(const SavedConnection &c)
         QVariantMap g;
         g[QStringLiteral("broker")] = b.toUrl(); // scheme, user, host, port; no password
         g[QStringLiteral("caFile")] = b.caFile;
+        // Paths only: the key's content stays in its file.
+        g[QStringLiteral("certFile")] = b.certFile;
+        g[QStringLiteral("keyFile")] = b.keyFile;
         g[QStringLiteral("prefix")] = c.gateway->prefix;
         g[QStringLiteral("connection")] = c.gateway->connection;
         m[QStringLiteral("gateway")] = g;
@@ -89,6 +92,8 @@ SavedConnection fromMap(const QVariantMap &m)
         if (broker.ok())
             settings.broker = *broker;
         settings.broker.caFile = g.value(QStringLiteral("caFile")).toString();
+        settings.broker.certFile = g.value(QStringLiteral("certFile")).toString();
+        settings.broker.keyFile = g.value(QStringLiteral("keyFile")).toString();
         settings.prefix = g.value(QStringLiteral("prefix"), settings.prefix).toString();
         settings.connection = g.value(QStringLiteral("connection")).toString();
         c.gateway = settings;
