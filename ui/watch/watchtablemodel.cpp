@@ -368,8 +368,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             if (index.column() == ValueColumn)
                 lines << (discrete ? tr("Click the box to toggle")
                                    : tr("Double-click or F2 to write"));
-        } else if (index.column() == NameColumn && spec.name.isEmpty()
-                   && !row.peerName.isEmpty()) {
+        } else if (index.column() == NameColumn && spec.name.isEmpty() && !row.peerName.isEmpty()) {
             lines << tr("The gateway's name for this item; type a name to use your own.");
         } else if (index.column() == AddressColumn) {
             const int count = row.values.elementCount();
