@@ -54,9 +54,18 @@ void printSummary(const QString &path, const GatewayConfig &config)
     out() << "broker     " << config.broker.toUrl() << Qt::endl;
     out() << "prefix     " << config.prefix << Qt::endl;
     out() << "read-only  " << (config.readOnly ? "yes" : "no") << Qt::endl;
+    out() << "discovery  "
+          << (config.homeAssistant.discovery
+                  ? QStringLiteral("Home Assistant, under %1/").arg(config.homeAssistant.prefix)
+                  : QStringLiteral("off"))
+          << Qt::endl;
     for (const GatewayConnectionConfig &c : config.connections) {
-        out() << "connection " << c.name << ": " << c.link.toString() << ", " << c.itemCount()
-              << " items in " << c.tables.size() << " tables, writes allowed: "
+        const auto counted = [](qsizetype n, const char *one, const char *many) {
+            return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));
+        };
+        out() << "connection " << c.name << ": " << c.link.toString() << ", "
+              << counted(c.itemCount(), "item", "items") << " in "
+              << counted(c.tables.size(), "table", "tables") << ", writes allowed: "
               << (config.readOnly ? QStringLiteral("none (read-only)") : allowText(c)) << Qt::endl;
     }
 }

@@ -361,6 +361,7 @@ void TestGatewayConfig::checkValid()
     const QStringList lines = run.lines();
     QCOMPARE(lines.value(0), path + QStringLiteral(": OK"));
     QVERIFY2(lines.contains(QStringLiteral("broker     mqtt://127.0.0.1")), qPrintable(run.out));
+    QVERIFY2(lines.contains(QStringLiteral("discovery  off")), qPrintable(run.out));
     QVERIFY2(lines.contains(QStringLiteral(
                  "connection line1: TCP 10.0.0.5:500, binary, 4 items in 2 tables, writes "
                  "allowed: R100-199, Y0-7, M10")),
@@ -374,6 +375,17 @@ void TestGatewayConfig::checkValid()
     QCOMPARE(run.code, 0);
     QVERIFY2(run.lines().contains(QStringLiteral("read-only  yes")), qPrintable(run.out));
     QVERIFY(!run.out.contains(QStringLiteral("R100-199")));
+
+    // Home Assistant discovery on: --check says so, with the prefix.
+    QJsonObject discovery = validConfig();
+    discovery[QStringLiteral("homeAssistant")]
+        = QJsonObject{{QStringLiteral("discovery"), true}, {QStringLiteral("prefix"), "ha"}};
+    const QString discoveryPath
+        = write(QStringLiteral("discovery.json"), QJsonDocument(discovery).toJson());
+    run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--check", discoveryPath});
+    QCOMPARE(run.code, 0);
+    QVERIFY2(run.lines().contains(QStringLiteral("discovery  Home Assistant, under ha/")),
+             qPrintable(run.out));
 }
 
 void TestGatewayConfig::checkInvalid()
