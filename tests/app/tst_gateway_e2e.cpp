@@ -17,6 +17,11 @@
 
 #include <cstring>
 
+#ifdef Q_OS_LINUX
+#include <sys/prctl.h>
+#include <unistd.h>
+#endif
+
 using namespace Fatek;
 using TestUtil::addr;
 
@@ -37,6 +42,7 @@ class TestGatewayEndToEnd : public QObject
 private Q_SLOTS:
     void init();
     void cleanup();
+    void plcToWatchAndBack_data();
     void plcToWatchAndBack();
 
 private:
@@ -88,8 +94,22 @@ void TestGatewayEndToEnd::cleanup()
     m_dir.reset();
 }
 
+void TestGatewayEndToEnd::plcToWatchAndBack_data()
+{
+    QTest::addColumn<bool>("denyWriteExecute");
+    QTest::newRow("plain") << false;
+#ifdef Q_OS_LINUX
+    // The service runs with MemoryDenyWriteExecute=yes (packaging/linux/fatek-gateway.service):
+    // no memory may become executable after it was writable (a JIT, e.g. a regular expression's,
+    // would fail). The kernel's own switch for the same rule (PR_SET_MDWE, Linux 6.3) shows the
+    // gateway works under it without systemd.
+    QTest::newRow("memory deny write execute") << true;
+#endif
+}
+
 void TestGatewayEndToEnd::plcToWatchAndBack()
 {
+    QFETCH(bool, denyWriteExecute);
     float level = 12.5f;
     std::uint32_t bits = 0;
     std::memcpy(&bits, &level, sizeof bits);
@@ -110,9 +130,22 @@ void TestGatewayEndToEnd::plcToWatchAndBack()
     QVERIFY(writeFile(QStringLiteral("gateway.json"), config));
     m_gateway = std::make_unique<QProcess>();
     m_gateway->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    constexpr int noDenyWriteExecute = 97;
+#ifdef Q_OS_LINUX
+    if (denyWriteExecute) {
+        m_gateway->setChildProcessModifier([] {
+            constexpr int setMdwe = 65; // PR_SET_MDWE, PR_MDWE_REFUSE_EXEC_GAIN
+            if (::prctl(setMdwe, 1UL, 0UL, 0UL, 0UL) != 0)
+                ::_exit(noDenyWriteExecute);
+        });
+    }
+#endif
     m_gateway->start(QStringLiteral(FATEK_GATEWAY_PATH),
                      {m_dir->filePath(QStringLiteral("gateway.json"))});
     QVERIFY(m_gateway->waitForStarted(5000));
+    if (denyWriteExecute && m_gateway->waitForFinished(500)
+        && m_gateway->exitCode() == noDenyWriteExecute)
+        QSKIP("this kernel has no PR_SET_MDWE (Linux 6.3 or later)");
 
     GatewayWatchSettings settings;
     settings.broker = *MqttBrokerSettings::fromUrl(m_broker->url());
