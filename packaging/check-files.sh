@@ -5,7 +5,8 @@
 #  - the watch-list MIME type XML is valid and registered by update-mime-database (when installed);
 #  - every man page renders with groff -man -ww without a warning;
 #  - every long option a program's --help lists is in its man page (so a new option cannot
-#    ship undocumented).
+#    ship undocumented), and every command fatek-cli's --help lists is in its COMMANDS section
+#    with the same synopsis (check-man-commands.py).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 [ $# -eq 4 ] || { echo "usage: check-files.sh FATEK_CLI FATEK_SIM FATEK_STUDIO FATEK_GATEWAY" >&2; exit 2; }
@@ -67,6 +68,8 @@ check_page() {
     fi
 }
 check_page "$1" "$here/man/fatek-cli.1"
+# fatek-cli's commands: the man page's COMMANDS against --help's (printed from the command table).
+python3 "$here/check-man-commands.py" "$1" "$here/man/fatek-cli.1" || status=1
 check_page "$2" "$here/man/fatek-sim.1"
 check_page "$3" "$here/man/fatek-studio.1"
 check_page "$4" "$here/man/fatek-gateway.1"

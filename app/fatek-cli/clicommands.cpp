@@ -41,8 +41,18 @@ std::unique_ptr<CliCommand> make(CliContext &context)
     return std::make_unique<Command>(context);
 }
 
+// How --help lists a command: its synopsis and what it does (wrapped by the help). A command
+// listed with another ("run | stop") has none of its own.
+struct CommandUsage
+{
+    const char *synopsis = nullptr;
+    const char *summary = nullptr;
+};
+
 // The commands: name, what it runs, how many arguments it takes (-1: no limit), whether it needs
-// an answer (not for broadcasts), the parser of its arguments and the object that runs it.
+// an answer (not for broadcasts), the parser of its arguments, the object that runs it, and its
+// lines in --help (the man page's COMMANDS section is checked against them by
+// tests/docs/check_cli_man.py).
 struct CommandSpec
 {
     const char *name;
@@ -52,38 +62,75 @@ struct CommandSpec
     bool needsAnswer;
     QString (*parse)(CliStepArgs &);
     std::unique_ptr<CliCommand> (*create)(CliContext &);
+    CommandUsage usage[2] = {};
 };
 
 constexpr CommandSpec commands[] = {
-    {"status", CliCommandKind::ShowStatus, 0, 0, true, parseNoArguments, make<CliStatusCommand>},
-    {"run", CliCommandKind::Run, 0, 0, false, parseNoArguments, make<CliRunStopCommand>},
+    {"status", CliCommandKind::ShowStatus, 0, 0, true, parseNoArguments, make<CliStatusCommand>,
+     {{"status", "STATUS1 bits and the detail status (53)"}}},
+    {"run", CliCommandKind::Run, 0, 0, false, parseNoArguments, make<CliRunStopCommand>,
+     {{"run | stop", "switch the PLC to RUN / STOP"}}},
     {"stop", CliCommandKind::Stop, 0, 0, false, parseNoArguments, make<CliRunStopCommand>},
-    {"read", CliCommandKind::Read, 1, -1, true, CliReadCommand::parse, make<CliReadCommand>},
-    {"write", CliCommandKind::Write, 2, -1, false, CliWriteCommand::parse, make<CliWriteCommand>},
+    {"read", CliCommandKind::Read, 1, -1, true, CliReadCommand::parse, make<CliReadCommand>,
+     {{"read ADDR[:FORMAT] [COUNT]",
+       "consecutive elements (ADDR may be a range R0..R99, read in as many requests as it "
+       "takes); with a FORMAT, COUNT items in it (R200:float 2 reads R200..R203 as two floats)"},
+      {"read ADDR[:FORMAT] ADDR...", "a mixed list (48 without formats)"}}},
+    {"write", CliCommandKind::Write, 2, -1, false, CliWriteCommand::parse, make<CliWriteCommand>,
+     {{"write ADDR[:FORMAT] VALUE...",
+       "typed as in a watch table: 12, -5, 0x1A, 1Ah, 0b1010; discretes 0/1/on/off; R0:float "
+       "1.5 writes R0 and R1; several = consecutive items"}}},
     {"set", CliCommandKind::Control, 1, 1, false, CliControlCommand::parse,
-     make<CliControlCommand>},
+     make<CliControlCommand>,
+     {{"set | reset | enable | disable ADDR", "discrete control (42)"}}},
     {"reset", CliCommandKind::Control, 1, 1, false, CliControlCommand::parse,
      make<CliControlCommand>},
     {"enable", CliCommandKind::Control, 1, 1, false, CliControlCommand::parse,
      make<CliControlCommand>},
     {"disable", CliCommandKind::Control, 1, 1, false, CliControlCommand::parse,
      make<CliControlCommand>},
-    {"forced", CliCommandKind::Forced, 1, 2, true, CliReadCommand::parse, make<CliForcedCommand>},
+    {"forced", CliCommandKind::Forced, 1, 2, true, CliReadCommand::parse, make<CliForcedCommand>,
+     {{"forced ADDR [COUNT]", "which discretes are disabled (forced) (43)"}}},
     {"loopback", CliCommandKind::Loopback, 0, -1, true, CliLoopbackCommand::parse,
-     make<CliLoopbackCommand>},
+     make<CliLoopbackCommand>,
+     {{"loopback [TEXT] [--count N]", "round trips: min/mean/max, mismatches, timeouts"}}},
     {"monitor", CliCommandKind::Monitor, 1, -1, true, CliMonitorCommand::parse,
-     make<CliMonitorCommand>},
-    {"raw", CliCommandKind::Raw, 1, -1, false, CliRawCommand::parse, make<CliRawCommand>},
-    {"scan", CliCommandKind::Scan, 0, 1, false, CliScanCommand::parse, make<CliScanCommand>},
+     make<CliMonitorCommand>,
+     {{"monitor ADDR[:FORMAT]... [--interval MS] [--cycles N] [--format FORMAT] [--output FILE] "
+       "[--names LIST]",
+       "poll, one line per cycle (ADDR may be a range); FORMAT: %FORMATS%; --output appends a "
+       "CSV data log (timestamp, values, status) to FILE; --names LIST names the columns from "
+       "the ladder project's comment/symbol list (CSV or tab-separated: address, name, "
+       "comment)"}}},
+    {"raw", CliCommandKind::Raw, 1, -1, false, CliRawCommand::parse, make<CliRawCommand>,
+     {{"raw BYTES [--frame] [--hex|--ascii]",
+       "send bytes (\"01 40\" is hex, \"0140\" ASCII); --frame adds the protocol's framing "
+       "and checksum (under auto: binary framing for hex bytes, FACON for ASCII text)"}}},
+    {"scan", CliCommandKind::Scan, 0, 1, false, CliScanCommand::parse, make<CliScanCommand>,
+     {{"scan [FROM..TO]", "which stations answer (default 1..254)"}}},
     {"backup", CliCommandKind::Backup, 1, 1, true, CliProgramCommand::parse,
-     make<CliProgramCommand>},
+     make<CliProgramCommand>,
+     {{"backup FILE", "read the PLC's program (53, 4F every page) into FILE (JSON)"}}},
     {"restore", CliCommandKind::Restore, 1, 1, true, CliProgramCommand::parse,
-     make<CliProgramCommand>},
+     make<CliProgramCommand>,
+     {{"restore FILE",
+       "write the program in FILE to the PLC (50 every page, read back and compared); shows "
+       "the pages that differ and asks first; the PLC must be in STOP (fatek-cli stop --then "
+       "restore FILE)"}}},
     {"snapshot", CliCommandKind::Snapshot, 1, -1, true, CliSnapshotFileCommand::parseFileAndRanges,
-     make<CliSnapshotCommand>},
-    {"diff", CliCommandKind::Diff, 1, -1, true, CliDiffCommand::parse, make<CliDiffCommand>},
+     make<CliSnapshotCommand>,
+     {{"snapshot FILE [RANGES]",
+       "save element values to FILE (.json or .csv); RANGES like \"R0..R99, X0..X255\" "
+       "(default: every element the PLC reports)"}}},
+    {"diff", CliCommandKind::Diff, 1, -1, true, CliDiffCommand::parse, make<CliDiffCommand>,
+     {{"diff FILE [FILE2] [RANGES]",
+       "differences, one line per element: FILE against the PLC, or against FILE2 (no link "
+       "needed); RANGES: only these"}}},
     {"restore-values", CliCommandKind::RestoreValues, 1, -1, true,
-     CliSnapshotFileCommand::parseFileAndRanges, make<CliRestoreValuesCommand>},
+     CliSnapshotFileCommand::parseFileAndRanges, make<CliRestoreValuesCommand>,
+     {{"restore-values FILE [RANGES]",
+       "write FILE's values back (default: all but X), after a confirmation (--yes), then read "
+       "them back and compare"}}},
 };
 
 const CommandSpec *findCommand(const QString &name)
@@ -103,6 +150,18 @@ QStringList commandNames()
     for (const CommandSpec &c : commands)
         names << QLatin1String(c.name);
     return names;
+}
+
+QList<std::pair<QString, QString>> commandUsage()
+{
+    QList<std::pair<QString, QString>> rows;
+    for (const CommandSpec &c : commands) {
+        for (const CommandUsage &u : c.usage) {
+            if (u.synopsis)
+                rows.append({QLatin1String(u.synopsis), QLatin1String(u.summary)});
+        }
+    }
+    return rows;
 }
 
 bool commandNeedsAnswer(const QString &name)

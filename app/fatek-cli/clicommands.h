@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 namespace Fatek {
 
@@ -37,6 +38,9 @@ QString parseStep(const QStringList &arguments, bool frameGiven, bool forceHex, 
                   CliStep *step);
 // The command names in the order --help lists them.
 QStringList commandNames();
+// --help's command lines, in its order: synopsis ("read ADDR[:FORMAT] [COUNT]") and summary
+// (one paragraph; "%FORMATS%" stands for the format names).
+QList<std::pair<QString, QString>> commandUsage();
 // Whether the command needs the PLC's answer (and so cannot go to the broadcast station).
 bool commandNeedsAnswer(const QString &name);
 // The object that runs the steps of `kind`.

@@ -9,6 +9,42 @@
 
 namespace Fatek {
 
+namespace {
+
+// The command table's lines (commandUsage()): the synopsis in a column of 25, the summary
+// wrapped beside it (below it when the synopsis is wider).
+QString commandsText()
+{
+    constexpr qsizetype indent = 27;
+    constexpr qsizetype width = 92;
+    QString text;
+    for (const auto &[synopsis, summary] : commandUsage()) {
+        QString line = QStringLiteral("  ") + synopsis;
+        if (line.size() < indent - 1)
+            line = line.leftJustified(indent, QLatin1Char(' '));
+        else {
+            text += line + QLatin1Char('\n');
+            line = QString(indent, QLatin1Char(' '));
+        }
+        const QString words = QString(summary).replace(QStringLiteral("%FORMATS%"),
+                                                       CliText::formatNames());
+        bool first = true;
+        for (const QString &word : words.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+            if (!first && line.size() + 1 + word.size() > width) {
+                text += line + QLatin1Char('\n');
+                line = QString(indent, QLatin1Char(' '));
+                first = true;
+            }
+            line += (first ? QString() : QStringLiteral(" ")) + word;
+            first = false;
+        }
+        text += line + QLatin1Char('\n');
+    }
+    return text;
+}
+
+} // namespace
+
 QString usageText()
 {
     return QStringLiteral(
@@ -49,60 +85,7 @@ QString usageText()
                "  --help, --version\n"
                "\n"
                "Commands:\n"
-               "  status                   STATUS1 bits and the detail status (53)\n"
-               "  run | stop               switch the PLC to RUN / STOP\n"
-               "  read ADDR[:FORMAT] [COUNT]   consecutive elements (ADDR may be a range R0..R99, "
-               "read\n"
-               "                           in as many requests as it takes); with a FORMAT, COUNT "
-               "items\n"
-               "                           in it (R200:float 2 reads R200..R203 as two floats)\n"
-               "  read ADDR[:FORMAT]...    a mixed list (48 without formats)\n"
-               "  write ADDR[:FORMAT] VALUE...   typed as in a watch table: 12, -5, 0x1A, 1Ah, "
-               "0b1010;\n"
-               "                           discretes 0/1/on/off; R0:float 1.5 writes R0 and R1; "
-               "several "
-               "=\n"
-               "                           consecutive items\n"
-               "  set|reset|enable|disable ADDR   discrete control (42)\n"
-               "  forced ADDR [COUNT]      which discretes are disabled (forced) (43)\n"
-               "  loopback [TEXT] [--count N]     round trips: min/mean/max, mismatches, timeouts\n"
-               "  monitor ADDR[:FORMAT]... [--interval MS] [--cycles N] [--format FORMAT] "
-               "[--output "
-               "FILE]\n"
-               "                           poll, one line per cycle (ADDR may be a range); "
-               "FORMAT:\n"
-               "                           %1;\n"
-               "                           --output appends a CSV\n"
-               "                           data log (timestamp, values, status) to FILE; --names "
-               "LIST\n"
-               "                           names the columns from the ladder project's "
-               "comment/symbol\n"
-               "                           list (CSV or tab-separated: address, name, comment)\n"
-               "  raw HEX|ASCII [--frame] [--hex|--ascii]   send bytes (\"01 40\" is hex, \"0140\" "
-               "ASCII);\n"
-               "                           --frame adds the protocol's framing and checksum (under "
-               "auto:\n"
-               "                           binary framing for hex bytes, FACON for ASCII text)\n"
-               "  scan [FROM..TO]          which stations answer (default 1..254)\n"
-               "  backup FILE              read the PLC's program (53, 4F every page) into FILE "
-               "(JSON)\n"
-               "  restore FILE             write the program in FILE to the PLC (50 every page, "
-               "read\n"
-               "                           back and compared); shows the pages that differ and "
-               "asks "
-               "first;\n"
-               "                           the PLC must be in STOP (fatek-cli stop --then restore "
-               "FILE)\n"
-               "  snapshot FILE [RANGES]   save element values to FILE (.json or .csv); RANGES "
-               "like\n"
-               "                           \"R0..R99, X0..X255\" (default: every element the PLC "
-               "reports)\n"
-               "  diff FILE [FILE2] [RANGES]   differences, one line per element: FILE against the "
-               "PLC,\n"
-               "                           or against FILE2 (no link needed); RANGES: only these\n"
-               "  restore-values FILE [RANGES]   write FILE's values back (default: all but X), "
-               "after a\n"
-               "                           confirmation (--yes), then read them back and compare\n"
+               "%1"
                "\n"
                "Exit codes: 0 ok, 1 file or output not written (reason on stderr), 2 usage (also "
                "a\n"
@@ -113,7 +96,7 @@ QString usageText()
                "other\n"
                "values), 130 interrupted (Ctrl-C), 141 the output's reader is gone (a closed "
                "pipe).\n")
-        .arg(CliText::formatNames());
+        .arg(commandsText());
 }
 
 QStringList valuedOptionNames()
