@@ -26,8 +26,8 @@ QString commandsText()
             text += line + QLatin1Char('\n');
             line = QString(indent, QLatin1Char(' '));
         }
-        const QString words = QString(summary).replace(QStringLiteral("%FORMATS%"),
-                                                       CliText::formatNames());
+        const QString words
+            = QString(summary).replace(QStringLiteral("%FORMATS%"), CliText::formatNames());
         bool first = true;
         for (const QString &word : words.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
             if (!first && line.size() + 1 + word.size() > width) {
