@@ -1274,36 +1274,36 @@
             <translation>Writing program page %1 failed: %2</translation>
         </message>
         <message>
-            <source>%1 The PLC now holds a mixed program (%2 of %3 pages written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</source>
-            <translation>%1 The PLC now holds a mixed program (%2 of %3 pages written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</translation>
+            <source>%1 The PLC now holds a mixed program (%2 of %3 {3:page|pages} written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</source>
+            <translation>%1 The PLC now holds a mixed program (%2 of %3 {3:page|pages} written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</translation>
         </message>
         <message>
-            <source>Verification failed: %1 pages on the PLC differ from the backup (%2).</source>
-            <translation>Verification failed: %1 pages on the PLC differ from the backup (%2).</translation>
+            <source>Verification failed: %1 {1:page|pages} on the PLC {1:differs|differ} from the backup (%2).</source>
+            <translation>Verification failed: %1 {1:page|pages} on the PLC {1:differs|differ} from the backup (%2).</translation>
         </message>
         <message>
-            <source>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</source>
-            <translation>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</translation>
+            <source>Backup cancelled at page %1 (%2 of %3 {3:page|pages} read); no file saved.</source>
+            <translation>Backup cancelled at page %1 (%2 of %3 {3:page|pages} read); no file saved.</translation>
         </message>
         <message>
-            <source>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</source>
-            <translation>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</translation>
+            <source>Restore cancelled at page %1 (%2 of %3 {3:page|pages} written): the PLC's program is incomplete.</source>
+            <translation>Restore cancelled at page %1 (%2 of %3 {3:page|pages} written): the PLC's program is incomplete.</translation>
         </message>
         <message>
             <source>Cancelled before anything was written.</source>
             <translation>Cancelled before anything was written.</translation>
         </message>
         <message>
-            <source>Backup done: %1 pages of a %2.</source>
-            <translation>Backup done: %1 pages of a %2.</translation>
+            <source>Backup done: %1 {1:page|pages} of a %2.</source>
+            <translation>Backup done: %1 {1:page|pages} of a %2.</translation>
         </message>
         <message>
-            <source>Restore done: %1 pages written and verified.</source>
-            <translation>Restore done: %1 pages written and verified.</translation>
+            <source>Restore done: %1 {1:page|pages} written and verified.</source>
+            <translation>Restore done: %1 {1:page|pages} written and verified.</translation>
         </message>
         <message>
-            <source>%1 pages differ from the PLC (%2).</source>
-            <translation>%1 pages differ from the PLC (%2).</translation>
+            <source>%1 {1:page differs|pages differ} from the PLC (%2).</source>
+            <translation>%1 {1:page differs|pages differ} from the PLC (%2).</translation>
         </message>
         <message>
             <source>The PLC already holds this program.</source>
@@ -1322,8 +1322,8 @@
             <translation>Reading the program back to verify</translation>
         </message>
         <message>
-            <source>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</source>
-            <translation>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</translation>
+            <source>Verification cancelled at page %1 (%2 of %3 {3:page|pages} checked); the program was written completely.</source>
+            <translation>Verification cancelled at page %1 (%2 of %3 {3:page|pages} checked); the program was written completely.</translation>
         </message>
         <message>
             <source>No connection to read from.</source>
@@ -1398,8 +1398,8 @@
             <translation>Cancelled.</translation>
         </message>
         <message>
-            <source>%1 values read in %2 requests.</source>
-            <translation>%1 values read in %2 requests.</translation>
+            <source>%1 {1:value|values} read in %2 {2:request|requests}.</source>
+            <translation>%1 {1:value|values} read in %2 {2:request|requests}.</translation>
         </message>
         <message>
             <source>value %1</source>
@@ -1478,8 +1478,8 @@
             <translation>No differences.</translation>
         </message>
         <message>
-            <source>%1 of %2 values differ.</source>
-            <translation>%1 of %2 values differ.</translation>
+            <source>%1 of %2 {2:value|values} {1:differs|differ}.</source>
+            <translation>%1 of %2 {2:value|values} {1:differs|differ}.</translation>
         </message>
         <message>
             <source>Operator mode: restoring values is refused; nothing was written.</source>
@@ -1494,20 +1494,20 @@
             <translation>Writing %1 failed: %2</translation>
         </message>
         <message>
-            <source>%1 %2 of %3 values had been written when it stopped; the others may still hold their old values: restore the same file again.</source>
-            <translation>%1 %2 of %3 values had been written when it stopped; the others may still hold their old values: restore the same file again.</translation>
+            <source>%1 %2 of %3 {3:value|values} had been written when it stopped; the others may still hold their old values: restore the same file again.</source>
+            <translation>%1 %2 of %3 {3:value|values} had been written when it stopped; the others may still hold their old values: restore the same file again.</translation>
         </message>
         <message>
             <source>Reading the values back failed: %1</source>
             <translation>Reading the values back failed: %1</translation>
         </message>
         <message>
-            <source>%1 of %2 values differ after the write (read back).</source>
-            <translation>%1 of %2 values differ after the write (read back).</translation>
+            <source>%1 of %2 {2:value|values} {1:differs|differ} after the write (read back).</source>
+            <translation>%1 of %2 {2:value|values} {1:differs|differ} after the write (read back).</translation>
         </message>
         <message>
-            <source>%1 values written in %2 requests and read back equal.</source>
-            <translation>%1 values written in %2 requests and read back equal.</translation>
+            <source>%1 {1:value|values} written in %2 {2:request|requests} and read back equal.</source>
+            <translation>%1 {1:value|values} written in %2 {2:request|requests} and read back equal.</translation>
         </message>
         <message>
             <source>No broker given.</source>
@@ -1838,8 +1838,8 @@
             <translation>broker down: %1</translation>
         </message>
         <message>
-            <source>started: %1 items from %2, broker %3</source>
-            <translation>started: %1 items from %2, broker %3</translation>
+            <source>started: %1 {1:item|items} from %2, broker %3</source>
+            <translation>started: %1 {1:item|items} from %2, broker %3</translation>
         </message>
         <message>
             <source>stopped (status offline)</source>

@@ -1274,19 +1274,19 @@
             <translation>寫入程式第 %1 頁失敗：%2</translation>
         </message>
         <message>
-            <source>%1 The PLC now holds a mixed program (%2 of %3 pages written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</source>
+            <source>%1 The PLC now holds a mixed program (%2 of %3 {3:page|pages} written from the backup, the rest from its old program) and stays in STOP: restore the same file again before switching it to RUN.</source>
             <translation>%1 PLC 目前的程式新舊混合（%3 頁中已由備份寫入 %2 頁，其餘仍為舊程式），並維持在 STOP：請先以同一個檔案再還原一次，再切換到 RUN。</translation>
         </message>
         <message>
-            <source>Verification failed: %1 pages on the PLC differ from the backup (%2).</source>
+            <source>Verification failed: %1 {1:page|pages} on the PLC {1:differs|differ} from the backup (%2).</source>
             <translation>驗證失敗：PLC 上有 %1 頁與備份不同（%2）。</translation>
         </message>
         <message>
-            <source>Backup cancelled at page %1 (%2 of %3 pages read); no file saved.</source>
+            <source>Backup cancelled at page %1 (%2 of %3 {3:page|pages} read); no file saved.</source>
             <translation>備份已於第 %1 頁取消（已讀取 %2／%3 頁）；未儲存檔案。</translation>
         </message>
         <message>
-            <source>Restore cancelled at page %1 (%2 of %3 pages written): the PLC's program is incomplete.</source>
+            <source>Restore cancelled at page %1 (%2 of %3 {3:page|pages} written): the PLC's program is incomplete.</source>
             <translation>還原已於第 %1 頁取消（已寫入 %2／%3 頁）：PLC 的程式不完整。</translation>
         </message>
         <message>
@@ -1294,15 +1294,15 @@
             <translation>已在寫入任何資料前取消。</translation>
         </message>
         <message>
-            <source>Backup done: %1 pages of a %2.</source>
+            <source>Backup done: %1 {1:page|pages} of a %2.</source>
             <translation>備份完成：%2 的 %1 頁。</translation>
         </message>
         <message>
-            <source>Restore done: %1 pages written and verified.</source>
+            <source>Restore done: %1 {1:page|pages} written and verified.</source>
             <translation>還原完成：已寫入並驗證 %1 頁。</translation>
         </message>
         <message>
-            <source>%1 pages differ from the PLC (%2).</source>
+            <source>%1 {1:page differs|pages differ} from the PLC (%2).</source>
             <translation>%1 頁與 PLC 不同（%2）。</translation>
         </message>
         <message>
@@ -1322,7 +1322,7 @@
             <translation>正在讀回程式以驗證</translation>
         </message>
         <message>
-            <source>Verification cancelled at page %1 (%2 of %3 pages checked); the program was written completely.</source>
+            <source>Verification cancelled at page %1 (%2 of %3 {3:page|pages} checked); the program was written completely.</source>
             <translation>驗證已於第 %1 頁取消（已檢查 %2／%3 頁）；程式已完整寫入。</translation>
         </message>
         <message>
@@ -1398,7 +1398,7 @@
             <translation>已取消。</translation>
         </message>
         <message>
-            <source>%1 values read in %2 requests.</source>
+            <source>%1 {1:value|values} read in %2 {2:request|requests}.</source>
             <translation>以 %2 次請求讀取了 %1 個值。</translation>
         </message>
         <message>
@@ -1478,7 +1478,7 @@
             <translation>沒有差異。</translation>
         </message>
         <message>
-            <source>%1 of %2 values differ.</source>
+            <source>%1 of %2 {2:value|values} {1:differs|differ}.</source>
             <translation>%2 個值中有 %1 個不同。</translation>
         </message>
         <message>
@@ -1494,7 +1494,7 @@
             <translation>寫入 %1 失敗：%2</translation>
         </message>
         <message>
-            <source>%1 %2 of %3 values had been written when it stopped; the others may still hold their old values: restore the same file again.</source>
+            <source>%1 %2 of %3 {3:value|values} had been written when it stopped; the others may still hold their old values: restore the same file again.</source>
             <translation>%1 停止時 %3 個數值中已寫入 %2 個；其餘可能仍是舊值：請以同一個檔案再還原一次。</translation>
         </message>
         <message>
@@ -1502,11 +1502,11 @@
             <translation>回讀數值失敗：%1</translation>
         </message>
         <message>
-            <source>%1 of %2 values differ after the write (read back).</source>
+            <source>%1 of %2 {2:value|values} {1:differs|differ} after the write (read back).</source>
             <translation>寫入後回讀，%2 個值中有 %1 個不同。</translation>
         </message>
         <message>
-            <source>%1 values written in %2 requests and read back equal.</source>
+            <source>%1 {1:value|values} written in %2 {2:request|requests} and read back equal.</source>
             <translation>以 %2 次請求寫入 %1 個值，回讀結果一致。</translation>
         </message>
         <message>
@@ -1838,7 +1838,7 @@
             <translation>代理伺服器中斷：%1</translation>
         </message>
         <message>
-            <source>started: %1 items from %2, broker %3</source>
+            <source>started: %1 {1:item|items} from %2, broker %3</source>
             <translation>已啟動：%1 個項目，來自 %2，代理伺服器 %3</translation>
         </message>
         <message>

@@ -74,32 +74,35 @@ FATEK_MSG(ProgramWritePageFailed, 2,
 // %3 pages in all.
 FATEK_MSG(ProgramRestoreInterrupted, 3,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "%1 The PLC now holds a mixed program (%2 of %3 pages written from "
-                            "the backup, the rest from its old program) and stays in STOP: "
-                            "restore the same file again before switching it to RUN."))
+                            "%1 The PLC now holds a mixed program (%2 of %3 {3:page|pages} "
+                            "written from the backup, the rest from its old program) and "
+                            "stays in STOP: restore the same file again before switching it "
+                            "to RUN."))
 // %1 how many pages, %2 the page list ("3, 7-9").
 FATEK_MSG(ProgramVerifyFailed, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Verification failed: %1 pages on the PLC differ from the backup "
-                            "(%2)."))
+          QT_TRANSLATE_NOOP("Fatek::Message", "Verification failed: %1 {1:page|pages} on the PLC "
+                                              "{1:differs|differ} from the backup (%2)."))
 // %1 the page reached, %2 pages done, %3 pages in all.
 FATEK_MSG(ProgramBackupCancelled, 3,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Backup cancelled at page %1 (%2 of %3 pages read); no file saved."))
+                            "Backup cancelled at page %1 (%2 of %3 {3:page|pages} read); no "
+                            "file saved."))
 FATEK_MSG(ProgramRestoreCancelled, 3,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Restore cancelled at page %1 (%2 of %3 pages written): the PLC's "
-                            "program is incomplete."))
+                            "Restore cancelled at page %1 (%2 of %3 {3:page|pages} written): "
+                            "the PLC's program is incomplete."))
 FATEK_MSG(ProgramCompareCancelled, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "Cancelled before anything was written."))
 // %1 pages, %2 the model (ProgramModel).
 FATEK_MSG(ProgramBackupDone, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message", "Backup done: %1 pages of a %2."))
+          QT_TRANSLATE_NOOP("Fatek::Message", "Backup done: %1 {1:page|pages} of a %2."))
 FATEK_MSG(ProgramRestoreDone, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "Restore done: %1 pages written and verified."))
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Restore done: %1 {1:page|pages} written and verified."))
 // Comparing a backup with the PLC before writing: %1 how many pages differ, %2 the list.
 FATEK_MSG(ProgramPagesDiffer, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message", "%1 pages differ from the PLC (%2)."))
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 {1:page differs|pages differ} from the PLC (%2)."))
 FATEK_MSG(ProgramSameAsPlc, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "The PLC already holds this program."))
 // What the transfer is doing (progress): reading, writing or reading back.
@@ -109,8 +112,8 @@ FATEK_MSG(ProgramPhaseVerifying, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "Reading the program back to verify"))
 FATEK_MSG(ProgramVerifyCancelled, 3,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Verification cancelled at page %1 (%2 of %3 pages checked); the "
-                            "program was written completely."))
+                            "Verification cancelled at page %1 (%2 of %3 {3:page|pages} "
+                            "checked); the program was written completely."))
 
 // The snapshot part.
 
@@ -128,7 +131,9 @@ FATEK_MSG(SnapshotTooMany, 2,
                             "%1 elements are more than a snapshot holds (at most %2)."))
 FATEK_MSG(SnapshotCannotRead, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Cannot read %1: %2"))
 FATEK_MSG(SnapshotCancelled, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Cancelled."))
-FATEK_MSG(SnapshotTaken, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 values read in %2 requests."))
+FATEK_MSG(SnapshotTaken, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 {1:value|values} read in %2 {2:request|requests}."))
 
 // Snapshot files (core/commission/snapshotfile.cpp): %1 of AtPlace says where.
 FATEK_MSG(SnapshotPlaceValue, 1, QT_TRANSLATE_NOOP("Fatek::Message", "value %1"))
@@ -159,7 +164,8 @@ FATEK_MSG(SnapshotEmpty, 0, QT_TRANSLATE_NOOP("Fatek::Message", "the snapshot ho
 FATEK_MSG(DiffAbsent, 0, QT_TRANSLATE_NOOP("Fatek::Message", "(absent)"))
 FATEK_MSG(DiffLine, 3, QT_TRANSLATE_NOOP("Fatek::Message", "%1: %2 -> %3"))
 FATEK_MSG(DiffNone, 0, QT_TRANSLATE_NOOP("Fatek::Message", "No differences."))
-FATEK_MSG(DiffCount, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 of %2 values differ."))
+FATEK_MSG(DiffCount, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 of %2 {2:value|values} {1:differs|differ}."))
 
 // Restoring values (core/commission/valuesrestorer.cpp).
 FATEK_MSG(RestoreReadOnly, 0,
@@ -171,14 +177,17 @@ FATEK_MSG(RestoreNothing, 0,
 FATEK_MSG(RestoreWriteFailed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Writing %1 failed: %2"))
 // Writing stopped half-way (a fault, a cancel): %1 why, %2 values written, %3 values in all.
 FATEK_MSG(RestoreInterrupted, 3,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "%1 %2 of %3 values had been written when it stopped; the others may "
-                            "still hold their old values: restore the same file again."))
+          QT_TRANSLATE_NOOP(
+              "Fatek::Message",
+              "%1 %2 of %3 {3:value|values} had been written when it stopped; the others may "
+              "still hold their old values: restore the same file again."))
 FATEK_MSG(RestoreVerifyFailed, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "Reading the values back failed: %1"))
 FATEK_MSG(RestoreDiffer, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "%1 of %2 values differ after the write (read back)."))
+                            "%1 of %2 {2:value|values} {1:differs|differ} after the write "
+                            "(read back)."))
 FATEK_MSG(RestoreDone, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "%1 values written in %2 requests and read back equal."))
+          QT_TRANSLATE_NOOP(
+              "Fatek::Message",
+              "%1 {1:value|values} written in %2 {2:request|requests} and read back equal."))

@@ -81,7 +81,7 @@ FATEK_MSG(GatewayLogPlcLinkState, 1, QT_TRANSLATE_NOOP("Fatek::Message", "PLC li
 FATEK_MSG(GatewayLogBrokerUp, 1, QT_TRANSLATE_NOOP("Fatek::Message", "broker %1 connected"))
 FATEK_MSG(GatewayLogBrokerDown, 1, QT_TRANSLATE_NOOP("Fatek::Message", "broker down: %1"))
 FATEK_MSG(GatewayLogStarted, 3,
-          QT_TRANSLATE_NOOP("Fatek::Message", "started: %1 items from %2, broker %3"))
+          QT_TRANSLATE_NOOP("Fatek::Message", "started: %1 {1:item|items} from %2, broker %3"))
 FATEK_MSG(GatewayLogStopped, 0, QT_TRANSLATE_NOOP("Fatek::Message", "stopped (status offline)"))
 // SIGHUP: %1 the configuration file; %2 why it was not taken.
 FATEK_MSG(GatewayLogReloading, 1,

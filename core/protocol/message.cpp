@@ -14,13 +14,28 @@ std::string fillTemplate(std::string_view templ, const std::vector<std::string> 
 {
     std::string out;
     out.reserve(templ.size() + 16 * args.size());
+    const auto argAt = [&](char digit) -> const std::string * {
+        const auto arg = static_cast<std::size_t>(digit - '1');
+        return digit >= '1' && digit <= '9' && arg < args.size() ? &args[arg] : nullptr;
+    };
     for (std::size_t i = 0; i < templ.size(); ++i) {
         const char c = templ[i];
-        if (c == '%' && i + 1 < templ.size() && templ[i + 1] >= '1' && templ[i + 1] <= '9') {
-            const auto arg = static_cast<std::size_t>(templ[i + 1] - '1');
-            if (arg < args.size()) {
-                out += args[arg];
+        if (c == '%' && i + 1 < templ.size()) {
+            if (const std::string *arg = argAt(templ[i + 1])) {
+                out += *arg;
                 ++i;
+                continue;
+            }
+        }
+        if (c == '{' && i + 2 < templ.size() && templ[i + 2] == ':') {
+            const std::string *count = argAt(templ[i + 1]);
+            const std::size_t bar = templ.find('|', i + 3);
+            const std::size_t end = templ.find('}', i + 3);
+            if (count && bar != std::string_view::npos && end != std::string_view::npos
+                && bar < end) {
+                out += *count == "1" ? templ.substr(i + 3, bar - i - 3)
+                                     : templ.substr(bar + 1, end - bar - 1);
+                i = end;
                 continue;
             }
         }

@@ -165,7 +165,9 @@ constexpr const char *messageIdName(MessageId id)
 // The lupdate context of the templates.
 inline constexpr const char *messageContext = "Fatek::Message";
 
-// Puts args into %1..%9 of `templ` in one pass (an argument containing "%2" stays text).
+// Puts args into %1..%9 of `templ` in one pass (an argument containing "%2" stays text), and
+// picks the words of a count: "{2:request|requests}" is "request" when argument 2 is "1", else
+// "requests" (a translation without plurals just leaves the braces out).
 std::string fillTemplate(std::string_view templ, const std::vector<std::string> &args);
 
 // The message in English: the template filled with the arguments (nested ones in English too).

@@ -6,25 +6,14 @@ namespace Fatek {
 
 namespace {
 
-// Puts the arguments into %1..%9 of a translated template in one pass: an argument containing
-// "%2" stays text (QString::arg would replace it again).
+// The translated template filled by core's fillTemplate (arguments, plural words).
 QString fill(const QString &templ, const QStringList &args)
 {
-    QString out;
-    out.reserve(templ.size() + 16 * args.size());
-    for (qsizetype i = 0; i < templ.size(); ++i) {
-        const QChar c = templ.at(i);
-        if (c == QLatin1Char('%') && i + 1 < templ.size()) {
-            const int arg = templ.at(i + 1).digitValue();
-            if (arg >= 1 && arg <= args.size()) {
-                out += args.at(arg - 1);
-                ++i;
-                continue;
-            }
-        }
-        out += c;
-    }
-    return out;
+    std::vector<std::string> utf8Args;
+    utf8Args.reserve(static_cast<std::size_t>(args.size()));
+    for (const QString &arg : args)
+        utf8Args.push_back(arg.toStdString());
+    return QString::fromStdString(fillTemplate(templ.toStdString(), utf8Args));
 }
 
 QString argText(const MessageArg &arg)

@@ -486,7 +486,7 @@ void TestProgram::verificationNamesThePagesThatDiffer()
     QCOMPARE(r.status, ProgramTransferResult::Status::Failed);
     QCOMPARE(r.problem, ProgramTransferResult::Problem::VerifyFailed);
     QCOMPARE(r.pages, std::vector<std::uint16_t>{150});
-    QVERIFY2(text(r.message).contains(QStringLiteral("1 pages on the PLC differ from the backup "
+    QVERIFY2(text(r.message).contains(QStringLiteral("1 page on the PLC differs from the backup "
                                                      "(150)")),
              qPrintable(text(r.message)));
 }

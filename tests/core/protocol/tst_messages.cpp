@@ -112,6 +112,9 @@ private Q_SLOTS:
                      qPrintable(name + QLatin1String(": ") + text));
             // english() puts every argument where its placeholder is, nothing else.
             QString filled = text;
+            // The sample's arguments are no "1": a count's plural words.
+            filled.replace(QRegularExpression(QStringLiteral("\\{\\d:[^|}]*\\|([^}]*)\\}")),
+                           QStringLiteral("\\1"));
             for (int i = messageArgCount(id); i >= 1; --i)
                 filled.replace(QStringLiteral("%%1").arg(i), QStringLiteral("<%1>").arg(i));
             QCOMPARE(QString::fromStdString(english(sample(id))), filled);
@@ -170,6 +173,27 @@ private Q_SLOTS:
         QCOMPARE(translated(plc), QString::fromStdString(english(plc)));
         QCOMPARE(UiText::commandName(Command::ReadRegisters),
                  QStringLiteral("read consecutive registers"));
+    }
+
+    // "1 values", "in 1 requests" (issue 32): a count's words follow it, in English and in the UI.
+    void pluralWords()
+    {
+        QCOMPARE(english(msg<MsgId::RestoreDone>(12, 1)),
+                 std::string("12 values written in 1 request and read back equal."));
+        QCOMPARE(english(msg<MsgId::RestoreDone>(1, 3)),
+                 std::string("1 value written in 3 requests and read back equal."));
+        QCOMPARE(english(msg<MsgId::DiffCount>(1, 5)), std::string("1 of 5 values differs."));
+        QCOMPARE(english(msg<MsgId::DiffCount>(2, 5)), std::string("2 of 5 values differ."));
+        QCOMPARE(english(msg<MsgId::DiffCount>(1, 1)), std::string("1 of 1 value differs."));
+        QCOMPARE(translated(msg<MsgId::SnapshotTaken>(1, 1)),
+                 QStringLiteral("1 value read in 1 request."));
+        // A brace that is not a count's choice stays text.
+        QCOMPARE(fillTemplate("{x} {9:a|b} {1:a", {"1"}), std::string("{x} {9:a|b} {1:a"));
+        QCoreApplication::installTranslator(&m_chinese);
+        const QString chinese = translated(msg<MsgId::SnapshotTaken>(1, 1));
+        QCoreApplication::removeTranslator(&m_chinese);
+        QVERIFY2(!chinese.contains(QLatin1Char('{')) && chinese.contains(QLatin1Char('1')),
+                 qPrintable(chinese));
     }
 
     void watchListPlaceLowersTheSentence()
