@@ -219,7 +219,7 @@ private Q_SLOTS:
         QSignalSpy batches(table->connection(), &Connection::itemValues);
 
         QTableView *view = table->view();
-        const QModelIndex value = model->index(0, WatchTableModel::ValueColumn);
+        const QModelIndex value = table->viewIndex(model->index(0, WatchTableModel::ValueColumn));
         doubleClick(view, value);
         QTRY_VERIFY(view->viewport()->findChild<QLineEdit *>());
         QPointer<QLineEdit> editor = view->viewport()->findChild<QLineEdit *>();
@@ -258,7 +258,7 @@ private Q_SLOTS:
         QSignalSpy batches(table->connection(), &Connection::itemValues);
 
         QTableView *view = table->view();
-        const QModelIndex format = model->index(0, WatchTableModel::FormatColumn);
+        const QModelIndex format = table->viewIndex(model->index(0, WatchTableModel::FormatColumn));
         doubleClick(view, format);
         QPointer<QComboBox> combo = view->viewport()->findChild<QComboBox *>();
         QVERIFY(combo);
@@ -404,7 +404,8 @@ private Q_SLOTS:
         QTRY_VERIFY2_WITH_TIMEOUT(firstRate.data().toString().toDouble() > 0,
                                   qPrintable(firstRate.data().toString()), 1500);
         QTableView *view = table->view();
-        doubleClick(view, model->index(rowOf(model, "R0"), WatchTableModel::StationColumn));
+        doubleClick(view, table->viewIndex(
+                              model->index(rowOf(model, "R0"), WatchTableModel::StationColumn)));
         QTRY_VERIFY(view->viewport()->findChild<QLineEdit *>());
         QLineEdit *editor = view->viewport()->findChild<QLineEdit *>();
         editor->selectAll();

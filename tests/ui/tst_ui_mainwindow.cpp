@@ -172,7 +172,7 @@ private Q_SLOTS:
 
         // Edit in place: the view's editor, as a technician types it.
         QTableView *view = table->view();
-        const QModelIndex value = model->index(0, WatchTableModel::ValueColumn);
+        const QModelIndex value = table->viewIndex(model->index(0, WatchTableModel::ValueColumn));
         view->setCurrentIndex(value);
         view->edit(value);
         auto *editor = view->viewport()->findChild<QLineEdit *>();
@@ -201,7 +201,7 @@ private Q_SLOTS:
         QCOMPARE(y0.data(Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
         QStyleOptionViewItem option;
         option.initFrom(view->viewport());
-        option.rect = view->visualRect(y0);
+        option.rect = view->visualRect(table->viewIndex(y0));
         option.features
             = QStyleOptionViewItem::HasCheckIndicator | QStyleOptionViewItem::HasDisplay;
         option.text = y0.data().toString();
