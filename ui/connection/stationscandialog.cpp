@@ -137,7 +137,7 @@ void StationScanDialog::onFound(int station, bool running)
     auto *item
         = new QListWidgetItem(tr("Station %1 \u2014 %2")
                                   .arg(station)
-                                  .arg(running ? QStringLiteral("RUN") : QStringLiteral("STOP")),
+                                  .arg(running ? tr("RUN") : tr("STOP")),
                               m_list);
     item->setData(Qt::UserRole, station);
     if (m_connection && station == m_connection->station())
