@@ -269,18 +269,18 @@ private Q_SLOTS:
         QTRY_COMPARE(shownAddresses(table), own);
 
         // Sorted by value while the R0 scan counter and the sine change: by number, not by text
-        // ("9" after "10000"), so the counter ends up last once it is past the sine's 1000.
+        // (9 before 10).
+        QVERIFY(m_plc->plc.setValue(*Address::parse("R5"), 9));
+        QVERIFY(m_plc->plc.setValue(*Address::parse("R12"), 10));
+        QTRY_VERIFY_WITH_TIMEOUT(model->valueText(rowOf(model, QStringLiteral("R12")))
+                                     == QStringLiteral("10"),
+                                 longWait);
         clickHeader(view, WatchTableModel::ValueColumn);
-        QTRY_VERIFY(view->horizontalHeader()->sortIndicatorSection()
-                    == WatchTableModel::ValueColumn);
-        QTRY_VERIFY_WITH_TIMEOUT(
-            model->index(rowOf(model, QStringLiteral("R0")), WatchTableModel::ValueColumn)
-                    .data()
-                    .toString()
-                    .toInt()
-                > 1000,
-            longWait);
-        QTRY_COMPARE(shownAddresses(table).constLast(), QStringLiteral("R0"));
+        QTRY_COMPARE(view->horizontalHeader()->sortIndicatorSection(),
+                     int(WatchTableModel::ValueColumn));
+        QTRY_VERIFY(shownAddresses(table).indexOf(QStringLiteral("R5"))
+                    < shownAddresses(table).indexOf(QStringLiteral("R12")));
+        QCOMPARE(ownAddresses(model), own);
 
         // The menu's Own Order.
         QAction *ownOrder = view->findChild<QAction *>(QStringLiteral("ownOrderAction"));
@@ -682,7 +682,10 @@ private Q_SLOTS:
         QVERIFY(onScreen(pause));
         QTest::mouseClick(pause, Qt::LeftButton, {}, QPoint(), mouseDelayMs);
         QTRY_VERIFY(table->isPaused());
-        QTest::qWait(300); // the last cycle under way ends
+        // The last value's highlight (a repaint of the value column) has ended.
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !model->index(0, WatchTableModel::ValueColumn).data(Qt::BackgroundRole).isValid(),
+            longWait);
         QSignalSpy changes(model, &QAbstractItemModel::dataChanged);
         QTRY_VERIFY_WITH_TIMEOUT(ageSeconds(quality.data().toString()) >= 2.0, longWait);
         QVERIFY2(quality.data().toString().startsWith(QStringLiteral("stale, ")),

@@ -64,8 +64,8 @@ TrendView::TrendView(QWidget *parent)
     // As many time labels as fit whole: QtCharts cuts labels that do not fit their tick's width
     // to "…" (a narrow dock at 1366x768 showed "12:0…").
     connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF &area) {
-        const int label = QFontMetrics(m_timeAxis->labelsFont())
-                              .horizontalAdvance(QStringLiteral("00:00:00"));
+        const int label
+            = QFontMetrics(m_timeAxis->labelsFont()).horizontalAdvance(QStringLiteral("00:00:00"));
         const int fit = static_cast<int>(area.width()) / (label + label / 2) + 1;
         const int ticks = std::clamp(fit, 2, 7);
         if (ticks != m_timeAxis->tickCount())

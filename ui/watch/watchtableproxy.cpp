@@ -8,6 +8,10 @@ WatchTableProxy::WatchTableProxy(QObject *parent)
     : QSortFilterProxyModel(parent)
 {
     setSortRole(WatchTableModel::SortRole);
+    // A change that names its roles is filtered again only when it names this one: the values'
+    // age, repainted four times a second (DisplayRole only), never makes every row filtered and
+    // sorted again. Edits and polls name no roles.
+    setFilterRole(WatchTableModel::SortRole);
     setSortCaseSensitivity(Qt::CaseInsensitive);
     setSortLocaleAware(true);
     // sort(-1) (the header's third click) shows the model's own order again.

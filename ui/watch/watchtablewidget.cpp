@@ -16,6 +16,7 @@
 #include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
@@ -134,9 +135,13 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     header->setSortIndicator(-1, Qt::AscendingOrder); // not sorted by the first column at start
     m_view->setSortingEnabled(true);
     const int em = m_view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    const int widths[] = {14, 7, 5, 13, 9, 8, 9, 10};
+    // Quality holds its age too ("good, 0.4 s").
+    const int widths[] = {14, 7, 5, 13, 9, 10, 9, 10};
     for (int c = 0; c < WatchTableModel::ColumnCount; ++c)
         header->resizeSection(c, widths[c] * em);
+    header->setMinimumSectionSize(3 * em);
+    m_view->setTextElideMode(Qt::ElideRight);
+    m_view->viewport()->installEventFilter(this);
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
 
     auto *writeAction = new QAction(tr("&Write Value…"), m_view);
@@ -406,6 +411,37 @@ void WatchTableWidget::fillFormatMenu()
         QAction *a = m_formatMenu->addAction(UiText::format(f));
         a->setObjectName(QStringLiteral("format_") + ValueFormat::name(f));
         connect(a, &QAction::triggered, this, [this, f] { setSelectedFormat(f); });
+    }
+}
+
+bool WatchTableWidget::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_view->viewport() && event->type() == QEvent::Resize)
+        fitColumns();
+    return QWidget::eventFilter(watched, event);
+}
+
+void WatchTableWidget::fitColumns()
+{
+    QHeaderView *header = m_view->horizontalHeader();
+    const int em = m_view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    const int lastColumn = WatchTableModel::CommentColumn;
+    int others = 0;
+    for (int c = 0; c < lastColumn; ++c)
+        others += header->isSectionHidden(c) ? 0 : header->sectionSize(c);
+    int excess = others + 6 * em - m_view->viewport()->width();
+    // The name gives room first (it elides), then the value and the time.
+    for (const auto &[column, least] : {std::pair{int(WatchTableModel::NameColumn), 7 * em},
+                                        std::pair{int(WatchTableModel::ValueColumn), 8 * em},
+                                        std::pair{int(WatchTableModel::UpdatedColumn), 7 * em}}) {
+        if (excess <= 0)
+            break;
+        const int size = header->sectionSize(column);
+        const int give = std::clamp(size - least, 0, excess);
+        if (give > 0) {
+            header->resizeSection(column, size - give);
+            excess -= give;
+        }
     }
 }
 

@@ -107,6 +107,10 @@ private:
     void moveSelected(int delta);
     void setSelectedFormat(DisplayFormat format);
     void fillFormatMenu();
+    // Narrows the widest columns when the view is too narrow for them all: the last column
+    // (comment) stretches into what is left and the table never scrolls sideways.
+    void fitColumns();
+    bool eventFilter(QObject *watched, QEvent *event) override;
     void writeDialog();
     void toggleSwapWords();
     quint8 defaultStation() const;
