@@ -640,6 +640,9 @@ private Q_SLOTS:
             }
         });
         hand.start();
+        // Back to the window after the question (offscreen leaves no window active).
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
         QTest::keyClick(m_window.get(), Qt::Key_O, Qt::ControlModifier);
         QTRY_VERIFY(saved && fileDialog);
         hand.stop();
@@ -686,6 +689,9 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(
             !model->index(0, WatchTableModel::ValueColumn).data(Qt::BackgroundRole).isValid(),
             longWait);
+        // ... and its repaint came (the highlight timer ticks more often than the age's).
+        QSignalSpy settling(model, &QAbstractItemModel::dataChanged);
+        QTRY_VERIFY_WITH_TIMEOUT(settling.count() >= 2, longWait);
         QSignalSpy changes(model, &QAbstractItemModel::dataChanged);
         QTRY_VERIFY_WITH_TIMEOUT(ageSeconds(quality.data().toString()) >= 2.0, longWait);
         QVERIFY2(quality.data().toString().startsWith(QStringLiteral("stale, ")),
