@@ -22,6 +22,7 @@
 #include <QClipboard>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFile>
@@ -771,8 +772,8 @@ private Q_SLOTS:
         QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral(" | "))));
     }
 
-    // At 1366x768 the table's columns fit: no sideways scrolling, the comment column takes what
-    // is left.
+    // At 1366x768 the table's columns fit, also with the forcing dock open beside it (Ctrl+Shift+F)
+    // and with a wider font: no sideways scrolling, the comment column takes what is left.
     void columnsFitTheWindow()
     {
         WatchTableWidget *table = openTable(QStringLiteral("R0 R1"));
@@ -780,10 +781,30 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(allValues(table->model()), longWait);
         QTableView *view = table->view();
         QVERIFY(onScreen(view));
-        QTRY_VERIFY(view->horizontalHeader()->length() <= view->viewport()->width());
-        QVERIFY(!view->horizontalScrollBar()->isVisible());
-        QVERIFY(view->columnWidth(WatchTableModel::CommentColumn)
-                >= view->fontMetrics().horizontalAdvance(QLatin1Char('M')) * 6);
+        const auto fits = [view] {
+            return view->horizontalHeader()->length() <= view->viewport()->width()
+                   && !view->horizontalScrollBar()->isVisible();
+        };
+        QTRY_VERIFY(fits());
+        QTest::keyClick(m_window.get(), Qt::Key_F, Qt::ControlModifier | Qt::ShiftModifier,
+                        keyDelayMs);
+        auto *forcing = m_window->findChild<QDockWidget *>(QStringLiteral("forcingDock"));
+        QVERIFY(forcing);
+        QTRY_VERIFY(forcing->isVisible());
+        const auto widths = [view] {
+            QStringList out;
+            for (int c = 0; c < WatchTableModel::ColumnCount; ++c)
+                out << QString::number(view->columnWidth(c));
+            return QStringLiteral("columns %1 px, view %2 px")
+                .arg(out.join(QLatin1Char(' ')))
+                .arg(view->viewport()->width());
+        };
+        QTRY_VERIFY2(fits(), qPrintable(widths()));
+        const int em = view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
+        QVERIFY(view->columnWidth(WatchTableModel::CommentColumn) >= 3 * em);
+        // Every column but the comment keeps room for a few characters.
+        for (int c = 0; c < WatchTableModel::CommentColumn; ++c)
+            QVERIFY2(view->columnWidth(c) >= 3 * em, qPrintable(QString::number(c)));
     }
 };
 

@@ -96,8 +96,9 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     m_filterEdit->setClearButtonEnabled(true);
     m_filterEdit->setToolTip(tr("Show only the rows whose address, name or comment contains this "
                                 "text (Ctrl+F)"));
-    m_filterEdit->setMaximumWidth(m_filterEdit->fontMetrics().horizontalAdvance(QLatin1Char('M'))
-                                  * 20);
+    // Wide enough for its placeholder, which says what it searches.
+    m_filterEdit->setMinimumWidth(
+        m_filterEdit->fontMetrics().horizontalAdvance(m_filterEdit->placeholderText()) + 40);
     auto *findAction = new QAction(this);
     findAction->setShortcut(QKeySequence::Find);
     findAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
@@ -135,8 +136,9 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     header->setSortIndicator(-1, Qt::AscendingOrder); // not sorted by the first column at start
     m_view->setSortingEnabled(true);
     const int em = m_view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    // Quality holds its age too ("good, 0.4 s").
-    const int widths[] = {14, 7, 5, 13, 9, 10, 9, 10};
+    // Quality holds its age too ("good, 0.4 s"). The comment stretches into what is left: its own
+    // width is the least it keeps (a stretched last section never gets narrower than that).
+    const int widths[] = {14, 7, 5, 13, 9, 10, 9, 3};
     for (int c = 0; c < WatchTableModel::ColumnCount; ++c)
         header->resizeSection(c, widths[c] * em);
     header->setMinimumSectionSize(3 * em);
