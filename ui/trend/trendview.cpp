@@ -70,7 +70,10 @@ TrendView::TrendView(QWidget *parent)
         const int ticks = std::clamp(fit, 2, 7);
         if (ticks != m_timeAxis->tickCount())
             m_timeAxis->setTickCount(ticks);
+        m_valueAxes.setPlotHeight(area.height());
     });
+    connect(m_chart, &QGraphicsWidget::geometryChanged, this,
+            [this] { m_valueAxes.setChartWidth(m_chart->size().width()); });
 
     m_chartView = new TrendChartView(
         m_chart, m_timeAxis,
