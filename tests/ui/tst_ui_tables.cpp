@@ -485,6 +485,7 @@ private Q_SLOTS:
         QTableView *view = table->view();
         QVERIFY(typeIntoCell(view, cellOf(table, QStringLiteral("R1"), WatchTableModel::NameColumn),
                              QStringLiteral("Sine")));
+        QTRY_COMPARE(model->item(1).name, QStringLiteral("Sine"));
         QVERIFY(typeIntoCell(view,
                              cellOf(table, QStringLiteral("R1"), WatchTableModel::CommentColumn),
                              QStringLiteral("10 s period")));
@@ -645,7 +646,7 @@ private Q_SLOTS:
         m_window->activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
         QTest::keyClick(m_window.get(), Qt::Key_O, Qt::ControlModifier);
-        QTRY_VERIFY(saved && fileDialog);
+        QTRY_VERIFY_WITH_TIMEOUT(saved && fileDialog, longWait);
         hand.stop();
         QVERIFY(!m_window->isWindowModified());
         QFile file(path);
@@ -675,7 +676,7 @@ private Q_SLOTS:
         QTRY_VERIFY2(quality.data().toString().startsWith(QStringLiteral("good, ")),
                      qPrintable(quality.data().toString()));
         const double fresh = ageSeconds(quality.data().toString());
-        QVERIFY2(fresh >= 0 && fresh < 5, qPrintable(quality.data().toString()));
+        QVERIFY2(fresh >= 0 && fresh < 30, qPrintable(quality.data().toString()));
         // Shown whole in the cell.
         QVERIFY(view->columnWidth(WatchTableModel::QualityColumn)
                 >= view->fontMetrics().horizontalAdvance(quality.data().toString()));
