@@ -3748,6 +3748,18 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Comment/symbol lists (*.csv *.txt *.tsv);;All files (*)</source>
             <translation>Comment/symbol lists (*.csv *.txt *.tsv);;All files (*)</translation>
         </message>
+        <message>
+            <source>The watch list %1 has changes that are not saved.</source>
+            <translation>The watch list %1 has changes that are not saved.</translation>
+        </message>
+        <message>
+            <source>(untitled)</source>
+            <translation>(untitled)</translation>
+        </message>
+        <message>
+            <source>Save them first?</source>
+            <translation>Save them first?</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableModel</name>
@@ -3850,6 +3862,60 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Forced: disabled from the ladder, it keeps the value written to it (Tools ▸ Forcing lists and enables forced points).</source>
             <translation>Forced: disabled from the ladder, it keeps the value written to it (Tools ▸ Forcing lists and enables forced points).</translation>
+        </message>
+        <message>
+            <source>%1 s</source>
+            <translation>%1 s</translation>
+        </message>
+        <message>
+            <source>%1 min</source>
+            <translation>%1 min</translation>
+        </message>
+        <message>
+            <source>%1 h</source>
+            <translation>%1 h</translation>
+        </message>
+        <message>
+            <source>%1, %2</source>
+            <comment>quality, age of the value</comment>
+            <translation>%1, %2</translation>
+        </message>
+        <message numerus="yes">
+            <source>Add %n item(s)</source>
+            <translation>
+                <numerusform>Add %n item(s)</numerusform>
+                <numerusform>Add %n item(s)</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Remove %n item(s)</source>
+            <translation>
+                <numerusform>Remove %n item(s)</numerusform>
+                <numerusform>Remove %n item(s)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Move Up</source>
+            <translation>Move Up</translation>
+        </message>
+        <message>
+            <source>Move Down</source>
+            <translation>Move Down</translation>
+        </message>
+        <message numerus="yes">
+            <source>Move %n item(s)</source>
+            <translation>
+                <numerusform>Move %n item(s)</numerusform>
+                <numerusform>Move %n item(s)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Edit %1</source>
+            <translation>Edit %1</translation>
+        </message>
+        <message>
+            <source>Set Format</source>
+            <translation>Set Format</translation>
         </message>
     </context>
     <context>
@@ -4019,6 +4085,57 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>Operator mode (read-only): %1 cannot be written.</translation>
         </message>
+        <message>
+            <source>Filter: address, name or comment</source>
+            <translation>Filter: address, name or comment</translation>
+        </message>
+        <message>
+            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
+            <translation>Show only the rows whose address, name or comment contains this text (Ctrl+F)</translation>
+        </message>
+        <message>
+            <source>&amp;Copy Rows</source>
+            <translation>&amp;Copy Rows</translation>
+        </message>
+        <message>
+            <source>Address, name, value, format, quality and comment of the selected rows as tab-separated text</source>
+            <translation>Address, name, value, format, quality and comment of the selected rows as tab-separated text</translation>
+        </message>
+        <message>
+            <source>&amp;Undo</source>
+            <translation>&amp;Undo</translation>
+        </message>
+        <message>
+            <source>&amp;Redo</source>
+            <translation>&amp;Redo</translation>
+        </message>
+        <message>
+            <source>Move &amp;Up</source>
+            <translation>Move &amp;Up</translation>
+        </message>
+        <message>
+            <source>Move &amp;Down</source>
+            <translation>Move &amp;Down</translation>
+        </message>
+        <message>
+            <source>Own &amp;Order</source>
+            <translation>Own &amp;Order</translation>
+        </message>
+        <message>
+            <source>Show the rows in the order you gave them, not sorted</source>
+            <translation>Show the rows in the order you gave them, not sorted</translation>
+        </message>
+        <message>
+            <source>Set &amp;Format</source>
+            <translation>Set &amp;Format</translation>
+        </message>
+        <message numerus="yes">
+            <source>Copied %n row(s).</source>
+            <translation>
+                <numerusform>Copied %n row(s).</numerusform>
+                <numerusform>Copied %n row(s).</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -4121,6 +4238,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>station %1 rests until %2</source>
             <translation>station %1 rests until %2</translation>
         </message>
+        <message>
+            <source>RUN</source>
+            <translation>RUN</translation>
+        </message>
+        <message>
+            <source>STOP</source>
+            <translation>STOP</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::StationScanDialog</name>
@@ -4198,6 +4323,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>&amp;Cancel Scan</source>
             <translation>&amp;Cancel Scan</translation>
+        </message>
+        <message>
+            <source>RUN</source>
+            <translation>RUN</translation>
+        </message>
+        <message>
+            <source>STOP</source>
+            <translation>STOP</translation>
         </message>
     </context>
     <context>

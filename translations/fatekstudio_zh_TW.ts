@@ -2147,11 +2147,11 @@
         <name>Fatek::DiscreteTableModel</name>
         <message>
             <source>ON</source>
-            <translation>ON</translation>
+            <translation>導通</translation>
         </message>
         <message>
             <source>OFF</source>
-            <translation>OFF</translation>
+            <translation>斷開</translation>
         </message>
         <message>
             <source>disabled (forced)</source>
@@ -3737,6 +3737,18 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Comment/symbol lists (*.csv *.txt *.tsv);;All files (*)</source>
             <translation>註解／符號清單 (*.csv *.txt *.tsv);;所有檔案 (*)</translation>
         </message>
+        <message>
+            <source>The watch list %1 has changes that are not saved.</source>
+            <translation>監看清單 %1 有尚未儲存的變更。</translation>
+        </message>
+        <message>
+            <source>(untitled)</source>
+            <translation>（未命名）</translation>
+        </message>
+        <message>
+            <source>Save them first?</source>
+            <translation>要先儲存嗎？</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableModel</name>
@@ -3839,6 +3851,57 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Forced: disabled from the ladder, it keeps the value written to it (Tools ▸ Forcing lists and enables forced points).</source>
             <translation>強制中：已脫離階梯圖控制，保持寫入的值（工具 ▸ 強制 可列出並啟用強制中的點）。</translation>
+        </message>
+        <message>
+            <source>%1 s</source>
+            <translation>%1 秒</translation>
+        </message>
+        <message>
+            <source>%1 min</source>
+            <translation>%1 分</translation>
+        </message>
+        <message>
+            <source>%1 h</source>
+            <translation>%1 小時</translation>
+        </message>
+        <message>
+            <source>%1, %2</source>
+            <comment>quality, age of the value</comment>
+            <translation>%1，%2</translation>
+        </message>
+        <message numerus="yes">
+            <source>Add %n item(s)</source>
+            <translation>
+                <numerusform>新增 %n 個項目</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Remove %n item(s)</source>
+            <translation>
+                <numerusform>移除 %n 個項目</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Move Up</source>
+            <translation>上移</translation>
+        </message>
+        <message>
+            <source>Move Down</source>
+            <translation>下移</translation>
+        </message>
+        <message numerus="yes">
+            <source>Move %n item(s)</source>
+            <translation>
+                <numerusform>移動 %n 個項目</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Edit %1</source>
+            <translation>編輯 %1</translation>
+        </message>
+        <message>
+            <source>Set Format</source>
+            <translation>設定格式</translation>
         </message>
     </context>
     <context>
@@ -4005,6 +4068,56 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>操作員模式（唯讀）：無法寫入 %1。</translation>
         </message>
+        <message>
+            <source>Filter: address, name or comment</source>
+            <translation>篩選：位址、名稱或註解</translation>
+        </message>
+        <message>
+            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
+            <translation>只顯示位址、名稱或註解含有此文字的列（Ctrl+F）</translation>
+        </message>
+        <message>
+            <source>&amp;Copy Rows</source>
+            <translation>複製列(&amp;C)</translation>
+        </message>
+        <message>
+            <source>Address, name, value, format, quality and comment of the selected rows as tab-separated text</source>
+            <translation>所選各列的位址、名稱、數值、格式、品質與註解，以定位字元分隔的文字</translation>
+        </message>
+        <message>
+            <source>&amp;Undo</source>
+            <translation>復原(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Redo</source>
+            <translation>重做(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Move &amp;Up</source>
+            <translation>上移(&amp;U)</translation>
+        </message>
+        <message>
+            <source>Move &amp;Down</source>
+            <translation>下移(&amp;D)</translation>
+        </message>
+        <message>
+            <source>Own &amp;Order</source>
+            <translation>自訂順序(&amp;O)</translation>
+        </message>
+        <message>
+            <source>Show the rows in the order you gave them, not sorted</source>
+            <translation>依您排定的順序顯示各列，不排序</translation>
+        </message>
+        <message>
+            <source>Set &amp;Format</source>
+            <translation>設定格式(&amp;F)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Copied %n row(s).</source>
+            <translation>
+                <numerusform>已複製 %n 列。</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -4107,6 +4220,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>station %1 rests until %2</source>
             <translation>站號 %1 暫停輪詢至 %2</translation>
         </message>
+        <message>
+            <source>RUN</source>
+            <translation>執行</translation>
+        </message>
+        <message>
+            <source>STOP</source>
+            <translation>停止</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::StationScanDialog</name>
@@ -4183,6 +4304,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>&amp;Cancel Scan</source>
             <translation>取消掃描(&amp;C)</translation>
+        </message>
+        <message>
+            <source>RUN</source>
+            <translation>執行</translation>
+        </message>
+        <message>
+            <source>STOP</source>
+            <translation>停止</translation>
         </message>
     </context>
     <context>

@@ -439,6 +439,55 @@ std::uint64_t swapWords(std::uint64_t raw, int width)
     return raw;
 }
 
+std::optional<double> number(std::uint64_t raw, int width, DisplayFormat format, bool swap)
+{
+    if (width == 0 || !isAvailable(format, width))
+        return std::nullopt;
+    const std::uint64_t mask = width >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << width) - 1;
+    // Words swapped only for a value shown swapped.
+    const std::uint64_t v = (swap ? swapWords(raw & mask, width) : raw) & mask;
+    switch (format) {
+    case DisplayFormat::Bit: return (v & 1u) ? 1.0 : 0.0;
+    case DisplayFormat::Unsigned: return static_cast<double>(v);
+    // Hex and binary are ways of writing the element's bits, not another number: a register
+    // holds a signed value (its default format), and a trend of it must not jump from 0 to
+    // 65535 when it goes below zero.
+    case DisplayFormat::Hex:
+    case DisplayFormat::Binary:
+    case DisplayFormat::Signed: {
+        if (width < 64 && (v >> (width - 1)) & 1u)
+            return static_cast<double>(static_cast<std::int64_t>(v | ~mask));
+        return static_cast<double>(static_cast<std::int64_t>(v));
+    }
+    case DisplayFormat::Bcd: {
+        double value = 0;
+        double scale = 1;
+        for (int shift = 0; shift < width; shift += 4) {
+            const auto digit = static_cast<unsigned>((v >> shift) & 0xF);
+            if (digit > 9)
+                return std::nullopt; // not BCD: no honest number to plot
+            value += digit * scale;
+            scale *= 10;
+        }
+        return value;
+    }
+    case DisplayFormat::Float32: {
+        const float f = std::bit_cast<float>(static_cast<std::uint32_t>(v));
+        if (!std::isfinite(f))
+            return std::nullopt;
+        return static_cast<double>(f);
+    }
+    case DisplayFormat::Double64: {
+        const double d = std::bit_cast<double>(v);
+        if (!std::isfinite(d))
+            return std::nullopt;
+        return d;
+    }
+    case DisplayFormat::Ascii: return std::nullopt;
+    }
+    return std::nullopt;
+}
+
 QString format(std::uint64_t raw, int width, DisplayFormat format, bool swap)
 {
     if (!validWidth(width))

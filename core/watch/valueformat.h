@@ -57,6 +57,13 @@ DisplayFormat defaultFormat(const Address &address);
 // "(float needs 32 bits)", never a made-up number.
 QString format(std::uint64_t raw, int width, DisplayFormat format, bool swapWords = false);
 
+// The number a value stands for, for trends and sorting: signed, unsigned, BCD, float and double
+// as their value; hex and binary (ways of writing the bits) as signed; bits as 0/1. Nothing for
+// ASCII (text has no height), a format that does not fit `width`, BCD with a digit above 9, or a
+// float that is not finite.
+std::optional<double> number(std::uint64_t raw, int width, DisplayFormat format,
+                             bool swapWords = false);
+
 // Parses what a technician typed into the raw value to write (swapWords applied, so that
 // format(parse(text)) shows text again). Integer formats accept decimal (negative values as two's
 // complement, range -2^(w-1)..2^w-1), 0x1A, 1Ah and 0b1010; in Hex format bare digits are hex, in

@@ -84,7 +84,8 @@ Status saveToFile(const WatchListFile &file, const QString &path);
 
 // Rows from CSV: columns address[,station][,format][,name][,comment]. A first row with a cell
 // "address" (and no address in its first cell) is a header naming the columns (any order, any
-// subset with address); without it the columns are positional. Comma or semicolon separated (the
+// subset with address; value and quality columns, as a watch table copies them, are skipped);
+// without it the columns are positional. Comma or semicolon separated (the
 // first separator outside quotes decides), fields may be quoted ("a, b" and "say ""hi"""), blank
 // lines and lines starting with # are skipped, "R100..R103" in the address column gives four rows
 // (names get [0], [1], ... suffixes). UTF-8 with or without BOM; text that is not UTF-8 is read as

@@ -132,6 +132,9 @@ Result<QList<Column>> headerColumns(const CsvRecord &record)
             column = Column::Name;
         else if (key == QLatin1String("comment"))
             column = Column::Comment;
+        // Columns of rows copied from a watch table: what was read, not what to watch.
+        else if (key == QLatin1String("value") || key == QLatin1String("quality"))
+            column = Column::Ignored;
         else if (!key.isEmpty()) {
             return atPlace(
                 linePlace(record.line),

@@ -129,7 +129,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(0), longWait);
 
         QTableView *view = table->view();
-        const QModelIndex value = model->index(0, WatchTableModel::ValueColumn);
+        const QModelIndex value = table->viewIndex(model->index(0, WatchTableModel::ValueColumn));
         view->setFocus();
         view->setCurrentIndex(value);
         QTest::keyClick(view->viewport(), Qt::Key_F2);
@@ -461,7 +461,8 @@ private Q_SLOTS:
         typeSlowly(table->addressEdit(), QStringLiteral("R5"));
         QTest::keyClick(table->addressEdit(), Qt::Key_Return);
         table->view()->setFocus();
-        table->view()->setCurrentIndex(table->model()->index(0, WatchTableModel::ValueColumn));
+        table->view()->setCurrentIndex(
+            table->viewIndex(table->model()->index(0, WatchTableModel::ValueColumn)));
         QTimer escape; // should a dialog open anyway, close it so the failure is reported
         bool dialogOpened = false;
         escape.setInterval(50);

@@ -139,7 +139,8 @@ QString typeValue(WatchTableWidget *table, int row, const QString &text,
 {
     QTableView *view = table->view();
     view->setFocus();
-    view->setCurrentIndex(table->model()->index(row, WatchTableModel::ValueColumn));
+    view->setCurrentIndex(
+        table->viewIndex(table->model()->index(row, WatchTableModel::ValueColumn)));
     QTest::keyClick(view->viewport(), Qt::Key_F2);
     auto *editor = view->viewport()->findChild<QLineEdit *>();
     if (!editor)

@@ -122,7 +122,8 @@ private Q_SLOTS:
 
         // A name typed by hand before the import.
         QTableView *view = table->view();
-        const QModelIndex r13Name = model->index(rowOf(model, "R13"), WatchTableModel::NameColumn);
+        const QModelIndex r13Name
+            = table->viewIndex(model->index(rowOf(model, "R13"), WatchTableModel::NameColumn));
         view->setCurrentIndex(r13Name);
         view->edit(r13Name);
         QTRY_VERIFY(view->viewport()->isAncestorOf(QApplication::focusWidget()));

@@ -221,7 +221,7 @@ private Q_SLOTS:
         const quint16 port = plc.port;
         plc.server.close();
         QTRY_VERIFY_WITH_TIMEOUT(m_connection->linkState() != LinkState::Connected, longWait);
-        doubleClick(table->view(), model->index(0, WatchTableModel::ValueColumn));
+        doubleClick(table->view(), table->viewIndex(model->index(0, WatchTableModel::ValueColumn)));
         QTRY_VERIFY(table->view()->viewport()->findChild<QLineEdit *>());
         QLineEdit *editor = table->view()->viewport()->findChild<QLineEdit *>();
         editor->selectAll();

@@ -2,8 +2,12 @@
 // zh_TW translator the main window running the demo (tables, connections, docks, menus, actions,
 // status bar) shows no English words; core messages come out in Chinese.
 #include "ui/common/uitext.h"
+#include "ui/connection/connectionlistmodel.h"
+#include "ui/connection/connectionspanel.h"
 #include "ui/mainwindow/languagemenu.h"
 #include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/discretetablemodel.h"
+#include "ui/tools/forcingpanel.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include "core/protocol/address.h"
@@ -429,6 +433,61 @@ private Q_SLOTS:
         QCOMPARE(window.currentWatchTable()->model()->headerData(WatchTableModel::ValueColumn,
                                                                  Qt::Horizontal),
                  QVariant(QStringLiteral("數值")));
+    }
+
+    // Issue 34: what was still English although its words are allowed tokens: the PLC's state in
+    // the connections list, ON/OFF in the forcing table, the loopback test's greyed text, RUN in
+    // a station scan; and the table's new words (the values' age, its menu).
+    void issue34LeftoversAreChinese()
+    {
+        MainWindow window;
+        window.show();
+        bool ready = false;
+        connect(&window, &MainWindow::demoReady, this, [&ready] { ready = true; });
+        window.startDemo();
+        QTRY_VERIFY_WITH_TIMEOUT(ready, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.hasValues(), 20000);
+
+        auto *panel = window.findChild<ConnectionsPanel *>();
+        QVERIFY(panel);
+        const QModelIndex plc = panel->view()->model()->index(0, ConnectionListModel::PlcColumn);
+        QTRY_VERIFY2_WITH_TIMEOUT(plc.data().toString().contains(QStringLiteral("執行")),
+                                  qPrintable(plc.data().toString()), 20000);
+        QVERIFY2(!plc.data().toString().contains(QStringLiteral("RUN")),
+                 qPrintable(plc.data().toString()));
+
+        auto *forcing = qobject_cast<ForcingPanel *>(window.openTool(QStringLiteral("forcing")));
+        QVERIFY(forcing);
+        const DiscreteTableModel *points = forcing->model();
+        QTRY_VERIFY_WITH_TIMEOUT(points->rowCount() > 0, 20000);
+        QStringList states;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                states.clear();
+                for (int r = 0; r < points->rowCount(); ++r)
+                    states << points->index(r, DiscreteTableModel::StateColumn).data().toString();
+                return states.contains(QStringLiteral("導通"))
+                       || states.contains(QStringLiteral("斷開"));
+            }(),
+            20000);
+        QVERIFY2(!states.contains(QStringLiteral("ON")) && !states.contains(QStringLiteral("OFF")),
+                 qPrintable(states.join(QLatin1Char(' '))));
+
+        QWidget *loopback = window.openTool(QStringLiteral("loopback"));
+        QVERIFY(loopback);
+        auto *text = loopback->findChild<QLineEdit *>(QStringLiteral("dataText"));
+        QVERIFY(text);
+        QVERIFY2(!hasEnglish(text->text()), qPrintable(text->text()));
+        loopback->close();
+
+        QCOMPARE(QCoreApplication::translate("Fatek::StationScanDialog", "RUN"),
+                 QStringLiteral("執行"));
+        const QString quality = window.currentWatchTable()
+                                    ->model()
+                                    ->index(0, WatchTableModel::QualityColumn)
+                                    .data()
+                                    .toString();
+        QVERIFY2(quality.contains(QStringLiteral("秒")), qPrintable(quality));
     }
 };
 

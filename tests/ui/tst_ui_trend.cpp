@@ -62,8 +62,9 @@ void selectRows(WatchTableWidget *table, const QList<int> &rows)
 {
     table->view()->clearSelection();
     for (int r : rows)
-        table->view()->selectionModel()->select(
-            table->model()->index(r, 0), QItemSelectionModel::Select | QItemSelectionModel::Rows);
+        table->view()->selectionModel()->select(table->viewIndex(table->model()->index(r, 0)),
+                                                QItemSelectionModel::Select
+                                                    | QItemSelectionModel::Rows);
 }
 
 // True when the tick distance of `ticks` is 1, 2 or 5 times a power of ten and every tick is a

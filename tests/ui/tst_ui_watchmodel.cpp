@@ -7,6 +7,7 @@
 
 #include <QSignalSpy>
 #include <QTest>
+#include <QUndoStack>
 
 using namespace Fatek;
 
@@ -234,7 +235,9 @@ private Q_SLOTS:
         }
         QCOMPARE(model.rawValue(3), std::uint64_t(batches - 1));
         QCOMPARE(model.quality(3), ValueQuality::Stale);
-        QCOMPARE(text(3, WatchTableModel::QualityColumn), QStringLiteral("stale"));
+        // The quality without the value's age ("stale, 0.0 s").
+        QCOMPARE(text(3, WatchTableModel::QualityColumn).section(QStringLiteral(", "), 0, 0),
+                 QStringLiteral("stale"));
         QCOMPARE(text(3, WatchTableModel::UpdatedColumn), shown(time(batches - 1)));
         QCOMPARE(model.rawValue(4), std::uint64_t(batches - 1));
         QCOMPARE(model.quality(4), ValueQuality::Good);
@@ -327,7 +330,9 @@ private Q_SLOTS:
         QVERIFY(model.data(model.index(0, WatchTableModel::QualityColumn), Qt::ToolTipRole)
                     .toString()
                     .contains(QStringLiteral("timeout after 1000 ms")));
-        QCOMPARE(model.data(model.index(0, WatchTableModel::QualityColumn)).toString(),
+        QCOMPARE(model.data(model.index(0, WatchTableModel::QualityColumn))
+                     .toString()
+                     .section(QStringLiteral(", "), 0, 0),
                  QStringLiteral("stale"));
     }
 
@@ -385,6 +390,70 @@ private Q_SLOTS:
         const Request b = ItemValues(item("Y1", DisplayFormat::Bit)).writeRequest(1);
         QCOMPARE(b.command, Command::WriteDiscretes);
         QCOMPARE(b.values, (std::vector<std::uint32_t>{1}));
+    }
+
+    // Issue 34: every edit of the rows is one step on the undo stack, taken back exactly (rows in
+    // their places, their specs as they were), and a loaded list starts a new history.
+    void rowEditsAreUndoSteps()
+    {
+        WatchTableModel model;
+        const auto addresses = [&model] {
+            QStringList out;
+            for (int r = 0; r < model.rowCount(); ++r)
+                out << QString::fromStdString(model.item(r).address.toString());
+            return out.join(QLatin1Char(' '));
+        };
+        QUndoStack *undo = model.undoStack();
+        model.addItems({item("R0", DisplayFormat::Signed), item("R1", DisplayFormat::Signed),
+                        item("R2", DisplayFormat::Signed), item("R3", DisplayFormat::Signed),
+                        item("Y0", DisplayFormat::Bit)});
+        QCOMPARE(undo->count(), 1);
+
+        model.removeItems({3, 1});
+        QCOMPARE(addresses(), QStringLiteral("R0 R2 Y0"));
+        undo->undo();
+        QCOMPARE(addresses(), QStringLiteral("R0 R1 R2 R3 Y0"));
+        undo->redo();
+        undo->undo();
+
+        // Runs move as blocks past their neighbour; at the edge nothing moves.
+        QVERIFY(model.moveItems({0, 1}, 1));
+        QCOMPARE(addresses(), QStringLiteral("R2 R0 R1 R3 Y0"));
+        QVERIFY(model.moveItems({0, 4}, -1));
+        QCOMPARE(addresses(), QStringLiteral("R2 R0 R1 Y0 R3"));
+        QVERIFY(!model.moveItems({0}, -1));
+        QVERIFY(model.moveItemsTo({1, 3}, 5));
+        QCOMPARE(addresses(), QStringLiteral("R2 R1 R3 R0 Y0"));
+        undo->undo();
+        undo->undo();
+        undo->undo();
+        QCOMPARE(addresses(), QStringLiteral("R0 R1 R2 R3 Y0"));
+
+        // One format for several rows: one step; the bit keeps its own.
+        const int steps = undo->index();
+        QVERIFY(!model.setFormats({0, 1, 4}, DisplayFormat::Float32));
+        QCOMPARE(undo->index(), steps + 1);
+        QCOMPARE(model.item(0).format, DisplayFormat::Float32);
+        QCOMPARE(model.item(4).format, DisplayFormat::Bit);
+        undo->undo();
+        QCOMPARE(model.item(0).format, DisplayFormat::Signed);
+        QCOMPARE(model.item(1).format, DisplayFormat::Signed);
+
+        // Typed into the cells: name and address.
+        QVERIFY(model.setData(model.index(2, WatchTableModel::NameColumn), QStringLiteral("Tank")));
+        QVERIFY(
+            model.setData(model.index(2, WatchTableModel::AddressColumn), QStringLiteral("x7")));
+        QCOMPARE(model.item(2).address, *Address::parse("X7"));
+        QCOMPARE(model.item(2).format, DisplayFormat::Bit); // what an X can show
+        QVERIFY(
+            !model.setData(model.index(2, WatchTableModel::AddressColumn), QStringLiteral("Q")));
+        undo->undo();
+        QCOMPARE(model.item(2).address, *Address::parse("R2"));
+        QCOMPARE(model.item(2).format, DisplayFormat::Signed);
+        QCOMPARE(model.item(2).name, QStringLiteral("Tank"));
+
+        model.setItems({item("R9", DisplayFormat::Hex)});
+        QCOMPARE(undo->count(), 0);
     }
 };
 

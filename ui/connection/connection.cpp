@@ -148,7 +148,7 @@ QString Connection::plcText() const
             parts << QString::fromStdString(*model);
     }
     if (m_plcStatus)
-        parts << (m_plcStatus->running ? QStringLiteral("RUN") : QStringLiteral("STOP"));
+        parts << (m_plcStatus->running ? tr("RUN") : tr("STOP"));
     return parts.join(QStringLiteral(" · "));
 }
 

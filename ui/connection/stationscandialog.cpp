@@ -134,11 +134,8 @@ void StationScanDialog::start()
 
 void StationScanDialog::onFound(int station, bool running)
 {
-    auto *item
-        = new QListWidgetItem(tr("Station %1 \u2014 %2")
-                                  .arg(station)
-                                  .arg(running ? QStringLiteral("RUN") : QStringLiteral("STOP")),
-                              m_list);
+    auto *item = new QListWidgetItem(
+        tr("Station %1 \u2014 %2").arg(station).arg(running ? tr("RUN") : tr("STOP")), m_list);
     item->setData(Qt::UserRole, station);
     if (m_connection && station == m_connection->station())
         item->setText(item->text() + tr(" (in use)"));

@@ -359,6 +359,7 @@ WatchTableWidget *MainWindow::addWatchTable(const QString &name)
     if (m_confirm)
         table->setConfirmHandler(m_confirm);
     connect(table, &WatchTableWidget::statusMessage, this, &MainWindow::showStatus);
+    connect(table, &WatchTableWidget::edited, m_document, &WatchListDocument::updateModified);
     connect(table, &WatchTableWidget::addToTrendRequested, this,
             [this, table](const QList<int> &rows) { m_trend->addToTrend(table, rows); });
     connect(table, &WatchTableWidget::nameChanged, this, [this, table](const QString &text) {
@@ -369,6 +370,7 @@ WatchTableWidget *MainWindow::addWatchTable(const QString &name)
             followTable(c);
     });
     m_tabs->addTab(table, QIcon(QStringLiteral(":/icons/table.svg")), table->name());
+    m_document->updateModified();
     return table;
 }
 
@@ -394,6 +396,7 @@ void MainWindow::closeWatchTable(int index)
         return;
     m_tabs->removeTab(index);
     w->deleteLater();
+    m_document->updateModified();
 }
 
 void MainWindow::renameWatchTable(int index)

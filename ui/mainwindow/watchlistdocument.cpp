@@ -14,6 +14,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 
 namespace Fatek {
@@ -27,7 +28,9 @@ WatchListDocument::WatchListDocument(MainWindow *window)
     : QObject(window)
     , m_window(window)
     , m_symbols(new SymbolNames(this))
-{}
+{
+    connect(m_symbols, &SymbolNames::changed, this, &WatchListDocument::updateModified);
+}
 
 void WatchListDocument::addFileActions(QMenu *file)
 {
@@ -144,6 +147,8 @@ void WatchListDocument::importNamesDialog()
 
 void WatchListDocument::openDialog()
 {
+    if (!maybeSave(tr("Open Watch List")))
+        return;
     const QString path
         = QFileDialog::getOpenFileName(m_window, tr("Open Watch List"), lastDirectory(),
                                        tr("Watch lists (*.json);;All files (*)"));
@@ -226,13 +231,44 @@ bool WatchListDocument::isModified() const
     return currentList() != m_saved;
 }
 
+void WatchListDocument::updateModified()
+{
+    m_window->setWindowModified(isModified());
+}
+
+bool WatchListDocument::maybeSave(const QString &action)
+{
+    if (!isModified())
+        return true;
+    QMessageBox box(
+        QMessageBox::Question, action,
+        tr("The watch list %1 has changes that are not saved.")
+            .arg(m_path.isEmpty() ? tr("(untitled)") : QDir::toNativeSeparators(m_path)),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_window);
+    box.setObjectName(QStringLiteral("unsavedQuestionBox"));
+    box.setInformativeText(tr("Save them first?"));
+    box.button(QMessageBox::Save)->setObjectName(QStringLiteral("saveButton"));
+    box.button(QMessageBox::Discard)->setObjectName(QStringLiteral("discardButton"));
+    box.button(QMessageBox::Cancel)->setObjectName(QStringLiteral("cancelButton"));
+    box.setDefaultButton(QMessageBox::Save);
+    box.setEscapeButton(QMessageBox::Cancel);
+    switch (box.exec()) {
+    case QMessageBox::Save: return m_path.isEmpty() ? saveDialog() : bool(save(m_path));
+    case QMessageBox::Discard: return true;
+    default: return false;
+    }
+}
+
 void WatchListDocument::updateWindowTitle()
 {
     // The platform adds the application name ("… — FATEK Studio"): the title names the document.
-    const QString list = m_path.isEmpty() ? tr("Untitled") : QFileInfo(m_path).fileName();
+    // "[*]": the platform shows the unsaved-changes mark there (setWindowModified).
+    const QString list
+        = (m_path.isEmpty() ? tr("Untitled") : QFileInfo(m_path).fileName()) + QLatin1String("[*]");
     m_window->setWindowTitle(m_window->isReadOnly() ? tr("%1 — Operator mode (read-only)").arg(list)
                                                     : list);
     m_window->setWindowFilePath(m_path);
+    updateModified();
 }
 
 } // namespace Fatek

@@ -56,6 +56,12 @@ public:
     void markSaved(const QString &path);
     bool isModified() const;
     void updateWindowTitle();
+    // The title's unsaved-changes mark ("[*]") follows isModified(); the tables call it when
+    // they change.
+    void updateModified();
+    // With unsaved changes: Save, Discard or Cancel (`action` names what comes next, e.g.
+    // "Open Watch List"); true when the changes are saved or may go.
+    bool maybeSave(const QString &action);
 
 Q_SIGNALS:
     void statusMessage(const QString &text);

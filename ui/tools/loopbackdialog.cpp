@@ -39,7 +39,9 @@ LoopbackDialog::LoopbackDialog(QWidget *parent)
     m_mode->addItem(tr("Hex bytes"));
     m_mode->addItem(tr("Generated pattern"));
     m_mode->setCurrentIndex(2);
-    m_text = new QLineEdit(QStringLiteral("FATEK loopback test"), this);
+    // Test data, the same in every language: FACON carries printable ASCII only, and the
+    // greyed line (pattern mode) shows no English sentence in a translated window.
+    m_text = new QLineEdit(QStringLiteral("FATEK 0123456789"), this);
     m_text->setObjectName(QStringLiteral("dataText"));
     m_length = new QSpinBox(this);
     m_length->setObjectName(QStringLiteral("patternLength"));

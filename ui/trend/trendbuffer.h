@@ -12,7 +12,8 @@
 namespace Fatek {
 
 // The number a trend plots for a raw watch value in the item's format: signed, unsigned, BCD,
-// float and double as their value, hex and binary as unsigned, bits as 0/1. Nothing for ASCII
+// float and double as their value, hex and binary as signed, bits as 0/1 (ValueFormat::number,
+// whatever the text format). Nothing for ASCII
 // (text has no height) or a format that does not fit the item.
 std::optional<double> trendValue(const WatchItemSpec &item, std::uint64_t raw);
 

@@ -1,5 +1,6 @@
 #include "trendvalueaxes.h"
 
+#include <QFontMetrics>
 #include <QtCharts/QChart>
 #include <QtCharts/QValueAxis>
 
@@ -24,9 +25,9 @@ int decimalsFor(double step)
 
 // Ticks on round numbers for the visible range of an analog axis; labels with the digits the
 // step needs.
-void applyNiceTicks(QValueAxis *axis, double min, double max)
+void applyNiceTicks(QValueAxis *axis, double min, double max, int targetTicks)
 {
-    const double step = TrendValueAxes::niceStep(max - min);
+    const double step = TrendValueAxes::niceStep(max - min, targetTicks);
     axis->setTickAnchor(0.0);
     axis->setTickInterval(step);
     axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimalsFor(step)));
@@ -38,6 +39,34 @@ void applyNiceTicks(QValueAxis *axis, double min, double max)
 TrendValueAxes::TrendValueAxes(QChart *chart)
     : m_chart(chart)
 {}
+
+void TrendValueAxes::setPlotHeight(double height)
+{
+    // QtCharts gives each label the height between two ticks (less its padding) and cuts a
+    // label that is taller to "...": a short plot gets fewer, wider-spaced ticks.
+    const int lineHeight = QFontMetrics(m_chart->font()).height();
+    const int fit = static_cast<int>(height / (2.5 * lineHeight));
+    const int target = std::clamp(fit, 1, 5);
+    if (target == m_targetTicks)
+        return;
+    m_targetTicks = target;
+    for (QValueAxis *axis : m_axes) {
+        if (axis != m_bitAxis)
+            applyNiceTicks(axis, axis->min(), axis->max(), m_targetTicks);
+    }
+}
+
+void TrendValueAxes::setChartWidth(double width)
+{
+    // QtCharts squeezes value axes that together want more than a share of the chart's width,
+    // and then cuts their labels to "...".
+    const bool titles = width >= 640;
+    if (titles == m_titles)
+        return;
+    m_titles = titles;
+    for (QValueAxis *axis : m_axes)
+        axis->setTitleVisible(titles);
+}
 
 double TrendValueAxes::niceStep(double range, int targetTicks)
 {
@@ -99,6 +128,7 @@ std::vector<QValueAxis *> TrendValueAxes::rebuild(const std::vector<Line> &lines
         const bool left = !bits && analogAxes++ % 2 == 0;
         m_chart->addAxis(axis, left ? Qt::AlignLeft : Qt::AlignRight);
         axis->setProperty("fatekFresh", true); // ranged by the next fit, also when zoomed
+        axis->setTitleVisible(m_titles);
         m_axes.push_back(axis);
         return axis;
     };
@@ -127,10 +157,11 @@ std::vector<QValueAxis *> TrendValueAxes::rebuild(const std::vector<Line> &lines
     for (QValueAxis *axis : m_axes) {
         if (axis == m_bitAxis)
             continue;
-        applyNiceTicks(axis, axis->min(), axis->max());
+        applyNiceTicks(axis, axis->min(), axis->max(), m_targetTicks);
         // A zoom (rubber band) changes the range: the ticks follow it.
-        QObject::connect(axis, &QValueAxis::rangeChanged, axis,
-                         [axis](qreal min, qreal max) { applyNiceTicks(axis, min, max); });
+        QObject::connect(axis, &QValueAxis::rangeChanged, axis, [this, axis](qreal min, qreal max) {
+            applyNiceTicks(axis, min, max, m_targetTicks);
+        });
     }
     return lineAxes;
 }
@@ -155,7 +186,7 @@ void TrendValueAxes::fit(std::map<QValueAxis *, Span> spans, bool zoomed)
                                                   : std::max(1.0, std::abs(span.max) * 0.05);
         // The new range's step first: the axis lays its ticks out at once when the range
         // changes, and the old step over a range 1000 times wider would be a million ticks.
-        applyNiceTicks(axis, span.min - margin, span.max + margin);
+        applyNiceTicks(axis, span.min - margin, span.max + margin, m_targetTicks);
         axis->setRange(span.min - margin, span.max + margin);
     }
 }

@@ -46,6 +46,11 @@ public:
     // since the last fit, the others keep the user's range.
     void fit(std::map<QValueAxis *, Span> spans, bool zoomed);
     const std::vector<QValueAxis *> &axes() const { return m_axes; }
+    // The plot's height in pixels: as many ticks as leave every label room for its height.
+    void setPlotHeight(double height);
+    // The chart's width in pixels: in a narrow chart the axes show no titles (the legend and the
+    // axes' colours name the lines), so that their labels keep the width they need.
+    void setChartWidth(double width);
 
     // The distance of the ticks on a value axis showing `range`: 1, 2 or 5 times a power of ten,
     // about `targetTicks` ticks.
@@ -57,6 +62,8 @@ private:
     QChart *m_chart;
     std::vector<QValueAxis *> m_axes;
     QValueAxis *m_bitAxis = nullptr;
+    int m_targetTicks = 5;
+    bool m_titles = true;
 };
 
 } // namespace Fatek

@@ -8,6 +8,7 @@
 
 #include <QComboBox>
 #include <QDateTime>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -60,6 +61,19 @@ TrendView::TrendView(QWidget *parent)
     m_timeAxis->setTitleText(tr("Time"));
     m_timeAxis->setTickCount(7);
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
+    // As many time labels as fit whole: QtCharts cuts labels that do not fit their tick's width
+    // to "…" (a narrow dock at 1366x768 showed "12:0…").
+    connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF &area) {
+        const int label
+            = QFontMetrics(m_timeAxis->labelsFont()).horizontalAdvance(QStringLiteral("00:00:00"));
+        const int fit = static_cast<int>(area.width()) / (label + label / 2) + 1;
+        const int ticks = std::clamp(fit, 2, 7);
+        if (ticks != m_timeAxis->tickCount())
+            m_timeAxis->setTickCount(ticks);
+        m_valueAxes.setPlotHeight(area.height());
+    });
+    connect(m_chart, &QGraphicsWidget::geometryChanged, this,
+            [this] { m_valueAxes.setChartWidth(m_chart->size().width()); });
 
     m_chartView = new TrendChartView(
         m_chart, m_timeAxis,

@@ -3,6 +3,7 @@
 #include "ui/common/uitext.h"
 #include "watchtablemodel.h"
 
+#include <QAbstractProxyModel>
 #include <QComboBox>
 
 namespace Fatek {
@@ -10,11 +11,14 @@ namespace Fatek {
 QWidget *WatchDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem &option,
                                      const QModelIndex &index) const
 {
-    const auto *model = qobject_cast<const WatchTableModel *>(index.model());
-    if (!model || index.column() != WatchTableModel::FormatColumn)
+    QModelIndex source = index;
+    if (const auto *proxy = qobject_cast<const QAbstractProxyModel *>(index.model()))
+        source = proxy->mapToSource(index);
+    const auto *model = qobject_cast<const WatchTableModel *>(source.model());
+    if (!model || source.column() != WatchTableModel::FormatColumn)
         return QStyledItemDelegate::createEditor(parent, option, index);
     auto *combo = new QComboBox(parent);
-    for (DisplayFormat f : model->availableFormats(index.row()))
+    for (DisplayFormat f : model->availableFormats(source.row()))
         combo->addItem(UiText::format(f), static_cast<int>(f));
     // A pick (mouse or keyboard) is the whole edit: apply it now rather than when focus leaves.
     auto *self = const_cast<WatchDelegate *>(this);
@@ -46,7 +50,10 @@ void WatchDelegate::setModelData(QWidget *editor, QAbstractItemModel *model,
                                  const QModelIndex &index) const
 {
     if (auto *combo = qobject_cast<QComboBox *>(editor)) {
-        model->setData(index, combo->currentData().toInt(), Qt::EditRole);
+        if (m_formatHandler)
+            m_formatHandler(index, static_cast<DisplayFormat>(combo->currentData().toInt()));
+        else
+            model->setData(index, combo->currentData().toInt(), Qt::EditRole);
         return;
     }
     QStyledItemDelegate::setModelData(editor, model, index);

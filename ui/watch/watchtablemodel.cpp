@@ -5,6 +5,7 @@
 #include <QFont>
 #include <QGuiApplication>
 #include <QIcon>
+#include <QLocale>
 #include <QPalette>
 
 #include <algorithm>
@@ -16,6 +17,18 @@ namespace Fatek {
 namespace {
 
 std::atomic<quint64> nextRowKey{1};
+
+// "0.4 s", "12 s", "3 min", "2 h": precise while it matters, short always.
+QString ageText(qint64 ms)
+{
+    if (ms < 10000)
+        return WatchTableModel::tr("%1 s").arg(QLocale().toString(double(ms) / 1000.0, 'f', 1));
+    if (ms < 60000)
+        return WatchTableModel::tr("%1 s").arg(ms / 1000);
+    if (ms < 3600000)
+        return WatchTableModel::tr("%1 min").arg(ms / 60000);
+    return WatchTableModel::tr("%1 h").arg(ms / 3600000);
+}
 
 QString qualityName(ValueQuality quality)
 {
@@ -40,6 +53,9 @@ WatchTableModel::WatchTableModel(QObject *parent)
     m_clock.start();
     m_flashTimer.setInterval(100);
     connect(&m_flashTimer, &QTimer::timeout, this, &WatchTableModel::expireFlashes);
+    // One timer for every row's age: a few repaints a second of the quality column only.
+    m_ageTimer.setInterval(ageRefreshMs);
+    connect(&m_ageTimer, &QTimer::timeout, this, &WatchTableModel::refreshAges);
     m_sliceTimer.setSingleShot(true);
     connect(&m_sliceTimer, &QTimer::timeout, this, [this] {
         if (!m_inRound) {
@@ -52,6 +68,11 @@ WatchTableModel::WatchTableModel(QObject *parent)
         else
             scheduleSlice();
     });
+}
+
+quint64 WatchTableModel::newRowKey()
+{
+    return nextRowKey++;
 }
 
 int WatchTableModel::rowCount(const QModelIndex &parent) const
@@ -82,24 +103,6 @@ void WatchTableModel::rebuildIndex()
         m_index.insert(m_rows.at(r).itemKey, r);
 }
 
-void WatchTableModel::addItems(const QList<WatchItemSpec> &items)
-{
-    if (items.isEmpty())
-        return;
-    const int first = static_cast<int>(m_rows.size());
-    beginInsertRows({}, first, first + static_cast<int>(items.size()) - 1);
-    for (const WatchItemSpec &spec : items) {
-        Row row;
-        row.values = ItemValues(withSymbols(spec));
-        row.key = nextRowKey++;
-        resetValue(row);
-        m_rows.append(std::move(row));
-    }
-    rebuildIndex();
-    endInsertRows();
-    Q_EMIT pollListChanged();
-}
-
 void WatchTableModel::setItems(const QList<WatchItemSpec> &items)
 {
     beginResetModel();
@@ -110,8 +113,11 @@ void WatchTableModel::setItems(const QList<WatchItemSpec> &items)
     m_rows.clear();
     m_index.clear();
     endResetModel();
-    addItems(items);
-    if (items.isEmpty())
+    // Another list: the steps taken on the old one mean nothing here.
+    m_undo.clear();
+    if (!items.isEmpty())
+        applyInsert(0, items);
+    else
         Q_EMIT pollListChanged();
 }
 
@@ -128,11 +134,10 @@ bool WatchTableModel::removeRows(int row, int count, const QModelIndex &parent)
 {
     if (parent.isValid() || row < 0 || count <= 0 || row + count > m_rows.size())
         return false;
-    beginRemoveRows({}, row, row + count - 1);
-    m_rows.remove(row, count);
-    rebuildIndex();
-    endRemoveRows();
-    Q_EMIT pollListChanged();
+    QList<int> rows;
+    for (int r = row; r < row + count; ++r)
+        rows.append(r);
+    removeItems(rows);
     return true;
 }
 
@@ -157,25 +162,6 @@ QList<DisplayFormat> WatchTableModel::availableFormats(int row) const
     return list;
 }
 
-Status WatchTableModel::setFormat(int row, DisplayFormat format, bool swapWords)
-{
-    WatchItemSpec spec = m_rows.at(row).spec();
-    spec.format = format;
-    spec.swapWords = swapWords;
-    if (Status s = WatchList::validateEntry(spec); !s)
-        return s;
-    Row &r = m_rows[row];
-    const bool spanChanged = r.values.setItem(spec);
-    if (spanChanged) {
-        resetValue(r);
-        rebuildIndex();
-    }
-    Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
-    if (spanChanged)
-        Q_EMIT pollListChanged();
-    return Ok{};
-}
-
 int WatchTableModel::valueWidth(int row) const
 {
     return m_rows.at(row).values.width();
@@ -194,6 +180,24 @@ std::uint64_t WatchTableModel::rawValue(int row) const
 ValueQuality WatchTableModel::quality(int row) const
 {
     return m_rows.at(row).quality;
+}
+
+qint64 WatchTableModel::ageMs(int row) const
+{
+    const Row &r = m_rows.at(row);
+    if (!r.received || !r.updated.isValid())
+        return -1;
+    return std::max<qint64>(0, QDateTime::currentMSecsSinceEpoch() - r.updated.toMSecsSinceEpoch());
+}
+
+void WatchTableModel::refreshAges()
+{
+    if (m_rows.isEmpty()) {
+        m_ageTimer.stop();
+        return;
+    }
+    Q_EMIT dataChanged(index(0, QualityColumn), index(rowCount() - 1, QualityColumn),
+                       {Qt::DisplayRole});
 }
 
 QString WatchTableModel::qualityReason(int row) const
@@ -322,11 +326,17 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         case FormatColumn:
             return spec.swapWords ? tr("%1, words swapped").arg(UiText::format(spec.format))
                                   : UiText::format(spec.format);
-        case QualityColumn:
+        case QualityColumn: {
             // Short enough for the column; the station is beside it and in the tooltip.
-            if (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
-                return tr("no answer");
-            return (!have && q != ValueQuality::Error) ? tr("waiting") : qualityName(q);
+            QString text = (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
+                               ? tr("no answer")
+                           : (!have && q != ValueQuality::Error) ? tr("waiting")
+                                                                 : qualityName(q);
+            // How old the value is: a good value a minute old is worth knowing about.
+            if (const qint64 age = ageMs(r); age >= 0)
+                return tr("%1, %2", "quality, age of the value").arg(text, ageText(age));
+            return text;
+        }
         case UpdatedColumn: {
             const QDateTime &latest = row.updated;
             return latest.isValid() ? latest.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz"))
@@ -342,6 +352,22 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         case ValueColumn: return valueText(r);
         case FormatColumn: return static_cast<int>(spec.format);
         case CommentColumn: return spec.comment;
+        default: return data(index, Qt::DisplayRole);
+        }
+    case SortRole:
+        switch (index.column()) {
+        case AddressColumn:
+            return (qulonglong(spec.address.type) << 32) | qulonglong(spec.address.number);
+        case StationColumn: return spec.station;
+        case ValueColumn: {
+            if (!have)
+                return {};
+            const std::optional<double> value
+                = ValueFormat::number(row.raw, row.values.width(), spec.format, spec.swapWords);
+            return value ? QVariant(*value) : QVariant(valueText(r));
+        }
+        case QualityColumn: return static_cast<int>(q);
+        case UpdatedColumn: return row.updated.isValid() ? row.updated.toMSecsSinceEpoch() : 0;
         default: return data(index, Qt::DisplayRole);
         }
     case Qt::CheckStateRole:
@@ -446,9 +472,13 @@ Qt::ItemFlags WatchTableModel::flags(const QModelIndex &index) const
     Qt::ItemFlags f = QAbstractTableModel::flags(index);
     if (!index.isValid())
         return f;
+
     const bool discrete = isDiscrete(m_rows.at(index.row()).spec().address.type);
+    // Every cell drags its row (WatchTableView; the table moves the rows with moveItemsTo).
+    f |= Qt::ItemIsDragEnabled;
     switch (index.column()) {
     case NameColumn:
+    case AddressColumn:
     case StationColumn:
     case FormatColumn:
     case CommentColumn: return f | Qt::ItemIsEditable;
@@ -486,17 +516,25 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
     }
     if (role != Qt::EditRole)
         return false;
-    // Name, comment and station leave the elements as they are: the poll ids stay.
+    // One step on the undo stack per edit; name, comment and station leave the elements as they
+    // are (the poll ids stay).
     WatchItemSpec spec = row.spec();
     switch (index.column()) {
-    case NameColumn:
-        spec.name = value.toString();
-        row.values.setItem(spec);
+    case NameColumn: spec.name = value.toString(); break;
+    case CommentColumn: spec.comment = value.toString(); break;
+    case AddressColumn: {
+        const auto address = Address::parse(value.toString().trimmed().toUpper().toStdString());
+        if (!address) {
+            Q_EMIT inputRejected(
+                tr("%1: %2").arg(value.toString(), translated(address.error().message)));
+            return false;
+        }
+        spec.address = *address;
+        // A format the new element cannot show gives way to the element's usual one.
+        if (!WatchList::validateEntry(spec))
+            spec.format = ValueFormat::defaultFormat(*address);
         break;
-    case CommentColumn:
-        spec.comment = value.toString();
-        row.values.setItem(spec);
-        break;
+    }
     case StationColumn: {
         bool ok = false;
         const int station = value.toInt(&ok);
@@ -505,10 +543,7 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
             return false;
         }
         spec.station = static_cast<quint8>(station);
-        row.values.setItem(spec);
-        Q_EMIT dataChanged(index, index);
-        Q_EMIT pollListChanged();
-        return true;
+        break;
     }
     case FormatColumn: {
         std::optional<DisplayFormat> format;
@@ -522,16 +557,15 @@ bool WatchTableModel::setData(const QModelIndex &index, const QVariant &value, i
             Q_EMIT inputRejected(tr("Unknown format \"%1\".").arg(value.toString()));
             return false;
         }
-        const Status s = setFormat(r, *format, spec.swapWords);
-        if (!s) {
-            Q_EMIT inputRejected(translated(s.error().message));
-            return false;
-        }
-        return true;
+        spec.format = *format;
+        break;
     }
     default: return false;
     }
-    Q_EMIT dataChanged(index, index);
+    if (const Status s = editItem(r, spec); !s) {
+        Q_EMIT inputRejected(translated(s.error().message));
+        return false;
+    }
     return true;
 }
 

@@ -10,6 +10,7 @@
 #include <QIcon>
 #include <QPointer>
 #include <QTimer>
+#include <QUndoStack>
 
 #include <optional>
 #include <vector>
@@ -44,6 +45,10 @@ public:
     };
     // How long a changed value stays highlighted.
     static constexpr int flashMs = 700;
+    // How often the quality column's value ages ("good, 0.4 s") are repainted.
+    static constexpr int ageRefreshMs = 250;
+    // What a sorting proxy compares: numbers for addresses, values and times, else the text.
+    static constexpr int SortRole = Qt::UserRole + 1;
 
     explicit WatchTableModel(QObject *parent = nullptr);
 
@@ -58,8 +63,26 @@ public:
     bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
     bool removeRows(int row, int count, const QModelIndex &parent = {}) override;
 
+    // Edits a person makes to the rows (typed, pasted, dragged, removed, formats) are steps on
+    // undoStack(); each of the calls below is one step. Values written to the PLC never are: a
+    // write cannot be taken back. setItems (a list loaded) starts a new history.
+    QUndoStack *undoStack() { return &m_undo; }
     // Rows whose name or comment is empty take those of the window's names (setSymbols).
     void addItems(const QList<WatchItemSpec> &items);
+    void insertItems(int row, const QList<WatchItemSpec> &items);
+    void removeItems(QList<int> rows);
+    // Moves `rows` one place up (delta -1) or down (+1), as a block past their neighbour;
+    // false when nothing can move (at the top or bottom already).
+    bool moveItems(const QList<int> &rows, int delta);
+    // Moves `rows` to stand, in their order, before the row that is `destination` now
+    // (rowCount(): at the end).
+    bool moveItemsTo(const QList<int> &rows, int destination);
+    // Replaces row `row`'s item (address, name, comment, station, format), validated as a file's
+    // entry is.
+    Status editItem(int row, const WatchItemSpec &spec);
+    // One format for several rows, one step; rows whose element cannot show it keep theirs and
+    // the first refusal is returned.
+    Status setFormats(const QList<int> &rows, DisplayFormat format);
     void setItems(const QList<WatchItemSpec> &items);
     // The window's names (the ladder project's, see SymbolNames), not owned; nullptr: none.
     // Rows added from now on get the names their addresses have there when theirs are empty,
@@ -68,7 +91,8 @@ public:
     void setSymbols(const SymbolNames *symbols);
     QList<WatchItemSpec> items() const;
     WatchItemSpec item(int row) const { return m_rows.at(row).values.item(); }
-    // Changes the format (and word order); refused with a message when it does not fit the item.
+    // Changes the format (and word order), one step; refused with a message when it does not
+    // fit the item.
     Status setFormat(int row, DisplayFormat format, bool swapWords);
     QList<DisplayFormat> availableFormats(int row) const;
 
@@ -77,6 +101,8 @@ public:
     bool hasValue(int row) const;
     std::uint64_t rawValue(int row) const;
     ValueQuality quality(int row) const;
+    // Milliseconds since the row's value was last read (-1: never).
+    qint64 ageMs(int row) const;
     QString qualityReason(int row) const;
     QString valueText(int row) const;
 
@@ -124,8 +150,12 @@ Q_SIGNALS:
     void inputRejected(const QString &message);
     // The set of watched items changed: hand watchItems() to the link again.
     void pollListChanged();
+    // The rows (their items, their order) changed: what a saved list holds.
+    void itemsEdited();
 
 private:
+    friend class WatchRowsCommand;
+
     struct Row
     {
         ItemValues values; // the item: its elements, their join, its text and parsing
@@ -159,6 +189,14 @@ private:
     };
 
     static void resetValue(Row &row);
+    static quint64 newRowKey();
+    // The steps' own changes, without history.
+    void applyInsert(int row, const QList<WatchItemSpec> &items);
+    void applyRemove(int row, int count);
+    void applySpec(int row, const WatchItemSpec &spec);
+    // Row i becomes the row that was order[i].
+    void applyOrder(const QList<int> &order);
+    void refreshAges();
     WatchItemSpec withSymbols(WatchItemSpec spec) const;
     void applySymbols(const SymbolTable &previous);
     void rebuildIndex();
@@ -173,6 +211,8 @@ private:
     QHash<quint64, int> m_index; // item key -> row
     QElapsedTimer m_clock;
     QTimer m_flashTimer;
+    QTimer m_ageTimer;
+    QUndoStack m_undo;
     // Loaded once: a QIcon made per paint would parse its SVG every time.
     QIcon m_goodIcon;
     QIcon m_staleIcon;

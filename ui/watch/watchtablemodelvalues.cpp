@@ -137,6 +137,9 @@ void WatchTableModel::finishSlice()
     m_touchedRows.clear();
     if (flashed && !m_flashTimer.isActive())
         m_flashTimer.start();
+    // Values have come: their ages grow from now on.
+    if (!m_updatedRows.empty() && !m_ageTimer.isActive())
+        m_ageTimer.start();
     emitRowsChanged(std::exchange(m_valueRows, {}), ValueColumn, ValueColumn);
     emitRowsChanged(std::exchange(m_qualityRows, {}), QualityColumn, QualityColumn);
     emitRowsChanged(std::exchange(m_updatedRows, {}), UpdatedColumn, UpdatedColumn);

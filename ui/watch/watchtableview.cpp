@@ -1,9 +1,157 @@
 #include "watchtableview.h"
 
 #include <QAccessible>
+#include <QDrag>
+#include <QDragEnterEvent>
+#include <QDragMoveEvent>
+#include <QDropEvent>
 #include <QHeaderView>
+#include <QMimeData>
+#include <QPainter>
+
+#include <algorithm>
 
 namespace Fatek {
+
+WatchTableView::WatchTableView(QWidget *parent)
+    : QTableView(parent)
+{
+    setRowsMovable(true);
+    setDropIndicatorShown(false); // the view's own is per cell; the line below is per row
+}
+
+void WatchTableView::setRowsMovable(bool movable)
+{
+    setDragEnabled(movable);
+    setAcceptDrops(movable);
+    setDragDropMode(movable ? QAbstractItemView::InternalMove : QAbstractItemView::NoDragDrop);
+}
+
+int WatchTableView::dropRow(const QPoint &pos) const
+{
+    const int row = rowAt(pos.y());
+    if (row < 0)
+        return model() ? model()->rowCount(rootIndex()) : 0;
+    // The upper half of a row drops before it, the lower half after it.
+    const int middle = rowViewportPosition(row) + rowHeight(row) / 2;
+    return pos.y() < middle ? row : row + 1;
+}
+
+void WatchTableView::setDropLine(int row)
+{
+    if (row == m_dropRow)
+        return;
+    m_dropRow = row;
+    viewport()->update();
+}
+
+QMimeData *WatchTableView::rowsMimeData() const
+{
+    if (!selectionModel())
+        return nullptr;
+    QList<int> rows;
+    for (const QModelIndex &index : selectionModel()->selectedRows())
+        rows.append(index.row());
+    if (rows.isEmpty())
+        return nullptr;
+    std::sort(rows.begin(), rows.end());
+    // The view names itself: rows of another table (or window) mean nothing here.
+    QStringList words{QString::number(reinterpret_cast<quintptr>(this))};
+    for (int r : std::as_const(rows))
+        words << QString::number(r);
+    auto *mime = new QMimeData;
+    mime->setData(QLatin1String(rowsMimeType), words.join(QLatin1Char(' ')).toLatin1());
+    return mime;
+}
+
+QList<int> WatchTableView::draggedRows(const QMimeData *mime) const
+{
+    if (!mime || !dragEnabled() || !mime->hasFormat(QLatin1String(rowsMimeType)))
+        return {};
+    const QList<QByteArray> words = mime->data(QLatin1String(rowsMimeType)).split(' ');
+    if (words.size() < 2 || words.first() != QByteArray::number(reinterpret_cast<quintptr>(this)))
+        return {};
+    QList<int> rows;
+    const int count = model() ? model()->rowCount(rootIndex()) : 0;
+    for (qsizetype i = 1; i < words.size(); ++i) {
+        bool ok = false;
+        const int r = words.at(i).toInt(&ok);
+        if (!ok || r < 0 || r >= count)
+            return {};
+        rows.append(r);
+    }
+    return rows;
+}
+
+void WatchTableView::startDrag(Qt::DropActions supportedActions)
+{
+    Q_UNUSED(supportedActions)
+    QMimeData *mime = rowsMimeData();
+    if (!mime)
+        return;
+    // The rows are moved where they are dropped; nothing is removed here when the drag ends.
+    auto *drag = new QDrag(this);
+    drag->setMimeData(mime);
+    drag->exec(Qt::MoveAction, Qt::MoveAction);
+}
+
+void WatchTableView::dragEnterEvent(QDragEnterEvent *event)
+{
+    if (draggedRows(event->mimeData()).isEmpty()) {
+        event->ignore();
+        return;
+    }
+    setState(DraggingState);
+    event->setDropAction(Qt::MoveAction);
+    event->accept();
+}
+
+void WatchTableView::dragMoveEvent(QDragMoveEvent *event)
+{
+    if (draggedRows(event->mimeData()).isEmpty()) {
+        event->ignore();
+        return;
+    }
+    setDropLine(dropRow(event->position().toPoint()));
+    event->setDropAction(Qt::MoveAction);
+    event->accept();
+}
+
+void WatchTableView::dragLeaveEvent(QDragLeaveEvent *event)
+{
+    setDropLine(-1);
+    setState(NoState);
+    QTableView::dragLeaveEvent(event);
+}
+
+void WatchTableView::dropEvent(QDropEvent *event)
+{
+    setDropLine(-1);
+    stopAutoScroll();
+    setState(NoState);
+    const QList<int> rows = draggedRows(event->mimeData());
+    if (rows.isEmpty()) {
+        event->ignore();
+        return;
+    }
+    event->setDropAction(Qt::MoveAction);
+    event->accept();
+    Q_EMIT rowsDropped(rows, dropRow(event->position().toPoint()));
+}
+
+void WatchTableView::paintEvent(QPaintEvent *event)
+{
+    QTableView::paintEvent(event);
+    if (m_dropRow < 0 || !model())
+        return;
+    const int rows = model()->rowCount(rootIndex());
+    const int y = m_dropRow < rows ? rowViewportPosition(m_dropRow)
+                  : rows > 0       ? rowViewportPosition(rows - 1) + rowHeight(rows - 1)
+                                   : 0;
+    QPainter painter(viewport());
+    painter.setPen(QPen(palette().color(QPalette::Highlight), 2));
+    painter.drawLine(0, y, viewport()->width(), y);
+}
 
 void WatchTableView::dataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight,
                                  const QList<int> &roles)

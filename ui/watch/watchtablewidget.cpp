@@ -8,6 +8,7 @@
 #include "watchdelegate.h"
 #include "watchinput.h"
 #include "watchtablemodel.h"
+#include "watchtableproxy.h"
 #include "watchtableview.h"
 
 #include <QAction>
@@ -15,6 +16,7 @@
 #include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
@@ -35,6 +37,7 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     , m_manager(manager)
     , m_name(tr("Watch"))
     , m_model(new WatchTableModel(this))
+    , m_proxy(new WatchTableProxy(this))
     , m_view(new WatchTableView(this))
     , m_forcedMarks(new ForcedMarks(m_model, this))
 {
@@ -86,9 +89,39 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     m_message = new MessageLine(1, this);
     m_message->setObjectName(QStringLiteral("messageLabel"));
 
+    // Beside the message line: it takes no height of its own from the rows.
+    m_filterEdit = new QLineEdit(this);
+    m_filterEdit->setObjectName(QStringLiteral("filterEdit"));
+    m_filterEdit->setPlaceholderText(tr("Filter: address, name or comment"));
+    m_filterEdit->setClearButtonEnabled(true);
+    m_filterEdit->setToolTip(tr("Show only the rows whose address, name or comment contains this "
+                                "text (Ctrl+F)"));
+    // Wide enough for its placeholder, which says what it searches.
+    m_filterEdit->setMinimumWidth(
+        m_filterEdit->fontMetrics().horizontalAdvance(m_filterEdit->placeholderText()) + 40);
+    auto *findAction = new QAction(this);
+    findAction->setShortcut(QKeySequence::Find);
+    findAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(findAction);
+    connect(findAction, &QAction::triggered, m_filterEdit, [this] {
+        m_filterEdit->setFocus(Qt::ShortcutFocusReason);
+        m_filterEdit->selectAll();
+    });
+
+    m_proxy->setSourceModel(m_model);
     m_view->setObjectName(QStringLiteral("watchView"));
-    m_view->setModel(m_model);
-    m_view->setItemDelegate(new WatchDelegate(m_view));
+    m_view->setModel(m_proxy);
+    auto *delegate = new WatchDelegate(m_view);
+    // A format picked in one row's combo goes to every selected row with it.
+    delegate->setFormatHandler([this](const QModelIndex &index, DisplayFormat format) {
+        QList<int> rows = selectedRows();
+        const int row = modelRow(index);
+        if (!rows.contains(row))
+            rows = {row};
+        if (const Status s = m_model->setFormats(rows, format); !s)
+            showMessage(translated(s.error().message), true);
+    });
+    m_view->setItemDelegate(delegate);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
                             | QAbstractItemView::AnyKeyPressed);
@@ -98,10 +131,19 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     m_view->verticalHeader()->hide();
     QHeaderView *header = m_view->horizontalHeader();
     header->setStretchLastSection(true);
+    // Click a header to sort, again for the other way, a third time for the rows' own order.
+    header->setSortIndicatorClearable(true);
+    header->setSortIndicator(-1, Qt::AscendingOrder); // not sorted by the first column at start
+    m_view->setSortingEnabled(true);
     const int em = m_view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    const int widths[] = {14, 7, 5, 13, 9, 8, 9, 10};
+    // Quality holds its age too ("good, 0.4 s"). The comment stretches into what is left: its own
+    // width is the least it keeps (a stretched last section never gets narrower than that).
+    const int widths[] = {14, 7, 5, 13, 9, 10, 9, 3};
     for (int c = 0; c < WatchTableModel::ColumnCount; ++c)
         header->resizeSection(c, widths[c] * em);
+    header->setMinimumSectionSize(3 * em);
+    m_view->setTextElideMode(Qt::ElideRight);
+    m_view->viewport()->installEventFilter(this);
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
 
     auto *writeAction = new QAction(tr("&Write Value…"), m_view);
@@ -110,35 +152,94 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     m_swapAction = new QAction(tr("&Swap Words"), m_view);
     m_swapAction->setToolTip(
         tr("Low word first for 32- and 64-bit values (some HMIs store floats so)"));
+    auto *copyAction = new QAction(tr("&Copy Rows"), m_view);
+    copyAction->setObjectName(QStringLiteral("copyRowsAction"));
+    copyAction->setShortcut(QKeySequence::Copy);
+    copyAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    copyAction->setToolTip(tr("Address, name, value, format, quality and comment of the selected "
+                              "rows as tab-separated text"));
     auto *pasteAction = new QAction(tr("&Paste Items"), m_view);
+    pasteAction->setObjectName(QStringLiteral("pasteItemsAction"));
     pasteAction->setShortcut(QKeySequence::Paste);
     pasteAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     auto *removeAction
         = new QAction(QIcon(QStringLiteral(":/icons/remove.svg")), tr("&Remove"), m_view);
     removeAction->setShortcut(QKeySequence::Delete);
     removeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    m_view->addActions({writeAction, m_swapAction, pasteAction, removeAction});
+    // The steps of the rows' edits; writes to the PLC are not among them.
+    QAction *undoAction = m_model->undoStack()->createUndoAction(this, tr("&Undo"));
+    undoAction->setObjectName(QStringLiteral("undoAction"));
+    undoAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
+    undoAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    QAction *redoAction = m_model->undoStack()->createRedoAction(this, tr("&Redo"));
+    redoAction->setObjectName(QStringLiteral("redoAction"));
+    redoAction->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::Key_Y), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)});
+    redoAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addActions({undoAction, redoAction});
+    m_moveUpAction = new QAction(tr("Move &Up"), m_view);
+    m_moveUpAction->setObjectName(QStringLiteral("moveUpAction"));
+    m_moveUpAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Up));
+    m_moveUpAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_moveDownAction = new QAction(tr("Move &Down"), m_view);
+    m_moveDownAction->setObjectName(QStringLiteral("moveDownAction"));
+    m_moveDownAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Down));
+    m_moveDownAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    auto *ownOrderAction = new QAction(tr("Own &Order"), m_view);
+    ownOrderAction->setObjectName(QStringLiteral("ownOrderAction"));
+    ownOrderAction->setToolTip(tr("Show the rows in the order you gave them, not sorted"));
+    m_formatMenu = new QMenu(tr("Set &Format"), this);
+    m_formatMenu->setObjectName(QStringLiteral("formatMenu"));
+    auto *separator = new QAction(m_view);
+    separator->setSeparator(true);
+    auto *separator2 = new QAction(m_view);
+    separator2->setSeparator(true);
+    m_view->addActions({writeAction, m_formatMenu->menuAction(), m_swapAction, separator,
+                        undoAction, redoAction, copyAction, pasteAction, removeAction, separator2,
+                        m_moveUpAction, m_moveDownAction, ownOrderAction});
     auto *trendAction = new QAction(tr("Add to &Trend"), m_view);
     trendAction->setToolTip(tr("Plot the selected items over time in the trend view"));
     m_view->addAction(trendAction);
     connect(trendAction, &QAction::triggered, this, [this] {
-        QList<int> rows;
-        for (const QModelIndex &index : m_view->selectionModel()->selectedIndexes()) {
-            if (!rows.contains(index.row()))
-                rows.append(index.row());
-        }
-        if (rows.isEmpty() && m_view->currentIndex().isValid())
-            rows.append(m_view->currentIndex().row());
-        std::sort(rows.begin(), rows.end());
+        const QList<int> rows = selectedRows();
         if (!rows.isEmpty())
             Q_EMIT addToTrendRequested(rows);
     });
 
+    auto *messageBar = new QHBoxLayout;
+    messageBar->addWidget(m_message, 1);
+    messageBar->addWidget(m_filterEdit);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(bar);
-    layout->addWidget(m_message);
+    layout->addLayout(messageBar);
     layout->addWidget(m_view, 1);
+
+    connect(copyAction, &QAction::triggered, this, &WatchTableWidget::copySelected);
+    connect(m_moveUpAction, &QAction::triggered, this, [this] { moveSelected(-1); });
+    connect(m_moveDownAction, &QAction::triggered, this, [this] { moveSelected(1); });
+    connect(ownOrderAction, &QAction::triggered, this,
+            [this] { m_view->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder); });
+    connect(m_formatMenu, &QMenu::aboutToShow, this, &WatchTableWidget::fillFormatMenu);
+    connect(m_filterEdit, &QLineEdit::textChanged, m_proxy, &WatchTableProxy::setFilterText);
+    // Rows are moved in the model's order: not while the view shows another.
+    connect(m_proxy, &WatchTableProxy::rearrangedChanged, this, [this](bool rearranged) {
+        m_view->setRowsMovable(!rearranged);
+        m_moveUpAction->setEnabled(!rearranged);
+        m_moveDownAction->setEnabled(!rearranged);
+    });
+    connect(m_view, &WatchTableView::rowsDropped, this,
+            [this](const QList<int> &rows, int destination) {
+                QList<int> moved;
+                for (int r : rows)
+                    moved.append(modelRow(m_proxy->index(r, 0)));
+                // Not rearranged (else no drag): the view's rows are the model's.
+                m_model->moveItemsTo(moved, destination);
+            });
+    connect(m_model, &WatchTableModel::itemsEdited, this, &WatchTableWidget::edited);
+    connect(m_interval, &QSpinBox::valueChanged, this, &WatchTableWidget::edited);
+    connect(m_confirmBox, &QCheckBox::toggled, this, &WatchTableWidget::edited);
+    connect(this, &WatchTableWidget::nameChanged, this, &WatchTableWidget::edited);
 
     connect(m_addEdit, &QLineEdit::returnPressed, this, [this] { addFromText(m_addEdit->text()); });
     connect(addButton, &QPushButton::clicked, this, [this] { addFromText(m_addEdit->text()); });
@@ -198,6 +299,152 @@ WatchTableWidget::~WatchTableWidget()
 {
     if (m_connection)
         m_connection->setWatchItems(this, {});
+}
+
+QTableView *WatchTableWidget::view() const
+{
+    return m_view;
+}
+
+QModelIndex WatchTableWidget::viewIndex(const QModelIndex &modelIndex) const
+{
+    return m_proxy->mapFromSource(modelIndex);
+}
+
+int WatchTableWidget::modelRow(const QModelIndex &viewIndex) const
+{
+    const QModelIndex source
+        = viewIndex.model() == m_model ? viewIndex : m_proxy->mapToSource(viewIndex);
+    return source.isValid() ? source.row() : -1;
+}
+
+QList<int> WatchTableWidget::selectedRows() const
+{
+    QList<int> rows;
+    for (const QModelIndex &index : m_view->selectionModel()->selectedIndexes()) {
+        const int row = modelRow(index);
+        if (row >= 0 && !rows.contains(row))
+            rows.append(row);
+    }
+    if (rows.isEmpty() && m_view->currentIndex().isValid())
+        rows.append(modelRow(m_view->currentIndex()));
+    std::sort(rows.begin(), rows.end());
+    return rows;
+}
+
+QString WatchTableWidget::selectedRowsText() const
+{
+    // The rows as the view shows them (sorted, filtered).
+    QList<int> viewRows;
+    for (const QModelIndex &index : m_view->selectionModel()->selectedIndexes()) {
+        if (!viewRows.contains(index.row()))
+            viewRows.append(index.row());
+    }
+    if (viewRows.isEmpty() && m_view->currentIndex().isValid())
+        viewRows.append(m_view->currentIndex().row());
+    std::sort(viewRows.begin(), viewRows.end());
+    // A field with the separator of pasted rows (tab, turned into ';' by the paste) or a quote
+    // is quoted, as CSV quotes it.
+    const auto field = [](QString text) {
+        if (text.contains(QLatin1Char(';')) || text.contains(QLatin1Char('"'))
+            || text.contains(QLatin1Char('\t')) || text.contains(QLatin1Char('\n'))) {
+            text.replace(QLatin1Char('"'), QLatin1String("\"\""));
+            text = QLatin1Char('"') + text + QLatin1Char('"');
+        }
+        return text;
+    };
+    // The header's words are the watch list file's column names (not translated): a paste reads
+    // the columns by them, in any language.
+    QStringList lines{QStringLiteral("address\tname\tvalue\tformat\tquality\tcomment")};
+    for (int viewRow : std::as_const(viewRows)) {
+        const int row = modelRow(m_proxy->index(viewRow, 0));
+        if (row < 0)
+            continue;
+        const WatchItemSpec item = m_model->item(row);
+        const QString quality
+            = m_model->index(row, WatchTableModel::QualityColumn).data().toString();
+        lines << QStringList{QString::fromStdString(item.address.toString()),
+                             field(item.name),
+                             field(m_model->valueText(row)),
+                             ValueFormat::name(item.format),
+                             field(quality),
+                             field(item.comment)}
+                     .join(QLatin1Char('\t'));
+    }
+    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
+void WatchTableWidget::copySelected()
+{
+    if (selectedRows().isEmpty())
+        return;
+    QApplication::clipboard()->setText(selectedRowsText());
+    showMessage(tr("Copied %n row(s).", nullptr, static_cast<int>(selectedRows().size())), false);
+}
+
+void WatchTableWidget::moveSelected(int delta)
+{
+    if (m_proxy->isRearranged())
+        return;
+    m_model->moveItems(selectedRows(), delta);
+    // The current row goes along (the selection does, as persistent indexes).
+    m_view->scrollTo(m_view->currentIndex());
+}
+
+void WatchTableWidget::setSelectedFormat(DisplayFormat format)
+{
+    if (const Status s = m_model->setFormats(selectedRows(), format); !s)
+        showMessage(translated(s.error().message), true);
+}
+
+void WatchTableWidget::fillFormatMenu()
+{
+    m_formatMenu->clear();
+    const QList<int> rows = selectedRows();
+    if (rows.isEmpty())
+        return;
+    // The formats every selected row can show.
+    QList<DisplayFormat> formats = m_model->availableFormats(rows.first());
+    for (int r : rows) {
+        const QList<DisplayFormat> own = m_model->availableFormats(r);
+        formats.removeIf([&own](DisplayFormat f) { return !own.contains(f); });
+    }
+    for (DisplayFormat f : std::as_const(formats)) {
+        QAction *a = m_formatMenu->addAction(UiText::format(f));
+        a->setObjectName(QStringLiteral("format_") + ValueFormat::name(f));
+        connect(a, &QAction::triggered, this, [this, f] { setSelectedFormat(f); });
+    }
+}
+
+bool WatchTableWidget::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_view->viewport() && event->type() == QEvent::Resize)
+        fitColumns();
+    return QWidget::eventFilter(watched, event);
+}
+
+void WatchTableWidget::fitColumns()
+{
+    QHeaderView *header = m_view->horizontalHeader();
+    const int em = m_view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    const int lastColumn = WatchTableModel::CommentColumn;
+    int others = 0;
+    for (int c = 0; c < lastColumn; ++c)
+        others += header->isSectionHidden(c) ? 0 : header->sectionSize(c);
+    int excess = others + 6 * em - m_view->viewport()->width();
+    // The name gives room first (it elides), then the value and the time.
+    for (const auto &[column, least] : {std::pair{int(WatchTableModel::NameColumn), 7 * em},
+                                        std::pair{int(WatchTableModel::ValueColumn), 8 * em},
+                                        std::pair{int(WatchTableModel::UpdatedColumn), 7 * em}}) {
+        if (excess <= 0)
+            break;
+        const int size = header->sectionSize(column);
+        const int give = std::clamp(size - least, 0, excess);
+        if (give > 0) {
+            header->resizeSection(column, size - give);
+            excess -= give;
+        }
+    }
 }
 
 void WatchTableWidget::refreshConnections()
@@ -398,6 +645,7 @@ bool WatchTableWidget::addFromPaste(const QString &text)
         showMessage(tr("Cannot paste: %1").arg(translated(items.error().message)), true);
         return false;
     }
+    // Rows only, as new rows: a paste never writes a value to the PLC.
     m_model->addItems(*items);
     showMessage(tr("Pasted %n item(s).", nullptr, static_cast<int>(items->size())), false);
     return true;
@@ -454,20 +702,14 @@ void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const Link
 
 void WatchTableWidget::removeSelected()
 {
-    QList<int> rows;
-    for (const QModelIndex &index : m_view->selectionModel()->selectedRows())
-        rows.append(index.row());
-    std::sort(rows.begin(), rows.end(), std::greater<>());
-    for (int row : std::as_const(rows))
-        m_model->removeRows(row, 1);
+    m_model->removeItems(selectedRows());
 }
 
 void WatchTableWidget::writeDialog()
 {
-    const QModelIndex current = m_view->currentIndex();
-    if (!current.isValid())
+    const int row = modelRow(m_view->currentIndex());
+    if (row < 0)
         return;
-    const int row = current.row();
     const WatchItemSpec item = m_model->item(row);
     // Operator mode: say so at once instead of asking for a value that will be refused.
     if (m_connection && m_connection->isReadOnly()) {
@@ -488,12 +730,15 @@ void WatchTableWidget::writeDialog()
 
 void WatchTableWidget::toggleSwapWords()
 {
-    for (const QModelIndex &index : m_view->selectionModel()->selectedRows()) {
-        const WatchItemSpec item = m_model->item(index.row());
-        const Status s = m_model->setFormat(index.row(), item.format, !item.swapWords);
+    // One step to undo for all the rows.
+    m_model->undoStack()->beginMacro(m_swapAction->text().remove(QLatin1Char('&')));
+    for (int row : selectedRows()) {
+        const WatchItemSpec item = m_model->item(row);
+        const Status s = m_model->setFormat(row, item.format, !item.swapWords);
         if (!s)
             showMessage(translated(s.error().message), true);
     }
+    m_model->undoStack()->endMacro();
 }
 
 } // namespace Fatek

@@ -14,6 +14,8 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
+class QMenu;
+class QModelIndex;
 class QSpinBox;
 class QTableView;
 class QToolButton;
@@ -25,13 +27,18 @@ class ConnectionManager;
 class ForcedMarks;
 class SessionResult;
 class WatchTableModel;
+class WatchTableProxy;
+class WatchTableView;
 
 // Asks "write this?"; true = go. Tests put an automatic answer here.
 using ConfirmHandler = std::function<bool(QWidget *parent, const QString &question)>;
 
 // One watch table: an entry line to add items, the table, its poll settings (interval, pause,
 // confirmation) and the connection it polls through. It turns edits into writes on that
-// connection's link and shows their outcome; it does no I/O itself.
+// connection's link and shows their outcome; it does no I/O itself. The view shows the model
+// through a WatchTableProxy (sorted by a header click, filtered by the filter line); rows are
+// named by the model's numbers everywhere else (selectedRows, viewIndex). Edits of the rows
+// (not writes) are steps on the model's undo stack: Ctrl+Z, Ctrl+Y / Ctrl+Shift+Z.
 class WatchTableWidget : public QWidget
 {
     Q_OBJECT
@@ -41,8 +48,18 @@ public:
     ~WatchTableWidget() override;
 
     WatchTableModel *model() const { return m_model; }
-    QTableView *view() const { return m_view; }
+    QTableView *view() const;
+    WatchTableProxy *proxy() const { return m_proxy; }
     QLineEdit *addressEdit() const { return m_addEdit; }
+    QLineEdit *filterEdit() const { return m_filterEdit; }
+    // The view's index of a model index (invalid when filtered out), and the reverse.
+    QModelIndex viewIndex(const QModelIndex &modelIndex) const;
+    int modelRow(const QModelIndex &viewIndex) const;
+    // The model rows selected in the view, ascending; the current row when none is selected.
+    QList<int> selectedRows() const;
+    // The selected rows as tab-separated text, a header line first (address, name, value,
+    // format, quality, comment), in the order shown.
+    QString selectedRowsText() const;
 
     Connection *connection() const { return m_connection; }
     void setConnection(Connection *connection);
@@ -77,6 +94,8 @@ Q_SIGNALS:
     void connectionChanged(Fatek::Connection *connection);
     // "Add to Trend" on the selected rows (ascending row numbers).
     void addToTrendRequested(const QList<int> &rows);
+    // What a saved list holds of this table changed (rows, name, interval, confirmation).
+    void edited();
 
 private:
     void showMessage(const QString &text, bool error);
@@ -84,6 +103,14 @@ private:
     void refreshConnections();
     void onWritten(quint64 rowKey, const QString &what, const LinkWriteResult &result);
     void removeSelected();
+    void copySelected();
+    void moveSelected(int delta);
+    void setSelectedFormat(DisplayFormat format);
+    void fillFormatMenu();
+    // Narrows the widest columns when the view is too narrow for them all: the last column
+    // (comment) stretches into what is left and the table never scrolls sideways.
+    void fitColumns();
+    bool eventFilter(QObject *watched, QEvent *event) override;
     void writeDialog();
     void toggleSwapWords();
     quint8 defaultStation() const;
@@ -94,8 +121,13 @@ private:
     // The write whose failure the message line shows in red ("" when it shows something else).
     QString m_failedWrite;
     WatchTableModel *m_model;
-    QTableView *m_view;
+    WatchTableProxy *m_proxy;
+    WatchTableView *m_view;
     QLineEdit *m_addEdit;
+    QLineEdit *m_filterEdit;
+    QAction *m_moveUpAction;
+    QAction *m_moveDownAction;
+    QMenu *m_formatMenu;
     QComboBox *m_connectionCombo;
     QSpinBox *m_interval;
     QToolButton *m_pause;

@@ -49,6 +49,7 @@ private slots:
     void roundTripExact();
     void roundTripFloatText_data();
     void roundTripFloatText();
+    void numberIsWhatTheValueStandsFor();
 };
 
 void TestValueFormat::names()
@@ -567,6 +568,24 @@ void TestValueFormat::roundTripFloatText()
         QVERIFY2(back.ok(), qPrintable(text + QStringLiteral(": ") + errorText(back)));
         QCOMPARE(ValueFormat::format(*back, width, fmt, swap), text);
     }
+}
+
+// Issue 34: the number a value stands for (trends, sorting) whatever its text: hex and binary of
+// a register are its signed value, not 0..65535.
+void TestValueFormat::numberIsWhatTheValueStandsFor()
+{
+    using F = DisplayFormat;
+    QCOMPARE(ValueFormat::number(0xFC18, 16, F::Hex), std::optional<double>(-1000.0));
+    QCOMPARE(ValueFormat::number(0xFC18, 16, F::Binary), std::optional<double>(-1000.0));
+    QCOMPARE(ValueFormat::number(0xFC18, 16, F::Signed), std::optional<double>(-1000.0));
+    QCOMPARE(ValueFormat::number(0xFC18, 16, F::Unsigned), std::optional<double>(64536.0));
+    QCOMPARE(ValueFormat::number(0xFFFFFFFE, 32, F::Hex), std::optional<double>(-2.0));
+    QCOMPARE(ValueFormat::number(0x1234, 16, F::Bcd), std::optional<double>(1234.0));
+    QCOMPARE(ValueFormat::number(0x3FC00000, 32, F::Float32), std::optional<double>(1.5));
+    QCOMPARE(ValueFormat::number(1, 1, F::Bit), std::optional<double>(1.0));
+    QCOMPARE(ValueFormat::number(0x4142, 16, F::Ascii), std::nullopt);
+    QCOMPARE(ValueFormat::number(0x00AB, 16, F::Bcd), std::nullopt);
+    QCOMPARE(ValueFormat::number(0x1234, 16, F::Float32), std::nullopt);
 }
 
 QTEST_GUILESS_MAIN(TestValueFormat)

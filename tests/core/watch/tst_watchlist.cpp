@@ -461,6 +461,14 @@ void TestWatchList::csvHeader()
     QCOMPARE(full->size(), 1);
     QCOMPARE(full->at(0),
              entry("R5", DisplayFormat::Unsigned, 7, QStringLiteral("N"), QStringLiteral("C")));
+
+    // Rows copied from a watch table (issue 34): its value and quality columns are skipped.
+    const auto copied = WatchList::importCsv(
+        "address;name;value;format;quality;comment\nR1;Sine;0xFC18;hex;good, 0.4 s;wave\n");
+    QVERIFY2(copied.ok(), qPrintable(errorText(copied)));
+    QCOMPARE(copied->size(), 1);
+    QCOMPARE(copied->at(0),
+             entry("R1", DisplayFormat::Hex, 1, QStringLiteral("Sine"), QStringLiteral("wave")));
 }
 
 void TestWatchList::csvSemicolonsAndQuotes()
