@@ -2,6 +2,7 @@
 
 #include "app/common/linkarguments.h"
 #include "clicontext.h"
+#include "clicheckoutcommand.h"
 #include "clicontrolcommand.h"
 #include "clidiffcommand.h"
 #include "cliforcedcommand.h"
@@ -84,6 +85,8 @@ constexpr CommandSpec commands[] = {
     {"diff", CliCommandKind::Diff, 1, -1, true, CliDiffCommand::parse, make<CliDiffCommand>},
     {"restore-values", CliCommandKind::RestoreValues, 1, -1, true,
      CliSnapshotFileCommand::parseFileAndRanges, make<CliRestoreValuesCommand>},
+    {"checkout", CliCommandKind::Checkout, 1, -1, true, CliCheckoutCommand::parse,
+     make<CliCheckoutCommand>},
 };
 
 const CommandSpec *findCommand(const QString &name)
