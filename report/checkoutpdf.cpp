@@ -56,8 +56,7 @@ QString html(const CheckoutReport &report, const CheckoutReport::TextFunction &t
                             "<td><font color=\"%5\"><b>%6</b></font></td><td>%7</td><td>%8</td>"
                             "<td>%9</td>")
                  .arg(esc(r.address), esc(r.name), esc(r.group),
-                      esc(text(checkoutKindMessage(r.kind))),
-                      QLatin1String(resultColour(r.result)),
+                      esc(text(checkoutKindMessage(r.kind))), QLatin1String(resultColour(r.result)),
                       esc(text(checkoutResultMessage(r.result))), esc(text(r.measured)),
                       esc(r.comment), esc(r.time));
         h += QStringLiteral("<td>%1</td></tr>").arg(esc(r.engineer));
@@ -97,9 +96,9 @@ Status write(const CheckoutReport &report, const QString &path,
 {
     const QString reason = SafeFile::write(path, render(report, text));
     if (!reason.isEmpty())
-        return makeError(ErrorKind::InvalidRequest,
-                         msg<MsgId::ReportCannotWrite>(path.toStdString(),
-                                                       Message::text(reason.toStdString())));
+        return makeError(
+            ErrorKind::InvalidRequest,
+            msg<MsgId::ReportCannotWrite>(path.toStdString(), Message::text(reason.toStdString())));
     return Ok{};
 }
 

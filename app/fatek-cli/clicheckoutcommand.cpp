@@ -72,7 +72,8 @@ QString CliCheckoutCommand::ask(const QString &question)
 void CliCheckoutCommand::run()
 {
     const QString planText = step().file;
-    Result<CheckoutPlan> plan = makeError(ErrorKind::InvalidRequest, msg<MsgId::CheckoutPlanEmpty>());
+    Result<CheckoutPlan> plan
+        = makeError(ErrorKind::InvalidRequest, msg<MsgId::CheckoutPlanEmpty>());
     QString savePath = options().checkoutSave;
     if (planText.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) {
         plan = CheckoutFile::loadFromFile(planText);
@@ -81,10 +82,10 @@ void CliCheckoutCommand::run()
     } else if (planText.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
         QFile f(planText);
         if (!f.open(QIODevice::ReadOnly))
-            plan = makeError(ErrorKind::InvalidRequest,
-                             msg<MsgId::CheckoutFileCannotRead>(
-                                 planText.toStdString(),
-                                 Message::text(f.errorString().toStdString())));
+            plan = makeError(
+                ErrorKind::InvalidRequest,
+                msg<MsgId::CheckoutFileCannotRead>(planText.toStdString(),
+                                                   Message::text(f.errorString().toStdString())));
         else
             plan = CheckoutPlan::fromCsv(QString::fromUtf8(f.readAll()));
     } else {
@@ -165,8 +166,8 @@ void CliCheckoutCommand::run()
             });
     connect(r, &CheckoutRunner::outputForced, this, [this, r](int index) {
         const CheckoutPoint &pt = r->plan().points[static_cast<std::size_t>(index)];
-        const QString a = ask(QStringLiteral("%1 is ON now. Seen in the field? [y/n/comment]")
-                                  .arg(pointText(pt)));
+        const QString a = ask(
+            QStringLiteral("%1 is ON now. Seen in the field? [y/n/comment]").arg(pointText(pt)));
         const bool seen = a == QLatin1String("y") || a == QLatin1String("yes");
         const bool plain = seen || a == QLatin1String("n") || a == QLatin1String("no");
         r->answerOutput(seen, plain ? QString() : a);
@@ -176,15 +177,14 @@ void CliCheckoutCommand::run()
             return;
         const CheckoutPoint &pt
             = r->plan().points[static_cast<std::size_t>(m_outputs[m_nextOutput - 1])];
-        out().note(QStringLiteral("%1: %2, released").arg(
-            pointText(pt), englishText(checkoutResultMessage(pt.result))));
+        out().note(QStringLiteral("%1: %2, released")
+                       .arg(pointText(pt), englishText(checkoutResultMessage(pt.result))));
         nextOutput();
     });
     connect(r, &CheckoutRunner::started, this, [this, r] {
         const auto inputs = r->plan().indexesOf(CheckoutKind::Input);
         const bool open = std::any_of(inputs.begin(), inputs.end(), [r](int i) {
-            return r->plan().points[static_cast<std::size_t>(i)].result
-                   == CheckoutResult::Untested;
+            return r->plan().points[static_cast<std::size_t>(i)].result == CheckoutResult::Untested;
         });
         if (open)
             out().note(QStringLiteral("Actuate each input in the field (on, then off); any "
@@ -235,9 +235,9 @@ void CliCheckoutCommand::nextAnalog()
             const CheckoutPoint &p = m_runner->plan().points[static_cast<std::size_t>(changed)];
             if (changed == index && p.highValue) {
                 disconnect(m_runner.get(), &CheckoutRunner::pointChanged, this, nullptr);
-                out().note(QStringLiteral("%1: %2 (%3)").arg(
-                    pointText(p), englishText(checkoutResultMessage(p.result)),
-                    englishText(p.measured())));
+                out().note(QStringLiteral("%1: %2 (%3)")
+                               .arg(pointText(p), englishText(checkoutResultMessage(p.result)),
+                                    englishText(p.measured())));
                 nextAnalog();
             }
         },
@@ -264,7 +264,9 @@ void CliCheckoutCommand::finishCheckout(int exitCode)
                         ExitCode::Usage);
             return m_context.finish(ExitCode::Usage);
         }
-        const auto text = [&translator](const Message &m) { return translator.text(m); };
+        const auto text = [&translator](const Message &m) {
+            return translator.text(m);
+        };
         const QString path = options().checkoutReport;
         if (!path.isEmpty()) {
             Status s = Ok{};
@@ -285,8 +287,8 @@ void CliCheckoutCommand::finishCheckout(int exitCode)
         out().note(englishText(report.summary));
         if (m_exitCode != ExitCode::Ok)
             return m_context.finish(m_exitCode);
-        const bool failed = plan.count(CheckoutResult::Failed) > 0
-                            || plan.count(CheckoutResult::Untested) > 0;
+        const bool failed
+            = plan.count(CheckoutResult::Failed) > 0 || plan.count(CheckoutResult::Untested) > 0;
         if (failed)
             return m_context.finish(ExitCode::Differ);
         succeed();

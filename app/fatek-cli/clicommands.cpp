@@ -1,8 +1,8 @@
 #include "clicommands.h"
 
 #include "app/common/linkarguments.h"
-#include "clicontext.h"
 #include "clicheckoutcommand.h"
+#include "clicontext.h"
 #include "clicontrolcommand.h"
 #include "clidiffcommand.h"
 #include "cliforcedcommand.h"

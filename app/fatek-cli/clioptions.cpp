@@ -125,7 +125,8 @@ QString usageText()
                "connection), 4 PLC error (also RUN during restore, program verification failed),\n"
                "5 refused by --read-only, 6 differences found (diff; restore-values read back "
                "other\n"
-               "values; checkout: a point failed or untested), 130 interrupted (Ctrl-C), 141 the output's reader is gone (a closed "
+               "values; checkout: a point failed or untested), 130 interrupted (Ctrl-C), 141 the "
+               "output's reader is gone (a closed "
                "pipe).\n")
         .arg(CliText::formatNames());
 }
@@ -133,13 +134,12 @@ QString usageText()
 QStringList valuedOptionNames()
 {
     return LinkArguments::names()
-           + QStringList{QStringLiteral("count"),     QStringLiteral("interval"),
-                         QStringLiteral("cycles"),    QStringLiteral("output"),
-                         QStringLiteral("format"),    QStringLiteral("names"),
-                         QStringLiteral("completion"), QStringLiteral("report"),
-                         QStringLiteral("lang"),      QStringLiteral("save"),
-                         QStringLiteral("project"),   QStringLiteral("customer"),
-                         QStringLiteral("engineer")};
+           + QStringList{
+               QStringLiteral("count"),      QStringLiteral("interval"), QStringLiteral("cycles"),
+               QStringLiteral("output"),     QStringLiteral("format"),   QStringLiteral("names"),
+               QStringLiteral("completion"), QStringLiteral("report"),   QStringLiteral("lang"),
+               QStringLiteral("save"),       QStringLiteral("project"),  QStringLiteral("customer"),
+               QStringLiteral("engineer")};
 }
 
 QStringList flagOptionNames()

@@ -101,7 +101,8 @@ Result<CheckoutPoint> parsePoint(const QJsonObject &o, int index)
                                              msg<MsgId::SnapshotMissing>(key)));
     };
     CheckoutPoint p;
-    const auto address = Address::parse(o.value(QStringLiteral("address")).toString().toStdString());
+    const auto address
+        = Address::parse(o.value(QStringLiteral("address")).toString().toStdString());
     if (!address)
         return bad("address");
     p.address = *address;

@@ -154,10 +154,9 @@ int CheckoutPlan::indexOf(const Address &address) const
 
 int CheckoutPlan::count(CheckoutResult result) const
 {
-    return static_cast<int>(std::count_if(points.begin(), points.end(),
-                                          [result](const CheckoutPoint &p) {
-                                              return p.result == result;
-                                          }));
+    return static_cast<int>(
+        std::count_if(points.begin(), points.end(),
+                      [result](const CheckoutPoint &p) { return p.result == result; }));
 }
 
 std::vector<int> CheckoutPlan::indexesOf(CheckoutKind kind) const
@@ -309,8 +308,8 @@ Result<CheckoutPlan> CheckoutPlan::fromCsv(const QString &text)
         const auto address = Address::parse(fields->at(0).toStdString());
         if (!address) {
             // The header line names its columns.
-            if (plan.points.empty() && fields->at(0).compare(QLatin1String("address"),
-                                                             Qt::CaseInsensitive) == 0)
+            if (plan.points.empty()
+                && fields->at(0).compare(QLatin1String("address"), Qt::CaseInsensitive) == 0)
                 continue;
             return lineError(address.error().message);
         }

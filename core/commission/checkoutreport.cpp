@@ -30,22 +30,24 @@ CheckoutReport CheckoutReport::of(const CheckoutPlan &plan, const QDateTime &dat
 {
     CheckoutReport r;
     const QDateTime when = date.isValid() ? date : QDateTime::currentDateTime();
-    const auto text = [](const QString &s) { return Message::text(s.toStdString()); };
+    const auto text = [](const QString &s) {
+        return Message::text(s.toStdString());
+    };
     r.fields.push_back({msg<MsgId::ReportProject>(), text(plan.info.project)});
     r.fields.push_back({msg<MsgId::ReportCustomer>(), text(plan.info.customer)});
     r.fields.push_back({msg<MsgId::ReportPlcModel>(), textOrNotReported(plan.info.plcModel)});
     r.fields.push_back({msg<MsgId::ReportOsVersion>(), textOrNotReported(plan.info.osVersion)});
     r.fields.push_back({msg<MsgId::ReportStation>(), text(QString::number(plan.info.station))});
-    r.fields.push_back(
-        {msg<MsgId::ReportDate>(), text(when.toLocalTime().toString(QStringLiteral("yyyy-MM-dd")))});
+    r.fields.push_back({msg<MsgId::ReportDate>(),
+                        text(when.toLocalTime().toString(QStringLiteral("yyyy-MM-dd")))});
     r.fields.push_back({msg<MsgId::ReportEngineer>(), text(plan.info.engineer)});
     for (const CheckoutPoint &p : plan.points) {
         Row row;
         row.address = QString::fromStdString(p.address.toString());
         row.name = p.name;
         if (!p.description.isEmpty())
-            row.name = row.name.isEmpty() ? p.description : row.name + QStringLiteral(" - ")
-                                                                 + p.description;
+            row.name = row.name.isEmpty() ? p.description
+                                          : row.name + QStringLiteral(" - ") + p.description;
         row.group = p.group;
         row.kind = p.kind;
         row.result = p.result;
@@ -64,9 +66,9 @@ CheckoutReport CheckoutReport::of(const CheckoutPlan &plan, const QDateTime &dat
 
 std::vector<Message> CheckoutReport::columns()
 {
-    return {msg<MsgId::ReportPoint>(),    msg<MsgId::ReportName>(),     msg<MsgId::ReportGroup>(),
-            msg<MsgId::ReportKind>(),     msg<MsgId::ReportResult>(),   msg<MsgId::ReportMeasured>(),
-            msg<MsgId::ReportComment>(),  msg<MsgId::ReportTested>(),   msg<MsgId::ReportEngineer>()};
+    return {msg<MsgId::ReportPoint>(),   msg<MsgId::ReportName>(),   msg<MsgId::ReportGroup>(),
+            msg<MsgId::ReportKind>(),    msg<MsgId::ReportResult>(), msg<MsgId::ReportMeasured>(),
+            msg<MsgId::ReportComment>(), msg<MsgId::ReportTested>(), msg<MsgId::ReportEngineer>()};
 }
 
 QByteArray CheckoutReport::toCsv(const TextFunction &textFunction) const

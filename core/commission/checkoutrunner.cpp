@@ -14,17 +14,6 @@ namespace Fatek {
 
 namespace {
 
-std::string addressList(const std::vector<Address> &addresses)
-{
-    std::string out;
-    for (const Address &a : addresses) {
-        if (!out.empty())
-            out += ", ";
-        out += a.toString();
-    }
-    return out;
-}
-
 std::uint8_t stationOf(const CheckoutPlan &plan)
 {
     return static_cast<std::uint8_t>(std::clamp(plan.info.station, 1, 254));
@@ -217,9 +206,9 @@ void CheckoutRunner::pollCycle()
     if (!m_running || m_pollsInFlight > 0)
         return;
     std::vector<Request> requests = m_pollRequests;
-    const bool analog = m_current >= 0
-                        && m_plan.points[static_cast<std::size_t>(m_current)].kind
-                               == CheckoutKind::Analog;
+    const bool analog
+        = m_current >= 0
+          && m_plan.points[static_cast<std::size_t>(m_current)].kind == CheckoutKind::Analog;
     if (analog)
         requests.push_back(Request::readRegisters(
             stationOf(m_plan), m_plan.points[static_cast<std::size_t>(m_current)].address, 1));
@@ -276,9 +265,9 @@ void CheckoutRunner::inputChanged(int index, bool on)
             == underTest.changedWith.end())
             underTest.changedWith.push_back(a);
         changed(m_current);
-        Q_EMIT crossedWiring(index, m_current,
-                             msg<MsgId::CheckoutCrossedWiring>(a.toString(),
-                                                               underTest.address.toString()));
+        Q_EMIT crossedWiring(
+            index, m_current,
+            msg<MsgId::CheckoutCrossedWiring>(a.toString(), underTest.address.toString()));
         return;
     }
     if (!testing(target))
@@ -327,23 +316,22 @@ void CheckoutRunner::forceOutput(int index)
     setCurrentPoint(index);
     m_outputUnderTest = index;
     // RUN or STOP now, not at the start: someone may have switched it meanwhile.
-    m_actions.submit(Request::briefStatus(stationOf(m_plan)),
-                     [this, index](const SessionResult &r) {
-                         if (!r.ok()) {
-                             m_outputUnderTest = -1;
-                             return fail(r.error());
-                         }
-                         const auto &data = r.response().data;
-                         m_plcRunning
-                             = !data.empty() && PlcStatus::fromStatus1(data.front()).running;
-                         if (m_plcRunning && !m_allowInRun) {
-                             m_outputUnderTest = -1;
-                             Q_EMIT runConfirmationNeeded(index, msg<MsgId::CheckoutPlcInRun>());
-                             return fail(makeError(ErrorKind::InvalidRequest,
-                                                   msg<MsgId::CheckoutRunNotConfirmed>()));
-                         }
-                         doForce(index);
-                     });
+    m_actions.submit(
+        Request::briefStatus(stationOf(m_plan)), [this, index](const SessionResult &r) {
+            if (!r.ok()) {
+                m_outputUnderTest = -1;
+                return fail(r.error());
+            }
+            const auto &data = r.response().data;
+            m_plcRunning = !data.empty() && PlcStatus::fromStatus1(data.front()).running;
+            if (m_plcRunning && !m_allowInRun) {
+                m_outputUnderTest = -1;
+                Q_EMIT runConfirmationNeeded(index, msg<MsgId::CheckoutPlcInRun>());
+                return fail(
+                    makeError(ErrorKind::InvalidRequest, msg<MsgId::CheckoutRunNotConfirmed>()));
+            }
+            doForce(index);
+        });
 }
 
 void CheckoutRunner::doForce(int index)
@@ -470,26 +458,26 @@ void CheckoutRunner::recordAnalog(int index, bool highEnd)
         || m_plan.points[static_cast<std::size_t>(index)].kind != CheckoutKind::Analog)
         return;
     const Address a = m_plan.points[static_cast<std::size_t>(index)].address;
-    m_actions.submit(Request::readRegisters(stationOf(m_plan), a, 1),
-                     [this, index, highEnd, a](const SessionResult &r) {
-                         if (!r.ok() || r.response().values.empty()) {
-                             ProtocolError e = r.ok() ? makeError(ErrorKind::MalformedResponse,
-                                                                  std::string("no value"))
-                                                      : r.error();
-                             e.message = msg<MsgId::CheckoutReadFailed>(a.toString(), e.message);
-                             return fail(std::move(e));
-                         }
-                         CheckoutPoint &p = m_plan.points[static_cast<std::size_t>(index)];
-                         const std::uint32_t v = r.response().values.front();
-                         (highEnd ? p.highValue : p.lowValue) = v;
-                         if (p.lowValue && p.highValue) {
-                             const bool ok = p.withinTolerance(*p.lowValue, p.expectedLow)
-                                             && p.withinTolerance(*p.highValue, p.expectedHigh);
-                             markResult(p, ok ? CheckoutResult::Passed : CheckoutResult::Failed);
-                         }
-                         Q_EMIT liveValue(index, v);
-                         changed(index);
-                     });
+    m_actions.submit(Request::readRegisters(stationOf(m_plan), a, 1), [this, index, highEnd,
+                                                                       a](const SessionResult &r) {
+        if (!r.ok() || r.response().values.empty()) {
+            ProtocolError e = r.ok()
+                                  ? makeError(ErrorKind::MalformedResponse, std::string("no value"))
+                                  : r.error();
+            e.message = msg<MsgId::CheckoutReadFailed>(a.toString(), e.message);
+            return fail(std::move(e));
+        }
+        CheckoutPoint &p = m_plan.points[static_cast<std::size_t>(index)];
+        const std::uint32_t v = r.response().values.front();
+        (highEnd ? p.highValue : p.lowValue) = v;
+        if (p.lowValue && p.highValue) {
+            const bool ok = p.withinTolerance(*p.lowValue, p.expectedLow)
+                            && p.withinTolerance(*p.highValue, p.expectedHigh);
+            markResult(p, ok ? CheckoutResult::Passed : CheckoutResult::Failed);
+        }
+        Q_EMIT liveValue(index, v);
+        changed(index);
+    });
 }
 
 } // namespace Fatek

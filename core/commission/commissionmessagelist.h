@@ -230,8 +230,7 @@ FATEK_MSG(CheckoutNotOutput, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "%1 is not an output of the checkout plan."))
 // %1 the input that changed, %2 the one under test.
 FATEK_MSG(CheckoutCrossedWiring, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "%1 changed while testing %2: crossed wiring?"))
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 changed while testing %2: crossed wiring?"))
 FATEK_MSG(CheckoutPlcInRun, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The PLC is in RUN: its program drives the outputs too. Force "
@@ -240,8 +239,7 @@ FATEK_MSG(CheckoutRunNotConfirmed, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Outputs are not tested while the PLC is in RUN without a "
                             "confirmation; nothing was forced."))
-FATEK_MSG(CheckoutForceFailed, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message", "Forcing %1 failed: %2"))
+FATEK_MSG(CheckoutForceFailed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Forcing %1 failed: %2"))
 FATEK_MSG(CheckoutReleaseFailed, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Releasing %1 failed: %2. It stays recorded as forced and is "
@@ -300,10 +298,8 @@ FATEK_MSG(ReportSummary, 5,
                             "%1 points: %2 passed, %3 failed, %4 skipped, %5 untested."))
 FATEK_MSG(ReportSummaryTitle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Summary"))
 FATEK_MSG(ReportSignatures, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Signatures"))
-FATEK_MSG(ReportSignEngineer, 0,
-          QT_TRANSLATE_NOOP("Fatek::Message", "Commissioning engineer"))
-FATEK_MSG(ReportSignCustomer, 0,
-          QT_TRANSLATE_NOOP("Fatek::Message", "Customer representative"))
+FATEK_MSG(ReportSignEngineer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Commissioning engineer"))
+FATEK_MSG(ReportSignCustomer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Customer representative"))
 FATEK_MSG(ReportCannotWrite, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "Cannot write the report %1: %2"))
 FATEK_MSG(ReportUnknownType, 1,

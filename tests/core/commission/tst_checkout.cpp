@@ -264,20 +264,17 @@ void TestCheckout::fullCheckoutAndReports()
     const int d200 = runner.plan().indexOf(addr("D200"));
     m_plc->setValue(addr("R100"), 4020);
     runner.recordAnalog(r100, false);
-    QTRY_VERIFY_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(r100)].lowValue,
-                             30000);
+    QTRY_VERIFY_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(r100)].lowValue, 30000);
     m_plc->setValue(addr("R100"), 19990);
     runner.recordAnalog(r100, true);
     m_plc->setValue(addr("D200"), 40);
     runner.recordAnalog(d200, false);
-    QTRY_VERIFY_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(d200)].lowValue,
-                             30000);
+    QTRY_VERIFY_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(d200)].lowValue, 30000);
     m_plc->setValue(addr("D200"), 31700);
     runner.recordAnalog(d200, true);
     QTRY_COMPARE_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(d200)].result,
                               CheckoutResult::Failed, 30000);
-    QCOMPARE(runner.plan().points[static_cast<std::size_t>(r100)].result,
-             CheckoutResult::Passed);
+    QCOMPARE(runner.plan().points[static_cast<std::size_t>(r100)].result, CheckoutResult::Passed);
     QCOMPARE(runner.plan().count(CheckoutResult::Passed), 24);
     QCOMPARE(runner.plan().count(CheckoutResult::Failed), 2);
 
@@ -306,10 +303,10 @@ void TestCheckout::fullCheckoutAndReports()
                                          "(expected 0), high 31700 (expected 32000), tolerance "
                                          "100\"")),
              qPrintable(csv));
-    QVERIFY2(lines.last()
-                 == QStringLiteral(
-                     "# Summary: 26 points: 24 passed, 2 failed, 0 skipped, 0 untested."),
-             qPrintable(lines.last()));
+    QVERIFY2(
+        lines.last()
+            == QStringLiteral("# Summary: 26 points: 24 passed, 2 failed, 0 skipped, 0 untested."),
+        qPrintable(lines.last()));
     QCOMPARE(lines.size(), 7 + 1 + 1 + 26 + 1);
 
     // PDF report, in English and in Chinese, read back as text.
@@ -317,13 +314,12 @@ void TestCheckout::fullCheckoutAndReports()
     QVERIFY(CheckoutPdf::write(report, pdf, {}).ok());
     const QString text = pdfText(pdf);
     for (const char *expected :
-         {"I/O checkout report", "Line 3 conveyor", "ACME Foods", "PLC model", "OS version",
-          "X15", "Y7", "lamp broken", "not seen in the field", "D200",
+         {"I/O checkout report", "Line 3 conveyor", "ACME Foods", "PLC model", "OS version", "X15",
+          "Y7", "lamp broken", "not seen in the field", "D200",
           "26 points: 24 passed, 2 failed, 0 skipped, 0 untested.", "Commissioning engineer",
           "Customer representative"})
-        QVERIFY2(text.contains(QLatin1String(expected)), qPrintable(QLatin1String(expected)
-                                                                    + QLatin1String(" not in:\n")
-                                                                    + text));
+        QVERIFY2(text.contains(QLatin1String(expected)),
+                 qPrintable(QLatin1String(expected) + QLatin1String(" not in:\n") + text));
     QVERIFY2(text.contains(runner.plan().info.plcModel), qPrintable(text));
 
     ReportTranslator chinese;
@@ -331,9 +327,9 @@ void TestCheckout::fullCheckoutAndReports()
     const QString title = chinese.text(msg<MsgId::ReportTitle>());
     QVERIFY(title != QLatin1String("I/O checkout report"));
     const QString pdfZh = freeFile("report_zh.pdf");
-    QVERIFY(CheckoutPdf::write(report, pdfZh,
-                               [&chinese](const Message &m) { return chinese.text(m); })
-                .ok());
+    QVERIFY(CheckoutPdf::write(report, pdfZh, [&chinese](const Message &m) {
+                return chinese.text(m);
+            }).ok());
     const QString textZh = pdfText(pdfZh);
     QVERIFY2(textZh.contains(chinese.text(msg<MsgId::ReportSignCustomer>())), qPrintable(textZh));
     QVERIFY2(!textZh.contains(QLatin1String("Customer representative")), qPrintable(textZh));
