@@ -37,7 +37,7 @@ QString html(const CheckoutReport &report, const CheckoutReport::TextFunction &t
     const CheckoutReport::TextFunction text
         = textFunction ? textFunction : CheckoutReport::TextFunction(englishText);
     QString h;
-    h += QStringLiteral("<html><body style=\"font-size:9pt\">");
+    h += QStringLiteral("<html><body style=\"font-size:8pt\">");
     h += QStringLiteral("<h2>%1</h2>").arg(esc(text(msg<MsgId::ReportTitle>())));
     h += QStringLiteral("<table cellpadding=\"2\">");
     for (const CheckoutReport::Field &f : report.fields)
@@ -79,8 +79,9 @@ QByteArray render(const CheckoutReport &report, const CheckoutReport::TextFuncti
     buffer.open(QIODevice::WriteOnly);
     {
         QPdfWriter writer(&buffer);
-        writer.setPageSize(QPageSize(QPageSize::A4));
-        writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+        // Landscape: nine columns fit without breaking a comment or a time in two.
+        writer.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Landscape,
+                                         QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter));
         writer.setTitle(text ? text(msg<MsgId::ReportTitle>())
                              : englishText(msg<MsgId::ReportTitle>()));
         writer.setCreator(QStringLiteral("FATEK Studio"));
