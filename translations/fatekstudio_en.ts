@@ -3592,6 +3592,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>%1: %2</source>
             <translation>%1: %2</translation>
         </message>
+        <message>
+            <source>I/O &amp;Checkout…</source>
+            <translation>I/O &amp;Checkout…</translation>
+        </message>
+        <message>
+            <source>Check every input, output and analog point of a machine and write the report</source>
+            <translation>Check every input, output and analog point of a machine and write the report</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -4569,6 +4577,200 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Read back</source>
             <translation>Read back</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutTableModel</name>
+        <message>
+            <source>forced: seen?</source>
+            <translation>forced: seen?</translation>
+        </message>
+        <message>
+            <source>now %1</source>
+            <translation>now %1</translation>
+        </message>
+        <message>
+            <source>%1; now %2</source>
+            <translation>%1; now %2</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>Group</translation>
+        </message>
+        <message>
+            <source>Point</source>
+            <translation>Point</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>Kind</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>State</translation>
+        </message>
+        <message>
+            <source>Times / values</source>
+            <translation>Times / values</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>Comment</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::IoCheckoutDialog</name>
+        <message>
+            <source>I/O Checkout</source>
+            <translation>I/O Checkout</translation>
+        </message>
+        <message>
+            <source>X0..X15, Y0..Y7, R100</source>
+            <translation>X0..X15, Y0..Y7, R100</translation>
+        </message>
+        <message>
+            <source>Points:</source>
+            <translation>Points:</translation>
+        </message>
+        <message>
+            <source>Project:</source>
+            <translation>Project:</translation>
+        </message>
+        <message>
+            <source>Customer:</source>
+            <translation>Customer:</translation>
+        </message>
+        <message>
+            <source>Engineer:</source>
+            <translation>Engineer:</translation>
+        </message>
+        <message>
+            <source>New</source>
+            <translation>New</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>Open…</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>Start</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stop</translation>
+        </message>
+        <message>
+            <source>Report…</source>
+            <translation>Report…</translation>
+        </message>
+        <message>
+            <source>Write the report as PDF or CSV</source>
+            <translation>Write the report as PDF or CSV</translation>
+        </message>
+        <message>
+            <source>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</source>
+            <translation>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</translation>
+        </message>
+        <message>
+            <source>Open Checkout</source>
+            <translation>Open Checkout</translation>
+        </message>
+        <message>
+            <source>Checkouts (*.json)</source>
+            <translation>Checkouts (*.json)</translation>
+        </message>
+        <message>
+            <source>Checkout Report</source>
+            <translation>Checkout Report</translation>
+        </message>
+        <message>
+            <source>PDF reports (*.pdf);;CSV files (*.csv)</source>
+            <translation>PDF reports (*.pdf);;CSV files (*.csv)</translation>
+        </message>
+        <message>
+            <source>Watching the inputs: actuate %1 in the field.</source>
+            <translation>Watching the inputs: actuate %1 in the field.</translation>
+        </message>
+        <message>
+            <source>%1 is forced on. Seen in the field? Space: seen, F: not seen.</source>
+            <translation>%1 is forced on. Seen in the field? Space: seen, F: not seen.</translation>
+        </message>
+        <message>
+            <source>%1 is released.</source>
+            <translation>%1 is released.</translation>
+        </message>
+        <message>
+            <source>Force Output</source>
+            <translation>Force Output</translation>
+        </message>
+        <message>
+            <source>Not forced: nothing was written.</source>
+            <translation>Not forced: nothing was written.</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>Stopped: the target changed.</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>(operator mode: outputs are not forced)</source>
+            <translation>(operator mode: outputs are not forced)</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1 (%2)</translation>
+        </message>
+        <message>
+            <source>Save Checkout</source>
+            <translation>Save Checkout</translation>
+        </message>
+        <message>
+            <source>Reading the PLC&apos;s status…</source>
+            <translation>Reading the PLC&apos;s status…</translation>
+        </message>
+        <message>
+            <source>Opened %1.</source>
+            <translation>Opened %1.</translation>
+        </message>
+        <message>
+            <source>The checkout left %1 forced on %2. Release them now?</source>
+            <translation>The checkout left %1 forced on %2. Release them now?</translation>
+        </message>
+        <message>
+            <source>Release Outputs</source>
+            <translation>Release Outputs</translation>
+        </message>
+        <message>
+            <source>Still forced: %1 (Start releases them).</source>
+            <translation>Still forced: %1 (Start releases them).</translation>
+        </message>
+        <message>
+            <source>Report written: %1</source>
+            <translation>Report written: %1</translation>
+        </message>
+        <message>
+            <source>Answer for %1 first (Space: seen, F: not seen).</source>
+            <translation>Answer for %1 first (Space: seen, F: not seen).</translation>
+        </message>
+        <message>
+            <source>Operator mode: outputs are not forced.</source>
+            <translation>Operator mode: outputs are not forced.</translation>
+        </message>
+        <message>
+            <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
+            <translation>Force %1 on at %2? It stays on until you answer, then it is released.</translation>
         </message>
     </context>
     <context>

@@ -3584,6 +3584,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>%1: %2</source>
             <translation>%1：%2</translation>
         </message>
+        <message>
+            <source>I/O &amp;Checkout…</source>
+            <translation>I/O 點檢(&amp;C)…</translation>
+        </message>
+        <message>
+            <source>Check every input, output and analog point of a machine and write the report</source>
+            <translation>逐一檢查機台的每個輸入、輸出與類比點，並寫出報告</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -4554,6 +4562,200 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Read back</source>
             <translation>回讀</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutTableModel</name>
+        <message>
+            <source>forced: seen?</source>
+            <translation>強制中：看到了嗎？</translation>
+        </message>
+        <message>
+            <source>now %1</source>
+            <translation>目前 %1</translation>
+        </message>
+        <message>
+            <source>%1; now %2</source>
+            <translation>%1；目前 %2</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>群組</translation>
+        </message>
+        <message>
+            <source>Point</source>
+            <translation>點位</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名稱</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>種類</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>狀態</translation>
+        </message>
+        <message>
+            <source>Times / values</source>
+            <translation>時間 / 數值</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>備註</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::IoCheckoutDialog</name>
+        <message>
+            <source>I/O Checkout</source>
+            <translation>I/O 點檢</translation>
+        </message>
+        <message>
+            <source>X0..X15, Y0..Y7, R100</source>
+            <translation>X0..X15, Y0..Y7, R100</translation>
+        </message>
+        <message>
+            <source>Points:</source>
+            <translation>點位：</translation>
+        </message>
+        <message>
+            <source>Project:</source>
+            <translation>專案：</translation>
+        </message>
+        <message>
+            <source>Customer:</source>
+            <translation>客戶：</translation>
+        </message>
+        <message>
+            <source>Engineer:</source>
+            <translation>工程師：</translation>
+        </message>
+        <message>
+            <source>New</source>
+            <translation>新增</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>開啟…</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>開始</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>停止</translation>
+        </message>
+        <message>
+            <source>Report…</source>
+            <translation>報告…</translation>
+        </message>
+        <message>
+            <source>Write the report as PDF or CSV</source>
+            <translation>寫出報告（可攜文件 *.pdf 或 CSV）</translation>
+        </message>
+        <message>
+            <source>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</source>
+            <translation>空白鍵：已確認（輸出先強制），F：不合格，N：下一點，L / H：類比低端 / 高端</translation>
+        </message>
+        <message>
+            <source>Open Checkout</source>
+            <translation>開啟點檢</translation>
+        </message>
+        <message>
+            <source>Checkouts (*.json)</source>
+            <translation>點檢檔 (*.json)</translation>
+        </message>
+        <message>
+            <source>Checkout Report</source>
+            <translation>點檢報告</translation>
+        </message>
+        <message>
+            <source>PDF reports (*.pdf);;CSV files (*.csv)</source>
+            <translation>可攜文件報告 (*.pdf);;CSV 檔案 (*.csv)</translation>
+        </message>
+        <message>
+            <source>Watching the inputs: actuate %1 in the field.</source>
+            <translation>正在監看輸入：請在現場動作 %1。</translation>
+        </message>
+        <message>
+            <source>%1 is forced on. Seen in the field? Space: seen, F: not seen.</source>
+            <translation>%1 已強制為 ON。現場看到了嗎？空白鍵：看到，F：沒看到。</translation>
+        </message>
+        <message>
+            <source>%1 is released.</source>
+            <translation>%1 已解除強制。</translation>
+        </message>
+        <message>
+            <source>Force Output</source>
+            <translation>強制輸出</translation>
+        </message>
+        <message>
+            <source>Not forced: nothing was written.</source>
+            <translation>未強制：沒有寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>已停止：目標已變更。</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>(operator mode: outputs are not forced)</source>
+            <translation>（操作員模式：不強制輸出）</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1（%2）</translation>
+        </message>
+        <message>
+            <source>Save Checkout</source>
+            <translation>儲存點檢</translation>
+        </message>
+        <message>
+            <source>Reading the PLC&apos;s status…</source>
+            <translation>正在讀取 PLC 狀態…</translation>
+        </message>
+        <message>
+            <source>Opened %1.</source>
+            <translation>已開啟 %1。</translation>
+        </message>
+        <message>
+            <source>The checkout left %1 forced on %2. Release them now?</source>
+            <translation>點檢在%2留下強制中的 %1。現在解除嗎？</translation>
+        </message>
+        <message>
+            <source>Release Outputs</source>
+            <translation>解除輸出強制</translation>
+        </message>
+        <message>
+            <source>Still forced: %1 (Start releases them).</source>
+            <translation>仍在強制中：%1（按「開始」即解除）。</translation>
+        </message>
+        <message>
+            <source>Report written: %1</source>
+            <translation>報告已寫出：%1</translation>
+        </message>
+        <message>
+            <source>Answer for %1 first (Space: seen, F: not seen).</source>
+            <translation>請先回答 %1（空白鍵：看到，F：沒看到）。</translation>
+        </message>
+        <message>
+            <source>Operator mode: outputs are not forced.</source>
+            <translation>操作員模式：不強制輸出。</translation>
+        </message>
+        <message>
+            <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
+            <translation>在%2將 %1 強制為 ON？回答前保持 ON，回答後即解除。</translation>
         </message>
     </context>
     <context>

@@ -20,8 +20,8 @@ class MainWindow;
 class Session;
 
 // The commissioning tools of the main window: the PLC Control, Forcing and Raw Console docks, the
-// Loopback Test, Memory Snapshot and Scan Stations dialogs, and their Tools/View menu entries.
-// Every tool acts on one target, the current connection and its station.
+// Loopback Test, Memory Snapshot, I/O Checkout and Scan Stations dialogs, and their Tools/View menu
+// entries. Every tool acts on one target, the current connection and its station.
 class ToolDocks : public QObject
 {
     Q_OBJECT
