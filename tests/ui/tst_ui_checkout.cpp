@@ -81,10 +81,33 @@ private:
         const int i = dialog->runner()->plan().indexOf(addr(input));
         QVERIFY(i >= 0);
         const CheckoutPoint &p = dialog->runner()->plan().points[static_cast<std::size_t>(i)];
+        // Its first poll shown: 0 is the baseline the change is seen against.
+        QTRY_COMPARE_WITH_TIMEOUT(
+            dialog->points()->index(i, CheckoutTableModel::MeasuredColumn).data().toString(),
+            CheckoutTableModel::tr("now %1").arg(0), longWait);
         m_plc->setValue(addr(input), 1);
         QTRY_VERIFY_WITH_TIMEOUT(p.rose.isValid(), longWait);
         m_plc->setValue(addr(input), 0);
         QTRY_COMPARE_WITH_TIMEOUT(state(dialog, i), resultText(CheckoutResult::Passed), longWait);
+    }
+
+    // The main window at the laptop's size, connected to the simulator.
+    bool openWindow(bool operatorMode)
+    {
+        m_window = std::make_unique<MainWindow>(operatorMode);
+        m_window->resize(laptop - QSize(0, 70));
+        m_window->show();
+        if (!QTest::qWaitForWindowExposed(m_window.get()))
+            return false;
+        SavedConnection saved;
+        saved.name = QStringLiteral("Line 3");
+        saved.settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort());
+        saved.settings.protocol = LinkSettings::ProtocolChoice::Facon;
+        saved.settings.timeoutMs = 2000;
+        saved.settings.retries = 1;
+        Connection *c = m_window->openConnection(saved, false);
+        return c
+               && QTest::qWaitFor([c] { return c->linkState() == LinkState::Connected; }, longWait);
     }
 
     // Opens Tools -> I/O Checkout with the mouse.
@@ -144,20 +167,7 @@ private Q_SLOTS:
 
     void walkFivePointsByKeyboard()
     {
-        m_window = std::make_unique<MainWindow>();
-        m_window->resize(laptop - QSize(0, 70));
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        SavedConnection saved;
-        saved.name = QStringLiteral("Line 3");
-        saved.settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort());
-        saved.settings.protocol = LinkSettings::ProtocolChoice::Facon;
-        saved.settings.timeoutMs = 2000;
-        saved.settings.retries = 1;
-        Connection *c = m_window->openConnection(saved, false);
-        QVERIFY(c);
-        QTRY_VERIFY_WITH_TIMEOUT(c->linkState() == LinkState::Connected, longWait);
-
+        QVERIFY(openWindow(false));
         IoCheckoutDialog *dialog = openFromToolsMenu();
         QVERIFY(dialog);
         QVERIFY(QTest::qWaitForWindowExposed(dialog));
@@ -200,8 +210,10 @@ private Q_SLOTS:
 
         // X0 and X1 actuated in the field: passed, the tool moves on by itself.
         actuate(dialog, "X0");
+        QVERIFY(!QTest::currentTestFailed());
         QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 1, longWait);
         actuate(dialog, "X1");
+        QVERIFY(!QTest::currentTestFailed());
         QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 2, longWait);
         QCOMPARE(table->currentIndex().row(), 2);
         // X2 does not answer: F, then N to the next point, the output Y0.
@@ -291,6 +303,73 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(!runner->isRunning(), longWait);
         QVERIFY(m_plc->isDisabled(addr("Y0")) == false);
         QVERIFY(m_plc->isDisabled(addr("Y1")) == false);
+    }
+
+    // A checkout that died with Y0 forced: opening its file offers to release it, and does.
+    void openReleasesLeftovers()
+    {
+        m_plc->setDisabled(addr("Y0"), true);
+        m_plc->setValue(addr("Y0"), 1);
+        auto plan = CheckoutPlan::fromRanges(QStringLiteral("X0, Y0"));
+        QVERIFY(plan.ok());
+        CheckoutPlan left = plan.value();
+        left.forced.push_back(addr("Y0"));
+        const QString file = m_files.filePath(QStringLiteral("left.checkout.json"));
+        QVERIFY(CheckoutFile::saveToFile(left, file).ok());
+
+        QVERIFY(openWindow(false));
+        IoCheckoutDialog *dialog = openFromToolsMenu();
+        QVERIFY(dialog);
+        QStringList questions;
+        dialog->setConfirmer([&questions](const QString &question) {
+            questions << question;
+            return true;
+        });
+        QVERIFY(dialog->openCheckout(file));
+        QCOMPARE(questions.size(), 1);
+        QVERIFY2(questions.front().contains(QLatin1String("Y0")), qPrintable(questions.front()));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y0")) == false && m_plc->value(addr("Y0")) == 0u, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->runner()->hasForced(), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(CheckoutFile::loadFromFile(file)->forced.empty(), longWait);
+        QVERIFY(dialog->runner()->isRunning());
+    }
+
+    // Operator mode: the inputs are watched, an output is refused before anything is asked or
+    // written.
+    void operatorModeRefusesOutputs()
+    {
+        QVERIFY(openWindow(true));
+        IoCheckoutDialog *dialog = openFromToolsMenu();
+        QVERIFY(dialog);
+        QStringList questions;
+        dialog->setConfirmer([&questions](const QString &question) {
+            questions << question;
+            return true;
+        });
+        const QString file = m_files.filePath(QStringLiteral("operator.checkout.json"));
+        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
+        auto *ranges = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
+        QVERIFY(ranges);
+        QTest::mouseClick(ranges, Qt::LeftButton);
+        QTest::keyClicks(ranges, QStringLiteral("X0, Y0"), {}, keyDelayMs);
+        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("startButton")),
+                          Qt::LeftButton);
+        CheckoutRunner *runner = dialog->runner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isRunning(), longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        actuate(dialog, "X0");
+        if (QTest::currentTestFailed())
+            return;
+        QTest::keyClick(dialog->table(), Qt::Key_N, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 1, longWait);
+        QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
+        QCOMPARE(dialog->messageText(),
+                 IoCheckoutDialog::tr("Operator mode: outputs are not forced."));
+        QVERIFY(questions.isEmpty());
+        QCOMPARE(runner->outputUnderTest(), -1);
+        QVERIFY(m_plc->isDisabled(addr("Y0")) == false);
+        QCOMPARE(state(dialog, 1), resultText(CheckoutResult::Untested));
     }
 };
 
