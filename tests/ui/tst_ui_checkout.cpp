@@ -6,6 +6,7 @@
 // PDF report are written there (docs/images/tool-checkout.png, checkout-report.png).
 #include "core/commission/checkoutfile.h"
 #include "core/commission/checkoutrunner.h"
+#include "core/commission/commissionmessages.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
 #include "testutil.h"
@@ -370,6 +371,43 @@ private Q_SLOTS:
         QCOMPARE(runner->outputUnderTest(), -1);
         QVERIFY(m_plc->isDisabled(addr("Y0")) == false);
         QCOMPARE(state(dialog, 1), resultText(CheckoutResult::Untested));
+    }
+
+    // The PLC in RUN: after the force is confirmed, the tool asks once more (the machine runs),
+    // and forces only then.
+    void plcInRunAsksAgain()
+    {
+        m_plc->setRunning(true);
+        QVERIFY(openWindow(false));
+        IoCheckoutDialog *dialog = openFromToolsMenu();
+        QVERIFY(dialog);
+        QStringList questions;
+        dialog->setConfirmer([&questions](const QString &question) {
+            questions << question;
+            return true;
+        });
+        const QString file = m_files.filePath(QStringLiteral("run.checkout.json"));
+        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
+        auto *ranges = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
+        QVERIFY(ranges);
+        QTest::mouseClick(ranges, Qt::LeftButton);
+        QTest::keyClicks(ranges, QStringLiteral("Y0"), {}, keyDelayMs);
+        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("startButton")),
+                          Qt::LeftButton);
+        CheckoutRunner *runner = dialog->runner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isRunning(), longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(questions.size(), 2, longWait);
+        QCOMPARE(questions.at(1), translated(msg<MsgId::CheckoutPlcInRun>()));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y0")) == true && m_plc->value(addr("Y0")) == 1u, longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 0), CheckoutTableModel::tr("forced: seen?"),
+                                  longWait);
+        QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 0), resultText(CheckoutResult::Passed), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y0")) == false && m_plc->value(addr("Y0")) == 0u, longWait);
     }
 };
 
