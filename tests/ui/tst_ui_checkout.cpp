@@ -261,6 +261,20 @@ private Q_SLOTS:
             QCOMPARE(state(dialog, row), expected.at(row));
         QTRY_VERIFY_WITH_TIMEOUT(!runner->hasForced(), longWait); // the release confirmed
 
+        // A comment on the failed input, typed into the table (F2 edits it).
+        const QModelIndex comment = dialog->points()->index(2, CheckoutTableModel::CommentColumn);
+        table->setCurrentIndex(comment);
+        QTest::keyClick(table, Qt::Key_F2, {}, keyDelayMs);
+        QLineEdit *editor = nullptr;
+        QTRY_VERIFY_WITH_TIMEOUT((editor = table->viewport()->findChild<QLineEdit *>())
+                                     && editor->isVisible(),
+                                 longWait);
+        QTest::keyClicks(editor, QStringLiteral("no wire at X2"), {}, keyDelayMs);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTRY_COMPARE_WITH_TIMEOUT(comment.data().toString(), QStringLiteral("no wire at X2"),
+                                  longWait);
+        QCOMPARE(runner->plan().points[2].comment, QStringLiteral("no wire at X2"));
+
         const QString shots = qEnvironmentVariable("FATEK_CHECKOUT_SHOTS");
         if (!shots.isEmpty()) {
             table->setCurrentIndex(dialog->points()->index(2, 0));
@@ -277,6 +291,8 @@ private Q_SLOTS:
         QCOMPARE(loaded->points[4].result, CheckoutResult::Failed);
         QVERIFY(loaded->forced.empty());
         QCOMPARE(loaded->info.customer, QStringLiteral("ACME Foods"));
+        QTRY_COMPARE_WITH_TIMEOUT(CheckoutFile::loadFromFile(file)->points[2].comment,
+                                  QStringLiteral("no wire at X2"), longWait);
 
         // The report, PDF and CSV, through the Report button.
         auto *report = dialog->findChild<QPushButton *>(QStringLiteral("reportButton"));

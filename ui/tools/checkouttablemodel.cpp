@@ -104,6 +104,7 @@ QVariant CheckoutTableModel::data(const QModelIndex &index, int role) const
         case CommentColumn: return p.comment;
         }
         return {};
+    case Qt::EditRole: return index.column() == CommentColumn ? QVariant(p.comment) : QVariant();
     case Qt::ToolTipRole:
         if (index.column() == NameColumn || index.column() == PointColumn)
             return p.description.isEmpty() ? QVariant() : QVariant(p.description);
@@ -136,6 +137,23 @@ QVariant CheckoutTableModel::data(const QModelIndex &index, int role) const
         return {};
     default: return {};
     }
+}
+
+Qt::ItemFlags CheckoutTableModel::flags(const QModelIndex &index) const
+{
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (index.isValid() && index.column() == CommentColumn)
+        f |= Qt::ItemIsEditable;
+    return f;
+}
+
+bool CheckoutTableModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    if (!index.isValid() || index.column() != CommentColumn || role != Qt::EditRole
+        || index.row() >= rowCount())
+        return false;
+    m_runner->setComment(index.row(), value.toString()); // pointChanged refreshes the row
+    return true;
 }
 
 bool CheckoutTableModel::isForced(int row) const

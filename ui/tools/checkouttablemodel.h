@@ -11,9 +11,9 @@ class CheckoutRunner;
 
 // The points of an I/O checkout as a table, in the plan's order (its groups together, the group
 // named on its first row): group, point, name, kind, state, what was measured (or the live value),
-// comment. Refreshed from the runner's signals one row (or cell) at a time; reset only when the
-// runner gets a new plan (planReset()). Passed and failed rows are coloured from the palette; the
-// point under test is bold.
+// comment (editable). Refreshed from the runner's signals one row (or cell) at a time; reset only
+// when the runner gets a new plan (planReset()). Passed and failed rows are coloured from the
+// palette; the point under test is bold.
 class CheckoutTableModel : public QAbstractTableModel
 {
     Q_OBJECT
@@ -42,6 +42,9 @@ public:
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
     QVariant headerData(int section, Qt::Orientation orientation,
                         int role = Qt::DisplayRole) const override;
+    // The comment is the engineer's to edit (saved with the checkout at once).
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
 
 private:
     // The output under test, forced in the PLC and waiting for its answer.

@@ -84,7 +84,8 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     m_table->setModel(m_model);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // Only the comment is edited: double-click or F2 (Space, F and N test the points).
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     // What was measured takes the room: times and values read whole on one line.
     QHeaderView *header = m_table->horizontalHeader();
     header->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -409,8 +410,13 @@ void IoCheckoutDialog::showCurrent(int index)
 {
     if (index < 0 || index >= m_model->rowCount())
         return;
+    // Chosen in the table already (a click, F2 on its comment): the cell stays where it is.
+    const QModelIndex shown = m_table->currentIndex();
+    if (shown.isValid() && shown.row() == index)
+        return;
     m_following = true;
-    const QModelIndex cell = m_model->index(index, CheckoutTableModel::PointColumn);
+    const QModelIndex cell = m_model->index(
+        index, shown.isValid() ? shown.column() : int(CheckoutTableModel::PointColumn));
     m_table->setCurrentIndex(cell);
     m_table->scrollTo(cell);
     m_following = false;
