@@ -23,6 +23,8 @@ packages=(
     libc6-dbg
     # tests: serial pty pairs, the independent Python reference; git for the format check
     socat python3 git clang-format
+    # the I/O checkout's PDF report, read back as text by its tests (pdftotext)
+    poppler-utils
     # tools/tidy.sh: clang-tidy with the checks in .clang-tidy
     clang-tidy-14
     # packaging and its install test (tools/package-test.sh)

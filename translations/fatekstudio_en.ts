@@ -1510,6 +1510,246 @@
             <translation>%1 {1:value|values} written in %2 {2:request|requests} and read back equal.</translation>
         </message>
         <message>
+            <source>%1 cannot be checked: a checkout takes inputs X, outputs Y and registers R or D.</source>
+            <translation>%1 cannot be checked: a checkout takes inputs X, outputs Y and registers R or D.</translation>
+        </message>
+        <message>
+            <source>The checkout plan holds no points.</source>
+            <translation>The checkout plan holds no points.</translation>
+        </message>
+        <message>
+            <source>%1 appears twice in the checkout plan.</source>
+            <translation>%1 appears twice in the checkout plan.</translation>
+        </message>
+        <message>
+            <source>No imported name of an input or output starts with &quot;%1&quot;.</source>
+            <translation>No imported name of an input or output starts with &quot;%1&quot;.</translation>
+        </message>
+        <message>
+            <source>checkout plan line %1: %2</source>
+            <translation>checkout plan line %1: %2</translation>
+        </message>
+        <message>
+            <source>expected the columns %1</source>
+            <translation>expected the columns %1</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a whole number from 0 to 65535</source>
+            <translation>&quot;%1&quot; is not a whole number from 0 to 65535</translation>
+        </message>
+        <message>
+            <source>%1: an analog point needs its expected low and high values</source>
+            <translation>%1: an analog point needs its expected low and high values</translation>
+        </message>
+        <message>
+            <source>Cannot open the checkout %1: %2</source>
+            <translation>Cannot open the checkout %1: %2</translation>
+        </message>
+        <message>
+            <source>Cannot save the checkout %1: %2</source>
+            <translation>Cannot save the checkout %1: %2</translation>
+        </message>
+        <message>
+            <source>The checkout %1 is damaged: %2</source>
+            <translation>The checkout %1 is damaged: %2</translation>
+        </message>
+        <message>
+            <source>not a checkout (&quot;format&quot; is not &quot;%1&quot;)</source>
+            <translation>not a checkout (&quot;format&quot; is not &quot;%1&quot;)</translation>
+        </message>
+        <message>
+            <source>No connection to a PLC: the checkout waits.</source>
+            <translation>No connection to a PLC: the checkout waits.</translation>
+        </message>
+        <message>
+            <source>Operator mode: testing outputs is refused; nothing was forced.</source>
+            <translation>Operator mode: testing outputs is refused; nothing was forced.</translation>
+        </message>
+        <message>
+            <source>%1 is still under test: answer for it before the next output.</source>
+            <translation>%1 is still under test: answer for it before the next output.</translation>
+        </message>
+        <message>
+            <source>%1 is not an output of the checkout plan.</source>
+            <translation>%1 is not an output of the checkout plan.</translation>
+        </message>
+        <message>
+            <source>%1 changed while testing %2: crossed wiring?</source>
+            <translation>%1 changed while testing %2: crossed wiring?</translation>
+        </message>
+        <message>
+            <source>The PLC is in RUN: its program drives the outputs too. Force outputs anyway?</source>
+            <translation>The PLC is in RUN: its program drives the outputs too. Force outputs anyway?</translation>
+        </message>
+        <message>
+            <source>Outputs are not tested while the PLC is in RUN without a confirmation; nothing was forced.</source>
+            <translation>Outputs are not tested while the PLC is in RUN without a confirmation; nothing was forced.</translation>
+        </message>
+        <message>
+            <source>Forcing %1 failed: %2</source>
+            <translation>Forcing %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>Releasing %1 failed: %2. It stays recorded as forced and is released when the link is back.</source>
+            <translation>Releasing %1 failed: %2. It stays recorded as forced and is released when the link is back.</translation>
+        </message>
+        <message>
+            <source>Released the outputs the checkout had forced: %1.</source>
+            <translation>Released the outputs the checkout had forced: %1.</translation>
+        </message>
+        <message>
+            <source>The link is lost: a forced output is released as soon as it is back.</source>
+            <translation>The link is lost: a forced output is released as soon as it is back.</translation>
+        </message>
+        <message>
+            <source>Reading %1 failed: %2</source>
+            <translation>Reading %1 failed: %2</translation>
+        </message>
+        <message>
+            <source>Input</source>
+            <translation>Input</translation>
+        </message>
+        <message>
+            <source>Output</source>
+            <translation>Output</translation>
+        </message>
+        <message>
+            <source>Analog</source>
+            <translation>Analog</translation>
+        </message>
+        <message>
+            <source>Untested</source>
+            <translation>Untested</translation>
+        </message>
+        <message>
+            <source>Passed</source>
+            <translation>Passed</translation>
+        </message>
+        <message>
+            <source>Failed</source>
+            <translation>Failed</translation>
+        </message>
+        <message>
+            <source>Skipped</source>
+            <translation>Skipped</translation>
+        </message>
+        <message>
+            <source>0-&gt;1 at %1, 1-&gt;0 at %2</source>
+            <translation>0-&gt;1 at %1, 1-&gt;0 at %2</translation>
+        </message>
+        <message>
+            <source>seen in the field</source>
+            <translation>seen in the field</translation>
+        </message>
+        <message>
+            <source>not seen in the field</source>
+            <translation>not seen in the field</translation>
+        </message>
+        <message>
+            <source>low %1 (expected %2), high %3 (expected %4), tolerance %5</source>
+            <translation>low %1 (expected %2), high %3 (expected %4), tolerance %5</translation>
+        </message>
+        <message>
+            <source>also changed while it was tested: %1</source>
+            <translation>also changed while it was tested: %1</translation>
+        </message>
+        <message>
+            <source>I/O checkout report</source>
+            <translation>I/O checkout report</translation>
+        </message>
+        <message>
+            <source>Project</source>
+            <translation>Project</translation>
+        </message>
+        <message>
+            <source>Customer</source>
+            <translation>Customer</translation>
+        </message>
+        <message>
+            <source>PLC model</source>
+            <translation>PLC model</translation>
+        </message>
+        <message>
+            <source>OS version</source>
+            <translation>OS version</translation>
+        </message>
+        <message>
+            <source>PLC station</source>
+            <translation>PLC station</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Date</translation>
+        </message>
+        <message>
+            <source>Engineer</source>
+            <translation>Engineer</translation>
+        </message>
+        <message>
+            <source>not reported by the PLC</source>
+            <translation>not reported by the PLC</translation>
+        </message>
+        <message>
+            <source>Point</source>
+            <translation>Point</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>Group</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>Kind</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Result</translation>
+        </message>
+        <message>
+            <source>Measured</source>
+            <translation>Measured</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>Comment</translation>
+        </message>
+        <message>
+            <source>Tested at</source>
+            <translation>Tested at</translation>
+        </message>
+        <message>
+            <source>%1 points: %2 passed, %3 failed, %4 skipped, %5 untested.</source>
+            <translation>%1 points: %2 passed, %3 failed, %4 skipped, %5 untested.</translation>
+        </message>
+        <message>
+            <source>Summary</source>
+            <translation>Summary</translation>
+        </message>
+        <message>
+            <source>Signatures</source>
+            <translation>Signatures</translation>
+        </message>
+        <message>
+            <source>Commissioning engineer</source>
+            <translation>Commissioning engineer</translation>
+        </message>
+        <message>
+            <source>Customer representative</source>
+            <translation>Customer representative</translation>
+        </message>
+        <message>
+            <source>Cannot write the report %1: %2</source>
+            <translation>Cannot write the report %1: %2</translation>
+        </message>
+        <message>
+            <source>%1: a report file name ends in .pdf or .csv.</source>
+            <translation>%1: a report file name ends in .pdf or .csv.</translation>
+        </message>
+        <message>
             <source>No broker given.</source>
             <translation>No broker given.</translation>
         </message>
@@ -3376,6 +3616,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>%1: %2</source>
             <translation>%1: %2</translation>
         </message>
+        <message>
+            <source>I/O &amp;Checkout…</source>
+            <translation>I/O &amp;Checkout…</translation>
+        </message>
+        <message>
+            <source>Check every input, output and analog point of a machine and write the report</source>
+            <translation>Check every input, output and analog point of a machine and write the report</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -4490,6 +4738,200 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Read back</source>
             <translation>Read back</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutTableModel</name>
+        <message>
+            <source>forced: seen?</source>
+            <translation>forced: seen?</translation>
+        </message>
+        <message>
+            <source>now %1</source>
+            <translation>now %1</translation>
+        </message>
+        <message>
+            <source>%1; now %2</source>
+            <translation>%1; now %2</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>Group</translation>
+        </message>
+        <message>
+            <source>Point</source>
+            <translation>Point</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>Kind</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>State</translation>
+        </message>
+        <message>
+            <source>Times / values</source>
+            <translation>Times / values</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>Comment</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::IoCheckoutDialog</name>
+        <message>
+            <source>I/O Checkout</source>
+            <translation>I/O Checkout</translation>
+        </message>
+        <message>
+            <source>X0..X15, Y0..Y7, R100</source>
+            <translation>X0..X15, Y0..Y7, R100</translation>
+        </message>
+        <message>
+            <source>Points:</source>
+            <translation>Points:</translation>
+        </message>
+        <message>
+            <source>Project:</source>
+            <translation>Project:</translation>
+        </message>
+        <message>
+            <source>Customer:</source>
+            <translation>Customer:</translation>
+        </message>
+        <message>
+            <source>Engineer:</source>
+            <translation>Engineer:</translation>
+        </message>
+        <message>
+            <source>New</source>
+            <translation>New</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>Open…</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>Start</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stop</translation>
+        </message>
+        <message>
+            <source>Report…</source>
+            <translation>Report…</translation>
+        </message>
+        <message>
+            <source>Write the report as PDF or CSV</source>
+            <translation>Write the report as PDF or CSV</translation>
+        </message>
+        <message>
+            <source>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</source>
+            <translation>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</translation>
+        </message>
+        <message>
+            <source>Open Checkout</source>
+            <translation>Open Checkout</translation>
+        </message>
+        <message>
+            <source>Checkouts (*.json)</source>
+            <translation>Checkouts (*.json)</translation>
+        </message>
+        <message>
+            <source>Checkout Report</source>
+            <translation>Checkout Report</translation>
+        </message>
+        <message>
+            <source>PDF reports (*.pdf);;CSV files (*.csv)</source>
+            <translation>PDF reports (*.pdf);;CSV files (*.csv)</translation>
+        </message>
+        <message>
+            <source>Watching the inputs: actuate %1 in the field.</source>
+            <translation>Watching the inputs: actuate %1 in the field.</translation>
+        </message>
+        <message>
+            <source>%1 is forced on. Seen in the field? Space: seen, F: not seen.</source>
+            <translation>%1 is forced on. Seen in the field? Space: seen, F: not seen.</translation>
+        </message>
+        <message>
+            <source>%1 is released.</source>
+            <translation>%1 is released.</translation>
+        </message>
+        <message>
+            <source>Force Output</source>
+            <translation>Force Output</translation>
+        </message>
+        <message>
+            <source>Not forced: nothing was written.</source>
+            <translation>Not forced: nothing was written.</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>Stopped: the target changed.</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>(operator mode: outputs are not forced)</source>
+            <translation>(operator mode: outputs are not forced)</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1 (%2)</translation>
+        </message>
+        <message>
+            <source>Save Checkout</source>
+            <translation>Save Checkout</translation>
+        </message>
+        <message>
+            <source>Reading the PLC&apos;s status…</source>
+            <translation>Reading the PLC&apos;s status…</translation>
+        </message>
+        <message>
+            <source>Opened %1.</source>
+            <translation>Opened %1.</translation>
+        </message>
+        <message>
+            <source>The checkout left %1 forced on %2. Release them now?</source>
+            <translation>The checkout left %1 forced on %2. Release them now?</translation>
+        </message>
+        <message>
+            <source>Release Outputs</source>
+            <translation>Release Outputs</translation>
+        </message>
+        <message>
+            <source>Still forced: %1 (Start releases them).</source>
+            <translation>Still forced: %1 (Start releases them).</translation>
+        </message>
+        <message>
+            <source>Report written: %1</source>
+            <translation>Report written: %1</translation>
+        </message>
+        <message>
+            <source>Answer for %1 first (Space: seen, F: not seen).</source>
+            <translation>Answer for %1 first (Space: seen, F: not seen).</translation>
+        </message>
+        <message>
+            <source>Operator mode: outputs are not forced.</source>
+            <translation>Operator mode: outputs are not forced.</translation>
+        </message>
+        <message>
+            <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
+            <translation>Force %1 on at %2? It stays on until you answer, then it is released.</translation>
         </message>
     </context>
     <context>

@@ -1510,6 +1510,246 @@
             <translation>以 %2 次請求寫入 %1 個值，回讀結果一致。</translation>
         </message>
         <message>
+            <source>%1 cannot be checked: a checkout takes inputs X, outputs Y and registers R or D.</source>
+            <translation>%1 無法檢查：點檢只接受輸入 X、輸出 Y 及暫存器 R 或 D。</translation>
+        </message>
+        <message>
+            <source>The checkout plan holds no points.</source>
+            <translation>點檢計畫中沒有任何點。</translation>
+        </message>
+        <message>
+            <source>%1 appears twice in the checkout plan.</source>
+            <translation>%1 在點檢計畫中出現兩次。</translation>
+        </message>
+        <message>
+            <source>No imported name of an input or output starts with &quot;%1&quot;.</source>
+            <translation>沒有以「%1」開頭的輸入或輸出匯入名稱。</translation>
+        </message>
+        <message>
+            <source>checkout plan line %1: %2</source>
+            <translation>點檢計畫第 %1 行：%2</translation>
+        </message>
+        <message>
+            <source>expected the columns %1</source>
+            <translation>應有的欄位為 %1</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a whole number from 0 to 65535</source>
+            <translation>「%1」不是 0 到 65535 的整數</translation>
+        </message>
+        <message>
+            <source>%1: an analog point needs its expected low and high values</source>
+            <translation>%1：類比點需要預期的低端與高端值</translation>
+        </message>
+        <message>
+            <source>Cannot open the checkout %1: %2</source>
+            <translation>無法開啟點檢檔 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cannot save the checkout %1: %2</source>
+            <translation>無法儲存點檢檔 %1：%2</translation>
+        </message>
+        <message>
+            <source>The checkout %1 is damaged: %2</source>
+            <translation>點檢檔 %1 已損壞：%2</translation>
+        </message>
+        <message>
+            <source>not a checkout (&quot;format&quot; is not &quot;%1&quot;)</source>
+            <translation>不是點檢檔（格式標記不是「%1」）</translation>
+        </message>
+        <message>
+            <source>No connection to a PLC: the checkout waits.</source>
+            <translation>未連線到 PLC：點檢等待中。</translation>
+        </message>
+        <message>
+            <source>Operator mode: testing outputs is refused; nothing was forced.</source>
+            <translation>操作員模式：拒絕測試輸出；未強制任何點。</translation>
+        </message>
+        <message>
+            <source>%1 is still under test: answer for it before the next output.</source>
+            <translation>%1 仍在測試中：請先回答它，再測下一個輸出。</translation>
+        </message>
+        <message>
+            <source>%1 is not an output of the checkout plan.</source>
+            <translation>%1 不是點檢計畫中的輸出。</translation>
+        </message>
+        <message>
+            <source>%1 changed while testing %2: crossed wiring?</source>
+            <translation>測試 %2 時 %1 發生變化：配線交錯？</translation>
+        </message>
+        <message>
+            <source>The PLC is in RUN: its program drives the outputs too. Force outputs anyway?</source>
+            <translation>PLC 處於 RUN：其程式也在驅動輸出。仍要強制輸出嗎？</translation>
+        </message>
+        <message>
+            <source>Outputs are not tested while the PLC is in RUN without a confirmation; nothing was forced.</source>
+            <translation>PLC 處於 RUN 且未經確認，不測試輸出；未強制任何點。</translation>
+        </message>
+        <message>
+            <source>Forcing %1 failed: %2</source>
+            <translation>強制 %1 失敗：%2</translation>
+        </message>
+        <message>
+            <source>Releasing %1 failed: %2. It stays recorded as forced and is released when the link is back.</source>
+            <translation>解除 %1 失敗：%2。它仍記錄為已強制，連線恢復後即解除。</translation>
+        </message>
+        <message>
+            <source>Released the outputs the checkout had forced: %1.</source>
+            <translation>已解除點檢先前強制的輸出：%1。</translation>
+        </message>
+        <message>
+            <source>The link is lost: a forced output is released as soon as it is back.</source>
+            <translation>連線中斷：連線恢復後將立即解除已強制的輸出。</translation>
+        </message>
+        <message>
+            <source>Reading %1 failed: %2</source>
+            <translation>讀取 %1 失敗：%2</translation>
+        </message>
+        <message>
+            <source>Input</source>
+            <translation>輸入</translation>
+        </message>
+        <message>
+            <source>Output</source>
+            <translation>輸出</translation>
+        </message>
+        <message>
+            <source>Analog</source>
+            <translation>類比</translation>
+        </message>
+        <message>
+            <source>Untested</source>
+            <translation>未測試</translation>
+        </message>
+        <message>
+            <source>Passed</source>
+            <translation>合格</translation>
+        </message>
+        <message>
+            <source>Failed</source>
+            <translation>不合格</translation>
+        </message>
+        <message>
+            <source>Skipped</source>
+            <translation>略過</translation>
+        </message>
+        <message>
+            <source>0-&gt;1 at %1, 1-&gt;0 at %2</source>
+            <translation>0-&gt;1 於 %1，1-&gt;0 於 %2</translation>
+        </message>
+        <message>
+            <source>seen in the field</source>
+            <translation>現場已確認</translation>
+        </message>
+        <message>
+            <source>not seen in the field</source>
+            <translation>現場未見動作</translation>
+        </message>
+        <message>
+            <source>low %1 (expected %2), high %3 (expected %4), tolerance %5</source>
+            <translation>低端 %1（預期 %2），高端 %3（預期 %4），容許誤差 %5</translation>
+        </message>
+        <message>
+            <source>also changed while it was tested: %1</source>
+            <translation>測試期間同時變化：%1</translation>
+        </message>
+        <message>
+            <source>I/O checkout report</source>
+            <translation>I/O 點檢報告</translation>
+        </message>
+        <message>
+            <source>Project</source>
+            <translation>專案</translation>
+        </message>
+        <message>
+            <source>Customer</source>
+            <translation>客戶</translation>
+        </message>
+        <message>
+            <source>PLC model</source>
+            <translation>PLC 機型</translation>
+        </message>
+        <message>
+            <source>OS version</source>
+            <translation>OS 版本</translation>
+        </message>
+        <message>
+            <source>PLC station</source>
+            <translation>PLC 站號</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>日期</translation>
+        </message>
+        <message>
+            <source>Engineer</source>
+            <translation>工程師</translation>
+        </message>
+        <message>
+            <source>not reported by the PLC</source>
+            <translation>PLC 未回報</translation>
+        </message>
+        <message>
+            <source>Point</source>
+            <translation>點位</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名稱</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>群組</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>類型</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>結果</translation>
+        </message>
+        <message>
+            <source>Measured</source>
+            <translation>量測</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>備註</translation>
+        </message>
+        <message>
+            <source>Tested at</source>
+            <translation>測試時間</translation>
+        </message>
+        <message>
+            <source>%1 points: %2 passed, %3 failed, %4 skipped, %5 untested.</source>
+            <translation>共 %1 點：%2 點合格，%3 點不合格，%4 點略過，%5 點未測試。</translation>
+        </message>
+        <message>
+            <source>Summary</source>
+            <translation>摘要</translation>
+        </message>
+        <message>
+            <source>Signatures</source>
+            <translation>簽名</translation>
+        </message>
+        <message>
+            <source>Commissioning engineer</source>
+            <translation>試車工程師</translation>
+        </message>
+        <message>
+            <source>Customer representative</source>
+            <translation>客戶代表</translation>
+        </message>
+        <message>
+            <source>Cannot write the report %1: %2</source>
+            <translation>無法寫入報告 %1：%2</translation>
+        </message>
+        <message>
+            <source>%1: a report file name ends in .pdf or .csv.</source>
+            <translation>%1：報告檔名須以 *.pdf 或 *.csv 結尾。</translation>
+        </message>
+        <message>
             <source>No broker given.</source>
             <translation>未指定代理伺服器。</translation>
         </message>
@@ -3368,6 +3608,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>%1: %2</source>
             <translation>%1：%2</translation>
         </message>
+        <message>
+            <source>I/O &amp;Checkout…</source>
+            <translation>I/O 點檢(&amp;C)…</translation>
+        </message>
+        <message>
+            <source>Check every input, output and analog point of a machine and write the report</source>
+            <translation>逐一檢查機台的每個輸入、輸出與類比點，並寫出報告</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrafficLogModel</name>
@@ -4471,6 +4719,200 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Read back</source>
             <translation>回讀</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutTableModel</name>
+        <message>
+            <source>forced: seen?</source>
+            <translation>強制中：看到了嗎？</translation>
+        </message>
+        <message>
+            <source>now %1</source>
+            <translation>目前 %1</translation>
+        </message>
+        <message>
+            <source>%1; now %2</source>
+            <translation>%1；目前 %2</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>群組</translation>
+        </message>
+        <message>
+            <source>Point</source>
+            <translation>點位</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名稱</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>種類</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>狀態</translation>
+        </message>
+        <message>
+            <source>Times / values</source>
+            <translation>時間 / 數值</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>備註</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::IoCheckoutDialog</name>
+        <message>
+            <source>I/O Checkout</source>
+            <translation>I/O 點檢</translation>
+        </message>
+        <message>
+            <source>X0..X15, Y0..Y7, R100</source>
+            <translation>X0..X15, Y0..Y7, R100</translation>
+        </message>
+        <message>
+            <source>Points:</source>
+            <translation>點位：</translation>
+        </message>
+        <message>
+            <source>Project:</source>
+            <translation>專案：</translation>
+        </message>
+        <message>
+            <source>Customer:</source>
+            <translation>客戶：</translation>
+        </message>
+        <message>
+            <source>Engineer:</source>
+            <translation>工程師：</translation>
+        </message>
+        <message>
+            <source>New</source>
+            <translation>新增</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>開啟…</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>開始</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>停止</translation>
+        </message>
+        <message>
+            <source>Report…</source>
+            <translation>報告…</translation>
+        </message>
+        <message>
+            <source>Write the report as PDF or CSV</source>
+            <translation>寫出報告（可攜文件 *.pdf 或 CSV）</translation>
+        </message>
+        <message>
+            <source>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</source>
+            <translation>空白鍵：已確認（輸出先強制），F：不合格，N：下一點，L / H：類比低端 / 高端</translation>
+        </message>
+        <message>
+            <source>Open Checkout</source>
+            <translation>開啟點檢</translation>
+        </message>
+        <message>
+            <source>Checkouts (*.json)</source>
+            <translation>點檢檔 (*.json)</translation>
+        </message>
+        <message>
+            <source>Checkout Report</source>
+            <translation>點檢報告</translation>
+        </message>
+        <message>
+            <source>PDF reports (*.pdf);;CSV files (*.csv)</source>
+            <translation>可攜文件報告 (*.pdf);;CSV 檔案 (*.csv)</translation>
+        </message>
+        <message>
+            <source>Watching the inputs: actuate %1 in the field.</source>
+            <translation>正在監看輸入：請在現場動作 %1。</translation>
+        </message>
+        <message>
+            <source>%1 is forced on. Seen in the field? Space: seen, F: not seen.</source>
+            <translation>%1 已強制為 ON。現場看到了嗎？空白鍵：看到，F：沒看到。</translation>
+        </message>
+        <message>
+            <source>%1 is released.</source>
+            <translation>%1 已解除強制。</translation>
+        </message>
+        <message>
+            <source>Force Output</source>
+            <translation>強制輸出</translation>
+        </message>
+        <message>
+            <source>Not forced: nothing was written.</source>
+            <translation>未強制：沒有寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Stopped: the target changed.</source>
+            <translation>已停止：目標已變更。</translation>
+        </message>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>(operator mode: outputs are not forced)</source>
+            <translation>（操作員模式：不強制輸出）</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1（%2）</translation>
+        </message>
+        <message>
+            <source>Save Checkout</source>
+            <translation>儲存點檢</translation>
+        </message>
+        <message>
+            <source>Reading the PLC&apos;s status…</source>
+            <translation>正在讀取 PLC 狀態…</translation>
+        </message>
+        <message>
+            <source>Opened %1.</source>
+            <translation>已開啟 %1。</translation>
+        </message>
+        <message>
+            <source>The checkout left %1 forced on %2. Release them now?</source>
+            <translation>點檢在%2留下強制中的 %1。現在解除嗎？</translation>
+        </message>
+        <message>
+            <source>Release Outputs</source>
+            <translation>解除輸出強制</translation>
+        </message>
+        <message>
+            <source>Still forced: %1 (Start releases them).</source>
+            <translation>仍在強制中：%1（按「開始」即解除）。</translation>
+        </message>
+        <message>
+            <source>Report written: %1</source>
+            <translation>報告已寫出：%1</translation>
+        </message>
+        <message>
+            <source>Answer for %1 first (Space: seen, F: not seen).</source>
+            <translation>請先回答 %1（空白鍵：看到，F：沒看到）。</translation>
+        </message>
+        <message>
+            <source>Operator mode: outputs are not forced.</source>
+            <translation>操作員模式：不強制輸出。</translation>
+        </message>
+        <message>
+            <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
+            <translation>在%2將 %1 強制為 ON？回答前保持 ON，回答後即解除。</translation>
         </message>
     </context>
     <context>

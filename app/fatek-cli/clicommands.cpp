@@ -1,6 +1,7 @@
 #include "clicommands.h"
 
 #include "app/common/linkarguments.h"
+#include "clicheckoutcommand.h"
 #include "clicontext.h"
 #include "clicontrolcommand.h"
 #include "clidiffcommand.h"
@@ -214,6 +215,20 @@ constexpr CommandSpec commands[] = {
      {{"restore-values FILE [RANGES]",
        "write FILE's values back (default: all but X), after a confirmation (--yes), then read "
        "them back and compare"}}},
+    {"checkout",
+     CliCommandKind::Checkout,
+     1,
+     -1,
+     true,
+     CliCheckoutCommand::parse,
+     make<CliCheckoutCommand>,
+     {{"checkout PLAN [--report FILE.pdf|FILE.csv] [--lang en|zh_TW] [--save FILE] [--project T] "
+       "[--customer T] [--engineer T]",
+       "I/O checkout: PLAN is ranges (\"X0..X15, Y0..Y7\"), a plan CSV or a checkout file "
+       "(.json, resumed and saved as it goes); inputs are watched until each went on and off, "
+       "outputs forced one at a time and the answer asked (a terminal, or --yes with the "
+       "answers on standard input), analog points read at both ends; exit 6 when a point "
+       "failed or stayed untested"}}},
 };
 
 const CommandSpec *findCommand(const QString &name)

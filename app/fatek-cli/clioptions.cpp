@@ -94,7 +94,8 @@ QString usageText()
                "connection), 4 PLC error (also RUN during restore, program verification failed),\n"
                "5 refused by --read-only, 6 differences found (diff; restore-values read back "
                "other\n"
-               "values), 130 interrupted (Ctrl-C), 141 the output's reader is gone (a closed "
+               "values; checkout: a point failed or untested), 130 interrupted (Ctrl-C), 141 the "
+               "output's reader is gone (a closed "
                "pipe).\n")
         .arg(commandsText());
 }
@@ -102,10 +103,12 @@ QString usageText()
 QStringList valuedOptionNames()
 {
     return LinkArguments::names()
-           + QStringList{QStringLiteral("count"),     QStringLiteral("interval"),
-                         QStringLiteral("cycles"),    QStringLiteral("output"),
-                         QStringLiteral("format"),    QStringLiteral("names"),
-                         QStringLiteral("completion")};
+           + QStringList{
+               QStringLiteral("count"),      QStringLiteral("interval"), QStringLiteral("cycles"),
+               QStringLiteral("output"),     QStringLiteral("format"),   QStringLiteral("names"),
+               QStringLiteral("completion"), QStringLiteral("report"),   QStringLiteral("lang"),
+               QStringLiteral("save"),       QStringLiteral("project"),  QStringLiteral("customer"),
+               QStringLiteral("engineer")};
 }
 
 QStringList flagOptionNames()
@@ -124,6 +127,7 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     bool linkCount = false;
     bool forceHex = false, forceAscii = false;
     bool countGiven = false, intervalGiven = false, cyclesGiven = false, frameGiven = false;
+    bool checkoutGiven = false;
     QString countText, intervalText, cyclesText;
     auto fail = [](const QString &message) {
         return CliParseResult{std::nullopt, message};
@@ -171,6 +175,35 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                     return fail(
                         QStringLiteral("--completion takes bash or zsh, not \"%1\".").arg(value));
                 o.completion = value;
+                continue;
+            }
+            if (name == QLatin1String("report") || name == QLatin1String("save")) {
+                if (value.trimmed().isEmpty())
+                    return fail(QStringLiteral("--%1 needs a file name.").arg(name));
+                if (name == QLatin1String("report")
+                    && !value.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)
+                    && !value.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
+                    return fail(QStringLiteral("--report: a report file name ends in .pdf or "
+                                               ".csv, not \"%1\".")
+                                    .arg(value));
+                (name == QLatin1String("report") ? o.checkoutReport : o.checkoutSave) = value;
+                checkoutGiven = true;
+                continue;
+            }
+            if (name == QLatin1String("lang")) {
+                if (value != QLatin1String("en") && value != QLatin1String("zh_TW"))
+                    return fail(QStringLiteral("--lang takes en or zh_TW, not \"%1\".").arg(value));
+                o.checkoutLanguage = value;
+                checkoutGiven = true;
+                continue;
+            }
+            if (name == QLatin1String("project") || name == QLatin1String("customer")
+                || name == QLatin1String("engineer")) {
+                (name == QLatin1String("project")    ? o.checkoutProject
+                 : name == QLatin1String("customer") ? o.checkoutCustomer
+                                                     : o.checkoutEngineer)
+                    = value;
+                checkoutGiven = true;
                 continue;
             }
             if (name == QLatin1String("count")) {
@@ -279,6 +312,9 @@ CliParseResult parseCommandLine(const QStringList &arguments)
         return fail(QStringLiteral("--interval and --cycles only apply to monitor."));
     if ((!o.outputPath.isEmpty() || o.valueFormat || !o.namesPath.isEmpty()) && !uses("monitor"))
         return fail(QStringLiteral("--output, --format and --names only apply to monitor."));
+    if (checkoutGiven && !uses("checkout"))
+        return fail(QStringLiteral("--report, --lang, --save, --project, --customer and "
+                                   "--engineer only apply to checkout."));
     if ((frameGiven || forceHex || forceAscii) && !uses("raw"))
         return fail(QStringLiteral("--frame, --hex and --ascii only apply to raw."));
     if (countGiven) {

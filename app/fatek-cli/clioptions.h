@@ -47,7 +47,8 @@ enum class CliCommandKind {
     Restore,
     Snapshot,
     Diff,
-    RestoreValues
+    RestoreValues,
+    Checkout
 };
 enum class OutputFormat { Table, Json, Csv };
 
@@ -109,6 +110,15 @@ struct CliOptions
     QString namesPath;  // monitor --names: the ladder project's comment/symbol list
     std::optional<DisplayFormat> valueFormat; // monitor --format
     QString completion; // --completion bash|zsh: print that shell's completion script
+
+    // checkout: the report (.pdf or .csv) and its language, the checkout file saved as it goes
+    // (default: PLAN when it is a .json), the report's header
+    QString checkoutReport;
+    QString checkoutLanguage = QStringLiteral("en");
+    QString checkoutSave;
+    QString checkoutProject;
+    QString checkoutCustomer;
+    QString checkoutEngineer;
 };
 
 struct CliParseResult

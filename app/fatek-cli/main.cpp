@@ -5,12 +5,15 @@
 #include "clirunner.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
 #include <QTimer>
 
 #include <cstdlib>
+#include <cstring>
+#include <memory>
 
 #ifdef Q_OS_UNIX
 #include <csignal>
@@ -26,7 +29,17 @@ int main(int argc, char *argv[])
     // serial links, where no socket is opened), and the data log is closed on the way out.
     ::signal(SIGPIPE, SIG_IGN);
 #endif
-    QCoreApplication app(argc, argv);
+    // A checkout's PDF report lays out text (QPdfWriter): that needs a QGuiApplication, on the
+    // offscreen platform so that no display is needed. Every other command stays Qt Core.
+    bool checkout = false;
+    for (int i = 1; i < argc; ++i)
+        checkout = checkout || std::strcmp(argv[i], "checkout") == 0;
+    if (checkout && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    const std::unique_ptr<QCoreApplication> application
+        = checkout ? std::make_unique<QGuiApplication>(argc, argv)
+                   : std::make_unique<QCoreApplication>(argc, argv);
+    QCoreApplication &app = *application;
     QCoreApplication::setApplicationName(QStringLiteral("fatek-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_TEXT));
 

@@ -191,3 +191,125 @@ FATEK_MSG(RestoreDone, 2,
           QT_TRANSLATE_NOOP(
               "Fatek::Message",
               "%1 {1:value|values} written in %2 {2:request|requests} and read back equal."))
+
+// The I/O checkout (issue 36).
+
+// Checkout plans (core/commission/checkoutplan.cpp).
+FATEK_MSG(CheckoutPlanBadKind, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 cannot be checked: a checkout takes inputs X, outputs Y and "
+                            "registers R or D."))
+FATEK_MSG(CheckoutPlanEmpty, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "The checkout plan holds no points."))
+FATEK_MSG(CheckoutPlanDuplicate, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 appears twice in the checkout plan."))
+FATEK_MSG(CheckoutPlanNoSymbols, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "No imported name of an input or output starts with \"%1\"."))
+// Plan CSV: %1 the line number, %2 what is wrong.
+FATEK_MSG(CheckoutCsvLine, 2, QT_TRANSLATE_NOOP("Fatek::Message", "checkout plan line %1: %2"))
+// %1 the columns ("address,name,comment,group,low,high,tolerance").
+FATEK_MSG(CheckoutCsvColumns, 1, QT_TRANSLATE_NOOP("Fatek::Message", "expected the columns %1"))
+FATEK_MSG(CheckoutCsvNumber, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a whole number from 0 to 65535"))
+FATEK_MSG(CheckoutAnalogNeedsRange, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1: an analog point needs its expected low and high values"))
+
+// Checkout files (core/commission/checkoutfile.cpp): %1 the file, %2 why.
+FATEK_MSG(CheckoutFileCannotRead, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Cannot open the checkout %1: %2"))
+FATEK_MSG(CheckoutFileCannotWrite, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Cannot save the checkout %1: %2"))
+FATEK_MSG(CheckoutFileDamaged, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "The checkout %1 is damaged: %2"))
+FATEK_MSG(CheckoutFileNotCheckout, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "not a checkout (\"format\" is not \"%1\")"))
+
+// Running a checkout (core/commission/checkoutrunner.cpp).
+FATEK_MSG(CheckoutNoSession, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "No connection to a PLC: the checkout waits."))
+FATEK_MSG(CheckoutReadOnly, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Operator mode: testing outputs is refused; nothing was forced."))
+FATEK_MSG(CheckoutOutputBusy, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 is still under test: answer for it before the next output."))
+FATEK_MSG(CheckoutNotOutput, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 is not an output of the checkout plan."))
+// %1 the input that changed, %2 the one under test.
+FATEK_MSG(CheckoutCrossedWiring, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 changed while testing %2: crossed wiring?"))
+FATEK_MSG(CheckoutPlcInRun, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The PLC is in RUN: its program drives the outputs too. Force "
+                            "outputs anyway?"))
+FATEK_MSG(CheckoutRunNotConfirmed, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Outputs are not tested while the PLC is in RUN without a "
+                            "confirmation; nothing was forced."))
+FATEK_MSG(CheckoutForceFailed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Forcing %1 failed: %2"))
+FATEK_MSG(CheckoutReleaseFailed, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Releasing %1 failed: %2. It stays recorded as forced and is "
+                            "released when the link is back."))
+// %1 the outputs released ("Y0, Y3").
+FATEK_MSG(CheckoutReleased, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Released the outputs the checkout had forced: %1."))
+FATEK_MSG(CheckoutLinkLost, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The link is lost: a forced output is released as soon as it is "
+                            "back."))
+FATEK_MSG(CheckoutReadFailed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Reading %1 failed: %2"))
+
+// The checkout's words (reports, the GUI): kinds and results of a point.
+FATEK_MSG(CheckoutKindInput, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Input"))
+FATEK_MSG(CheckoutKindOutput, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Output"))
+FATEK_MSG(CheckoutKindAnalog, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Analog"))
+FATEK_MSG(CheckoutUntested, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Untested"))
+FATEK_MSG(CheckoutPassed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Passed"))
+FATEK_MSG(CheckoutFailed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Failed"))
+FATEK_MSG(CheckoutSkipped, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Skipped"))
+// What was measured: %1 and %2 the times 0->1 and 1->0 were seen ("-" when not).
+FATEK_MSG(CheckoutInputTimes, 2, QT_TRANSLATE_NOOP("Fatek::Message", "0->1 at %1, 1->0 at %2"))
+FATEK_MSG(CheckoutOutputSeen, 0, QT_TRANSLATE_NOOP("Fatek::Message", "seen in the field"))
+FATEK_MSG(CheckoutOutputNotSeen, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not seen in the field"))
+// %1 %2 the raw values read at the low and high end ("-" when not), %3 %4 expected, %5 the
+// tolerance.
+FATEK_MSG(CheckoutAnalogEnds, 5,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "low %1 (expected %2), high %3 (expected %4), tolerance %5"))
+// Flagged on an input: %1 the inputs that changed while it was under test.
+FATEK_MSG(CheckoutChangedWith, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "also changed while it was tested: %1"))
+
+// The report (core/commission/checkoutcsv.cpp, report/checkoutpdf.cpp).
+FATEK_MSG(ReportTitle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "I/O checkout report"))
+FATEK_MSG(ReportProject, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Project"))
+FATEK_MSG(ReportCustomer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Customer"))
+FATEK_MSG(ReportPlcModel, 0, QT_TRANSLATE_NOOP("Fatek::Message", "PLC model"))
+FATEK_MSG(ReportOsVersion, 0, QT_TRANSLATE_NOOP("Fatek::Message", "OS version"))
+FATEK_MSG(ReportStation, 0, QT_TRANSLATE_NOOP("Fatek::Message", "PLC station"))
+FATEK_MSG(ReportDate, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Date"))
+FATEK_MSG(ReportEngineer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Engineer"))
+FATEK_MSG(ReportNotReported, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not reported by the PLC"))
+FATEK_MSG(ReportPoint, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Point"))
+FATEK_MSG(ReportName, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Name"))
+FATEK_MSG(ReportGroup, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Group"))
+FATEK_MSG(ReportKind, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Kind"))
+FATEK_MSG(ReportResult, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Result"))
+FATEK_MSG(ReportMeasured, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Measured"))
+FATEK_MSG(ReportComment, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Comment"))
+FATEK_MSG(ReportTested, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Tested at"))
+// %1 points in all, %2 passed, %3 failed, %4 skipped, %5 untested.
+FATEK_MSG(ReportSummary, 5,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 points: %2 passed, %3 failed, %4 skipped, %5 untested."))
+FATEK_MSG(ReportSummaryTitle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Summary"))
+FATEK_MSG(ReportSignatures, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Signatures"))
+FATEK_MSG(ReportSignEngineer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Commissioning engineer"))
+FATEK_MSG(ReportSignCustomer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Customer representative"))
+FATEK_MSG(ReportCannotWrite, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Cannot write the report %1: %2"))
+FATEK_MSG(ReportUnknownType, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1: a report file name ends in .pdf or .csv."))

@@ -230,7 +230,7 @@ private Q_SLOTS:
     {
         QTest::addColumn<QString>("tool");
         for (const char *tool : {"control", "forcing", "console", "trend", "loopback", "program",
-                                 "snapshot", "stations"})
+                                 "snapshot", "checkout", "stations"})
             QTest::newRow(tool) << QString::fromLatin1(tool);
     }
     void everyToolFits()

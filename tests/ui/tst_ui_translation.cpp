@@ -322,7 +322,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(ready, 20000);
         QTRY_VERIFY_WITH_TIMEOUT(window.hasValues(), 20000);
         // The tool docks too: they answer from the demo PLC while they are shown.
-        for (const char *tool : {"control", "forcing", "console", "trend"}) {
+        for (const char *tool : {"control", "forcing", "console", "trend", "checkout"}) {
             QWidget *w = window.openTool(QString::fromLatin1(tool));
             QVERIFY2(w, tool);
         }

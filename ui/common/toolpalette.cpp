@@ -29,6 +29,21 @@ QColor ToolPalette::errorBackground(const QPalette &palette)
     return blend(palette.color(QPalette::Base), errorText(palette), 0.18);
 }
 
+QColor ToolPalette::passText(const QPalette &palette)
+{
+    // As errorText(), with the hue of "positive" text.
+    const QColor text = palette.color(QPalette::Text);
+    const QColor highlight = palette.color(QPalette::Highlight);
+    const float saturation = static_cast<float>(qMax(0.6, highlight.hslSaturationF()));
+    const float l = text.lightnessF() < 0.5 ? 0.30f : 0.65f;
+    return QColor::fromHslF(1.0f / 3.0f, saturation, l);
+}
+
+QColor ToolPalette::passBackground(const QPalette &palette)
+{
+    return blend(palette.color(QPalette::Base), passText(palette), 0.22);
+}
+
 QColor ToolPalette::activeIndicator(const QPalette &palette)
 {
     return palette.color(QPalette::Highlight);

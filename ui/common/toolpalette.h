@@ -17,6 +17,9 @@ public:
     static QColor errorText(const QPalette &palette);
     // Background tint for error rows: a light blend of errorText() into the base colour.
     static QColor errorBackground(const QPalette &palette);
+    // Foreground and background of passed checks (I/O checkout): the error colours' green twin.
+    static QColor passText(const QPalette &palette);
+    static QColor passBackground(const QPalette &palette);
     // Indicator colour for an active ("on") flag: the palette highlight.
     static QColor activeIndicator(const QPalette &palette);
     // Indicator colour for an inactive flag: the mid tone of the palette.

@@ -5,6 +5,7 @@
 #include "ui/connection/connection.h"
 #include "ui/connection/stationscandialog.h"
 #include "ui/tools/forcingpanel.h"
+#include "ui/tools/iocheckoutdialog.h"
 #include "ui/tools/loopbackdialog.h"
 #include "ui/tools/plccontrolpanel.h"
 #include "ui/tools/programtransferdialog.h"
@@ -99,6 +100,19 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
     });
     snapshot->setObjectName(QStringLiteral("memorySnapshotAction"));
     snapshot->setToolTip(tr("Save, compare and restore element values of the current station"));
+    auto *checkout = toolsMenu->addAction(tr("I/O &Checkout…"), this, [this] {
+        // One checkout at a time: two would force outputs of the same machine.
+        if (auto *open
+            = m_window->findChild<IoCheckoutDialog *>(QStringLiteral("ioCheckoutDialog"))) {
+            open->raise();
+            open->activateWindow();
+            return;
+        }
+        openDialog(new IoCheckoutDialog(m_window), QStringLiteral("ioCheckoutDialog"));
+    });
+    checkout->setObjectName(QStringLiteral("ioCheckoutAction"));
+    checkout->setToolTip(
+        tr("Check every input, output and analog point of a machine and write the report"));
     auto *scan = toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
         Connection *c = m_window->currentConnection();
         if (!c) {
@@ -112,7 +126,7 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
     });
     scan->setObjectName(QStringLiteral("scanStationsAction"));
     scan->setToolTip(tr("Find the PLCs that answer on the current connection's link"));
-    for (QAction *action : {m_loopbackAction, program, snapshot, scan})
+    for (QAction *action : {m_loopbackAction, program, snapshot, checkout, scan})
         m_linkActions.insert(action, action->toolTip());
     setTarget(window->currentConnection());
 }
@@ -187,7 +201,9 @@ QWidget *ToolDocks::openTool(const QString &name)
         = {{QStringLiteral("program"),
             {QStringLiteral("programTransferAction"), QStringLiteral("programTransferDialog")}},
            {QStringLiteral("snapshot"),
-            {QStringLiteral("memorySnapshotAction"), QStringLiteral("snapshotDialog")}}};
+            {QStringLiteral("memorySnapshotAction"), QStringLiteral("snapshotDialog")}},
+           {QStringLiteral("checkout"),
+            {QStringLiteral("ioCheckoutAction"), QStringLiteral("ioCheckoutDialog")}}};
     if (dialogs.contains(name)) {
         const auto &[actionName, dialogName] = dialogs.value(name);
         auto *action = m_window->findChild<QAction *>(actionName);

@@ -20,8 +20,8 @@ class MainWindow;
 class Session;
 
 // The commissioning tools of the main window: the PLC Control, Forcing and Raw Console docks, the
-// Loopback Test, Memory Snapshot and Scan Stations dialogs, and their Tools/View menu entries.
-// Every tool acts on one target, the current connection and its station.
+// Loopback Test, Memory Snapshot, I/O Checkout and Scan Stations dialogs, and their Tools/View menu
+// entries. Every tool acts on one target, the current connection and its station.
 class ToolDocks : public QObject
 {
     Q_OBJECT
@@ -31,8 +31,9 @@ public:
     // the connections dock) and the entries to the menus.
     ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu, QMenu *viewMenu);
 
-    // Opens a tool: "control", "forcing", "console" (docks) or "loopback" (dialog, started at
-    // once). Returns the tool's widget, or nullptr for another name.
+    // Opens a tool: "control", "forcing", "console" (docks), "loopback" (dialog, started at
+    // once), "program", "snapshot" or "checkout" (dialogs, through their Tools actions). Returns
+    // the tool's widget, or nullptr for another name.
     QWidget *openTool(const QString &name);
     // Points every tool (and open dialog) at `connection` (nullptr: none). Nothing happens when
     // it is the target already with the same station, unless `force` (a tool re-reads the

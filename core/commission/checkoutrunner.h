@@ -1,0 +1,147 @@
+#pragma once
+
+#include "checkoutplan.h"
+#include "core/session/requesttracker.h"
+#include "core/session/sessiontypes.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+#include <map>
+#include <optional>
+
+namespace Fatek {
+
+class Session;
+
+// Runs an I/O checkout on a Session (the same for the GUI and the CLI). Lives in the caller's
+// thread; every request goes through RequestTrackers, nothing blocks.
+//
+// - start(): reads the detail status (model, OS version, RUN/STOP) into the plan, releases the
+//   outputs a previous run left forced (the file records them), then polls the plan's inputs
+//   (packed reads of consecutive runs) and the current analog point.
+// - Inputs: a change is recorded on the current point when it is an untested input (0->1 and
+//   1->0 seen: passed); a change of another input meanwhile is flagged as crossed wiring on the
+//   point under test. With no input under test (current point -1, another kind, or done), each
+//   input records its own changes: any order.
+// - Outputs, one at a time: forceOutput() records the output as forced (saved first), then
+//   disables and sets it; answerOutput() records the technician's answer and releases it at
+//   once (reset, enable). Refused in operator mode, and with the PLC in RUN until
+//   allowOutputsInRun(true). Nothing stays forced: released by answerOutput, stop(), the
+//   destructor, and after a lost link as soon as it is back.
+// - Analog: recordAnalog() reads the register for one end; both ends within tolerance: passed.
+// Every change of a point is saved at once when a file is set (CheckoutFile, through SafeFile).
+class CheckoutRunner : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit CheckoutRunner(QObject *parent = nullptr);
+    // Releases what is still forced (the requests are queued on the session, which sends them
+    // before it closes).
+    ~CheckoutRunner() override;
+
+    void setSession(Session *session);
+    Session *session() const { return m_actions.session(); }
+
+    void setPlan(CheckoutPlan plan);
+    const CheckoutPlan &plan() const { return m_plan; }
+    // Saves after every change; empty: no file.
+    void setFilePath(const QString &path) { m_filePath = path; }
+    QString filePath() const { return m_filePath; }
+    // The last save's failure (cleared by a good save).
+    const std::optional<Message> &saveError() const { return m_saveError; }
+    // Recorded with each result.
+    void setEngineer(const QString &name) { m_engineer = name; }
+    // After an input passes, the current point moves to the next untested input.
+    void setAutoAdvance(bool on) { m_autoAdvance = on; }
+    void setPollIntervalMs(int ms) { m_pollIntervalMs = ms; }
+
+    void start();
+    // Stops polling and releases what is forced (the output under test gets no answer).
+    void stop();
+    bool isRunning() const { return m_running; }
+    // The PLC was in RUN at the last status read.
+    bool isPlcRunning() const { return m_plcRunning; }
+
+    // The point under test (-1: none).
+    int currentPoint() const { return m_current; }
+    void setCurrentPoint(int index);
+    // The next untested point after the current one (wrapping), -1 when every point has a
+    // result.
+    void nextPoint();
+
+    // A result by hand (failed, skipped, or passed after a look); `comment` replaces the old one
+    // when not null.
+    void record(int index, CheckoutResult result, const QString &comment = QString());
+    void setComment(int index, const QString &comment);
+
+    // Outputs. forceOutput -> outputForced(index) (ask the technician) or failed().
+    void allowOutputsInRun(bool allow) { m_allowInRun = allow; }
+    void forceOutput(int index);
+    void answerOutput(bool seen, const QString &comment = QString());
+    // The output forced and waiting for its answer (-1: none).
+    int outputUnderTest() const { return m_outputUnderTest; }
+    // Outputs forced and not confirmed released (also those a previous run left).
+    bool hasForced() const { return !m_plan.forced.empty(); }
+
+    // Analog: reads the register now and records it as the low or the high end.
+    void recordAnalog(int index, bool highEnd);
+
+Q_SIGNALS:
+    // The status is read and the leftovers released: inputs are watched.
+    void started();
+    void pointChanged(int index);
+    void currentPointChanged(int index);
+    // The latest value of a polled point (inputs, the current analog point).
+    void liveValue(int index, quint32 value);
+    // `changed` moved while `underTest` was tested (its changedWith has it now).
+    void crossedWiring(int changed, int underTest, const Fatek::Message &message);
+    // The PLC is in RUN: ask (message), then allowOutputsInRun(true) and forceOutput() again.
+    void runConfirmationNeeded(int index, const Fatek::Message &question);
+    void outputForced(int index);
+    void outputReleased(const Fatek::Address &address);
+    // Outputs a previous run (or a lost link) left forced are released.
+    void leftoversReleased(const Fatek::Message &message);
+    // A refusal (operator mode, busy, no link) or a failure (force, release, read).
+    void failed(const Fatek::ProtocolError &error);
+    void saveFailed(const Fatek::Message &message);
+
+private:
+    void onStatus(const SessionResult &result);
+    void pollCycle();
+    void onInputs(const Request &request, const SessionResult &result);
+    void inputChanged(int index, bool on);
+    void doForce(int index);
+    void release(const Address &address, bool leftover);
+    void releaseAllForced(bool leftover);
+    void onLinkState(LinkState state);
+    void markResult(CheckoutPoint &p, CheckoutResult result);
+    void changed(int index);
+    void save();
+    void fail(ProtocolError error);
+
+    RequestTracker m_actions;
+    RequestTracker m_polls;
+    QMetaObject::Connection m_linkConnection;
+    CheckoutPlan m_plan;
+    QString m_filePath;
+    std::optional<Message> m_saveError;
+    QString m_engineer;
+    bool m_autoAdvance = false;
+    int m_pollIntervalMs = 100;
+    QTimer m_pollTimer;
+    int m_pollsInFlight = 0;
+    std::vector<Request> m_pollRequests;
+    std::map<Address, bool> m_inputs; // last value read
+    bool m_running = false;
+    bool m_plcRunning = false;
+    bool m_allowInRun = false;
+    bool m_linkLost = false;
+    int m_current = -1;
+    int m_outputUnderTest = -1;
+    std::vector<Address> m_releasing; // release requests on the wire
+};
+
+} // namespace Fatek

@@ -1,0 +1,487 @@
+// The I/O checkout (issue 36) against the in-process simulator over loopback TCP: a 16-input,
+// 8-output, 2-analog checkout through CheckoutRunner with the inputs actuated here and the
+// outputs answered here, its CSV and PDF reports (read back with pdftotext); a link killed with an
+// output forced; a restart with a file that records a forced output; operator mode; crossed
+// wiring; a save on a full device. What is forced is checked in the simulator's own memory.
+#include "core/commission/checkoutfile.h"
+#include "core/commission/checkoutplan.h"
+#include "core/commission/checkoutreport.h"
+#include "core/commission/checkoutrunner.h"
+#include "core/commission/commissionmessages.h"
+#include "core/qtbridge/qtmessage.h"
+#include "core/session/session.h"
+#include "core/sim/modelprofile.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
+#include "core/watch/symboltable.h"
+#include "report/checkoutpdf.h"
+#include "report/reporttranslator.h"
+#include "testutil.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <memory>
+
+using namespace Fatek;
+using TestUtil::addr;
+
+namespace {
+
+const char *planCsv = "address,name,comment,group,low,high,tolerance\n"
+                      "X0..X15\n";
+
+// 16 inputs, 8 outputs, 2 analog channels.
+CheckoutPlan fullPlan()
+{
+    QString csv = QStringLiteral("address,name,comment,group,low,high,tolerance\n");
+    for (int i = 0; i < 16; ++i)
+        csv += QStringLiteral("X%1,SW_%1,switch %1,cabinet A\n").arg(i);
+    for (int i = 0; i < 8; ++i)
+        csv += QStringLiteral("Y%1,LAMP_%1,\"lamp %1, red\",cabinet B\n").arg(i);
+    csv += QStringLiteral("R100,PT_1,pressure,analog,4000,20000,50\n");
+    csv += QStringLiteral("D200,TT_1,temperature,analog,0,32000,100\n");
+    auto plan = CheckoutPlan::fromCsv(csv);
+    Q_ASSERT(plan.ok());
+    CheckoutPlan p = plan.value();
+    p.info.project = QStringLiteral("Line 3 conveyor");
+    p.info.customer = QStringLiteral("ACME Foods");
+    p.info.engineer = QStringLiteral("Lin");
+    return p;
+}
+
+// pdftotext's text of a PDF; the test fails (never skips) when the tool is missing.
+QString pdfText(const QString &pdf)
+{
+    const QString tool = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
+    if (tool.isEmpty())
+        return QStringLiteral("<pdftotext is missing: install poppler-utils>");
+    QProcess p;
+    p.start(tool, {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+    if (!p.waitForFinished(60000))
+        return QStringLiteral("<pdftotext did not finish>");
+    return QString::fromUtf8(p.readAllStandardOutput());
+}
+
+} // namespace
+
+class TestCheckout : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void init();
+    void cleanup();
+
+    void planFromRangesNamesAndCsv();
+    void planRefusesOtherElements();
+    void fileRoundTrip();
+    void fullCheckoutAndReports();
+    void crossedWiringFlagged();
+    void linkKilledWithOutputForced();
+    void restartReleasesRecordedForcedOutput();
+    void refusedInReadOnly();
+    void asksBeforeOutputsInRun();
+    void saveOnFullDeviceIsAnError();
+
+private:
+    void startRunner(CheckoutRunner &runner, const CheckoutPlan &plan, const QString &file = {});
+    void actuate(CheckoutRunner &runner, const char *input);
+    QString freeFile(const char *name) const { return m_dir->filePath(QLatin1String(name)); }
+
+    std::unique_ptr<SimulatedPlc> m_plc;
+    std::unique_ptr<SimServer> m_server;
+    std::unique_ptr<Session> m_session;
+    std::unique_ptr<QTemporaryDir> m_dir;
+    quint16 m_port = 0;
+};
+
+void TestCheckout::init()
+{
+    registerSessionMetaTypes();
+    // STOP and no demo ladder: only the test moves the inputs.
+    m_plc = std::make_unique<SimulatedPlc>(ModelProfile::fbs());
+    m_plc->setRunning(false);
+    m_server = std::make_unique<SimServer>(m_plc.get());
+    QVERIFY(m_server->listenTcp(0));
+    m_port = m_server->tcpPort();
+    LinkSettings settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_port,
+                                              LinkSettings::ProtocolChoice::Facon);
+    settings.timeoutMs = 2000;
+    settings.retries = 1;
+    settings.reconnectMinMs = 100;
+    settings.reconnectMaxMs = 500;
+    m_session = std::make_unique<Session>(settings);
+    m_session->open();
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->linkState() == LinkState::Connected, 20000);
+    m_dir = std::make_unique<QTemporaryDir>();
+}
+
+void TestCheckout::cleanup()
+{
+    m_session.reset();
+    m_server.reset();
+    m_plc.reset();
+    m_dir.reset();
+}
+
+void TestCheckout::startRunner(CheckoutRunner &runner, const CheckoutPlan &plan,
+                               const QString &file)
+{
+    runner.setSession(m_session.get());
+    runner.setPlan(plan);
+    runner.setFilePath(file);
+    runner.setEngineer(QStringLiteral("Lin"));
+    // Every failure in the test's log: a wait that times out says why.
+    connect(&runner, &CheckoutRunner::failed, this,
+            [](const ProtocolError &e) { qInfo() << "runner failed:" << englishText(e.message); });
+    QSignalSpy started(&runner, &CheckoutRunner::started);
+    QSignalSpy live(&runner, &CheckoutRunner::liveValue);
+    runner.start();
+    QTRY_VERIFY_WITH_TIMEOUT(started.count() == 1, 30000);
+    // A first poll gives every input its baseline.
+    const int inputs = static_cast<int>(plan.indexesOf(CheckoutKind::Input).size());
+    if (inputs > 0)
+        QTRY_VERIFY_WITH_TIMEOUT(live.count() >= inputs, 30000);
+}
+
+// The technician presses the switch and lets it go, each state held until the runner saw it.
+void TestCheckout::actuate(CheckoutRunner &runner, const char *input)
+{
+    const int i = runner.plan().indexOf(addr(input));
+    QVERIFY(i >= 0);
+    const CheckoutPoint &p = runner.plan().points[static_cast<std::size_t>(i)];
+    m_plc->setValue(addr(input), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(p.rose.isValid(), 30000);
+    m_plc->setValue(addr(input), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(p.fell.isValid(), 30000);
+}
+
+void TestCheckout::planFromRangesNamesAndCsv()
+{
+    SymbolTable names;
+    names.insert(addr("X1"), {QStringLiteral("A1_START"), QStringLiteral("start button")});
+    names.insert(addr("Y2"), {QStringLiteral("A1_LAMP"), QStringLiteral("lamp")});
+    names.insert(addr("Y3"), {QStringLiteral("B2_VALVE"), QString()});
+    names.insert(addr("M7"), {QStringLiteral("A1_FLAG"), QString()});
+    const auto ranges = CheckoutPlan::fromRanges(QStringLiteral("X0..X47, Y0..Y31"), &names);
+    QVERIFY(ranges.ok());
+    QCOMPARE(ranges->points.size(), std::size_t(80));
+    QCOMPARE(ranges->indexesOf(CheckoutKind::Input).size(), std::size_t(48));
+    QCOMPARE(ranges->points[1].name, QStringLiteral("A1_START"));
+    QCOMPARE(ranges->points[1].description, QStringLiteral("start button"));
+
+    const auto byPrefix = CheckoutPlan::fromSymbols(names, QStringLiteral("A1"));
+    QVERIFY(byPrefix.ok());
+    QCOMPARE(byPrefix->points.size(), std::size_t(2)); // M7 is not an I/O point
+    QCOMPARE(byPrefix->points[0].group, QStringLiteral("A1"));
+    QCOMPARE(byPrefix->points[1].kind, CheckoutKind::Output);
+    QVERIFY(!CheckoutPlan::fromSymbols(names, QStringLiteral("ZZ")).ok());
+
+    const CheckoutPlan full = fullPlan();
+    QCOMPARE(full.points.size(), std::size_t(26));
+    QCOMPARE(full.points[16].description, QStringLiteral("lamp 0, red"));
+    QCOMPARE(full.points[24].expectedHigh, 20000u);
+    QCOMPARE(full.points[24].tolerance, 50u);
+    // An analog point without its range is refused, with the line.
+    const auto noRange = CheckoutPlan::fromCsv(QStringLiteral("R5,level\n"));
+    QVERIFY(!noRange.ok());
+    QCOMPARE(noRange.error().message.id, MessageId(MsgId::CheckoutCsvLine));
+    QVERIFY(!CheckoutPlan::fromCsv(QString::fromLatin1(planCsv)).ok()); // a range is not a line
+}
+
+void TestCheckout::planRefusesOtherElements()
+{
+    const auto m = CheckoutPlan::fromRanges(QStringLiteral("X0..X3, M0"));
+    QVERIFY(!m.ok());
+    QCOMPARE(m.error().message.id, MessageId(MsgId::CheckoutPlanBadKind));
+    const auto twice = CheckoutPlan::fromRanges(QStringLiteral("X0..X3, X2"));
+    QVERIFY(!twice.ok());
+    QCOMPARE(twice.error().message.id, MessageId(MsgId::CheckoutPlanDuplicate));
+}
+
+void TestCheckout::fileRoundTrip()
+{
+    CheckoutPlan plan = fullPlan();
+    plan.forced = {addr("Y3")};
+    plan.points[0].result = CheckoutResult::Passed;
+    plan.points[0].rose = QDateTime::currentDateTimeUtc();
+    plan.points[0].fell = plan.points[0].rose.addMSecs(700);
+    plan.points[0].changedWith = {addr("X7")};
+    plan.points[16].seen = false;
+    plan.points[24].lowValue = 4010;
+    const QString path = freeFile("plan.checkout.json");
+    QVERIFY(CheckoutFile::saveToFile(plan, path).ok());
+    const auto loaded = CheckoutFile::loadFromFile(path);
+    QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().text().c_str());
+    QCOMPARE(loaded.value(), plan);
+    QVERIFY(!CheckoutFile::load("{\"format\": \"other\"}", path).ok());
+}
+
+void TestCheckout::fullCheckoutAndReports()
+{
+    CheckoutRunner runner;
+    const QString file = freeFile("line3.checkout.json");
+    runner.setAutoAdvance(true);
+    startRunner(runner, fullPlan(), file);
+    QCOMPARE(runner.plan().info.plcModel.isEmpty(), false);
+
+    // Inputs: walked in order; each passes on 0->1 and 1->0 and the next one becomes current.
+    runner.setCurrentPoint(0);
+    for (int i = 0; i < 16; ++i) {
+        QCOMPARE(runner.currentPoint(), i);
+        const QByteArray name = "X" + QByteArray::number(i);
+        actuate(runner, name.constData());
+        QTRY_COMPARE_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(i)].result,
+                                  CheckoutResult::Passed, 30000);
+    }
+    QCOMPARE(runner.currentPoint(), -1); // auto-advance walks inputs only: none is left
+
+    // Outputs: one at a time, forced in the simulator while asked, released after the answer.
+    QSignalSpy forced(&runner, &CheckoutRunner::outputForced);
+    for (int j = 0; j < 8; ++j) {
+        const int index = 16 + j;
+        const Address y = runner.plan().points[static_cast<std::size_t>(index)].address;
+        runner.forceOutput(index);
+        QTRY_COMPARE_WITH_TIMEOUT(forced.count(), j + 1, 30000);
+        QCOMPARE(m_plc->isDisabled(y), std::optional<bool>(true));
+        QCOMPARE(m_plc->value(y), std::optional<std::uint32_t>(1));
+        QCOMPARE(runner.plan().forced, std::vector<Address>{y});
+        // The file says what is forced while it is.
+        QCOMPARE(CheckoutFile::loadFromFile(file)->forced, std::vector<Address>{y});
+        if (j == 3)
+            runner.answerOutput(false, QStringLiteral("lamp broken"));
+        else
+            runner.answerOutput(true);
+        QTRY_VERIFY_WITH_TIMEOUT(m_plc->isDisabled(y) == std::optional<bool>(false), 30000);
+        QCOMPARE(m_plc->value(y), std::optional<std::uint32_t>(0));
+        QTRY_VERIFY_WITH_TIMEOUT(!runner.hasForced(), 30000);
+    }
+
+    // Analog: both ends; R100 within tolerance, D200's high end 300 off.
+    const int r100 = runner.plan().indexOf(addr("R100"));
+    const int d200 = runner.plan().indexOf(addr("D200"));
+    m_plc->setValue(addr("R100"), 4020);
+    runner.recordAnalog(r100, false);
+    QTRY_VERIFY_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(r100)].lowValue, 30000);
+    m_plc->setValue(addr("R100"), 19990);
+    runner.recordAnalog(r100, true);
+    m_plc->setValue(addr("D200"), 40);
+    runner.recordAnalog(d200, false);
+    QTRY_VERIFY_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(d200)].lowValue, 30000);
+    m_plc->setValue(addr("D200"), 31700);
+    runner.recordAnalog(d200, true);
+    QTRY_COMPARE_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(d200)].result,
+                              CheckoutResult::Failed, 30000);
+    QCOMPARE(runner.plan().points[static_cast<std::size_t>(r100)].result, CheckoutResult::Passed);
+    QCOMPARE(runner.plan().count(CheckoutResult::Passed), 24);
+    QCOMPARE(runner.plan().count(CheckoutResult::Failed), 2);
+
+    runner.stop();
+    // The file holds what the runner holds: it resumes.
+    const auto saved = CheckoutFile::loadFromFile(file);
+    QVERIFY(saved.ok());
+    QCOMPARE(saved.value(), runner.plan());
+
+    // CSV report.
+    const CheckoutReport report = CheckoutReport::of(runner.plan());
+    const QString csv = QString::fromUtf8(report.toCsv());
+    const QStringList lines = csv.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QVERIFY2(lines.contains(QStringLiteral("# Project: Line 3 conveyor")), qPrintable(csv));
+    QVERIFY2(lines.contains(QStringLiteral("# Customer: ACME Foods")), qPrintable(csv));
+    QVERIFY2(lines.contains(QStringLiteral("Point,Name,Group,Kind,Result,Measured,Comment,"
+                                           "Tested at,Engineer")),
+             qPrintable(csv));
+    QVERIFY2(csv.contains(QStringLiteral("\nY3,\"LAMP_3 - lamp 3, red\",cabinet B,Output,Failed,"
+                                         "not seen in the field,lamp broken,")),
+             qPrintable(csv));
+    QVERIFY2(csv.contains(QStringLiteral("\nX15,SW_15 - switch 15,cabinet A,Input,Passed,"
+                                         "\"0->1 at ")),
+             qPrintable(csv));
+    QVERIFY2(csv.contains(QStringLiteral("D200,TT_1 - temperature,analog,Analog,Failed,\"low 40 "
+                                         "(expected 0), high 31700 (expected 32000), tolerance "
+                                         "100\"")),
+             qPrintable(csv));
+    QVERIFY2(
+        lines.last()
+            == QStringLiteral("# Summary: 26 points: 24 passed, 2 failed, 0 skipped, 0 untested."),
+        qPrintable(lines.last()));
+    QCOMPARE(lines.size(), 7 + 1 + 1 + 26 + 1);
+
+    // PDF report, in English and in Chinese, read back as text.
+    const QString pdf = freeFile("report.pdf");
+    QVERIFY(CheckoutPdf::write(report, pdf, {}).ok());
+    const QString text = pdfText(pdf);
+    for (const char *expected :
+         {"I/O checkout report", "Line 3 conveyor", "ACME Foods", "PLC model", "OS version", "X15",
+          "Y7", "lamp broken", "D200", "26 points: 24 passed, 2 failed, 0 skipped, 0 untested.",
+          "Commissioning engineer", "Customer representative"})
+        QVERIFY2(text.contains(QLatin1String(expected)),
+                 qPrintable(QLatin1String(expected) + QLatin1String(" not in:\n") + text));
+    QVERIFY2(text.contains(runner.plan().info.plcModel), qPrintable(text));
+
+    ReportTranslator chinese;
+    QVERIFY(chinese.setLanguage(QStringLiteral("zh_TW")));
+    const QString title = chinese.text(msg<MsgId::ReportTitle>());
+    QVERIFY(title != QLatin1String("I/O checkout report"));
+    const QString pdfZh = freeFile("report_zh.pdf");
+    QVERIFY(CheckoutPdf::write(report, pdfZh, [&chinese](const Message &m) {
+                return chinese.text(m);
+            }).ok());
+    const QString textZh = pdfText(pdfZh);
+    QVERIFY2(textZh.contains(chinese.text(msg<MsgId::ReportSignCustomer>())), qPrintable(textZh));
+    QVERIFY2(!textZh.contains(QLatin1String("Customer representative")), qPrintable(textZh));
+}
+
+void TestCheckout::crossedWiringFlagged()
+{
+    CheckoutRunner runner;
+    startRunner(runner, CheckoutPlan::fromRanges(QStringLiteral("X0..X15")).value());
+    QSignalSpy crossed(&runner, &CheckoutRunner::crossedWiring);
+    runner.setCurrentPoint(5);
+    m_plc->setValue(addr("X7"), 1);
+    QTRY_COMPARE_WITH_TIMEOUT(crossed.count(), 1, 30000);
+    QCOMPARE(crossed.at(0).at(0).toInt(), 7);
+    QCOMPARE(crossed.at(0).at(1).toInt(), 5);
+    const Message m = crossed.at(0).at(2).value<Message>();
+    QCOMPARE(m.id, MessageId(MsgId::CheckoutCrossedWiring));
+    QCOMPARE(englishText(m), QStringLiteral("X7 changed while testing X5: crossed wiring?"));
+    const CheckoutPoint &x5 = runner.plan().points[5];
+    QCOMPARE(x5.changedWith, std::vector<Address>{addr("X7")});
+    QCOMPARE(x5.result, CheckoutResult::Untested); // X5 itself never moved
+    QVERIFY(!runner.plan().points[7].rose.isValid());
+}
+
+void TestCheckout::linkKilledWithOutputForced()
+{
+    CheckoutRunner runner;
+    const QString file = freeFile("lost.checkout.json");
+    startRunner(runner, CheckoutPlan::fromRanges(QStringLiteral("Y0..Y7")).value(), file);
+    QSignalSpy forced(&runner, &CheckoutRunner::outputForced);
+    QSignalSpy failed(&runner, &CheckoutRunner::failed);
+    QSignalSpy leftovers(&runner, &CheckoutRunner::leftoversReleased);
+    runner.forceOutput(2);
+    QTRY_COMPARE_WITH_TIMEOUT(forced.count(), 1, 30000);
+    QCOMPARE(m_plc->isDisabled(addr("Y2")), std::optional<bool>(true));
+
+    // The link dies while the technician looks: the server goes, with its connection.
+    m_server->close();
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->linkState() != LinkState::Connected, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(!failed.isEmpty(), 30000);
+    QCOMPARE(failed.last().at(0).value<ProtocolError>().message.id,
+             MessageId(MsgId::CheckoutLinkLost));
+    QCOMPARE(runner.outputUnderTest(), -1);
+    QVERIFY(runner.hasForced());
+    QCOMPARE(CheckoutFile::loadFromFile(file)->forced, std::vector<Address>{addr("Y2")});
+    QCOMPARE(m_plc->isDisabled(addr("Y2")), std::optional<bool>(true)); // still, in the PLC
+
+    // Back on the same port: released at once, counted in the simulator's own memory.
+    QVERIFY(m_server->listenTcp(m_port));
+    QTRY_VERIFY_WITH_TIMEOUT(m_session->linkState() == LinkState::Connected, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_plc->isDisabled(addr("Y2")) == std::optional<bool>(false), 60000);
+    QCOMPARE(m_plc->value(addr("Y2")), std::optional<std::uint32_t>(0));
+    QTRY_VERIFY_WITH_TIMEOUT(!runner.hasForced(), 30000);
+    QCOMPARE(leftovers.count(), 1);
+    QVERIFY(CheckoutFile::loadFromFile(file)->forced.empty());
+    for (std::uint32_t n = 0; n < 256; ++n)
+        QCOMPARE(m_plc->isDisabled(Address{ElementType::Y, n}), std::optional<bool>(false));
+}
+
+void TestCheckout::restartReleasesRecordedForcedOutput()
+{
+    // A PC that died with Y5 forced: the PLC still has it, the file says so.
+    QVERIFY(m_plc->setDisabled(addr("Y5"), true));
+    QVERIFY(m_plc->setValue(addr("Y5"), 1));
+    CheckoutPlan plan = CheckoutPlan::fromRanges(QStringLiteral("X0..X3, Y0..Y7")).value();
+    plan.forced = {addr("Y5")};
+    const QString file = freeFile("crashed.checkout.json");
+    QVERIFY(CheckoutFile::saveToFile(plan, file).ok());
+
+    CheckoutRunner runner;
+    QSignalSpy leftovers(&runner, &CheckoutRunner::leftoversReleased);
+    const auto loaded = CheckoutFile::loadFromFile(file);
+    QVERIFY(loaded.ok());
+    QVERIFY(!loaded->forced.empty());
+    startRunner(runner, loaded.value(), file);
+    QTRY_COMPARE_WITH_TIMEOUT(leftovers.count(), 1, 30000);
+    QCOMPARE(englishText(leftovers.at(0).at(0).value<Message>()),
+             QStringLiteral("Released the outputs the checkout had forced: Y5."));
+    QCOMPARE(m_plc->isDisabled(addr("Y5")), std::optional<bool>(false));
+    QCOMPARE(m_plc->value(addr("Y5")), std::optional<std::uint32_t>(0));
+    QVERIFY(CheckoutFile::loadFromFile(file)->forced.empty());
+}
+
+void TestCheckout::refusedInReadOnly()
+{
+    m_session->setReadOnly(true);
+    CheckoutRunner runner;
+    startRunner(runner, CheckoutPlan::fromRanges(QStringLiteral("X0..X3, Y0..Y3")).value());
+    QSignalSpy failed(&runner, &CheckoutRunner::failed);
+    QSignalSpy forced(&runner, &CheckoutRunner::outputForced);
+    runner.forceOutput(4);
+    QCOMPARE(failed.count(), 1);
+    const ProtocolError e = failed.at(0).at(0).value<ProtocolError>();
+    QCOMPARE(e.kind, ErrorKind::ReadOnly);
+    QCOMPARE(e.message.id, MessageId(MsgId::CheckoutReadOnly));
+    QVERIFY(!runner.hasForced());
+    QTest::qWait(200);
+    QCOMPARE(forced.count(), 0);
+    QCOMPARE(m_plc->isDisabled(addr("Y0")), std::optional<bool>(false));
+    // Inputs are still checked in operator mode (nothing is written).
+    actuate(runner, "X2");
+    QTRY_COMPARE_WITH_TIMEOUT(runner.plan().points[2].result, CheckoutResult::Passed, 30000);
+}
+
+void TestCheckout::asksBeforeOutputsInRun()
+{
+    m_plc->setRunning(true);
+    CheckoutRunner runner;
+    startRunner(runner, CheckoutPlan::fromRanges(QStringLiteral("Y0..Y3")).value());
+    QVERIFY(runner.isPlcRunning());
+    QSignalSpy ask(&runner, &CheckoutRunner::runConfirmationNeeded);
+    QSignalSpy forced(&runner, &CheckoutRunner::outputForced);
+    runner.forceOutput(1);
+    QTRY_COMPARE_WITH_TIMEOUT(ask.count(), 1, 30000);
+    QCOMPARE(m_plc->isDisabled(addr("Y1")), std::optional<bool>(false));
+    QVERIFY(!runner.hasForced());
+    runner.allowOutputsInRun(true);
+    runner.forceOutput(1);
+    QTRY_COMPARE_WITH_TIMEOUT(forced.count(), 1, 30000);
+    QCOMPARE(m_plc->isDisabled(addr("Y1")), std::optional<bool>(true));
+    runner.stop(); // no answer: released all the same
+    QTRY_VERIFY_WITH_TIMEOUT(m_plc->isDisabled(addr("Y1")) == std::optional<bool>(false), 30000);
+    QCOMPARE(runner.plan().points[1].result, CheckoutResult::Untested);
+}
+
+void TestCheckout::saveOnFullDeviceIsAnError()
+{
+    if (!QFileInfo(QStringLiteral("/dev/full")).exists())
+        QSKIP("no /dev/full here");
+    CheckoutPlan plan = CheckoutPlan::fromRanges(QStringLiteral("X0..X3, Y0")).value();
+    const Status s = CheckoutFile::saveToFile(plan, QStringLiteral("/dev/full"));
+    QVERIFY(!s.ok());
+    QCOMPARE(s.error().message.id, MessageId(MsgId::CheckoutFileCannotWrite));
+
+    // The runner says so, and forces nothing it could not record.
+    CheckoutRunner runner;
+    QSignalSpy saveFailed(&runner, &CheckoutRunner::saveFailed);
+    QSignalSpy failed(&runner, &CheckoutRunner::failed);
+    startRunner(runner, plan, QStringLiteral("/dev/full"));
+    QVERIFY(saveFailed.count() >= 1);
+    QVERIFY(runner.saveError().has_value());
+    runner.forceOutput(4);
+    QTRY_VERIFY_WITH_TIMEOUT(!failed.isEmpty(), 30000);
+    QCOMPARE(failed.last().at(0).value<ProtocolError>().message.id,
+             MessageId(MsgId::CheckoutFileCannotWrite));
+    QTest::qWait(200);
+    QCOMPARE(m_plc->isDisabled(addr("Y0")), std::optional<bool>(false));
+    QVERIFY(!runner.hasForced());
+}
+
+QTEST_MAIN(TestCheckout)
+#include "tst_checkout.moc"

@@ -1,0 +1,454 @@
+// Tools -> I/O Checkout (issue 36) as a commissioning engineer uses it on a 1366x768 laptop: the
+// real main window connected to a simulated FBs over loopback TCP (STOP, no demo ladder: only the
+// test moves the inputs, as the technician's hand in the field), the tool opened from the Tools
+// menu, the plan typed, five points walked by keyboard. What was forced is checked in the
+// simulator's own memory. With FATEK_CHECKOUT_SHOTS set to a folder, the tool's picture and the
+// PDF report are written there (docs/images/tool-checkout.png, checkout-report.png).
+#include "core/commission/checkoutfile.h"
+#include "core/commission/checkoutrunner.h"
+#include "core/commission/commissionmessages.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
+#include "testutil.h"
+#include "ui/common/uitext.h"
+#include "ui/connection/connection.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/checkouttablemodel.h"
+#include "ui/tools/iocheckoutdialog.h"
+#include "uitestutil.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScreen>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Fatek;
+
+namespace {
+
+constexpr QSize laptop(1366, 768);
+constexpr int longWait = 30000;
+constexpr int keyDelayMs = 20;
+
+Address addr(const char *text)
+{
+    return *Address::parse(text);
+}
+
+// Answers a force question with its Yes button, as a person would.
+void clickYes(QWidget *modal)
+{
+    auto *box = qobject_cast<QMessageBox *>(modal);
+    if (!box || !box->button(QMessageBox::Yes)) {
+        qWarning("not a yes/no question");
+        return;
+    }
+    QTest::mouseClick(box->button(QMessageBox::Yes), Qt::LeftButton);
+}
+
+} // namespace
+
+class TestUiCheckout : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_settingsDir;
+    QTemporaryDir m_files;
+    std::unique_ptr<SimulatedPlc> m_plc;
+    std::unique_ptr<SimServer> m_server;
+    std::unique_ptr<MainWindow> m_window;
+
+    QString state(const IoCheckoutDialog *dialog, int row) const
+    {
+        return dialog->points()->index(row, CheckoutTableModel::StateColumn).data().toString();
+    }
+    static QString resultText(CheckoutResult result)
+    {
+        return translated(checkoutResultMessage(result));
+    }
+
+    // The technician presses the switch and lets it go, each state held until the tool showed it.
+    void actuate(IoCheckoutDialog *dialog, const char *input)
+    {
+        const int i = dialog->runner()->plan().indexOf(addr(input));
+        QVERIFY(i >= 0);
+        const CheckoutPoint &p = dialog->runner()->plan().points[static_cast<std::size_t>(i)];
+        // Its first poll shown: 0 is the baseline the change is seen against.
+        QTRY_COMPARE_WITH_TIMEOUT(
+            dialog->points()->index(i, CheckoutTableModel::MeasuredColumn).data().toString(),
+            CheckoutTableModel::tr("now %1").arg(0), longWait);
+        m_plc->setValue(addr(input), 1);
+        QTRY_VERIFY_WITH_TIMEOUT(p.rose.isValid(), longWait);
+        m_plc->setValue(addr(input), 0);
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, i), resultText(CheckoutResult::Passed), longWait);
+    }
+
+    // The main window at the laptop's size, connected to the simulator.
+    bool openWindow(bool operatorMode)
+    {
+        m_window = std::make_unique<MainWindow>(operatorMode);
+        m_window->resize(laptop - QSize(0, 70));
+        m_window->show();
+        if (!QTest::qWaitForWindowExposed(m_window.get()))
+            return false;
+        SavedConnection saved;
+        saved.name = QStringLiteral("Line 3");
+        saved.settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort());
+        saved.settings.protocol = LinkSettings::ProtocolChoice::Facon;
+        saved.settings.timeoutMs = 2000;
+        saved.settings.retries = 1;
+        Connection *c = m_window->openConnection(saved, false);
+        return c
+               && QTest::qWaitFor([c] { return c->linkState() == LinkState::Connected; }, longWait);
+    }
+
+    // Opens Tools -> I/O Checkout with the mouse.
+    IoCheckoutDialog *openFromToolsMenu()
+    {
+        QMenuBar *bar = m_window->menuBar();
+        QAction *entry = m_window->findChild<QAction *>(QStringLiteral("ioCheckoutAction"));
+        QAction *tools = nullptr;
+        for (QAction *a : bar->actions()) {
+            if (a->menu() && a->menu()->actions().contains(entry))
+                tools = a;
+        }
+        if (!tools)
+            return nullptr;
+        QTest::mouseClick(bar, Qt::LeftButton, {}, bar->actionGeometry(tools).center());
+        QMenu *menu = tools->menu();
+        if (!QTest::qWaitFor([menu] { return menu->isVisible(); }, longWait))
+            return nullptr;
+        QTest::qWait(200);
+        QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(entry).center());
+        IoCheckoutDialog *dialog = nullptr;
+        const bool shown = QTest::qWaitFor(
+            [&] {
+                dialog
+                    = m_window->findChild<IoCheckoutDialog *>(QStringLiteral("ioCheckoutDialog"));
+                return dialog && dialog->isVisible();
+            },
+            longWait);
+        return shown ? dialog : nullptr;
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_settingsDir.isValid());
+        QVERIFY(m_files.isValid());
+        TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_checkout"));
+        QCOMPARE(QGuiApplication::primaryScreen()->size(), laptop);
+    }
+
+    void init()
+    {
+        // STOP, no demo ladder: the inputs move only when the test moves them.
+        m_plc = std::make_unique<SimulatedPlc>(ModelProfile::fbs());
+        m_plc->setRunning(false);
+        m_server = std::make_unique<SimServer>(m_plc.get());
+        QString error;
+        QVERIFY2(m_server->listenTcp(0, &error), qPrintable(error));
+    }
+
+    void cleanup()
+    {
+        m_window.reset();
+        m_server.reset();
+        m_plc.reset();
+    }
+
+    void walkFivePointsByKeyboard()
+    {
+        QVERIFY(openWindow(false));
+        IoCheckoutDialog *dialog = openFromToolsMenu();
+        QVERIFY(dialog);
+        QVERIFY(QTest::qWaitForWindowExposed(dialog));
+        // The file dialogs answered by the test; the questions come as real message boxes.
+        const QString file = m_files.filePath(QStringLiteral("line3.checkout.json"));
+        QString chosen = file;
+        dialog->setFileChooser([&chosen](const QString &, const QString &) { return chosen; });
+        // On the laptop's screen, whole.
+        QVERIFY2(
+            QGuiApplication::primaryScreen()->availableGeometry().contains(dialog->frameGeometry()),
+            qPrintable(QStringLiteral("%1x%2").arg(dialog->width()).arg(dialog->height())));
+
+        // The plan, typed.
+        const auto type = [dialog](const char *field, const QString &text) {
+            auto *edit = dialog->findChild<QLineEdit *>(QLatin1String(field));
+            QVERIFY(edit);
+            QTest::mouseClick(edit, Qt::LeftButton);
+            QTest::keyClicks(edit, text, {}, keyDelayMs);
+        };
+        type("ranges", QStringLiteral("X0..X2, Y0..Y1, X3..X7, Y2..Y3, R100"));
+        type("project", QStringLiteral("Line 3"));
+        type("customer", QStringLiteral("ACME Foods"));
+        type("engineer", QStringLiteral("Lin"));
+        auto *start = dialog->findChild<QPushButton *>(QStringLiteral("startButton"));
+        QVERIFY(start && start->isEnabled());
+        QTest::mouseClick(start, Qt::LeftButton);
+        CheckoutRunner *runner = dialog->runner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isRunning(), longWait);
+        QCOMPARE(dialog->points()->rowCount(), 13);
+        QTableView *table = dialog->table();
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(table->currentIndex().row(), 0, longWait);
+        // The first poll shows each input's value: the baseline.
+        QTRY_VERIFY_WITH_TIMEOUT(dialog->points()
+                                     ->index(2, CheckoutTableModel::MeasuredColumn)
+                                     .data()
+                                     .toString()
+                                     .contains(QLatin1String("0")),
+                                 longWait);
+
+        // X0 and X1 actuated in the field: passed, the tool moves on by itself.
+        actuate(dialog, "X0");
+        QVERIFY(!QTest::currentTestFailed());
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 1, longWait);
+        actuate(dialog, "X1");
+        QVERIFY(!QTest::currentTestFailed());
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 2, longWait);
+        QCOMPARE(table->currentIndex().row(), 2);
+        // X2 does not answer: F, then N to the next point, the output Y0.
+        QTest::keyClick(table, Qt::Key_F, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 2), resultText(CheckoutResult::Failed), longWait);
+        QTest::keyClick(table, Qt::Key_N, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 3, longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(table->currentIndex().row(), 3, longWait);
+
+        // Y0: Space asks, the output is forced on in the PLC (disabled and set).
+        const QString question = UiTestUtil::answerModal(
+            [table] { QTest::keyClick(table, Qt::Key_Space, {}, keyDelayMs); }, clickYes);
+        QVERIFY2(question.contains(QLatin1String("Y0")), qPrintable(question));
+        QTRY_COMPARE_WITH_TIMEOUT(runner->outputUnderTest(), 3, longWait);
+        // The table says so once it is forced.
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 3), CheckoutTableModel::tr("forced: seen?"),
+                                  longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y0")) == true && m_plc->value(addr("Y0")) == 1u, longWait);
+        // Seen in the field: Space; released at once (enabled and reset).
+        QTest::keyClick(table, Qt::Key_Space, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 3), resultText(CheckoutResult::Passed), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y0")) == false && m_plc->value(addr("Y0")) == 0u, longWait);
+
+        // Y1: N, Space (forced), F: not seen in the field, failed and released.
+        QTest::keyClick(table, Qt::Key_N, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 4, longWait);
+        UiTestUtil::answerModal([table] { QTest::keyClick(table, Qt::Key_Space, {}, keyDelayMs); },
+                                clickYes);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y1")) == true && m_plc->value(addr("Y1")) == 1u, longWait);
+        QTest::keyClick(table, Qt::Key_F, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 4), resultText(CheckoutResult::Failed), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y1")) == false && m_plc->value(addr("Y1")) == 0u, longWait);
+
+        // The table says it all.
+        const QStringList expected
+            = {resultText(CheckoutResult::Passed), resultText(CheckoutResult::Passed),
+               resultText(CheckoutResult::Failed), resultText(CheckoutResult::Passed),
+               resultText(CheckoutResult::Failed)};
+        for (int row = 0; row < 5; ++row)
+            QCOMPARE(state(dialog, row), expected.at(row));
+        QTRY_VERIFY_WITH_TIMEOUT(!runner->hasForced(), longWait); // the release confirmed
+
+        // A comment on the failed input, typed into the table (F2 edits it).
+        const QModelIndex comment = dialog->points()->index(2, CheckoutTableModel::CommentColumn);
+        table->setCurrentIndex(comment);
+        QTest::keyClick(table, Qt::Key_F2, {}, keyDelayMs);
+        QLineEdit *editor = nullptr;
+        QTRY_VERIFY_WITH_TIMEOUT((editor = table->viewport()->findChild<QLineEdit *>())
+                                     && editor->isVisible(),
+                                 longWait);
+        QTest::keyClicks(editor, QStringLiteral("no wire at X2"), {}, keyDelayMs);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTRY_COMPARE_WITH_TIMEOUT(comment.data().toString(), QStringLiteral("no wire at X2"),
+                                  longWait);
+        QCOMPARE(runner->plan().points[2].comment, QStringLiteral("no wire at X2"));
+
+        const QString shots = qEnvironmentVariable("FATEK_CHECKOUT_SHOTS");
+        if (!shots.isEmpty()) {
+            table->setCurrentIndex(dialog->points()->index(2, 0));
+            QTest::qWait(300);
+            QVERIFY(dialog->grab().save(QDir(shots).filePath(QStringLiteral("tool-checkout.png"))));
+        }
+
+        // Saved as it went: the file has every result and nothing forced.
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(file), longWait);
+        const auto loaded = CheckoutFile::loadFromFile(file);
+        QVERIFY(loaded.ok());
+        QCOMPARE(loaded->points.size(), std::size_t(13));
+        QCOMPARE(loaded->points[3].result, CheckoutResult::Passed);
+        QCOMPARE(loaded->points[4].result, CheckoutResult::Failed);
+        QVERIFY(loaded->forced.empty());
+        QCOMPARE(loaded->info.customer, QStringLiteral("ACME Foods"));
+        QTRY_COMPARE_WITH_TIMEOUT(CheckoutFile::loadFromFile(file)->points[2].comment,
+                                  QStringLiteral("no wire at X2"), longWait);
+
+        // The report, PDF and CSV, through the Report button.
+        auto *report = dialog->findChild<QPushButton *>(QStringLiteral("reportButton"));
+        QVERIFY(report && report->isEnabled());
+        const QString pdf = m_files.filePath(QStringLiteral("line3.pdf"));
+        chosen = pdf;
+        QTest::mouseClick(report, Qt::LeftButton);
+        QFile pdfFile(pdf);
+        QVERIFY(pdfFile.open(QIODevice::ReadOnly));
+        QVERIFY(pdfFile.read(5).startsWith("%PDF"));
+        const QString csv = m_files.filePath(QStringLiteral("line3.csv"));
+        chosen = csv;
+        QTest::mouseClick(report, Qt::LeftButton);
+        QFile csvFile(csv);
+        QVERIFY(csvFile.open(QIODevice::ReadOnly));
+        const QByteArray csvText = csvFile.readAll();
+        QVERIFY2(csvText.contains("ACME Foods") && csvText.contains("Y1"), csvText.constData());
+        if (!shots.isEmpty()) {
+            QFile::remove(QDir(shots).filePath(QStringLiteral("checkout-report.pdf")));
+            QVERIFY(QFile::copy(pdf, QDir(shots).filePath(QStringLiteral("checkout-report.pdf"))));
+        }
+
+        // Closed: nothing polls, nothing stays forced.
+        dialog->reject();
+        QTRY_VERIFY_WITH_TIMEOUT(!runner->isRunning(), longWait);
+        QVERIFY(m_plc->isDisabled(addr("Y0")) == false);
+        QVERIFY(m_plc->isDisabled(addr("Y1")) == false);
+    }
+
+    // A checkout that died with Y0 forced: opening its file offers to release it, and does.
+    void openReleasesLeftovers()
+    {
+        m_plc->setDisabled(addr("Y0"), true);
+        m_plc->setValue(addr("Y0"), 1);
+        auto plan = CheckoutPlan::fromRanges(QStringLiteral("X0, Y0"));
+        QVERIFY(plan.ok());
+        CheckoutPlan left = plan.value();
+        left.forced.push_back(addr("Y0"));
+        const QString file = m_files.filePath(QStringLiteral("left.checkout.json"));
+        QVERIFY(CheckoutFile::saveToFile(left, file).ok());
+
+        QVERIFY(openWindow(false));
+        IoCheckoutDialog *dialog = openFromToolsMenu();
+        QVERIFY(dialog);
+        QStringList questions;
+        dialog->setConfirmer([&questions](const QString &question) {
+            questions << question;
+            return true;
+        });
+        QVERIFY(dialog->openCheckout(file));
+        QCOMPARE(questions.size(), 1);
+        QVERIFY2(questions.front().contains(QLatin1String("Y0")), qPrintable(questions.front()));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y0")) == false && m_plc->value(addr("Y0")) == 0u, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog->runner()->hasForced(), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(CheckoutFile::loadFromFile(file)->forced.empty(), longWait);
+        QVERIFY(dialog->runner()->isRunning());
+    }
+
+    // Operator mode: the inputs are watched, an output is refused before anything is asked or
+    // written.
+    void operatorModeRefusesOutputs()
+    {
+        QVERIFY(openWindow(true));
+        IoCheckoutDialog *dialog = openFromToolsMenu();
+        QVERIFY(dialog);
+        QStringList questions;
+        dialog->setConfirmer([&questions](const QString &question) {
+            questions << question;
+            return true;
+        });
+        const QString file = m_files.filePath(QStringLiteral("operator.checkout.json"));
+        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
+        auto *ranges = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
+        QVERIFY(ranges);
+        QTest::mouseClick(ranges, Qt::LeftButton);
+        QTest::keyClicks(ranges, QStringLiteral("X0, Y0"), {}, keyDelayMs);
+        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("startButton")),
+                          Qt::LeftButton);
+        CheckoutRunner *runner = dialog->runner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isRunning(), longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        actuate(dialog, "X0");
+        if (QTest::currentTestFailed())
+            return;
+        QTest::keyClick(dialog->table(), Qt::Key_N, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 1, longWait);
+        QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
+        QCOMPARE(dialog->messageText(),
+                 IoCheckoutDialog::tr("Operator mode: outputs are not forced."));
+        QVERIFY(questions.isEmpty());
+        QCOMPARE(runner->outputUnderTest(), -1);
+        QVERIFY(m_plc->isDisabled(addr("Y0")) == false);
+        QCOMPARE(state(dialog, 1), resultText(CheckoutResult::Untested));
+    }
+
+    // The PLC in RUN: after the force is confirmed, the tool asks once more (the machine runs),
+    // and forces only then.
+    void plcInRunAsksAgain()
+    {
+        m_plc->setRunning(true);
+        QVERIFY(openWindow(false));
+        IoCheckoutDialog *dialog = openFromToolsMenu();
+        QVERIFY(dialog);
+        QStringList questions;
+        dialog->setConfirmer([&questions](const QString &question) {
+            questions << question;
+            return true;
+        });
+        const QString file = m_files.filePath(QStringLiteral("run.checkout.json"));
+        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
+        auto *ranges = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
+        QVERIFY(ranges);
+        QTest::mouseClick(ranges, Qt::LeftButton);
+        QTest::keyClicks(ranges, QStringLiteral("Y0"), {}, keyDelayMs);
+        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("startButton")),
+                          Qt::LeftButton);
+        CheckoutRunner *runner = dialog->runner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isRunning(), longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(questions.size(), 2, longWait);
+        QCOMPARE(questions.at(1), translated(msg<MsgId::CheckoutPlcInRun>()));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y0")) == true && m_plc->value(addr("Y0")) == 1u, longWait);
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 0), CheckoutTableModel::tr("forced: seen?"),
+                                  longWait);
+        QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
+        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 0), resultText(CheckoutResult::Passed), longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_plc->isDisabled(addr("Y0")) == false && m_plc->value(addr("Y0")) == 0u, longWait);
+    }
+};
+
+// A screen of a laptop's size: the offscreen platform reads it from a configuration file.
+int main(int argc, char *argv[])
+{
+    // In the working folder, named relative to it (the platform's arguments are separated by ':').
+    QTemporaryDir dir(QDir::current().filePath(QStringLiteral("checkout-screen-XXXXXX")));
+    const QString config
+        = QDir::current().relativeFilePath(dir.filePath(QStringLiteral("screen.json")));
+    QFile file(config);
+    if (!file.open(QIODevice::WriteOnly))
+        return 1;
+    file.write(QStringLiteral("{\"screens\": [{\"name\": \"laptop\", \"x\": 0, \"y\": 0, "
+                              "\"width\": %1, \"height\": %2, \"logicalDpi\": 96, "
+                              "\"logicalBaseDpi\": 96, \"dpr\": 1}]}")
+                   .arg(laptop.width())
+                   .arg(laptop.height())
+                   .toUtf8());
+    file.close();
+    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + QFile::encodeName(config));
+    QApplication app(argc, argv);
+    TestUiCheckout test;
+    QTEST_SET_MAIN_SOURCE_PATH
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "tst_ui_checkout.moc"

@@ -1,0 +1,98 @@
+#pragma once
+
+#include "ui/common/toolconfirmation.h"
+
+#include <QDialog>
+#include <QPointer>
+
+#include <functional>
+
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QTableView;
+
+namespace Fatek {
+
+class CheckoutRunner;
+class CheckoutTableModel;
+class MessageLine;
+class Session;
+
+// Tools -> I/O Checkout (issue 36): the plan (ranges, project, customer, engineer), the points in
+// a table driven from the keyboard (Space: seen, or force the output and then seen; F: failed, or
+// the forced output not seen; N: the next untested point; L and H: an analog point's low and high
+// end), New / Open / Start / Stop and the report (PDF or CSV). The checkout is saved after every
+// change (CheckoutRunner, CheckoutFile); a file that lists outputs left forced offers to release
+// them. Every force asks first; in operator mode outputs are refused.
+class IoCheckoutDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    // Asks for a file name to save to (tests answer without a file dialog); empty: cancelled.
+    using FileChooser = std::function<QString(const QString &title, const QString &filter)>;
+
+    explicit IoCheckoutDialog(QWidget *parent = nullptr);
+    ~IoCheckoutDialog() override;
+
+    // session may be nullptr: the plan can be edited and files opened, nothing runs.
+    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
+    // Tests answer the questions (force, release) without a modal box.
+    void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
+    void setFileChooser(FileChooser chooser) { m_chooseFile = std::move(chooser); }
+
+    CheckoutRunner *runner() const { return m_runner; }
+    CheckoutTableModel *points() const { return m_model; }
+    QTableView *table() const { return m_table; }
+    QString messageText() const;
+
+public Q_SLOTS:
+    // A new, empty checkout: the plan fields are edited again.
+    void newCheckout();
+    // Builds the plan from the fields when none is loaded (asking for the file it is saved in),
+    // then watches the inputs.
+    void start();
+    void stop();
+    bool openCheckout(const QString &path);
+    // PDF when the name ends in .pdf, CSV otherwise; in the UI's language.
+    bool writeReport(const QString &path);
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+private:
+    void pressSeen(int index);
+    void pressFailed(int index);
+    void force(int index);
+    void showCurrent(int index);
+    void showMessage(const QString &text, bool error);
+    void updateControls();
+    QString pointText(int index) const;
+
+    CheckoutRunner *m_runner;
+    CheckoutTableModel *m_model;
+    QPointer<Session> m_session;
+    quint8 m_station = 1;
+    QString m_connectionName;
+    Confirmer m_confirmer;
+    FileChooser m_chooseFile;
+    bool m_loaded = false; // a plan is built or opened (the fields show it)
+    bool m_following = false;
+
+    QLabel *m_targetLabel;
+    QLineEdit *m_ranges;
+    QLineEdit *m_project;
+    QLineEdit *m_customer;
+    QLineEdit *m_engineer;
+    QPushButton *m_new;
+    QPushButton *m_open;
+    QPushButton *m_start;
+    QPushButton *m_stop;
+    QPushButton *m_report;
+    QLabel *m_summary;
+    QTableView *m_table;
+    MessageLine *m_message;
+};
+
+} // namespace Fatek
