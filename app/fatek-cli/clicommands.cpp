@@ -222,9 +222,10 @@ constexpr CommandSpec commands[] = {
      true,
      CliCheckoutCommand::parse,
      make<CliCheckoutCommand>,
-     {{"checkout PLAN [--report FILE.pdf|FILE.csv] [--lang en|zh_TW] [--save FILE] [--project T] "
-       "[--customer T] [--engineer T]",
-       "I/O checkout: PLAN is ranges (\"X0..X15, Y0..Y7\"), a plan CSV or a checkout file "
+     {{"checkout PLAN [--report FILE] [--lang en|zh_TW] [--save FILE]",
+       "I/O checkout (--report FILE.pdf or FILE.csv; --project T, --customer T and --engineer T "
+       "name them in the report): PLAN is ranges (\"X0..X15, Y0..Y7\"), a plan CSV or a checkout "
+       "file "
        "(.json, resumed and saved as it goes); inputs are watched until each went on and off, "
        "outputs forced one at a time and the answer asked (a terminal, or --yes with the "
        "answers on standard input), analog points read at both ends; exit 6 when a point "
