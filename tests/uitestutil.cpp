@@ -1,6 +1,8 @@
 #include "uitestutil.h"
 
 #include <QApplication>
+#include <QDir>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -60,6 +62,24 @@ QLabel *sendRawFrame(QWidget *console, const QString &frame)
     QTest::keyClicks(input, frame, {}, 20);
     QTest::mouseClick(send, Qt::LeftButton);
     return result;
+}
+
+OffscreenScreen::OffscreenScreen(QSize size)
+    : m_dir(QDir::current().filePath(QStringLiteral("screen-XXXXXX")))
+{
+    const QString config
+        = QDir::current().relativeFilePath(m_dir.filePath(QStringLiteral("screen.json")));
+    QFile file(config);
+    if (!m_dir.isValid() || !file.open(QIODevice::WriteOnly))
+        return;
+    file.write(QStringLiteral("{\"screens\": [{\"name\": \"laptop\", \"x\": 0, \"y\": 0, "
+                              "\"width\": %1, \"height\": %2, \"logicalDpi\": 96, "
+                              "\"logicalBaseDpi\": 96, \"dpr\": 1}]}")
+                   .arg(size.width())
+                   .arg(size.height())
+                   .toUtf8());
+    m_ready = file.flush();
+    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + QFile::encodeName(config));
 }
 
 } // namespace UiTestUtil

@@ -1,5 +1,7 @@
 #include "clioutput.h"
 
+#include "core/watch/csvfield.h"
+
 #include <QFile>
 #include <QJsonDocument>
 
@@ -20,12 +22,7 @@ CliOutput::CliOutput(OutputFormat format)
 
 QString CliOutput::csvCell(const QString &text)
 {
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"'))
-        && !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char(';')))
-        return text;
-    QString quoted = text;
-    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
-    return QLatin1Char('"') + quoted + QLatin1Char('"');
+    return CsvField::quoted(text);
 }
 
 namespace {

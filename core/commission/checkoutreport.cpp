@@ -2,6 +2,7 @@
 
 #include "commissionmessages.h"
 #include "core/qtbridge/qtmessage.h"
+#include "core/watch/csvfield.h"
 
 #include <QStringList>
 
@@ -12,16 +13,6 @@ namespace {
 Message textOrNotReported(const QString &value)
 {
     return value.isEmpty() ? msg<MsgId::ReportNotReported>() : Message::text(value.toStdString());
-}
-
-QString csvField(const QString &text)
-{
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"'))
-        && !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char(';')))
-        return text;
-    QString quoted = text;
-    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
-    return QLatin1Char('"') + quoted + QLatin1Char('"');
 }
 
 } // namespace
@@ -80,7 +71,7 @@ QByteArray CheckoutReport::toCsv(const TextFunction &textFunction) const
         out += QStringLiteral("# %1: %2\n").arg(text(f.label), text(f.value));
     QStringList header;
     for (const Message &c : columns())
-        header << csvField(text(c));
+        header << CsvField::quoted(text(c));
     out += header.join(QLatin1Char(',')) + QLatin1Char('\n');
     for (const Row &r : rows) {
         const QStringList cells{r.address,
@@ -94,7 +85,7 @@ QByteArray CheckoutReport::toCsv(const TextFunction &textFunction) const
                                 r.engineer};
         QStringList fieldsOut;
         for (const QString &c : cells)
-            fieldsOut << csvField(c);
+            fieldsOut << CsvField::quoted(c);
         out += fieldsOut.join(QLatin1Char(',')) + QLatin1Char('\n');
     }
     out += QStringLiteral("# %1: %2\n").arg(text(msg<MsgId::ReportSummaryTitle>()), text(summary));

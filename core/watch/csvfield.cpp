@@ -25,4 +25,15 @@ bool readQuoted(QStringView text, qsizetype &i, QString &field, int *lineEnds)
     return false;
 }
 
+QString quoted(const QString &text)
+{
+    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"'))
+        && !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char('\r'))
+        && !text.contains(QLatin1Char(';')))
+        return text;
+    QString out = text;
+    out.replace(QLatin1String("\""), QLatin1String("\"\""));
+    return QLatin1Char('"') + out + QLatin1Char('"');
+}
+
 } // namespace Fatek::CsvField

@@ -1,5 +1,6 @@
 #include "datalogger.h"
 
+#include "csvfield.h"
 #include "safefile.h"
 
 #include <QDir>
@@ -92,13 +93,7 @@ QStringList DataLogger::columnNames(const QList<WatchItemSpec> &items)
 
 QString DataLogger::csvCell(const QString &text)
 {
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"'))
-        && !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char('\r'))
-        && !text.contains(QLatin1Char(';')))
-        return text;
-    QString quoted = text;
-    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
-    return QLatin1Char('"') + quoted + QLatin1Char('"');
+    return CsvField::quoted(text);
 }
 
 QString DataLogger::qualityName(Quality quality)

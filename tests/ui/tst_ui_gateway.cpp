@@ -102,33 +102,40 @@ QAction *menuAction(MainWindow &window, const QString &text)
     return nullptr;
 }
 
+// In the connection dialog: kind MQTT gateway, the name "Line 1", the broker and the gateway
+// connection "line1" typed.
+void typeGatewayConnection(QWidget *dialog, const QString &brokerUrl)
+{
+    auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("linkKindCombo"));
+    kind->setFocus();
+    kind->setCurrentIndex(kind->findData(ConnectionDialog::gatewayKind));
+    auto *name = dialog->findChild<QLineEdit *>(QStringLiteral("connectionNameEdit"));
+    name->selectAll();
+    typeSlowly(name, QStringLiteral("Line 1"));
+    auto *url = dialog->findChild<QLineEdit *>(QStringLiteral("brokerUrlEdit"));
+    QVERIFY(url->isVisible());
+    typeSlowly(url, brokerUrl);
+    typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("gatewayNameEdit")),
+               QStringLiteral("line1"));
+}
+
 // File > New Connection…, kind MQTT gateway, the broker and names typed, Connect.
 Connection *connectThroughDialog(MainWindow &window, const QString &brokerUrl)
 {
     QAction *newConnection = menuAction(window, QStringLiteral("&New Connection…"));
     if (!newConnection)
         return nullptr;
-    answerModal(
-        [&] { newConnection->trigger(); },
-        [&](QWidget *dialog) {
-            auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("linkKindCombo"));
-            kind->setFocus();
-            kind->setCurrentIndex(kind->findData(ConnectionDialog::gatewayKind));
-            auto *name = dialog->findChild<QLineEdit *>(QStringLiteral("connectionNameEdit"));
-            name->selectAll();
-            typeSlowly(name, QStringLiteral("Line 1"));
-            auto *url = dialog->findChild<QLineEdit *>(QStringLiteral("brokerUrlEdit"));
-            QVERIFY(url->isVisible());
-            typeSlowly(url, brokerUrl);
-            typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("gatewayNameEdit")),
-                       QStringLiteral("line1"));
-            typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("brokerUserEdit")),
-                       QStringLiteral("viewer"));
-            typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("brokerPasswordEdit")),
-                       QStringLiteral("s3cret"));
-            QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("connectButton")),
-                              Qt::LeftButton);
-        });
+    answerModal([&] { newConnection->trigger(); },
+                [&](QWidget *dialog) {
+                    typeGatewayConnection(dialog, brokerUrl);
+                    typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("brokerUserEdit")),
+                               QStringLiteral("viewer"));
+                    typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("brokerPasswordEdit")),
+                               QStringLiteral("s3cret"));
+                    QTest::mouseClick(
+                        dialog->findChild<QPushButton *>(QStringLiteral("connectButton")),
+                        Qt::LeftButton);
+                });
     return window.connections()->find(QStringLiteral("Line 1"));
 }
 
@@ -345,15 +352,7 @@ private Q_SLOTS:
         answerModal(
             [&] { newConnection->trigger(); },
             [&](QWidget *dialog) {
-                auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("linkKindCombo"));
-                kind->setFocus();
-                kind->setCurrentIndex(kind->findData(ConnectionDialog::gatewayKind));
-                auto *name = dialog->findChild<QLineEdit *>(QStringLiteral("connectionNameEdit"));
-                name->selectAll();
-                typeSlowly(name, QStringLiteral("Line 1"));
-                typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("brokerUrlEdit")), url);
-                typeSlowly(dialog->findChild<QLineEdit *>(QStringLiteral("gatewayNameEdit")),
-                           QStringLiteral("line1"));
+                typeGatewayConnection(dialog, url);
                 const std::pair<const char *, QString> files[]
                     = {{"brokerCaEdit", settings.caFile}, {"brokerCertEdit", settings.certFile}};
                 for (const auto &[field, path] : files) {

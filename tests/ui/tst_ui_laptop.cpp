@@ -415,22 +415,9 @@ private Q_SLOTS:
 // A screen of a laptop's size: the offscreen platform reads it from a configuration file.
 int main(int argc, char *argv[])
 {
-    // In the working folder, named relative to it: the platform's arguments are separated by
-    // ':', so a Windows path ("C:\\...") would cut the file name short.
-    QTemporaryDir dir(QDir::current().filePath(QStringLiteral("laptop-screen-XXXXXX")));
-    const QString config
-        = QDir::current().relativeFilePath(dir.filePath(QStringLiteral("screen.json")));
-    QFile file(config);
-    if (!file.open(QIODevice::WriteOnly))
+    const UiTestUtil::OffscreenScreen screen(laptop);
+    if (!screen.isReady())
         return 1;
-    file.write(QStringLiteral("{\"screens\": [{\"name\": \"laptop\", \"x\": 0, \"y\": 0, "
-                              "\"width\": %1, \"height\": %2, \"logicalDpi\": 96, "
-                              "\"logicalBaseDpi\": 96, \"dpr\": 1}]}")
-                   .arg(laptop.width())
-                   .arg(laptop.height())
-                   .toUtf8());
-    file.close();
-    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + QFile::encodeName(config));
     QApplication app(argc, argv);
     TestUiLaptop test;
     QTEST_SET_MAIN_SOURCE_PATH
