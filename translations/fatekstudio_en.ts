@@ -116,6 +116,14 @@
             <translation>&amp;Link:</translation>
         </message>
         <message>
+            <source>&amp;URL:</source>
+            <translation>&amp;URL:</translation>
+        </message>
+        <message>
+            <source>The link as fatek-cli --link takes it (tcp://HOST:PORT, udp://…, serial:///dev/ttyUSB0?baud=19200&amp;format=7E1): type or paste one to fill the fields; it follows them.</source>
+            <translation>The link as fatek-cli --link takes it (tcp://HOST:PORT, udp://…, serial:///dev/ttyUSB0?baud=19200&amp;format=7E1): type or paste one to fill the fields; it follows them.</translation>
+        </message>
+        <message>
             <source>Pro&amp;tocol:</source>
             <translation>Pro&amp;tocol:</translation>
         </message>
@@ -253,6 +261,10 @@
         <message>
             <source>Station %1: %2 requests, %3 errors, RTT %4 ms</source>
             <translation>Station %1: %2 requests, %3 errors, RTT %4 ms</translation>
+        </message>
+        <message>
+            <source>URL: %1</source>
+            <translation>URL: %1</translation>
         </message>
         <message>
             <source>; not answering, polled again at %1</source>

@@ -116,6 +116,14 @@
             <translation>連線方式(&amp;L)：</translation>
         </message>
         <message>
+            <source>&amp;URL:</source>
+            <translation>網址(&amp;U)：</translation>
+        </message>
+        <message>
+            <source>The link as fatek-cli --link takes it (tcp://HOST:PORT, udp://…, serial:///dev/ttyUSB0?baud=19200&amp;format=7E1): type or paste one to fill the fields; it follows them.</source>
+            <translation>與命令列工具 --link 相同寫法的連線（tcp://主機:埠、udp://…、serial:///dev/ttyUSB0?baud=19200&amp;format=7E1）：輸入或貼上即填入下列欄位；欄位變更時隨之更新。</translation>
+        </message>
+        <message>
             <source>Pro&amp;tocol:</source>
             <translation>通訊協定(&amp;T)：</translation>
         </message>
@@ -253,6 +261,10 @@
         <message>
             <source>Station %1: %2 requests, %3 errors, RTT %4 ms</source>
             <translation>站號 %1：%2 次請求，%3 次錯誤，RTT %4 ms</translation>
+        </message>
+        <message>
+            <source>URL: %1</source>
+            <translation>網址：%1</translation>
         </message>
         <message>
             <source>; not answering, polled again at %1</source>

@@ -8,6 +8,7 @@
 #include "testutil.h"
 #include "ui/common/messageline.h"
 #include "ui/connection/connection.h"
+#include "ui/connection/connectiondialog.h"
 #include "ui/connection/connectionlistmodel.h"
 #include "ui/connection/connectionmanager.h"
 #include "ui/connection/stationscandialog.h"
@@ -414,6 +415,79 @@ private Q_SLOTS:
 
     // The raw console names the command it asks about, and in operator mode it refuses without
     // asking first.
+    // Issue 32: the connection dialog takes the link as a URL (as fatek-cli --link does): typed,
+    // it fills the fields; a bad one is refused with the reason and nothing connects; the
+    // recent entry and the Connections list show the URL to copy into a script.
+    void connectionDialogTakesAUrl()
+    {
+        Plc plc;
+        plc.server.setStation(3);
+        MainWindow window;
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const QString url
+            = QStringLiteral("tcp://127.0.0.1:%1?protocol=facon&station=3&timeout=400")
+                  .arg(plc.port);
+        QString refusal;
+        SavedConnection filled;
+        answerModal(
+            [&] { QTest::keyClick(&window, Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier); },
+            [&](QWidget *widget) {
+                auto *dialog = qobject_cast<ConnectionDialog *>(widget);
+                QVERIFY(dialog);
+                auto *name = dialog->findChild<QLineEdit *>(QStringLiteral("connectionNameEdit"));
+                name->selectAll();
+                typeSlowly(name, QStringLiteral("By URL"));
+                auto *line = dialog->findChild<QLineEdit *>(QStringLiteral("linkUrlEdit"));
+                QVERIFY(line && line->isVisible());
+                // First a port that cannot be: refused, the dialog stays.
+                QTest::mouseClick(line, Qt::LeftButton);
+                line->selectAll();
+                typeSlowly(line, QStringLiteral("tcp://127.0.0.1:99999"));
+                auto *connect = dialog->findChild<QPushButton *>(QStringLiteral("connectButton"));
+                QTest::mouseClick(connect, Qt::LeftButton);
+                auto *problem = dialog->findChild<QLabel *>(QStringLiteral("connectionErrorLabel"));
+                QVERIFY(dialog->isVisible() && problem->isVisible());
+                refusal = problem->text();
+                // Then the right one: Tab takes it into the fields.
+                QTest::mouseClick(line, Qt::LeftButton);
+                line->selectAll();
+                typeSlowly(line, url);
+                QTest::keyClick(line, Qt::Key_Tab);
+                filled = dialog->connection();
+                QVERIFY(!problem->isVisible());
+                QTest::mouseClick(connect, Qt::LeftButton);
+            });
+        QVERIFY2(refusal.contains(QStringLiteral("99999")), qPrintable(refusal));
+        QCOMPARE(filled.settings.kind, LinkSettings::Kind::Tcp);
+        QCOMPARE(filled.settings.port, plc.port);
+        QCOMPARE(filled.settings.protocol, LinkSettings::ProtocolChoice::Facon);
+        QCOMPARE(filled.settings.timeoutMs, 400);
+        QCOMPARE(int(filled.station), 3);
+        Connection *c = window.connections()->find(QStringLiteral("By URL"));
+        QVERIFY(c);
+        QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, longWait);
+        QCOMPARE(int(c->station()), 3);
+
+        // The URL reads back from the Connections list and the recent entry.
+        const QString shown = c->saved().settings.toUrl(c->station());
+        Message error;
+        const std::optional<LinkSettings::Parsed> back = LinkSettings::fromUrl(shown, &error);
+        QVERIFY(back);
+        QCOMPARE(back->settings, c->saved().settings);
+        auto *list = window.findChild<ConnectionListModel *>();
+        QVERIFY(list);
+        const QString tip
+            = list->data(list->index(0, ConnectionListModel::LinkColumn), Qt::ToolTipRole)
+                  .toString();
+        QVERIFY2(tip.contains(QStringLiteral("URL: ") + shown), qPrintable(tip));
+        auto *recent = window.findChild<QMenu *>(QStringLiteral("recentMenu"));
+        QVERIFY(recent);
+        QTRY_VERIFY_WITH_TIMEOUT(!recent->actions().isEmpty(), longWait);
+        QCOMPARE(recent->actions().first()->toolTip(), shown);
+    }
+
     void rawConsoleQuestionsAndOperatorMode()
     {
         Plc plc;

@@ -57,6 +57,12 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
                       {tr("MQTT gateway"), gatewayKind}},
                      this);
     m_kind->setObjectName(QStringLiteral("linkKindCombo"));
+    m_url = new QLineEdit(this);
+    m_url->setObjectName(QStringLiteral("linkUrlEdit"));
+    m_url->setPlaceholderText(QStringLiteral("tcp://192.168.1.3:500"));
+    m_url->setToolTip(tr("The link as fatek-cli --link takes it (tcp://HOST:PORT, udp://…, "
+                         "serial:///dev/ttyUSB0?baud=19200&format=7E1): type or paste one to "
+                         "fill the fields; it follows them."));
 
     // Serial page
     auto *serialPage = new QWidget(this);
@@ -180,6 +186,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     form->addRow(tr("Re&cent:"), m_recentCombo);
     form->addRow(tr("&Name:"), m_name);
     form->addRow(tr("&Link:"), m_kind);
+    form->addRow(tr("&URL:"), m_url);
     form->addRow(m_pages);
     form->addRow(tr("Pro&tocol:"), m_protocol);
     form->addRow(tr("S&tation:"), m_station);
@@ -203,6 +210,14 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     connect(m_buttons, &QDialogButtonBox::rejected, this, &ConnectionDialog::reject);
     connect(refresh, &QPushButton::clicked, this, &ConnectionDialog::refreshPorts);
     connect(m_kind, &QComboBox::currentIndexChanged, this, &ConnectionDialog::updateKind);
+    connect(m_url, &QLineEdit::editingFinished, this, &ConnectionDialog::takeUrl);
+    for (QComboBox *combo : {m_kind, m_dataBits, m_parity, m_stopBits, m_flowControl, m_protocol})
+        connect(combo, &QComboBox::currentIndexChanged, this, &ConnectionDialog::updateUrl);
+    for (QComboBox *combo : {m_portName, m_baudRate})
+        connect(combo, &QComboBox::currentTextChanged, this, &ConnectionDialog::updateUrl);
+    for (QSpinBox *spin : {m_port, m_station, m_timeout, m_retries})
+        connect(spin, &QSpinBox::valueChanged, this, &ConnectionDialog::updateUrl);
+    connect(m_host, &QLineEdit::textChanged, this, &ConnectionDialog::updateUrl);
     connect(m_recentCombo, &QComboBox::currentIndexChanged, this, [this](int index) {
         if (index > 0 && index <= m_recent.size())
             setConnection(m_recent.at(index - 1));
@@ -245,8 +260,8 @@ void ConnectionDialog::updateKind()
                                                                       : QSizePolicy::Ignored);
     m_pages->updateGeometry();
     // The gateway has its own protocol, timeout and retries per PLC link.
-    for (QWidget *row : {static_cast<QWidget *>(m_protocol), static_cast<QWidget *>(m_timeout),
-                         static_cast<QWidget *>(m_retries)})
+    for (QWidget *row : {static_cast<QWidget *>(m_url), static_cast<QWidget *>(m_protocol),
+                         static_cast<QWidget *>(m_timeout), static_cast<QWidget *>(m_retries)})
         m_form->setRowVisible(row, !isGateway());
     layout()->activate();
     resize(width(), sizeHint().height());
@@ -272,10 +287,9 @@ Result<GatewayWatchSettings> ConnectionDialog::gatewaySettings() const
     return settings;
 }
 
-void ConnectionDialog::setConnection(const SavedConnection &c)
+void ConnectionDialog::setLinkFields(const LinkSettings &s)
 {
-    const LinkSettings &s = c.settings;
-    m_name->setText(c.name);
+    m_settingFields = true; // one URL update at the end, not one per field
     selectData(m_kind, int(s.kind));
     const int port = m_portName->findData(s.portName);
     if (port >= 0)
@@ -290,9 +304,45 @@ void ConnectionDialog::setConnection(const SavedConnection &c)
     m_host->setText(s.host);
     m_port->setValue(s.port);
     selectData(m_protocol, int(s.protocol));
-    m_station->setValue(c.station);
     m_timeout->setValue(s.timeoutMs);
     m_retries->setValue(s.retries);
+    m_settingFields = false;
+    updateUrl();
+}
+
+void ConnectionDialog::updateUrl()
+{
+    if (m_settingFields || isGateway())
+        return;
+    const SavedConnection c = connection();
+    m_url->setText(c.settings.toUrl(c.station));
+}
+
+void ConnectionDialog::takeUrl()
+{
+    const SavedConnection current = connection();
+    const QString text = m_url->text().trimmed();
+    if (isGateway() || text.isEmpty() || text == current.settings.toUrl(current.station))
+        return;
+    Message error;
+    const std::optional<LinkSettings::Parsed> parsed
+        = LinkSettings::fromUrl(text, &error, current.settings);
+    if (!parsed) {
+        m_error->setText(translated(error));
+        m_error->setVisible(true);
+        return;
+    }
+    m_error->setVisible(false);
+    if (parsed->station)
+        m_station->setValue(*parsed->station);
+    setLinkFields(parsed->settings);
+}
+
+void ConnectionDialog::setConnection(const SavedConnection &c)
+{
+    m_name->setText(c.name);
+    m_station->setValue(c.station);
+    setLinkFields(c.settings);
     const GatewayWatchSettings gateway = c.gateway.value_or(GatewayWatchSettings{});
     if (c.gateway)
         selectData(m_kind, gatewayKind);
@@ -339,6 +389,14 @@ SavedConnection ConnectionDialog::connection() const
 
 void ConnectionDialog::accept()
 {
+    // A URL typed and not taken yet (Enter in the URL line): it wins over the fields, or stops
+    // here with what is wrong with it.
+    const SavedConnection fields = connection();
+    if (!isGateway() && m_url->text().trimmed() != fields.settings.toUrl(fields.station)) {
+        takeUrl();
+        if (m_error->isVisible())
+            return;
+    }
     const SavedConnection c = connection();
     QString problem
         = c.name.isEmpty() ? tr("Give the connection a name.") : translated(c.settings.validate());

@@ -35,6 +35,10 @@ public:
 private:
     void refreshPorts();
     void updateKind();
+    // The URL line follows the fields; a URL typed or pasted into it fills them.
+    void updateUrl();
+    void takeUrl();
+    void setLinkFields(const LinkSettings &settings);
     bool isGateway() const;
     // The gateway part as typed; an error when the broker URL does not read.
     Result<GatewayWatchSettings> gatewaySettings() const;
@@ -42,6 +46,8 @@ private:
     QList<SavedConnection> m_recent;
     QComboBox *m_recentCombo;
     QLineEdit *m_name;
+    QLineEdit *m_url;
+    bool m_settingFields = false;
     QComboBox *m_kind;
     QStackedWidget *m_pages;
     QComboBox *m_portName;

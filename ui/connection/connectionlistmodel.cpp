@@ -100,6 +100,9 @@ QVariant ConnectionListModel::data(const QModelIndex &index, int role) const
         default: {
             // Per station: several PLCs on one RS-485 line share a connection.
             QStringList lines{c->linkText()};
+            // What fatek-cli --link and named links take, to copy into a script.
+            if (!c->isGateway())
+                lines << tr("URL: %1").arg(c->saved().settings.toUrl(c->station()));
             const SessionStatistics statistics = c->statistics();
             for (auto it = statistics.stations.cbegin(); it != statistics.stations.cend(); ++it) {
                 const StationStatistics &s = it.value();

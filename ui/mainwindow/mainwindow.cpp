@@ -197,6 +197,7 @@ void MainWindow::createActions()
     connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     m_recentMenu = file->addMenu(tr("&Recent Connections"));
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    m_recentMenu->setToolTipsVisible(true);
     rebuildRecentMenu();
     auto *disconnectAction
         = file->addAction(QIcon(QStringLiteral(":/icons/disconnect.svg")), tr("&Close Connection"),
@@ -336,8 +337,12 @@ void MainWindow::rebuildRecentMenu()
     m_recentMenu->clear();
     const QList<SavedConnection> recent = m_manager->recent();
     for (const SavedConnection &c : recent) {
-        m_recentMenu->addAction(tr("%1 — %2, station %3").arg(c.name, c.linkText()).arg(c.station),
-                                this, [this, c] { openConnection(c); });
+        QAction *action = m_recentMenu->addAction(
+            tr("%1 — %2, station %3").arg(c.name, c.linkText()).arg(c.station), this,
+            [this, c] { openConnection(c); });
+        // The link as fatek-cli --link takes it.
+        if (!c.gateway)
+            action->setToolTip(c.settings.toUrl(c.station));
     }
     if (const int unreadable = m_manager->unreadableRecent(); unreadable > 0) {
         m_recentMenu->addSeparator();
