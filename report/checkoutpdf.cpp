@@ -4,11 +4,18 @@
 #include "core/qtbridge/qtmessage.h"
 #include "core/watch/safefile.h"
 
+#include <QAbstractTextDocumentLayout>
 #include <QBuffer>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPdfWriter>
+#include <QTextBlock>
+#include <QTextCursor>
 #include <QTextDocument>
+#include <QTextFrame>
+#include <QTextTable>
+
+#include <cmath>
 
 namespace Fatek::CheckoutPdf {
 
@@ -72,6 +79,34 @@ QString html(const CheckoutReport &report, const CheckoutReport::TextFunction &t
     return h;
 }
 
+// The last heading and the table after it (the signatures) on one page: when the page ends
+// between them, the heading starts the next page.
+void keepSignaturesTogether(QTextDocument &doc, qreal pageHeight)
+{
+    QTextTable *last = nullptr;
+    for (QTextFrame *frame : doc.rootFrame()->childFrames()) {
+        if (auto *table = qobject_cast<QTextTable *>(frame))
+            last = table;
+    }
+    if (!last)
+        return;
+    QTextBlock heading = doc.findBlock(last->firstPosition()).previous();
+    while (heading.isValid() && heading.text().trimmed().isEmpty())
+        heading = heading.previous();
+    if (!heading.isValid())
+        return;
+    QAbstractTextDocumentLayout *layout = doc.documentLayout();
+    const auto pageOf = [pageHeight](qreal y) {
+        return std::floor(y / pageHeight);
+    };
+    if (pageOf(layout->blockBoundingRect(heading).top())
+        != pageOf(layout->frameBoundingRect(last).bottom() - 1)) {
+        QTextBlockFormat format;
+        format.setPageBreakPolicy(QTextFormat::PageBreak_AlwaysBefore);
+        QTextCursor(heading).mergeBlockFormat(format);
+    }
+}
+
 QByteArray render(const CheckoutReport &report, const CheckoutReport::TextFunction &text)
 {
     QByteArray bytes;
@@ -87,6 +122,11 @@ QByteArray render(const CheckoutReport &report, const CheckoutReport::TextFuncti
         writer.setCreator(QStringLiteral("FATEK Studio"));
         QTextDocument doc;
         doc.setHtml(html(report, text));
+        // Laid out in pages here (at the screen's 96 dpi, which print() scales to the writer's),
+        // so that the signatures' heading can go with its lines.
+        const QSizeF page = writer.pageLayout().paintRect(QPageLayout::Inch).size() * qreal(96);
+        doc.setPageSize(page);
+        keepSignaturesTogether(doc, page.height());
         doc.print(&writer);
     } // the writer finishes the file when it goes
     return bytes;
