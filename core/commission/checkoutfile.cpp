@@ -39,7 +39,8 @@ QJsonArray addressArray(const std::vector<Address> &addresses)
 std::optional<std::vector<Address>> parseAddresses(const QJsonValue &v)
 {
     std::vector<Address> out;
-    for (const QJsonValue &a : v.toArray()) {
+    const QJsonArray array = v.toArray();
+    for (const auto &a : array) {
         const auto address = Address::parse(a.toString().toStdString());
         if (!address)
             return std::nullopt;
