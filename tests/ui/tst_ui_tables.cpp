@@ -47,6 +47,7 @@
 #include <QtCharts/QChart>
 
 #include <memory>
+#include <set>
 
 using namespace Fatek;
 
@@ -721,6 +722,77 @@ private Q_SLOTS:
         QTRY_VERIFY2_WITH_TIMEOUT(quality.data().toString().startsWith(QStringLiteral("late, ")),
                                   qPrintable(quality.data().toString()), longWait);
         QVERIFY(ageSeconds(quality.data().toString()) >= 0);
+    }
+
+    // The age refresh repaints the rows on screen, not all 200: behind the sort/filter proxy
+    // every repainted row is filtered again. Scrolled, the repaint follows the rows shown.
+    void ageRepaintsOnlyRowsOnScreen()
+    {
+        WatchTableWidget *table = openTable(QStringLiteral("R0..R199"), 200, 2000);
+        QVERIFY(table);
+        WatchTableModel *model = table->model();
+        QTRY_COMPARE_WITH_TIMEOUT(model->rowCount(), 200, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(allValues(model), longWait);
+        QTableView *view = table->view();
+        auto *pause = table->findChild<QToolButton *>(QStringLiteral("pauseButton"));
+        QVERIFY(onScreen(pause));
+        QTest::mouseClick(pause, Qt::LeftButton, {}, QPoint(), mouseDelayMs);
+        QTRY_VERIFY(table->isPaused());
+        // Paused values turn stale (a change of every row's quality, not an age repaint).
+        for (int r : {0, 199})
+            QTRY_VERIFY_WITH_TIMEOUT(model->index(r, WatchTableModel::QualityColumn)
+                                         .data()
+                                         .toString()
+                                         .startsWith(QStringLiteral("stale, ")),
+                                     longWait);
+        QTest::qWait(300);
+        // A filter typed as a person would: the proxy now filters every row it is told changed.
+        QLineEdit *filter = table->findChild<QLineEdit *>(QStringLiteral("filterEdit"));
+        QVERIFY(onScreen(filter));
+        QTest::mouseClick(filter, Qt::LeftButton, {}, QPoint(), mouseDelayMs);
+        QTest::keyClicks(filter, QStringLiteral("R1"), {}, 40);
+        QTRY_VERIFY(view->model()->rowCount() < 200);
+        const int shown = view->model()->rowCount();
+        QVERIFY(shown > 40); // R1, R10..R19, R100..R199: more than a screenful
+
+        auto repainted = [&](int waitMs) {
+            QSignalSpy changes(model, &QAbstractItemModel::dataChanged);
+            QTest::qWait(waitMs);
+            std::set<int> rows;
+            for (const QList<QVariant> &args : std::as_const(changes)) {
+                const auto from = args.at(0).value<QModelIndex>();
+                const auto to = args.at(1).value<QModelIndex>();
+                if (from.column() != WatchTableModel::QualityColumn)
+                    continue;
+                for (int r = from.row(); r <= to.row(); ++r)
+                    rows.insert(r);
+            }
+            return rows;
+        };
+        auto onScreenRows = [&] {
+            std::set<int> rows;
+            const int first = view->rowAt(0);
+            int last = view->rowAt(view->viewport()->height() - 1);
+            if (last < 0)
+                last = view->model()->rowCount() - 1;
+            for (int r = first; r <= last; ++r)
+                rows.insert(table->modelRow(view->model()->index(r, 0)));
+            return rows;
+        };
+        std::set<int> top = repainted(4 * WatchTableModel::ageRefreshMs);
+        QVERIFY(!top.empty());
+        QCOMPARE(top, onScreenRows());
+        QVERIFY(int(top.size()) < shown);
+        QVERIFY(top.count(model->rowCount() - 1) == 0);
+
+        // End: the last rows (R199 among them) are the ones repainted now.
+        view->setFocus();
+        QTest::keyClick(view, Qt::Key_End, Qt::ControlModifier);
+        QTest::qWait(100);
+        const std::set<int> bottom = repainted(4 * WatchTableModel::ageRefreshMs);
+        QCOMPARE(bottom, onScreenRows());
+        QVERIFY(bottom.count(model->rowCount() - 1) == 1);
+        QVERIFY(bottom != top);
     }
 
     // A register shown in hex is plotted as the number it holds: the sine's negative half

@@ -190,14 +190,25 @@ qint64 WatchTableModel::ageMs(int row) const
     return std::max<qint64>(0, QDateTime::currentMSecsSinceEpoch() - r.updated.toMSecsSinceEpoch());
 }
 
+void WatchTableModel::setAgeRows(std::function<std::vector<int>()> rowsOnScreen)
+{
+    m_ageRows = std::move(rowsOnScreen);
+}
+
 void WatchTableModel::refreshAges()
 {
     if (m_rows.isEmpty()) {
         m_ageTimer.stop();
         return;
     }
-    Q_EMIT dataChanged(index(0, QualityColumn), index(rowCount() - 1, QualityColumn),
-                       {Qt::DisplayRole});
+    if (!m_ageRows) {
+        Q_EMIT dataChanged(index(0, QualityColumn), index(rowCount() - 1, QualityColumn),
+                           {Qt::DisplayRole});
+        return;
+    }
+    std::vector<int> rows = m_ageRows();
+    std::erase_if(rows, [this](int r) { return r < 0 || r >= m_rows.size(); });
+    emitRowsChanged(std::move(rows), QualityColumn, QualityColumn);
 }
 
 QString WatchTableModel::qualityReason(int row) const

@@ -30,6 +30,9 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <vector>
+
 namespace Fatek {
 
 WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
@@ -111,6 +114,20 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     m_proxy->setSourceModel(m_model);
     m_view->setObjectName(QStringLiteral("watchView"));
     m_view->setModel(m_proxy);
+    // Ages are repainted where they can be seen: a hidden table or a row scrolled away paints
+    // its age afresh when it comes back.
+    m_model->setAgeRows([this] {
+        std::vector<int> rows;
+        if (!m_view->isVisible() || m_proxy->rowCount() == 0)
+            return rows;
+        const int first = std::max(0, m_view->rowAt(0));
+        int last = m_view->rowAt(m_view->viewport()->height() - 1);
+        if (last < 0)
+            last = m_proxy->rowCount() - 1;
+        for (int r = first; r <= last; ++r)
+            rows.push_back(modelRow(m_proxy->index(r, 0)));
+        return rows;
+    });
     auto *delegate = new WatchDelegate(m_view);
     // A format picked in one row's combo goes to every selected row with it.
     delegate->setFormatHandler([this](const QModelIndex &index, DisplayFormat format) {
