@@ -3273,6 +3273,10 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>%1 older frames were dropped from the log while paused.</translation>
         </message>
         <message>
+            <source>Older frames were not kept while the console was closed; the newest are shown.</source>
+            <translation>Older frames were not kept while the console was closed; the newest are shown.</translation>
+        </message>
+        <message>
             <source>Cannot write %1: %2</source>
             <translation>Cannot write %1: %2</translation>
         </message>

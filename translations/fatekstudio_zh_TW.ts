@@ -3266,6 +3266,10 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>暫停期間已從記錄中捨棄 %1 個較舊的訊框。</translation>
         </message>
         <message>
+            <source>Older frames were not kept while the console was closed; the newest are shown.</source>
+            <translation>主控台關閉期間未保留較舊的訊框；目前顯示最新的訊框。</translation>
+        </message>
+        <message>
             <source>Cannot write %1: %2</source>
             <translation>無法寫入 %1：%2</translation>
         </message>

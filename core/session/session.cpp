@@ -69,7 +69,7 @@ Session::Session(const LinkSettings &settings, QObject *parent)
     : QObject(parent)
     , m_settings(settings)
     , m_shared(std::make_shared<SessionShared>())
-    , m_log(new TrafficLog(10000, this))
+    , m_log(new TrafficLog(TrafficLog::idleCapacity, this))
     , m_completions(std::make_unique<SessionCompletions>())
 {
     registerSessionMetaTypes();

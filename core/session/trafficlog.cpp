@@ -26,6 +26,12 @@ void TrafficLog::setCapacity(int capacity)
     trimLocked();
 }
 
+void TrafficLog::growCapacity(int capacity)
+{
+    const std::lock_guard locker(m_mutex);
+    m_capacity = std::max(m_capacity, capacity);
+}
+
 qint64 TrafficLog::byteBudget() const
 {
     const std::lock_guard locker(m_mutex);

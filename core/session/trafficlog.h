@@ -37,9 +37,18 @@ class TrafficLog : public QObject
     Q_OBJECT
 
 public:
-    explicit TrafficLog(int capacity = 10000, QObject *parent = nullptr);
+    // A session keeps a short log until something shows it (the raw console), then the full one:
+    // a studio whose console was never opened, or a program that only polls, needs no 10,000
+    // frames per link (about 7 MB for a 200-item link).
+    static constexpr int idleCapacity = 500;
+    static constexpr int fullCapacity = 10000;
+
+    explicit TrafficLog(int capacity = fullCapacity, QObject *parent = nullptr);
 
     int capacity() const;
+    // Raises the capacity to at least `capacity` (never lowers it): a reader that starts showing
+    // the log asks for the full one.
+    void growCapacity(int capacity);
     // 0 turns the log off: entries are counted (sequence numbers) but not kept (a program that
     // never reads its session's traffic, such as the gateway, keeps no memory for it).
     void setCapacity(int capacity);

@@ -11,6 +11,7 @@
 #include <QCheckBox>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -35,6 +36,7 @@ private Q_SLOTS:
     void writeFrameAsksFirst();
     void filtersPauseClearSave();
     void noConnection();
+    void hiddenConsoleKeepsShortLog();
 
 private:
     void open(LinkSettings::ProtocolChoice protocol = LinkSettings::ProtocolChoice::Facon);
@@ -353,6 +355,54 @@ void TestToolsConsole::noConnection()
     QVERIFY(m_console->sendBar()->resultText().contains(QStringLiteral("No connection")));
     m_console->setTarget(nullptr, 2, {});
     QCOMPARE(m_console->model()->rowCount(), 0);
+}
+
+// The console reads its link's log only while on screen. Hidden (a docked console behind another
+// tab), its table stays empty and the link keeps a short log; shown, the newest frames appear and
+// the log grows to its full length, so frames while it is hidden again are all kept.
+void TestToolsConsole::hiddenConsoleKeepsShortLog()
+{
+    m_rig = Rig();
+    QVERIFY(m_rig.start(LinkSettings::ProtocolChoice::Facon, 500, 0));
+    m_console = std::make_unique<RawConsole>();
+    m_console->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_console->resize(1000, 500);
+    TrafficLog *log = m_rig.session->trafficLog();
+    QCOMPARE(log->capacity(), TrafficLog::idleCapacity);
+
+    int finished = 0;
+    connect(m_rig.session.get(), &Session::finished, this, [&finished] { ++finished; });
+    const auto transactions = [this, &finished](int count) {
+        const int until = finished + count;
+        for (int i = 0; i < count; ++i)
+            m_rig.session->submit(Request::briefStatus(1));
+        QTRY_COMPARE_WITH_TIMEOUT(finished, until, 20000);
+    };
+    // A frame out and one in each: more than the short log keeps.
+    transactions(TrafficLog::idleCapacity / 2 + 20);
+    QCOMPARE(log->size(), TrafficLog::idleCapacity);
+    QTest::qWait(200);
+    QCOMPARE(m_console->model()->rowCount(), 0);
+
+    m_console->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_console.get()));
+    QTRY_COMPARE(m_console->model()->rowCount(), TrafficLog::idleCapacity);
+    QCOMPARE(log->capacity(), TrafficLog::fullCapacity);
+    QCOMPARE(m_console->model()->entryAt(m_console->model()->rowCount() - 1).sequence,
+             log->lastSequence());
+    auto *status = m_console->findChild<QLabel *>(QStringLiteral("consoleStatus"));
+    QVERIFY(status);
+    QVERIFY2(status->text().contains(QStringLiteral("not kept while the console was closed")),
+             qPrintable(status->text()));
+
+    m_console->hide();
+    transactions(TrafficLog::idleCapacity);
+    QTest::qWait(200);
+    QCOMPARE(m_console->model()->rowCount(), TrafficLog::idleCapacity);
+    m_console->show();
+    // Every frame since is there: nothing was dropped while hidden with the full log.
+    QTRY_COMPARE(m_console->model()->rowCount(), 3 * TrafficLog::idleCapacity);
+    QVERIFY2(!status->text().contains(QStringLiteral("not kept")), qPrintable(status->text()));
 }
 
 QTEST_MAIN(TestToolsConsole)

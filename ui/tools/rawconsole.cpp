@@ -20,6 +20,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollBar>
+#include <QShowEvent>
 #include <QSpinBox>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -167,9 +168,23 @@ void RawConsole::setTarget(Session *session, quint8 station, const QString &conn
     m_sessionGone = connect(session, &QObject::destroyed, this,
                             [this] { setTarget(nullptr, m_station, {}); });
     connect(session->trafficLog(), &TrafficLog::entriesAdded, this, [this] {
-        if (!m_fetchTimer.isActive())
+        if (isVisible() && !m_fetchTimer.isActive())
             m_fetchTimer.start();
     });
+    if (isVisible())
+        startShowing();
+}
+
+void RawConsole::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (m_session)
+        startShowing();
+}
+
+void RawConsole::startShowing()
+{
+    m_session->trafficLog()->growCapacity(TrafficLog::fullCapacity);
     fetch();
 }
 
@@ -183,6 +198,8 @@ void RawConsole::setPaused(bool paused)
     if (m_pause->isChecked() != paused)
         m_pause->setChecked(paused);
     m_pause->setText(paused ? tr("Resume") : tr("Pause"));
+    if (paused)
+        m_pausedSinceFetch = true;
     if (!paused)
         fetch();
     else
@@ -197,19 +214,25 @@ bool RawConsole::isPaused() const
 
 void RawConsole::fetch()
 {
-    if (!m_session || isPaused())
+    if (!m_session || isPaused() || !isVisible())
         return;
     const QList<TrafficEntry> entries = m_session->trafficLog()->entries(m_lastSequence);
     if (entries.isEmpty())
         return;
-    if (entries.first().sequence > m_lastSequence + 1 && m_lastSequence != 0) {
-        ToolPalette::showMessage(m_status,
-                                 tr("%1 older frames were dropped from the log while paused.")
-                                     .arg(entries.first().sequence - m_lastSequence - 1),
-                                 false);
+    if (entries.first().sequence > m_lastSequence + 1) {
+        // Paused, the log went on without the console; closed, it kept only a short log.
+        ToolPalette::showMessage(
+            m_status,
+            m_pausedSinceFetch && m_lastSequence != 0
+                ? tr("%1 older frames were dropped from the log while paused.")
+                      .arg(entries.first().sequence - m_lastSequence - 1)
+                : tr("Older frames were not kept while the console was closed; the newest are "
+                     "shown."),
+            false);
     } else {
         ToolPalette::showMessage(m_status, {}, false);
     }
+    m_pausedSinceFetch = false;
     m_lastSequence = entries.last().sequence;
     m_model->append(entries);
     if (m_followTail)

@@ -54,9 +54,13 @@ public Q_SLOTS:
 protected:
     // Theme changes recolour the table (its colours are derived from the palette).
     void changeEvent(QEvent *event) override;
+    // The console reads its link's log only while it is on screen (a docked console behind
+    // another tab is not): the log and the table grow only when someone looks.
+    void showEvent(QShowEvent *event) override;
 
 private:
     void fetch();
+    void startShowing();
     void save();
     void applyFilters();
     QString rowsText(bool selectedOnly) const;
@@ -67,6 +71,7 @@ private:
     QMetaObject::Connection m_sessionGone;
     quint64 m_lastSequence = 0;
     bool m_followTail = true;
+    bool m_pausedSinceFetch = false; // a gap in the log is the pause's, not the hidden console's
     QTimer m_fetchTimer;
 
     TrafficLogModel *m_model;
