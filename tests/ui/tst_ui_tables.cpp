@@ -17,6 +17,7 @@
 #include "ui/watch/watchtableview.h"
 #include "uitestutil.h"
 
+#include <QAbstractButton>
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QClipboard>
@@ -45,6 +46,7 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QtCharts/QChart>
+#include <QtCharts/QValueAxis>
 
 #include <memory>
 #include <set>
@@ -97,6 +99,50 @@ QStringList shownAddresses(const WatchTableWidget *table)
     for (int r = 0; r < m->rowCount(); ++r)
         out << m->index(r, WatchTableModel::AddressColumn).data().toString();
     return out;
+}
+
+// The chart's labels that QtCharts cut to "…" (or "..."), joined; empty when every label is whole.
+QString cutChartLabels(TrendView *trend)
+{
+    QStringList cut;
+    for (QGraphicsItem *item : trend->chart()->scene()->items()) {
+        if (auto *text = dynamic_cast<QGraphicsTextItem *>(item);
+            text && text->isVisible()
+            && (text->toPlainText().contains(QChar(0x2026))
+                || text->toPlainText().contains(QLatin1String("..."))))
+            cut << text->toPlainText();
+    }
+    return cut.join(QStringLiteral(" | "));
+}
+
+// The value axes' labels (numbers) that reach into the plot or into each other's place, joined;
+// empty when every label has its own room beside the plot.
+QString overlappingAxisLabels(TrendView *trend)
+{
+    const QRectF plot = trend->chart()->plotArea().adjusted(1, 1, -1, -1);
+    std::vector<std::pair<QString, QRectF>> labels;
+    for (QGraphicsItem *item : trend->chart()->scene()->items()) {
+        auto *text = dynamic_cast<QGraphicsTextItem *>(item);
+        if (!text || !text->isVisible())
+            continue;
+        bool number = false;
+        text->toPlainText().toDouble(&number);
+        if (number)
+            labels.emplace_back(text->toPlainText(), text->sceneBoundingRect());
+    }
+    QStringList bad;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const auto &[label, rect] = labels[i];
+        // Labels sit beside the plot: left or right of it, never across its edge.
+        if (rect.right() > plot.left() && rect.left() < plot.right())
+            bad << label + QStringLiteral(" in the plot");
+        for (std::size_t j = i + 1; j < labels.size(); ++j) {
+            // Shrunk by the text's own margins: touching boxes are not overlapping text.
+            if (rect.adjusted(1, 1, -1, -1).intersects(labels[j].second.adjusted(1, 1, -1, -1)))
+                bad << label + QStringLiteral(" over ") + labels[j].first;
+        }
+    }
+    return bad.join(QStringLiteral(" | "));
 }
 
 // The addresses in the model's own order.
@@ -841,16 +887,7 @@ private Q_SLOTS:
         // Labels cut to "…", with the trend under the table and beside it (its dock moved to the
         // right, narrow, as on a laptop with the table wanting the width).
         const auto cutLabels = [trend] {
-            QStringList cut;
-            for (QGraphicsItem *item : trend->chart()->scene()->items()) {
-                // QtCharts cuts with three dots.
-                if (auto *text = dynamic_cast<QGraphicsTextItem *>(item);
-                    text && text->isVisible()
-                    && (text->toPlainText().contains(QChar(0x2026))
-                        || text->toPlainText().contains(QLatin1String("..."))))
-                    cut << text->toPlainText();
-            }
-            return cut.join(QStringLiteral(" | "));
+            return cutChartLabels(trend);
         };
         trend->refresh();
         QTRY_COMPARE(cutLabels(), QString());
@@ -865,6 +902,63 @@ private Q_SLOTS:
                     && trend->chart()->plotArea().width() < dock->width());
         trend->refresh();
         QCOMPARE(cutLabels(), QString());
+    }
+
+    // Four lines on separate axes (three analog scales and the bit axis) in a trend docked
+    // beside the table and dragged as narrow as it goes: every axis label stays whole (the dock
+    // stops where the labels would be cut), and the plot keeps room.
+    void trendAxesStayWholeWhenNarrow()
+    {
+        WatchTableWidget *table = openTable(QStringLiteral("R1 R0 DR10 Y0"), 100);
+        QVERIFY(table);
+        WatchTableModel *model = table->model();
+        QTRY_VERIFY_WITH_TIMEOUT(allValues(model), longWait);
+        QTableView *view = table->view();
+        clickCell(view, cellOf(table, QStringLiteral("R1"), WatchTableModel::AddressColumn));
+        for (const QString &address :
+             {QStringLiteral("R0"), QStringLiteral("DR10"), QStringLiteral("Y0")})
+            clickCell(view, cellOf(table, address, WatchTableModel::AddressColumn),
+                      Qt::ControlModifier);
+        QAction *add = nullptr;
+        for (QAction *a : view->actions()) {
+            if (a->text() == QLatin1String("Add to &Trend"))
+                add = a;
+        }
+        QVERIFY(add);
+        add->trigger();
+        TrendView *trend = m_window->trendView();
+        QCOMPARE(trend->itemCount(), 4);
+        QVERIFY(m_window->openTool(QStringLiteral("trend")));
+        QTRY_VERIFY(trend->isVisible());
+        auto *separate = trend->findChild<QAbstractButton *>(QStringLiteral("trendSeparateAxes"));
+        QVERIFY(onScreen(separate));
+        if (!separate->isChecked())
+            QTest::mouseClick(separate, Qt::LeftButton, {}, QPoint(), mouseDelayMs);
+        QTRY_VERIFY(separate->isChecked());
+        QTRY_COMPARE(trend->valueAxes().size(), 4);
+        QTest::qWait(1500); // ranges from a second of values
+
+        auto *dock = m_window->findChild<QDockWidget *>(QStringLiteral("trendDock"));
+        QVERIFY(dock);
+        m_window->addDockWidget(Qt::RightDockWidgetArea, dock);
+        dock->show();
+        for (int width : {600, 420, 200}) {
+            m_window->resizeDocks({dock}, {width}, Qt::Horizontal);
+            QTest::qWait(300);
+            trend->refresh();
+            QTest::qWait(100);
+            QVERIFY2(cutChartLabels(trend).isEmpty(),
+                     qPrintable(QStringLiteral("dock %1 px wide: %2")
+                                    .arg(dock->width())
+                                    .arg(cutChartLabels(trend))));
+            QVERIFY2(overlappingAxisLabels(trend).isEmpty(),
+                     qPrintable(QStringLiteral("dock %1 px wide: %2")
+                                    .arg(dock->width())
+                                    .arg(overlappingAxisLabels(trend))));
+            QVERIFY2(trend->chart()->plotArea().width() > 50,
+                     qPrintable(QString::number(trend->chart()->plotArea().width())));
+            QVERIFY(onScreen(separate));
+        }
     }
 
     // At 1366x768 the table's columns fit, also with the forcing dock open beside it (Ctrl+Shift+F)

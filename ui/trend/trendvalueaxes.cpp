@@ -56,11 +56,61 @@ void TrendValueAxes::setPlotHeight(double height)
     }
 }
 
+namespace {
+
+// QtCharts' share of the chart's width for all vertical axes together (CartesianChartLayout's
+// maxAxisPortion), and its space beside a label (ChartAxisElement's labelPadding and titlePadding,
+// ChartValueAxisY's tolerance).
+constexpr double axesShare = 0.4;
+constexpr double labelRoom = 4.0 + 2.0;
+constexpr double titleRoom = 2.0 * 2.0;
+
+} // namespace
+
+double TrendValueAxes::axisWidth(const QValueAxis *axis, bool title)
+{
+    const QFontMetricsF labels(axis->labelsFont());
+    double widest = 0;
+    // The labels QtCharts will draw: each tick in the axis' printf format.
+    const QByteArray format = axis->labelFormat().toLatin1();
+    for (double tick : tickValues(axis))
+        widest = std::max(widest,
+                          labels.boundingRect(QString::asprintf(format.constData(), tick)).width());
+    double width = widest + labelRoom;
+    if (title && !axis->titleText().isEmpty())
+        width += QFontMetricsF(axis->titleFont()).height() + titleRoom;
+    return width;
+}
+
+double TrendValueAxes::neededChartWidth(bool titles) const
+{
+    // Each side gets the share in proportion to its number of axes: the side whose axes want the
+    // most per axis decides.
+    double left = 0, right = 0;
+    int leftCount = 0, rightCount = 0;
+    for (const QValueAxis *axis : m_axes) {
+        const bool onLeft = axis->alignment() & Qt::AlignLeft;
+        (onLeft ? left : right) += axisWidth(axis, titles);
+        ++(onLeft ? leftCount : rightCount);
+    }
+    const double perAxis
+        = std::max(leftCount ? left / leftCount : 0.0, rightCount ? right / rightCount : 0.0);
+    const QMarginsF margins = m_chart->margins();
+    return perAxis * static_cast<double>(leftCount + rightCount) / axesShare + margins.left()
+           + margins.right() + 2 * labelRoom;
+}
+
+int TrendValueAxes::minimumChartWidth() const
+{
+    return static_cast<int>(std::ceil(neededChartWidth(false)));
+}
+
 void TrendValueAxes::setChartWidth(double width)
 {
-    // QtCharts squeezes value axes that together want more than a share of the chart's width,
-    // and then cuts their labels to "...".
-    const bool titles = width >= 640;
+    // QtCharts squeezes value axes that together want more than a share of the chart's width:
+    // titles only where labels and titles fit together.
+    m_chartWidth = width;
+    const bool titles = width >= 640 && neededChartWidth(true) <= width;
     if (titles == m_titles)
         return;
     m_titles = titles;
@@ -115,6 +165,9 @@ std::vector<QValueAxis *> TrendValueAxes::rebuild(const std::vector<Line> &lines
         auto *axis = new QValueAxis;
         axis->setTitleText(title);
         axis->setMinorTickCount(0);
+        // A number cut to "1..." is worse than none; the view keeps the chart wide enough for
+        // whole labels (minimumChartWidth()).
+        axis->setTruncateLabels(false);
         if (color.isValid()) {
             // The axis in its line's colour: which scale belongs to which line is plain.
             QPen pen = axis->linePen();
@@ -189,6 +242,9 @@ void TrendValueAxes::fit(std::map<QValueAxis *, Span> spans, bool zoomed)
         applyNiceTicks(axis, span.min - margin, span.max + margin, m_targetTicks);
         axis->setRange(span.min - margin, span.max + margin);
     }
+    // New ranges, new labels: the titles fit beside them or not.
+    if (m_chartWidth > 0)
+        setChartWidth(m_chartWidth);
 }
 
 } // namespace Fatek

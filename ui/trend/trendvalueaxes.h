@@ -51,6 +51,10 @@ public:
     // The chart's width in pixels: in a narrow chart the axes show no titles (the legend and the
     // axes' colours name the lines), so that their labels keep the width they need.
     void setChartWidth(double width);
+    // The narrowest chart in which every value axis shows its tick labels whole (without titles):
+    // QtCharts gives the value axes together at most 40 % of the chart's width and cuts the
+    // labels of axes squeezed below their width to "...".
+    int minimumChartWidth() const;
 
     // The distance of the ticks on a value axis showing `range`: 1, 2 or 5 times a power of ten,
     // about `targetTicks` ticks.
@@ -59,11 +63,19 @@ public:
     static QList<double> tickValues(const QValueAxis *axis);
 
 private:
+    // The width one value axis wants: its widest tick label, the label's padding and, with
+    // `title`, the title's height (the title is turned on its side).
+    static double axisWidth(const QValueAxis *axis, bool title);
+    // The chart's width at which no value axis is squeezed (QtCharts shares 40 % of the width
+    // among the axes, each side in proportion to its number of axes).
+    double neededChartWidth(bool titles) const;
+
     QChart *m_chart;
     std::vector<QValueAxis *> m_axes;
     QValueAxis *m_bitAxis = nullptr;
     int m_targetTicks = 5;
     bool m_titles = true;
+    double m_chartWidth = 0;
 };
 
 } // namespace Fatek

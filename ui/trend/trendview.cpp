@@ -530,6 +530,18 @@ void TrendView::rebuildAxes()
         for (QLineSeries *s : m_items[i]->series)
             s->attachAxis(axes[i]);
     }
+    keepAxisLabelsWhole();
+}
+
+void TrendView::keepAxisLabelsWhole()
+{
+    // The chart is never narrower than its value axes' labels need: a dock dragged narrow stops
+    // there instead of the labels being cut to "...". It grows at once and shrinks by more than
+    // a few pixels only, so that labels changing with the values do not make the layout jitter.
+    const int needed = m_valueAxes.minimumChartWidth() + 2 * m_chartView->frameWidth();
+    const int now = m_chartView->minimumWidth();
+    if (needed > now || needed < now - 16)
+        m_chartView->setMinimumWidth(needed);
 }
 
 QString TrendView::readoutText() const
@@ -589,6 +601,7 @@ void TrendView::refresh()
         }
     }
     m_valueAxes.fit(std::move(spans), m_zoomed);
+    keepAxisLabelsWhole();
     if (!m_zoomed)
         setTimeRange(fromMs, toMs);
     m_chartView->updateReadout(); // the time under the mouse moved with the axis

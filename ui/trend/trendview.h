@@ -114,6 +114,7 @@ private:
         bool discrete = false; // 0/1: the bit axis
     };
     bool addOne(WatchTableModel *model, int row, QString *error);
+    void keepAxisLabelsWhole();
     void rebuildAxes();
 
     void onDataChanged(WatchTableModel *model, const QModelIndex &topLeft,
