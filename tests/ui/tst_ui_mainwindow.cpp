@@ -8,6 +8,8 @@
 #include "ui/connection/connectionmanager.h"
 #include "ui/mainwindow/demosimulator.h"
 #include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/rawconsole.h"
+#include "ui/tools/trafficlogmodel.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QApplication>
@@ -22,6 +24,7 @@
 #include <QStandardPaths>
 #include <QStyle>
 #include <QStyleOptionViewItem>
+#include <QTabBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -150,6 +153,42 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(linkStatus->text().contains(QStringLiteral("connected")),
                                  longWait);
         QTRY_VERIFY_WITH_TIMEOUT(c->statistics().total.requests > 0, longWait);
+    }
+
+    // The raw console behind the Connections tab reads nothing: the link keeps its short log and
+    // the console's table stays empty. A click on its tab shows it: the frames come, and the log
+    // keeps its full length from then on.
+    void consoleReadsTheLogOnlyWhenItsTabIsChosen()
+    {
+        Plc plc;
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        Connection *c = connect(window, plc);
+        QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, longWait);
+        typeInto(window.currentWatchTable()->addressEdit(), QStringLiteral("R0..R9"));
+        auto *console = window.findChild<RawConsole *>();
+        QVERIFY(console);
+        TrafficLog *log = c->session()->trafficLog();
+        QTRY_VERIFY_WITH_TIMEOUT(log->lastSequence() > 20, longWait);
+        QCOMPARE(console->model()->rowCount(), 0);
+        QCOMPARE(log->capacity(), TrafficLog::idleCapacity);
+
+        QTabBar *tabs = nullptr;
+        int consoleTab = -1;
+        for (QTabBar *bar : window.findChildren<QTabBar *>()) {
+            for (int i = 0; i < bar->count(); ++i) {
+                if (bar->isVisible() && bar->tabText(i) == QLatin1String("Raw Console")) {
+                    tabs = bar;
+                    consoleTab = i;
+                }
+            }
+        }
+        QVERIFY(tabs);
+        QTest::mouseClick(tabs, Qt::LeftButton, {}, tabs->tabRect(consoleTab).center(), 300);
+        QTRY_VERIFY(console->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(console->model()->rowCount() > 0, longWait);
+        QCOMPARE(log->capacity(), TrafficLog::fullCapacity);
     }
 
     void editRegisterAndToggleDiscrete()

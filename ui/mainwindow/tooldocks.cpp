@@ -67,9 +67,12 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
     QDockWidget *forcing
         = addDock(new ForcingPanel(window), tr("Forcing"), QStringLiteral("forcingDock"),
                   Qt::RightDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    auto *rawConsole = new RawConsole(window);
     QDockWidget *console
-        = addDock(new RawConsole(window), tr("Raw Console"), QStringLiteral("rawConsoleDock"),
+        = addDock(rawConsole, tr("Raw Console"), QStringLiteral("rawConsoleDock"),
                   Qt::BottomDockWidgetArea, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    // A dock behind another tab is not hidden, only covered: its tab tells the console.
+    connect(console, &QDockWidget::visibilityChanged, rawConsole, &RawConsole::setOnScreen);
     window->tabifyDockWidget(control, forcing);
     // The watch tables own the width: the side tools start hidden (Tools menu, shortcuts above);
     // the console shares the bottom area with the connections as a tab. QSettings keeps what the

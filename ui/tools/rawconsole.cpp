@@ -168,17 +168,24 @@ void RawConsole::setTarget(Session *session, quint8 station, const QString &conn
     m_sessionGone = connect(session, &QObject::destroyed, this,
                             [this] { setTarget(nullptr, m_station, {}); });
     connect(session->trafficLog(), &TrafficLog::entriesAdded, this, [this] {
-        if (isVisible() && !m_fetchTimer.isActive())
+        if (isOnScreen() && !m_fetchTimer.isActive())
             m_fetchTimer.start();
     });
-    if (isVisible())
+    if (isOnScreen())
         startShowing();
 }
 
 void RawConsole::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
-    if (m_session)
+    if (m_session && isOnScreen())
+        startShowing();
+}
+
+void RawConsole::setOnScreen(bool onScreen)
+{
+    m_tabShown = onScreen;
+    if (m_session && isOnScreen())
         startShowing();
 }
 
@@ -214,7 +221,7 @@ bool RawConsole::isPaused() const
 
 void RawConsole::fetch()
 {
-    if (!m_session || isPaused() || !isVisible())
+    if (!m_session || isPaused() || !isOnScreen())
         return;
     const QList<TrafficEntry> entries = m_session->trafficLog()->entries(m_lastSequence);
     if (entries.isEmpty())

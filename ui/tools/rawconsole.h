@@ -50,6 +50,9 @@ public:
 
 public Q_SLOTS:
     void clear();
+    // Whether its dock's tab is the one shown (a docked console behind another tab is visible to
+    // Qt but covered); the console reads the log only while it is on screen.
+    void setOnScreen(bool onScreen);
 
 protected:
     // Theme changes recolour the table (its colours are derived from the palette).
@@ -71,6 +74,8 @@ private:
     QMetaObject::Connection m_sessionGone;
     quint64 m_lastSequence = 0;
     bool m_followTail = true;
+    bool isOnScreen() const { return isVisible() && m_tabShown; }
+    bool m_tabShown = true;
     bool m_pausedSinceFetch = false; // a gap in the log is the pause's, not the hidden console's
     QTimer m_fetchTimer;
 
