@@ -9,6 +9,7 @@
 #include "ui/tools/discretetablemodel.h"
 #include "ui/tools/forcingpanel.h"
 #include "ui/watch/watchtablemodel.h"
+#include "ui/watch/watchtablewidget.h"
 
 #include "core/protocol/address.h"
 #include "core/protocol/addressrange.h"
@@ -488,6 +489,23 @@ private Q_SLOTS:
                                     .data()
                                     .toString();
         QVERIFY2(quality.contains(QStringLiteral("秒")), qPrintable(quality));
+
+        // The table's undo and redo, before and after a step, as its menu shows them.
+        WatchTableWidget *table = window.currentWatchTable();
+        auto *undo = table->findChild<QAction *>(QStringLiteral("undoAction"));
+        auto *redo = table->findChild<QAction *>(QStringLiteral("redoAction"));
+        QVERIFY(undo && redo);
+        QVERIFY2(!hasEnglish(undo->text()) && !hasEnglish(redo->text()),
+                 qPrintable(undo->text() + QStringLiteral(" | ") + redo->text()));
+        QLineEdit *add = table->addressEdit();
+        add->setFocus();
+        QTest::keyClicks(add, QStringLiteral("R200"), {}, 50);
+        QTest::keyClick(add, Qt::Key_Return);
+        QTRY_VERIFY(undo->isEnabled());
+        QVERIFY2(!hasEnglish(undo->text()), qPrintable(undo->text()));
+        undo->trigger();
+        QTRY_VERIFY(redo->isEnabled());
+        QVERIFY2(!hasEnglish(redo->text()), qPrintable(redo->text()));
     }
 };
 
