@@ -18,12 +18,16 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QLineEdit>
+#include <QProcess>
 #include <QTableView>
 
 #include <malloc.h>
 #include <time.h>
 
 #include <algorithm>
+#include <memory>
+#include <vector>
 
 namespace Fatek::Bench {
 
@@ -162,7 +166,44 @@ struct UiLoad
     double valuesPerSecond = 0;
 };
 
-UiLoad uiLoad(const Options &options)
+// How figure 4's run differs from the plain one.
+struct Variant
+{
+    bool filterAndSort = false; // a filter typed and the table sorted by value
+    int busyLoops = 0;          // `yes` processes keeping cores busy meanwhile
+};
+
+// `yes` loops that keep cores busy for the life of this object (the machine of a user who
+// compiles or runs a VM beside the studio).
+class BusyLoops
+{
+public:
+    explicit BusyLoops(int count)
+    {
+        for (int i = 0; i < count; ++i) {
+            auto process = std::make_unique<QProcess>();
+            process->setStandardOutputFile(QProcess::nullDevice());
+            process->start(QStringLiteral("yes"), {});
+            if (process->waitForStarted())
+                m_processes.push_back(std::move(process));
+        }
+    }
+    ~BusyLoops()
+    {
+        for (auto &p : m_processes) {
+            p->kill();
+            p->waitForFinished();
+        }
+    }
+    BusyLoops(const BusyLoops &) = delete;
+    BusyLoops &operator=(const BusyLoops &) = delete;
+    int running() const { return static_cast<int>(m_processes.size()); }
+
+private:
+    std::vector<std::unique_ptr<QProcess>> m_processes;
+};
+
+UiLoad uiLoad(const Options &options, const Variant &variant = {})
 {
     UiLoad u;
     SimThread sim;
@@ -184,6 +225,12 @@ UiLoad uiLoad(const Options &options)
     widget.resize(1280, 900);
     widget.show();
     widget.setConnection(connection);
+    if (variant.filterAndSort) {
+        // "R" shows the 3,840 R registers: Qt's proxy filters every changed row again and
+        // re-sorts every changed value.
+        widget.findChild<QLineEdit *>(QStringLiteral("filterEdit"))->setText(QStringLiteral("R"));
+        widget.view()->sortByColumn(WatchTableModel::ValueColumn, Qt::DescendingOrder);
+    }
 
     // The simulator's memory changes every refresh, on the simulator's thread.
     QTimer *churnTimer = nullptr;
@@ -223,6 +270,9 @@ UiLoad uiLoad(const Options &options)
         longest = std::max(longest, beat.nsecsElapsed());
         beat.start();
     });
+    BusyLoops busy(variant.busyLoops);
+    if (busy.running() != variant.busyLoops)
+        return u;
     beat.start();
     heartbeat.start();
     const int startBatches = batches;
@@ -253,6 +303,24 @@ void runUiLoad(const Options &options, Report &report)
 {
     const CoreMemory memory = coreMemory(options);
     const UiLoad ui = uiLoad(options);
+    const UiLoad sorted = uiLoad(options, {true, 0});
+    // Both cores busy with `yes` loops: the stall of each run, the worst counts.
+    const int busyRuns = options.quick ? 1 : 5;
+    std::vector<double> busyStalls;
+    int busyWithin = 0;
+    for (int i = 0; i < busyRuns; ++i) {
+        const UiLoad busy = uiLoad(options, {false, 2});
+        if (!busy.ok)
+            break;
+        busyStalls.push_back(busy.longestStallMs);
+        busyWithin += busy.longestStallMs <= 16 ? 1 : 0;
+    }
+    const bool busyOk = static_cast<int>(busyStalls.size()) == busyRuns;
+    const double busyWorst
+        = busyStalls.empty() ? 0 : *std::max_element(busyStalls.begin(), busyStalls.end());
+    QStringList stallTexts;
+    for (double ms : busyStalls)
+        stallTexts << fmt(ms, 1);
     report.row(QStringLiteral("ui 10k items @10 Hz: UI thread busy"),
                ui.ok ? QStringLiteral("%1 %").arg(fmt(ui.busyShare * 100, 1))
                      : QStringLiteral("failed"),
@@ -262,6 +330,20 @@ void runUiLoad(const Options &options, Report &report)
                {}, QStringLiteral("< 25 %"));
     report.row(QStringLiteral("ui 10k items @10 Hz: longest event-loop stall (ms)"),
                fmt(ui.longestStallMs), {}, {}, QStringLiteral("<= 16 ms"));
+    report.row(QStringLiteral("ui 10k items @10 Hz, filter + sort by value: UI thread busy"),
+               sorted.ok ? QStringLiteral("%1 %").arg(fmt(sorted.busyShare * 100, 1))
+                         : QStringLiteral("failed"),
+               QStringLiteral("plain %1 %").arg(fmt(ui.busyShare * 100, 1)),
+               ui.ok && sorted.ok ? ratioText(sorted.busyShare, ui.busyShare) : QString(),
+               QStringLiteral("< 25 %"));
+    report.row(QStringLiteral("ui 10k items @10 Hz, filter + sort by value: longest stall (ms)"),
+               fmt(sorted.longestStallMs), QStringLiteral("plain %1").arg(fmt(ui.longestStallMs)),
+               {}, QStringLiteral("<= 16 ms"));
+    report.row(QStringLiteral("ui 10k items @10 Hz, 2 cores busy (yes x2): worst stall (ms)"),
+               busyOk ? fmt(busyWorst) : QStringLiteral("failed"),
+               QStringLiteral("runs: %1").arg(stallTexts.join(QStringLiteral(", "))),
+               QStringLiteral("%1 of %2 <= 16").arg(busyWithin).arg(busyRuns),
+               QStringLiteral("<= 16 ms, every run"));
     report.row(QStringLiteral("core memory per watched item (bytes, median)"),
                memory.ok ? fmt(memory.bytesPerItem, 1) : QStringLiteral("failed"),
                QStringLiteral("peak %1").arg(fmt(memory.peakBytesPerItem, 1)), {},
@@ -270,6 +352,10 @@ void runUiLoad(const Options &options, Report &report)
                   ui.ok && ui.busyShare < 0.25);
     report.result(QStringLiteral("ui_longest_stall_ms"), ui.longestStallMs, QStringLiteral("<=16"),
                   ui.ok && ui.longestStallMs <= 16);
+    report.result(QStringLiteral("ui_filter_sort_longest_stall_ms"), sorted.longestStallMs,
+                  QStringLiteral("<=16"), sorted.ok && sorted.longestStallMs <= 16);
+    report.result(QStringLiteral("ui_busy_cores_worst_stall_ms"), busyWorst, QStringLiteral("<=16"),
+                  busyOk && busyWithin == busyRuns);
     report.result(QStringLiteral("core_bytes_per_item"), memory.bytesPerItem,
                   QStringLiteral("<200"), memory.ok && memory.bytesPerItem < 200);
 }
