@@ -56,6 +56,8 @@ void runUiLoad(const Options &options, Report &report);
 void runCodec(const Options &options, Report &report);
 // fatek-gateway: 50 PLCs x 200 items at 1 Hz, 10 x 1000 at 10 Hz (issue 20).
 void runGateway(const Options &options, Report &report);
+// Planning time of a whole FBs snapshot and of the packing watch lists (issue 35).
+void runPlanTime(const Options &options, Report &report);
 
 QString fmt(double value, int decimals = 2);
 QString ratioText(double value, double base);

@@ -5,11 +5,15 @@
 // size formulas.
 #include "bench.h"
 
+#include "core/commission/memorysnapshot.h"
+#include "core/commission/snapshotreader.h"
 #include "core/planner/pollplanner.h"
 #include "core/protocol/binarycodec.h"
 #include "core/protocol/faconcodec.h"
+#include "core/sim/simulatedplc.h"
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 #include <map>
 #include <optional>
@@ -401,7 +405,68 @@ std::vector<Element> smallList(std::mt19937 &rng)
     return v;
 }
 
+// Median wall time of `plan` over `runs` runs, in ms (the first run is a warm-up, not counted).
+template<typename F>
+double medianMs(int runs, F &&plan)
+{
+    plan();
+    std::vector<double> ms;
+    for (int i = 0; i < runs; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        plan();
+        const auto end = std::chrono::steady_clock::now();
+        ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+}
+
 } // namespace
+
+void runPlanTime(const Options &options, Report &report)
+{
+    // The items a default snapshot of the simulator's FBs packs (every element its 53 answer
+    // reports, discretes through their word views): exactly what SnapshotReader plans.
+    const SimulatedPlc plc;
+    const Bytes status = plc.detailStatusBytes();
+    const DetailStatus sizes = DetailStatus::decode(status);
+    const std::vector<AddressRange> ranges = Snapshot::defaultRanges(sizes);
+    const SnapshotReadItems snapshot = SnapshotReader::readItems(ranges, &sizes);
+    const int runs = options.quick ? 5 : 21;
+
+    double worstSnapshot = 0;
+    double worstWatch = 0;
+    for (Protocol protocol : {Protocol::Facon, Protocol::Binary}) {
+        const QString proto = QString::fromUtf8(protocolName(protocol).data());
+        const PollPlanner planner(protocol);
+        std::size_t requests = 0;
+        const double snapshotMs
+            = medianMs(runs, [&] { requests = planner.plan(snapshot.items).requestCount(); });
+        worstSnapshot = std::max(worstSnapshot, snapshotMs);
+        report.row(QStringLiteral("plan time %1: whole FBs snapshot (%2 elements, %3 items), ms")
+                       .arg(proto)
+                       .arg(snapshot.wanted.size())
+                       .arg(snapshot.items.size()),
+                   fmt(snapshotMs, 3), QStringLiteral("%1 requests").arg(requests), {},
+                   QStringLiteral("<= 5 ms"));
+        report.result(QStringLiteral("plan_time_fbs_snapshot_%1_ms").arg(proto.toLower()),
+                      snapshotMs, QStringLiteral("<=5"), snapshotMs <= 5.0);
+
+        for (const NamedList &list : watchLists()) {
+            std::vector<WatchItem> items;
+            for (const Element &e : list.elements)
+                items.push_back({items.size() + 1, e.station, e.address});
+            const double ms
+                = medianMs(runs, [&] { requests = planner.plan(items).requestCount(); });
+            worstWatch = std::max(worstWatch, ms);
+            report.row(QStringLiteral("plan time %1: watch list %2, ms").arg(proto, list.name),
+                       fmt(ms, 3), QStringLiteral("%1 requests").arg(requests), {},
+                       QStringLiteral("<= 5 ms"));
+        }
+    }
+    report.result(QStringLiteral("plan_time_watch_lists_ms"), worstWatch, QStringLiteral("<=5"),
+                  worstWatch <= 5.0);
+}
 
 void runPacking(const Options &options, Report &report)
 {

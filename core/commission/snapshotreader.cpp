@@ -1,11 +1,14 @@
 #include "snapshotreader.h"
 
 #include "commissionmessages.h"
+#include "core/session/crossthreadcall.h"
 #include "core/session/session.h"
 
 #include <QTimer>
 
 #include <algorithm>
+#include <mutex>
+#include <thread>
 
 namespace Fatek {
 
@@ -49,9 +52,34 @@ void addDiscretes(ElementType type, std::uint32_t first, std::uint32_t last, std
 
 } // namespace
 
+// What the planning thread hands back.
+struct SnapshotReader::Planned
+{
+    SnapshotReadItems items;
+    Plan plan;
+};
+
+// The way back from a planning thread. `reader` is cleared, under `mutex`, by the reader's
+// destructor, so a planning thread never reaches a dead reader: it posts while holding `mutex`,
+// and a call posted before the destruction goes with the object (as Session's completions).
+struct SnapshotReader::PlanHandOff
+{
+    std::mutex mutex;
+    SnapshotReader *reader = nullptr;
+};
+
 SnapshotReader::SnapshotReader(QObject *parent)
     : QObject(parent)
-{}
+    , m_handOff(std::make_shared<PlanHandOff>())
+{
+    m_handOff->reader = this;
+}
+
+SnapshotReader::~SnapshotReader()
+{
+    const std::lock_guard locker(m_handOff->mutex);
+    m_handOff->reader = nullptr;
+}
 
 void SnapshotReader::setSession(Session *session)
 {
@@ -98,6 +126,7 @@ void SnapshotReader::start(std::uint8_t station, std::vector<AddressRange> range
         return;
     }
     m_running = true;
+    ++m_job; // a plan of an earlier read that comes now is not this one's
     m_station = station;
     m_ranges = std::move(ranges);
     m_items = {};
@@ -167,11 +196,38 @@ void SnapshotReader::onDetailStatus(const SessionResult &result)
         return fail(makeError(ErrorKind::LimitExceeded,
                               msg<MsgId::SnapshotTooMany>(elements, Snapshot::MaxValues)));
 
-    m_items = readItems(m_ranges, status ? &*status : nullptr);
-    for (WatchItem &item : m_items.items)
-        item.station = m_station;
-    const PollPlanner planner(s ? s->protocol() : Protocol::Facon);
-    m_plan = planner.plan(m_items.items);
+    planInBackground(s ? s->protocol() : Protocol::Facon, std::move(status));
+}
+
+void SnapshotReader::planInBackground(Protocol protocol, std::optional<DetailStatus> sizes)
+{
+    // A thread per snapshot, not the session's worker: the plan would hold up its I/O. Detached:
+    // nobody waits for it, the hand-over drops a result nobody wants any more. The thread's start
+    // orders everything it is given (visible to ThreadSanitizer, unlike a Qt thread pool's queue).
+    std::thread([handOff = m_handOff, job = m_job, ranges = m_ranges, sizes = std::move(sizes),
+                 station = m_station, protocol] {
+        auto planned = std::make_shared<Planned>();
+        planned->items = readItems(ranges, sizes ? &*sizes : nullptr);
+        for (WatchItem &item : planned->items.items)
+            item.station = station;
+        planned->plan = PollPlanner(protocol).plan(planned->items.items);
+        const std::lock_guard locker(handOff->mutex);
+        if (SnapshotReader *reader = handOff->reader) {
+            CrossThreadCall::invoke(reader, [reader, job, planned = std::move(planned)] {
+                reader->onPlanned(job, *planned);
+            });
+        }
+    }).detach();
+}
+
+void SnapshotReader::onPlanned(std::uint64_t job, Planned &planned)
+{
+    if (!m_running || job != m_job)
+        return;
+    if (!m_tracker.session()) // gone while planning: nothing would answer
+        return fail(makeError(ErrorKind::LinkError, msg<MsgId::SnapshotNoSession>()));
+    m_items = std::move(planned.items);
+    m_plan = std::move(planned.plan);
     if (!m_plan.unplannable.empty()) {
         const UnplannableItem &bad = m_plan.unplannable.front();
         const Address a = m_items.items.at(bad.itemId).address;

@@ -6,7 +6,10 @@
 
 #include <QObject>
 
+#include <cstdint>
 #include <map>
+#include <memory>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -25,14 +28,18 @@ struct SnapshotReadItems
 
 // Reads a memory snapshot through a RequestTracker on a Session: the 53 detail status first (the
 // model for the metadata, the memory sizes for the default ranges and the discrete words), then
-// the elements in the fewest requests the poll planner finds. Never blocks; progress() after each
-// answer, finished() once (also after cancel() or a failure).
+// the elements in the fewest requests the poll planner finds. The items are listed and planned on
+// a thread of its own: a whole FBs takes milliseconds in release and far longer under
+// sanitizers, too long for the GUI thread (and the session's I/O thread must not stall either).
+// Never blocks; progress() after each answer, finished() once (also after cancel() or a failure).
 class SnapshotReader : public QObject
 {
     Q_OBJECT
 
 public:
     explicit SnapshotReader(QObject *parent = nullptr);
+    // Does not wait for a plan still being made: its result is dropped.
+    ~SnapshotReader() override;
 
     void setSession(Session *session);
     Session *session() const { return m_tracker.session(); }
@@ -62,13 +69,21 @@ Q_SIGNALS:
     void finished();
 
 private:
+    struct Planned;
+    struct PlanHandOff;
+
     void onDetailStatus(const SessionResult &result);
+    // Lists and plans the items of m_ranges off this thread; onPlanned() takes the result here.
+    void planInBackground(Protocol protocol, std::optional<DetailStatus> sizes);
+    void onPlanned(std::uint64_t job, Planned &planned);
     void submitNext();
     void onStep(std::size_t index, const SessionResult &result);
     void fail(ProtocolError error);
     void complete();
 
     RequestTracker m_tracker;
+    std::shared_ptr<PlanHandOff> m_handOff;
+    std::uint64_t m_job = 0; // the plan a result must belong to (bumped by every start())
     bool m_running = false;
     std::uint8_t m_station = 1;
     std::vector<AddressRange> m_ranges;

@@ -20,7 +20,16 @@
 //   minimises requests + ceil(pool words / 64), then bytes. The pool always packs into exactly
 //   ceil(words / 64) mixed reads because element sizes are 1 or 2 words and 64 is even.
 // Cost order is lexicographic (requests, bytes), which is compatible with addition, so keeping
-// the best pair per DP state is exact.
+// the best pair per DP state is exact. That is Solver::Reference, quadratic in a segment's items
+// (a whole FBs snapshot took 0.2 s). Solver::Fast finds plans of the same cost with less work:
+// - A gap-free segment (every element between its first and last item is an item: a snapshot, a
+//   range in a watch list) needs no search: with j items pooled the other n - j form runs that
+//   bridge nothing, so ceil((n - j) / limit) runs are the optimum for that j (fewest runs is also
+//   fewest bytes, as every item costs the same in a run).
+// - Pooled words count modulo 64 only: 64 more words are one more full list whichever words they
+//   are, so the lists are added to the cost as they fill, and the DP and the knapsack keep 64
+//   word columns instead of one per pooled item or word. ceil() is monotone in the words, so a
+//   state that pools more words (mod 64) at no lower cost than another of the same row is dropped.
 // Not used: reading discretes through their W views (WX0 for X0..X15). A slot carries a whole
 // value (response.values[valueIndex]), not a bit of one, so it would need a contract change.
 
@@ -73,20 +82,35 @@ Request runRead(std::uint8_t station, const Address &start, std::uint32_t count)
                                   : Request::readRegisters(station, start, count);
 }
 
+constexpr std::size_t listWords = Limits::maxMixedReadWords;
+
+// One way to end a segment that the knapsack may choose.
+struct SegmentOption
+{
+    std::size_t words = 0; // pooled (Fast: modulo 64, the full lists are in `cost`)
+    Cost cost;
+    std::uint32_t key = 0; // for reconstruct(): the final column, or the items pooled (gap-free)
+};
+
 // Items of one type and residue (numbers sorted, distinct) that are close enough to share runs.
 struct Segment
 {
     ElementType type = ElementType::R;
     std::vector<std::uint32_t> numbers;
+    // The items follow each other without a gap: Fast solves it without a search.
+    bool gapFree = false;
 
-    // DP results: cost[i * (n + 1) + j] for the first i items with j of them pooled.
+    // The search's tables (empty if there was none): the cost of the first i items, by column,
+    // and the move that got there (-1: item i-1 pooled; k >= 0: items k..i-1 form one run).
+    // Column: Reference, the items pooled; Fast, the pooled words modulo 64.
+    std::size_t columns = 0;
     std::vector<Cost> cost;
-    // -1: item i-1 was pooled; k >= 0: items k..i-1 form one run.
     std::vector<std::int32_t> from;
-    std::vector<std::uint32_t> options; // useful pooled counts j at i = n (not dominated)
+
+    std::vector<SegmentOption> options; // ascending in words, none dominated by an earlier one
 
     std::size_t n() const { return numbers.size(); }
-    std::size_t at(std::size_t i, std::size_t j) const { return i * (n() + 1) + j; }
+    std::size_t at(std::size_t i, std::size_t column) const { return i * columns + column; }
 };
 
 struct StationResult
@@ -98,11 +122,13 @@ struct StationResult
 class StationSolver
 {
 public:
-    explicit StationSolver(Protocol protocol)
+    StationSolver(Protocol protocol, PollPlanner::Solver solver)
         : m_protocol(protocol)
+        , m_fast(solver == PollPlanner::Solver::Fast)
     {
-        m_packOverhead = PollPlanner::queryBytes(Request::mixedRead(1, {}), protocol)
-                         + PollPlanner::responseBytes(Request::mixedRead(1, {}), protocol);
+        const Request empty = Request::mixedRead(1, {});
+        m_list = {1, PollPlanner::queryBytes(empty, protocol)
+                         + PollPlanner::responseBytes(empty, protocol)};
     }
 
     // `blockers`: elements that must not be read by a run bridging a gap (isolated bad elements).
@@ -116,38 +142,42 @@ public:
             forcedWords += static_cast<std::size_t>(a.words());
             forcedBytes += poolItemBytes(a.type);
         }
-        std::size_t totalWords = forcedWords;
-        for (Segment &s : segments) {
+        for (Segment &s : segments)
             solveSegment(s);
-            totalWords += s.n() * static_cast<std::size_t>(wordCount(s.type));
-        }
 
-        // Knapsack over pooled words.
-        std::vector<Cost> best(totalWords + 1, unreachable);
-        best[forcedWords] = {0, forcedBytes};
-        std::size_t reach = forcedWords;
-        std::vector<std::vector<std::uint32_t>> choice(segments.size());
+        // Knapsack over pooled words: best[W] is the cheapest choice for the segments so far that
+        // pools W words. Fast folds the word counts that agree modulo 64 into one state, the full
+        // lists (W / 64) counted in the cost already: a list costs the same whichever words fill
+        // it, so the optimum is the same, with 64 states instead of thousands (a snapshot).
+        std::size_t reach = 0;
+        const Cost start = land(forcedWords, reach) + Cost{0, forcedBytes};
+        std::vector<Cost> best(reach + 1, unreachable);
+        best[reach] = start;
+        std::vector<Cost> next;
+        std::vector<std::vector<std::uint32_t>> choice(segments.size()); // option index
         for (std::size_t si = 0; si < segments.size(); ++si) {
             const Segment &s = segments[si];
-            const std::size_t w = static_cast<std::size_t>(wordCount(s.type));
-            std::vector<Cost> next(totalWords + 1, unreachable);
+            const std::size_t bound = m_fast ? listWords - 1 : reach + s.options.back().words;
+            next.assign(bound + 1, unreachable);
             std::vector<std::uint32_t> &pick = choice[si];
-            pick.assign(totalWords + 1, 0);
+            pick.assign(bound + 1, 0);
             std::size_t nextReach = 0;
             for (std::size_t W = 0; W <= reach; ++W) {
                 if (!isReachable(best[W]))
                     continue;
-                for (std::uint32_t j : s.options) {
-                    const std::size_t to = W + j * w;
-                    const Cost c = best[W] + s.cost[s.at(s.n(), j)];
+                for (std::size_t k = 0; k < s.options.size(); ++k) {
+                    const SegmentOption &o = s.options[k];
+                    std::size_t to = 0;
+                    const Cost lists = land(W + o.words, to);
+                    const Cost c = best[W] + o.cost + lists;
                     if (c < next[to]) {
                         next[to] = c;
-                        pick[to] = j;
+                        pick[to] = static_cast<std::uint32_t>(k);
                         nextReach = std::max(nextReach, to);
                     }
                 }
             }
-            best = std::move(next);
+            best.swap(next);
             reach = nextReach;
         }
 
@@ -156,10 +186,9 @@ public:
         for (std::size_t W = 0; W <= reach; ++W) {
             if (!isReachable(best[W]))
                 continue;
-            const std::size_t packs
-                = (W + Limits::maxMixedReadWords - 1) / Limits::maxMixedReadWords;
+            const std::size_t packs = (W + listWords - 1) / listWords;
             const Cost total
-                = best[W] + Cost{static_cast<std::uint32_t>(packs), packs * m_packOverhead};
+                = best[W] + Cost{static_cast<std::uint32_t>(packs), packs * m_list.bytes};
             if (total < bestTotal) {
                 bestTotal = total;
                 bestWords = W;
@@ -169,14 +198,22 @@ public:
         std::size_t W = bestWords;
         for (std::size_t si = segments.size(); si-- > 0;) {
             const Segment &s = segments[si];
-            const std::uint32_t j = choice[si][W];
-            W -= j * static_cast<std::size_t>(wordCount(s.type));
-            reconstruct(s, j, result);
+            const SegmentOption &o = s.options[choice[si][W]];
+            W = m_fast ? (W + listWords - o.words) % listWords : W - o.words;
+            reconstruct(s, o.key, result);
         }
         return result;
     }
 
 private:
+    // The state `words` pooled words land in, and the cost of the full lists Fast folds away.
+    Cost land(std::size_t words, std::size_t &state) const
+    {
+        state = m_fast ? words % listWords : words;
+        const std::size_t lists = m_fast ? words / listWords : 0;
+        return Cost{static_cast<std::uint32_t>(lists), lists * m_list.bytes};
+    }
+
     std::size_t poolItemBytes(ElementType type) const
     {
         return addressBytes(Address{type, 0}, m_protocol) + valueBytes(type, m_protocol);
@@ -186,6 +223,11 @@ private:
     {
         const Request r = runRead(1, Address{type, 0}, span);
         return PollPlanner::queryBytes(r, m_protocol) + PollPlanner::responseBytes(r, m_protocol);
+    }
+
+    std::size_t runFixedBytes(ElementType type) const
+    {
+        return runBytes(type, 1) - valueBytes(type, m_protocol);
     }
 
     std::vector<Segment> buildSegments(const std::vector<Address> &addresses,
@@ -209,7 +251,12 @@ private:
                     // one request and never more bytes.
                     result.pooled.push_back(Address{type, current.front()});
                 } else if (!current.empty()) {
-                    segments.push_back(Segment{type, current, {}, {}, {}});
+                    Segment segment;
+                    segment.type = type;
+                    segment.numbers = current;
+                    segment.gapFree = current.back() - current.front()
+                                      == (current.size() - 1) * std::size_t{step};
+                    segments.push_back(std::move(segment));
                 }
                 current.clear();
             };
@@ -236,68 +283,136 @@ private:
 
     void solveSegment(Segment &s) const
     {
+        const std::vector<SegmentOption> ends = m_fast && s.gapFree ? gapFreeEnds(s) : search(s);
+        // Pooling more words only helps if it saves requests or bytes.
+        s.options.clear();
+        for (const SegmentOption &e : ends) {
+            const bool dominated
+                = std::any_of(s.options.begin(), s.options.end(), [&e](const SegmentOption &o) {
+                      return o.cost.requests <= e.cost.requests && o.cost.bytes <= e.cost.bytes;
+                  });
+            if (!dominated)
+                s.options.push_back(e);
+        }
+    }
+
+    // With j items pooled, the other n - j items go in the fewest full runs (see the top); the
+    // cheapest j for each number of pooled words modulo 64.
+    std::vector<SegmentOption> gapFreeEnds(const Segment &s) const
+    {
+        const std::size_t n = s.n();
+        const std::size_t w = static_cast<std::size_t>(wordCount(s.type));
+        const std::size_t limit = maxRunElements(s.type);
+        const std::size_t pooledBytes = poolItemBytes(s.type);
+        const std::size_t runFixed = runFixedBytes(s.type);
+        const std::size_t perValue = valueBytes(s.type, m_protocol);
+        std::vector<SegmentOption> byWords(listWords, SegmentOption{0, unreachable, 0});
+        for (std::size_t j = 0; j <= n; ++j) {
+            const std::size_t inRuns = n - j;
+            const std::size_t runs = (inRuns + limit - 1) / limit;
+            std::size_t words = 0;
+            const Cost c = Cost{static_cast<std::uint32_t>(runs),
+                                runs * runFixed + inRuns * perValue + j * pooledBytes}
+                           + land(j * w, words);
+            if (c < byWords[words].cost)
+                byWords[words] = {words, c, static_cast<std::uint32_t>(j)};
+        }
+        std::vector<SegmentOption> ends;
+        for (const SegmentOption &e : byWords) {
+            if (isReachable(e.cost))
+                ends.push_back(e);
+        }
+        return ends;
+    }
+
+    // Dynamic programming over (items done, column), see the top. Fast also drops, row by row,
+    // states that pool more words and cost no less than one that pools fewer: the same moves after
+    // the other one cost no more and end with fewer words, which never costs more lists; so no
+    // optimum is lost, only states (few per row are left).
+    std::vector<SegmentOption> search(Segment &s) const
+    {
         const std::size_t n = s.n();
         const std::uint32_t step = elementInfo(s.type).step;
         const std::uint32_t limit = maxRunElements(s.type);
-        const std::size_t pooledBytes = poolItemBytes(s.type);
-        const std::size_t runFixed = runBytes(s.type, 1) - valueBytes(s.type, m_protocol);
+        const std::size_t w = static_cast<std::size_t>(wordCount(s.type));
+        const Cost pooledCost{0, poolItemBytes(s.type)};
+        const std::size_t runFixed = runFixedBytes(s.type);
         const std::size_t perValue = valueBytes(s.type, m_protocol);
 
-        s.cost.assign((n + 1) * (n + 1), unreachable);
-        s.from.assign((n + 1) * (n + 1), -1);
+        // Fast: fewer columns when the segment cannot pool 64 words (nothing folds then).
+        s.columns = m_fast ? std::min(listWords, n * w + 1) : n + 1;
+        s.cost.assign((n + 1) * s.columns, unreachable);
+        s.from.assign((n + 1) * s.columns, -1);
         s.cost[s.at(0, 0)] = {0, 0};
+        std::vector<Cost> kept; // the states of row i expanded so far
         for (std::size_t i = 0; i < n; ++i) {
-            for (std::size_t j = 0; j <= i; ++j) {
-                const Cost here = s.cost[s.at(i, j)];
+            kept.clear();
+            for (std::size_t c = 0; c < s.columns; ++c) {
+                const Cost here = s.cost[s.at(i, c)];
                 if (!isReachable(here))
                     continue;
-                const Cost pooled = here + Cost{0, pooledBytes};
-                if (pooled < s.cost[s.at(i + 1, j + 1)]) {
-                    s.cost[s.at(i + 1, j + 1)] = pooled;
-                    s.from[s.at(i + 1, j + 1)] = -1;
+                if (m_fast) {
+                    const bool dominated
+                        = std::any_of(kept.begin(), kept.end(), [&here](const Cost &k) {
+                              return k.requests <= here.requests && k.bytes <= here.bytes;
+                          });
+                    if (dominated)
+                        continue;
+                    kept.push_back(here);
+                }
+                std::size_t to = c + 1;
+                Cost pooled = here + pooledCost;
+                if (m_fast)
+                    pooled = pooled + land(c + w, to);
+                if (pooled < s.cost[s.at(i + 1, to)]) {
+                    s.cost[s.at(i + 1, to)] = pooled;
+                    s.from[s.at(i + 1, to)] = -1;
                 }
                 for (std::size_t m = i + 1; m <= n; ++m) {
                     const std::uint32_t span = (s.numbers[m - 1] - s.numbers[i]) / step + 1;
                     if (span > limit)
                         break;
                     const Cost run = here + Cost{1, runFixed + span * perValue};
-                    if (run < s.cost[s.at(m, j)]) {
-                        s.cost[s.at(m, j)] = run;
-                        s.from[s.at(m, j)] = static_cast<std::int32_t>(i);
+                    if (run < s.cost[s.at(m, c)]) {
+                        s.cost[s.at(m, c)] = run;
+                        s.from[s.at(m, c)] = static_cast<std::int32_t>(i);
                     }
                 }
             }
         }
-        // Pooling more items only helps if it saves requests or bytes.
-        s.options.clear();
-        for (std::size_t j = 0; j <= n; ++j) {
-            const Cost c = s.cost[s.at(n, j)];
-            if (!isReachable(c))
-                continue;
-            bool dominated = false;
-            for (std::uint32_t k : s.options) {
-                const Cost o = s.cost[s.at(n, k)];
-                if (o.requests <= c.requests && o.bytes <= c.bytes) {
-                    dominated = true;
-                    break;
-                }
-            }
-            if (!dominated)
-                s.options.push_back(static_cast<std::uint32_t>(j));
+        std::vector<SegmentOption> ends;
+        for (std::size_t c = 0; c < s.columns; ++c) {
+            const Cost end = s.cost[s.at(n, c)];
+            if (isReachable(end))
+                ends.push_back({m_fast ? c : c * w, end, static_cast<std::uint32_t>(c)});
         }
+        return ends;
     }
 
-    void reconstruct(const Segment &s, std::uint32_t pooledCount, StationResult &result) const
+    void reconstruct(const Segment &s, std::uint32_t key, StationResult &result) const
     {
         const std::uint32_t step = elementInfo(s.type).step;
+        if (s.cost.empty()) {
+            // Gap-free, `key` items pooled: full runs from the front, the last items to the pool.
+            const std::size_t inRuns = s.n() - key;
+            const std::size_t limit = maxRunElements(s.type);
+            for (std::size_t k = 0; k < inRuns; k += limit) {
+                const auto count = static_cast<std::uint32_t>(std::min(limit, inRuns - k));
+                result.runs.emplace_back(Address{s.type, s.numbers[k]}, count);
+            }
+            for (std::size_t k = inRuns; k < s.n(); ++k)
+                result.pooled.push_back(Address{s.type, s.numbers[k]});
+            return;
+        }
+        const std::size_t w = static_cast<std::size_t>(wordCount(s.type));
         std::size_t i = s.n();
-        std::size_t j = pooledCount;
+        std::size_t c = key;
         while (i > 0) {
-            const std::int32_t f = s.from[s.at(i, j)];
+            const std::int32_t f = s.from[s.at(i, c)];
             if (f < 0) {
                 result.pooled.push_back(Address{s.type, s.numbers[i - 1]});
                 --i;
-                --j;
+                c = m_fast ? (c + listWords - w) % listWords : c - 1;
             } else {
                 const auto k = static_cast<std::size_t>(f);
                 const std::uint32_t span = (s.numbers[i - 1] - s.numbers[k]) / step + 1;
@@ -308,7 +423,8 @@ private:
     }
 
     Protocol m_protocol;
-    std::size_t m_packOverhead = 0;
+    bool m_fast = true;
+    Cost m_list; // one 48 list: a request and its frames
 };
 
 // Packs pooled elements into ceil(words / 64) lists: 32-bit elements first (they fill a list to
@@ -349,8 +465,9 @@ Address firstAddress(const Request &r)
 
 } // namespace
 
-PollPlanner::PollPlanner(Protocol protocol)
+PollPlanner::PollPlanner(Protocol protocol, Solver solver)
     : m_protocol(protocol)
+    , m_solver(solver)
 {}
 
 PlanStep PollPlanner::makeStep(Request request, std::vector<PlanSlot> itemSlots) const
@@ -371,8 +488,15 @@ Plan PollPlanner::plan(std::span<const WatchItem> items,
                        const std::set<StationAddress> &isolated) const
 {
     Plan result;
-    // station -> address -> ids (input order)
-    std::map<std::uint8_t, std::map<Address, std::vector<std::uint64_t>>> stations;
+    // The plannable items by station and address; a duplicate's ids stay in input order. A sorted
+    // vector, not maps: a snapshot has thousands of items.
+    struct Entry
+    {
+        StationAddress element;
+        std::uint64_t id = 0;
+    };
+    std::vector<Entry> entries;
+    entries.reserve(items.size());
     for (const WatchItem &item : items) {
         if (item.station == Limits::broadcastStation) {
             result.unplannable.push_back(
@@ -383,21 +507,26 @@ Plan PollPlanner::plan(std::span<const WatchItem> items,
             result.unplannable.push_back({item.id, s.error().message});
             continue;
         }
-        stations[item.station][item.address].push_back(item.id);
+        entries.push_back({{item.station, item.address}, item.id});
     }
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const Entry &a, const Entry &b) { return a.element < b.element; });
 
-    StationSolver solver(m_protocol);
-    for (const auto &stationEntry : stations) {
-        // Named references, not a structured binding: clang before 16 cannot capture a binding.
-        const std::uint8_t station = stationEntry.first;
-        const auto &elements = stationEntry.second;
+    StationSolver solver(m_protocol, m_solver);
+    for (auto first = entries.cbegin(); first != entries.cend();) {
+        const std::uint8_t station = first->element.station;
+        const auto last = std::find_if(first, entries.cend(), [station](const Entry &e) {
+            return e.element.station != station;
+        });
+        const std::span<const Entry> elements(first, last);
+        first = last;
         auto slotsFor
-            = [&elements](const Address &a, std::uint32_t valueIndex, std::vector<PlanSlot> &out) {
-                  const auto it = elements.find(a);
-                  if (it == elements.end())
-                      return;
-                  for (std::uint64_t id : it->second)
-                      out.push_back({id, valueIndex});
+            = [elements](const Address &a, std::uint32_t valueIndex, std::vector<PlanSlot> &out) {
+                  auto it = std::lower_bound(
+                      elements.begin(), elements.end(), a,
+                      [](const Entry &e, const Address &x) { return e.element.address < x; });
+                  for (; it != elements.end() && it->element.address == a; ++it)
+                      out.push_back({it->id, valueIndex});
               };
 
         std::vector<Address> batchable;
@@ -407,13 +536,16 @@ Plan PollPlanner::plan(std::span<const WatchItem> items,
                 blockers.insert(bad.address);
         }
         std::vector<PlanStep> steps;
-        for (const auto &entry : elements) {
-            if (blockers.count(entry.first)) {
+        for (std::size_t k = 0; k < elements.size(); ++k) {
+            const Address &a = elements[k].element.address;
+            if (k > 0 && elements[k - 1].element.address == a)
+                continue; // a duplicate: read once
+            if (blockers.count(a)) {
                 std::vector<PlanSlot> itemSlots;
-                slotsFor(entry.first, 0, itemSlots);
-                steps.push_back(makeStep(singleRead(station, entry.first), std::move(itemSlots)));
+                slotsFor(a, 0, itemSlots);
+                steps.push_back(makeStep(singleRead(station, a), std::move(itemSlots)));
             } else {
-                batchable.push_back(entry.first);
+                batchable.push_back(a);
             }
         }
 

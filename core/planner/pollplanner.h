@@ -55,7 +55,13 @@ struct Plan
 class PollPlanner
 {
 public:
-    explicit PollPlanner(Protocol protocol);
+    // How the optimum is found. Reference: the plain search (quadratic in the items of a stretch).
+    // Fast: the known optimum where no search is needed (gap-free stretches, such as a memory
+    // snapshot), and a smaller search elsewhere (see pollplanner.cpp). Both give plans of the same
+    // requests and bytes; tests compare them.
+    enum class Solver { Fast, Reference };
+
+    explicit PollPlanner(Protocol protocol, Solver solver = Solver::Fast);
 
     Protocol protocol() const { return m_protocol; }
 
@@ -81,6 +87,7 @@ private:
     PlanStep makeStep(Request request, std::vector<PlanSlot> itemSlots) const;
 
     Protocol m_protocol;
+    Solver m_solver;
 };
 
 } // namespace Fatek

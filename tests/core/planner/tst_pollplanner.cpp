@@ -186,6 +186,7 @@ private Q_SLOTS: // QT_NO_KEYWORDS: PlanStep has a member named "slots"
     void randomSmallListsAreOptimal_data();
     void randomSmallListsAreOptimal();
     void largeListsStayValid();
+    void fastSolverMatchesReference();
     void splitIsolatesInLog2Rounds_data();
     void splitIsolatesInLog2Rounds();
     void splitSingleItemGivesNothing();
@@ -612,6 +613,70 @@ void TestPollPlanner::largeListsStayValid()
         }
         QVERIFY(plan.requestCount() <= packBound);
     }
+}
+
+// The fast solver (no search over gap-free stretches) plans the same requests and bytes as the
+// full search, on random lists of ranges (gap-free stretches, some longer than a segment) mixed
+// with scattered items, several stations, isolated elements.
+void TestPollPlanner::fastSolverMatchesReference()
+{
+    std::mt19937 rng(35u);
+    auto below = [&rng](std::uint32_t n) {
+        return static_cast<std::uint32_t>(rng() % n);
+    };
+    int lists = 0;
+    for (Protocol p : {Protocol::Facon, Protocol::Binary}) {
+        std::vector<ElementType> types;
+        for (const ElementInfo &info : allElements()) {
+            if (p == Protocol::Binary || info.faconDigits != 0)
+                types.push_back(info.type);
+        }
+        const PollPlanner fast(p);
+        const PollPlanner reference(p, PollPlanner::Solver::Reference);
+        for (int round = 0; round < 60; ++round) {
+            std::vector<WatchItem> items;
+            auto add = [&](std::uint8_t station, ElementType type, std::uint32_t number) {
+                if (number <= elementInfo(type).maxNumber)
+                    items.push_back({items.size() + 1, station, Address{type, number}});
+            };
+            const std::uint8_t stations = round % 3 == 0 ? 2 : 1;
+            const bool scattered = round % 2 == 1;
+            for (std::uint32_t r = 1 + below(4); r > 0; --r) {
+                const ElementType type = types[below(static_cast<std::uint32_t>(types.size()))];
+                const ElementInfo &info = elementInfo(type);
+                // A few ranges span more than one 512-item segment; the search is slow on those.
+                const std::uint32_t length
+                    = round % 20 == 0 && r == 1 ? 500 + below(700) : 2 + below(200);
+                const std::uint32_t start = below(600) / info.alignment * info.alignment;
+                const auto station = static_cast<std::uint8_t>(1 + below(stations));
+                for (std::uint32_t k = 0; k < length; ++k)
+                    add(station, type, start + k * info.step);
+                // Items near and inside the range: gaps to bridge or not, duplicates.
+                for (std::uint32_t k = scattered ? below(40) : 0; k > 0; --k) {
+                    const std::uint32_t offset = below(length + 300);
+                    add(station, type, start + offset * info.step);
+                }
+            }
+            std::set<StationAddress> isolated;
+            if (round % 4 == 3) {
+                for (int k = 0; k < 3; ++k) {
+                    const WatchItem &item = items[below(static_cast<std::uint32_t>(items.size()))];
+                    isolated.insert({item.station, item.address});
+                }
+            }
+            const Plan quick = fast.plan(items, isolated);
+            const Plan searched = reference.plan(items, isolated);
+            checkPlanConsistent(quick, items, p);
+            QVERIFY(quick.unplannable.empty());
+            const QByteArray what
+                = QByteArray(protocolName(p).data()) + " list " + QByteArray::number(round) + ", "
+                  + QByteArray::number(static_cast<qulonglong>(items.size())) + " items";
+            QVERIFY2(quick.requestCount() == searched.requestCount(), what.constData());
+            QVERIFY2(quick.wireBytes == searched.wireBytes, what.constData());
+            ++lists;
+        }
+    }
+    QCOMPARE(lists, 120);
 }
 
 void TestPollPlanner::splitIsolatesInLog2Rounds_data()
