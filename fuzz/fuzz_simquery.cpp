@@ -15,8 +15,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
 {
     if (size == 0)
         return 0;
-    // One PLC for the whole run (its memory is large); cleared so each input starts alike. The
-    // first byte picks the model, so memory limits of each profile are explored.
+    // One PLC for the whole run (its memory is large); cleared so each input starts alike (clear()
+    // only undoes what the previous input wrote: the per-input cost stays small). The first byte
+    // picks the model, so memory limits of each profile are explored.
     static SimulatedPlc fbs(ModelProfile::fbs());
     static SimulatedPlc mSeries(ModelProfile::mSeries());
     SimulatedPlc &plc = (data[0] & 1) ? mSeries : fbs;

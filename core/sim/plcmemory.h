@@ -37,7 +37,8 @@ public:
     bool isDisabled(ElementType type, std::uint32_t number) const;
     void setDisabled(ElementType type, std::uint32_t number, bool disabled);
 
-    // Every value and flag back to 0.
+    // Every value and flag back to 0. Only the kinds written since the last clear() are zeroed
+    // (the fuzzer clears a PLC for every input; M-series memory is about half a megabyte).
     void clear();
 
 private:
@@ -54,6 +55,9 @@ private:
     ModelProfile m_profile;
     std::array<std::vector<std::uint8_t>, 6> m_discretes;  // X Y M S T C
     std::array<std::vector<std::uint16_t>, 5> m_registers; // RT RC R D F
+    // Whether a kind may hold a non-zero value or flag: set by every mutable access.
+    std::array<bool, 6> m_discretesDirty{};
+    std::array<bool, 5> m_registersDirty{};
 };
 
 } // namespace Fatek

@@ -42,7 +42,8 @@ bool inProtocol(const Address &a, Protocol protocol)
 
 SimulatedPlc::SimulatedPlc(const ModelProfile &profile)
     : m_memory(profile)
-    , m_program(profile.powerOnProgram())
+    , m_powerOnProgram(profile.powerOnProgram())
+    , m_program(m_powerOnProgram)
     , m_running(true) // a PLC holding a program powers up in RUN
 {}
 
@@ -166,6 +167,7 @@ bool SimulatedPlc::setProgramPage(std::uint16_t page, const std::vector<std::uin
         return false;
     for (std::size_t i = 0; i < words.size(); ++i)
         m_program[first + i] = static_cast<std::uint16_t>(words[i] & 0xFFFFu);
+    m_programChanged = true;
     return true;
 }
 
@@ -175,6 +177,7 @@ bool SimulatedPlc::setProgram(const std::vector<std::uint16_t> &words)
     if (words.size() != m_program.size())
         return false;
     m_program = words;
+    m_programChanged = true;
     return true;
 }
 
@@ -182,7 +185,9 @@ void SimulatedPlc::clear()
 {
     const std::lock_guard lock(m_mutex);
     m_memory.clear();
-    m_program = m_memory.profile().powerOnProgram();
+    if (m_programChanged)
+        m_program = m_powerOnProgram; // same size: copies in place, allocates nothing
+    m_programChanged = false;
     m_scans = 0;
 }
 
@@ -361,6 +366,7 @@ Response SimulatedPlc::executeLocked(const Request &r, Protocol protocol)
         }
         for (std::size_t i = 0; i < Limits::programPageWords; ++i)
             m_program[first + i] = static_cast<std::uint16_t>(r.values[i]);
+        m_programChanged = true;
         return resp;
     }
     }

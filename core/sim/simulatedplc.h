@@ -63,7 +63,11 @@ private:
 
     mutable std::mutex m_mutex;
     PlcMemory m_memory;
+    // The profile's program memory at power-on, built once: clear() copies it back only when the
+    // program was written since (the fuzzer clears a PLC for every input).
+    std::vector<std::uint16_t> m_powerOnProgram;
     std::vector<std::uint16_t> m_program;
+    bool m_programChanged = false;
     PlcStatus m_flags;
     bool m_running = false;
     std::uint8_t m_runRefusal = 0;

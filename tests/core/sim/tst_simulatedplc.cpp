@@ -6,6 +6,8 @@
 
 #include <QTest>
 
+#include <array>
+
 using namespace Fatek;
 
 Q_DECLARE_METATYPE(Fatek::Request)
@@ -51,6 +53,8 @@ private slots:
     void programPages();
     void loopback();
     void mixedReadWrite();
+    void clearBackToPowerOn_data();
+    void clearBackToPowerOn();
 };
 
 void TestSimulatedPlc::profiles_data()
@@ -505,6 +509,88 @@ void TestSimulatedPlc::mixedReadWrite()
     QCOMPARE(
         plc.execute(Request::mixedRead(S, std::vector<Address>(32, addr("DR0")))).values.size(),
         std::size_t{32});
+}
+
+void TestSimulatedPlc::clearBackToPowerOn_data()
+{
+    QTest::addColumn<QString>("profile");
+    QTest::newRow("fbs") << "fbs";
+    QTest::newRow("m") << "m";
+}
+
+// clear() (the fuzzer calls it before every input) zeroes only the kinds written since the last
+// clear() and copies the program back only when it was written: after any mix of writes, every
+// element, flag and program word must read as on a PLC just powered on, the second time too.
+void TestSimulatedPlc::clearBackToPowerOn()
+{
+    QFETCH(QString, profile);
+    const ModelProfile p = *ModelProfile::byName(profile.toStdString());
+    const SimulatedPlc fresh(p);
+    SimulatedPlc plc(p);
+    constexpr std::array<ElementType, 6> discretes
+        = {ElementType::X, ElementType::Y, ElementType::M,
+           ElementType::S, ElementType::T, ElementType::C};
+    constexpr std::array<ElementType, 5> registers
+        = {ElementType::RT, ElementType::RC, ElementType::R, ElementType::D, ElementType::F};
+    auto samePowerOn = [&] {
+        for (ElementType t : discretes) {
+            for (std::uint32_t n = 0; n < p.size(t); ++n) {
+                const Address a{t, n};
+                if (plc.value(a) != std::optional<std::uint32_t>{0}
+                    || plc.isDisabled(a) != std::optional<bool>{false})
+                    return false;
+            }
+        }
+        for (ElementType t : registers) {
+            for (std::uint32_t n = 0; n < p.size(t); ++n) {
+                if (plc.value(Address{t, n}) != std::optional<std::uint32_t>{0})
+                    return false;
+            }
+        }
+        for (std::uint16_t page = 0; page < p.programPages(); ++page) {
+            if (plc.programPage(page) != fresh.programPage(page))
+                return false;
+        }
+        return plc.scanCount() == 0;
+    };
+    QVERIFY(samePowerOn());
+
+    // Every kind at both ends, flags, the ladder, a program page by 50 and one set directly.
+    for (ElementType t : discretes) {
+        QVERIFY(plc.setValue(Address{t, 0}, 1));
+        QVERIFY(plc.setValue(Address{t, p.size(t) - 1}, 1));
+        QVERIFY(plc.setDisabled(Address{t, p.size(t) - 1}, true));
+    }
+    for (ElementType t : registers) {
+        if (p.size(t) == 0)
+            continue;
+        QVERIFY(plc.setValue(Address{t, 0}, 0xFFFF));
+        QVERIFY(plc.setValue(Address{t, p.size(t) - 1}, 0x1234));
+    }
+    plc.scan(123);
+    plc.setRunning(false);
+    QCOMPARE(
+        plc.execute(Request::writeProgram(S, 1, std::vector<std::uint32_t>(64, 0xABCD))).errorCode,
+        std::uint8_t{0});
+    QVERIFY(plc.setProgramPage(2, std::vector<std::uint32_t>(64, 0x5555)));
+    QVERIFY(!samePowerOn());
+    plc.clear();
+    QVERIFY(samePowerOn());
+    QVERIFY(!plc.isRunning()); // STOP stays as it is
+
+    // Written again after a clear(): the next clear() must zero it again.
+    QVERIFY(plc.setValue(addr("DR100"), 0xDEADBEEF));
+    QVERIFY(plc.setValue(addr("WY16"), 0x8001));
+    QVERIFY(plc.setDisabled(addr("M7"), true));
+    QCOMPARE(plc.execute(Request::discreteControl(S, DiscreteOp::Set, addr("S3"))).errorCode,
+             std::uint8_t{0});
+    std::vector<std::uint16_t> program(std::size_t{p.programPages()} * 64, 0x7777);
+    QVERIFY(plc.setProgram(program));
+    QVERIFY(!samePowerOn());
+    plc.clear();
+    QVERIFY(samePowerOn());
+    plc.clear(); // nothing written: still power-on
+    QVERIFY(samePowerOn());
 }
 
 QTEST_APPLESS_MAIN(TestSimulatedPlc)
