@@ -33,6 +33,28 @@ void StationStatistics::addRoundTrip(double ms)
     rttP99Ms = rank(0.99);
 }
 
+void StationStatistics::assignFigures(const StationStatistics &other)
+{
+    // Every public field (as operator== lists them, plus the percentiles).
+    requests = other.requests;
+    answers = other.answers;
+    timeouts = other.timeouts;
+    checksumErrors = other.checksumErrors;
+    plcErrors = other.plcErrors;
+    frameErrors = other.frameErrors;
+    retries = other.retries;
+    unanswered = other.unanswered;
+    demoted = other.demoted;
+    nextTry = other.nextTry;
+    demotions = other.demotions;
+    bytesOut = other.bytesOut;
+    bytesIn = other.bytesIn;
+    rttLastMs = other.rttLastMs;
+    rttMeanMs = other.rttMeanMs;
+    rttP50Ms = other.rttP50Ms;
+    rttP99Ms = other.rttP99Ms;
+}
+
 bool StationStatistics::operator==(const StationStatistics &other) const
 {
     return requests == other.requests && answers == other.answers && timeouts == other.timeouts
@@ -41,6 +63,22 @@ bool StationStatistics::operator==(const StationStatistics &other) const
            && unanswered == other.unanswered && demoted == other.demoted && nextTry == other.nextTry
            && demotions == other.demotions && bytesOut == other.bytesOut && bytesIn == other.bytesIn
            && rttLastMs == other.rttLastMs && rttMeanMs == other.rttMeanMs;
+}
+
+void SessionStatistics::assignFigures(const SessionStatistics &other)
+{
+    total.assignFigures(other.total);
+    bool sameStations = stations.size() == other.stations.size();
+    for (auto it = other.stations.cbegin(); sameStations && it != other.stations.cend(); ++it)
+        sameStations = stations.contains(it.key());
+    if (!sameStations)
+        stations.clear(); // a reset (the worker's map only grows otherwise)
+    for (auto it = other.stations.cbegin(); it != other.stations.cend(); ++it)
+        stations[it.key()].assignFigures(it.value());
+    pollCycles = other.pollCycles;
+    lastCycleMs = other.lastCycleMs;
+    bytesDiscarded = other.bytesDiscarded;
+    linkLosses = other.linkLosses;
 }
 
 } // namespace Fatek
