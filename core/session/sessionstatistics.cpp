@@ -68,13 +68,12 @@ bool StationStatistics::operator==(const StationStatistics &other) const
 void SessionStatistics::assignFigures(const SessionStatistics &other)
 {
     total.assignFigures(other.total);
-    bool sameStations = stations.size() == other.stations.size();
-    for (auto it = other.stations.cbegin(); sameStations && it != other.stations.cend(); ++it)
-        sameStations = stations.contains(it.key());
-    if (!sameStations)
-        stations.clear(); // a reset (the worker's map only grows otherwise)
+    // A new map, not `stations` changed in place: a copy handed out by Session::statistics()
+    // may still share it (Qt's implicit sharing), on another thread.
+    QMap<quint8, StationStatistics> figures;
     for (auto it = other.stations.cbegin(); it != other.stations.cend(); ++it)
-        stations[it.key()].assignFigures(it.value());
+        figures[it.key()].assignFigures(it.value());
+    stations = std::move(figures);
     pollCycles = other.pollCycles;
     lastCycleMs = other.lastCycleMs;
     bytesDiscarded = other.bytesDiscarded;

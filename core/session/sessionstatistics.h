@@ -61,9 +61,8 @@ struct SessionStatistics
     quint64 bytesDiscarded = 0; // stale or unexpected bytes thrown away (noise included)
     quint64 linkLosses = 0;     // times an open link failed (peer closed, cable pulled ...)
 
-    // StationStatistics::assignFigures for the total and every station. The station map is
-    // updated in place, never shared with `other`'s: a shared QMap would be copied whole, windows
-    // and all, at `other`'s next count.
+    // StationStatistics::assignFigures for the total and every station, in a station map of its
+    // own: sharing `other`'s QMap would make `other`'s next count copy it whole, windows and all.
     void assignFigures(const SessionStatistics &other);
 };
 
