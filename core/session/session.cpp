@@ -1,6 +1,7 @@
 #include "session.h"
 
 #include "crossthreadcall.h"
+#include "crossthreadqueue.h"
 #include "sessionworker.h"
 
 #include <QDeadlineTimer>
@@ -71,6 +72,7 @@ Session::Session(const LinkSettings &settings, QObject *parent)
     , m_shared(std::make_shared<SessionShared>())
     , m_log(new TrafficLog(TrafficLog::idleCapacity, this))
     , m_completions(std::make_unique<SessionCompletions>())
+    , m_inbox(std::make_unique<CrossThreadQueue>(this))
 {
     registerSessionMetaTypes();
     m_thread.setObjectName(QStringLiteral("session %1").arg(settings.toString()));
@@ -79,12 +81,13 @@ Session::Session(const LinkSettings &settings, QObject *parent)
     // The worker (and its sockets) is destroyed in its own thread when the thread ends.
     connect(&m_thread, &QThread::started, m_worker, &SessionWorker::startTimers);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
-    // The worker's signals are relayed to this object's thread through CrossThreadCall (a queued
-    // call ThreadSanitizer can follow), then emitted from here.
+    // The worker's signals are relayed to this object's thread through a CrossThreadQueue (one
+    // event for all that came meanwhile, in order; a hand-over ThreadSanitizer can follow), then
+    // emitted from here.
     connect(
         m_worker, &SessionWorker::finished, m_worker,
         [this](quint64 id, const SessionResult &result) {
-            CrossThreadCall::post(this, [this, id, result] {
+            m_inbox->post([this, id, result] {
                 // A receiver of finished() may delete this session: its completions go with it.
                 const QPointer<Session> self(this);
                 Q_EMIT finished(id, result);
@@ -96,27 +99,25 @@ Session::Session(const LinkSettings &settings, QObject *parent)
     connect(
         m_worker, &SessionWorker::linkStateChanged, m_worker,
         [this](LinkState state, const Message &reason) {
-            CrossThreadCall::post(
-                this, [this, state, reason] { Q_EMIT linkStateChanged(state, reason); });
+            m_inbox->post([this, state, reason] { Q_EMIT linkStateChanged(state, reason); });
         },
         Qt::DirectConnection);
     connect(
         m_worker, &SessionWorker::statisticsChanged, m_worker,
         [this](const SessionStatistics &statistics) {
-            CrossThreadCall::post(this,
-                                  [this, statistics] { Q_EMIT statisticsChanged(statistics); });
+            m_inbox->post([this, statistics] { Q_EMIT statisticsChanged(statistics); });
         },
         Qt::DirectConnection);
     connect(
         m_worker, &SessionWorker::protocolDetected, m_worker,
         [this](Protocol protocol) {
-            CrossThreadCall::post(this, [this, protocol] { Q_EMIT protocolDetected(protocol); });
+            m_inbox->post([this, protocol] { Q_EMIT protocolDetected(protocol); });
         },
         Qt::DirectConnection);
     connect(
         m_worker, &SessionWorker::values, m_worker,
         [this](const QList<WatchValue> &batch) {
-            CrossThreadCall::post(this, [this, batch] { Q_EMIT values(batch); });
+            m_inbox->post([this, batch] { Q_EMIT values(batch); });
         },
         Qt::DirectConnection);
     m_thread.start();
@@ -126,9 +127,8 @@ Session::~Session()
 {
     // Writes already accepted leave before the link goes (bounded); then the thread ends.
     QThread *thread = &m_thread;
-    CrossThreadCall::post(m_worker, [worker = m_worker, thread] {
-        worker->close(true, [thread] { thread->quit(); });
-    });
+    m_worker->inbox().post(
+        [worker = m_worker, thread] { worker->close(true, [thread] { thread->quit(); }); });
     if (!m_thread.wait(QDeadlineTimer(m_shared->closeDrainMs.load() + 2000))) {
         m_thread.quit();
         m_thread.wait();
@@ -143,13 +143,13 @@ Session::~Session()
 
 void Session::open()
 {
-    CrossThreadCall::post(m_worker, [worker = m_worker] { worker->open(); });
+    m_worker->inbox().post([worker = m_worker] { worker->open(); });
 }
 
 void Session::close(CloseMode mode)
 {
     const bool drain = mode == CloseMode::Drain;
-    CrossThreadCall::post(m_worker, [worker = m_worker, drain] { worker->close(drain); });
+    m_worker->inbox().post([worker = m_worker, drain] { worker->close(drain); });
 }
 
 int Session::pendingWrites() const
@@ -220,9 +220,8 @@ quint64 Session::enqueue(SessionJob &job, QObject *context, Completion completio
         const std::lock_guard locker(m_completions->mutex);
         m_completions->pending.emplace(id, std::move(pending));
     }
-    CrossThreadCall::post(m_worker, [worker = m_worker, job = std::move(job)]() mutable {
-        worker->enqueue(std::move(job));
-    });
+    m_worker->inbox().post(
+        [worker = m_worker, job = std::move(job)]() mutable { worker->enqueue(std::move(job)); });
     return id;
 }
 
@@ -253,7 +252,7 @@ void Session::complete(quint64 id, const SessionResult &result)
 
 void Session::cancel(quint64 id)
 {
-    CrossThreadCall::post(m_worker, [worker = m_worker, id] { worker->cancel(id); });
+    m_worker->inbox().post([worker = m_worker, id] { worker->cancel(id); });
 }
 
 void Session::cancelAll(const QObject *context)
@@ -272,7 +271,7 @@ void Session::cancelAll(const QObject *context)
     }
     if (ids.isEmpty())
         return;
-    CrossThreadCall::post(m_worker, [worker = m_worker, ids] {
+    m_worker->inbox().post([worker = m_worker, ids] {
         for (const quint64 id : ids)
             worker->cancel(id);
     });
@@ -321,13 +320,12 @@ SessionStatistics Session::statistics() const
 
 void Session::resetStatistics()
 {
-    CrossThreadCall::post(m_worker, [worker = m_worker] { worker->resetStatistics(); });
+    m_worker->inbox().post([worker = m_worker] { worker->resetStatistics(); });
 }
 
 void Session::setWatchList(const QList<WatchEntry> &entries)
 {
-    CrossThreadCall::post(m_worker,
-                          [worker = m_worker, entries] { worker->setWatchList(entries); });
+    m_worker->inbox().post([worker = m_worker, entries] { worker->setWatchList(entries); });
 }
 
 } // namespace Fatek

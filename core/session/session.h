@@ -17,6 +17,7 @@
 
 namespace Fatek {
 
+class CrossThreadQueue;
 class SessionWorker;
 struct SessionCompletions;
 struct SessionJob;
@@ -94,7 +95,7 @@ public:
     // Polling: replaces the watch list (re-plans); an empty list stops polling.
     void setWatchList(const QList<WatchEntry> &entries);
 
-    // Runs the calls posted to this object (CrossThreadCall).
+    // Runs the calls posted to this object (CrossThreadCall, CrossThreadQueue).
     bool event(QEvent *event) override;
 
 Q_SIGNALS:
@@ -118,6 +119,8 @@ private:
     SessionWorker *m_worker;
     std::atomic<quint64> m_nextId{1};
     std::unique_ptr<SessionCompletions> m_completions;
+    // The worker's signals, relayed to this object's thread in batches and in order.
+    std::unique_ptr<CrossThreadQueue> m_inbox;
 };
 
 void registerSessionMetaTypes();

@@ -33,6 +33,28 @@ void StationStatistics::addRoundTrip(double ms)
     rttP99Ms = rank(0.99);
 }
 
+void StationStatistics::assignFigures(const StationStatistics &other)
+{
+    // Every public field (as operator== lists them, plus the percentiles).
+    requests = other.requests;
+    answers = other.answers;
+    timeouts = other.timeouts;
+    checksumErrors = other.checksumErrors;
+    plcErrors = other.plcErrors;
+    frameErrors = other.frameErrors;
+    retries = other.retries;
+    unanswered = other.unanswered;
+    demoted = other.demoted;
+    nextTry = other.nextTry;
+    demotions = other.demotions;
+    bytesOut = other.bytesOut;
+    bytesIn = other.bytesIn;
+    rttLastMs = other.rttLastMs;
+    rttMeanMs = other.rttMeanMs;
+    rttP50Ms = other.rttP50Ms;
+    rttP99Ms = other.rttP99Ms;
+}
+
 bool StationStatistics::operator==(const StationStatistics &other) const
 {
     return requests == other.requests && answers == other.answers && timeouts == other.timeouts
@@ -41,6 +63,21 @@ bool StationStatistics::operator==(const StationStatistics &other) const
            && unanswered == other.unanswered && demoted == other.demoted && nextTry == other.nextTry
            && demotions == other.demotions && bytesOut == other.bytesOut && bytesIn == other.bytesIn
            && rttLastMs == other.rttLastMs && rttMeanMs == other.rttMeanMs;
+}
+
+void SessionStatistics::assignFigures(const SessionStatistics &other)
+{
+    total.assignFigures(other.total);
+    // A new map, not `stations` changed in place: a copy handed out by Session::statistics()
+    // may still share it (Qt's implicit sharing), on another thread.
+    QMap<quint8, StationStatistics> figures;
+    for (auto it = other.stations.cbegin(); it != other.stations.cend(); ++it)
+        figures[it.key()].assignFigures(it.value());
+    stations = std::move(figures);
+    pollCycles = other.pollCycles;
+    lastCycleMs = other.lastCycleMs;
+    bytesDiscarded = other.bytesDiscarded;
+    linkLosses = other.linkLosses;
 }
 
 } // namespace Fatek

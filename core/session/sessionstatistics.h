@@ -38,6 +38,9 @@ struct StationStatistics
 
     // Adds a round-trip sample and updates last/mean/percentiles.
     void addRoundTrip(double ms);
+    // Copies every public figure of `other`, not its window of samples (2 x 8 KB): for a
+    // snapshot that is read, not counted into (SessionWorker publishes one per request).
+    void assignFigures(const StationStatistics &other);
 
     bool operator==(const StationStatistics &other) const;
 
@@ -57,6 +60,10 @@ struct SessionStatistics
     double lastCycleMs = 0;     // duration of the last poll cycle
     quint64 bytesDiscarded = 0; // stale or unexpected bytes thrown away (noise included)
     quint64 linkLosses = 0;     // times an open link failed (peer closed, cable pulled ...)
+
+    // StationStatistics::assignFigures for the total and every station, in a station map of its
+    // own: sharing `other`'s QMap would make `other`'s next count copy it whole, windows and all.
+    void assignFigures(const SessionStatistics &other);
 };
 
 } // namespace Fatek

@@ -127,7 +127,14 @@ void SessionWorker::startConnect()
         m_transport = Transport::create(m_settings, this);
         connect(m_transport, &Transport::opened, this, &SessionWorker::onOpened);
         connect(m_transport, &Transport::disconnected, this, &SessionWorker::onDisconnected);
-        connect(m_transport, &Transport::bytesReceived, this, &SessionWorker::onBytes);
+        connect(m_transport, &Transport::bytesReceived, this, [this](const QByteArray &bytes) {
+            // The next query leaves in this turn of the event loop, not in a queued pump().
+            m_pumpHeld = true;
+            onBytes(bytes);
+            m_pumpHeld = false;
+            if (std::exchange(m_pumpDue, false))
+                pump();
+        });
         connect(m_transport, &Transport::allSent, this, &SessionWorker::onAllSent);
     }
     setState(LinkState::Connecting, Message::text(m_transport->describe().toStdString()));
@@ -328,12 +335,13 @@ void SessionWorker::statisticsChangedInternally()
 
 void SessionWorker::publishStatistics()
 {
-    // Copied for Session::statistics() once per finished request, not once per counter change.
+    // Copied for Session::statistics() once per finished request, not once per counter change;
+    // the figures only, not the round-trip windows (docs/performance.md).
     if (!m_sharedStale)
         return;
     m_sharedStale = false;
     const std::lock_guard locker(m_shared->mutex);
-    m_shared->statistics = m_statistics;
+    m_shared->statistics.assignFigures(m_statistics);
 }
 
 void SessionWorker::resetStatistics()

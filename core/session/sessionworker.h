@@ -3,6 +3,7 @@
 #include "core/protocol/codec.h"
 #include "core/protocol/deframer.h"
 #include "core/transport/linksettings.h"
+#include "crossthreadqueue.h"
 #include "poller.h"
 #include "sessionresult.h"
 #include "sessionstatistics.h"
@@ -57,7 +58,7 @@ struct SessionJob
 
 // The session's engine, living on its worker thread: one query on the wire at a time, priority
 // queues, retries, timeouts, reconnects, statistics and the traffic log. Only the Session calls
-// it, through queued invocations.
+// it, through its inbox().
 class SessionWorker : public QObject
 {
     Q_OBJECT
@@ -85,8 +86,10 @@ public:
     void resetStatistics();
     void setWatchList(const QList<WatchEntry> &entries);
 
-    // Runs the calls posted to this object (CrossThreadCall).
+    // Runs the calls posted to this object (CrossThreadCall, inbox()).
     bool event(QEvent *event) override;
+    // The calls for this worker, from any thread (thread-safe).
+    CrossThreadQueue &inbox() { return m_inbox; }
 
 Q_SIGNALS:
     void finished(quint64 id, const Fatek::SessionResult &result);
@@ -148,8 +151,16 @@ private:
     std::deque<SessionJob> m_pollQueue;
     std::optional<SessionJob> m_current;
     QByteArray m_sentFrame;
-    QByteArray m_answer; // bytes of the current attempt's answer
-    bool m_pumpScheduled = false;
+    QByteArray m_answer;          // bytes of the current attempt's answer
+    bool m_pumpScheduled = false; // a queued pump() is on its way
+    bool m_pumpDue = false;       // pump() when the inbox's batch or the answer's handling ends
+    bool m_pumpHeld = false;      // an answer is being handled
+    // Requests handed over together are all queued before the next one is chosen (priorities),
+    // and the next one goes in the same turn of the event loop, not in a queued pump().
+    CrossThreadQueue m_inbox{this, [this] {
+                                 if (std::exchange(m_pumpDue, false))
+                                     pump();
+                             }};
     // The current job needs no answer and waits for its frame to leave (Transport::allSent).
     bool m_awaitingSent = false;
     // close(drain) in progress: writes still go, nothing new is accepted.

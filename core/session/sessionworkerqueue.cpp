@@ -124,6 +124,10 @@ void SessionWorker::failAll(ErrorKind kind, const Message &reason, bool includeP
 
 void SessionWorker::schedulePump()
 {
+    if (m_pumpHeld || m_inbox.isRunning()) {
+        m_pumpDue = true; // pumped when the answer's handling or the batch ends
+        return;
+    }
     if (m_pumpScheduled)
         return;
     m_pumpScheduled = true;

@@ -88,7 +88,12 @@ bool TcpTransport::write(const QByteArray &bytes)
 {
     if (!m_open)
         return false;
-    return m_socket->write(bytes) == bytes.size();
+    if (m_socket->write(bytes) != bytes.size())
+        return false;
+    // Handed to the kernel now, not when the write notifier fires on a later turn of the event
+    // loop (a turn more per query). allSent() may come from inside this call.
+    m_socket->flush();
+    return true;
 }
 
 qint64 TcpTransport::unsentBytes() const
