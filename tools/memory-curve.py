@@ -6,6 +6,7 @@ start, the highest RSS, and the slope over the run's second half (MB per hour).
 
   tools/memory-curve.py build/release/app/fatek-studio/fatek-studio \\
       --minutes 120 --every 30 --csv memory.csv --svg docs/images/memory-demo.svg
+  tools/memory-curve.py STUDIO --plot-only --csv memory.csv --compare before.csv --svg out.svg
 """
 
 import argparse
@@ -40,11 +41,13 @@ def slope_per_hour(samples):
     return sxy / sxx * 60.0
 
 
-def write_svg(path, samples, title):
+def write_svg(path, curves, title):
+    """curves: [(label, [(minutes, MB), ...], colour)], drawn on one pair of axes."""
     width, height = 720, 360
     left, right, top, bottom = 64, 24, 40, 48
-    t_max = max(max(t for t, _ in samples), 1.0)
-    m_max = max(m for _, m in samples)
+    everything = [point for _, samples, _ in curves for point in samples]
+    t_max = max(max(t for t, _ in everything), 1.0)
+    m_max = max(m for _, m in everything)
     m_top = (int(m_max / 20) + 1) * 20
     plot_w, plot_h = width - left - right, height - top - bottom
 
@@ -71,13 +74,24 @@ def write_svg(path, samples, title):
                'minutes</text>')
     out.append(f'<text x="16" y="{top + plot_h / 2}" text-anchor="middle" '
                f'transform="rotate(-90 16 {top + plot_h / 2})">RSS (MB)</text>')
-    points = " ".join(f"{x(t):.1f},{y(m):.1f}" for t, m in samples)
-    out.append(f'<polyline points="{points}" fill="none" stroke="#1f6fb2" stroke-width="2"/>')
+    for i, (label, samples, colour) in enumerate(curves):
+        points = " ".join(f"{x(t):.1f},{y(m):.1f}" for t, m in samples)
+        out.append(f'<polyline points="{points}" fill="none" stroke="{colour}" '
+                   'stroke-width="2"/>')
+        ly = top + plot_h - 14 - 18 * (len(curves) - 1 - i)
+        out.append(f'<line x1="{left + 12}" y1="{ly - 4}" x2="{left + 36}" '
+                   f'y2="{ly - 4}" stroke="{colour}" stroke-width="2"/>')
+        out.append(f'<text x="{left + 42}" y="{ly}">{label}</text>')
     out.append(f'<rect x="{left}" y="{top}" width="{plot_w}" height="{plot_h}" fill="none" '
                'stroke="#888"/>')
     out.append("</svg>")
     with open(path, "w", encoding="utf-8") as f:
         f.write("\n".join(out) + "\n")
+
+
+def read_csv(path):
+    with open(path, encoding="ascii") as f:
+        return [(float(r["minutes"]), float(r["rss_mb"])) for r in csv.DictReader(f)]
 
 
 def main():
@@ -87,7 +101,17 @@ def main():
     parser.add_argument("--every", type=float, default=30, help="seconds between samples")
     parser.add_argument("--csv", required=True)
     parser.add_argument("--svg")
+    parser.add_argument("--label", default="this build")
+    parser.add_argument("--compare", metavar="CSV",
+                        help="an earlier run's samples, drawn beside this one's")
+    parser.add_argument("--compare-label", default="before")
+    parser.add_argument("--plot-only", action="store_true",
+                        help="draw --svg from --csv (an earlier run's samples) without running")
     args = parser.parse_args()
+    if args.plot_only:
+        samples = read_csv(args.csv)
+        plot(args, samples)
+        return
 
     home = tempfile.mkdtemp(prefix="fatek-memory-")
     env = dict(os.environ, HOME=home, XDG_CONFIG_HOME=os.path.join(home, ".config"),
@@ -122,10 +146,18 @@ def main():
                f"last {samples[-1][1]:.1f} MB after {samples[-1][0]:.0f} min; "
                f"slope over the second half {slope_per_hour(second_half):+.2f} MB/h")
     print(figures)
-    if args.svg:
-        write_svg(args.svg, samples,
-                  f"fatek-studio --demo, resident memory ({samples[-1][0]:.0f} min, "
-                  f"every {args.every:.0f} s)")
+    plot(args, samples)
+
+
+def plot(args, samples):
+    if not args.svg:
+        return
+    curves = [(args.label, samples, "#1f6fb2")]
+    if args.compare:
+        curves.insert(0, (args.compare_label, read_csv(args.compare), "#c0392b"))
+    write_svg(args.svg, curves,
+              f"fatek-studio --demo, resident memory ({samples[-1][0]:.0f} min, "
+              f"every {args.every:.0f} s)")
 
 
 if __name__ == "__main__":
