@@ -266,6 +266,29 @@ private:
         return table;
     }
 
+    // Selects the rows of `addresses` by clicks (Ctrl for the others), adds them to the trend
+    // from the table's menu and opens the trend; null when any step fails.
+    TrendView *addToTrend(WatchTableWidget *table, const QStringList &addresses)
+    {
+        QTableView *view = table->view();
+        for (qsizetype i = 0; i < addresses.size(); ++i)
+            clickCell(view, cellOf(table, addresses.at(i), WatchTableModel::AddressColumn),
+                      i == 0 ? Qt::NoModifier : Qt::ControlModifier);
+        QAction *add = nullptr;
+        for (QAction *a : view->actions()) {
+            if (a->text() == QLatin1String("Add to &Trend"))
+                add = a;
+        }
+        if (!add)
+            return nullptr;
+        add->trigger();
+        TrendView *trend = m_window->trendView();
+        if (trend->itemCount() != addresses.size() || !m_window->openTool(QStringLiteral("trend"))
+            || !QTest::qWaitFor([trend] { return trend->isVisible(); }))
+            return nullptr;
+        return trend;
+    }
+
     static bool allValues(const WatchTableModel *model)
     {
         for (int r = 0; r < model->rowCount(); ++r) {
@@ -850,21 +873,8 @@ private Q_SLOTS:
         WatchTableModel *model = table->model();
         QTRY_VERIFY_WITH_TIMEOUT(allValues(model), longWait);
         QVERIFY(model->setFormat(0, DisplayFormat::Hex, false));
-        QTableView *view = table->view();
-        clickCell(view, cellOf(table, QStringLiteral("R1"), WatchTableModel::AddressColumn));
-        clickCell(view, cellOf(table, QStringLiteral("R0"), WatchTableModel::AddressColumn),
-                  Qt::ControlModifier);
-        QAction *add = nullptr;
-        for (QAction *a : view->actions()) {
-            if (a->text() == QLatin1String("Add to &Trend"))
-                add = a;
-        }
-        QVERIFY(add);
-        add->trigger();
-        TrendView *trend = m_window->trendView();
-        QCOMPARE(trend->itemCount(), 2);
-        QVERIFY(m_window->openTool(QStringLiteral("trend")));
-        QTRY_VERIFY(trend->isVisible());
+        TrendView *trend = addToTrend(table, {QStringLiteral("R1"), QStringLiteral("R0")});
+        QVERIFY(trend);
         // The sine goes below zero within its 10 s period.
         const auto lowest = [trend] {
             double low = 1e9;
@@ -913,23 +923,9 @@ private Q_SLOTS:
         QVERIFY(table);
         WatchTableModel *model = table->model();
         QTRY_VERIFY_WITH_TIMEOUT(allValues(model), longWait);
-        QTableView *view = table->view();
-        clickCell(view, cellOf(table, QStringLiteral("R1"), WatchTableModel::AddressColumn));
-        for (const QString &address :
-             {QStringLiteral("R0"), QStringLiteral("DR10"), QStringLiteral("Y0")})
-            clickCell(view, cellOf(table, address, WatchTableModel::AddressColumn),
-                      Qt::ControlModifier);
-        QAction *add = nullptr;
-        for (QAction *a : view->actions()) {
-            if (a->text() == QLatin1String("Add to &Trend"))
-                add = a;
-        }
-        QVERIFY(add);
-        add->trigger();
-        TrendView *trend = m_window->trendView();
-        QCOMPARE(trend->itemCount(), 4);
-        QVERIFY(m_window->openTool(QStringLiteral("trend")));
-        QTRY_VERIFY(trend->isVisible());
+        TrendView *trend = addToTrend(table, {QStringLiteral("R1"), QStringLiteral("R0"),
+                                              QStringLiteral("DR10"), QStringLiteral("Y0")});
+        QVERIFY(trend);
         auto *separate = trend->findChild<QAbstractButton *>(QStringLiteral("trendSeparateAxes"));
         QVERIFY(onScreen(separate));
         if (!separate->isChecked())
