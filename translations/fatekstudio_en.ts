@@ -4424,8 +4424,8 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>file</translation>
         </message>
         <message>
-            <source>With --screenshot: open a commissioning tool first (control, forcing, console, loopback, program, snapshot, trend).</source>
-            <translation>With --screenshot: open a commissioning tool first (control, forcing, console, loopback, program, snapshot, trend).</translation>
+            <source>With --screenshot: open a commissioning tool first (connection, control, forcing, console, loopback, program, snapshot, trend).</source>
+            <translation>With --screenshot: open a commissioning tool first (connection, control, forcing, console, loopback, program, snapshot, trend).</translation>
         </message>
         <message>
             <source>name</source>

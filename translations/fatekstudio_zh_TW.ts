@@ -4406,8 +4406,8 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>檔案</translation>
         </message>
         <message>
-            <source>With --screenshot: open a commissioning tool first (control, forcing, console, loopback, program, snapshot, trend).</source>
-            <translation>搭配 --screenshot：先開啟一個試車工具（control、forcing、console、loopback、program、snapshot、trend）。</translation>
+            <source>With --screenshot: open a commissioning tool first (connection, control, forcing, console, loopback, program, snapshot, trend).</source>
+            <translation>搭配 --screenshot：先開啟一個試車工具（connection、control、forcing、console、loopback、program、snapshot、trend）。</translation>
         </message>
         <message>
             <source>name</source>

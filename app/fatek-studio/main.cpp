@@ -45,8 +45,8 @@ void scheduleScreenshot(Fatek::MainWindow *window, const QString &path, bool dem
                 if (!toolWidget) {
                     std::fprintf(
                         stderr,
-                        "fatek-studio: unknown tool %s (control, forcing, console, loopback, "
-                        "program, snapshot, trend)\n",
+                        "fatek-studio: unknown tool %s (connection, control, forcing, console, "
+                        "loopback, program, snapshot, trend)\n",
                         qPrintable(tool));
                     QCoreApplication::exit(2);
                     return;
@@ -162,8 +162,8 @@ int main(int argc, char *argv[])
     const QCommandLineOption toolOpt(
         QStringLiteral("tool"),
         QCoreApplication::translate("main", "With --screenshot: open a commissioning tool first "
-                                            "(control, forcing, console, loopback, program, "
-                                            "snapshot, trend)."),
+                                            "(connection, control, forcing, console, loopback, "
+                                            "program, snapshot, trend)."),
         QCoreApplication::translate("main", "name"));
     const QCommandLineOption languageOpt(
         QStringLiteral("language"),

@@ -96,6 +96,13 @@ void typeSlowly(QWidget *widget, const QString &text)
         QTest::keyClicks(widget, QString(ch), Qt::NoModifier, keyDelayMs);
 }
 
+// Whether a line edit shows all its text: it fits with room for the frame and the inner margins
+// (about 6 px a side in the Fusion style), so nothing is scrolled out.
+bool urlShownWhole(const QLineEdit *line)
+{
+    return line->fontMetrics().horizontalAdvance(line->text()) <= line->width() - 12;
+}
+
 } // namespace
 
 class TestUiDayOne : public QObject
@@ -441,6 +448,8 @@ private Q_SLOTS:
                 typeSlowly(name, QStringLiteral("By URL"));
                 auto *line = dialog->findChild<QLineEdit *>(QStringLiteral("linkUrlEdit"));
                 QVERIFY(line && line->isVisible());
+                // The whole default URL is readable, not its tail only.
+                QVERIFY2(urlShownWhole(line), qPrintable(line->text()));
                 // First a port that cannot be: refused, the dialog stays.
                 QTest::mouseClick(line, Qt::LeftButton);
                 line->selectAll();
@@ -457,6 +466,7 @@ private Q_SLOTS:
                 QTest::keyClick(line, Qt::Key_Tab);
                 filled = dialog->connection();
                 QVERIFY(!problem->isVisible());
+                QVERIFY2(urlShownWhole(line), qPrintable(line->text()));
                 QTest::mouseClick(connect, Qt::LeftButton);
             });
         QVERIFY2(refusal.contains(QStringLiteral("99999")), qPrintable(refusal));

@@ -60,6 +60,11 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_url = new QLineEdit(this);
     m_url->setObjectName(QStringLiteral("linkUrlEdit"));
     m_url->setPlaceholderText(QStringLiteral("tcp://192.168.1.3:500"));
+    // Wide enough for a typical link with its options, so the scheme and host are not scrolled
+    // out of sight (the first screenshot showed only "00?protocol=facon&station=1").
+    m_url->setMinimumWidth(m_url->fontMetrics().horizontalAdvance(QStringLiteral(
+                               "tcp://192.168.100.100:500?protocol=facon&station=1&timeout=1000"))
+                           + 16);
     m_url->setToolTip(tr("The link as fatek-cli --link takes it (tcp://HOST:PORT, udp://…, "
                          "serial:///dev/ttyUSB0?baud=19200&format=7E1): type or paste one to "
                          "fill the fields; it follows them."));
@@ -316,6 +321,10 @@ void ConnectionDialog::updateUrl()
         return;
     const SavedConnection c = connection();
     m_url->setText(c.settings.toUrl(c.station));
+    // setText leaves the cursor at the end; a longer URL then shows its tail. The start (scheme
+    // and host) is what a reader needs, unless they are editing the line.
+    if (!m_url->hasFocus())
+        m_url->setCursorPosition(0);
 }
 
 void ConnectionDialog::takeUrl()

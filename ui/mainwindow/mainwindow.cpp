@@ -283,6 +283,15 @@ QWidget *MainWindow::openTool(const QString &name)
 {
     if (name == QLatin1String("trend"))
         return m_trend->showTrend();
+    if (name == QLatin1String("connection")) {
+        // The New Connection dialog, shown without blocking so that --screenshot can grab it.
+        auto *dialog = new ConnectionDialog(m_manager->recent(), this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        connect(dialog, &QDialog::accepted, this,
+                [this, dialog] { openConnection(dialog->connection()); });
+        dialog->show();
+        return dialog;
+    }
     return m_tools->openTool(name);
 }
 

@@ -64,8 +64,9 @@ public:
 
     // Starts the embedded simulator and opens the demo table on it; demoReady() when connected.
     void startDemo();
-    // Opens a commissioning tool: "control", "forcing", "console" (docks) or "loopback" (dialog,
-    // started at once). Returns the tool's widget, or nullptr for an unknown name.
+    // Opens a commissioning tool: "control", "forcing", "console" (docks), "loopback" (dialog,
+    // started at once), "trend", or "connection" (the New Connection dialog, not blocking).
+    // Returns the tool's widget, or nullptr for an unknown name.
     QWidget *openTool(const QString &name);
     // Whether any table shows a value read from a PLC.
     bool hasValues() const;
