@@ -2,6 +2,7 @@
 
 #include "crossthreadcall.h"
 
+#include <QMetaMethod>
 #include <QThread>
 
 #include <algorithm>
@@ -85,7 +86,11 @@ quint64 TrafficLog::append(TrafficEntry::Direction direction, const QByteArray &
     // Emitted outside the lock: a direct-connected slot may call entries().
     if (QThread::currentThread() == thread()) {
         Q_EMIT entriesAdded(sequence);
-    } else if (!m_notifyPending.exchange(true)) {
+    } else if (isSignalConnected(QMetaMethod::fromSignal(&TrafficLog::entriesAdded))
+               && !m_notifyPending.exchange(true)) {
+        // Only for a listener (a console on screen): otherwise the post would wake the owner's
+        // thread for nothing, about once per transaction. One that connects later reads the
+        // entries already added (the entry is in before this check).
         // One notification in flight at most, however fast the worker appends.
         CrossThreadCall::post(this, [this] {
             m_notifyPending.store(false);

@@ -27,6 +27,9 @@ public:
 
 private:
     void fail(const Message &reason);
+    // What the kernel holds now; `closed` set when the peer closed or the read failed.
+    QByteArray readKernel(bool *closed);
+    void failRead(); // after readKernel() said `closed`
 
     LinkSettings m_settings;
     QTcpSocket *m_socket = nullptr;

@@ -146,8 +146,7 @@ void RawConsole::setTarget(Session *session, quint8 station, const QString &conn
     const bool sameLink = m_attached && session && m_session == session;
     if (!sameLink) {
         disconnect(m_sessionGone);
-        if (m_session)
-            disconnect(m_session->trafficLog(), nullptr, this, nullptr);
+        listen(false);
         m_session = session;
         m_attached = session != nullptr;
         m_lastSequence = 0;
@@ -167,12 +166,30 @@ void RawConsole::setTarget(Session *session, quint8 station, const QString &conn
     // A deleted session leaves the console in "no connection".
     m_sessionGone = connect(session, &QObject::destroyed, this,
                             [this] { setTarget(nullptr, m_station, {}); });
-    connect(session->trafficLog(), &TrafficLog::entriesAdded, this, [this] {
+    if (isOnScreen())
+        startShowing();
+}
+
+void RawConsole::listen(bool on)
+{
+    // Connected only while on screen: a log with no listener does not wake this thread per frame.
+    if (on == bool(m_logListener))
+        return;
+    if (!on) {
+        disconnect(m_logListener);
+        m_logListener = {};
+        return;
+    }
+    m_logListener = connect(m_session->trafficLog(), &TrafficLog::entriesAdded, this, [this] {
         if (isOnScreen() && !m_fetchTimer.isActive())
             m_fetchTimer.start();
     });
-    if (isOnScreen())
-        startShowing();
+}
+
+void RawConsole::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    listen(false);
 }
 
 void RawConsole::showEvent(QShowEvent *event)
@@ -187,11 +204,14 @@ void RawConsole::setOnScreen(bool onScreen)
     m_tabShown = onScreen;
     if (m_session && isOnScreen())
         startShowing();
+    else if (!isOnScreen())
+        listen(false);
 }
 
 void RawConsole::startShowing()
 {
     m_session->trafficLog()->growCapacity(TrafficLog::fullCapacity);
+    listen(true);
     fetch();
 }
 

@@ -60,10 +60,12 @@ protected:
     // The console reads its link's log only while it is on screen (a docked console behind
     // another tab is not): the log and the table grow only when someone looks.
     void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
 
 private:
     void fetch();
     void startShowing();
+    void listen(bool on); // connects to or from the log's entriesAdded
     void save();
     void applyFilters();
     QString rowsText(bool selectedOnly) const;
@@ -72,6 +74,7 @@ private:
     bool m_attached = false; // m_session was set (a QPointer also reads null once deleted)
     quint8 m_station = 1;
     QMetaObject::Connection m_sessionGone;
+    QMetaObject::Connection m_logListener; // the log's entriesAdded, while on screen
     quint64 m_lastSequence = 0;
     bool m_followTail = true;
     bool isOnScreen() const { return isVisible() && m_tabShown; }

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <thread>
 
 using namespace Fatek;
 
@@ -124,6 +125,7 @@ private Q_SLOTS:
     void closeCancelsPending();
     void statistics();
     void trafficLogBounded();
+    void trafficLogWakesOnlyListeners();
     void polling();
     void pollingIsolatesBadAddress();
     void pollingSeveralStations();
@@ -872,6 +874,48 @@ void TestSession::trafficLogBounded()
                                            "0146"));
     QVERIFY(!entries.at(0).summary.empty());
     QVERIFY(entries.at(1).error.empty());
+}
+
+namespace {
+
+// Counts the events delivered to an object (a post from another thread is one).
+class EventCounter : public QObject
+{
+public:
+    int count = 0;
+    bool eventFilter(QObject *, QEvent *) override
+    {
+        ++count;
+        return false;
+    }
+};
+
+} // namespace
+
+// Issue 35: a log appended to from the worker's thread posts to its own thread only when something
+// listens (the console on screen); a listener that comes later still gets the next entries.
+void TestSession::trafficLogWakesOnlyListeners()
+{
+    TrafficLog log(100);
+    EventCounter events;
+    log.installEventFilter(&events);
+    const auto appendFromAnotherThread = [&log](int n) {
+        std::thread worker([&log, n] {
+            for (int i = 0; i < n; ++i)
+                log.append(TrafficEntry::Direction::Out, QByteArray::number(i), {});
+        });
+        worker.join();
+    };
+    appendFromAnotherThread(50);
+    QTest::qWait(50);
+    QCOMPARE(events.count, 0);
+    QCOMPARE(log.size(), 50);
+
+    QSignalSpy added(&log, &TrafficLog::entriesAdded);
+    appendFromAnotherThread(1);
+    QTRY_COMPARE(added.count(), 1);
+    QCOMPARE(added.first().at(0).toULongLong(), quint64(51));
+    QVERIFY(events.count >= 1);
 }
 
 void TestSession::polling()

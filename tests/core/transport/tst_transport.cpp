@@ -120,6 +120,14 @@ void TestTransport::tcpEcho()
                            8);
     QVERIFY(transport.write(query));
     QTRY_COMPARE_WITH_TIMEOUT(received, query, 5000);
+    // More than one read's chunk (the socket is unbuffered: reads go to the kernel), in order.
+    QByteArray big(20000, Qt::Uninitialized);
+    for (qsizetype i = 0; i < big.size(); ++i)
+        big[i] = static_cast<char>('A' + i % 26);
+    received.clear();
+    QVERIFY(transport.write(big));
+    QTRY_COMPARE_WITH_TIMEOUT(received.size(), big.size(), 5000);
+    QCOMPARE(received, big);
     QCOMPARE(lost.count(), 0);
     transport.close();
     QVERIFY(!transport.isOpen());
@@ -137,8 +145,15 @@ void TestTransport::tcpPeerCloses()
     QVERIFY(opened.wait(5000));
     QTRY_VERIFY_WITH_TIMEOUT(server.hasPendingConnections(), 5000);
     QTcpSocket *peer = server.nextPendingConnection();
+    QByteArray received;
+    connect(&transport, &Transport::bytesReceived, this,
+            [&received](const QByteArray &b) { received += b; });
+    // Its last words arrive before the loss is reported.
+    peer->write("last words");
+    peer->flush();
     peer->close();
     QTRY_COMPARE_WITH_TIMEOUT(lost.count(), 1, 5000);
+    QCOMPARE(received, QByteArray("last words"));
     QVERIFY2(englishText(lost.at(0).at(0).value<Message>()).contains(QStringLiteral("closed")),
              qPrintable(englishText(lost.at(0).at(0).value<Message>())));
     QVERIFY(!transport.isOpen());
