@@ -77,8 +77,13 @@ SnapshotReader::SnapshotReader(QObject *parent)
 
 SnapshotReader::~SnapshotReader()
 {
-    const std::lock_guard locker(m_handOff->mutex);
-    m_handOff->reader = nullptr;
+    {
+        const std::lock_guard locker(m_handOff->mutex);
+        m_handOff->reader = nullptr;
+    }
+    // A plan still being made ends on its own (milliseconds); nothing outlives the reader.
+    if (m_planThread.joinable())
+        m_planThread.join();
 }
 
 void SnapshotReader::setSession(Session *session)
@@ -201,11 +206,14 @@ void SnapshotReader::onDetailStatus(const SessionResult &result)
 
 void SnapshotReader::planInBackground(Protocol protocol, std::optional<DetailStatus> sizes)
 {
-    // A thread per snapshot, not the session's worker: the plan would hold up its I/O. Detached:
-    // nobody waits for it, the hand-over drops a result nobody wants any more. The thread's start
-    // orders everything it is given (visible to ThreadSanitizer, unlike a Qt thread pool's queue).
-    std::thread([handOff = m_handOff, job = m_job, ranges = m_ranges, sizes = std::move(sizes),
-                 station = m_station, protocol] {
+    // A thread per snapshot, not the session's worker: the plan would hold up its I/O. The reader
+    // owns it: the next start() and the destructor join it; the hand-over drops a result nobody
+    // wants any more. The thread's start orders everything it is given (visible to
+    // ThreadSanitizer, unlike a Qt thread pool's queue).
+    if (m_planThread.joinable())
+        m_planThread.join(); // the previous start()'s plan, cancelled: done or nearly
+    m_planThread = std::thread([handOff = m_handOff, job = m_job, ranges = m_ranges,
+                                sizes = std::move(sizes), station = m_station, protocol] {
         auto planned = std::make_shared<Planned>();
         planned->items = readItems(ranges, sizes ? &*sizes : nullptr);
         for (WatchItem &item : planned->items.items)
@@ -217,7 +225,7 @@ void SnapshotReader::planInBackground(Protocol protocol, std::optional<DetailSta
                 reader->onPlanned(job, *planned);
             });
         }
-    }).detach();
+    });
 }
 
 void SnapshotReader::onPlanned(std::uint64_t job, Planned &planned)

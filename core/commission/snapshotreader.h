@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <thread>
 #include <vector>
 
 namespace Fatek {
@@ -83,7 +84,8 @@ private:
 
     RequestTracker m_tracker;
     std::shared_ptr<PlanHandOff> m_handOff;
-    std::uint64_t m_job = 0; // the plan a result must belong to (bumped by every start())
+    std::thread m_planThread; // planInBackground()'s, joined by the next one and the destructor
+    std::uint64_t m_job = 0;  // the plan a result must belong to (bumped by every start())
     bool m_running = false;
     std::uint8_t m_station = 1;
     std::vector<AddressRange> m_ranges;
