@@ -494,20 +494,23 @@ Plan PollPlanner::plan(std::span<const WatchItem> items,
     {
         StationAddress element;
         std::uint64_t id = 0;
+        std::uint32_t index = 0; // position in `items`
     };
     std::vector<Entry> entries;
     entries.reserve(items.size());
-    for (const WatchItem &item : items) {
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const WatchItem &item = items[i];
+        const auto index = static_cast<std::uint32_t>(i);
         if (item.station == Limits::broadcastStation) {
             result.unplannable.push_back(
-                {item.id, msg<MsgId::PlanBroadcast>(item.address.toString())});
+                {item.id, index, msg<MsgId::PlanBroadcast>(item.address.toString())});
             continue;
         }
         if (Status s = validateRequest(singleRead(item.station, item.address), m_protocol); !s) {
-            result.unplannable.push_back({item.id, s.error().message});
+            result.unplannable.push_back({item.id, index, s.error().message});
             continue;
         }
-        entries.push_back({{item.station, item.address}, item.id});
+        entries.push_back({{item.station, item.address}, item.id, index});
     }
     std::stable_sort(entries.begin(), entries.end(),
                      [](const Entry &a, const Entry &b) { return a.element < b.element; });
@@ -526,7 +529,7 @@ Plan PollPlanner::plan(std::span<const WatchItem> items,
                       elements.begin(), elements.end(), a,
                       [](const Entry &e, const Address &x) { return e.element.address < x; });
                   for (; it != elements.end() && it->element.address == a; ++it)
-                      out.push_back({it->id, valueIndex});
+                      out.push_back({it->id, valueIndex, it->index});
               };
 
         std::vector<Address> batchable;
@@ -628,7 +631,7 @@ std::vector<PlanStep> PollPlanner::split(const PlanStep &failed) const
         for (const PlanSlot &s : failed.itemSlots) {
             const auto it = remap.find(s.valueIndex);
             if (it != remap.end())
-                itemSlots.push_back({s.itemId, it->second});
+                itemSlots.push_back({s.itemId, it->second, s.itemIndex});
         }
         out.push_back(makeStep(std::move(next), std::move(itemSlots)));
     }

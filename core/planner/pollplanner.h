@@ -17,6 +17,9 @@ struct PlanSlot
 {
     std::uint64_t itemId = 0;
     std::uint32_t valueIndex = 0; // response.values[valueIndex] is the item's value
+    // The item's position in the list given to plan(): a poller keeps per-item state in arrays
+    // by position, not in hash tables by id (memory per watched item, docs/performance.md).
+    std::uint32_t itemIndex = 0;
 };
 
 // One request of a poll cycle and the items it serves.
@@ -32,6 +35,7 @@ struct PlanStep
 struct UnplannableItem
 {
     std::uint64_t itemId = 0;
+    std::uint32_t itemIndex = 0; // its position in the list given to plan()
     Message reason; // technician words, e.g. "F12: F elements are not available in the FACON
                     // protocol ..."
 };

@@ -39,21 +39,28 @@ void Poller::setProtocol(Protocol protocol)
 
 void Poller::setWatchList(const QList<WatchEntry> &entries)
 {
+    // Items that stay keep their last good value (by id, only for this hand-over); the others'
+    // are forgotten.
+    QHash<std::uint64_t, LastGood> lastGood;
+    for (const auto &[key, group] : m_groups) {
+        for (std::size_t i = 0; i < group.items.size(); ++i) {
+            if (group.lastGood[i].timestamp.isValid())
+                lastGood.insert(group.items[i].id, group.lastGood[i]);
+        }
+    }
     // Results of cycles still on the wire belong to the old list: the generation tells them apart.
     m_groups.clear();
-    QHash<std::uint64_t, LastGood> lastGood;
     std::set<quint8> stations;
     for (const WatchEntry &entry : entries) {
-        if (m_lastGood.contains(entry.id))
-            lastGood.insert(entry.id, m_lastGood.value(entry.id));
         const int interval = std::max(10, entry.intervalMs);
         Group &group = m_groups[{interval, entry.station}];
         group.intervalMs = interval;
         group.station = entry.station;
         group.items.push_back({entry.id, entry.station, entry.address});
+        group.lastGood.push_back(lastGood.value(entry.id));
         stations.insert(entry.station);
     }
-    m_lastGood = lastGood; // forget items that left the list
+    lastGood = {};
     // A station that left the list starts afresh if it comes back.
     for (auto it = m_health.begin(); it != m_health.end();) {
         if (stations.contains(it->first)) {
@@ -171,7 +178,12 @@ void Poller::startCycle(Group &group)
     }
     group.inFlight = true;
     group.cycleStart = now;
-    group.cycleValues.clear();
+    // Kept from cycle to cycle and written in place once the last batch's receivers let it go;
+    // while they still hold it, a new list (resizing a shared one would copy it first).
+    const auto size = static_cast<qsizetype>(group.items.size());
+    if (!group.cycleValues.isDetached() || group.cycleValues.size() != size)
+        group.cycleValues = QList<WatchValue>(size);
+    group.cycleFilled.assign(group.items.size(), false);
     group.pending.clear();
     group.outstanding = 0;
     const QDateTime wallNow = QDateTime::currentDateTimeUtc();
@@ -181,8 +193,8 @@ void Poller::startCycle(Group &group)
             if (now < refusal.recheckAt) {
                 // Known to be refused: shown as such without asking the PLC every cycle.
                 for (const PlanSlot &slot : step.itemSlots)
-                    group.cycleValues.insert(slot.itemId, {slot.itemId, 0, wallNow,
-                                                           ValueQuality::Error, refusal.reason});
+                    setCycleValue(group, slot.itemIndex,
+                                  {slot.itemId, 0, wallNow, ValueQuality::Error, refusal.reason});
                 continue;
             }
         }
@@ -261,10 +273,12 @@ void Poller::noteAnswer(quint8 station, const SessionResult &result)
         // Resting groups say so at once, with the next try.
         const Message reason = demotedReason(station);
         QList<WatchValue> batch;
-        for (const WatchItem &item : group.items) {
-            const LastGood last = m_lastGood.value(item.id);
-            batch.append({item.id, last.value, last.timestamp.isValid() ? last.timestamp : wallNow,
-                          ValueQuality::Stale, reason});
+        batch.reserve(static_cast<qsizetype>(group.items.size()));
+        for (std::size_t i = 0; i < group.items.size(); ++i) {
+            const LastGood &last = group.lastGood[i];
+            batch.append({group.items[i].id, last.value,
+                          last.timestamp.isValid() ? last.timestamp : wallNow, ValueQuality::Stale,
+                          reason});
         }
         group.goodLastTime.clear();
         group.lastDelivery = now;
@@ -305,9 +319,9 @@ void Poller::markDemoted(Group &group, const std::vector<PlanStep> &steps)
     const Message reason = demotedReason(group.station);
     for (const PlanStep &step : steps) {
         for (const PlanSlot &slot : step.itemSlots) {
-            const LastGood last = m_lastGood.value(slot.itemId);
-            group.cycleValues.insert(
-                slot.itemId,
+            const LastGood &last = group.lastGood[slot.itemIndex];
+            setCycleValue(
+                group, slot.itemIndex,
                 {slot.itemId, last.value,
                  last.timestamp.isValid() ? last.timestamp : QDateTime::currentDateTimeUtc(),
                  ValueQuality::Stale, reason});
@@ -342,12 +356,12 @@ void Poller::onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
             if (slot.valueIndex < response.values.size()) {
                 value.value = response.values[slot.valueIndex];
                 value.quality = ValueQuality::Good;
-                m_lastGood.insert(slot.itemId, {value.value, now});
+                group.lastGood[slot.itemIndex] = {value.value, now};
             } else {
                 value.quality = ValueQuality::Error;
                 value.error = msg<MsgId::SessionFewerValues>();
             }
-            group.cycleValues.insert(slot.itemId, value);
+            setCycleValue(group, slot.itemIndex, std::move(value));
         }
     } else if (result.errorKind() == ErrorKind::PlcError
                && (result.error().plcCode == 0xA || result.error().plcCode == 2)) {
@@ -364,8 +378,8 @@ void Poller::onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
                 m_refusals[element] = {result.errorMessage(), recheckAt};
             }
             for (const PlanSlot &slot : step.itemSlots)
-                group.cycleValues.insert(
-                    slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorMessage()});
+                setCycleValue(group, slot.itemIndex,
+                              {slot.itemId, 0, now, ValueQuality::Error, result.errorMessage()});
         }
     } else if (result.errorKind() == ErrorKind::PlcError
                || result.errorKind() == ErrorKind::InvalidAddress
@@ -373,8 +387,8 @@ void Poller::onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
                || result.errorKind() == ErrorKind::LimitExceeded
                || result.errorKind() == ErrorKind::Unsupported) {
         for (const PlanSlot &slot : step.itemSlots)
-            group.cycleValues.insert(
-                slot.itemId, {slot.itemId, 0, now, ValueQuality::Error, result.errorMessage()});
+            setCycleValue(group, slot.itemIndex,
+                          {slot.itemId, 0, now, ValueQuality::Error, result.errorMessage()});
     } else {
         // Timeout, link down, damaged answers: the old value is kept, marked stale (with the
         // demotion, when this was the request that demoted the station).
@@ -384,9 +398,9 @@ void Poller::onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
                   ? demotedReason(step.request.station)
                   : result.errorMessage();
         for (const PlanSlot &slot : step.itemSlots) {
-            const LastGood last = m_lastGood.value(slot.itemId);
-            group.cycleValues.insert(slot.itemId, {slot.itemId, last.value, last.timestamp,
-                                                   ValueQuality::Stale, reason});
+            const LastGood &last = group.lastGood[slot.itemIndex];
+            setCycleValue(group, slot.itemIndex,
+                          {slot.itemId, last.value, last.timestamp, ValueQuality::Stale, reason});
         }
     }
 
@@ -404,12 +418,12 @@ void Poller::reportLate(Group &group, qint64 now)
     group.lateReported = true;
     const QDateTime wallNow = QDateTime::currentDateTimeUtc();
     QList<WatchValue> batch;
-    for (const std::uint64_t id : group.goodLastTime) {
-        const LastGood last = m_lastGood.value(id);
+    for (const std::uint32_t index : group.goodLastTime) {
+        const LastGood &last = group.lastGood[index];
         const qint64 age
             = last.timestamp.isValid() ? last.timestamp.msecsTo(wallNow) : now - group.lastDelivery;
         batch.append(
-            {id, last.value, last.timestamp, ValueQuality::Late,
+            {group.items[index].id, last.value, last.timestamp, ValueQuality::Late,
              msg<MsgId::SessionValueLate>(secondsText(age).toStdString(), group.intervalMs)});
     }
     group.goodLastTime.clear();
@@ -417,22 +431,40 @@ void Poller::reportLate(Group &group, qint64 now)
         Q_EMIT values(batch);
 }
 
+void Poller::setCycleValue(Group &group, std::uint32_t index, WatchValue value)
+{
+    group.cycleValues[index] = std::move(value);
+    group.cycleFilled[index] = true;
+}
+
 void Poller::finishCycle(Group &group)
 {
     const qint64 now = m_clock.elapsed();
-    QList<WatchValue> batch;
-    batch.reserve(static_cast<qsizetype>(group.items.size()));
     for (const UnplannableItem &item : group.plan.unplannable)
-        group.cycleValues.insert(item.itemId, {item.itemId, 0, QDateTime::currentDateTimeUtc(),
-                                               ValueQuality::Error, item.reason});
+        setCycleValue(
+            group, item.itemIndex,
+            {item.itemId, 0, QDateTime::currentDateTimeUtc(), ValueQuality::Error, item.reason});
     group.goodLastTime.clear();
-    for (const WatchItem &item : group.items) {
-        auto it = group.cycleValues.constFind(item.id);
-        if (it == group.cycleValues.constEnd())
+    const std::size_t count = group.items.size();
+    std::size_t filled = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!group.cycleFilled[i])
             continue;
-        batch.append(*it);
-        if (it->quality == ValueQuality::Good)
-            group.goodLastTime.push_back(item.id);
+        ++filled;
+        if (group.cycleValues.at(static_cast<qsizetype>(i)).quality == ValueQuality::Good)
+            group.goodLastTime.push_back(static_cast<std::uint32_t>(i));
+    }
+    // Usually every item has its value: the batch is the cycle's list itself (shared, not
+    // copied). Items without one (a cycle cut short) are left out, in item order.
+    QList<WatchValue> batch;
+    if (filled == count) {
+        batch = group.cycleValues;
+    } else {
+        batch.reserve(static_cast<qsizetype>(filled));
+        for (std::size_t i = 0; i < count; ++i) {
+            if (group.cycleFilled[i])
+                batch.append(group.cycleValues.at(static_cast<qsizetype>(i)));
+        }
     }
     group.inFlight = false;
     StationHealth &health = m_health[group.station];

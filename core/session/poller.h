@@ -80,6 +80,13 @@ Q_SIGNALS:
 
 private:
     using GroupKey = std::pair<int, quint8>; // interval, station
+    // Last good value of an item, for Stale reports: only what they need (16 bytes, not a whole
+    // WatchValue: this is per watched item, see docs/performance.md).
+    struct LastGood
+    {
+        std::uint32_t value = 0;
+        QDateTime timestamp;
+    };
     struct Group
     {
         int intervalMs = 1000;
@@ -93,12 +100,16 @@ private:
         int outstanding = 0;          // submitted, not finished
         qint64 cycleStart = 0;
         quint64 generation = 0;
-        QHash<std::uint64_t, WatchValue> cycleValues;
+        // Per item, by position in `items` (the plan's slots name it): arrays, not hash tables
+        // by id, since this is per watched item.
+        std::vector<LastGood> lastGood;
+        QList<WatchValue> cycleValues; // this cycle's values, where cycleFilled says
+        std::vector<bool> cycleFilled;
         qint64 lastDelivery = 0; // ms on m_clock: the last batch, or the group's start
         bool lateReported = false;
         bool trial = false;                      // this cycle tries a demoted station
         bool submitting = false;                 // inside submitNext()
-        std::vector<std::uint64_t> goodLastTime; // items good in the last batch
+        std::vector<std::uint32_t> goodLastTime; // positions of the items good in the last batch
     };
     struct StationHealth
     {
@@ -120,6 +131,7 @@ private:
     Message demotedReason(quint8 station) const;
     void reportLate(Group &group, qint64 now);
     void finishCycle(Group &group);
+    static void setCycleValue(Group &group, std::uint32_t index, WatchValue value);
     static std::set<StationAddress> elementsOf(const PlanStep &step);
     bool isRefusal(const PlanStep &step) const;
 
@@ -128,14 +140,6 @@ private:
     std::optional<PollPlanner> m_planner;
     std::map<GroupKey, Group> m_groups;
     std::map<quint8, StationHealth> m_health;
-    // Last good value of each item, for Stale reports: only what they need (16 bytes, not a
-    // whole WatchValue: this is per watched item, see docs/performance.md).
-    struct LastGood
-    {
-        std::uint32_t value = 0;
-        QDateTime timestamp;
-    };
-    QHash<std::uint64_t, LastGood> m_lastGood;
     std::set<StationAddress> m_isolated;
     // Isolated elements: the refusal to show, and when to ask again (ms on m_clock).
     struct Refusal

@@ -60,11 +60,16 @@ void checkPlanConsistent(const Plan &plan, std::span<const WatchItem> items, Pro
             QCOMPARE(item.station, step.request.station);
             QCOMPARE(addressOfSlot(step.request, slot.valueIndex), item.address);
             ++seen[slot.itemId];
+            // The slot also names the item by its position in the list.
+            QVERIFY(slot.itemIndex < items.size());
+            QCOMPARE(items[slot.itemIndex].id, slot.itemId);
         }
     }
     QCOMPARE(plan.wireBytes, total);
     for (const UnplannableItem &u : plan.unplannable) {
         QVERIFY(!u.reason.empty());
+        QVERIFY(u.itemIndex < items.size());
+        QCOMPARE(items[u.itemIndex].id, u.itemId);
         ++seen[u.itemId];
     }
     for (const WatchItem &i : items)
@@ -736,8 +741,10 @@ void TestPollPlanner::splitIsolatesInLog2Rounds()
                                               + PollPlanner::responseBytes(h.request, p));
                     slotCount += h.itemSlots.size();
                     bool holdsBad = false;
-                    for (const PlanSlot &s : h.itemSlots)
+                    for (const PlanSlot &s : h.itemSlots) {
                         holdsBad = holdsBad || addressOfSlot(h.request, s.valueIndex) == badAddress;
+                        QCOMPARE(items[s.itemIndex].id, s.itemId); // positions survive a split
+                    }
                     if (holdsBad) {
                         QVERIFY(!next);
                         next = h;
