@@ -241,6 +241,7 @@ void SessionWorker::onAllSent()
 void SessionWorker::onOpened()
 {
     m_backoffMs = m_settings.reconnectMinMs;
+    m_lineQuiet = false;
     setState(LinkState::Connected, Message::text(m_transport->describe().toStdString()));
     m_lastActivity.start();
     m_poller->setLinkUp(true);

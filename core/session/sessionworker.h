@@ -152,6 +152,7 @@ private:
     std::optional<SessionJob> m_current;
     QByteArray m_sentFrame;
     QByteArray m_answer;          // bytes of the current attempt's answer
+    bool m_lineQuiet = false;     // the last attempt ended with its answer and nothing after it
     bool m_pumpScheduled = false; // a queued pump() is on its way
     bool m_pumpDue = false;       // pump() when the inbox's batch or the answer's handling ends
     bool m_pumpHeld = false;      // an answer is being handled

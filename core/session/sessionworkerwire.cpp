@@ -46,8 +46,12 @@ void SessionWorker::startAttempt()
         = chosen ? (*chosen == Protocol::Facon ? m_faconCodec.get() : m_binaryCodec.get())
                  : codec();
 
-    // Stale bytes (a late answer to a timed-out query, noise) must not join the next answer.
-    const QByteArray stale = m_transport->takePending();
+    // Stale bytes (a late answer to a timed-out query, noise) must not join the next answer. After
+    // a clean answer with nothing behind it the line was quiet at the last read, and the kernel
+    // is not asked again (a read that finds nothing, per transaction): only an attempt after a
+    // timeout, an error or a raw frame can have a late answer coming.
+    const QByteArray stale = m_lineQuiet ? QByteArray() : m_transport->takePending();
+    m_lineQuiet = false;
     const std::size_t partial
         = m_faconDeframer->bufferedBytes() + m_binaryDeframer->bufferedBytes();
     m_faconDeframer->reset();
@@ -202,6 +206,7 @@ void SessionWorker::onBytes(const QByteArray &bytes)
                 ++s.frameErrors;
         });
         m_answer = frame;
+        m_lineQuiet = &item == &items.back() && deframer->bufferedBytes() == 0;
         finishCurrent(SessionResult(std::move(decoded), frame));
         return;
     }
