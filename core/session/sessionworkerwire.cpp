@@ -206,7 +206,9 @@ void SessionWorker::onBytes(const QByteArray &bytes)
                 ++s.frameErrors;
         });
         m_answer = frame;
-        m_lineQuiet = &item == &items.back() && deframer->bufferedBytes() == 0;
+        // TCP only: UDP may deliver a datagram twice, and a serial bus may carry other talkers.
+        m_lineQuiet = m_settings.kind == LinkSettings::Kind::Tcp && &item == &items.back()
+                      && deframer->bufferedBytes() == 0;
         finishCurrent(SessionResult(std::move(decoded), frame));
         return;
     }
