@@ -178,11 +178,11 @@ void Poller::startCycle(Group &group)
     }
     group.inFlight = true;
     group.cycleStart = now;
-    // Kept from cycle to cycle and written in place once the last batch's receivers let it go;
-    // while they still hold it, a new list (resizing a shared one would copy it first).
-    const auto size = static_cast<qsizetype>(group.items.size());
-    if (!group.cycleValues.isDetached() || group.cycleValues.size() != size)
-        group.cycleValues = QList<WatchValue>(size);
+    // A new list every cycle: the last one went out as the batch, and its receivers on other
+    // threads may still read it. (Writing into it once they let go is not safe: Qt tells an
+    // unshared list by a relaxed load of its count, which orders nothing, and ThreadSanitizer
+    // rightly reports the receivers' reads against the next cycle's writes.)
+    group.cycleValues = QList<WatchValue>(static_cast<qsizetype>(group.items.size()));
     group.cycleFilled.assign(group.items.size(), false);
     group.pending.clear();
     group.outstanding = 0;
