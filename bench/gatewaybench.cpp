@@ -9,11 +9,11 @@
 // divided by the messages its statistics say it published in the window), the superseded count
 // (its statistics' `superseded`, states replaced before they went out), and the "newest value"
 // latency: for every change a simulated PLC makes to an item during the window, the time until the
-// subscriber holds that value or a newer one of the item (the PLCs write (tick * 7 + item) & 0xFFFF,
-// so a received word names the tick that wrote it). A change that was superseded in the PLC, the
-// gateway or anywhere on the way counts until a newer value arrives; a change not yet covered when
-// the window ends counts with its age then (a lower bound). This is what a SCADA sees: how old the
-// picture it holds may be, whatever the gateway dropped on the way.
+// subscriber holds that value or a newer one of the item (the PLCs write (tick * 7 + item) &
+// 0xFFFF, so a received word names the tick that wrote it). A change that was superseded in the
+// PLC, the gateway or anywhere on the way counts until a newer value arrives; a change not yet
+// covered when the window ends counts with its age then (a lower bound). This is what a SCADA sees:
+// how old the picture it holds may be, whatever the gateway dropped on the way.
 #include "bench.h"
 #include "simthread.h"
 
@@ -39,10 +39,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <vector>
 
 namespace Fatek::Bench {
@@ -274,18 +276,20 @@ CaseResult runCase(int plcCount, int itemCount, int intervalMs, int seconds)
             [sim, itemCount, intervalMs, &timer, log] {
                 timer = new QTimer(sim->context());
                 auto tick = std::make_shared<std::uint32_t>(0);
-                QObject::connect(timer, &QTimer::timeout, sim->context(), [sim, itemCount, tick,
-                                                                           log] {
-                    ++*tick;
-                    {
-                        // Before the first register changes: a poll may read it at once.
-                        std::lock_guard lock(log->mutex);
-                        log->times.push_back(steadyUs());
-                    }
-                    for (int i = 0; i < itemCount; ++i)
-                        sim->plc().setValue(Address{ElementType::R, static_cast<std::uint32_t>(i)},
-                                            (*tick * 7 + static_cast<std::uint32_t>(i)) & 0xFFFF);
-                });
+                QObject::connect(timer, &QTimer::timeout, sim->context(),
+                                 [sim, itemCount, tick, log] {
+                                     ++*tick;
+                                     {
+                                         // Before the first register changes: a poll may read it at
+                                         // once.
+                                         std::lock_guard lock(log->mutex);
+                                         log->times.push_back(steadyUs());
+                                     }
+                                     for (int i = 0; i < itemCount; ++i)
+                                         sim->plc().setValue(
+                                             Address{ElementType::R, static_cast<std::uint32_t>(i)},
+                                             (*tick * 7 + static_cast<std::uint32_t>(i)) & 0xFFFF);
+                                 });
                 timer->start(std::max(1, intervalMs / 2));
             },
             Qt::BlockingQueuedConnection);
@@ -378,41 +382,38 @@ CaseResult runCase(int plcCount, int itemCount, int intervalMs, int seconds)
             latencies.push_back(static_cast<double>(now - *time));
         });
     subscriber.open();
-    // The statistics through a connection of their own: behind the items' flood (the second case)
-    // they came seconds late, the window's last ones after it ended.
+    // The statistics through a connection of their own, taken by the time they carry: behind the
+    // items' flood (the second case) they came seconds late, the window's last ones after it.
+    qint64 windowStartMs = std::numeric_limits<qint64>::max();
+    qint64 windowEndMs = std::numeric_limits<qint64>::max();
+    std::set<QString> pastWindow; // links whose statistics after the window came
     MqttClient statisticsReader(brokerSettings);
     statisticsReader.subscribe(QStringLiteral("bench/+/statistics"));
-    QObject::connect(
-        &statisticsReader, &MqttClient::messageReceived,
-        [&](const QString &topic, const QByteArray &payload, bool retained) {
-            if (!measuring || retained)
-                return;
-            {
-                const QJsonObject own = QJsonDocument::fromJson(payload)
-                                            .object()
-                                            .value(QStringLiteral("gateway"))
-                                            .toObject();
-                gatewayP50s.push_back(own.value(QStringLiteral("delayP50Ms")).toDouble());
-                gatewayP99
-                    = std::max(gatewayP99, own.value(QStringLiteral("delayP99Ms")).toDouble());
-                const std::optional<qint64> time
-                    = isoMs(QJsonDocument::fromJson(payload)
-                                .object()
-                                .value(QStringLiteral("time"))
-                                .toString()
-                                .toLatin1());
-                if (!own.contains(QStringLiteral("superseded")))
-                    supersededCounted = false;
-                const Counted now{time.value_or(0),
-                                  own.value(QStringLiteral("published")).toDouble(),
-                                  own.value(QStringLiteral("superseded")).toDouble()};
-                auto it = counted.find(topic);
-                if (it == counted.end())
-                    counted.emplace(topic, std::make_pair(now, now));
-                else
-                    it->second.second = now;
-            }
-        });
+    QObject::connect(&statisticsReader, &MqttClient::messageReceived,
+                     [&](const QString &topic, const QByteArray &payload, bool retained) {
+                         const QJsonObject object = QJsonDocument::fromJson(payload).object();
+                         const std::optional<qint64> time
+                             = isoMs(object.value(QStringLiteral("time")).toString().toLatin1());
+                         if (retained || !time || *time < windowStartMs)
+                             return;
+                         if (*time > windowEndMs) {
+                             pastWindow.insert(topic);
+                             return;
+                         }
+                         const QJsonObject own = object.value(QStringLiteral("gateway")).toObject();
+                         gatewayP50s.push_back(own.value(QStringLiteral("delayP50Ms")).toDouble());
+                         gatewayP99 = std::max(gatewayP99,
+                                               own.value(QStringLiteral("delayP99Ms")).toDouble());
+                         if (!own.contains(QStringLiteral("superseded")))
+                             supersededCounted = false;
+                         const Counted now{*time, own.value(QStringLiteral("published")).toDouble(),
+                                           own.value(QStringLiteral("superseded")).toDouble()};
+                         auto it = counted.find(topic);
+                         if (it == counted.end())
+                             counted.emplace(topic, std::make_pair(now, now));
+                         else
+                             it->second.second = now;
+                     });
     statisticsReader.open();
 
     QProcess gateway;
@@ -451,13 +452,18 @@ CaseResult runCase(int plcCount, int itemCount, int intervalMs, int seconds)
     const double brokerCpu0 = cpuSeconds(brokerPid);
     QElapsedTimer window;
     window.start();
+    windowStartMs = QDateTime::currentMSecsSinceEpoch();
     measuring = true;
     spin(seconds * 1000);
     measuring = false;
+    windowEndMs = QDateTime::currentMSecsSinceEpoch();
     const double elapsed = static_cast<double>(window.elapsed()) / 1000.0;
     const double cpuUsed = cpuSeconds(pid) - cpu0;
     result.cpuPercent = 100.0 * cpuUsed / elapsed;
     result.loadEnd = loadAverage();
+    result.brokerCpuPercent = 100.0 * (cpuSeconds(brokerPid) - brokerCpu0) / elapsed;
+    result.rssMiB = statusMiB(pid, "VmRSS");
+    result.peakRssMiB = statusMiB(pid, "VmHWM");
     // Changes the subscriber does not hold yet: their age now, a lower bound of their latency.
     const qint64 endUs = steadyUs();
     for (int p = 0; p < plcCount; ++p) {
@@ -470,6 +476,13 @@ CaseResult runCase(int plcCount, int itemCount, int intervalMs, int seconds)
     result.newestP50 = newest.percentile(0.50);
     result.newestP99 = newest.percentile(0.99);
     result.newestMax = newest.percentile(1.0);
+    {
+        // The statistics of the window's end (at most 5 s late).
+        QElapsedTimer late;
+        late.start();
+        while (static_cast<int>(pastWindow.size()) < plcCount && late.elapsed() < 5000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+    }
     double published = 0;
     double superseded = 0;
     double spanMs = 0;
@@ -486,9 +499,6 @@ CaseResult runCase(int plcCount, int itemCount, int intervalMs, int seconds)
         if (result.publishedPerSecond > 0)
             result.cpuUsPerMessage = cpuUsed / elapsed / result.publishedPerSecond * 1e6;
     }
-    result.brokerCpuPercent = 100.0 * (cpuSeconds(brokerPid) - brokerCpu0) / elapsed;
-    result.rssMiB = statusMiB(pid, "VmRSS");
-    result.peakRssMiB = statusMiB(pid, "VmHWM");
     stopMutators();
     gateway.terminate();
     gateway.waitForFinished(10000);
