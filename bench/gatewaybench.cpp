@@ -492,9 +492,11 @@ CaseResult runCase(int plcCount, int itemCount, int intervalMs, int seconds)
         spanMs += static_cast<double>(firstLast.second.timeMs - firstLast.first.timeMs);
     }
     if (!counted.empty() && spanMs > 0) {
-        const double span = spanMs / 1000.0 / static_cast<double>(counted.size());
-        result.publishedPerSecond = published / span;
-        result.supersededPerSecond = superseded / span;
+        // A link's rate over the time its statistics span, times the links (some may have
+        // sent only one statistics message in the window: no span, no rate of their own).
+        const double perLinkSeconds = spanMs / 1000.0;
+        result.publishedPerSecond = published / perLinkSeconds * plcCount;
+        result.supersededPerSecond = superseded / perLinkSeconds * plcCount;
         result.supersededCounted = supersededCounted;
         if (result.publishedPerSecond > 0)
             result.cpuUsPerMessage = cpuUsed / elapsed / result.publishedPerSecond * 1e6;
