@@ -59,6 +59,13 @@ public:
     int outstanding() const;
     // Retained QoS 0 messages replaced in the queue by a newer one for the same topic.
     quint64 superseded() const;
+    // At most `batches` batches of received messages on their way to this object's thread (0: no
+    // bound, the default). While that many wait, the network thread reads nothing more: the
+    // socket and then the broker hold the rest, and a broker drops QoS 0 messages beyond its queue
+    // limit (mosquitto: max_queued_messages), so a reader slower than the flood gets recent
+    // messages instead of an ever older backlog. Only for a reader that may lose QoS 0 messages
+    // (live values); a long stall also delays the keep-alive's answers. Set before open().
+    void setReceiveWindow(int batches);
 
 Q_SIGNALS:
     void connected();
