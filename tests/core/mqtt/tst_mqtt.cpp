@@ -99,6 +99,7 @@ private Q_SLOTS:
     void clientBurstArrivesWholeAndInOrder();
     void clientStalledBrokerKeepsNewestPerTopic();
     void publishPacketEncoding();
+    void clientReceiveWindowReadsOn();
 };
 
 void TestMqtt::brokerUrls_data()
@@ -935,6 +936,40 @@ void TestMqtt::publishPacketEncoding()
     }
     QVERIFY(MqttPacket::fitsPublish(QByteArray(0xFFFF, 't'), "x"));
     QVERIFY(!MqttPacket::fitsPublish(QByteArray(0x10000, 't'), "x"));
+}
+
+// A reader with a receive window of one batch (issue 35): the network thread stops reading while a
+// batch waits for this thread and reads on once it was taken. A burst that the broker keeps whole
+// (fewer than its 1000 queued messages) arrives whole and in order, in several batches.
+void TestMqtt::clientReceiveWindowReadsOn()
+{
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    MqttClient subscriber(settingsFor(broker));
+    subscriber.setReceiveWindow(1);
+    QList<int> received;
+    bool probed = false;
+    QObject::connect(&subscriber, &MqttClient::messageReceived,
+                     [&](const QString &, const QByteArray &payload, bool) {
+                         if (payload == "probe")
+                             probed = true;
+                         else
+                             received.append(payload.toInt());
+                     });
+    subscriber.subscribe(QStringLiteral("fatek/window"));
+    MqttClient publisher(settingsFor(broker));
+    QVERIFY(subscriber.open());
+    QVERIFY(publisher.open());
+    QTRY_VERIFY_WITH_TIMEOUT(publisher.isConnected(), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT((publisher.publish(QStringLiteral("fatek/window"), "probe"), probed),
+                             5000);
+    constexpr int Count = 500;
+    for (int i = 0; i < Count; ++i)
+        QVERIFY(publisher.publish(QStringLiteral("fatek/window"), QByteArray::number(i)));
+    QTRY_COMPARE_WITH_TIMEOUT(received.size(), Count, 10000);
+    for (int i = 0; i < Count; ++i)
+        QCOMPARE(received.at(i), i);
 }
 
 #include "tst_mqtt.moc"
