@@ -58,6 +58,7 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
             Item item;
             item.values = ItemValues(spec);
             item.topic = GatewayTopics::item(prefix, config.name, spec.station, spec.address);
+            item.topicId = m_publisher->retainedTopic(item.topic, 0);
             watched.append({m_items.size(), spec, table.intervalMs});
             m_itemOfTopic.insert(item.topic, m_items.size());
             m_items.push_back(std::move(item));
@@ -177,7 +178,8 @@ GatewayStatistics GatewayLink::statistics() const
     GatewayStatistics s = m_counters;
     const GatewayPublisher::Counters c = m_publisher->counters();
     s.published = c.published;
-    s.superseded = c.superseded + m_coalesced;
+    // Replaced in this link (before encoding), in the publisher and in the client's queue.
+    s.superseded = c.superseded + m_coalesced + m_client->superseded();
     s.repliesDropped = c.repliesDropped;
     s.waiting = static_cast<quint64>(m_publisher->waiting());
     s.delayP50Ms = m_delays.percentile(0.50);
@@ -253,13 +255,18 @@ void GatewayLink::publishNextDirty()
     publishItem(item);
 }
 
-void GatewayLink::publishItem(const Item &item)
+void GatewayLink::publishItem(Item &item)
 {
     m_delays.add(QDateTime::currentMSecsSinceEpoch() - item.time.toMSecsSinceEpoch());
+    // A good item's payload starts the same for every value: written once.
+    const bool good = item.quality == ValueQuality::Good;
+    if (good && item.goodHead.isEmpty())
+        item.goodHead = GatewayPayload::encodeItemHead(item.values, item.quality, {});
+    const QByteArray head
+        = good ? item.goodHead
+               : GatewayPayload::encodeItemHead(item.values, item.quality, item.error);
     m_publisher->publishRetained(
-        item.topic,
-        GatewayPayload::encodeItem(item.values, item.words, item.quality, item.time, item.error),
-        0);
+        item.topicId, GatewayPayload::encodeItem(head, item.values, item.words, item.time));
 }
 
 void GatewayLink::onLinkState(LinkState state, const Message &reason)

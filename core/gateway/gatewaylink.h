@@ -5,6 +5,7 @@
 #include "core/watch/itemassembler.h"
 #include "delayhistogram.h"
 #include "gatewayconfig.h"
+#include "gatewaypublisher.h"
 #include "gatewaystatistics.h"
 #include "homeassistantdiscovery.h"
 
@@ -20,7 +21,6 @@
 
 namespace Fatek {
 
-class GatewayPublisher;
 class MqttClient;
 class Session;
 
@@ -79,6 +79,8 @@ private:
     {
         ItemValues values;
         QString topic;
+        GatewayPublisher::TopicId topicId = 0; // the topic, named once to the publisher
+        QByteArray goodHead; // the payload's start while good (written at the first good value)
         std::vector<std::uint32_t> words; // empty until every element was read once
         ValueQuality quality = ValueQuality::Stale;
         Message error;
@@ -97,7 +99,7 @@ private:
     void markDirty(std::size_t index);
     void publishDirty();
     void publishNextDirty();
-    void publishItem(const Item &item);
+    void publishItem(Item &item);
     void publishStatus(GatewayPayload::LinkStatus state, const Message &reason);
     void publishStatistics();
     void refuse(GatewayPayload::Reply reply, const Message &why);

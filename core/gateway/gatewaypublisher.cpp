@@ -15,13 +15,35 @@ GatewayPublisher::GatewayPublisher(MqttClient *client, QObject *parent)
     connect(client, &MqttClient::disconnected, this, [this] { m_online = false; });
 }
 
+GatewayPublisher::TopicId GatewayPublisher::retainedTopic(const QString &topic, int qos)
+{
+    const auto found = m_topicIds.constFind(topic);
+    if (found != m_topicIds.cend()) {
+        m_retained[found.value()].qos = qos;
+        return found.value();
+    }
+    const TopicId id = m_retained.size();
+    m_retained.push_back({topic.toUtf8(), {}, qos, false, false});
+    m_topicIds.insert(topic, id);
+    return id;
+}
+
 void GatewayPublisher::publishRetained(const QString &topic, const QByteArray &payload, int qos)
 {
-    m_qos.insert(topic, qos);
-    if (m_dirty.contains(topic))
+    publishRetained(retainedTopic(topic, qos), payload);
+}
+
+void GatewayPublisher::publishRetained(TopicId topic, const QByteArray &payload)
+{
+    Retained &retained = m_retained[topic];
+    retained.payload = payload;
+    retained.set = true;
+    if (retained.dirty) {
         ++m_counters.superseded;
-    m_retained.insert(topic, payload);
-    m_dirty.insert(topic);
+    } else {
+        retained.dirty = true;
+        m_dirty.push_back(topic);
+    }
     flush();
 }
 
@@ -60,11 +82,12 @@ void GatewayPublisher::flush()
         m_replies.pop_front();
         ++m_counters.published;
     }
-    while (!m_dirty.isEmpty() && m_client->outstanding() < m_limits.maxOutstanding) {
-        const QString topic = *m_dirty.cbegin();
-        if (!m_client->publish(topic, m_retained.value(topic), m_qos.value(topic, 1), true))
+    while (!m_dirty.empty() && m_client->outstanding() < m_limits.maxOutstanding) {
+        Retained &retained = m_retained[m_dirty.front()];
+        if (!m_client->publishUtf8(retained.topic, retained.payload, retained.qos, true))
             return;
-        m_dirty.remove(topic);
+        retained.dirty = false;
+        m_dirty.pop_front();
         ++m_counters.published;
     }
     if (waiting() > 0 && !m_retry.isActive())
@@ -75,8 +98,13 @@ void GatewayPublisher::onConnected()
 {
     m_online = true;
     // The broker may have restarted without persistence: every retained topic goes again.
-    for (auto it = m_retained.cbegin(); it != m_retained.cend(); ++it)
-        m_dirty.insert(it.key());
+    for (TopicId id = 0; id < m_retained.size(); ++id) {
+        Retained &retained = m_retained[id];
+        if (retained.set && !retained.dirty) {
+            retained.dirty = true;
+            m_dirty.push_back(id);
+        }
+    }
     flush();
 }
 

@@ -9,6 +9,7 @@
 #include <QJsonObject>
 #include <QLocale>
 
+#include <charconv>
 #include <cmath>
 #include <limits>
 
@@ -18,17 +19,34 @@ namespace {
 
 QString timeText(const QDateTime &time)
 {
-    // One poll cycle's items share their time: format it once.
-    thread_local qint64 lastMs = std::numeric_limits<qint64>::min();
-    thread_local QString lastText;
     if (!time.isValid())
         return {};
+    return time.toUTC().toString(Qt::ISODateWithMs);
+}
+
+// The time as a JSON string ("...Z", quotes included; "" when invalid), as QJsonDocument writes
+// it. One poll cycle's items share their time: formatted once.
+QByteArray timeJson(const QDateTime &time)
+{
+    thread_local qint64 lastMs = std::numeric_limits<qint64>::min();
+    thread_local QByteArray lastText;
+    if (!time.isValid())
+        return QByteArrayLiteral("\"\"");
     const qint64 ms = time.toMSecsSinceEpoch();
     if (ms != lastMs) {
-        lastText = time.toUTC().toString(Qt::ISODateWithMs);
+        // ISO 8601 digits, '-', ':', '.', 'T', 'Z': nothing to escape.
+        lastText = '"' + time.toUTC().toString(Qt::ISODateWithMs).toLatin1() + '"';
         lastMs = ms;
     }
     return lastText;
+}
+
+template<typename Integer>
+void appendNumber(QByteArray &out, Integer value)
+{
+    char digits[24];
+    const std::to_chars_result end = std::to_chars(digits, digits + sizeof digits, value);
+    out.append(digits, end.ptr - digits);
 }
 
 QDateTime timeFrom(const QJsonValue &value)
@@ -154,7 +172,7 @@ void appendJsonValue(QByteArray &out, const QJsonValue &value)
             out += "null";
         else if (number == std::floor(number) && number >= -9223372036854775808.0
                  && number < 9223372036854775808.0)
-            out += QByteArray::number(static_cast<qint64>(number));
+            appendNumber(out, static_cast<qint64>(number));
         else
             out += QByteArray::number(number, 'g', QLocale::FloatingPointShortest);
         break;
@@ -191,16 +209,18 @@ QByteArray GatewayPayload::encodeItem(const ItemValues &item,
                                       const std::vector<std::uint32_t> &words, ValueQuality quality,
                                       const QDateTime &time, const Message &error)
 {
+    return encodeItem(encodeItemHead(item, quality, error), item, words, time);
+}
+
+QByteArray GatewayPayload::encodeItemHead(const ItemValues &item, ValueQuality quality,
+                                          const Message &error)
+{
     // Written as text directly, in exactly the form QJsonDocument writes (keys sorted, compact):
     // the gateway encodes one per item per change, and building a QJsonObject took most of the
     // gateway's time per message (docs/performance.md). tst_mqtt checks the bytes against Qt's.
     const WatchItemSpec &spec = item.item();
-    // No words: never read (a dead link from the start). No value is invented for it.
-    const bool read = !words.empty();
-    const std::uint64_t raw = item.join(words);
-    const QString text = read ? item.text(raw) : QString();
     QByteArray out;
-    out.reserve(320);
+    out.reserve(160);
     out += "{\"address\":";
     appendJsonString(out, QString::fromStdString(spec.address.toString()));
     if (quality != ValueQuality::Good && !error.empty()) {
@@ -214,23 +234,37 @@ QByteArray GatewayPayload::encodeItem(const ItemValues &item,
     out += ",\"quality\":";
     appendJsonString(out, qualityName(quality));
     out += ",\"station\":";
-    out += QByteArray::number(spec.station);
+    appendNumber(out, spec.station);
     out += ",\"swapWords\":";
     out += spec.swapWords ? "true" : "false";
+    return out;
+}
+
+QByteArray GatewayPayload::encodeItem(const QByteArray &head, const ItemValues &item,
+                                      const std::vector<std::uint32_t> &words,
+                                      const QDateTime &time)
+{
+    // No words: never read (a dead link from the start). No value is invented for it.
+    const bool read = !words.empty();
+    const std::uint64_t raw = item.join(words);
+    const QString text = read ? item.text(raw) : QString();
+    QByteArray out;
+    out.reserve(head.size() + 96 + 12 * static_cast<qsizetype>(words.size()) + 2 * text.size());
+    out += head;
     out += ",\"text\":";
     if (read)
         appendJsonString(out, text);
     else
         out += "null";
     out += ",\"time\":";
-    appendJsonString(out, timeText(time));
+    out += timeJson(time);
     out += ",\"value\":";
     appendJsonValue(out, read ? numericValue(item, raw, text) : QJsonValue(QJsonValue::Null));
     out += ",\"words\":[";
     for (std::size_t i = 0; i < words.size(); ++i) {
         if (i > 0)
             out += ',';
-        out += QByteArray::number(words[i]);
+        appendNumber(out, words[i]);
     }
     out += "]}";
     return out;

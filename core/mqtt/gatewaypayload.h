@@ -46,6 +46,13 @@ struct ItemValue
 // retained last value is never replaced by an invented 0).
 QByteArray encodeItem(const ItemValues &item, const std::vector<std::uint32_t> &words,
                       ValueQuality quality, const QDateTime &time, const Message &error);
+// The same in two parts: the head (address, error, format, name, quality, station, swapWords) is
+// the same for every value of an item while its quality and error stay, so the gateway writes it
+// once per item and only the rest per value. encodeItem(item, ...) ==
+// encodeItem(encodeItemHead(item, quality, error), item, words, time).
+QByteArray encodeItemHead(const ItemValues &item, ValueQuality quality, const Message &error);
+QByteArray encodeItem(const QByteArray &head, const ItemValues &item,
+                      const std::vector<std::uint32_t> &words, const QDateTime &time);
 // nullopt for anything that is not an item payload (a reader's garbage, another program's topic).
 std::optional<ItemValue> decodeItem(const QByteArray &payload);
 

@@ -2,9 +2,11 @@
 
 #include "core/session/crossthreadcall.h"
 #include "mqttmessages.h"
+#include "mqttpacket.h"
 #include "wakesocket.h"
 
 #include <QCoreApplication>
+#include <QHash>
 #include <QMetaObject>
 #include <QRandomGenerator>
 
@@ -108,14 +110,18 @@ struct MqttClientShared
     std::vector<std::pair<std::string, int>> newSubscriptions; // to subscribe on this link now
     struct Outgoing
     {
-        std::string topic;
+        QByteArray topic; // UTF-8
         QByteArray payload;
         int qos = 0;
         bool retain = false;
     };
     // Handed over by publish(), written by the network thread in one go: one wake-up per batch,
-    // not one per message (docs/performance.md).
+    // not one per message (docs/performance.md). Taken only while the library has nothing left to
+    // write: meanwhile a retained QoS 0 message replaces the one waiting for its topic
+    // (outboxIndex: where each such topic waits in the outbox).
     std::vector<Outgoing> outbox;
+    QHash<QByteArray, std::size_t> outboxIndex;
+    std::atomic<quint64> superseded{0};
     std::optional<Outgoing> will;
     Message openError;
     std::atomic<bool> connected{false};
@@ -133,6 +139,8 @@ struct MqttClientShared
         bool queued = false;
     };
     std::vector<Incoming> inbox;
+    std::atomic<int> receiveWindow{0};     // setReceiveWindow()
+    std::atomic<int> batchesOnTheirWay{0}; // posted by deliverInbox(), not yet emitted
     // Network thread only: what the library said went wrong in this connection attempt (its
     // TLS errors name the check that failed, "certificate verify failed"), and whether the
     // attempt's failure was reported already (a refusing CONNACK).
@@ -141,6 +149,16 @@ struct MqttClientShared
     // Network thread only: the broker resumed a persistent session; what it sends before the
     // answer to our SUBSCRIBE waited at the broker while this client was away.
     bool resumed = false;
+    // Network thread only: a batch of QoS 0 messages encoded here (MqttPacket) and written with
+    // one send() per batch, not one per message as the library does (issue 35: that send() was
+    // the gateway's largest cost per message). Only over plain TCP, and only while the library
+    // has nothing to write; while `raw` is not all written the library neither reads nor writes
+    // (its packets would land inside ours).
+    bool rawWrites = false;
+    QByteArray raw;
+    qsizetype rawSent = 0;
+    int rawMessages = 0;
+    std::chrono::steady_clock::time_point rawProgress;
 
     // CrossThreadCall: a queued call with the marks ThreadSanitizer needs to see the hand-over
     // (Debian's Qt is not built with TSan; a plain invokeMethod reads as a race).
@@ -162,6 +180,7 @@ struct MqttClientShared
     bool serve();
     void linkDown(int rc);
     void handOver(bool *stopping);
+    bool writeRaw();
     void deliverInbox();
     Message attemptMessage(const Message &general) const;
 };
@@ -193,6 +212,15 @@ void onConnect(struct mosquitto *mosq, void *userdata, int rc, int flags)
     }
     for (const auto &[filter, qos] : subscriptions)
         mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
+#ifndef _WIN32
+    // Issue 35: what the socket holds is a queue no newer state can replace; Linux grows it to
+    // 4 MB (seconds of small messages behind a slow broker). Bounded, the rest waits in the
+    // outbox, where it is coalesced. 256 KB still fills a 100 ms round trip at 2.5 MB/s.
+    if (const int sock = mosquitto_socket(mosq); sock >= 0) {
+        const int bytes = 256 * 1024;
+        ::setsockopt(sock, SOL_SOCKET, SO_SNDBUF, &bytes, sizeof bytes);
+    }
+#endif
     shared->connackSeen = true;
     shared->post([](MqttClient *client) { Q_EMIT client->connected(); });
 }
@@ -248,6 +276,7 @@ void MqttClientShared::linkDown(int rc)
         // gone (retained state is published again on the next connect).
         std::lock_guard lock(mutex);
         outbox.clear();
+        outboxIndex.clear();
         outstanding = 0;
         wasConnected = connected.exchange(false);
     }
@@ -283,9 +312,16 @@ void MqttClientShared::deliverInbox()
     if (inbox.empty())
         return;
     // One queued call per batch of received messages, not one per message.
-    post([batch = std::move(inbox)](MqttClient *client) {
+    ++batchesOnTheirWay;
+    // (The owner holds this object: it is there while the call runs.)
+    post([batch = std::move(inbox), shared = this](MqttClient *client) {
         for (const Incoming &in : batch)
             Q_EMIT client->messageReceived(in.topic, in.payload, in.retained, in.queued);
+        // The network thread may read again (setReceiveWindow()).
+        if (--shared->batchesOnTheirWay < shared->receiveWindow) {
+            std::lock_guard lock(shared->mutex);
+            shared->wakeUp();
+        }
     });
     inbox.clear();
 }
@@ -294,14 +330,45 @@ void MqttClientShared::handOver(bool *stopping)
 {
     std::vector<Outgoing> batch;
     std::vector<std::pair<std::string, int>> subscribe;
+    // While the socket has not taken what the library holds, the messages wait in the outbox,
+    // where a newer state of a topic replaces the older: the library's own queue (one packet
+    // after another, nothing replaced) holds at most one batch.
+    const bool libraryBusy = mosquitto_want_write(mosq) || !raw.isEmpty();
     {
         std::lock_guard lock(mutex);
-        batch.swap(outbox);
-        subscribe.swap(newSubscriptions);
         *stopping = stop;
+        // (Stopping, the rest goes through the library, after its own queue; not while our
+        // packets are half written: the DISCONNECT waits for them, the rest is dropped.)
+        if (!libraryBusy || (stop && raw.isEmpty())) {
+            batch.swap(outbox);
+            outboxIndex.clear();
+        }
+        if (raw.isEmpty()) // the library writes a SUBSCRIBE at once
+            subscribe.swap(newSubscriptions);
     }
     for (const auto &[filter, qos] : subscribe)
         mosquitto_subscribe(mosq, nullptr, filter.c_str(), qos);
+    if (batch.empty())
+        return;
+    // QoS 0 only (a QoS 1 message needs the library's packet id and acknowledgement): encoded
+    // here, written at once with one send().
+    const bool encodeHere
+        = rawWrites && !*stopping && !mosquitto_want_write(mosq)
+          && std::all_of(batch.cbegin(), batch.cend(), [](const Outgoing &out) {
+                 return out.qos == 0 && MqttPacket::fitsPublish(out.topic, out.payload);
+             });
+    if (encodeHere) {
+        qsizetype bytes = 0;
+        for (const Outgoing &out : batch)
+            bytes += out.topic.size() + out.payload.size() + 7;
+        raw.reserve(raw.size() + bytes);
+        for (const Outgoing &out : batch)
+            MqttPacket::appendPublishQos0(raw, out.topic, out.payload, out.retain);
+        rawMessages += static_cast<int>(batch.size());
+        rawProgress = std::chrono::steady_clock::now();
+        writeRaw();
+        return;
+    }
     // One batch, few segments: corked while it is written, sent at once when uncorked (the
     // socket has TCP_NODELAY, so a lone message is not held back waiting for an ACK either).
     const int sock = mosquitto_socket(mosq);
@@ -310,7 +377,7 @@ void MqttClientShared::handOver(bool *stopping)
         setCork(sock, true);
     for (const Outgoing &out : batch) {
         // Unthreaded, the library writes the packet now (or keeps it until the socket takes it).
-        const int rc = mosquitto_publish(mosq, nullptr, out.topic.c_str(),
+        const int rc = mosquitto_publish(mosq, nullptr, out.topic.constData(),
                                          static_cast<int>(out.payload.size()),
                                          out.payload.constData(), out.qos, out.retain);
         if (rc != MOSQ_ERR_SUCCESS && outstanding > 0)
@@ -320,9 +387,45 @@ void MqttClientShared::handOver(bool *stopping)
         setCork(sock, false);
 }
 
+// What the socket takes of `raw` now; false when the link broke.
+bool MqttClientShared::writeRaw()
+{
+#ifdef _WIN32
+    return true; // rawWrites is never set
+#else
+    const int sock = mosquitto_socket(mosq);
+    if (sock < 0)
+        return false;
+    while (rawSent < raw.size()) {
+        const ssize_t sent
+            = ::send(sock, raw.constData() + rawSent,
+                     static_cast<std::size_t>(raw.size() - rawSent), MSG_NOSIGNAL | MSG_DONTWAIT);
+        if (sent > 0) {
+            rawSent += sent;
+            rawProgress = std::chrono::steady_clock::now();
+            continue;
+        }
+        if (sent < 0 && errno == EINTR)
+            continue;
+        if (sent < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
+            return true;
+        return false;
+    }
+    // All written: the messages are out of this client, as the library's onPublish() says.
+    outstanding -= rawMessages;
+    raw.clear();
+    rawSent = 0;
+    rawMessages = 0;
+    return true;
+#endif
+}
+
 // Serves one connected link until it drops (false) or close() asks to stop (true).
 bool MqttClientShared::serve()
 {
+    raw.clear(); // what a broken link did not take is gone, as the library's queue is
+    rawSent = 0;
+    rawMessages = 0;
     for (;;) {
         bool stopping = false;
         handOver(&stopping);
@@ -330,7 +433,15 @@ bool MqttClientShared::serve()
         if (stopping) {
             // A clean DISCONNECT after what was handed over, so that the broker does not
             // publish the will.
-            if (connected && sock >= 0) {
+            for (int i = 0; i < 10 && !raw.isEmpty() && sock >= 0; ++i) {
+                pollfd out{socketOf(mosq), POLLOUT, 0};
+                WakeSocket::poll(&out, 1, 50);
+                if (!writeRaw())
+                    break;
+            }
+            // (A DISCONNECT inside a packet not all written would be garbage: the broker drops
+            // the link, and publishes the will.)
+            if (connected && sock >= 0 && raw.isEmpty()) {
                 mosquitto_disconnect(mosq);
                 for (int i = 0; i < 10 && mosquitto_socket(mosq) >= 0; ++i) {
                     pollfd out{socketOf(mosq), POLLOUT, 0};
@@ -344,10 +455,34 @@ bool MqttClientShared::serve()
         }
         if (sock < 0)
             return false;
-        pollfd fds[2]
-            = {{socketOf(mosq),
-                static_cast<short>(POLLIN | (mosquitto_want_write(mosq) ? POLLOUT : 0)), 0},
-               {waker.handle(), POLLIN, 0}};
+        if (!raw.isEmpty()) {
+            // Our packets first, nothing of the library's in between (no reading either: an
+            // answer it reads may make it write).
+            pollfd fds[2] = {{socketOf(mosq), POLLOUT, 0}, {waker.handle(), POLLIN, 0}};
+            if (WakeSocket::poll(fds, 2, 1000) < 0 && errno != EINTR)
+                return false;
+            if (fds[1].revents & POLLIN) {
+                std::lock_guard lock(mutex);
+                waker.drain();
+                wakePending = false;
+            }
+            if ((fds[0].revents & (POLLOUT | POLLERR | POLLHUP)) && !writeRaw())
+                return false;
+            // A broker that takes nothing for longer than the keep-alive allows is gone, as the
+            // library would decide without an answer to its PINGREQ.
+            if (!raw.isEmpty()
+                && std::chrono::steady_clock::now() - rawProgress
+                       > std::chrono::milliseconds(settings.keepAliveSec * 1500))
+                return false;
+            continue;
+        }
+        // Not reading while the owner's thread has a full window of batches still to take.
+        const bool reading = receiveWindow <= 0 || batchesOnTheirWay < receiveWindow;
+        pollfd fds[2] = {{socketOf(mosq),
+                          static_cast<short>((reading ? POLLIN : 0)
+                                             | (mosquitto_want_write(mosq) ? POLLOUT : 0)),
+                          0},
+                         {waker.handle(), POLLIN, 0}};
         // Keep-alive has a resolution of seconds: loop_misc() once a second is enough.
         if (WakeSocket::poll(fds, 2, 1000) < 0 && errno != EINTR)
             return false;
@@ -450,7 +585,7 @@ MqttBrokerSettings MqttClient::settings() const
 void MqttClient::setWill(const QString &topic, const QByteArray &payload, int qos, bool retain)
 {
     std::lock_guard lock(m_shared->mutex);
-    m_shared->will = MqttClientShared::Outgoing{topic.toStdString(), payload, qos, retain};
+    m_shared->will = MqttClientShared::Outgoing{topic.toUtf8(), payload, qos, retain};
 }
 
 void MqttClient::subscribe(const QString &filter, int qos)
@@ -533,9 +668,9 @@ bool MqttClient::open()
             mosquitto_tls_insecure_set(mosq, true);
     }
     if (will) {
-        if (const int rc
-            = mosquitto_will_set(mosq, will->topic.c_str(), static_cast<int>(will->payload.size()),
-                                 will->payload.constData(), will->qos, will->retain);
+        if (const int rc = mosquitto_will_set(mosq, will->topic.constData(),
+                                              static_cast<int>(will->payload.size()),
+                                              will->payload.constData(), will->qos, will->retain);
             rc != MOSQ_ERR_SUCCESS)
             return fail(rc);
     }
@@ -543,6 +678,9 @@ bool MqttClient::open()
         std::lock_guard lock(m_shared->mutex);
         m_shared->openError = {};
         m_shared->mosq = mosq;
+#ifndef _WIN32
+        m_shared->rawWrites = !s.tls; // with TLS only the library may write to the socket
+#endif
         m_shared->stop = false;
         m_shared->running = true;
     }
@@ -575,6 +713,7 @@ void MqttClient::close()
     m_shared->connected = false;
     m_shared->outstanding = 0;
     m_shared->outbox.clear();
+    m_shared->outboxIndex.clear();
     m_shared->wakePending = false;
 }
 
@@ -585,18 +724,48 @@ bool MqttClient::isConnected() const
 
 bool MqttClient::publish(const QString &topic, const QByteArray &payload, int qos, bool retain)
 {
+    return publishUtf8(topic.toUtf8(), payload, qos, retain);
+}
+
+bool MqttClient::publishUtf8(const QByteArray &topic, const QByteArray &payload, int qos,
+                             bool retain)
+{
     std::lock_guard lock(m_shared->mutex);
     if (!m_shared->connected || !m_shared->mosq)
         return false;
+    std::vector<MqttClientShared::Outgoing> &outbox = m_shared->outbox;
+    if (qos == 0 && retain) {
+        // A newer state of a topic still waiting here replaces it (in its place in the queue).
+        const auto at = m_shared->outboxIndex.constFind(topic);
+        if (at != m_shared->outboxIndex.cend()) {
+            outbox[at.value()].payload = payload;
+            ++m_shared->superseded;
+            return true;
+        }
+        m_shared->outboxIndex.insert(topic, outbox.size());
+    }
     ++m_shared->outstanding;
-    m_shared->outbox.push_back({topic.toStdString(), payload, qos, retain});
-    m_shared->wakeUp();
+    outbox.push_back({topic, payload, qos, retain});
+    // One wake-up when the queue turns non-empty: the network thread takes all of it at once (or,
+    // while the library is busy, comes back for it as soon as the socket took the rest).
+    if (outbox.size() == 1)
+        m_shared->wakeUp();
     return true;
 }
 
 int MqttClient::outstanding() const
 {
     return m_shared->outstanding;
+}
+
+quint64 MqttClient::superseded() const
+{
+    return m_shared->superseded;
+}
+
+void MqttClient::setReceiveWindow(int batches)
+{
+    m_shared->receiveWindow = batches;
 }
 
 } // namespace Fatek

@@ -44,9 +44,28 @@ public:
     bool isConnected() const;
     // Hands a message to the library; false when not connected (the caller keeps or drops it) or
     // the library refused it. QoS 0 or 1.
+    //
+    // Messages wait in this client's queue while the library still has packets the socket did not
+    // take (a slow or stalled broker): there a retained QoS 0 message replaces the one waiting for
+    // the same topic (only the newest state goes, superseded() counts the replaced ones), so that
+    // nothing but one batch waits in the library, and the queue holds at most one message per
+    // retained topic besides the rest.
     bool publish(const QString &topic, const QByteArray &payload, int qos = 0, bool retain = false);
+    // The same with the topic in UTF-8 (a caller that keeps its topics encoded: no conversion per
+    // message).
+    bool publishUtf8(const QByteArray &topic, const QByteArray &payload, int qos = 0,
+                     bool retain = false);
     // Messages handed over and not yet written to the socket: the caller's back-pressure.
     int outstanding() const;
+    // Retained QoS 0 messages replaced in the queue by a newer one for the same topic.
+    quint64 superseded() const;
+    // At most `batches` batches of received messages on their way to this object's thread (0: no
+    // bound, the default). While that many wait, the network thread reads nothing more: the
+    // socket and then the broker hold the rest, and a broker drops QoS 0 messages beyond its queue
+    // limit (mosquitto: max_queued_messages), so a reader slower than the flood gets recent
+    // messages instead of an ever older backlog. Only for a reader that may lose QoS 0 messages
+    // (live values); a long stall also delays the keep-alive's answers. Set before open().
+    void setReceiveWindow(int batches);
 
 Q_SIGNALS:
     void connected();

@@ -5,6 +5,7 @@
 #include "core/mqtt/messagejson.h"
 #include "core/mqtt/mqttclient.h"
 #include "core/mqtt/mqttmessages.h"
+#include "core/mqtt/mqttpacket.h"
 #include "core/watch/itemvalues.h"
 #include "core/watch/watchmessages.h"
 #include "mosquittobroker.h"
@@ -96,6 +97,9 @@ private Q_SLOTS:
     void clientStalledBrokerSaysKeepalive();
     void clientsDoNotReconnectInLockstep();
     void clientBurstArrivesWholeAndInOrder();
+    void clientStalledBrokerKeepsNewestPerTopic();
+    void publishPacketEncoding();
+    void clientReceiveWindowReadsOn();
 };
 
 void TestMqtt::brokerUrls_data()
@@ -486,6 +490,11 @@ void TestMqtt::itemPayloadIsQtsJson()
     const QJsonDocument document = QJsonDocument::fromJson(payload, &error);
     QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
     QCOMPARE(document.toJson(QJsonDocument::Compact), payload);
+    // The gateway's way: the head written once, the rest per value (issue 35).
+    QCOMPARE(GatewayPayload::encodeItem(
+                 GatewayPayload::encodeItemHead(item, static_cast<ValueQuality>(quality), why),
+                 item, words, QDateTime::fromMSecsSinceEpoch(1764111600123, Qt::UTC)),
+             payload);
     const auto decoded = GatewayPayload::decodeItem(payload);
     QVERIFY(decoded);
     QCOMPARE(decoded->name, name);
@@ -808,6 +817,157 @@ void TestMqtt::clientBurstArrivesWholeAndInOrder()
     const int scale = TestUtil::underWine() ? 3 : 1;
     QTRY_COMPARE_WITH_TIMEOUT(publisher.outstanding(), 0, 10000 * scale);
     QTRY_COMPARE_WITH_TIMEOUT(received.size(), Count, 20000 * scale);
+    for (int i = 0; i < Count; ++i)
+        QCOMPARE(received.at(i), i);
+}
+
+// Issue 35: a broker that stops reading (SIGSTOP) while retained QoS 0 states keep coming. Once
+// the socket holds all it takes, the states wait in the client's queue, where a newer state of a
+// topic replaces the one waiting (counted as superseded): the queue stops growing, and when the
+// broker reads again the newest state of every topic arrives, and fewer messages than were
+// published.
+void TestMqtt::clientStalledBrokerKeepsNewestPerTopic()
+{
+#ifndef Q_OS_UNIX
+    QSKIP("stopping the broker (SIGSTOP) has no Windows counterpart");
+#else
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    MqttClient subscriber(settingsFor(broker));
+    QHash<QString, QByteArray> last;
+    int received = 0;
+    bool probed = false;
+    QObject::connect(&subscriber, &MqttClient::messageReceived,
+                     [&](const QString &topic, const QByteArray &payload, bool) {
+                         if (payload == "probe") {
+                             probed = true;
+                             return;
+                         }
+                         ++received;
+                         last.insert(topic, payload.left(payload.indexOf('|')));
+                     });
+    subscriber.subscribe(QStringLiteral("fatek/stall/#"));
+    MqttClient publisher(settingsFor(broker));
+    QVERIFY(subscriber.open());
+    QVERIFY(publisher.open());
+    QTRY_VERIFY_WITH_TIMEOUT(publisher.isConnected(), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (publisher.publish(QStringLiteral("fatek/stall/probe"), "probe"), probed), 5000);
+
+    const auto pid = static_cast<pid_t>(broker.processId());
+    QVERIFY(pid > 0);
+    QCOMPARE(::kill(pid, SIGSTOP), 0);
+    auto resume = qScopeGuard([pid] { ::kill(pid, SIGCONT); });
+    constexpr int Topics = 5;
+    const QByteArray padding(32 * 1024, 'x'); // the socket's buffers fill after a few MB
+    const auto topicOf = [](int t) {
+        return QStringLiteral("fatek/stall/%1").arg(t);
+    };
+    int published = 0;
+    int round = 0;
+    const auto publishRound = [&] {
+        for (int t = 0; t < Topics; ++t) {
+            QVERIFY(
+                publisher.publish(topicOf(t), QByteArray::number(round) + '|' + padding, 0, true));
+            ++published;
+        }
+        ++round;
+    };
+    // Until the socket takes nothing more: what the network thread did not write in 20 ms stays.
+    bool stuck = false;
+    while (round < 5000 && !stuck) {
+        for (int i = 0; i < 20; ++i)
+            publishRound();
+        QTest::qWait(20);
+        stuck = publisher.outstanding() > 0 && publisher.superseded() >= 3 * Topics;
+    }
+    QVERIFY2(stuck, qPrintable(QStringLiteral("%1 rounds").arg(round)));
+    // Nothing more is queued however many states come: each replaces its topic's.
+    QTest::qWait(50);
+    const int outstanding = publisher.outstanding();
+    const quint64 superseded = publisher.superseded();
+    for (int i = 0; i < 100; ++i)
+        publishRound();
+    // (At most one message per topic more: the outbox may have been empty, the library holding
+    // the rest.)
+    QVERIFY2(publisher.outstanding() <= outstanding + Topics,
+             qPrintable(QStringLiteral("%1 -> %2").arg(outstanding).arg(publisher.outstanding())));
+    QVERIFY(publisher.superseded() >= superseded + 99 * Topics);
+
+    resume.dismiss();
+    QCOMPARE(::kill(pid, SIGCONT), 0);
+    const QByteArray newest = QByteArray::number(round - 1);
+    const auto allNewest = [&] {
+        for (int t = 0; t < Topics; ++t) {
+            if (last.value(topicOf(t)) != newest)
+                return false;
+        }
+        return true;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(allNewest(), 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(publisher.outstanding(), 0, 10000);
+    // Each superseded state was never sent; the rest arrived (QoS 0 over loopback: none lost).
+    QTRY_COMPARE_WITH_TIMEOUT(received, published - static_cast<int>(publisher.superseded()),
+                              10000);
+#endif
+}
+
+// The QoS 0 PUBLISH that MqttClient writes itself (MQTT 3.1.1, 3.3 and 2.2.3's length bytes).
+void TestMqtt::publishPacketEncoding()
+{
+    QByteArray out;
+    MqttPacket::appendPublishQos0(out, "a/b", "hi", true);
+    QCOMPARE(out, QByteArray("\x31\x07\x00\x03"
+                             "a/bhi",
+                             9));
+    out.clear();
+    MqttPacket::appendPublishQos0(out, "t", QByteArray(), false);
+    QCOMPARE(out, QByteArray("\x30\x03\x00\x01t", 5));
+    // The remaining length in 7-bit groups, least significant first: 127, 128, 16,383, 16,384.
+    for (const auto &[length, bytes] : {std::pair<int, QByteArray>{127, QByteArray("\x7f")},
+                                        {128, QByteArray("\x80\x01")},
+                                        {16383, QByteArray("\xff\x7f")},
+                                        {16384, QByteArray("\x80\x80\x01")}}) {
+        out.clear();
+        MqttPacket::appendPublishQos0(out, "t", QByteArray(length - 3, 'x'), false);
+        QCOMPARE(out.mid(1, bytes.size()), bytes);
+        QCOMPARE(out.size(), 1 + bytes.size() + length);
+    }
+    QVERIFY(MqttPacket::fitsPublish(QByteArray(0xFFFF, 't'), "x"));
+    QVERIFY(!MqttPacket::fitsPublish(QByteArray(0x10000, 't'), "x"));
+}
+
+// A reader with a receive window of one batch (issue 35): the network thread stops reading while a
+// batch waits for this thread and reads on once it was taken. A burst that the broker keeps whole
+// (fewer than its 1000 queued messages) arrives whole and in order, in several batches.
+void TestMqtt::clientReceiveWindowReadsOn()
+{
+    TestUtil::MosquittoBroker broker;
+    QString error;
+    QVERIFY2(broker.start(&error), qPrintable(error));
+    MqttClient subscriber(settingsFor(broker));
+    subscriber.setReceiveWindow(1);
+    QList<int> received;
+    bool probed = false;
+    QObject::connect(&subscriber, &MqttClient::messageReceived,
+                     [&](const QString &, const QByteArray &payload, bool) {
+                         if (payload == "probe")
+                             probed = true;
+                         else
+                             received.append(payload.toInt());
+                     });
+    subscriber.subscribe(QStringLiteral("fatek/window"));
+    MqttClient publisher(settingsFor(broker));
+    QVERIFY(subscriber.open());
+    QVERIFY(publisher.open());
+    QTRY_VERIFY_WITH_TIMEOUT(publisher.isConnected(), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT((publisher.publish(QStringLiteral("fatek/window"), "probe"), probed),
+                             5000);
+    constexpr int Count = 500;
+    for (int i = 0; i < Count; ++i)
+        QVERIFY(publisher.publish(QStringLiteral("fatek/window"), QByteArray::number(i)));
+    QTRY_COMPARE_WITH_TIMEOUT(received.size(), Count, 10000);
     for (int i = 0; i < Count; ++i)
         QCOMPARE(received.at(i), i);
 }
