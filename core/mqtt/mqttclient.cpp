@@ -455,17 +455,24 @@ bool MqttClientShared::serve()
         }
         if (sock < 0)
             return false;
-        if (!raw.isEmpty()) {
-            // Our packets first, nothing of the library's in between (no reading either: an
-            // answer it reads may make it write).
-            pollfd fds[2] = {{socketOf(mosq), POLLOUT, 0}, {waker.handle(), POLLIN, 0}};
-            if (WakeSocket::poll(fds, 2, 1000) < 0 && errno != EINTR)
-                return false;
-            if (fds[1].revents & POLLIN) {
-                std::lock_guard lock(mutex);
-                waker.drain();
-                wakePending = false;
-            }
+        // While our packets are not all written: they first, nothing of the library's in between
+        // (no reading either: an answer it reads may make it write). Otherwise not reading while
+        // the owner's thread has a full window of batches still to take.
+        const bool ours = !raw.isEmpty();
+        const bool reading = !ours && (receiveWindow <= 0 || batchesOnTheirWay < receiveWindow);
+        const bool writing = ours || mosquitto_want_write(mosq);
+        pollfd fds[2] = {{socketOf(mosq),
+                          static_cast<short>((reading ? POLLIN : 0) | (writing ? POLLOUT : 0)), 0},
+                         {waker.handle(), POLLIN, 0}};
+        // Keep-alive has a resolution of seconds: loop_misc() once a second is enough.
+        if (WakeSocket::poll(fds, 2, 1000) < 0 && errno != EINTR)
+            return false;
+        if (fds[1].revents & POLLIN) {
+            std::lock_guard lock(mutex);
+            waker.drain();
+            wakePending = false;
+        }
+        if (ours) {
             if ((fds[0].revents & (POLLOUT | POLLERR | POLLHUP)) && !writeRaw())
                 return false;
             // A broker that takes nothing for longer than the keep-alive allows is gone, as the
@@ -475,21 +482,6 @@ bool MqttClientShared::serve()
                        > std::chrono::milliseconds(settings.keepAliveSec * 1500))
                 return false;
             continue;
-        }
-        // Not reading while the owner's thread has a full window of batches still to take.
-        const bool reading = receiveWindow <= 0 || batchesOnTheirWay < receiveWindow;
-        pollfd fds[2] = {{socketOf(mosq),
-                          static_cast<short>((reading ? POLLIN : 0)
-                                             | (mosquitto_want_write(mosq) ? POLLOUT : 0)),
-                          0},
-                         {waker.handle(), POLLIN, 0}};
-        // Keep-alive has a resolution of seconds: loop_misc() once a second is enough.
-        if (WakeSocket::poll(fds, 2, 1000) < 0 && errno != EINTR)
-            return false;
-        if (fds[1].revents & POLLIN) {
-            std::lock_guard lock(mutex);
-            waker.drain();
-            wakePending = false;
         }
         if (fds[0].revents & (POLLIN | POLLERR | POLLHUP)) {
             // Everything the socket holds now (bounded), then one hand-over to the owner.

@@ -64,6 +64,36 @@ MqttBrokerSettings settingsFor(const TestUtil::MosquittoBroker &broker)
     return settings;
 }
 
+// A subscriber of one topic that collects its numbered payloads, and a publisher. start() opens
+// both and returns once a probe came through (the subscription is in place); the caller checks
+// QTest::currentTestFailed() after it.
+struct NumberedFeed
+{
+    explicit NumberedFeed(const TestUtil::MosquittoBroker &broker)
+        : subscriber(settingsFor(broker))
+        , publisher(settingsFor(broker))
+    {}
+    void start(const QString &topic)
+    {
+        QObject::connect(&subscriber, &MqttClient::messageReceived,
+                         [this](const QString &, const QByteArray &payload, bool) {
+                             if (payload == "probe")
+                                 probed = true;
+                             else
+                                 received.append(payload.toInt());
+                         });
+        subscriber.subscribe(topic);
+        QVERIFY(subscriber.open());
+        QVERIFY(publisher.open());
+        QTRY_VERIFY_WITH_TIMEOUT(publisher.isConnected(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT((publisher.publish(topic, "probe"), probed), 5000);
+    }
+    MqttClient subscriber;
+    MqttClient publisher;
+    QList<int> received;
+    bool probed = false;
+};
+
 } // namespace
 
 class TestMqtt : public QObject
@@ -786,24 +816,12 @@ void TestMqtt::clientBurstArrivesWholeAndInOrder()
     TestUtil::MosquittoBroker broker;
     QString error;
     QVERIFY2(broker.start(&error), qPrintable(error));
-    MqttClient subscriber(settingsFor(broker));
-    QList<int> received;
-    bool probed = false;
-    QObject::connect(&subscriber, &MqttClient::messageReceived,
-                     [&](const QString &, const QByteArray &payload, bool) {
-                         if (payload == "probe")
-                             probed = true;
-                         else
-                             received.append(payload.toInt());
-                     });
-    subscriber.subscribe(QStringLiteral("fatek/burst"));
-    MqttClient publisher(settingsFor(broker));
-    QVERIFY(subscriber.open());
-    QVERIFY(publisher.open());
-    // Subscribed once a probe comes through.
-    QTRY_VERIFY_WITH_TIMEOUT(publisher.isConnected(), 5000);
-    QTRY_VERIFY_WITH_TIMEOUT((publisher.publish(QStringLiteral("fatek/burst"), "probe"), probed),
-                             5000);
+    NumberedFeed feed(broker);
+    feed.start(QStringLiteral("fatek/burst"));
+    if (QTest::currentTestFailed())
+        return;
+    MqttClient &publisher = feed.publisher;
+    const QList<int> &received = feed.received;
 
     constexpr int Count = 20000;
     int peak = 0;
@@ -946,24 +964,13 @@ void TestMqtt::clientReceiveWindowReadsOn()
     TestUtil::MosquittoBroker broker;
     QString error;
     QVERIFY2(broker.start(&error), qPrintable(error));
-    MqttClient subscriber(settingsFor(broker));
-    subscriber.setReceiveWindow(1);
-    QList<int> received;
-    bool probed = false;
-    QObject::connect(&subscriber, &MqttClient::messageReceived,
-                     [&](const QString &, const QByteArray &payload, bool) {
-                         if (payload == "probe")
-                             probed = true;
-                         else
-                             received.append(payload.toInt());
-                     });
-    subscriber.subscribe(QStringLiteral("fatek/window"));
-    MqttClient publisher(settingsFor(broker));
-    QVERIFY(subscriber.open());
-    QVERIFY(publisher.open());
-    QTRY_VERIFY_WITH_TIMEOUT(publisher.isConnected(), 5000);
-    QTRY_VERIFY_WITH_TIMEOUT((publisher.publish(QStringLiteral("fatek/window"), "probe"), probed),
-                             5000);
+    NumberedFeed feed(broker);
+    feed.subscriber.setReceiveWindow(1);
+    feed.start(QStringLiteral("fatek/window"));
+    if (QTest::currentTestFailed())
+        return;
+    MqttClient &publisher = feed.publisher;
+    const QList<int> &received = feed.received;
     constexpr int Count = 500;
     for (int i = 0; i < Count; ++i)
         QVERIFY(publisher.publish(QStringLiteral("fatek/window"), QByteArray::number(i)));
