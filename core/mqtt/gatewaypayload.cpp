@@ -35,7 +35,7 @@ QByteArray timeJson(const QDateTime &time)
     const qint64 ms = time.toMSecsSinceEpoch();
     if (ms != lastMs) {
         // ISO 8601 digits, '-', ':', '.', 'T', 'Z': nothing to escape.
-        lastText = '"' + time.toUTC().toString(Qt::ISODateWithMs).toLatin1() + '"';
+        lastText = '"' + timeText(time).toLatin1() + '"';
         lastMs = ms;
     }
     return lastText;
