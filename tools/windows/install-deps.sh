@@ -13,8 +13,9 @@ packages=(
     nsis zip
     # apt-get source (dpkg-source), the serial test's pty pair, Qt's translations for the zip
     dpkg-dev socat qt6-translations-l10n
-    # a font for the offscreen platform under Wine (QT_QPA_FONTDIR in tools/windows/test.sh)
-    fonts-liberation
+    # fonts for the offscreen platform under Wine (QT_QPA_FONTDIR in tools/windows/test.sh),
+    # Latin and Traditional Chinese; the host's pdftotext reads the checkout reports back
+    fonts-liberation fonts-noto-cjk poppler-utils
 )
 sudo_cmd=()
 [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)

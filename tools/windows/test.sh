@@ -46,9 +46,11 @@ QT_PLUGIN_PATH=$(winepath -w "$prefix/plugins")
 export WINEPATH WINEQT_PLUGIN_PATH=$QT_PLUGIN_PATH WINEQT_QPA_PLATFORM=offscreen
 # The offscreen platform on Windows reads fonts only from QT_QPA_FONTDIR (default: the Qt
 # prefix's lib/fonts, absent), and without one draws every glyph as a box as wide as it is high.
-# Liberation Sans has the metrics of Arial, a Windows font.
+# Liberation Sans has the metrics of Arial, a Windows font; Noto Sans CJK stands in for Windows'
+# Chinese fonts (the zh_TW screens and reports).
 mkdir -p "$tmp/fonts"
 ln -s /usr/share/fonts/truetype/liberation/LiberationSans-*.ttf "$tmp/fonts/"
+ln -s /usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc "$tmp/fonts/"
 WINEQT_QPA_FONTDIR=$(winepath -w "$tmp/fonts")
 export WINEQT_QPA_FONTDIR
 # Qt's own translations (qtbase_zh_TW.qm, tst_ui_translation): QLibraryInfo looks beside the
