@@ -1734,8 +1734,8 @@
             <translation>Tested at</translation>
         </message>
         <message>
-            <source>%1 points: %2 passed, %3 failed, %4 skipped, %5 untested.</source>
-            <translation>%1 points: %2 passed, %3 failed, %4 skipped, %5 untested.</translation>
+            <source>%1 {1:point|points}: %2 passed, %3 failed, %4 skipped, %5 untested.</source>
+            <translation>%1 {1:point|points}: %2 passed, %3 failed, %4 skipped, %5 untested.</translation>
         </message>
         <message>
             <source>Summary</source>

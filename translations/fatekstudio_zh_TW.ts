@@ -1734,7 +1734,7 @@
             <translation>測試時間</translation>
         </message>
         <message>
-            <source>%1 points: %2 passed, %3 failed, %4 skipped, %5 untested.</source>
+            <source>%1 {1:point|points}: %2 passed, %3 failed, %4 skipped, %5 untested.</source>
             <translation>共 %1 點：%2 點合格，%3 點不合格，%4 點略過，%5 點未測試。</translation>
         </message>
         <message>

@@ -304,7 +304,7 @@ FATEK_MSG(ReportTested, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Tested at"))
 // %1 points in all, %2 passed, %3 failed, %4 skipped, %5 untested.
 FATEK_MSG(ReportSummary, 5,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "%1 points: %2 passed, %3 failed, %4 skipped, %5 untested."))
+                            "%1 {1:point|points}: %2 passed, %3 failed, %4 skipped, %5 untested."))
 FATEK_MSG(ReportSummaryTitle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Summary"))
 FATEK_MSG(ReportSignatures, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Signatures"))
 FATEK_MSG(ReportSignEngineer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Commissioning engineer"))
