@@ -39,20 +39,41 @@ mkdir -p "$work/src" "$prefix"
 
 fetch_sources() {
     # Module tarballs: checked against the sums that came with them.
-    (cd "$third" && sha256sum -c --quiet SHA256SUMS)
+    (cd "$third" && sha256sum -c --quiet SHA256SUMS) || return 1
     # qtbase and mosquitto from Debian's source packages: apt checks the .dsc against the signed
     # archive index, and here each tarball is checked against the .dsc's SHA-256.
     (cd "$work/src" && apt-get source --download-only qt6-base mosquitto >/dev/null 2>&1) ||
         { echo "apt-get source failed: is there a deb-src entry? (tools/windows/install-deps.sh)"; return 1; }
     local dsc file sum
     for dsc in "$work"/src/*.dsc; do
+        # (stage runs this with set -e off: every check returns by itself.)
         awk '/^Checksums-Sha256:/{on=1;next} /^[^ ]/{on=0} on{print $1"  "$3}' "$dsc" |
-            (cd "$work/src" && sha256sum -c --quiet -)
+            (cd "$work/src" && sha256sum -c --quiet -) || { echo "!! $dsc: a tarball's sum differs"; return 1; }
     done
     local t
     for t in "$work"/src/qt6-base_*.orig.tar.xz "$work"/src/mosquitto_*.orig.tar.gz \
              "$third"/qtserialport-*.tar.xz "$third"/qtsvg-*.tar.xz "$third"/qtcharts-*.tar.xz; do
-        tar xf "$t" -C "$work/src"
+        tar xf "$t" -C "$work/src" || return 1
+    done
+    # Debian's fixes, as the host's Linux Qt and libmosquitto have them; the orig tarballs alone
+    # would ship their holes in the Windows build. qtbase: its series' security entries (cve-*;
+    # the rest is Debian's own packaging). mosquitto: the whole series (security and client fixes
+    # such as 0017, a SUBACK without reason codes; most of it touches only the broker, not built).
+    apply_debian_patches "$work/src/qtbase-everywhere-src-6.4.2" "$work"/src/qt6-base_*.debian.tar.xz '^cve-' || return 1
+    apply_debian_patches "$work/src/mosquitto-2.0.11" "$work"/src/mosquitto_*.debian.tar.xz . || return 1
+}
+
+# Applies the patches of a Debian source package's series that match $3 (a grep pattern), in
+# order, to the source folder $1 ($2: the package's debian tarball); each one's name goes into the
+# stamp. (patch: dpkg-dev depends on it.)
+apply_debian_patches() {
+    local src=$1 debian=$2 pattern=$3 d p
+    d=$(mktemp -d "$work/src/debian.XXXXXX")
+    tar xf "$debian" -C "$d" || return 1
+    for p in $(grep -vE '^\s*(#|$)' "$d/debian/patches/series" | grep -E "$pattern"); do
+        patch -d "$src" -p1 --forward --quiet <"$d/debian/patches/$p" ||
+            { echo "!! $(basename "$debian"): $p does not apply"; return 1; }
+        applied+=("$p")
     done
 }
 
@@ -112,6 +133,7 @@ build_mosquitto() {
     cp "$work/build/mosquitto/lib/libmosquitto.dll.a" "$prefix/lib/"
 }
 
+applied=()
 stage "Windows: sources" fetch_sources
 collect_licences
 stage "Windows: libmosquitto" build_mosquitto
@@ -123,6 +145,7 @@ stage "Windows: qtcharts" build_module qtcharts
     echo "recipe $recipe"
     echo "built $(date -u +%Y-%m-%dT%H:%M:%SZ) with $(x86_64-w64-mingw32-g++-posix --version | head -1)"
     echo "qt 6.4.2 (qtbase from Debian's 6.4.2+dfsg-10 source, modules from $third), mosquitto 2.0.11 without TLS"
+    echo "Debian's patches applied: ${applied[*]}"
 } >"$stamp"
 rm -rf "$work"
 stage_total "tools/windows/build-qt.sh"

@@ -24,6 +24,7 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/fatek-wine.XXXXXX")
 cleanup() {
     [ -z "${socat_pid:-}" ] || kill "$socat_pid" 2>/dev/null || true
     [ -z "${sim_pid:-}" ] || kill "$sim_pid" 2>/dev/null || true
+    [ -z "${watch_pid:-}" ] || kill "$watch_pid" 2>/dev/null || true
     wineserver -k 2>/dev/null || true
     # A test that crashed leaves its Linux broker (tests/mosquittobroker.cpp) behind.
     pkill -f "mosquitto -c $WINEPREFIX/" 2>/dev/null || true
@@ -62,8 +63,32 @@ printf '[Paths]\nPrefix = %s\nTranslations = %s\n' "$(winepath -w "$prefix" | tr
 # The tests Wine cannot run: first column of each line that is not a comment.
 skip=$({ grep -vE '^\s*(#|$)' tools/windows/wine-skip.txt || true; } | awk '{print $1}' | paste -sd'|')
 echo "== not run under Wine (tools/windows/wine-skip.txt): ${skip//|/ }"
+# A test program that hangs under Wine leaves no trace of why in CTest's timeout (it happened
+# once, 2026-11-28: tst_delivery printed its totals, then ran into the 300 s timeout in a suite
+# run; alone it passes in 27 s). So a program still running after 150 s gets its threads' kernel
+# wait channels, and every process that holds its output pipe, written to the log once.
+watch_hangs() {
+    local p pipe q seen=" "
+    while sleep 20; do
+        for p in $(pgrep -f "$PWD/$build/tests/.*\.exe" || true); do
+            [ "$(ps -o etimes= -p "$p" 2>/dev/null || echo 0)" -gt 150 ] && [[ $seen != *" $p "* ]] || continue
+            seen+="$p "
+            echo "== still running after 150 s: $(ps -o args= -p "$p" | cut -c1-120)"
+            ps -L -o tid=,stat=,wchan:32=,comm= -p "$p" | sed 's/^/   thread /'
+            pipe=$(readlink "/proc/$p/fd/1" 2>/dev/null || true)
+            for q in $(pgrep -f 'wine|\.exe' || true); do
+                [ "$q" != "$p" ] && ls -l "/proc/$q/fd" 2>/dev/null | grep -qF "$pipe" &&
+                    echo "   its output $pipe is also held by $q: $(ps -o args= -p "$q" | cut -c1-80)"
+            done
+        done
+    done
+}
+watch_hangs &
+watch_pid=$!
 stage "Wine: test suite" ctest --test-dir $build -j "$(nproc 2>/dev/null || echo 2)" \
-    --output-on-failure --timeout 300 ${skip:+-E "^($skip)\$"} "$@"
+    --output-on-failure --timeout 300 ${skip:+-E "^($skip)\$"} "$@" || suite_status=$?
+kill "$watch_pid" 2>/dev/null || true
+[ -z "${suite_status:-}" ] || exit "$suite_status"
 
 serial_test() {
     socat pty,raw,echo=0,link="$tmp/a" pty,raw,echo=0,link="$tmp/b" 2>"$tmp/socat.log" &
