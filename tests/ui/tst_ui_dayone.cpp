@@ -20,7 +20,9 @@
 #include "uitestutil.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -425,6 +427,67 @@ private Q_SLOTS:
     // Issue 32: the connection dialog takes the link as a URL (as fatek-cli --link does): typed,
     // it fills the fields; a bad one is refused with the reason and nothing connects; the
     // recent entry and the Connections list show the URL to copy into a script.
+    // Every kind of link's rows line up with the rest of the form (the TCP page's Host and Port
+    // used to sit 21 px left of the others, in a form of their own), and only the chosen kind's
+    // rows show.
+    void connectionDialogFieldsLineUp()
+    {
+        MainWindow window;
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QStringList seen;
+        answerModal(
+            [&] { QTest::keyClick(&window, Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier); },
+            [&](QWidget *widget) {
+                auto *dialog = qobject_cast<ConnectionDialog *>(widget);
+                QVERIFY(dialog);
+                auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("linkKindCombo"));
+                auto *name = dialog->findChild<QLineEdit *>(QStringLiteral("connectionNameEdit"));
+                QVERIFY(kind && name);
+                // Home, then Down through the list, as a user steps through the combo's kinds.
+                QTest::mouseClick(name, Qt::LeftButton);
+                QTest::keyClick(name, Qt::Key_Tab); // to the Link combo
+                QCOMPARE(QApplication::focusWidget(), kind);
+                QTest::keyClick(kind, Qt::Key_Home);
+                for (int i = 0; i < kind->count(); ++i) {
+                    if (i > 0)
+                        QTest::keyClick(kind, Qt::Key_Down);
+                    QCOMPARE(kind->currentIndex(), i);
+                    QTest::qWait(50);
+                    auto *form = qobject_cast<QFormLayout *>(dialog->layout()->itemAt(0)->layout());
+                    QVERIFY(form);
+                    QStringList labels;
+                    for (int row = 0; row < form->rowCount(); ++row) {
+                        QLayoutItem *label = form->itemAt(row, QFormLayout::LabelRole);
+                        QLayoutItem *field = form->itemAt(row, QFormLayout::FieldRole);
+                        if (!label || !field || !label->widget() || !label->widget()->isVisible())
+                            continue;
+                        labels << qobject_cast<QLabel *>(label->widget())->text();
+                        QCOMPARE(field->geometry().left(), name->geometry().left());
+                    }
+                    seen << labels.join(u',');
+                }
+                QTest::keyClick(dialog, Qt::Key_Escape);
+            });
+        QCOMPARE(seen.size(), 4);
+        // Serial: its port and framing, no host; TCP and UDP: host and port; the gateway: its
+        // broker.
+        QVERIFY2(seen[0].contains(QLatin1String("&Baud rate:"))
+                     && !seen[0].contains(QLatin1String("&Host:")),
+                 qPrintable(seen[0]));
+        for (int tcpOrUdp : {1, 2}) {
+            QVERIFY2(seen[tcpOrUdp].contains(QLatin1String("&Host:"))
+                         && !seen[tcpOrUdp].contains(QLatin1String("&Baud rate:"))
+                         && !seen[tcpOrUdp].contains(QLatin1String("&Broker:")),
+                     qPrintable(seen[tcpOrUdp]));
+        }
+        QVERIFY2(seen[3].contains(QLatin1String("&Broker:"))
+                     && !seen[3].contains(QLatin1String("&Host:"))
+                     && !seen[3].contains(QLatin1String("Pro&tocol:")),
+                 qPrintable(seen[3]));
+    }
+
     void connectionDialogTakesAUrl()
     {
         Plc plc;

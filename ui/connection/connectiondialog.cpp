@@ -12,7 +12,6 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QStackedWidget>
 #include <QVBoxLayout>
 
 namespace Fatek {
@@ -69,88 +68,95 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
                          "serial:///dev/ttyUSB0?baud=19200&format=7E1): type or paste one to "
                          "fill the fields; it follows them."));
 
-    // Serial page
-    auto *serialPage = new QWidget(this);
-    auto *serialForm = new QFormLayout(serialPage);
-    serialForm->setContentsMargins(0, 0, 0, 0);
-    m_portName = new QComboBox(serialPage);
+    auto *form = m_form = new QFormLayout;
+    form->addRow(tr("Re&cent:"), m_recentCombo);
+    form->addRow(tr("&Name:"), m_name);
+    form->addRow(tr("&Link:"), m_kind);
+    form->addRow(tr("&URL:"), m_url);
+
+    // Each kind of link has its rows in this one form, so that every label lines up with the
+    // others (a form of their own, in a stack, set its fields apart); updateKind() shows the
+    // chosen kind's rows.
+    // Serial rows
+    m_kindRows[serialRows].first = form->rowCount();
+    m_portName = new QComboBox(this);
     m_portName->setEditable(true);
-    auto *refresh = new QPushButton(tr("Refresh"), serialPage);
+    auto *refresh = new QPushButton(tr("Refresh"), this);
     auto *portRow = new QHBoxLayout;
     portRow->addWidget(m_portName, 1);
     portRow->addWidget(refresh);
-    serialForm->addRow(tr("&Port:"), portRow);
-    m_baudRate = new QComboBox(serialPage);
+    form->addRow(tr("&Port:"), portRow);
+    m_baudRate = new QComboBox(this);
     m_baudRate->setEditable(true);
     for (int baud : {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600})
         m_baudRate->addItem(QString::number(baud), baud);
-    serialForm->addRow(tr("&Baud rate:"), m_baudRate);
-    m_dataBits = comboOf({{QStringLiteral("7"), 7}, {QStringLiteral("8"), 8}}, serialPage);
-    serialForm->addRow(tr("&Data bits:"), m_dataBits);
+    form->addRow(tr("&Baud rate:"), m_baudRate);
+    m_dataBits = comboOf({{QStringLiteral("7"), 7}, {QStringLiteral("8"), 8}}, this);
+    form->addRow(tr("&Data bits:"), m_dataBits);
     m_parity = comboOf({{tr("None"), int(LinkSettings::Parity::None)},
                         {tr("Even"), int(LinkSettings::Parity::Even)},
                         {tr("Odd"), int(LinkSettings::Parity::Odd)}},
-                       serialPage);
-    serialForm->addRow(tr("Pa&rity:"), m_parity);
-    m_stopBits = comboOf({{QStringLiteral("1"), 1}, {QStringLiteral("2"), 2}}, serialPage);
-    serialForm->addRow(tr("&Stop bits:"), m_stopBits);
+                       this);
+    form->addRow(tr("Pa&rity:"), m_parity);
+    m_stopBits = comboOf({{QStringLiteral("1"), 1}, {QStringLiteral("2"), 2}}, this);
+    form->addRow(tr("&Stop bits:"), m_stopBits);
     m_flowControl = comboOf({{tr("None"), int(LinkSettings::FlowControl::None)},
                              {tr("Hardware (RTS/CTS)"), int(LinkSettings::FlowControl::Hardware)},
                              {tr("Software (XON/XOFF)"), int(LinkSettings::FlowControl::Software)}},
-                            serialPage);
-    serialForm->addRow(tr("&Flow control:"), m_flowControl);
+                            this);
+    form->addRow(tr("&Flow control:"), m_flowControl);
 
-    // Network page
-    auto *netPage = new QWidget(this);
-    auto *netForm = new QFormLayout(netPage);
-    netForm->setContentsMargins(0, 0, 0, 0);
-    m_host = new QLineEdit(netPage);
-    netForm->addRow(tr("&Host:"), m_host);
-    m_port = new QSpinBox(netPage);
+    m_kindRows[serialRows].second = form->rowCount();
+
+    // Network rows
+    m_kindRows[networkRows].first = form->rowCount();
+    m_host = new QLineEdit(this);
+    form->addRow(tr("&Host:"), m_host);
+    m_port = new QSpinBox(this);
     m_port->setRange(1, 65535);
-    netForm->addRow(tr("P&ort:"), m_port);
+    form->addRow(tr("P&ort:"), m_port);
 
-    // Gateway page: the PLCs are watched through a fatek-gateway's topics on a broker.
-    auto *gatewayPage = new QWidget(this);
-    auto *gatewayForm = new QFormLayout(gatewayPage);
-    gatewayForm->setContentsMargins(0, 0, 0, 0);
-    m_brokerUrl = new QLineEdit(gatewayPage);
+    m_kindRows[networkRows].second = form->rowCount();
+
+    // Gateway rows: the PLCs are watched through a fatek-gateway's topics on a broker.
+    m_kindRows[gatewayRows].first = form->rowCount();
+    m_brokerUrl = new QLineEdit(this);
     m_brokerUrl->setObjectName(QStringLiteral("brokerUrlEdit"));
     m_brokerUrl->setPlaceholderText(QStringLiteral("mqtt://broker:1883"));
     m_brokerUrl->setToolTip(tr("mqtt://host:port, or mqtts://host:port for TLS"));
-    gatewayForm->addRow(tr("&Broker:"), m_brokerUrl);
-    m_prefix = new QLineEdit(gatewayPage);
+    form->addRow(tr("&Broker:"), m_brokerUrl);
+    m_prefix = new QLineEdit(this);
     m_prefix->setObjectName(QStringLiteral("gatewayPrefixEdit"));
-    gatewayForm->addRow(tr("Topic &prefix:"), m_prefix);
-    m_gatewayName = new QLineEdit(gatewayPage);
+    form->addRow(tr("Topic &prefix:"), m_prefix);
+    m_gatewayName = new QLineEdit(this);
     m_gatewayName->setObjectName(QStringLiteral("gatewayNameEdit"));
     m_gatewayName->setPlaceholderText(tr("e.g. line1"));
     m_gatewayName->setToolTip(tr("The connection's name in the gateway's configuration"));
-    gatewayForm->addRow(tr("&Gateway connection:"), m_gatewayName);
-    m_brokerUser = new QLineEdit(gatewayPage);
+    form->addRow(tr("&Gateway connection:"), m_gatewayName);
+    m_brokerUser = new QLineEdit(this);
     m_brokerUser->setObjectName(QStringLiteral("brokerUserEdit"));
     m_brokerUser->setPlaceholderText(tr("optional"));
-    gatewayForm->addRow(tr("&User:"), m_brokerUser);
-    m_brokerPassword = new QLineEdit(gatewayPage);
+    form->addRow(tr("&User:"), m_brokerUser);
+    m_brokerPassword = new QLineEdit(this);
     m_brokerPassword->setObjectName(QStringLiteral("brokerPasswordEdit"));
     m_brokerPassword->setEchoMode(QLineEdit::Password);
     m_brokerPassword->setPlaceholderText(tr("optional; not saved"));
-    gatewayForm->addRow(tr("Pass&word:"), m_brokerPassword);
+    form->addRow(tr("Pass&word:"), m_brokerPassword);
     // A TLS file: its path typed or picked, with a label that has a buddy (a row of a layout gets
     // none from addRow, and without one the label shows its "&" as text).
     const auto addFileRow
         = [&](const QString &label, const QString &objectName, const QString &placeholder,
               const QString &pickTitle, const QString &filter) {
-              auto *edit = new QLineEdit(gatewayPage);
+              auto *edit = new QLineEdit(this);
               edit->setObjectName(objectName);
               edit->setPlaceholderText(placeholder);
-              auto *browse = new QPushButton(tr("Browse…"), gatewayPage);
+              auto *browse = new QPushButton(tr("Browse…"), this);
               auto *row = new QHBoxLayout;
               row->addWidget(edit, 1);
               row->addWidget(browse);
-              auto *rowLabel = new QLabel(label, gatewayPage);
+              auto *rowLabel = new QLabel(label, this);
               rowLabel->setBuddy(edit);
-              gatewayForm->addRow(rowLabel, row);
+              form->addRow(rowLabel, row);
               connect(browse, &QPushButton::clicked, this, [this, edit, pickTitle, filter] {
                   const QString file
                       = QFileDialog::getOpenFileName(this, pickTitle, edit->text(), filter);
@@ -169,10 +175,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
                            tr("with the client certificate"), tr("Client Key"),
                            tr("Keys (*.key *.pem);;All files (*)"));
 
-    m_pages = new QStackedWidget(this);
-    m_pages->addWidget(serialPage);
-    m_pages->addWidget(netPage);
-    m_pages->addWidget(gatewayPage);
+    m_kindRows[gatewayRows].second = form->rowCount();
 
     m_protocol = comboOf({{tr("FACON (ASCII)"), int(LinkSettings::ProtocolChoice::Facon)},
                           {tr("Binary"), int(LinkSettings::ProtocolChoice::Binary)},
@@ -187,12 +190,6 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_retries = new QSpinBox(this);
     m_retries->setRange(0, 10);
 
-    auto *form = m_form = new QFormLayout;
-    form->addRow(tr("Re&cent:"), m_recentCombo);
-    form->addRow(tr("&Name:"), m_name);
-    form->addRow(tr("&Link:"), m_kind);
-    form->addRow(tr("&URL:"), m_url);
-    form->addRow(m_pages);
     form->addRow(tr("Pro&tocol:"), m_protocol);
     form->addRow(tr("S&tation:"), m_station);
     form->addRow(tr("T&imeout:"), m_timeout);
@@ -256,14 +253,13 @@ bool ConnectionDialog::isGateway() const
 void ConnectionDialog::updateKind()
 {
     const auto kind = static_cast<LinkSettings::Kind>(m_kind->currentData().toInt());
-    m_pages->setCurrentIndex(isGateway() ? 2 : kind == LinkSettings::Kind::Serial ? 0 : 1);
-    // A stack is as tall as its tallest page: only the page shown counts, so TCP's two rows are
-    // not followed by the empty room of the serial page's six.
-    for (int i = 0; i < m_pages->count(); ++i)
-        m_pages->widget(i)->setSizePolicy(QSizePolicy::Preferred, i == m_pages->currentIndex()
-                                                                      ? QSizePolicy::Preferred
-                                                                      : QSizePolicy::Ignored);
-    m_pages->updateGeometry();
+    const std::size_t shown = isGateway()                          ? gatewayRows
+                              : kind == LinkSettings::Kind::Serial ? serialRows
+                                                                   : networkRows;
+    for (std::size_t kindRows = 0; kindRows < m_kindRows.size(); ++kindRows) {
+        for (int row = m_kindRows[kindRows].first; row < m_kindRows[kindRows].second; ++row)
+            m_form->setRowVisible(row, kindRows == shown);
+    }
     // The gateway has its own protocol, timeout and retries per PLC link.
     for (QWidget *row : {static_cast<QWidget *>(m_url), static_cast<QWidget *>(m_protocol),
                          static_cast<QWidget *>(m_timeout), static_cast<QWidget *>(m_retries)})

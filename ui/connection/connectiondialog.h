@@ -4,13 +4,15 @@
 
 #include <QDialog>
 
+#include <array>
+#include <utility>
+
 class QComboBox;
 class QDialogButtonBox;
 class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
-class QStackedWidget;
 
 namespace Fatek {
 
@@ -49,7 +51,6 @@ private:
     QLineEdit *m_url;
     bool m_settingFields = false;
     QComboBox *m_kind;
-    QStackedWidget *m_pages;
     QComboBox *m_portName;
     QComboBox *m_baudRate;
     QComboBox *m_dataBits;
@@ -67,6 +68,9 @@ private:
     QLineEdit *m_certFile;
     QLineEdit *m_keyFile;
     QFormLayout *m_form;
+    // The form's rows of each kind of link: [first, end).
+    enum KindRows { serialRows, networkRows, gatewayRows };
+    std::array<std::pair<int, int>, 3> m_kindRows{};
     QComboBox *m_protocol;
     QSpinBox *m_station;
     QSpinBox *m_timeout;
