@@ -22,6 +22,7 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QFormLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -37,6 +38,7 @@
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -317,6 +319,42 @@ private Q_SLOTS:
                                     .arg(shown.bottom())
                                     .arg(scroll->viewport()->height())));
         }
+    }
+
+    // Raw console opened with its shortcut on a laptop: several rows of traffic under its
+    // controls (it showed one at 800 px), and the watch table keeps rows of its own.
+    void consoleShowsTrafficRows()
+    {
+        QVERIFY(openDemo());
+        QTest::keyClick(m_window.get(), Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+        auto *dock = m_window->findChild<QDockWidget *>(QStringLiteral("rawConsoleDock"));
+        QVERIFY(dock);
+        QTRY_VERIFY(dock->isVisible() && !dock->visibleRegion().isEmpty());
+        auto *traffic = dock->findChild<QTableView *>(QStringLiteral("trafficView"));
+        QVERIFY(traffic);
+        QTRY_VERIFY_WITH_TIMEOUT(traffic->model()->rowCount() >= 8, longWait);
+        QTest::qWait(200);
+        const int rowHeight = traffic->verticalHeader()->defaultSectionSize();
+        QVERIFY2(traffic->viewport()->height() >= 5 * rowHeight,
+                 qPrintable(QStringLiteral("traffic shows %1 px, a row is %2 px")
+                                .arg(traffic->viewport()->height())
+                                .arg(rowHeight)));
+        auto *scroll = m_window->findChild<QScrollArea *>(QStringLiteral("rawConsoleDockScroll"));
+        QVERIFY(scroll);
+        const QRect shown(traffic->mapTo(scroll->viewport(), QPoint(0, 0)), traffic->size());
+        QVERIFY2(scroll->viewport()->rect().contains(shown),
+                 qPrintable(QStringLiteral("the traffic at y %1..%2, the console shows 0..%3")
+                                .arg(shown.top())
+                                .arg(shown.bottom())
+                                .arg(scroll->viewport()->height())));
+        auto *watch = m_window->centralWidget()->findChild<QTableView *>();
+        QVERIFY(watch);
+        QVERIFY2(
+            watch->viewport()->height() >= 5 * watch->verticalHeader()->defaultSectionSize(),
+            qPrintable(
+                QStringLiteral("the watch table shows %1 px").arg(watch->viewport()->height())));
+        QVERIFY2(misplacedControls(m_window.get()).isEmpty(),
+                 qPrintable(report(misplacedControls(m_window.get()))));
     }
 
     // Program dialog: a sensible size that stays while it works; its title is not cut.

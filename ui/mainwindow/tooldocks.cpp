@@ -19,6 +19,8 @@
 #include <QMenu>
 #include <QScrollArea>
 
+#include <algorithm>
+
 namespace Fatek {
 
 ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu, QMenu *viewMenu)
@@ -50,6 +52,14 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
                 window->resizeDocks(
                     {dock}, {dock->width() - scroll->viewport()->width() + scroll->wholeWidth()},
                     Qt::Horizontal);
+            // A bottom dock opens tall enough for its tool, up to 45 % of the window: at 800 px
+            // the raw console showed one row of traffic under its controls.
+            const int wanted = std::min(scroll->usefulHeight(), window->height() * 45 / 100);
+            if (!dock->isFloating()
+                && (side == Qt::BottomDockWidgetArea || side == Qt::TopDockWidgetArea)
+                && scroll->viewport()->height() < wanted)
+                window->resizeDocks(
+                    {dock}, {dock->height() - scroll->viewport()->height() + wanted}, Qt::Vertical);
         });
         window->addDockWidget(area, dock);
         QAction *action = dockAction(dock, shortcut, window);

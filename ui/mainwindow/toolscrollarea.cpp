@@ -19,4 +19,9 @@ int ToolScrollArea::wholeWidth() const
            + 2 * frameWidth();
 }
 
+int ToolScrollArea::usefulHeight() const
+{
+    return widget()->sizeHint().height() + 2 * frameWidth();
+}
+
 } // namespace Fatek

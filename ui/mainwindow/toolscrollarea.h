@@ -17,6 +17,9 @@ public:
     explicit ToolScrollArea(QWidget *tool, QWidget *parent = nullptr);
 
     int wholeWidth() const;
+    // How tall the dock's contents are when the tool shows at its own size hint (the raw
+    // console: its controls and a few rows of traffic); ToolDocks opens a bottom dock that tall.
+    int usefulHeight() const;
 };
 
 } // namespace Fatek
