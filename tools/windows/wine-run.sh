@@ -9,8 +9,19 @@
 # (2 of 3 loaded suite runs, 2026-11-28). A file has no reader to keep waiting.
 set -u
 err=$(mktemp "${TMPDIR:-/tmp}/wine-run.XXXXXX")
+# In the background so that a TERM or INT (ref_check_sim stopping fatek-sim, CTest's timeout)
+# reaches the program as it did when CTest ran wine itself; stdin stays the caller's.
+wine "$@" 2>"$err" <&0 &
+pid=$!
+trap 'kill -TERM "$pid" 2>/dev/null' TERM
+trap 'kill -INT "$pid" 2>/dev/null' INT
 status=0
-wine "$@" 2>"$err" || status=$?
+wait "$pid" || status=$?
+# A trapped signal ends the wait early: wait for the program itself.
+while kill -0 "$pid" 2>/dev/null; do
+    status=0
+    wait "$pid" || status=$?
+done
 cat "$err" >&2
 # The trace of a child that outlived the program: who still has the file open.
 for p in $(pgrep -f '\.exe' || true); do
