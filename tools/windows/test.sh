@@ -63,10 +63,10 @@ printf '[Paths]\nPrefix = %s\nTranslations = %s\n' "$(winepath -w "$prefix" | tr
 # The tests Wine cannot run: first column of each line that is not a comment.
 skip=$({ grep -vE '^\s*(#|$)' tools/windows/wine-skip.txt || true; } | awk '{print $1}' | paste -sd'|')
 echo "== not run under Wine (tools/windows/wine-skip.txt): ${skip//|/ }"
-# A test program that hangs under Wine leaves no trace of why in CTest's timeout (it happened
-# once, 2026-11-28: tst_delivery printed its totals, then ran into the 300 s timeout in a suite
-# run; alone it passes in 27 s). So a program still running after 150 s gets its threads' kernel
-# wait channels, and every process that holds its output pipe, written to the log once.
+# A test program that itself hangs under Wine leaves no trace of why in CTest's timeout, so a
+# program still running after 150 s gets its threads' kernel wait channels, and every process
+# that holds its output pipe, written to the log once. (A child that outlives a program that has
+# ended is wine-run.sh's to name: CTest's emulator, tools/windows/wine-run.sh.)
 watch_hangs() {
     local p pipe q seen=" "
     while sleep 20; do
