@@ -318,6 +318,34 @@
     <context>
         <name>Fatek::Message</name>
         <message>
+            <source>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</source>
+            <translation>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</translation>
+        </message>
+        <message>
+            <source>Done: read back afterwards, the PLC holds what %1 asked for.</source>
+            <translation>Done: read back afterwards, the PLC holds what %1 asked for.</translation>
+        </message>
+        <message>
+            <source>Not done: read back afterwards, the PLC does not hold what %1 asked for (not carried out, or changed since by its program).</source>
+            <translation>Not done: read back afterwards, the PLC does not hold what %1 asked for (not carried out, or changed since by its program).</translation>
+        </message>
+        <message>
+            <source>Outcome still unknown: %1 could not be read back (%2). Check the PLC.</source>
+            <translation>Outcome still unknown: %1 could not be read back (%2). Check the PLC.</translation>
+        </message>
+        <message>
+            <source>Outcome unknown: no read can tell whether %1 was carried out. Check the PLC.</source>
+            <translation>Outcome unknown: no read can tell whether %1 was carried out. Check the PLC.</translation>
+        </message>
+        <message>
+            <source>Not sent: it waited past its deadline (nothing reached the PLC).</source>
+            <translation>Not sent: it waited past its deadline (nothing reached the PLC).</translation>
+        </message>
+        <message>
+            <source>Outcome unknown: %1 went to the gateway and no final reply came (%2); it may have been carried out.</source>
+            <translation>Outcome unknown: %1 went to the gateway and no final reply came (%2); it may have been carried out.</translation>
+        </message>
+        <message>
             <source>%1: %2</source>
             <translation>%1: %2</translation>
         </message>
@@ -3030,6 +3058,10 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
     <context>
         <name>Fatek::PlcControlPanel</name>
         <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
             <source>PLC status</source>
             <translation>PLC status</translation>
         </message>
@@ -4184,6 +4216,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
     </context>
     <context>
         <name>Fatek::WatchTableWidget</name>
+        <message>
+            <source>Wrote %1. %2</source>
+            <translation>Wrote %1. %2</translation>
+        </message>
+        <message>
+            <source>Write of %1: %2</source>
+            <translation>Write of %1: %2</translation>
+        </message>
         <message>
             <source>Watch</source>
             <translation>Watch</translation>

@@ -318,6 +318,34 @@
     <context>
         <name>Fatek::Message</name>
         <message>
+            <source>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</source>
+            <translation>結果未知：%1 已送出但沒有回應（%2），PLC 可能已執行。PLC 一回應就會讀回確認。</translation>
+        </message>
+        <message>
+            <source>Done: read back afterwards, the PLC holds what %1 asked for.</source>
+            <translation>已完成：事後讀回，PLC 的值與 %1 要求的相同。</translation>
+        </message>
+        <message>
+            <source>Not done: read back afterwards, the PLC does not hold what %1 asked for (not carried out, or changed since by its program).</source>
+            <translation>未完成：事後讀回，PLC 的值與 %1 要求的不同（未執行，或之後已被其程式改變）。</translation>
+        </message>
+        <message>
+            <source>Outcome still unknown: %1 could not be read back (%2). Check the PLC.</source>
+            <translation>結果仍未知：無法讀回 %1（%2）。請檢查 PLC。</translation>
+        </message>
+        <message>
+            <source>Outcome unknown: no read can tell whether %1 was carried out. Check the PLC.</source>
+            <translation>結果未知：沒有任何讀取能確認 %1 是否已執行。請檢查 PLC。</translation>
+        </message>
+        <message>
+            <source>Not sent: it waited past its deadline (nothing reached the PLC).</source>
+            <translation>未送出：等待已超過期限（沒有任何資料送達 PLC）。</translation>
+        </message>
+        <message>
+            <source>Outcome unknown: %1 went to the gateway and no final reply came (%2); it may have been carried out.</source>
+            <translation>結果未知：%1 已送往閘道器，但沒有收到最終回覆（%2），可能已執行。</translation>
+        </message>
+        <message>
             <source>%1: %2</source>
             <translation>%1：%2</translation>
         </message>
@@ -3023,6 +3051,10 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
     <context>
         <name>Fatek::PlcControlPanel</name>
         <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
             <source>PLC status</source>
             <translation>PLC 狀態</translation>
         </message>
@@ -4170,6 +4202,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
     </context>
     <context>
         <name>Fatek::WatchTableWidget</name>
+        <message>
+            <source>Wrote %1. %2</source>
+            <translation>已寫入 %1。%2</translation>
+        </message>
+        <message>
+            <source>Write of %1: %2</source>
+            <translation>寫入 %1：%2</translation>
+        </message>
         <message>
             <source>Watch</source>
             <translation>監看</translation>

@@ -18,6 +18,14 @@ CliContext::CliContext(const CliOptions &options, QObject *parent)
 {
     m_watchdog.setSingleShot(true);
     connect(&m_watchdog, &QTimer::timeout, this, [this] {
+        if (m_unknownChanges > 0) {
+            // Sent, unanswered, and no read-back could tell: not a failure, an open question.
+            m_out.error(QStringLiteral("Outcome still unknown: the PLC did not answer the "
+                                       "read-back within %1 s. Check the PLC.")
+                            .arg(m_watchdog.interval() / 1000.0),
+                        ExitCode::Unknown);
+            return finish(ExitCode::Unknown);
+        }
         m_out.error(QStringLiteral("No result within %1 s: the link stalled.")
                         .arg(m_watchdog.interval() / 1000.0),
                     ExitCode::Link);
@@ -157,6 +165,48 @@ void CliContext::stopWatchdog()
 void CliContext::submit(const Request &request, Handler handler)
 {
     m_requests.submit(request, watched(std::move(handler)));
+    armWatchdog(requestBudgetMs());
+}
+
+void CliContext::submitChange(const Request &change, Handler done)
+{
+    RequestOptions options;
+    options.deadline.setRemainingTime(requestBudgetMs());
+    m_requests.submitChange(
+        change,
+        [this, done = std::move(done)](const ChangeReport &report) {
+            if (m_done)
+                return;
+            if (!report.final) {
+                // Not a failure: say so now, and wait for the read-back's word.
+                ++m_unknownChanges;
+                m_out.note(englishText(report.message));
+                armWatchdog(requestBudgetMs() + m_options.link.timeoutMs);
+                return;
+            }
+            if (report.result.outcome() == ChangeOutcome::Unknown)
+                --m_unknownChanges;
+            if (m_requests.pendingCount() == 0)
+                m_watchdog.stop();
+            switch (report.outcome) {
+            case ChangeOutcome::Done:
+                if (!report.message.empty())
+                    m_out.note(englishText(report.message));
+                return done(report.result.ok() ? report.result
+                                               : SessionResult(Result<Response>(Response{})));
+            case ChangeOutcome::Refused:
+                if (report.result.ok() || report.result.outcome() == ChangeOutcome::Unknown) {
+                    // Read back: not in place.
+                    m_out.error(englishText(report.message), ExitCode::Link);
+                    return finish(ExitCode::Link);
+                }
+                return failWith(report.result);
+            case ChangeOutcome::Unknown:
+                m_out.error(englishText(report.message), ExitCode::Unknown);
+                return finish(ExitCode::Unknown);
+            }
+        },
+        options);
     armWatchdog(requestBudgetMs());
 }
 

@@ -49,6 +49,12 @@ public:
 
     // Submits one of the commands' requests with the watchdog armed for it.
     void submit(const Request &request, Handler handler);
+    // Submits a change to the PLC (write, RUN/STOP, set/reset/enable/disable) under the one rule
+    // (ChangeVerifier): not sent once its deadline (the request budget from now) passed; `done`
+    // gets a successful result when the PLC carried it out (answered, or read back afterwards);
+    // a refusal ends the program with its exit code; an unknown outcome is said on stderr at
+    // once, read back, and ends the program with ExitCode::Unknown if the read-back cannot tell.
+    void submitChange(const Request &change, Handler done);
     // The handler, after stopping the watchdog once no other request is pending.
     Handler watched(Handler handler);
     void armWatchdog(int ms);
@@ -92,6 +98,7 @@ private:
     bool m_ready = false;
     bool m_polling = false;
     bool m_done = false;
+    int m_unknownChanges = 0; // changes sent, unanswered, their read-back still going
 };
 
 } // namespace Fatek

@@ -32,23 +32,21 @@ void CliControlCommand::run()
 {
     const Address a = step().addresses.first();
     const auto op = static_cast<DiscreteOp>(step().controlOp);
-    m_context.submit(Request::discreteControl(m_context.station(), op, a),
-                     [this, a, op](const SessionResult &r) {
-                         if (!r.ok())
-                             return m_context.failWith(r);
-                         const auto name = discreteOpName(op);
-                         const QString action = QString::fromLatin1(
-                             name.data(), static_cast<qsizetype>(name.size()));
-                         OutputBlock block;
-                         block.columns = {QStringLiteral("station"), QStringLiteral("address"),
-                                          QStringLiteral("action")};
-                         block.rows << QStringList{m_context.stationText(), addressText(a), action};
-                         QJsonObject json = m_context.itemJson(a);
-                         json.insert(QStringLiteral("action"), action);
-                         json.insert(QStringLiteral("ok"), true);
-                         block.json << json;
-                         succeedWith(block);
-                     });
+    m_context.submitChange(
+        Request::discreteControl(m_context.station(), op, a), [this, a, op](const SessionResult &) {
+            const auto name = discreteOpName(op);
+            const QString action
+                = QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
+            OutputBlock block;
+            block.columns
+                = {QStringLiteral("station"), QStringLiteral("address"), QStringLiteral("action")};
+            block.rows << QStringList{m_context.stationText(), addressText(a), action};
+            QJsonObject json = m_context.itemJson(a);
+            json.insert(QStringLiteral("action"), action);
+            json.insert(QStringLiteral("ok"), true);
+            block.json << json;
+            succeedWith(block);
+        });
 }
 
 } // namespace Fatek

@@ -25,6 +25,9 @@ inline constexpr int Link = 3;     // timeout, no connection, broken answers
 inline constexpr int Plc = 4;      // the PLC answered with an error code
 inline constexpr int ReadOnly = 5; // refused by --read-only
 inline constexpr int Differ = 6;   // diff found differences; restore-values read back others
+// A change was sent and not answered, and reading it back could not tell whether the PLC carried
+// it out (the link stayed silent or closed): check the PLC.
+inline constexpr int Unknown = 7;
 inline constexpr int Interrupted
     = 130; // Ctrl-C / SIGTERM before the command finished (128 + SIGINT)
 inline constexpr int ClosedPipe

@@ -8,10 +8,8 @@ namespace Fatek {
 void CliRunStopCommand::run()
 {
     const bool run = step().command == CliCommandKind::Run;
-    m_context.submit(
-        Request::runStop(m_context.station(), run), [this, run](const SessionResult &r) {
-            if (!r.ok())
-                return m_context.failWith(r);
+    m_context.submitChange(
+        Request::runStop(m_context.station(), run), [this, run](const SessionResult &) {
             const QString mode = run ? QStringLiteral("RUN") : QStringLiteral("STOP");
             OutputBlock block;
             block.columns

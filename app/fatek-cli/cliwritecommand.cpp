@@ -66,9 +66,7 @@ void CliWriteCommand::run()
         = isDiscrete(start.type)
               ? Request::writeDiscretes(m_context.station(), start, step().values)
               : Request::writeRegisters(m_context.station(), start, step().values);
-    m_context.submit(request, [this, start](const SessionResult &r) {
-        if (!r.ok())
-            return m_context.failWith(r);
+    m_context.submitChange(request, [this, start](const SessionResult &) {
         succeedWithElements(start, step().values, QStringLiteral("written"),
                             [](std::uint32_t value) { return QString::number(value); });
     });

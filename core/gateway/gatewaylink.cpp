@@ -4,6 +4,7 @@
 #include "core/mqtt/mqttclient.h"
 #include "core/mqtt/mqttmessages.h"
 #include "core/protocol/logtext.h"
+#include "core/session/changeverifier.h"
 #include "core/session/session.h"
 #include "gatewaymessages.h"
 #include "gatewaypublisher.h"
@@ -331,7 +332,8 @@ void GatewayLink::answer(const GatewayPayload::Reply &reply)
         GatewayPayload::encodeReply(reply));
     Q_EMIT logEvent(msg<MsgId::GatewayLogWrite>(
         reply.station, addressString(reply.address), reply.value.toStdString(),
-        reply.id.toStdString(), reply.ok ? msg<MsgId::GatewayWriteDone>() : reply.error));
+        reply.id.toStdString(),
+        reply.ok && reply.error.empty() ? msg<MsgId::GatewayWriteDone>() : reply.error));
 }
 
 void GatewayLink::refuse(GatewayPayload::Reply reply, const Message &why)
@@ -463,17 +465,37 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
 
     ++m_counters.writesAccepted;
     ++m_pendingWrites;
-    m_session->submit(item.writeRequest(*raw), this, [this, reply](const SessionResult &result) {
-        --m_pendingWrites;
-        GatewayPayload::Reply done = reply;
-        done.ok = result.ok();
-        done.time = QDateTime::currentDateTimeUtc();
-        if (!result.ok()) {
-            ++m_counters.writesFailed;
-            done.error = result.errorMessage();
-        }
-        answer(done);
-    });
+    // Not sent once the command is older than its age limit: a write that waited behind a dead
+    // PLC must not land when its sender has given up on it (it was told "unknown" or "expired").
+    RequestOptions options;
+    options.deadline.setRemainingTime(
+        std::max<qint64>(0, qint64(m_config.commandMaxAgeSec) * 1000 - commandAgeMs(*command)));
+    ChangeVerifier::submit(
+        m_session, item.writeRequest(*raw), this,
+        [this, reply](const ChangeReport &report) {
+            if (report.final)
+                --m_pendingWrites;
+            GatewayPayload::Reply done = reply;
+            done.ok = report.outcome == ChangeOutcome::Done;
+            done.outcome = report.outcome;
+            done.final = report.final;
+            done.error = report.message;
+            done.time = QDateTime::currentDateTimeUtc();
+            if (report.final && report.outcome == ChangeOutcome::Refused)
+                ++m_counters.writesFailed;
+            if (report.final && report.outcome == ChangeOutcome::Unknown)
+                ++m_counters.writesUnknown;
+            answer(done);
+        },
+        options);
+}
+
+qint64 GatewayLink::commandAgeMs(const GatewayPayload::SetCommand &command) const
+{
+    // Its own time when it has one (checked by tooOld: not in the future), else it came now.
+    if (!command.time)
+        return 0;
+    return std::max<qint64>(0, command.time->msecsTo(QDateTime::currentDateTimeUtc()));
 }
 
 } // namespace Fatek

@@ -15,7 +15,7 @@ namespace Fatek {
 //               "rttMeanMs":..,"rttP50Ms":..,"rttP99Ms":..,"pollCycles":..,"lastCycleMs":..,
 //               "bytesDiscarded":..,"linkLosses":..},
 //    "gateway":{"published":..,"superseded":..,"repliesDropped":..,"waiting":..,
-//               "writesAccepted":..,"writesRefused":..,"writesFailed":..,
+//               "writesAccepted":..,"writesRefused":..,"writesFailed":..,"writesUnknown":..,
 //               "delayP50Ms":..,"delayP99Ms":..,"delayMaxMs":..}}
 struct GatewayStatistics
 {
@@ -25,7 +25,8 @@ struct GatewayStatistics
     quint64 waiting = 0;        // messages waiting for the broker now
     quint64 writesAccepted = 0; // commands handed to the PLC link
     quint64 writesRefused = 0;  // commands refused by the gateway (read-only, allowlist, value)
-    quint64 writesFailed = 0;   // accepted commands the PLC link could not carry out
+    quint64 writesFailed = 0;   // accepted commands the PLC did not carry out (refused, read back)
+    quint64 writesUnknown = 0;  // accepted commands whose outcome stayed unknown (no read-back)
     // From the PLC's answer to the item's hand-over to the broker connection, over the items
     // published since the previous statistics: how far behind the gateway is.
     qint64 delayP50Ms = 0;

@@ -78,12 +78,15 @@ void GatewayWatch::close(CloseMode)
     m_status.reset();
     m_graceTimer.stop();
     setState(LinkState::Closed, {});
-    // Unanswered writes end now: nobody will read their replies.
+    // Unanswered writes end now: nobody will read their replies. The broker took each command,
+    // so the gateway may still carry it out: unknown, not failed.
     const QStringList ids = m_writes.keys();
     for (const QString &id : ids) {
-        finishWrite(id, {false, msg<MsgId::GatewayWriteNotSent>(
-                                    m_writes.value(id).what,
-                                    msg<MsgId::MqttClosed>(utf8(m_settings.broker.toUrl())))});
+        finishWrite(id, {false,
+                         msg<MsgId::GatewayWriteUnanswered>(
+                             m_writes.value(id).what,
+                             msg<MsgId::MqttClosed>(utf8(m_settings.broker.toUrl()))),
+                         ChangeOutcome::Unknown, true});
     }
 }
 
@@ -201,7 +204,7 @@ void GatewayWatch::onReply(const QByteArray &payload)
         return; // another client's write
     if (!reply->ok && reply->error.empty())
         reply->error = msg<MsgId::GatewayWriteFailed>(utf8(m_settings.connection));
-    finishWrite(reply->id, {reply->ok, reply->ok ? Message{} : reply->error});
+    finishWrite(reply->id, {reply->ok, reply->error, reply->outcome, reply->final});
 }
 
 void GatewayWatch::setItems(const QList<WatchedItem> &items)
@@ -347,10 +350,14 @@ void GatewayWatch::write(const WatchItemSpec &item, std::uint64_t raw, QObject *
             Qt::QueuedConnection);
         return;
     }
+    // No reply in time: the gateway may still carry it out, so the outcome is unknown, and the
+    // final word is its reply if one comes (or the close of this link).
     QTimer::singleShot(m_replyTimeoutMs, this, [this, id] {
-        if (m_writes.contains(id))
-            finishWrite(id, {false, msg<MsgId::GatewayNoReply>(utf8(m_settings.connection),
-                                                               (m_replyTimeoutMs + 999) / 1000)});
+        if (m_writes.contains(id) && !m_writes.value(id).reported)
+            finishWrite(id, {false,
+                             msg<MsgId::GatewayNoReply>(utf8(m_settings.connection),
+                                                        (m_replyTimeoutMs + 999) / 1000),
+                             ChangeOutcome::Unknown, false});
     });
 }
 
@@ -360,7 +367,10 @@ void GatewayWatch::finishWrite(const QString &id, const LinkWriteResult &result)
     if (it == m_writes.end())
         return;
     const PendingWrite pending = it.value();
-    m_writes.erase(it);
+    if (result.final || (pending.hasContext && !pending.context))
+        m_writes.erase(it);
+    else
+        it->reported = true; // an unknown outcome so far: the final reply is still awaited
     if (pending.hasContext && !pending.context)
         return; // the asker is gone
     if (!pending.completion)

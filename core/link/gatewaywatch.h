@@ -92,7 +92,8 @@ private:
         QPointer<QObject> context;
         bool hasContext = false;
         WriteCompletion completion;
-        std::string what; // "R100 (station 1) = 12.5", for a refusal's message
+        std::string what;      // "R100 (station 1) = 12.5", for a refusal's message
+        bool reported = false; // an unknown outcome was reported (not final)
     };
 
     void onConnected();

@@ -20,6 +20,10 @@ FATEK_MSG(GatewayDownBecause, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "The gateway %1 lost its link to the PLC: %2"))
 // %1 what was to be written ("R100 (station 1) = 12.5"), %2 why.
 FATEK_MSG(GatewayWriteNotSent, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 was not sent: %2"))
+FATEK_MSG(GatewayWriteUnanswered, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Outcome unknown: %1 went to the gateway and no final reply came "
+                            "(%2); it may have been carried out."))
 FATEK_MSG(GatewayPublishFailed, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "The broker %1 did not take the command."))
 // %2 seconds.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/session/sessionresult.h"
 #include "core/session/sessionstatistics.h"
 #include "core/session/sessiontypes.h"
 #include "core/watch/itemassembler.h"
@@ -19,12 +20,16 @@ class Session;
 // constructor calls it).
 void registerLinkMetaTypes();
 
-// What a write through a link ended with: done, or why not (refused in operator mode, refused by
-// the PLC or the gateway, not sent, no answer).
+// What a write through a link came to: done; refused (operator mode, the PLC or the gateway said
+// no, not sent); or unknown (sent, not answered: it may have been carried out). An unknown outcome
+// is reported first with final = false, and again, final, once the value was read back (done or
+// not done) or could no longer be (still unknown).
 struct LinkWriteResult
 {
-    bool ok = false;
-    Message error;
+    bool ok = false; // outcome == Done
+    Message error;   // why not done; with ok, what confirmed it (a read-back), or empty
+    ChangeOutcome outcome = ChangeOutcome::Refused;
+    bool final = true;
 };
 
 // A place that holds the values of PLCs: watch items in, item values and the link's state out,
@@ -64,8 +69,10 @@ public:
     virtual void setReadOnly(bool readOnly) = 0;
     virtual bool isReadOnly() const = 0;
     // Writes `raw` (ItemValues's raw value of `item`, in its format) into the item's elements;
-    // `completion` is called once on `context`'s thread with the outcome, never inside this call,
-    // and dropped if `context` is destroyed first.
+    // `completion` is called on `context`'s thread with the outcome, never inside this call: once,
+    // or twice for an unknown outcome (LinkWriteResult::final); dropped if `context` is destroyed
+    // first. The write is not sent later than the link's timeout after this call (the person
+    // confirmed it now, not whenever the line is free).
     virtual void write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
                        WriteCompletion completion)
         = 0;

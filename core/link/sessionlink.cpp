@@ -1,5 +1,6 @@
 #include "sessionlink.h"
 
+#include "core/session/changeverifier.h"
 #include "core/session/session.h"
 
 namespace Fatek {
@@ -62,12 +63,15 @@ bool SessionLink::isReadOnly() const
 void SessionLink::write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
                         WriteCompletion completion)
 {
-    m_session->submit(
-        ItemValues(item).writeRequest(raw), context,
-        [completion = std::move(completion)](const SessionResult &result) {
-            if (completion)
-                completion({result.ok(), result.ok() ? Message{} : result.errorMessage()});
-        });
+    ChangeVerifier::submit(
+        m_session, ItemValues(item).writeRequest(raw), context,
+        [completion = std::move(completion)](const ChangeReport &report) {
+            if (!completion)
+                return;
+            const bool done = report.outcome == ChangeOutcome::Done;
+            completion({done, report.message, report.outcome, report.final});
+        },
+        ChangeVerifier::confirmedNow(*m_session));
 }
 
 int SessionLink::pendingWrites() const

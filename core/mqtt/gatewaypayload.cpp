@@ -453,6 +453,24 @@ QByteArray GatewayPayload::encodeSet(const SetCommand &command)
     return QJsonDocument(object).toJson(QJsonDocument::Compact);
 }
 
+QString GatewayPayload::outcomeName(ChangeOutcome outcome)
+{
+    switch (outcome) {
+    case ChangeOutcome::Done: return QStringLiteral("done");
+    case ChangeOutcome::Refused: return QStringLiteral("refused");
+    case ChangeOutcome::Unknown: return QStringLiteral("unknown");
+    }
+    return QStringLiteral("unknown");
+}
+
+std::optional<ChangeOutcome> GatewayPayload::outcomeFrom(const QString &name)
+{
+    for (ChangeOutcome o : {ChangeOutcome::Done, ChangeOutcome::Refused, ChangeOutcome::Unknown})
+        if (name == outcomeName(o))
+            return o;
+    return std::nullopt;
+}
+
 QByteArray GatewayPayload::encodeReply(const Reply &reply)
 {
     QJsonObject object{
@@ -467,8 +485,11 @@ QByteArray GatewayPayload::encodeReply(const Reply &reply)
         object.insert(QStringLiteral("station"), reply.stationLevel);
         object.insert(QStringLiteral("address"), reply.addressLevel);
     }
-    if (!reply.ok)
-        object.insert(QStringLiteral("error"), MessageJson::toJson(reply.error));
+    object.insert(QStringLiteral("outcome"), outcomeName(reply.outcome));
+    object.insert(QStringLiteral("final"), reply.final);
+    if (!reply.error.empty())
+        object.insert(reply.ok ? QStringLiteral("detail") : QStringLiteral("error"),
+                      MessageJson::toJson(reply.error));
     return QJsonDocument(object).toJson(QJsonDocument::Compact);
 }
 
@@ -486,9 +507,16 @@ std::optional<GatewayPayload::Reply> GatewayPayload::decodeReply(const QByteArra
         reply.address = *address;
     reply.value = object->value(QStringLiteral("value")).toString();
     reply.time = timeFrom(object->value(QStringLiteral("time")));
-    if (!reply.ok)
-        reply.error = MessageJson::fromJson(object->value(QStringLiteral("error")).toObject())
-                          .value_or(Message{});
+    // A gateway before outcomes: ok or refused, always final.
+    reply.outcome = reply.ok ? ChangeOutcome::Done : ChangeOutcome::Refused;
+    if (const std::optional<ChangeOutcome> outcome
+        = outcomeFrom(object->value(QStringLiteral("outcome")).toString()))
+        reply.outcome = *outcome;
+    reply.final = object->value(QStringLiteral("final")).toBool(true);
+    reply.error = MessageJson::fromJson(
+                      object->value(reply.ok ? QStringLiteral("detail") : QStringLiteral("error"))
+                          .toObject())
+                      .value_or(Message{});
     return reply;
 }
 

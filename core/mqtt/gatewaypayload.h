@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/address.h"
+#include "core/session/sessionresult.h"
 #include "core/session/watchvalue.h"
 #include "core/watch/valueformat.h"
 
@@ -105,7 +106,12 @@ QByteArray encodeSet(const SetCommand &command);
 struct Reply
 {
     QString id;
-    bool ok = false;
+    bool ok = false; // outcome == Done
+    // Done, refused (nothing carried out), or unknown (sent to the PLC, not answered). An unknown
+    // outcome is answered twice: final = false at once, then final = true with what the read-back
+    // found (docs/gateway.md, "Writing").
+    ChangeOutcome outcome = ChangeOutcome::Refused;
+    bool final = true;
     int station = 1;
     Address address;
     QString value;
@@ -116,6 +122,9 @@ struct Reply
     QString stationLevel;
     QString addressLevel;
 };
+// "done", "refused", "unknown" (the replies' "outcome").
+QString outcomeName(ChangeOutcome outcome);
+std::optional<ChangeOutcome> outcomeFrom(const QString &name);
 QByteArray encodeReply(const Reply &reply);
 std::optional<Reply> decodeReply(const QByteArray &payload);
 

@@ -164,6 +164,30 @@ FATEK_MSG(SessionFewerValues, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "The answer carries fewer values than asked."))
 FATEK_MSG(SessionCouldNotWrite, 1, QT_TRANSLATE_NOOP("Fatek::Message", "Could not write to %1."))
 FATEK_MSG(SessionNotExecuted, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not executed"))
+// The outcome of a change whose answer was lost (ChangeVerifier); %1 what was sent ("write R50 =
+// 3333 (station 1)"), %2 why it is unknown or why the read-back failed.
+FATEK_MSG(ChangeUnknown, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Outcome unknown: %1 was sent and not answered (%2); it may have been "
+                            "carried out. Reading it back as soon as the PLC answers."))
+FATEK_MSG(ChangeReadBackDone, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Done: read back afterwards, the PLC holds what %1 asked for."))
+FATEK_MSG(ChangeReadBackNotDone, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Not done: read back afterwards, the PLC does not hold what %1 asked "
+                            "for (not carried out, or changed since by its program)."))
+FATEK_MSG(
+    ChangeStillUnknown, 2,
+    QT_TRANSLATE_NOOP("Fatek::Message",
+                      "Outcome still unknown: %1 could not be read back (%2). Check the PLC."))
+FATEK_MSG(ChangeNoReadBack, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Outcome unknown: no read can tell whether %1 was carried out. Check "
+                            "the PLC."))
+FATEK_MSG(SessionExpired, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Not sent: it waited past its deadline (nothing reached the PLC)."))
 // Polling a silent station (issue 31): %1 the station, %2 requests in a row without an answer, %3
 // the time (HH:mm:ss) of the next try.
 FATEK_MSG(SessionStationDemoted, 3,

@@ -61,6 +61,7 @@ std::string_view errorKindName(ErrorKind kind)
     case ErrorKind::LinkError: return "link error";
     case ErrorKind::ReadOnly: return "read-only mode";
     case ErrorKind::Cancelled: return "cancelled";
+    case ErrorKind::Expired: return "expired";
     }
     return "error";
 }

@@ -24,6 +24,7 @@ enum class ErrorKind {
     LinkError,         // transport failed: port gone, connection refused or lost
     ReadOnly,          // refused by operator (read-only) mode before reaching the wire
     Cancelled,         // request dropped because the session stopped
+    Expired,           // not sent: it waited past its deadline (RequestOptions::deadline)
 };
 
 struct ProtocolError

@@ -52,6 +52,25 @@ quint64 RequestTracker::sendRaw(const QByteArray &bytes, bool addFraming, Callba
     return m_session->sendRaw(bytes, addFraming, this, track(std::move(callback)), options);
 }
 
+quint64 RequestTracker::submitChange(const Request &change, ChangeVerifier::Callback callback,
+                                     RequestOptions options)
+{
+    if (!m_session)
+        return 0;
+    ++m_pendingCount;
+    return ChangeVerifier::submit(
+        m_session, change, this,
+        [this, generation = m_generation, callback = std::move(callback)](const ChangeReport &r) {
+            if (generation != m_generation)
+                return;
+            if (r.final)
+                --m_pendingCount;
+            if (callback)
+                callback(r);
+        },
+        options);
+}
+
 void RequestTracker::forgetPending()
 {
     ++m_generation;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "changeverifier.h"
 #include "core/protocol/request.h"
 #include "session.h"
 
@@ -30,6 +31,11 @@ public:
                    Priority priority = Priority::User);
     quint64 sendRaw(const QByteArray &bytes, bool addFraming, Callback callback,
                     RequestOptions options = {});
+    // A change (write, RUN/STOP, forcing) under the one rule of ChangeVerifier: reported once, or
+    // twice for an unknown outcome (first not final, then what the read-back found). Pending until
+    // the final report.
+    quint64 submitChange(const Request &change, ChangeVerifier::Callback callback,
+                         RequestOptions options = {});
     // Forgets the callbacks of the requests still pending (their answers are ignored).
     void forgetPending();
     // Cancels in the session what this tracker submitted and is still queued, and forgets it all.

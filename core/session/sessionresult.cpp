@@ -18,6 +18,16 @@ SessionResult SessionResult::fromRaw(QByteArray rawAnswer)
     return SessionResult(Result<Response>(Response{}), std::move(rawAnswer), true);
 }
 
+ChangeOutcome SessionResult::outcome() const
+{
+    if (m_result.ok())
+        return ChangeOutcome::Done;
+    // A PLC that answers with an error code did not carry it out; nothing sent, nothing done.
+    if (m_attempts == 0 || m_result.error().kind == ErrorKind::PlcError)
+        return ChangeOutcome::Refused;
+    return ChangeOutcome::Unknown;
+}
+
 QString SessionResult::errorText() const
 {
     return m_result.ok() ? QString() : QString::fromStdString(m_result.error().text());

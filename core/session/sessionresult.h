@@ -9,6 +9,13 @@
 
 namespace Fatek {
 
+// What became of a request that changes the PLC (docs/reliability.md, "Changes to a PLC").
+enum class ChangeOutcome {
+    Done,    // the PLC answered that it carried it out
+    Refused, // not carried out: refused before the wire (nothing sent), or the PLC answered no
+    Unknown, // sent and not (intelligibly) answered: it may have been carried out, or still be
+};
+
 // The one answer a submitted request gets: a decoded Response or a typed error; for raw frames
 // the bytes that came back (raw results carry no Response).
 class SessionResult
@@ -36,6 +43,10 @@ public:
     QByteArray rawAnswer() const { return m_rawAnswer; }
     // Attempts on the wire (0 when refused before sending).
     int attempts() const { return m_attempts; }
+    // For a change (a write, RUN/STOP, forcing, a program page): done, refused, or unknown. An
+    // unknown outcome is never a failure: a frame that reached the PLC may have been carried
+    // out, its answer lost (ChangeVerifier reads back what it became).
+    ChangeOutcome outcome() const;
     void setAttempts(int attempts) { m_attempts = attempts; }
 
 private:

@@ -3,6 +3,7 @@
 #include "core/protocol/request.h"
 #include "core/qtbridge/qtmessage.h"
 
+#include <QDeadlineTimer>
 #include <QMetaType>
 #include <QString>
 
@@ -50,6 +51,11 @@ struct RequestOptions
     // A poll asking again for an element the PLC refused before: another refusal is expected and
     // is not counted as a PLC error (the counters are for faults).
     bool expectRefusal = false;
+    // The last moment the request may be put on the wire (a first attempt or a retry); past it
+    // the request finishes with ErrorKind::Expired, nothing sent. A change confirmed by a person
+    // or commanded with an age limit must not reach the PLC long after: a write that waited
+    // behind a dead station would land when nobody expects it any more.
+    QDeadlineTimer deadline{QDeadlineTimer::Forever};
 };
 
 } // namespace Fatek

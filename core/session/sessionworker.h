@@ -115,6 +115,7 @@ private:
     void failAll(ErrorKind kind, const Message &reason, bool includePolls);
     static bool isWriteJob(const SessionJob &job);
     void finishBroadcast();
+    void finishExpired();
     void onAllSent();
     void cancelReadsForClose();
     void checkDrained();

@@ -164,6 +164,11 @@ void SessionWorker::pump()
 
 bool SessionWorker::prepare(SessionJob &job)
 {
+    if (!job.probe && job.options.deadline.hasExpired()) {
+        deliver(job, SessionResult::fromError(
+                         makeError(ErrorKind::Expired, msg<MsgId::SessionExpired>()), {}, job.raw));
+        return false;
+    }
     if (m_shared->readOnly.load() && (job.raw || isWriteCommand(job.request.command))) {
         enqueue(std::move(job)); // refuses it with the read-only message
         return false;
@@ -256,6 +261,11 @@ int SessionWorker::retriesFor(const SessionJob &job) const
 {
     if (job.raw)
         return 0; // a console frame is sent once, as typed
+    // A change is sent once (docs/reliability.md): a copy sent again can land late, after the
+    // deadline, behind a line that held the first one, and the PLC acts twice. Its unanswered
+    // outcome is unknown, and a read-back (ChangeVerifier) tells what it became.
+    if (isWriteCommand(job.request.command))
+        return 0;
     return job.options.retries >= 0 ? job.options.retries : m_settings.retries;
 }
 

@@ -79,6 +79,11 @@ void SessionWorker::startAttempt()
         frame = toQByteArray(*encoded);
     }
 
+    if (job.options.deadline.hasExpired()) {
+        // Waited too long (behind other requests, a slow line, a retry's turn): not sent now.
+        finishExpired();
+        return;
+    }
     ++job.attempts;
     const quint8 station = stationOf(job);
     if (job.attempts > 1)
@@ -86,7 +91,9 @@ void SessionWorker::startAttempt()
     m_answer.clear();
     m_sentFrame = frame;
     if (!m_transport->write(frame)) {
-        // The transport reports the failure itself (disconnected); make sure the job ends.
+        // The transport reports the failure itself (disconnected); make sure the job ends. This
+        // attempt never left: only earlier ones count as sent.
+        --job.attempts;
         finishCurrent(SessionResult::fromError(
             makeError(ErrorKind::LinkError,
                       msg<MsgId::SessionCouldNotWrite>(m_transport->describe().toStdString())),
@@ -112,6 +119,16 @@ void SessionWorker::startAttempt()
         return;
     }
     m_timeoutTimer.start(timeoutFor(job));
+}
+
+void SessionWorker::finishExpired()
+{
+    SessionJob &job = *m_current;
+    m_log->append(TrafficEntry::Direction::Event, {},
+                  job.raw ? msg<MsgId::LogRawFrame>() : Message::text(job.request.describe()),
+                  msg<MsgId::SessionExpired>());
+    finishCurrent(SessionResult::fromError(
+        makeError(ErrorKind::Expired, msg<MsgId::SessionExpired>()), {}, job.raw));
 }
 
 void SessionWorker::finishBroadcast()
@@ -271,6 +288,8 @@ void SessionWorker::onTimeout()
             m_sentFrame.size());
         m_log->append(TrafficEntry::Direction::Event, {}, Message::text(job.request.describe()),
                       message);
+        // The frame did not leave whole: a PLC acts on no part of a frame.
+        --job.attempts;
         finishCurrent(SessionResult::fromError(makeError(ErrorKind::LinkError, message)));
         // Reported as not sent, so it must never leave later: drop the link and what it holds.
         m_transport->close();
@@ -305,7 +324,7 @@ void SessionWorker::onTimeout()
 void SessionWorker::retryOrFail(ProtocolError error)
 {
     SessionJob &job = *m_current;
-    if (job.attempts <= retriesFor(job)) {
+    if (job.attempts <= retriesFor(job) && !job.options.deadline.hasExpired()) {
         proceed();
         return;
     }
@@ -340,6 +359,8 @@ void SessionWorker::deliver(SessionJob &job, SessionResult result)
         job.pendingWrite = false;
         m_shared->pendingWrites.fetch_sub(1);
     }
+    // Also when a job on the wire is cut off (link lost, close): its frame may have been acted on.
+    result.setAttempts(job.attempts);
     if (job.done) {
         auto done = std::move(job.done);
         done(result);

@@ -198,6 +198,28 @@ void TestGatewayEndToEnd::plcToWatchAndBack()
     QCOMPARE(m_plc->value(addr("R200")), std::optional<std::uint32_t>(77));
     QTRY_VERIFY_WITH_TIMEOUT(good(3, 77), Wait);
 
+    // The PLC stops answering and still acts on what it gets (an answer lost on the line): the
+    // write is unknown, not failed; the gateway reads it back once the PLC answers again, and its
+    // final reply (same id) says done. One write reached the PLC.
+    FaultConfig mute;
+    mute.dropRate = 1.0;
+    m_sim->setFaults(mute);
+    QList<LinkWriteResult> reports;
+    watch.write(spec("R200", DisplayFormat::Signed), 88, this,
+                [&reports](const LinkWriteResult &r) { reports.append(r); });
+    QTRY_VERIFY_WITH_TIMEOUT(!reports.isEmpty(), Wait);
+    QCOMPARE(reports.first().outcome, ChangeOutcome::Unknown);
+    QVERIFY(!reports.first().final);
+    QVERIFY(!reports.first().ok);
+    QCOMPARE(m_plc->value(addr("R200")), std::optional<std::uint32_t>(88));
+    m_sim->setFaults({});
+    QTRY_VERIFY_WITH_TIMEOUT(reports.last().final, Wait);
+    QCOMPARE(reports.size(), 2);
+    QCOMPARE(reports.last().outcome, ChangeOutcome::Done);
+    QVERIFY(reports.last().ok);
+    QCOMPARE(simWrites(), writesBefore + 2);
+    QTRY_VERIFY_WITH_TIMEOUT(good(3, 88), Wait);
+
     // Outside the allowlist: refused with the reason, nothing reaches the PLC.
     reply.reset();
     watch.write(spec("R100", DisplayFormat::Float32), 0x3FC00000, this,
@@ -205,7 +227,8 @@ void TestGatewayEndToEnd::plcToWatchAndBack()
     QTRY_VERIFY_WITH_TIMEOUT(reply.has_value(), Wait);
     QVERIFY(!reply->ok);
     QVERIFY(!english(reply->error).empty());
-    QCOMPARE(simWrites(), writesBefore + 1);
+    QCOMPARE(reply->outcome, ChangeOutcome::Refused);
+    QCOMPARE(simWrites(), writesBefore + 2);
 
     // The gateway dies without a word: the broker publishes its will, and the watch shows every
     // value stale (the last one, never as fresh) and the link lost.
@@ -213,7 +236,7 @@ void TestGatewayEndToEnd::plcToWatchAndBack()
     m_gateway->waitForFinished(5000);
     QTRY_VERIFY_WITH_TIMEOUT(watch.linkState() == LinkState::Lost, Wait);
     QTRY_COMPARE_WITH_TIMEOUT(latest.value(3).quality, ValueQuality::Stale, Wait);
-    QCOMPARE(latest.value(3).raw, 77u);
+    QCOMPARE(latest.value(3).raw, 88u);
     QCOMPARE(latest.value(1).quality, ValueQuality::Stale);
 }
 

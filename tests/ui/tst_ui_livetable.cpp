@@ -245,6 +245,44 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(table->message().startsWith(QStringLiteral("Wrote R1")), longWait);
     }
 
+    // Issue 48: the PLC acts on a typed value but its answer is lost. The table says the outcome
+    // is unknown (not "failed"), reads the value back once the PLC answers, and says it was done.
+    void lostAnswerIsUnknownThenReadBack()
+    {
+        DemoPlc plc;
+        QVERIFY(plc.port != 0);
+        WatchTableWidget *table = openTable(plc.port, QStringLiteral("R50"));
+        QVERIFY(table);
+        WatchTableModel *model = table->model();
+        QTRY_VERIFY_WITH_TIMEOUT(model->hasValue(0), longWait);
+        QTableView *view = table->view();
+        doubleClick(view, table->viewIndex(model->index(0, WatchTableModel::ValueColumn)));
+        QTRY_VERIFY(view->viewport()->findChild<QLineEdit *>());
+        QPointer<QLineEdit> editor = view->viewport()->findChild<QLineEdit *>();
+        QVERIFY(editor);
+        QTest::keyClicks(editor, QStringLiteral("3333"), {}, keyDelayMs);
+        FaultConfig mute;
+        mute.dropRate = 1.0; // the PLC carries out every request and answers none
+        plc.server.setFaults(mute);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTRY_COMPARE_WITH_TIMEOUT(plc.count(QStringLiteral("write R50 = 0x0D05 ")), qsizetype(1),
+                                  longWait);
+        QTRY_VERIFY2_WITH_TIMEOUT(table->message().contains(QStringLiteral("Outcome unknown")),
+                                  qPrintable(table->message()), longWait);
+        QVERIFY2(!table->message().contains(QStringLiteral("failed")),
+                 qPrintable(table->message()));
+        if (!qEnvironmentVariableIsEmpty("FATEK_SCREENSHOTS"))
+            m_window->grab().save(qEnvironmentVariable("FATEK_SCREENSHOTS")
+                                  + QStringLiteral("/write-unknown.png"));
+        plc.server.setFaults({});
+        QTRY_VERIFY2_WITH_TIMEOUT(table->message().startsWith(QStringLiteral("Wrote R50")),
+                                  qPrintable(table->message()), longWait);
+        QVERIFY2(table->message().contains(QStringLiteral("Done: read back")),
+                 qPrintable(table->message()));
+        QCOMPARE(plc.count(QStringLiteral("write R50")), qsizetype(1)); // sent once
+        QCOMPARE(plc.plc.value(addr("R50")), std::optional<std::uint32_t>(3333));
+    }
+
     // Issue 16.2: the format combo, opened and picked with the mouse, applies at once and stays.
     void formatChosenWithTheMouseStays()
     {

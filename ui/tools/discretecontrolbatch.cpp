@@ -56,20 +56,29 @@ bool DiscreteControlBatch::run(RequestTracker *tracker, quint8 station, Discrete
         Outcome outcome;
     };
     auto state = std::make_shared<State>(State{points.size(), {}});
+    // Confirmed now: point i may wait for the i points ahead of it, each at most one timeout (a
+    // change is sent once), and not longer.
+    const int timeoutMs = tracker->session()->settings().timeoutMs;
+    int ahead = 0;
     for (const Address &point : points) {
         const QString name = QString::fromStdString(point.toString());
-        tracker->submit(Request::discreteControl(station, op, point),
-                        [state, name, done](const SessionResult &result) {
-                            if (result.ok())
-                                ++state->outcome.succeeded;
-                            else
-                                state->outcome.errors
-                                    << QCoreApplication::translate("Fatek::DiscreteControlBatch",
-                                                                   "%1: %2")
-                                           .arg(name, translated(result.errorMessage()));
-                            if (--state->remaining == 0 && done)
-                                done(state->outcome);
-                        });
+        RequestOptions options;
+        options.deadline.setRemainingTime(qint64(timeoutMs) * ++ahead);
+        tracker->submitChange(
+            Request::discreteControl(station, op, point),
+            [state, name, done](const ChangeReport &report) {
+                if (!report.final)
+                    return; // unknown so far: counted once the read-back tells
+                if (report.outcome == ChangeOutcome::Done)
+                    ++state->outcome.succeeded;
+                else
+                    state->outcome.errors
+                        << QCoreApplication::translate("Fatek::DiscreteControlBatch", "%1: %2")
+                               .arg(name, translated(report.message));
+                if (--state->remaining == 0 && done)
+                    done(state->outcome);
+            },
+            options);
     }
     return true;
 }

@@ -250,18 +250,40 @@ void PlcControlPanel::requestMode(bool run)
     }
     m_modePending = true;
     ToolPalette::showMessage(m_outcomeLabel, tr("Sending %1\u2026").arg(mode), false);
-    m_requests->submit(Request::runStop(m_station, run), [this, mode](const SessionResult &r) {
-        m_modePending = false;
-        if (r.ok())
-            ToolPalette::showMessage(
-                m_outcomeLabel, tr("%1 accepted by station %2.").arg(mode).arg(m_station), false);
-        else
-            ToolPalette::showMessage(
-                m_outcomeLabel, tr("%1 refused: %2").arg(mode, translated(r.errorMessage())), true);
-        updateEnabled();
-        refresh();
-        refreshDetail(); // its STATUS1 changes too
-    });
+    m_requests->submitChange(
+        Request::runStop(m_station, run),
+        [this, mode](const ChangeReport &report) {
+            if (!report.final) {
+                // Sent, not answered: not refused. The status is read back until it tells.
+                ToolPalette::showMessage(m_outcomeLabel,
+                                         tr("%1: %2").arg(mode, translated(report.message)), true);
+                return;
+            }
+            m_modePending = false;
+            switch (report.outcome) {
+            case ChangeOutcome::Done:
+                ToolPalette::showMessage(
+                    m_outcomeLabel,
+                    report.message.empty()
+                        ? tr("%1 accepted by station %2.").arg(mode).arg(m_station)
+                        : tr("%1: %2").arg(mode, translated(report.message)),
+                    false);
+                break;
+            case ChangeOutcome::Refused:
+                ToolPalette::showMessage(m_outcomeLabel,
+                                         tr("%1 refused: %2").arg(mode, translated(report.message)),
+                                         true);
+                break;
+            case ChangeOutcome::Unknown:
+                ToolPalette::showMessage(m_outcomeLabel,
+                                         tr("%1: %2").arg(mode, translated(report.message)), true);
+                break;
+            }
+            updateEnabled();
+            refresh();
+            refreshDetail(); // its STATUS1 changes too
+        },
+        ChangeVerifier::confirmedNow(*m_session));
     updateEnabled();
 }
 

@@ -704,16 +704,23 @@ void WatchTableWidget::write(int row, quint64 raw)
 
 void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const LinkWriteResult &result)
 {
-    const QString outcome = result.ok
-                                ? tr("Wrote %1.").arg(what)
-                                : tr("Write of %1 failed: %2").arg(what, translated(result.error));
+    // Unknown (sent, not answered) is not a failure: the value is read back and this comes again,
+    // final, with what the PLC holds.
+    QString outcome;
+    if (result.ok)
+        outcome = result.error.empty() ? tr("Wrote %1.").arg(what)
+                                       : tr("Wrote %1. %2").arg(what, translated(result.error));
+    else if (result.outcome == ChangeOutcome::Unknown)
+        outcome = tr("Write of %1: %2").arg(what, translated(result.error));
+    else
+        outcome = tr("Write of %1 failed: %2").arg(what, translated(result.error));
     const int row = m_model->rowOfKey(rowKey);
     if (row >= 0)
         m_model->setWriteOutcome(
             row,
             tr("%1 %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
     showMessage(outcome, !result.ok);
-    if (!result.ok)
+    if (result.outcome == ChangeOutcome::Refused)
         m_failedWrite = what;
 }
 

@@ -354,11 +354,24 @@ void TestGatewayWatch::writeTimesOut()
     Outcome reply;
     f.watch->write(item("R200", DisplayFormat::Signed), 5, nullptr, reply.completion());
     QTRY_VERIFY_WITH_TIMEOUT(reply.result.has_value(), timeoutMs);
+    // Sent and not answered: the gateway may still carry it out, so unknown, not failed, and
+    // its final reply is still awaited.
     QVERIFY(!reply.result->ok);
+    QCOMPARE(reply.result->outcome, ChangeOutcome::Unknown);
+    QVERIFY(!reply.result->final);
     QCOMPARE(englishText(reply.result->error),
              QStringLiteral("No reply from the gateway line1 within 1 s."));
     QTRY_COMPARE_WITH_TIMEOUT(f.peer->setCount(), 1, timeoutMs); // it was sent, nobody answered
+    QCOMPARE(f.watch->unansweredWrites(), 1);
+    // Closing ends the wait: still unknown, final.
+    f.watch->close();
+    QTRY_VERIFY_WITH_TIMEOUT(reply.result->final, timeoutMs);
+    QCOMPARE(reply.result->outcome, ChangeOutcome::Unknown);
+    QVERIFY2(englishText(reply.result->error).startsWith(QStringLiteral("Outcome unknown")),
+             qPrintable(englishText(reply.result->error)));
     QCOMPARE(f.watch->unansweredWrites(), 0);
+    f.watch->open();
+    QTRY_COMPARE_WITH_TIMEOUT(f.watch->linkState(), LinkState::Connected, timeoutMs);
 
     // A context destroyed before the reply: the completion is dropped, not called.
     bool called = false;

@@ -5,6 +5,7 @@
 #include "core/session/session.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "loopbacksession.h"
 
 #include <QHash>
 #include <QPointer>
@@ -179,15 +180,7 @@ void TestRequestCompletion::cleanup()
 
 std::unique_ptr<Session> TestRequestCompletion::openSession(int timeoutMs, int retries)
 {
-    LinkSettings settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort(),
-                                              LinkSettings::ProtocolChoice::Facon);
-    settings.timeoutMs = timeoutMs;
-    settings.retries = retries;
-    settings.autoReconnect = false;
-    auto session = std::make_unique<Session>(settings);
-    session->open();
-    waitUntil([&] { return session->linkState() == LinkState::Connected; });
-    return session;
+    return TestUtil::openLoopbackSession(m_server->tcpPort(), timeoutMs, retries);
 }
 
 void TestRequestCompletion::successCalledOnce()

@@ -1,0 +1,161 @@
+#include "changeverifier.h"
+
+#include "core/protocol/changecheck.h"
+
+#include <algorithm>
+
+namespace Fatek {
+
+namespace {
+
+Message changeText(const Request &change)
+{
+    return Message::text(change.describe());
+}
+
+} // namespace
+
+ChangeReport ChangeVerifier::reportOf(const Request &change, const SessionResult &result)
+{
+    ChangeReport report;
+    report.outcome = result.outcome();
+    report.result = result;
+    if (report.outcome == ChangeOutcome::Refused)
+        report.message = result.errorMessage();
+    else if (report.outcome == ChangeOutcome::Unknown)
+        report.message = msg<MsgId::ChangeUnknown>(changeText(change), result.errorMessage());
+    report.final = report.outcome != ChangeOutcome::Unknown;
+    return report;
+}
+
+RequestOptions ChangeVerifier::confirmedNow(const Session &session)
+{
+    RequestOptions options;
+    options.deadline.setRemainingTime(session.settings().timeoutMs);
+    return options;
+}
+
+quint64 ChangeVerifier::submit(Session *session, const Request &change, QObject *context,
+                               Callback callback, RequestOptions options, Priority priority)
+{
+    QPointer<Session> guarded(session);
+    // Without a context the read-back lives as long as the session.
+    QPointer<QObject> owner(context ? context : session);
+    return session->submit(
+        change, context,
+        [guarded, change, owner, callback = std::move(callback)](const SessionResult &result) {
+            const ChangeReport first = reportOf(change, result);
+            callback(first);
+            if (!first.final && owner)
+                verify(guarded.data(), change, result, owner.data(), callback);
+        },
+        priority, options);
+}
+
+void ChangeVerifier::verify(Session *session, const Request &change, const SessionResult &result,
+                            QObject *context, Callback callback)
+{
+    // Parented to the context: a tool or a table that goes away takes its checks with it.
+    auto *verifier = new ChangeVerifier(session, change, result, context, std::move(callback));
+    verifier->ask();
+}
+
+ChangeVerifier::ChangeVerifier(Session *session, const Request &change, const SessionResult &result,
+                               QObject *context, Callback callback)
+    : QObject(context)
+    , m_session(session)
+    , m_change(change)
+    , m_result(result)
+    , m_callback(std::move(callback))
+{
+    m_retry.setSingleShot(true);
+    connect(&m_retry, &QTimer::timeout, this, &ChangeVerifier::ask);
+    if (session) {
+        connect(session, &Session::linkStateChanged, this,
+                [this](LinkState state) { onLinkState(state); });
+        connect(session, &QObject::destroyed, this, [this] { onLinkState(LinkState::Closed); });
+    }
+}
+
+void ChangeVerifier::ask()
+{
+    if (m_asking)
+        return;
+    const std::optional<Request> read = ChangeCheck::readBack(m_change);
+    if (!read) {
+        conclude(ChangeOutcome::Unknown, msg<MsgId::ChangeNoReadBack>(changeText(m_change)));
+        return;
+    }
+    if (!m_session || m_session->linkState() == LinkState::Closed) {
+        conclude(
+            ChangeOutcome::Unknown,
+            msg<MsgId::ChangeStillUnknown>(changeText(m_change), msg<MsgId::LinkSessionClosed>()));
+        return;
+    }
+    if (m_session->linkState() != LinkState::Connected) {
+        m_waitingForLink = true; // asked when the link is back (onLinkState)
+        return;
+    }
+    m_read = *read;
+    m_asking = true;
+    m_session->submit(m_read, this, [this](const SessionResult &answer) { onAnswer(answer); });
+}
+
+void ChangeVerifier::onAnswer(const SessionResult &answer)
+{
+    m_asking = false;
+    if (answer.ok()) {
+        if (ChangeCheck::inPlace(m_change, answer.response()))
+            conclude(ChangeOutcome::Done, msg<MsgId::ChangeReadBackDone>(changeText(m_change)));
+        else
+            conclude(ChangeOutcome::Refused,
+                     msg<MsgId::ChangeReadBackNotDone>(changeText(m_change)));
+        return;
+    }
+    if (answer.errorKind() == ErrorKind::PlcError || answer.errorKind() == ErrorKind::ReadOnly
+        || answer.errorKind() == ErrorKind::InvalidRequest
+        || answer.errorKind() == ErrorKind::InvalidAddress
+        || answer.errorKind() == ErrorKind::Unsupported) {
+        // The PLC (or the protocol) will not let this be read: asking again tells nothing more.
+        conclude(ChangeOutcome::Unknown,
+                 msg<MsgId::ChangeStillUnknown>(changeText(m_change), answer.errorMessage()));
+        return;
+    }
+    // No answer yet (timeout, link lost): again once the link is up, a timeout's length later.
+    if (!m_session || m_session->linkState() == LinkState::Closed) {
+        conclude(ChangeOutcome::Unknown,
+                 msg<MsgId::ChangeStillUnknown>(changeText(m_change), answer.errorMessage()));
+        return;
+    }
+    m_retry.start(std::max(500, m_session->settings().timeoutMs));
+}
+
+void ChangeVerifier::onLinkState(LinkState state)
+{
+    if (state == LinkState::Closed) {
+        if (!m_asking) // an asked read-back still gets its own answer (Cancelled)
+            conclude(ChangeOutcome::Unknown,
+                     msg<MsgId::ChangeStillUnknown>(changeText(m_change),
+                                                    msg<MsgId::LinkSessionClosed>()));
+        return;
+    }
+    if (state == LinkState::Connected && std::exchange(m_waitingForLink, false))
+        ask();
+}
+
+void ChangeVerifier::conclude(ChangeOutcome outcome, Message message)
+{
+    if (!m_callback)
+        return;
+    m_retry.stop();
+    ChangeReport report;
+    report.outcome = outcome;
+    report.final = true;
+    report.message = std::move(message);
+    report.result = m_result;
+    auto callback = std::exchange(m_callback, {});
+    deleteLater();
+    callback(report);
+}
+
+} // namespace Fatek
