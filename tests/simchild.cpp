@@ -81,8 +81,7 @@ bool SimChild::resume()
 #endif
 }
 
-std::optional<std::vector<int>> SimChild::forced(const QString &cliPath, const QString &start,
-                                                 int count, QString *error) const
+std::vector<int> SimChild::forced(const QString &cliPath, const QString &start, int count) const
 {
     const ProgramRun run
         = runProgram(cliPath, link()
@@ -90,11 +89,9 @@ std::optional<std::vector<int>> SimChild::forced(const QString &cliPath, const Q
                                                 start, QString::number(count)});
     const QJsonArray flags = run.json().value(QStringLiteral("forced")).toArray();
     if (run.code != 0 || flags.size() != count) {
-        if (error)
-            *error = QStringLiteral("fatek-cli forced: exit %1: %2 %3")
-                         .arg(run.code)
-                         .arg(run.out, run.err);
-        return std::nullopt;
+        qWarning("fatek-cli forced: exit %d: %s %s", run.code, qPrintable(run.out),
+                 qPrintable(run.err));
+        return {};
     }
     std::vector<int> result;
     for (const QJsonValue &v : flags)

@@ -4,7 +4,6 @@
 #include <QString>
 #include <QStringList>
 
-#include <optional>
 #include <vector>
 
 namespace TestUtil {
@@ -33,9 +32,8 @@ public:
     bool resume();
 
     // `cliPath LINK --json forced START COUNT`: the disable (forced) flags as the simulator holds
-    // them, or nullopt when fatek-cli failed (the reason in *error).
-    std::optional<std::vector<int>> forced(const QString &cliPath, const QString &start, int count,
-                                           QString *error = nullptr) const;
+    // them; empty (and why in a warning) when fatek-cli failed.
+    std::vector<int> forced(const QString &cliPath, const QString &start, int count) const;
 
 private:
     QProcess m_process;

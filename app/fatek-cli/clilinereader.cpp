@@ -5,6 +5,7 @@
 #include <iostream>
 #include <string>
 #include <thread>
+#include <utility>
 
 #ifdef Q_OS_UNIX
 #include <csignal>

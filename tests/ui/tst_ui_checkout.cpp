@@ -143,6 +143,22 @@ private:
         return shown ? dialog : nullptr;
     }
 
+    // The plan `ranges` typed and Start pressed, saved in `fileName`; false when the fields are
+    // not there.
+    bool startPlan(IoCheckoutDialog *dialog, const QString &ranges, const QString &fileName)
+    {
+        const QString file = m_files.filePath(fileName);
+        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
+        auto *edit = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
+        auto *start = dialog->findChild<QPushButton *>(QStringLiteral("startButton"));
+        if (!edit || !start)
+            return false;
+        QTest::mouseClick(edit, Qt::LeftButton);
+        QTest::keyClicks(edit, ranges, {}, keyDelayMs);
+        QTest::mouseClick(start, Qt::LeftButton);
+        return true;
+    }
+
 private Q_SLOTS:
     void initTestCase()
     {
@@ -367,14 +383,8 @@ private Q_SLOTS:
             questions << question;
             return true;
         });
-        const QString file = m_files.filePath(QStringLiteral("operator.checkout.json"));
-        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
-        auto *ranges = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
-        QVERIFY(ranges);
-        QTest::mouseClick(ranges, Qt::LeftButton);
-        QTest::keyClicks(ranges, QStringLiteral("X0, Y0"), {}, keyDelayMs);
-        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("startButton")),
-                          Qt::LeftButton);
+        QVERIFY(
+            startPlan(dialog, QStringLiteral("X0, Y0"), QStringLiteral("operator.checkout.json")));
         CheckoutRunner *runner = dialog->runner();
         QTRY_VERIFY_WITH_TIMEOUT(runner->isRunning(), longWait);
         QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
@@ -402,14 +412,8 @@ private Q_SLOTS:
         IoCheckoutDialog *dialog = openFromToolsMenu();
         QVERIFY(dialog);
         dialog->setConfirmer([](const QString &) { return true; });
+        QVERIFY(startPlan(dialog, QStringLiteral("Y0..Y1"), QStringLiteral("retry.checkout.json")));
         const QString file = m_files.filePath(QStringLiteral("retry.checkout.json"));
-        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
-        auto *ranges = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
-        QVERIFY(ranges);
-        QTest::mouseClick(ranges, Qt::LeftButton);
-        QTest::keyClicks(ranges, QStringLiteral("Y0..Y1"), {}, keyDelayMs);
-        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("startButton")),
-                          Qt::LeftButton);
         CheckoutRunner *runner = dialog->runner();
         QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
         QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
@@ -452,15 +456,8 @@ private Q_SLOTS:
             shown << dialog->messageText();
             return answer(int(questions.size()) - 1);
         });
-        const QString file = m_files.filePath(QStringLiteral("run.checkout.json"));
-        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
-        auto *ranges = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
-        if (!ranges)
+        if (!startPlan(dialog, QStringLiteral("Y0"), QStringLiteral("run.checkout.json")))
             return nullptr;
-        QTest::mouseClick(ranges, Qt::LeftButton);
-        QTest::keyClicks(ranges, QStringLiteral("Y0"), {}, keyDelayMs);
-        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("startButton")),
-                          Qt::LeftButton);
         CheckoutRunner *runner = dialog->runner();
         if (!QTest::qWaitFor([runner] { return runner->currentPoint() == 0; }, longWait))
             return nullptr;
