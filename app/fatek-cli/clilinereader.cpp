@@ -11,6 +11,9 @@
 #include <csignal>
 #include <pthread.h>
 #endif
+#ifdef Q_OS_WIN
+#include <windows.h>
+#endif
 
 namespace Fatek {
 
@@ -41,14 +44,30 @@ void CliLineReader::startReading()
         sigfillset(&all);
         pthread_sigmask(SIG_BLOCK, &all, nullptr);
 #endif
+#ifdef Q_OS_WIN
+        // A console's Ctrl-C ends the read under way as if the input had ended; the console is
+        // still there, so it is read on (the end of input is a pipe's or a file's).
+        DWORD mode = 0;
+        const bool console = GetConsoleMode(GetStdHandle(STD_INPUT_HANDLE), &mode) != 0;
+#endif
         std::string line;
-        while (std::getline(std::cin, line)) {
-            if (!line.empty() && line.back() == '\r')
-                line.pop_back();
-            const QString text
-                = QString::fromUtf8(line.data(), static_cast<qsizetype>(line.size()));
-            QMetaObject::invokeMethod(
-                this, [this, text] { received(text); }, Qt::QueuedConnection);
+        for (;;) {
+            while (std::getline(std::cin, line)) {
+                if (!line.empty() && line.back() == '\r')
+                    line.pop_back();
+                const QString text
+                    = QString::fromUtf8(line.data(), static_cast<qsizetype>(line.size()));
+                QMetaObject::invokeMethod(
+                    this, [this, text] { received(text); }, Qt::QueuedConnection);
+            }
+#ifdef Q_OS_WIN
+            if (console) {
+                std::cin.clear();
+                Sleep(100); // not a busy loop should the console keep failing
+                continue;
+            }
+#endif
+            break;
         }
         QMetaObject::invokeMethod(
             this, [this] { received(std::nullopt); }, Qt::QueuedConnection);
