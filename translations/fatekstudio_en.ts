@@ -1618,20 +1618,24 @@
             <translation>%1 changed while testing %2: crossed wiring?</translation>
         </message>
         <message>
-            <source>The PLC is in RUN: its program drives the outputs too. Force outputs anyway?</source>
-            <translation>The PLC is in RUN: its program drives the outputs too. Force outputs anyway?</translation>
+            <source>The PLC is in RUN: its program drives the outputs too. Force %1 on anyway? Yes: %1 and then each output tested is forced on until its answer, whatever the program does. No: nothing is forced.</source>
+            <translation>The PLC is in RUN: its program drives the outputs too. Force %1 on anyway? Yes: %1 and then each output tested is forced on until its answer, whatever the program does. No: nothing is forced.</translation>
         </message>
         <message>
-            <source>Outputs are not tested while the PLC is in RUN without a confirmation; nothing was forced.</source>
-            <translation>Outputs are not tested while the PLC is in RUN without a confirmation; nothing was forced.</translation>
+            <source>Not forced: the PLC is in RUN and forcing was not confirmed. The outputs stay untested.</source>
+            <translation>Not forced: the PLC is in RUN and forcing was not confirmed. The outputs stay untested.</translation>
         </message>
         <message>
             <source>Forcing %1 failed: %2</source>
             <translation>Forcing %1 failed: %2</translation>
         </message>
         <message>
-            <source>Releasing %1 failed: %2. It stays recorded as forced and is released when the link is back.</source>
-            <translation>Releasing %1 failed: %2. It stays recorded as forced and is released when the link is back.</translation>
+            <source>Releasing %1 failed: %2. It stays recorded as forced; the release is tried again until the PLC confirms it.</source>
+            <translation>Releasing %1 failed: %2. It stays recorded as forced; the release is tried again until the PLC confirms it.</translation>
+        </message>
+        <message>
+            <source>%1 is not released yet (the PLC has not confirmed it): it is forced again only after that.</source>
+            <translation>%1 is not released yet (the PLC has not confirmed it): it is forced again only after that.</translation>
         </message>
         <message>
             <source>Released the outputs the checkout had forced: %1.</source>

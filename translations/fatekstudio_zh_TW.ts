@@ -1618,20 +1618,24 @@
             <translation>測試 %2 時 %1 發生變化：配線交錯？</translation>
         </message>
         <message>
-            <source>The PLC is in RUN: its program drives the outputs too. Force outputs anyway?</source>
-            <translation>PLC 處於 RUN：其程式也在驅動輸出。仍要強制輸出嗎？</translation>
+            <source>The PLC is in RUN: its program drives the outputs too. Force %1 on anyway? Yes: %1 and then each output tested is forced on until its answer, whatever the program does. No: nothing is forced.</source>
+            <translation>PLC 處於 RUN：其程式也在驅動輸出。仍要強制 %1 導通嗎？是：%1 及之後測試的每個輸出都會強制導通直到回答為止，不受程式影響。否：不強制任何點。</translation>
         </message>
         <message>
-            <source>Outputs are not tested while the PLC is in RUN without a confirmation; nothing was forced.</source>
-            <translation>PLC 處於 RUN 且未經確認，不測試輸出；未強制任何點。</translation>
+            <source>Not forced: the PLC is in RUN and forcing was not confirmed. The outputs stay untested.</source>
+            <translation>未強制：PLC 處於 RUN 且未確認強制。這些輸出維持未測試。</translation>
         </message>
         <message>
             <source>Forcing %1 failed: %2</source>
             <translation>強制 %1 失敗：%2</translation>
         </message>
         <message>
-            <source>Releasing %1 failed: %2. It stays recorded as forced and is released when the link is back.</source>
-            <translation>解除 %1 失敗：%2。它仍記錄為已強制，連線恢復後即解除。</translation>
+            <source>Releasing %1 failed: %2. It stays recorded as forced; the release is tried again until the PLC confirms it.</source>
+            <translation>解除 %1 失敗：%2。它仍記錄為已強制；將持續重試解除，直到 PLC 確認為止。</translation>
+        </message>
+        <message>
+            <source>%1 is not released yet (the PLC has not confirmed it): it is forced again only after that.</source>
+            <translation>%1 尚未解除（PLC 尚未確認）：確認解除後才能再次強制。</translation>
         </message>
         <message>
             <source>Released the outputs the checkout had forced: %1.</source>

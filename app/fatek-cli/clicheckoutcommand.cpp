@@ -3,6 +3,7 @@
 
 #include "clicommands.h"
 #include "clicontext.h"
+#include "clilinereader.h"
 #include "clitext.h"
 #include "core/commission/checkoutfile.h"
 #include "core/commission/checkoutreport.h"
@@ -41,6 +42,17 @@ bool stdinIsTerminal()
     return FATEK_ISATTY(fileno(stdin)) != 0;
 }
 
+bool isYes(const QString &answer)
+{
+    const QString a = answer.toLower();
+    return a == QLatin1String("y") || a == QLatin1String("yes");
+}
+
+CliLineReader &lines()
+{
+    return *CliLineReader::instance();
+}
+
 } // namespace
 
 CliCheckoutCommand::CliCheckoutCommand(CliContext &context)
@@ -60,13 +72,27 @@ bool CliCheckoutCommand::canAsk() const
     return stdinIsTerminal() || options().assumeYes;
 }
 
-QString CliCheckoutCommand::ask(const QString &question)
+void CliCheckoutCommand::ask(const QString &question, std::function<void(const QString &)> answer,
+                             std::function<void()> noAnswer)
 {
     QTextStream err(stderr);
     err << question << QLatin1Char(' ') << Qt::flush;
-    // Blocking on purpose: the output stays forced until the person answers.
-    static QTextStream in(stdin);
-    return in.readLine().trimmed().toLower();
+    // Not blocking: Ctrl-C and the releases go on while the person thinks.
+    lines().nextLine([answer = std::move(answer),
+                      noAnswer = std::move(noAnswer)](const std::optional<QString> &line) {
+        if (line)
+            answer(line->trimmed());
+        else
+            noAnswer();
+    });
+}
+
+QString CliCheckoutCommand::forcedText() const
+{
+    QStringList forced;
+    for (const Address &a : m_runner->plan().forced)
+        forced << QString::fromStdString(a.toString());
+    return forced.join(QStringLiteral(", "));
 }
 
 void CliCheckoutCommand::run()
@@ -128,8 +154,7 @@ void CliCheckoutCommand::run()
     r->setFilePath(savePath);
     r->setEngineer(options().checkoutEngineer);
     connect(r, &CheckoutRunner::failed, this, [this](const ProtocolError &e) {
-        if (m_finishing)
-            return;
+        // Also while finishing: a release that failed is said (once), and why the program waits.
         out().error(englishText(e.message), CliContext::exitCodeFor(e.kind));
         if (e.kind == ErrorKind::ReadOnly || e.kind == ErrorKind::LinkError
             || e.kind == ErrorKind::Timeout)
@@ -139,8 +164,11 @@ void CliCheckoutCommand::run()
         out().error(englishText(m), ExitCode::Internal);
         finishCheckout(ExitCode::Internal);
     });
-    connect(r, &CheckoutRunner::leftoversReleased, this,
-            [this](const Message &m) { out().note(englishText(m)); });
+    connect(r, &CheckoutRunner::leftoversReleased, this, [this](const Message &m) {
+        if (lines().isWaiting()) // a question's line is open
+            QTextStream(stderr) << '\n';
+        out().note(englishText(m));
+    });
     connect(r, &CheckoutRunner::pointChanged, this, [this, r](int index) {
         const CheckoutPoint &pt = r->plan().points[static_cast<std::size_t>(index)];
         if (pt.kind == CheckoutKind::Input && pt.result == CheckoutResult::Passed
@@ -156,27 +184,37 @@ void CliCheckoutCommand::run()
     });
     connect(r, &CheckoutRunner::runConfirmationNeeded, this,
             [this, r](int index, const Message &question) {
-                const QString a = options().assumeYes
-                                      ? QStringLiteral("y")
-                                      : ask(englishText(question) + QStringLiteral(" [y/N]"));
-                if (a != QLatin1String("y") && a != QLatin1String("yes"))
-                    return finishCheckout(ExitCode::Usage);
-                r->allowOutputsInRun(true);
-                r->forceOutput(index);
+                const auto yes = [r, index] {
+                    r->allowOutputsInRun(true);
+                    r->forceOutput(index);
+                };
+                if (options().assumeYes) {
+                    out().note(
+                        QStringLiteral("The PLC is in RUN: %1 is forced on all the same "
+                                       "(--yes).")
+                            .arg(pointText(r->plan().points[static_cast<std::size_t>(index)])));
+                    return yes();
+                }
+                ask(
+                    englishText(question) + QStringLiteral(" [y/N]"),
+                    [this, yes](const QString &a) {
+                        if (isYes(a))
+                            return yes();
+                        // No: the outputs stay untested; the analog points come next.
+                        out().note(englishText(msg<MsgId::CheckoutRunNotConfirmed>()));
+                        m_nextOutput = m_outputs.size();
+                        nextOutput();
+                    },
+                    [this] { finishCheckout(ExitCode::Ok); });
             });
-    connect(r, &CheckoutRunner::outputForced, this, [this, r](int index) {
-        const CheckoutPoint &pt = r->plan().points[static_cast<std::size_t>(index)];
-        const QString a = ask(
-            QStringLiteral("%1 is ON now. Seen in the field? [y/n/comment]").arg(pointText(pt)));
-        const bool seen = a == QLatin1String("y") || a == QLatin1String("yes");
-        const bool plain = seen || a == QLatin1String("n") || a == QLatin1String("no");
-        r->answerOutput(seen, plain ? QString() : a);
-    });
-    connect(r, &CheckoutRunner::outputReleased, this, [this, r](const Address &) {
+    connect(r, &CheckoutRunner::outputForced, this, &CliCheckoutCommand::askSeen);
+    connect(r, &CheckoutRunner::outputReleased, this, [this, r](const Address &a) {
         if (m_finishing || r->outputUnderTest() >= 0 || m_nextOutput == 0)
             return;
         const CheckoutPoint &pt
             = r->plan().points[static_cast<std::size_t>(m_outputs[m_nextOutput - 1])];
+        if (pt.address != a) // a leftover or a retried release, not the output just answered
+            return;
         out().note(QStringLiteral("%1: %2, released")
                        .arg(pointText(pt), englishText(checkoutResultMessage(pt.result))));
         nextOutput();
@@ -212,6 +250,29 @@ void CliCheckoutCommand::nextOutput()
     m_runner->forceOutput(m_outputs[m_nextOutput++]);
 }
 
+void CliCheckoutCommand::askSeen(int index)
+{
+    const CheckoutPoint &pt = m_runner->plan().points[static_cast<std::size_t>(index)];
+    ask(
+        QStringLiteral("%1 is ON now. Seen in the field? [y/n/comment]").arg(pointText(pt)),
+        [this, index](const QString &a) {
+            // An empty line is no answer: asked again.
+            if (a.isEmpty())
+                return askSeen(index);
+            const bool seen = isYes(a);
+            const bool plain = seen || a.compare(QLatin1String("n"), Qt::CaseInsensitive) == 0
+                               || a.compare(QLatin1String("no"), Qt::CaseInsensitive) == 0;
+            m_runner->answerOutput(seen, plain ? QString() : a);
+        },
+        [this, index] {
+            out().note(
+                QStringLiteral("No answer (end of input): %1 is released and stays "
+                               "untested.")
+                    .arg(pointText(m_runner->plan().points[static_cast<std::size_t>(index)])));
+            finishCheckout(ExitCode::Ok);
+        });
+}
+
 void CliCheckoutCommand::nextAnalog()
 {
     if (m_finishing)
@@ -220,14 +281,6 @@ void CliCheckoutCommand::nextAnalog()
         return finishCheckout(ExitCode::Ok);
     const int index = m_analogs[m_nextAnalog++];
     const CheckoutPoint &pt = m_runner->plan().points[static_cast<std::size_t>(index)];
-    ask(QStringLiteral("Set %1 to its low end (%2), then Enter.")
-            .arg(pointText(pt))
-            .arg(pt.expectedLow));
-    m_runner->recordAnalog(index, false);
-    ask(QStringLiteral("Set %1 to its high end (%2), then Enter.")
-            .arg(pointText(pt))
-            .arg(pt.expectedHigh));
-    m_runner->recordAnalog(index, true);
     // The readings come back in order: the next point after this one's high end.
     connect(
         m_runner.get(), &CheckoutRunner::pointChanged, this,
@@ -242,6 +295,23 @@ void CliCheckoutCommand::nextAnalog()
             }
         },
         Qt::QueuedConnection);
+    const auto ended = [this] {
+        finishCheckout(ExitCode::Ok);
+    };
+    const QString high = QStringLiteral("Set %1 to its high end (%2), then Enter.")
+                             .arg(pointText(pt))
+                             .arg(pt.expectedHigh);
+    ask(
+        QStringLiteral("Set %1 to its low end (%2), then Enter.")
+            .arg(pointText(pt))
+            .arg(pt.expectedLow),
+        [this, index, high, ended](const QString &) {
+            m_runner->recordAnalog(index, false);
+            ask(
+                high, [this, index](const QString &) { m_runner->recordAnalog(index, true); },
+                ended);
+        },
+        ended);
 }
 
 void CliCheckoutCommand::finishCheckout(int exitCode)
@@ -250,69 +320,137 @@ void CliCheckoutCommand::finishCheckout(int exitCode)
         return;
     m_finishing = true;
     m_exitCode = exitCode;
+    lines().cancel(); // the open question gets no answer: nothing is recorded for it
     m_runner->stop();
-    const auto writeReport = [this] {
-        if (m_reported)
-            return;
-        m_reported = true;
-        const CheckoutPlan &plan = m_runner->plan();
-        const CheckoutReport report = CheckoutReport::of(plan);
-        ReportTranslator translator;
-        if (!translator.setLanguage(options().checkoutLanguage)) {
-            out().error(QStringLiteral("--lang takes en or zh_TW, not \"%1\".")
-                            .arg(options().checkoutLanguage),
-                        ExitCode::Usage);
-            return m_context.finish(ExitCode::Usage);
-        }
-        const auto text = [&translator](const Message &m) {
-            return translator.text(m);
-        };
-        const QString path = options().checkoutReport;
-        if (!path.isEmpty()) {
-            Status s = Ok{};
-            if (path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) {
-                s = CheckoutPdf::write(report, path, text);
-            } else {
-                const QString reason = SafeFile::write(path, report.toCsv(text));
-                if (!reason.isEmpty())
-                    s = makeError(ErrorKind::InvalidRequest,
-                                  msg<MsgId::ReportCannotWrite>(
-                                      path.toStdString(), Message::text(reason.toStdString())));
-            }
-            if (!s) {
-                out().error(englishText(s.error().message), ExitCode::Internal);
-                return m_context.finish(ExitCode::Internal);
-            }
-        }
-        out().note(englishText(report.summary));
-        if (m_exitCode != ExitCode::Ok)
-            return m_context.finish(m_exitCode);
-        const bool failed
-            = plan.count(CheckoutResult::Failed) > 0 || plan.count(CheckoutResult::Untested) > 0;
-        if (failed)
-            return m_context.finish(ExitCode::Differ);
-        succeed();
-    };
     if (!m_runner->hasForced())
         return writeReport();
-    // Released first (reset, enable): the report is written once nothing stays forced, or the
-    // release failed (said on stderr; the file keeps it recorded).
-    connect(m_runner.get(), &CheckoutRunner::outputReleased, this, [this, writeReport] {
-        if (!m_runner->hasForced())
-            writeReport();
+    // Released first (reset, enable; retried until the PLC confirms it): the report is written
+    // once nothing stays forced, or once the person chose to leave it so.
+    connect(m_runner.get(), &CheckoutRunner::outputReleased, this, [this] {
+        if (m_runner->hasForced() || m_reported)
+            return;
+        lines().cancel(); // "Leave it forced?" is moot
+        writeReport();
     });
-    connect(m_runner.get(), &CheckoutRunner::failed, this, [writeReport] { writeReport(); });
+    connect(m_runner.get(), &CheckoutRunner::failed, this, [this] { askLeaveForced(); });
+    askLeaveForced();
+}
+
+void CliCheckoutCommand::askLeaveForced()
+{
+    if (m_reported || m_leftForced || !m_runner->isRetryingRelease() || lines().isWaiting())
+        return;
+    // No way to ask: a further Ctrl-C is the answer (interrupt()).
+    if (!canAsk() || lines().atEnd()) {
+        out().note(QStringLiteral("%1 is still forced: the release is tried again until the PLC "
+                                  "confirms it. Ctrl-C leaves it forced and ends.")
+                       .arg(forcedText()));
+        return;
+    }
+    // Not answered by --yes: leaving an output forced is never assumed.
+    ask(
+        QStringLiteral("%1 is still forced in the PLC: the release is tried again until the PLC "
+                       "confirms it. Leave it forced and exit? [y/N]")
+            .arg(forcedText()),
+        [this](const QString &a) {
+            if (isYes(a))
+                return leaveForced();
+            out().note(QStringLiteral("Waiting for the PLC to confirm the release of %1 (Ctrl-C "
+                                      "asks again).")
+                           .arg(forcedText()));
+        },
+        [this] {
+            out().note(QStringLiteral("No answer (end of input): waiting for the PLC to confirm "
+                                      "the release of %1; Ctrl-C leaves it forced and ends.")
+                           .arg(forcedText()));
+        });
+}
+
+void CliCheckoutCommand::leaveForced()
+{
+    if (m_reported || m_leftForced)
+        return;
+    m_leftForced = true;
+    lines().cancel();
+    if (m_exitCode == ExitCode::Ok)
+        m_exitCode = ExitCode::Link;
+    out().error(QStringLiteral("Left forced in the PLC: %1. \"enable %1\" releases it, and so "
+                               "does the checkout started again with its file.")
+                    .arg(forcedText()),
+                m_exitCode);
+    writeReport();
+}
+
+void CliCheckoutCommand::writeReport()
+{
+    if (m_reported)
+        return;
+    m_reported = true;
+    const CheckoutPlan &plan = m_runner->plan();
+    const CheckoutReport report = CheckoutReport::of(plan);
+    ReportTranslator translator;
+    if (!translator.setLanguage(options().checkoutLanguage)) {
+        out().error(
+            QStringLiteral("--lang takes en or zh_TW, not \"%1\".").arg(options().checkoutLanguage),
+            ExitCode::Usage);
+        return m_context.finish(ExitCode::Usage);
+    }
+    const auto text = [&translator](const Message &m) {
+        return translator.text(m);
+    };
+    const QString path = options().checkoutReport;
+    if (!path.isEmpty()) {
+        Status s = Ok{};
+        if (path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) {
+            s = CheckoutPdf::write(report, path, text);
+        } else {
+            const QString reason = SafeFile::write(path, report.toCsv(text));
+            if (!reason.isEmpty())
+                s = makeError(ErrorKind::InvalidRequest,
+                              msg<MsgId::ReportCannotWrite>(path.toStdString(),
+                                                            Message::text(reason.toStdString())));
+        }
+        if (!s) {
+            out().error(englishText(s.error().message), ExitCode::Internal);
+            return m_context.finish(ExitCode::Internal);
+        }
+    }
+    out().note(englishText(report.summary));
+    if (m_exitCode != ExitCode::Ok)
+        return m_context.finish(m_exitCode);
+    const bool failed
+        = plan.count(CheckoutResult::Failed) > 0 || plan.count(CheckoutResult::Untested) > 0;
+    if (failed)
+        return m_context.finish(ExitCode::Differ);
+    succeed();
 }
 
 void CliCheckoutCommand::interrupt()
 {
-    if (m_runner && !m_finishing) {
+    if (!m_runner)
+        return CliCommand::interrupt();
+    if (!m_finishing) {
         out().error(QStringLiteral("Interrupted: releasing what is forced and writing the report."),
                     ExitCode::Interrupted);
-        finishCheckout(ExitCode::Interrupted);
+        return finishCheckout(ExitCode::Interrupted);
+    }
+    if (!holdsInterrupts())
+        return CliCommand::interrupt();
+    if (!m_runner->isRetryingRelease()) {
+        out().note(QStringLiteral("Releasing %1: waiting for the PLC's answer.").arg(forcedText()));
         return;
     }
-    CliCommand::interrupt();
+    // Still forced: Ctrl-C asks whether to leave it so, or is the answer when nothing can ask.
+    if (!canAsk() || lines().atEnd())
+        return leaveForced();
+    lines().cancel();
+    QTextStream(stderr) << '\n';
+    askLeaveForced();
+}
+
+bool CliCheckoutCommand::holdsInterrupts() const
+{
+    return m_runner && m_runner->hasForced() && !m_leftForced && !m_reported;
 }
 
 void CliCheckoutCommand::abandon()

@@ -2,6 +2,7 @@
 
 #include "clicommand.h"
 
+#include <functional>
 #include <memory>
 
 namespace Fatek {
@@ -14,6 +15,9 @@ struct CliStepArgs;
 // watched in any order until each has gone 0->1 and 1->0; outputs are forced one at a time and
 // the technician's answer is asked on the terminal (or read from standard input with --yes);
 // analog points are read at both ends when the person says so. Then the report (--report).
+// The questions never block the event loop (CliLineReader): Ctrl-C at any of them releases the
+// output under test at once and records nothing for it. The program does not end while an output
+// it forced is not confirmed released (the runner retries), unless the person says to leave it.
 class CliCheckoutCommand : public CliCommand
 {
     Q_OBJECT
@@ -25,6 +29,7 @@ public:
     static QString parse(CliStepArgs &args);
     void interrupt() override;
     void abandon() override;
+    bool holdsInterrupts() const override;
 
 protected:
     void run() override;
@@ -34,10 +39,20 @@ private:
     void inputsDone();
     void nextOutput();
     void nextAnalog();
+    // "Seen in the field?" for the output forced.
+    void askSeen(int index);
+    // Stops, releases what is forced, then writeReport() and the end.
     void finishCheckout(int exitCode);
-    // One line from the person: on a terminal asked on stderr; with --yes from standard input.
-    QString ask(const QString &question);
+    // A release keeps failing: asks whether to leave the output forced and end.
+    void askLeaveForced();
+    void leaveForced();
+    void writeReport();
+    // Asks on stderr; `answer` gets the line (trimmed), `noAnswer` runs at the end of input. The
+    // lines come from a terminal or, with --yes, from standard input.
+    void ask(const QString &question, std::function<void(const QString &)> answer,
+             std::function<void()> noAnswer);
     bool canAsk() const;
+    QString forcedText() const; // "Y1, Y4"
 
     std::unique_ptr<CheckoutRunner> m_runner;
     std::vector<int> m_outputs;
@@ -47,6 +62,7 @@ private:
     bool m_inputsDone = false;
     bool m_finishing = false;
     bool m_reported = false;
+    bool m_leftForced = false; // the person chose to leave an output forced
     int m_exitCode = 0;
 };
 

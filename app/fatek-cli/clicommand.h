@@ -34,6 +34,9 @@ public:
     virtual void interrupt();
     // The program ends (a failure, an interrupt, the last step): stop what still runs.
     virtual void abandon() {}
+    // Whether a further Ctrl-C must come to interrupt() rather than end the program at once:
+    // something the command changed in the PLC is not undone yet (checkout: an output forced).
+    virtual bool holdsInterrupts() const { return false; }
 
 Q_SIGNALS:
     // The step succeeded: the next one may run.

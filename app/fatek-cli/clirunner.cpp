@@ -37,6 +37,11 @@ void CliRunner::interrupt()
         m_context.endInterrupted();
 }
 
+bool CliRunner::holdsInterrupts() const
+{
+    return !m_context.isDone() && m_current && m_current->holdsInterrupts();
+}
+
 void CliRunner::runStep()
 {
     const CliStep &step = m_context.options().steps.at(m_stepIndex);

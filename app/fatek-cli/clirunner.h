@@ -31,6 +31,9 @@ public:
     // closed); any other command ends with ExitCode::Interrupted. Writes already accepted are
     // still sent when the session closes.
     void interrupt();
+    // A further Ctrl-C goes to interrupt() instead of ending the program at once (the current
+    // command has not undone a change to the PLC yet: a checkout's forced output).
+    bool holdsInterrupts() const;
 
 Q_SIGNALS:
     void done(int exitCode);

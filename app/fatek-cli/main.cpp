@@ -70,9 +70,10 @@ int main(int argc, char *argv[])
         &runner, &CliRunner::done, &app, [](int code) { QCoreApplication::exit(code); },
         Qt::QueuedConnection);
     // The first Ctrl-C ends the command cleanly (a monitor keeps its log, queued writes are sent);
-    // a second one, while that is still going on, ends the program at once.
+    // a second one, while that is still going on, ends the program at once, unless the command
+    // holds it: a checkout with an output still forced asks first.
     onQuitSignal(&runner, [&runner, asked = false]() mutable {
-        if (asked)
+        if (asked && !runner.holdsInterrupts())
             std::_Exit(ExitCode::Interrupted);
         asked = true;
         runner.interrupt();

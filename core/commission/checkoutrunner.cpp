@@ -19,6 +19,17 @@ std::uint8_t stationOf(const CheckoutPlan &plan)
     return static_cast<std::uint8_t>(std::clamp(plan.info.station, 1, 254));
 }
 
+bool contains(const std::vector<Address> &list, const Address &a)
+{
+    return std::find(list.begin(), list.end(), a) != list.end();
+}
+
+// Whether it was there.
+bool erase(std::vector<Address> &list, const Address &a)
+{
+    return std::erase(list, a) > 0;
+}
+
 } // namespace
 
 CheckoutRunner::CheckoutRunner(QObject *parent)
@@ -26,6 +37,9 @@ CheckoutRunner::CheckoutRunner(QObject *parent)
 {
     m_pollTimer.setSingleShot(true);
     connect(&m_pollTimer, &QTimer::timeout, this, &CheckoutRunner::pollCycle);
+    m_releaseRetry.setSingleShot(true);
+    m_releaseRetry.setInterval(2000);
+    connect(&m_releaseRetry, &QTimer::timeout, this, &CheckoutRunner::retryReleases);
 }
 
 CheckoutRunner::~CheckoutRunner()
@@ -308,6 +322,11 @@ void CheckoutRunner::forceOutput(int index)
     // recorded as forced.
     if (s->isReadOnly())
         return fail(makeError(ErrorKind::ReadOnly, msg<MsgId::CheckoutReadOnly>()));
+    const Address address = m_plan.points[static_cast<std::size_t>(index)].address;
+    // Its release not confirmed yet: a release still on the wire would undo the new force.
+    if (contains(m_releasing, address) || contains(m_releaseFailed, address))
+        return fail(makeError(ErrorKind::InvalidRequest,
+                              msg<MsgId::CheckoutStillReleasing>(address.toString())));
     if (m_outputUnderTest >= 0)
         return fail(makeError(
             ErrorKind::InvalidRequest,
@@ -325,10 +344,11 @@ void CheckoutRunner::forceOutput(int index)
             const auto &data = r.response().data;
             m_plcRunning = !data.empty() && PlcStatus::fromStatus1(data.front()).running;
             if (m_plcRunning && !m_allowInRun) {
+                // A question, not a failure: what happens is said once it is answered.
                 m_outputUnderTest = -1;
-                Q_EMIT runConfirmationNeeded(index, msg<MsgId::CheckoutPlcInRun>());
-                return fail(
-                    makeError(ErrorKind::InvalidRequest, msg<MsgId::CheckoutRunNotConfirmed>()));
+                return Q_EMIT runConfirmationNeeded(
+                    index, msg<MsgId::CheckoutPlcInRun>(
+                               m_plan.points[static_cast<std::size_t>(index)].address.toString()));
             }
             doForce(index);
         });
@@ -348,8 +368,9 @@ void CheckoutRunner::doForce(int index)
         return fail(makeError(ErrorKind::InvalidRequest, *m_saveError));
     }
     const std::uint8_t station = stationOf(m_plan);
-    const auto failed = [this, a](const SessionResult &r) {
-        m_outputUnderTest = -1;
+    const auto failed = [this, a, index](const SessionResult &r) {
+        if (m_outputUnderTest == index)
+            m_outputUnderTest = -1;
         ProtocolError e = r.error();
         e.message = msg<MsgId::CheckoutForceFailed>(a.toString(), r.error().message);
         fail(std::move(e));
@@ -360,6 +381,9 @@ void CheckoutRunner::doForce(int index)
                      [this, a, station, index, failed](const SessionResult &r) {
                          if (!r.ok())
                              return failed(r);
+                         // Stopped meanwhile (Ctrl-C): not set; the release follows the disable.
+                         if (m_outputUnderTest != index)
+                             return release(a, false);
                          m_actions.submit(Request::discreteControl(station, DiscreteOp::Set, a),
                                           [this, index, failed](const SessionResult &r2) {
                                               if (!r2.ok())
@@ -385,45 +409,82 @@ void CheckoutRunner::answerOutput(bool seen, const QString &comment)
     release(p.address, false);
 }
 
-void CheckoutRunner::release(const Address &address, bool leftover)
+void CheckoutRunner::release(const Address &address, bool leftover, bool checkFirst)
 {
     Session *s = session();
-    if (!s)
-        return;
-    if (std::find(m_releasing.begin(), m_releasing.end(), address) != m_releasing.end())
+    if (!s || contains(m_releasing, address))
         return;
     m_releasing.push_back(address);
     const std::uint8_t station = stationOf(m_plan);
-    const auto done = [this, address, leftover](const SessionResult &r) {
-        m_releasing.erase(std::remove(m_releasing.begin(), m_releasing.end(), address),
-                          m_releasing.end());
-        if (!r.ok()) {
-            ProtocolError e = r.error();
-            e.message = msg<MsgId::CheckoutReleaseFailed>(address.toString(), r.error().message);
-            return fail(std::move(e));
-        }
-        m_plan.forced.erase(std::remove(m_plan.forced.begin(), m_plan.forced.end(), address),
-                            m_plan.forced.end());
-        save();
-        Q_EMIT outputReleased(address);
-        if (leftover)
-            Q_EMIT leftoversReleased(msg<MsgId::CheckoutReleased>(address.toString()));
+    const auto resetAndEnable = [this, address, station, leftover] {
+        // Off first while still forced, then back to the program.
+        m_actions.submit(Request::discreteControl(station, DiscreteOp::Reset, address),
+                         [this, address, station, leftover](const SessionResult &r) {
+                             if (!r.ok())
+                                 return releaseDone(address, leftover, r);
+                             m_actions.submit(
+                                 Request::discreteControl(station, DiscreteOp::Enable, address),
+                                 [this, address, leftover](const SessionResult &r2) {
+                                     releaseDone(address, leftover, r2);
+                                 });
+                         });
     };
-    // Off first while still forced, then back to the program.
-    m_actions.submit(Request::discreteControl(station, DiscreteOp::Reset, address),
-                     [this, address, station, done](const SessionResult &r) {
-                         if (!r.ok())
-                             return done(r);
-                         m_actions.submit(
-                             Request::discreteControl(station, DiscreteOp::Enable, address), done);
+    if (!checkFirst)
+        return resetAndEnable();
+    m_actions.submit(Request::readEnableFlags(station, address, 1),
+                     [this, address, leftover, resetAndEnable](const SessionResult &r) {
+                         const bool enabled = r.ok() && !r.response().values.empty()
+                                              && r.response().values.front() == 0;
+                         if (!r.ok() || enabled)
+                             return releaseDone(address, leftover, r);
+                         resetAndEnable();
                      });
+}
+
+void CheckoutRunner::releaseDone(const Address &address, bool leftover, const SessionResult &result)
+{
+    erase(m_releasing, address);
+    if (!result.ok()) {
+        // A timeout says nothing of what the PLC did: tried again until it confirms.
+        if (!contains(m_releaseFailed, address)) {
+            m_releaseFailed.push_back(address);
+            ProtocolError e = result.error();
+            e.message = msg<MsgId::CheckoutReleaseFailed>(address.toString(), e.message);
+            fail(std::move(e));
+        }
+        if (!m_releaseRetry.isActive())
+            m_releaseRetry.start();
+        return;
+    }
+    const bool retried = erase(m_releaseFailed, address);
+    erase(m_plan.forced, address);
+    save();
+    // Said before outputReleased(), which may end a program.
+    if (leftover || retried)
+        Q_EMIT leftoversReleased(msg<MsgId::CheckoutReleased>(address.toString()));
+    Q_EMIT outputReleased(address);
 }
 
 void CheckoutRunner::releaseAllForced(bool leftover)
 {
     const std::vector<Address> forced = m_plan.forced;
     for (const Address &a : forced)
-        release(a, leftover);
+        release(a, leftover, leftover);
+}
+
+void CheckoutRunner::retryReleases()
+{
+    Session *s = session();
+    // Down: onLinkState() tries again once it is back.
+    if (!s || s->linkState() != LinkState::Connected)
+        return;
+    const std::vector<Address> failed = m_releaseFailed;
+    for (const Address &a : failed) {
+        if (contains(m_plan.forced, a))
+            release(a, true, true);
+        else
+            erase(m_releaseFailed, a);
+    }
 }
 
 void CheckoutRunner::onLinkState(LinkState state)
@@ -431,6 +492,8 @@ void CheckoutRunner::onLinkState(LinkState state)
     if (state == LinkState::Connected) {
         if (m_linkLost && hasForced())
             releaseAllForced(true);
+        else
+            retryReleases();
         m_linkLost = false;
         if (m_running && m_pollsInFlight == 0 && !m_pollTimer.isActive())
             pollCycle();

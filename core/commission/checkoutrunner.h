@@ -29,7 +29,10 @@ class Session;
 //   disables and sets it; answerOutput() records the technician's answer and releases it at
 //   once (reset, enable). Refused in operator mode, and with the PLC in RUN until
 //   allowOutputsInRun(true). Nothing stays forced: released by answerOutput, stop(), the
-//   destructor, and after a lost link as soon as it is back.
+//   destructor, and after a lost link as soon as it is back. A release that failed (a timeout:
+//   the PLC may or may not have done it) is tried again every releaseRetryMs while the link is
+//   up, until the PLC confirms it: the enable flag read back as enabled, or reset and enable
+//   answered. Only then is the output dropped from plan().forced (and from the file).
 // - Analog: recordAnalog() reads the register for one end; both ends within tolerance: passed.
 // Every change of a point is saved at once when a file is set (CheckoutFile, through SafeFile).
 class CheckoutRunner : public QObject
@@ -57,9 +60,12 @@ public:
     // After an input passes, the current point moves to the next untested input.
     void setAutoAdvance(bool on) { m_autoAdvance = on; }
     void setPollIntervalMs(int ms) { m_pollIntervalMs = ms; }
+    // How long after a failed release it is tried again (the link up).
+    void setReleaseRetryMs(int ms) { m_releaseRetry.setInterval(ms); }
 
     void start();
-    // Stops polling and releases what is forced (the output under test gets no answer).
+    // Stops polling and releases what is forced (the output under test gets no answer: it stays
+    // untested). The releases go on (retried) after it.
     void stop();
     bool isRunning() const { return m_running; }
     // The PLC was in RUN at the last status read.
@@ -85,6 +91,8 @@ public:
     int outputUnderTest() const { return m_outputUnderTest; }
     // Outputs forced and not confirmed released (also those a previous run left).
     bool hasForced() const { return !m_plan.forced.empty(); }
+    // A release failed and is being tried again (outputReleased() once the PLC confirmed it).
+    bool isRetryingRelease() const { return !m_releaseFailed.empty(); }
 
     // Analog: reads the register now and records it as the low or the high end.
     void recordAnalog(int index, bool highEnd);
@@ -98,13 +106,15 @@ Q_SIGNALS:
     void liveValue(int index, quint32 value);
     // `changed` moved while `underTest` was tested (its changedWith has it now).
     void crossedWiring(int changed, int underTest, const Fatek::Message &message);
-    // The PLC is in RUN: ask (message), then allowOutputsInRun(true) and forceOutput() again.
+    // The PLC is in RUN: nothing was forced. Ask (message); on yes allowOutputsInRun(true) and
+    // forceOutput() again, on no nothing is forced (CheckoutRunNotConfirmed says so).
     void runConfirmationNeeded(int index, const Fatek::Message &question);
     void outputForced(int index);
     void outputReleased(const Fatek::Address &address);
     // Outputs a previous run (or a lost link) left forced are released.
     void leftoversReleased(const Fatek::Message &message);
-    // A refusal (operator mode, busy, no link) or a failure (force, release, read).
+    // A refusal (operator mode, busy, no link) or a failure (force, release, read). A release
+    // that keeps failing is said once, when it first fails.
     void failed(const Fatek::ProtocolError &error);
     void saveFailed(const Fatek::Message &message);
 
@@ -114,8 +124,13 @@ private:
     void onInputs(const Request &request, const SessionResult &result);
     void inputChanged(int index, bool on);
     void doForce(int index);
-    void release(const Address &address, bool leftover);
+    // checkFirst: the enable flag is read first, and an output found enabled is released already
+    // (a retry after a timeout, a leftover: no reset of an output its program drives again).
+    void release(const Address &address, bool leftover, bool checkFirst = false);
+    void releaseDone(const Address &address, bool leftover, const SessionResult &result);
     void releaseAllForced(bool leftover);
+    // The forced outputs not under test and not on the wire: checked and released (link up).
+    void retryReleases();
     void onLinkState(LinkState state);
     void markResult(CheckoutPoint &p, CheckoutResult result);
     void changed(int index);
@@ -141,7 +156,9 @@ private:
     bool m_linkLost = false;
     int m_current = -1;
     int m_outputUnderTest = -1;
-    std::vector<Address> m_releasing; // release requests on the wire
+    std::vector<Address> m_releasing;     // release requests on the wire
+    std::vector<Address> m_releaseFailed; // failed once, said once, retried until confirmed
+    QTimer m_releaseRetry;
 };
 
 } // namespace Fatek

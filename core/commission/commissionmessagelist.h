@@ -240,19 +240,25 @@ FATEK_MSG(CheckoutNotOutput, 1,
 // %1 the input that changed, %2 the one under test.
 FATEK_MSG(CheckoutCrossedWiring, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "%1 changed while testing %2: crossed wiring?"))
-FATEK_MSG(CheckoutPlcInRun, 0,
+// The question before the first output forced in RUN (%1 the output), and what "no" did.
+FATEK_MSG(CheckoutPlcInRun, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "The PLC is in RUN: its program drives the outputs too. Force "
-                            "outputs anyway?"))
+                            "The PLC is in RUN: its program drives the outputs too. Force %1 on "
+                            "anyway? Yes: %1 and then each output tested is forced on until its "
+                            "answer, whatever the program does. No: nothing is forced."))
 FATEK_MSG(CheckoutRunNotConfirmed, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Outputs are not tested while the PLC is in RUN without a "
-                            "confirmation; nothing was forced."))
+                            "Not forced: the PLC is in RUN and forcing was not confirmed. The "
+                            "outputs stay untested."))
 FATEK_MSG(CheckoutForceFailed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Forcing %1 failed: %2"))
 FATEK_MSG(CheckoutReleaseFailed, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Releasing %1 failed: %2. It stays recorded as forced and is "
-                            "released when the link is back."))
+                            "Releasing %1 failed: %2. It stays recorded as forced; the release "
+                            "is tried again until the PLC confirms it."))
+FATEK_MSG(CheckoutStillReleasing, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 is not released yet (the PLC has not confirmed it): it is forced "
+                            "again only after that."))
 // %1 the outputs released ("Y0, Y3").
 FATEK_MSG(CheckoutReleased, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "Released the outputs the checkout had forced: %1."))

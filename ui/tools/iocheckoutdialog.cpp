@@ -4,6 +4,7 @@
 #include "core/commission/checkoutfile.h"
 #include "core/commission/checkoutreport.h"
 #include "core/commission/checkoutrunner.h"
+#include "core/commission/commissionmessages.h"
 #include "core/session/session.h"
 #include "core/watch/safefile.h"
 #include "report/checkoutpdf.h"
@@ -159,16 +160,17 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     });
     connect(m_runner, &CheckoutRunner::outputReleased, this, [this](const Address &address) {
         showMessage(tr("%1 is released.").arg(QString::fromStdString(address.toString())), false);
+        updateControls();
     });
     connect(m_runner, &CheckoutRunner::runConfirmationNeeded, this,
             [this](int index, const Message &question) {
-                // Asked once the runner has said why it did not force (its failed() comes right
-                // after this signal): the answer's outcome is the last message shown.
+                // Asked from the event loop, not from inside the runner's answer; what the answer
+                // did is the message shown after it.
                 QTimer::singleShot(0, this, [this, index, text = translated(question)] {
                     if (!m_runner->isRunning())
                         return;
                     if (!ToolConfirmation::ask(this, tr("Force Output"), text, m_confirmer)) {
-                        showMessage(tr("Not forced: nothing was written."), false);
+                        showMessage(translated(msg<MsgId::CheckoutRunNotConfirmed>()), false);
                         return;
                     }
                     m_runner->allowOutputsInRun(true);
@@ -177,8 +179,10 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
             });
     connect(m_runner, &CheckoutRunner::crossedWiring, this,
             [this](int, int, const Message &message) { showMessage(translated(message), true); });
-    connect(m_runner, &CheckoutRunner::failed, this,
-            [this](const ProtocolError &error) { showMessage(translated(error.message), true); });
+    connect(m_runner, &CheckoutRunner::failed, this, [this](const ProtocolError &error) {
+        showMessage(translated(error.message), true);
+        updateControls();
+    });
     connect(m_runner, &CheckoutRunner::leftoversReleased, this,
             [this](const Message &message) { showMessage(translated(message), false); });
     connect(m_runner, &CheckoutRunner::saveFailed, this,
@@ -435,8 +439,9 @@ void IoCheckoutDialog::updateControls()
     m_ranges->setEnabled(!running && !m_loaded);
     m_start->setEnabled(m_session && !running);
     m_stop->setEnabled(running);
-    m_new->setEnabled(!running);
-    m_open->setEnabled(!running);
+    // Another plan would forget an output whose release is still being tried.
+    m_new->setEnabled(!running && !m_runner->isRetryingRelease());
+    m_open->setEnabled(!running && !m_runner->isRetryingRelease());
     m_report->setEnabled(m_loaded);
     const CheckoutPlan &plan = m_runner->plan();
     m_summary->setText(plan.points.empty() ? QString()

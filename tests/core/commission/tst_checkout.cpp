@@ -479,8 +479,14 @@ void TestCheckout::asksBeforeOutputsInRun()
     QVERIFY(runner.isPlcRunning());
     QSignalSpy ask(&runner, &CheckoutRunner::runConfirmationNeeded);
     QSignalSpy forced(&runner, &CheckoutRunner::outputForced);
+    QSignalSpy failed(&runner, &CheckoutRunner::failed);
     runner.forceOutput(1);
     QTRY_COMPARE_WITH_TIMEOUT(ask.count(), 1, 30000);
+    // A question, not a failure: "nothing was forced" would be wrong once it is answered yes.
+    QCOMPARE(failed.count(), 0);
+    QCOMPARE(englishText(ask.at(0).at(1).value<Message>()).left(74),
+             QStringLiteral("The PLC is in RUN: its program drives the outputs too. Force Y1 on "
+                            "anyway?"));
     QCOMPARE(m_plc->isDisabled(addr("Y1")), std::optional<bool>(false));
     QVERIFY(!runner.hasForced());
     runner.allowOutputsInRun(true);
