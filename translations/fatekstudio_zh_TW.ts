@@ -1855,11 +1855,11 @@
         </message>
         <message>
             <source>&quot;id&quot; must be text or a number.</source>
-            <translation>「id」必須為文字或數字。</translation>
+            <translation>{&quot;id&quot;: ...} 必須是文字或數字。</translation>
         </message>
         <message>
             <source>Refused: the command&apos;s &quot;time&quot; is %1 s ahead of the gateway&apos;s clock (at most %2 s are taken); check the sender&apos;s clock.</source>
-            <translation>拒絕：此命令的「time」比閘道器的時鐘快 %1 秒（最多接受 %2 秒）；請檢查發送端的時鐘。</translation>
+            <translation>拒絕：此命令的 {&quot;time&quot;: ...} 比閘道的時鐘快 %1 秒（最多接受 %2 秒）；請檢查發送端的時鐘。</translation>
         </message>
         <message>
             <source>%1 (station %2) is not published by the gateway %3.</source>
@@ -2035,7 +2035,7 @@
         </message>
         <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
-            <translation>%1 不是有限數值：NaN 與無限大只會寫入已開啟「%2」選項的項目</translation>
+            <translation>%1 不是有限數值：非數值與無限大只會寫入已開啟「%2」選項的項目</translation>
         </message>
         <message>
             <source>Refused: the gateway is read-only.</source>
