@@ -1,3 +1,4 @@
+#include "core/watch/jsonkeys.h"
 #include "core/watch/watchlist.h"
 
 #include <QDir>
@@ -79,6 +80,7 @@ private slots:
     void saveLoadRoundTrip();
     void savedJsonShape();
     void allowNonFiniteRoundTrip();
+    void duplicateKeysOnlyWithinOneObject();
     void loadDefaults();
     void loadErrors_data();
     void loadErrors();
@@ -134,6 +136,20 @@ void TestWatchList::allowNonFiniteRoundTrip()
     QVERIFY(
         WatchList::load(fileWithItems(R"({"address":"R1","name":"x"},{"address":"R2","name":"x"})"))
             .ok());
+}
+
+// JsonKeys (issue 48) looks at keys only, each object's apart: strings that look like keys, the
+// same key in nested or sibling objects, and values in lists are none.
+void TestWatchList::duplicateKeysOnlyWithinOneObject()
+{
+    QVERIFY(
+        !JsonKeys::firstDuplicate(R"({"a":"{\"a\":1,\"a\":2}","b":{"a":1,"b":[{"a":1},{"a":2}]},)"
+                                  R"("c":["a","a"],"d":"x\\"})"));
+    const std::optional<Message> twice
+        = JsonKeys::firstDuplicate("{\"a\":{\"b\":1},\n\"c\":[{\"d\":\"}\"},\n{\"d\":1,\"d\":2}]}");
+    QVERIFY(twice);
+    QCOMPARE(QString::fromStdString(english(*twice)),
+             QStringLiteral("line 3: duplicate key \"d\""));
 }
 
 void TestWatchList::savedJsonShape()
