@@ -1886,6 +1886,14 @@
             <translation>The command has %1 word(s), but %2 in this format spans %3.</translation>
         </message>
         <message>
+            <source>&quot;id&quot; must be text or a number.</source>
+            <translation>&quot;id&quot; must be text or a number.</translation>
+        </message>
+        <message>
+            <source>Refused: the command&apos;s &quot;time&quot; is %1 s ahead of the gateway&apos;s clock (at most %2 s are taken); check the sender&apos;s clock.</source>
+            <translation>Refused: the command&apos;s &quot;time&quot; is %1 s ahead of the gateway&apos;s clock (at most %2 s are taken); check the sender&apos;s clock.</translation>
+        </message>
+        <message>
             <source>%1 (station %2) is not published by the gateway %3.</source>
             <translation>%1 (station %2) is not published by the gateway %3.</translation>
         </message>
@@ -2052,6 +2060,14 @@
         <message>
             <source>not read in this cycle</source>
             <translation>not read in this cycle</translation>
+        </message>
+        <message>
+            <source>duplicate key &quot;%1&quot;</source>
+            <translation>duplicate key &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
+            <translation>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</translation>
         </message>
         <message>
             <source>Refused: the gateway is read-only.</source>

@@ -1886,6 +1886,14 @@
             <translation>命令有 %1 個字組，但 %2 在此格式下佔 %3 個。</translation>
         </message>
         <message>
+            <source>&quot;id&quot; must be text or a number.</source>
+            <translation>{&quot;id&quot;: ...} 必須是文字或數字。</translation>
+        </message>
+        <message>
+            <source>Refused: the command&apos;s &quot;time&quot; is %1 s ahead of the gateway&apos;s clock (at most %2 s are taken); check the sender&apos;s clock.</source>
+            <translation>拒絕：此命令的 {&quot;time&quot;: ...} 比閘道的時鐘快 %1 秒（最多接受 %2 秒）；請檢查發送端的時鐘。</translation>
+        </message>
+        <message>
             <source>%1 (station %2) is not published by the gateway %3.</source>
             <translation>%1（站號 %2）未由閘道器 %3 發佈。</translation>
         </message>
@@ -2052,6 +2060,14 @@
         <message>
             <source>not read in this cycle</source>
             <translation>本週期未讀取</translation>
+        </message>
+        <message>
+            <source>duplicate key &quot;%1&quot;</source>
+            <translation>「%1」鍵重複出現</translation>
+        </message>
+        <message>
+            <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
+            <translation>%1 不是有限數值：非數值與無限大只會寫入已開啟「%2」選項的項目</translation>
         </message>
         <message>
             <source>Refused: the gateway is read-only.</source>

@@ -1,6 +1,7 @@
 #include "gatewayconfig.h"
 
 #include "core/mqtt/gatewaytopics.h"
+#include "core/watch/jsonkeys.h"
 #include "gatewaymessages.h"
 
 #include <QDir>
@@ -466,6 +467,10 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
         return fail(msg<MsgId::GatewayConfigNotJson>(Message::text(
             parseError.error != QJsonParseError::NoError ? parseError.errorString().toStdString()
                                                          : std::string("{ ... } expected"))));
+    // Reader refuses a key it does not know, this one a key given twice (QJsonObject keeps only
+    // the last: "readOnly":true,...,"readOnly":false would quietly allow writes).
+    if (std::optional<Message> twice = JsonKeys::firstDuplicate(json))
+        return fail(std::move(*twice));
     const QJsonObject root = document.object();
     if (root.value(QStringLiteral("format")).toString() != QLatin1StringView(FormatMarker))
         return fail(msg<MsgId::GatewayConfigWrongFormat>("format", FormatMarker));

@@ -354,15 +354,20 @@ Message GatewayLink::tooOld(const GatewayPayload::SetCommand &command, bool queu
     };
     if (command.time) {
         const qint64 age = command.time->msecsTo(now);
-        return age > maxMs
-                   ? msg<MsgId::GatewayWriteExpired>(seconds(age), m_config.commandMaxAgeSec)
-                   : Message{};
+        if (age < -qint64(MaxAheadSec) * 1000)
+            return msg<MsgId::GatewayWriteFuture>(seconds(-age), MaxAheadSec);
+        if (age > maxMs)
+            return msg<MsgId::GatewayWriteExpired>(seconds(age), m_config.commandMaxAgeSec);
     }
     if (!queued)
         return {}; // came straight through: as old as the broker's hand-over
-    // Kept by the broker while this gateway was away: at most as old as the outage.
-    if (!m_brokerDownAt.isValid())
-        return msg<MsgId::GatewayWriteAgeUnknown>(m_config.commandMaxAgeSec);
+    // Kept by the broker while this gateway was away: at most as old as the outage. Checked with
+    // a "time" too: that is the sender's word, the outage the gateway's own measure.
+    if (!m_brokerDownAt.isValid()) {
+        // Away since this program started: only the command's time tells its age.
+        return command.time ? Message{}
+                            : msg<MsgId::GatewayWriteAgeUnknown>(m_config.commandMaxAgeSec);
+    }
     const qint64 waited = m_brokerDownAt.msecsTo(now);
     return waited > maxMs
                ? msg<MsgId::GatewayWriteWaited>(seconds(waited), m_config.commandMaxAgeSec)
@@ -401,6 +406,14 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
         Q_EMIT logEvent(msg<MsgId::GatewayWriteBadTopic>(topic.toStdString()));
         return;
     }
+    // The broker sends a retained command again at every subscription, also right after it
+    // handed over the same command queued for this session (issue 48: two replies to one
+    // command). A retained copy of the last command on its topic was answered already.
+    if (retained && m_lastCommand.value(topic) == payload)
+        return;
+    if (m_lastCommand.size() >= MaxRememberedCommands)
+        m_lastCommand.clear();
+    m_lastCommand.insert(topic, payload);
     GatewayPayload::Reply reply;
     reply.station = parsed->station;
     reply.address = parsed->address;
@@ -423,7 +436,7 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
         return refuse(reply, old);
 
     // The item's spec: the command's format, else the watched item's at this address, else the
-    // address's default (as a new row of a watch table gets).
+    // address's default (as a new row of a watch table gets). allowNonFinite: the watched item's.
     WatchItemSpec spec;
     spec.address = parsed->address;
     spec.station = static_cast<quint8>(parsed->station);
@@ -433,6 +446,8 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
     if (watched != m_itemOfTopic.cend()) {
         spec.format = m_items[*watched].values.item().format;
         spec.swapWords = m_items[*watched].values.item().swapWords;
+        // NaN and infinities only where the watch list allows them for this item.
+        spec.allowNonFinite = m_items[*watched].values.item().allowNonFinite;
     }
     if (command->format)
         spec.format = *command->format;
@@ -453,8 +468,10 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
             return refuse(reply, msg<MsgId::GatewaySetWordCount>(
                                      static_cast<int>(command->words->size()),
                                      addressString(spec.address), item.elementCount()));
-        raw = item.join(*command->words);
-        reply.value = item.text(*raw); // for the reply and the log, as the PLC gets it
+        // Each word must fit its element (join() would cut 70000 to 4464, 2 on a bit to OFF).
+        raw = item.fromWords(*command->words);
+        if (raw)
+            reply.value = item.text(*raw); // for the reply and the log, as the PLC gets it
     } else {
         raw = item.parse(command->value);
     }

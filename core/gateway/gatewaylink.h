@@ -43,6 +43,14 @@ public:
     static constexpr int MaxPendingWrites = 100;
     // Longest /set payload taken.
     static constexpr int MaxCommandBytes = 4096;
+    // How far a command's "time" may lie ahead of the gateway's clock. Clocks of machines that
+    // sync over NTP differ by milliseconds, by a few seconds when one drifted; further ahead the
+    // time is wrong, and taken as it is it would keep a command alive past commandMaxAgeSec for
+    // as long (a time in 2099 never expired). 5 s stretches the 10 s default by half at most.
+    static constexpr int MaxAheadSec = 5;
+    // Set topics whose last command is remembered (to know the broker's retained copy of one
+    // already answered); beyond it the memory starts again.
+    static constexpr int MaxRememberedCommands = 256;
 
     GatewayLink(const GatewayConnectionConfig &config, const QString &prefix,
                 const MqttBrokerSettings &broker, bool readOnly, QObject *parent = nullptr);
@@ -135,6 +143,8 @@ private:
     bool m_stopping = false;
     bool m_brokerDown = true;
     QDateTime m_brokerDownAt; // when the link to the broker last went down (invalid: never)
+    // The last command per set topic (payload), for onCommand's retained copies.
+    QHash<QString, QByteArray> m_lastCommand;
     bool m_stopped = false;
 };
 

@@ -1,6 +1,7 @@
 #include "gatewaypayload.h"
 
 #include "core/watch/itemvalues.h"
+#include "core/watch/jsonkeys.h"
 #include "messagejson.h"
 #include "mqttmessages.h"
 
@@ -364,6 +365,12 @@ std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteA
             *error = msg<MsgId::GatewaySetNotJson>();
             return std::nullopt;
         }
+        // {"value":1,"value":100} would write 100 without a word: which one was meant is not
+        // known.
+        if (std::optional<Message> twice = JsonKeys::firstDuplicate(trimmed)) {
+            *error = std::move(*twice);
+            return std::nullopt;
+        }
         const QJsonValue value = object->value(QStringLiteral("value"));
         if (object->contains(QStringLiteral("words"))) {
             const QJsonValue words = object->value(QStringLiteral("words"));
@@ -410,7 +417,17 @@ std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteA
             }
             command.swapWords = swap.toBool();
         }
-        command.id = object->value(QStringLiteral("id")).toString();
+        // The reply gives the id back for the sender to match: one it could not give back as it
+        // was (an object read as "") would match nothing, or every other such command.
+        const QJsonValue id = object->value(QStringLiteral("id"));
+        if (id.isDouble())
+            command.id = QString::number(id.toDouble(), 'g', QLocale::FloatingPointShortest);
+        else if (id.isString())
+            command.id = id.toString();
+        else if (!id.isUndefined()) {
+            *error = msg<MsgId::GatewaySetBadId>();
+            return std::nullopt;
+        }
         if (object->contains(QStringLiteral("time"))) {
             const QString text = object->value(QStringLiteral("time")).toString();
             const QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);

@@ -68,6 +68,16 @@ FATEK_MSG(GatewaySetWordCount, 3,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The command has %1 word(s), but %2 in this format spans %3."))
 
+// "id" given as something the reply could not give back as it was (an object, a list, true).
+FATEK_MSG(GatewaySetBadId, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "\"id\" must be text or a number."))
+// A command whose time lies ahead of the gateway's clock by more than the bound: %1 seconds
+// ahead, %2 the bound (core/gateway/gatewaylink.cpp).
+FATEK_MSG(GatewayWriteFuture, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Refused: the command's \"time\" is %1 s ahead of the gateway's "
+                            "clock (at most %2 s are taken); check the sender's clock."))
+
 // The refusals of a write command, in the gateway's reply (core/gateway/gatewaylink.cpp), which
 // the studio decodes and shows.
 FATEK_MSG(GatewayWriteReadOnly, 0,

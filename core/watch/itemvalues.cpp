@@ -1,5 +1,7 @@
 #include "itemvalues.h"
 
+#include "watchmessages.h"
+
 #include <algorithm>
 #include <atomic>
 
@@ -118,7 +120,41 @@ QString ItemValues::text(std::uint64_t raw) const
 
 Result<std::uint64_t> ItemValues::parse(const QString &text) const
 {
-    return ValueFormat::parse(text, width(), m_item.format, m_item.swapWords);
+    const Result<std::uint64_t> raw
+        = ValueFormat::parse(text, width(), m_item.format, m_item.swapWords);
+    if (!raw)
+        return raw;
+    return finite(*raw, text.trimmed());
+}
+
+Result<std::uint64_t> ItemValues::fromWords(std::span<const std::uint32_t> words) const
+{
+    const int bits = elementBits(m_item.address);
+    const std::uint64_t mask = (std::uint64_t(1) << bits) - 1;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (words[i] <= mask)
+            continue;
+        const Message range
+            = msg<MsgId::ValueTooLarge>(std::to_string(words[i]),
+                                        bits == 1    ? msg<MsgId::ValueWidthBit>()
+                                        : bits == 16 ? msg<MsgId::ValueWidthRegister>()
+                                                     : msg<MsgId::ValueWidthBits>(bits),
+                                        "0.." + std::to_string(mask));
+        return makeError(ErrorKind::InvalidRequest,
+                         msg<MsgId::AtPlace>(
+                             Message::text(elementAddress(static_cast<int>(i)).toString()), range));
+    }
+    const std::uint64_t raw = join(words);
+    return finite(raw, text(raw));
+}
+
+Result<std::uint64_t> ItemValues::finite(std::uint64_t raw, const QString &text) const
+{
+    if (m_item.allowNonFinite
+        || ValueFormat::isFinite(raw, width(), m_item.format, m_item.swapWords))
+        return raw;
+    return makeError(ErrorKind::InvalidRequest,
+                     msg<MsgId::ValueNotFinite>(text.toStdString(), "allowNonFinite"));
 }
 
 Request ItemValues::writeRequest(std::uint64_t raw) const

@@ -61,14 +61,22 @@ public:
     // Text of a joined value in the item's format and word order.
     QString text(std::uint64_t raw) const;
     // What a technician typed, in the item's format and word order, as the raw value to write
-    // (ValueFormat::parse's grammar: 12, -5, 0x1A, 1Ah, 0b1010, 1.5 for floats, ON/OFF ...).
+    // (ValueFormat::parse's grammar and ranges: 12, -5, 0x1A, 1Ah, 0b1010, 1.5 for floats,
+    // ON/OFF ...). NaN and infinities only when the item allows them (allowNonFinite). The one
+    // check of a typed value before it is written: watch tables, fatek-cli write, the gateway.
     Result<std::uint64_t> parse(const QString &text) const;
+    // The raw value to write from the elements' words as given (the gateway's "words"), element 0
+    // first, with the checks parse() makes: each word fits its element (0/1 for a discrete,
+    // 0..65535 for a register, where join() would cut 70000 to 4464), and a float is finite
+    // unless the item allows otherwise. The caller has checked that there are elementCount().
+    Result<std::uint64_t> fromWords(std::span<const std::uint32_t> words) const;
     // The request that writes `raw` into every element: 45 for a discrete, 47 over all registers
     // (a float over R100 writes R100 and R101 in one request).
     Request writeRequest(std::uint64_t raw) const;
 
 private:
     void takePollIds();
+    Result<std::uint64_t> finite(std::uint64_t raw, const QString &text) const;
 
     WatchItemSpec m_item;
     std::vector<std::uint64_t> m_pollIds;

@@ -142,12 +142,29 @@ QString signedText(std::uint64_t value, int width)
     return QString::number(static_cast<qint64>(value));
 }
 
-QString rangeText(int width)
+// What a value typed in `format` may be: a signed item reads 32768 back as -32768, an unsigned
+// one -1 as 65535, so each takes only what it shows again (issue 48). Bits typed as such (0x8000,
+// 8000h, 0b...) fill the whole width in any format: they are the register's bits, not a number.
+struct Range
 {
-    const QString low
-        = width >= 64 ? QStringLiteral("-9223372036854775808")
-                      : QString::number(-static_cast<qint64>(std::uint64_t(1) << (width - 1)));
-    return QStringLiteral("%1..%2").arg(low, QString::number(widthMask(width)));
+    std::uint64_t negative = 0; // largest magnitude below zero (0: none)
+    std::uint64_t positive = 0;
+
+    QString text() const
+    {
+        const QString low
+            = negative == 0 ? QStringLiteral("0") : QLatin1Char('-') + QString::number(negative);
+        return QStringLiteral("%1..%2").arg(low, QString::number(positive));
+    }
+};
+
+Range rangeOf(int width, DisplayFormat format, bool bits)
+{
+    const std::uint64_t mask = widthMask(width);
+    if (format != DisplayFormat::Signed)
+        return {0, mask};
+    const std::uint64_t half = std::uint64_t(1) << (width - 1);
+    return {half, bits ? mask : half - 1};
 }
 
 bool startsWithPrefix(QStringView text, char16_t lower)
@@ -164,8 +181,8 @@ bool isRawNotation(QStringView text)
 }
 
 // A decimal number in a notation the integer grammar does not take ("1e308", "-2.5e9") whose
-// value lies outside a register of `width` bits: too large, not "not a number" (issue 33).
-bool decimalOutOfRange(const QString &text, int width)
+// value lies outside `range`: too large, not "not a number" (issue 33).
+bool decimalOutOfRange(const QString &text, const Range &range)
 {
     static const QRegularExpression decimal(
         QStringLiteral(R"(^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$)"));
@@ -180,7 +197,8 @@ bool decimalOutOfRange(const QString &text, int width)
         return true; // beyond a double: 1e400
     if (error != std::errc{} || end != latin.constData() + latin.size())
         return false;
-    return value > static_cast<double>(widthMask(width)) || value < -std::ldexp(1.0, width - 1);
+    return value > static_cast<double>(range.positive)
+           || value < -static_cast<double>(range.negative);
 }
 
 // Integer text as the interpreted value (before the word swap), masked to `width`.
@@ -220,9 +238,9 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
             return valueError(msg<MsgId::ValueNotHex>(str(text)));
         if (base == 2)
             return valueError(msg<MsgId::ValueNotBinary>(str(text)));
-        if (decimalOutOfRange(text, width))
+        if (const Range range = rangeOf(width, format, false); decimalOutOfRange(text, range))
             return valueError(
-                msg<MsgId::ValueTooLarge>(str(text), widthPhrase(width), str(rangeText(width))));
+                msg<MsgId::ValueTooLarge>(str(text), widthPhrase(width), str(range.text())));
         return valueError(msg<MsgId::ValueNotNumber>(str(text)));
     };
 
@@ -262,12 +280,13 @@ Result<std::uint64_t> parseInteger(const QString &text, int width, DisplayFormat
         return magnitude;
     }
 
-    const std::uint64_t mask = widthMask(width);
-    const std::uint64_t negativeLimit = std::uint64_t(1) << (width - 1);
-    if (overflow || (negative ? magnitude > negativeLimit : magnitude > mask))
+    // A sign makes a number of any notation ("-0x10" is -16), so only the signed range has room
+    // for it; without one, hex and binary digits are the bits.
+    const Range range = rangeOf(width, format, !negative && base != 10);
+    if (overflow || magnitude > (negative ? range.negative : range.positive))
         return valueError(
-            msg<MsgId::ValueTooLarge>(str(text), widthPhrase(width), str(rangeText(width))));
-    return negative ? (~magnitude + 1) & mask : magnitude;
+            msg<MsgId::ValueTooLarge>(str(text), widthPhrase(width), str(range.text())));
+    return negative ? (~magnitude + 1) & widthMask(width) : magnitude;
 }
 
 Result<std::uint64_t> parseBit(const QString &text, DisplayFormat format)
@@ -486,6 +505,17 @@ std::optional<double> number(std::uint64_t raw, int width, DisplayFormat format,
     case DisplayFormat::Ascii: return std::nullopt;
     }
     return std::nullopt;
+}
+
+bool isFinite(std::uint64_t raw, int width, DisplayFormat format, bool swap)
+{
+    if ((format != DisplayFormat::Float32 || width != 32)
+        && (format != DisplayFormat::Double64 || width != 64))
+        return true;
+    const std::uint64_t value
+        = (swap ? swapWords(raw & widthMask(width), width) : raw) & widthMask(width);
+    return width == 32 ? std::isfinite(std::bit_cast<float>(static_cast<std::uint32_t>(value)))
+                       : std::isfinite(std::bit_cast<double>(value));
 }
 
 QString format(std::uint64_t raw, int width, DisplayFormat format, bool swap)

@@ -65,14 +65,20 @@ std::optional<double> number(std::uint64_t raw, int width, DisplayFormat format,
                              bool swapWords = false);
 
 // Parses what a technician typed into the raw value to write (swapWords applied, so that
-// format(parse(text)) shows text again). Integer formats accept decimal (negative values as two's
-// complement, range -2^(w-1)..2^w-1), 0x1A, 1Ah and 0b1010; in Hex format bare digits are hex, in
-// Binary format bare digits are binary (spaces allowed), in Bcd format bare digits are the BCD
+// format(parse(text)) shows text again). Integer formats accept decimal, 0x1A, 1Ah and 0b1010, each
+// only in the range the format shows again: Signed -2^(w-1)..2^(w-1)-1 (negative values as two's
+// complement, "-0x10" too), Unsigned/Hex/Binary 0..2^w-1, and digits with a prefix or suffix
+// without a sign (the bits themselves) 0..2^w-1 in every format; in Hex format bare digits are hex,
+// in Binary format bare digits are binary (spaces allowed), in Bcd format bare digits are the BCD
 // digits. Float32/Double64 take decimal or exponent text, NaN, Inf, -Inf, or raw bits as 0x.., ..h
 // or 0b... Ascii takes the literal characters (shorter text is padded with NUL). 1-bit values take
 // ON/OFF, TRUE/FALSE, 1/0 in any format. Errors are sentences for technicians.
 Result<std::uint64_t> parse(const QString &text, int width, DisplayFormat format,
                             bool swapWords = false);
+
+// False only for a Float32/Double64 value that is NaN or an infinity (what a PLC program's
+// arithmetic rarely expects: writes refuse it unless the item allows it, ItemValues).
+bool isFinite(std::uint64_t raw, int width, DisplayFormat format, bool swapWords = false);
 
 // Reverses the 16-bit words of a 32- or 64-bit value; identity for other widths. Its own inverse.
 std::uint64_t swapWords(std::uint64_t raw, int width);

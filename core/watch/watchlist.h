@@ -21,6 +21,9 @@ struct WatchItemSpec
     quint8 station = 1;
     DisplayFormat format = DisplayFormat::Signed;
     bool swapWords = false;
+    // Writes may put NaN or an infinity into a float or double item (off: refused, as a PLC
+    // program's arithmetic rarely expects one; issue 48).
+    bool allowNonFinite = false;
 
     bool operator==(const WatchItemSpec &) const = default;
 };
@@ -49,10 +52,12 @@ struct WatchListFile
 // The saved watch tables: versioned JSON
 //   {"format":"fatek-studio-watchlist","version":1,"tables":[{"name":"Main","intervalMs":500,
 //    "confirmWrites":true,"items":[{"address":"R100","station":1,"format":"signed","swapWords":false,
-//    "name":"Tank level","comment":"..."}]}],
+//    "name":"Tank level","comment":"...","allowNonFinite":true}]}],
 //   "symbols":[{"address":"R12","name":"Tank level","comment":"..."}]}
-// "symbols" (the imported names, SymbolTable) is optional and written only when there are names:
-// version 1 readers ignore unknown keys, so the version stays 1.
+// "symbols" (the imported names, SymbolTable) is optional and written only when there are names,
+// an item's "allowNonFinite" only when true: version 1 readers ignore unknown keys, so the version
+// stays 1. A key given twice in one object is an error ("line 4: duplicate key ..."), not the
+// last one silently.
 // Errors name the place ("table 2, item 5: ...", "line 7: ...").
 namespace WatchList {
 

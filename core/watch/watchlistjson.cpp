@@ -3,6 +3,7 @@
 
 // The watch list file: versioned JSON, read and written.
 
+#include "jsonkeys.h"
 #include "safefile.h"
 #include "watchlisterrors.h"
 
@@ -94,6 +95,10 @@ Result<WatchItemSpec> entryFromJson(const QJsonValue &value)
     if (!swap)
         return swap.error();
     entry.swapWords = *swap;
+    const auto nonFinite = boolMember(object, QStringLiteral("allowNonFinite"), false);
+    if (!nonFinite)
+        return nonFinite.error();
+    entry.allowNonFinite = *nonFinite;
 
     const auto name = textMember(object, QStringLiteral("name"), QString());
     if (!name)
@@ -205,6 +210,8 @@ Result<WatchListFile> load(const QByteArray &json)
     if (!document.isObject())
         return fileError(
             QStringLiteral("The file is not a FATEK Studio watch list: it holds no JSON object."));
+    if (const std::optional<Message> twice = JsonKeys::firstDuplicate(json))
+        return makeError(ErrorKind::InvalidRequest, *twice);
     const QJsonObject root = document.object();
 
     if (root.value(QStringLiteral("format")).toString() != QLatin1String(FormatMarker)) {
@@ -262,14 +269,18 @@ QByteArray save(const WatchListFile &file)
     for (const WatchTableSpec &table : file.tables) {
         QJsonArray items;
         for (const WatchItemSpec &entry : table.items) {
-            items.append(QJsonObject{
+            QJsonObject item{
                 {QStringLiteral("address"), QString::fromStdString(entry.address.toString())},
                 {QStringLiteral("station"), entry.station},
                 {QStringLiteral("format"), ValueFormat::name(entry.format)},
                 {QStringLiteral("swapWords"), entry.swapWords},
                 {QStringLiteral("name"), entry.name},
                 {QStringLiteral("comment"), entry.comment},
-            });
+            };
+            // Only when on: the files of every other item stay as they were.
+            if (entry.allowNonFinite)
+                item.insert(QStringLiteral("allowNonFinite"), true);
+            items.append(item);
         }
         tables.append(QJsonObject{
             {QStringLiteral("name"), table.name},

@@ -34,3 +34,14 @@ FATEK_MSG(PlaceSymbol, 1, QT_TRANSLATE_NOOP("Fatek::Message", "symbol %1"))
 // An item of a gateway connection not read in the last cycle (core/watch/itemassembler.cpp; the
 // gateway publishes it as the item's error).
 FATEK_MSG(GatewayNoValueThisCycle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not read in this cycle"))
+
+// JSON text that names a key twice in one object (core/watch/jsonkeys.cpp; after "line 4: "):
+// watch lists, the gateway's configuration and its commands.
+FATEK_MSG(JsonDuplicateKey, 1, QT_TRANSLATE_NOOP("Fatek::Message", "duplicate key \"%1\""))
+
+// A write of NaN or an infinity to a float or double item (core/watch/itemvalues.cpp); %2 is the
+// watch list item's option that allows it.
+FATEK_MSG(ValueNotFinite, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 is not a finite number: NaN and infinities are written only to an "
+                            "item whose \"%2\" option is on"))

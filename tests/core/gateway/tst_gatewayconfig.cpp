@@ -24,6 +24,7 @@ private Q_SLOTS:
     void errors_data();
     void errors();
     void passwordFile();
+    void duplicateKeysNamed();
     void checkValid();
     void checkInvalid();
     void checkUsage();
@@ -335,6 +336,40 @@ void TestGatewayConfig::errors()
     QVERIFY(!config.ok());
     const QString text = QString::fromStdString(config.error().text());
     QVERIFY2(text.startsWith(expected), qPrintable(text));
+}
+
+// Issue 48: QJsonDocument keeps the last of two equal keys, so a configuration that said
+// "readOnly":true and then "readOnly":false allowed writes. The key and its line are named, also
+// in a watch list the configuration reads.
+void TestGatewayConfig::duplicateKeysNamed()
+{
+    QByteArray json = QJsonDocument(validConfig()).toJson(QJsonDocument::Compact);
+    json.replace(R"("readOnly":false)", "\"readOnly\":true,\n\"readOnly\":false");
+    Result<GatewayConfig> config = GatewayConfig::load(json, m_dir.path());
+    QVERIFY(!config.ok());
+    QCOMPARE(QString::fromStdString(config.error().text()),
+             QStringLiteral("line 2: duplicate key \"readOnly\""));
+
+    json = QJsonDocument(validConfig()).toJson(QJsonDocument::Compact);
+    json.replace(R"("timeoutMs":800)", "\n\n\"timeoutMs\":800,\"timeoutMs\":50");
+    config = GatewayConfig::load(json, m_dir.path());
+    QVERIFY(!config.ok());
+    QCOMPARE(QString::fromStdString(config.error().text()),
+             QStringLiteral("line 3: duplicate key \"timeoutMs\""));
+
+    QVERIFY(!write(QStringLiteral("dup.json"),
+                   "{\"format\":\"fatek-studio-watchlist\",\"version\":1,\"tables\":[\n"
+                   "{\"items\":[{\"address\":\"R1\",\"address\":\"R2\"}]}]}")
+                 .isEmpty());
+    QJsonObject withList = validConfig();
+    withList
+        = replaced(withList, {"connections", 0, "watchLists", 0, "file"}, QJsonValue("dup.json"))
+              .toObject();
+    config = GatewayConfig::load(QJsonDocument(withList).toJson(), m_dir.path());
+    QVERIFY(!config.ok());
+    const QString text = QString::fromStdString(config.error().text());
+    QVERIFY2(text.endsWith(QStringLiteral("dup.json: line 2: duplicate key \"address\"")),
+             qPrintable(text));
 }
 
 void TestGatewayConfig::passwordFile()

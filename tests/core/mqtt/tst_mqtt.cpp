@@ -588,6 +588,23 @@ void TestMqtt::setCommands()
         QVERIFY2(!GatewayPayload::decodeSet(bad, &error), bad);
         QCOMPARE(error.id, MsgId::GatewaySetBadWords);
     }
+
+    // Issue 48: two equal keys are refused (QJsonDocument kept the last: 100, not 1), and an id
+    // the reply could not give back as it was (an object became "").
+    QVERIFY(!GatewayPayload::decodeSet(R"({"value":1,"id":"d","value":100})", &error));
+    QCOMPARE(englishText(error), QStringLiteral("line 1: duplicate key \"value\""));
+    QVERIFY(!GatewayPayload::decodeSet("{\"words\":[1],\n\"words\":[2]}", &error));
+    QCOMPARE(englishText(error), QStringLiteral("line 2: duplicate key \"words\""));
+    for (const char *bad : {R"({"value":1,"id":{"a":1}})", R"({"value":1,"id":[1]})",
+                            R"({"value":1,"id":true})", R"({"value":1,"id":null})"}) {
+        QVERIFY2(!GatewayPayload::decodeSet(bad, &error), bad);
+        QCOMPARE(englishText(error), QStringLiteral("\"id\" must be text or a number."));
+    }
+    command = GatewayPayload::decodeSet(R"({"value":1,"id":42})", &error);
+    QVERIFY(command);
+    QCOMPARE(command->id, QStringLiteral("42"));
+    // Equal values under different keys are no duplicate keys.
+    QVERIFY(GatewayPayload::decodeSet(R"({"value":"1","id":"1","format":"signed"})", &error));
 }
 
 void TestMqtt::replyAndStatusRoundTrip()

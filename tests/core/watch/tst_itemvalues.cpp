@@ -8,6 +8,7 @@
 #include <QTest>
 
 #include <bit>
+#include <cmath>
 #include <set>
 
 using namespace Fatek;
@@ -57,6 +58,8 @@ private Q_SLOTS:
     void typedValuesBecomeWrites();
     void typingErrors_data();
     void typingErrors();
+    void nonFiniteOnlyWhereAllowed();
+    void wordsMustFitTheirElements();
     void setItemRenewsIdsOnlyWhenElementsChange();
     void assemblerJoinsElementsIntoItems();
     void assemblerKeepsWordsAcrossBatchesAndFormats();
@@ -270,6 +273,11 @@ void TestItemValues::typingErrors_data()
                                      << "does not fit a 32-bit float";
     QTest::newRow("discrete 2") << item("Y0", DisplayFormat::Bit) << "2"
                                 << "is not a bit value";
+    // Issue 48: a signed item reads 32768 back as -32768, an unsigned one -0x1 as 65535.
+    QTest::newRow("signed 32768") << item("R0", DisplayFormat::Signed) << "32768"
+                                  << "32768 does not fit a 16-bit register (-32768..32767)";
+    QTest::newRow("unsigned -0x1") << item("R0", DisplayFormat::Unsigned) << "-0x1"
+                                   << "-0x1 does not fit a 16-bit register (0..65535)";
     QTest::newRow("empty") << item("R0", DisplayFormat::Signed) << "  "
                            << "No value typed";
     QTest::newRow("bcd digit") << item("R0", DisplayFormat::Bcd) << "12A4"
@@ -287,6 +295,64 @@ void TestItemValues::typingErrors()
     QVERIFY(!raw.ok());
     const QString error = QString::fromStdString(raw.error().text());
     QVERIFY2(error.contains(message), qPrintable(error));
+}
+
+// Issue 48: NaN and infinities went to a float register as "inf" while 1e39 was refused. The one
+// check of every writer (watch tables, fatek-cli write, the gateway's value and words).
+void TestItemValues::nonFiniteOnlyWhereAllowed()
+{
+    WatchItemSpec spec = item("R20", DisplayFormat::Float32);
+    const ItemValues strict(spec);
+    for (const char *text : {"nan", "inf", "-inf", "Infinity", "0x7F800000", "0xFFC00000"}) {
+        const auto raw = strict.parse(QString::fromLatin1(text));
+        QVERIFY2(!raw.ok(), text);
+        QCOMPARE(raw.error().message.id, MsgId::ValueNotFinite);
+    }
+    QCOMPARE(QString::fromStdString(strict.parse(QStringLiteral(" inf ")).error().text()),
+             QStringLiteral("inf is not a finite number: NaN and infinities are written only to "
+                            "an item whose \"allowNonFinite\" option is on"));
+    // +inf as the words the gateway takes, swapped or not.
+    QCOMPARE(strict.fromWords(words({0, 0x7F80})).error().message.id, MsgId::ValueNotFinite);
+    QVERIFY(strict.fromWords(words({0, 0x3FC0})).ok());
+    const ItemValues swapped(item("R20", DisplayFormat::Float32, true));
+    QCOMPARE(swapped.fromWords(words({0x7F80, 0})).error().message.id, MsgId::ValueNotFinite);
+    QVERIFY(swapped.fromWords(words({0, 0x7F80})).ok()); // a tiny number, swapped
+    const ItemValues doubles(item("R20", DisplayFormat::Double64));
+    QCOMPARE(doubles.parse(QStringLiteral("-Inf")).error().message.id, MsgId::ValueNotFinite);
+    // The same bits in an integer format are a number like any other.
+    QVERIFY(ItemValues(item("DR20", DisplayFormat::Hex)).parse(QStringLiteral("0x7F800000")).ok());
+
+    spec.allowNonFinite = true;
+    const ItemValues allowed(spec);
+    QCOMPARE(allowed.parse(QStringLiteral("-inf")).value(), std::uint64_t(0xFF800000));
+    QVERIFY(std::isnan(std::bit_cast<float>(
+        static_cast<std::uint32_t>(allowed.parse(QStringLiteral("nan")).value()))));
+    QCOMPARE(allowed.fromWords(words({0, 0x7F80})).value(), std::uint64_t(0x7F800000));
+    // Too large stays too large: the option is about NaN and infinities only.
+    QVERIFY(!allowed.parse(QStringLiteral("1e39")).ok());
+}
+
+// Issue 48: join() keeps an element's bits only, so {"words":[70000]} wrote 4464 and [2] on a
+// bit wrote OFF. fromWords() refuses them, naming the element.
+void TestItemValues::wordsMustFitTheirElements()
+{
+    const auto refused = [](const WatchItemSpec &spec, std::vector<std::uint32_t> given) {
+        const auto raw = ItemValues(spec).fromWords(given);
+        return raw.ok() ? QString() : QString::fromStdString(raw.error().text());
+    };
+    QCOMPARE(refused(item("R100", DisplayFormat::Signed), words({70000})),
+             QStringLiteral("R100: 70000 does not fit a 16-bit register (0..65535)"));
+    QCOMPARE(refused(item("M10", DisplayFormat::Bit), words({2})),
+             QStringLiteral("M10: 2 does not fit a bit (0..1)"));
+    QCOMPARE(refused(item("Y4", DisplayFormat::Bit), words({1000})),
+             QStringLiteral("Y4: 1000 does not fit a bit (0..1)"));
+    QCOMPARE(refused(item("R100", DisplayFormat::Float32), words({0, 65536})),
+             QStringLiteral("R101: 65536 does not fit a 16-bit register (0..65535)"));
+    QCOMPARE(refused(item("R100", DisplayFormat::Unsigned), words({65535})), QString());
+    QCOMPARE(refused(item("M10", DisplayFormat::Bit), words({1})), QString());
+    QCOMPARE(refused(item("DR10", DisplayFormat::Unsigned), words({0xFFFFFFFF})), QString());
+    const ItemValues dr(item("DR10", DisplayFormat::Signed));
+    QCOMPARE(dr.fromWords(words({0xFFFFFFFF})).value(), std::uint64_t(0xFFFFFFFF));
 }
 
 void TestItemValues::setItemRenewsIdsOnlyWhenElementsChange()

@@ -256,8 +256,11 @@ void TestValueFormat::parse_data()
     QTest::newRow("spaces") << "  42 " << 16 << F::Unsigned << false << 42ull;
     QTest::newRow("-1") << "-1" << 16 << F::Signed << false << 0xFFFFull;
     QTest::newRow("-32768") << "-32768" << 16 << F::Signed << false << 0x8000ull;
-    QTest::newRow("65535 signed") << "65535" << 16 << F::Signed << false << 0xFFFFull;
-    QTest::newRow("-1 unsigned") << "-1" << 32 << F::Unsigned << false << 0xFFFFFFFFull;
+    QTest::newRow("32767 signed") << "32767" << 16 << F::Signed << false << 0x7FFFull;
+    // Bits typed as such fill the register in any format (issue 48: a decimal does not).
+    QTest::newRow("0xFFFF signed") << "0xFFFF" << 16 << F::Signed << false << 0xFFFFull;
+    QTest::newRow("-0x8000 signed") << "-0x8000" << 16 << F::Signed << false << 0x8000ull;
+    QTest::newRow("65535 unsigned") << "65535" << 16 << F::Unsigned << false << 0xFFFFull;
     QTest::newRow("0x1A") << "0x1A" << 16 << F::Signed << false << 0x1Aull;
     QTest::newRow("0X1a") << "0X1a" << 16 << F::Unsigned << false << 0x1Aull;
     QTest::newRow("1Ah") << "1Ah" << 16 << F::Signed << false << 0x1Aull;
@@ -356,21 +359,43 @@ void TestValueFormat::rejects_data()
     using F = DisplayFormat;
 
     QTest::newRow("70000") << "70000" << 16 << F::Signed
-                           << "70000 does not fit a 16-bit register (-32768..65535)";
-    QTest::newRow("-32769") << "-32769" << 16 << F::Unsigned
-                            << "-32769 does not fit a 16-bit register (-32768..65535)";
+                           << "70000 does not fit a 16-bit register (-32768..32767)";
+    QTest::newRow("-32769") << "-32769" << 16 << F::Signed
+                            << "-32769 does not fit a 16-bit register (-32768..32767)";
     QTest::newRow("0x10000") << "0x10000" << 16 << F::Hex
-                             << "0x10000 does not fit a 16-bit register (-32768..65535)";
+                             << "0x10000 does not fit a 16-bit register (0..65535)";
+    // Issue 48: each format takes what it shows again (32768 read back as -32768, -1 as 65535).
+    QTest::newRow("32768 signed") << "32768" << 16 << F::Signed
+                                  << "32768 does not fit a 16-bit register (-32768..32767)";
+    QTest::newRow("65535 signed") << "65535" << 16 << F::Signed
+                                  << "65535 does not fit a 16-bit register (-32768..32767)";
+    QTest::newRow("-1 unsigned") << "-1" << 32 << F::Unsigned
+                                 << "-1 does not fit a 32-bit value (0..4294967295)";
+    QTest::newRow("-0x1 unsigned")
+        << "-0x1" << 16 << F::Unsigned << "-0x1 does not fit a 16-bit register (0..65535)";
+    QTest::newRow("-0x1 hex") << "-0x1" << 16 << F::Hex
+                              << "-0x1 does not fit a 16-bit register (0..65535)";
+    QTest::newRow("-1 hex") << "-1" << 16 << F::Hex
+                            << "-1 does not fit a 16-bit register (0..65535)";
+    QTest::newRow("-1 binary") << "-1" << 16 << F::Binary
+                               << "-1 does not fit a 16-bit register (0..65535)";
+    QTest::newRow("-0x8001 signed")
+        << "-0x8001" << 16 << F::Signed << "-0x8001 does not fit a 16-bit register (-32768..32767)";
+    QTest::newRow("float negative bits")
+        << "-0x3F800000" << 32 << F::Float32
+        << "-0x3F800000 does not fit a 32-bit value (0..4294967295)";
     QTest::newRow("12G") << "12G" << 16 << F::Signed << "\"12G\" is not a number";
     QTest::newRow("1.5 integer") << "1.5" << 16 << F::Signed << "\"1.5\" is not a number";
     // Out of range in exponent notation (issue 33): too large, not "not a number".
     QTest::newRow("1e308") << "1e308" << 16 << F::Signed
-                           << "1e308 does not fit a 16-bit register (-32768..65535)";
+                           << "1e308 does not fit a 16-bit register (-32768..32767)";
     QTest::newRow("-2.5e9 32-bit")
         << "-2.5e9" << 32 << F::Signed
-        << "-2.5e9 does not fit a 32-bit value (-2147483648..4294967295)";
+        << "-2.5e9 does not fit a 32-bit value (-2147483648..2147483647)";
     QTest::newRow("1e400") << "1e400" << 16 << F::Unsigned
-                           << "1e400 does not fit a 16-bit register (-32768..65535)";
+                           << "1e400 does not fit a 16-bit register (0..65535)";
+    QTest::newRow("4e4 signed") << "4e4" << 16 << F::Signed
+                                << "4e4 does not fit a 16-bit register (-32768..32767)";
     QTest::newRow("1e3 in range") << "1e3" << 16 << F::Signed << "\"1e3\" is not a number";
     QTest::newRow("sign space") << "- 5" << 16 << F::Signed << "\"- 5\" is not a number";
     QTest::newRow("0x only") << "0x" << 16 << F::Signed << "\"0x\" is not a number";
@@ -383,16 +408,16 @@ void TestValueFormat::rejects_data()
     QTest::newRow("blank") << "   " << 32 << F::Float32
                            << "No value typed: type a number such as 12, -5, 0x1A or 1Ah.";
     QTest::newRow("u32 over") << "4294967296" << 32 << F::Unsigned
-                              << "4294967296 does not fit a 32-bit value (-2147483648..4294967295)";
+                              << "4294967296 does not fit a 32-bit value (0..4294967295)";
     QTest::newRow("s32 under")
         << "-2147483649" << 32 << F::Signed
-        << "-2147483649 does not fit a 32-bit value (-2147483648..4294967295)";
+        << "-2147483649 does not fit a 32-bit value (-2147483648..2147483647)";
     QTest::newRow("u64 over") << "18446744073709551616" << 64 << F::Unsigned
                               << "18446744073709551616 does not fit a 64-bit value "
-                                 "(-9223372036854775808..18446744073709551615)";
+                                 "(0..18446744073709551615)";
     QTest::newRow("s64 under") << "-9223372036854775809" << 64 << F::Signed
                                << "-9223372036854775809 does not fit a 64-bit value "
-                                  "(-9223372036854775808..18446744073709551615)";
+                                  "(-9223372036854775808..9223372036854775807)";
     QTest::newRow("bcd too big") << "12345" << 16 << F::Bcd
                                  << "12345 does not fit a 16-bit register as BCD (0..9999)";
     QTest::newRow("bcd negative") << "-5" << 16 << F::Bcd

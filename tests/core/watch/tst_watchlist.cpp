@@ -1,3 +1,4 @@
+#include "core/watch/jsonkeys.h"
 #include "core/watch/watchlist.h"
 
 #include <QDir>
@@ -78,6 +79,8 @@ class TestWatchList : public QObject
 private slots:
     void saveLoadRoundTrip();
     void savedJsonShape();
+    void allowNonFiniteRoundTrip();
+    void duplicateKeysOnlyWithinOneObject();
     void loadDefaults();
     void loadErrors_data();
     void loadErrors();
@@ -114,6 +117,39 @@ void TestWatchList::saveLoadRoundTrip()
     QVERIFY(*loaded == file);
     // Saving what was loaded gives the same bytes: nothing drifts over load/save cycles.
     QCOMPARE(WatchList::save(*loaded), WatchList::save(file));
+}
+
+// Issue 48: the item option that lets writes put NaN or an infinity into a float, kept in the
+// file only where it is on (every other file stays as it was).
+void TestWatchList::allowNonFiniteRoundTrip()
+{
+    const auto loaded = WatchList::load(fileWithItems(
+        R"({"address":"R10","format":"float","allowNonFinite":true},{"address":"R20"})"));
+    QVERIFY2(loaded.ok(), qPrintable(errorText(loaded)));
+    QVERIFY(loaded->tables.at(0).items.at(0).allowNonFinite);
+    QVERIFY(!loaded->tables.at(0).items.at(1).allowNonFinite);
+    const QByteArray saved = WatchList::save(*loaded);
+    QCOMPARE(saved.count("allowNonFinite"), 1);
+    QVERIFY(*WatchList::load(saved) == *loaded);
+    QVERIFY(!WatchList::save(sampleFile()).contains("allowNonFinite"));
+    // Duplicate values in different objects are no duplicate keys.
+    QVERIFY(
+        WatchList::load(fileWithItems(R"({"address":"R1","name":"x"},{"address":"R2","name":"x"})"))
+            .ok());
+}
+
+// JsonKeys (issue 48) looks at keys only, each object's apart: strings that look like keys, the
+// same key in nested or sibling objects, and values in lists are none.
+void TestWatchList::duplicateKeysOnlyWithinOneObject()
+{
+    QVERIFY(
+        !JsonKeys::firstDuplicate(R"({"a":"{\"a\":1,\"a\":2}","b":{"a":1,"b":[{"a":1},{"a":2}]},)"
+                                  R"("c":["a","a"],"d":"x\\"})"));
+    const std::optional<Message> twice
+        = JsonKeys::firstDuplicate("{\"a\":{\"b\":1},\n\"c\":[{\"d\":\"}\"},\n{\"d\":1,\"d\":2}]}");
+    QVERIFY(twice);
+    QCOMPARE(QString::fromStdString(english(*twice)),
+             QStringLiteral("line 3: duplicate key \"d\""));
 }
 
 void TestWatchList::savedJsonShape()
@@ -259,6 +295,19 @@ void TestWatchList::loadErrors_data()
                                  << "table 1, item 1: \"name\" must be text";
     QTest::newRow("comment list") << fileWithItems(R"({"address":"R1","comment":[]})")
                                   << "table 1, item 1: \"comment\" must be text";
+    // Issue 48: QJsonDocument keeps the last of two equal keys; the file says which line.
+    QTest::newRow("duplicate item key")
+        << fileWithItems("{\"address\":\"R1\",\n\"format\":\"hex\",\n\"format\":\"float\"}")
+        << "line 3: duplicate key \"format\"";
+    QTest::newRow("duplicate root key")
+        << QByteArray(R"({"format":"fatek-studio-watchlist","version":1,"tables":[],)"
+                      "\n\"version\":1}")
+        << "line 2: duplicate key \"version\"";
+    QTest::newRow("duplicate escaped key")
+        << fileWithItems(R"({"address":"R1","name":"a","n\u0061me":"b"})")
+        << "line 1: duplicate key \"name\"";
+    QTest::newRow("nonfinite text") << fileWithItems(R"({"address":"R1","allowNonFinite":1})")
+                                    << "table 1, item 1: \"allowNonFinite\" must be true or false";
     QByteArray many = R"({"address":"R1"})";
     for (int i = 1; i <= WatchList::MaxTableItems; ++i)
         many += R"(,{"address":"R1"})";
