@@ -332,15 +332,17 @@ void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
         offerRun(translated(result.message), true);
         return;
     }
-    if (step == Step::Restore)
+    // A restore that wrote a page (a write that failed may have too) did not verify.
+    if (step == Step::Restore
+        && (result.pagesDone > 0 || result.message.id == MsgId::ProgramRestoreInterrupted))
         return restoreFailed(result);
     if (step == Step::Check && result.problem == ProgramTransferResult::Problem::Running
         && !m_askedStop) {
         askToStop();
         return;
     }
-    // The check ended without writing (cancelled, the link): a PLC stopped for it may run again.
-    if (step == Step::Check && m_stoppedForRestore)
+    // Ended before writing (cancelled, the link): a PLC stopped for it may run again.
+    if (step != Step::Backup && m_stoppedForRestore)
         return offerRun(translated(result.message), false, !result.ok());
     showMessage(translated(result.message), !result.ok());
 }

@@ -61,8 +61,8 @@ private:
     // After a restore that verified, or one the dialog stopped the PLC for that wrote nothing:
     // RUN again? (default No). `done` the outcome, shown with the PLC's state either way.
     void offerRun(const QString &done, bool restored, bool error = false);
-    // How a restore step that did not verify ends: the PLC stays in STOP (its program may be
-    // incomplete), and the message says so.
+    // How a restore that wrote and did not verify ends: the PLC stays in STOP (its program may
+    // be incomplete), and the message says so.
     void restoreFailed(const ProgramTransferResult &result);
     void showMessage(const QString &text, bool error);
     void updateControls();
