@@ -5,12 +5,9 @@
 #include <QApplication>
 #include <QMessageBox>
 #include <QPointer>
-#include <QPushButton>
 #include <QStringList>
 #include <QTest>
 #include <QTimer>
-
-#include <memory>
 
 namespace ToolsTest {
 
