@@ -1550,6 +1550,18 @@
             <translation>%1 {1:value|values} written in %2 {2:request|requests} and read back equal.</translation>
         </message>
         <message>
+            <source>The snapshot is of another model (%1) than the PLC (%2): not restored, nothing was written.</source>
+            <translation>The snapshot is of another model (%1) than the PLC (%2): not restored, nothing was written.</translation>
+        </message>
+        <message>
+            <source>%2 {2:value|values} of the snapshot {2:is|are} not on the PLC: %1. The PLC (%3) has %4. Not restored, nothing was written.</source>
+            <translation>%2 {2:value|values} of the snapshot {2:is|are} not on the PLC: %1. The PLC (%3) has %4. Not restored, nothing was written.</translation>
+        </message>
+        <message>
+            <source>Reading the PLC's model and ranges failed (%1): nothing was written.</source>
+            <translation>Reading the PLC's model and ranges failed (%1): nothing was written.</translation>
+        </message>
+        <message>
             <source>%1 cannot be checked: a checkout takes inputs X, outputs Y and registers R or D.</source>
             <translation>%1 cannot be checked: a checkout takes inputs X, outputs Y and registers R or D.</translation>
         </message>
@@ -3565,8 +3577,20 @@ Switch the PLC to STOP now?</translation>
             <translation>%1 The PLC is in RUN.</translation>
         </message>
         <message>
-            <source>%1 RUN failed: %2</source>
-            <translation>%1 RUN failed: %2</translation>
+            <source>%1 RUN failed: %2 The PLC stays in STOP.</source>
+            <translation>%1 RUN failed: %2 The PLC stays in STOP.</translation>
+        </message>
+        <message>
+            <source>%1 The PLC stays in STOP: check the program before switching it to RUN.</source>
+            <translation>%1 The PLC stays in STOP: check the program before switching it to RUN.</translation>
+        </message>
+        <message>
+            <source>%1
+
+The PLC at %2 was switched to STOP for the restore. Switch it back to RUN now? It runs its program as before.</source>
+            <translation>%1
+
+The PLC at %2 was switched to STOP for the restore. Switch it back to RUN now? It runs its program as before.</translation>
         </message>
         <message>
             <source>%1 The PLC stays in STOP: switch it to RUN when the machine is ready.</source>
@@ -4794,6 +4818,20 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
             <translation>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</translation>
+        </message>
+        <message>
+            <source>The snapshot is of another model than the PLC at %1.
+
+Snapshot: %2
+PLC: %3
+
+Write its values all the same? Elements the PLC does not have are refused before anything is written.</source>
+            <translation>The snapshot is of another model than the PLC at %1.
+
+Snapshot: %2
+PLC: %3
+
+Write its values all the same? Elements the PLC does not have are refused before anything is written.</translation>
         </message>
         <message>
             <source>Restore Values</source>

@@ -1550,6 +1550,18 @@
             <translation>以 %2 次請求寫入 %1 個值，回讀結果一致。</translation>
         </message>
         <message>
+            <source>The snapshot is of another model (%1) than the PLC (%2): not restored, nothing was written.</source>
+            <translation>快照的機型（%1）與 PLC（%2）不同：未還原，未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>%2 {2:value|values} of the snapshot {2:is|are} not on the PLC: %1. The PLC (%3) has %4. Not restored, nothing was written.</source>
+            <translation>快照中有 %2 個值是 PLC 沒有的元件：%1。此 PLC（%3）只有 %4。未還原，未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>Reading the PLC's model and ranges failed (%1): nothing was written.</source>
+            <translation>讀取 PLC 的機型與元件範圍失敗（%1）：未寫入任何資料。</translation>
+        </message>
+        <message>
             <source>%1 cannot be checked: a checkout takes inputs X, outputs Y and registers R or D.</source>
             <translation>%1 無法檢查：點檢只接受輸入 X、輸出 Y 及暫存器 R 或 D。</translation>
         </message>
@@ -3558,8 +3570,20 @@ Switch the PLC to STOP now?</source>
             <translation>%1 PLC 已在 RUN。</translation>
         </message>
         <message>
-            <source>%1 RUN failed: %2</source>
-            <translation>%1 RUN 失敗：%2</translation>
+            <source>%1 RUN failed: %2 The PLC stays in STOP.</source>
+            <translation>%1 RUN 失敗：%2 PLC 維持 STOP。</translation>
+        </message>
+        <message>
+            <source>%1 The PLC stays in STOP: check the program before switching it to RUN.</source>
+            <translation>%1 PLC 維持 STOP：切換至 RUN 前請先檢查程式。</translation>
+        </message>
+        <message>
+            <source>%1
+
+The PLC at %2 was switched to STOP for the restore. Switch it back to RUN now? It runs its program as before.</source>
+            <translation>%1
+
+%2 的 PLC 為了還原已切換至 STOP。現在切換回 RUN 嗎？將照原本的程式執行。</translation>
         </message>
         <message>
             <source>%1 The PLC stays in STOP: switch it to RUN when the machine is ready.</source>
@@ -4775,6 +4799,20 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
             <translation>要以 %3 次請求將快照中的 %1 個值寫入 %2，然後回讀確認嗎？</translation>
+        </message>
+        <message>
+            <source>The snapshot is of another model than the PLC at %1.
+
+Snapshot: %2
+PLC: %3
+
+Write its values all the same? Elements the PLC does not have are refused before anything is written.</source>
+            <translation>快照的機型與 %1 的 PLC 不同。
+
+快照：%2
+PLC：%3
+
+仍要寫入其數值嗎？PLC 沒有的元件會在寫入任何資料前被拒絕。</translation>
         </message>
         <message>
             <source>Restore Values</source>

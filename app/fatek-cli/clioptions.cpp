@@ -76,6 +76,9 @@ QString usageText()
                "  --yes                    confirm restore / restore-values without asking (needed "
                "when\n"
                "                           standard input is not a terminal)\n"
+               "  --other-model            restore-values: write a snapshot of another PLC model "
+               "(its\n"
+               "                           elements must still exist on this PLC)\n"
                "  --json | --csv           output one JSON object per line / CSV instead of a "
                "table\n"
                "  --then                   run the next command on the same link (status --then "
@@ -116,7 +119,7 @@ QStringList flagOptionNames()
     return {QStringLiteral("help"),  QStringLiteral("version"), QStringLiteral("sim"),
             QStringLiteral("json"),  QStringLiteral("csv"),     QStringLiteral("read-only"),
             QStringLiteral("yes"),   QStringLiteral("frame"),   QStringLiteral("hex"),
-            QStringLiteral("ascii"), QStringLiteral("then")};
+            QStringLiteral("ascii"), QStringLiteral("then"),    QStringLiteral("other-model")};
 }
 
 CliParseResult parseCommandLine(const QStringList &arguments)
@@ -250,6 +253,8 @@ CliParseResult parseCommandLine(const QStringList &arguments)
             o.readOnly = true;
         else if (name == QLatin1String("yes"))
             o.assumeYes = true;
+        else if (name == QLatin1String("other-model"))
+            o.otherModel = true;
         else if (name == QLatin1String("frame"))
             frameGiven = true;
         else if (name == QLatin1String("hex"))
@@ -315,6 +320,8 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     if (checkoutGiven && !uses("checkout"))
         return fail(QStringLiteral("--report, --lang, --save, --project, --customer and "
                                    "--engineer only apply to checkout."));
+    if (o.otherModel && !uses("restore-values"))
+        return fail(QStringLiteral("--other-model only applies to restore-values."));
     if ((frameGiven || forceHex || forceAscii) && !uses("raw"))
         return fail(QStringLiteral("--frame, --hex and --ascii only apply to raw."));
     if (countGiven) {

@@ -100,8 +100,9 @@ struct CliOptions
     bool timeoutGiven = false;
     std::uint8_t station = 1;
     bool readOnly = false;
-    bool assumeYes = false; // --yes: the confirmation of restore / restore-values is given
-    bool offline = false;   // diff FILE FILE2 alone: no link needed, none opened
+    bool assumeYes = false;  // --yes: the confirmation of restore / restore-values is given
+    bool otherModel = false; // --other-model: restore-values writes a snapshot of another model
+    bool offline = false;    // diff FILE FILE2 alone: no link needed, none opened
     OutputFormat format = OutputFormat::Table;
 
     QList<CliStep> steps; // run in order; the first failure ends the program

@@ -19,10 +19,7 @@ QString rangesText(const std::vector<SnapshotValue> &values)
     addresses.reserve(values.size());
     for (const SnapshotValue &v : values)
         addresses.push_back(v.address);
-    QStringList parts;
-    for (const AddressRange &r : Snapshot::rangesOf(addresses))
-        parts << QString::fromStdString(r.toString());
-    return parts.join(QStringLiteral(", "));
+    return QString::fromStdString(Snapshot::rangesText(addresses));
 }
 
 } // namespace
@@ -52,6 +49,12 @@ void CliRestoreValuesCommand::run()
         if (m_interrupted) {
             out().error(englishText(restorer->outcome()), ExitCode::Interrupted);
             return m_context.finish(ExitCode::Interrupted);
+        }
+        if (restorer->refusedForModel()) {
+            out().error(englishText(restorer->outcome())
+                            + QStringLiteral(" Give --other-model to write it all the same."),
+                        ExitCode::Usage);
+            return m_context.finish(ExitCode::Usage);
         }
         if (restorer->error())
             return m_context.failWithError(*restorer->error());
@@ -93,7 +96,8 @@ void CliRestoreValuesCommand::run()
     }
     // In operator mode the restorer refuses at once (ErrorKind::ReadOnly, exit 5), nothing sent.
     m_context.armWatchdog(m_context.requestBudgetMs());
-    restorer->start(m_context.station(), std::move(values));
+    restorer->setAllowOtherModel(options().otherModel);
+    restorer->start(m_context.station(), std::move(values), file->info.model);
 }
 
 void CliRestoreValuesCommand::interrupt()

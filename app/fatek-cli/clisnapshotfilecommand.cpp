@@ -30,6 +30,14 @@ CliSnapshotFileCommand::~CliSnapshotFileCommand() = default;
 // RANGES: every further argument, "R0..R99, X0..X255" or "R0..R99 X0..X255".
 QString CliSnapshotFileCommand::rangesArg(CliStepArgs &a, qsizetype from)
 {
+    // An argument given blank (an unset shell variable in quotes) is a mistake, not "every
+    // element": restore-values FILE "" would write the whole file.
+    for (const QString &arg : a.positional.mid(from)) {
+        if (arg.trimmed().isEmpty())
+            return QStringLiteral("%1: RANGES is empty; give the ranges (\"R0..R99\") or leave "
+                                  "the argument out for every element.")
+                .arg(a.cmd());
+    }
     const QString text = a.positional.mid(from).join(QLatin1Char(' '));
     const auto ranges = Snapshot::parseRanges(text);
     if (!ranges)

@@ -174,6 +174,22 @@ FATEK_MSG(RestoreReadOnly, 0,
 FATEK_MSG(RestoreNothing, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The chosen ranges hold no value of the snapshot: nothing to write."))
+// Checked before the first write, from the PLC's detail status: %1 the snapshot's model, %2 the
+// PLC's (model texts: "M series, OS V3.1, program 16384 words").
+FATEK_MSG(RestoreOtherModel, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The snapshot is of another model (%1) than the PLC (%2): not "
+                            "restored, nothing was written."))
+// %1 the elements ("R5000-5023, D3000"), %2 how many, %3 the PLC's model text, %4 what it has of
+// those kinds ("R0-3839, D0-2999").
+FATEK_MSG(RestoreOutOfRange, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%2 {2:value|values} of the snapshot {2:is|are} not on the PLC: %1. "
+                            "The PLC (%3) has %4. Not restored, nothing was written."))
+FATEK_MSG(RestoreCheckFailed, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Reading the PLC's model and ranges failed (%1): nothing was "
+                            "written."))
 FATEK_MSG(RestoreWriteFailed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Writing %1 failed: %2"))
 // Writing stopped half-way (a fault, a cancel): %1 why, %2 values written, %3 values in all.
 FATEK_MSG(RestoreInterrupted, 3,

@@ -102,6 +102,20 @@ std::vector<AddressRange> rangesOf(std::span<const Address> sortedAddresses)
     return out;
 }
 
+std::string rangesText(std::span<const Address> sortedAddresses, std::size_t limit)
+{
+    std::string text;
+    std::size_t n = 0;
+    for (const AddressRange &r : rangesOf(sortedAddresses)) {
+        if (!text.empty())
+            text += ", ";
+        if (limit != 0 && n++ == limit)
+            return text + "...";
+        text += r.toString();
+    }
+    return text;
+}
+
 int valueBits(const Address &address)
 {
     switch (address.width()) {

@@ -30,7 +30,7 @@ struct SnapshotInfo
     QString link;    // "tcp 192.0.2.10:500" (LinkSettings::toString)
     int station = 1;
     QString protocol; // "FACON", "binary"
-    QString model;    // DetailStatus::summary(), empty when the PLC did not say
+    QString model;    // PlcModel::modelText(), empty when the PLC did not say
 
     bool operator==(const SnapshotInfo &) const = default;
 };
@@ -69,6 +69,8 @@ std::vector<AddressRange> defaultRanges(const DetailStatus &status);
 Result<std::vector<AddressRange>> parseRanges(const QString &text);
 // Consecutive addresses as ranges (sorted input): R0 R1 R2 R7 -> R0..R2, R7.
 std::vector<AddressRange> rangesOf(std::span<const Address> sortedAddresses);
+// The same as text, "R0-2, R7, Y0-15"; at most `limit` ranges (0: all), then ", ...".
+std::string rangesText(std::span<const Address> sortedAddresses, std::size_t limit = 0);
 // Bits of the raw value of an element: 1, 16 or 32.
 int valueBits(const Address &address);
 

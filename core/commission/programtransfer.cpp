@@ -18,12 +18,7 @@ QString modelTextOf(const DetailStatus &detail, const std::optional<ProgramHeade
 {
     if (detail.modelName() || !header)
         return QString::fromStdString(detail.summary());
-    std::string text = header->familyName() + " series";
-    if (const std::optional<std::string> os = detail.osVersionText())
-        text += ", OS " + *os;
-    if (detail.ladderSize)
-        text += ", program " + std::to_string(*detail.ladderSize) + " words";
-    return QString::fromStdString(text);
+    return QString::fromStdString(detail.summaryNamed(header->familyName() + " series"));
 }
 
 ProgramPage toPage(const std::vector<std::uint32_t> &values)

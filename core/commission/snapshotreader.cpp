@@ -1,6 +1,7 @@
 #include "snapshotreader.h"
 
 #include "commissionmessages.h"
+#include "core/protocol/plcmodel.h"
 #include "core/session/crossthreadcall.h"
 #include "core/session/session.h"
 
@@ -178,7 +179,7 @@ void SnapshotReader::onDetailStatus(const SessionResult &result)
     std::optional<DetailStatus> status;
     if (result.ok()) {
         status = DetailStatus::decode(result.response().data);
-        m_snapshot.info.model = QString::fromStdString(status->summary());
+        m_snapshot.info.model = QString::fromStdString(PlcModel::modelText(*status));
     } else if (result.errorKind() != ErrorKind::PlcError
                && result.errorKind() != ErrorKind::Unsupported
                && result.errorKind() != ErrorKind::MalformedResponse) {

@@ -1,6 +1,7 @@
 #include "valuesrestorer.h"
 
 #include "commissionmessages.h"
+#include "core/protocol/plcmodel.h"
 #include "core/session/session.h"
 
 #include <QTimer>
@@ -22,6 +23,13 @@ Request runWrite(std::uint8_t station, const Address &start, std::vector<std::ui
 {
     return isDiscrete(start.type) ? Request::writeDiscretes(station, start, std::move(values))
                                   : Request::writeRegisters(station, start, std::move(values));
+}
+
+// The plain kind an element counts in (WY0 in Y, DR0 in R).
+ElementType plainKind(const Address &a)
+{
+    const ElementInfo &info = a.info();
+    return info.discrete ? *info.discrete : info.word ? *info.word : a.type;
 }
 
 std::size_t wordsOf(std::span<const SnapshotValue> chunk)
@@ -143,7 +151,7 @@ void ValuesRestorer::setSession(Session *session)
 
 int ValuesRestorer::requestsDone() const
 {
-    return m_written + m_reader.requestsDone();
+    return (m_checked ? 1 : 0) + m_written + m_reader.requestsDone();
 }
 
 int ValuesRestorer::valuesWritten() const
@@ -156,16 +164,22 @@ int ValuesRestorer::valuesWritten() const
 
 int ValuesRestorer::requestsTotal() const
 {
-    return static_cast<int>(m_writes.size()) + std::max(1, m_reader.requestsTotal());
+    // The 53, the writes, the read-back.
+    return 1 + static_cast<int>(m_writes.size()) + std::max(1, m_reader.requestsTotal());
 }
 
-void ValuesRestorer::start(std::uint8_t station, std::vector<SnapshotValue> values)
+void ValuesRestorer::start(std::uint8_t station, std::vector<SnapshotValue> values,
+                           const QString &snapshotModel)
 {
     if (m_running)
         return;
     m_running = true;
     m_station = station;
     m_values = std::move(values);
+    m_snapshotModel = snapshotModel;
+    m_plcModel.clear();
+    m_refusedForModel = false;
+    m_checked = false;
     std::sort(m_values.begin(), m_values.end(),
               [](const SnapshotValue &a, const SnapshotValue &b) { return a.address < b.address; });
     m_writes.clear();
@@ -188,7 +202,67 @@ void ValuesRestorer::start(std::uint8_t station, std::vector<SnapshotValue> valu
     }
     m_writes = writeRequests(station, m_values);
     Q_EMIT progress(requestsDone(), requestsTotal());
+    // The model and ranges first: a value the PLC lacks would fail its whole write request
+    // half-way through the restore.
+    m_tracker.submit(Request::detailStatus(station),
+                     [this](const SessionResult &r) { onDetailStatus(r); });
+}
+
+void ValuesRestorer::onDetailStatus(const SessionResult &result)
+{
+    if (!m_running)
+        return;
+    if (!result.ok() && result.errorKind() != ErrorKind::PlcError
+        && result.errorKind() != ErrorKind::Unsupported
+        && result.errorKind() != ErrorKind::MalformedResponse) {
+        // The link itself failed: nothing else would come through either.
+        ProtocolError e = result.error();
+        e.message = msg<MsgId::RestoreCheckFailed>(result.error().message);
+        return fail(std::move(e));
+    }
+    m_checked = true;
+    Q_EMIT progress(requestsDone(), requestsTotal());
+    if (result.ok()) {
+        if (std::optional<ProtocolError> refusal
+            = checkModel(DetailStatus::decode(result.response().data)))
+            return fail(std::move(*refusal));
+    }
     submitNext();
+}
+
+std::optional<ProtocolError> ValuesRestorer::checkModel(const DetailStatus &status)
+{
+    const std::optional<PlcModel> plc = PlcModel::fromDetailStatus(status);
+    m_plcModel = QString::fromStdString(PlcModel::modelText(status));
+    if (!plc)
+        return std::nullopt;
+    const std::optional<PlcModel::Family> family
+        = PlcModel::familyOfText(m_snapshotModel.toStdString());
+    if (family && plc->family != PlcModel::Family::Reported && *family != plc->family
+        && !m_allowOtherModel) {
+        m_refusedForModel = true;
+        return makeError(
+            ErrorKind::InvalidRequest,
+            msg<MsgId::RestoreOtherModel>(m_snapshotModel.toStdString(), m_plcModel.toStdString()));
+    }
+    // Every element the PLC lacks, by name, and what it has of those kinds.
+    std::vector<Address> outside;
+    std::vector<ElementType> kinds;
+    for (const SnapshotValue &v : m_values) {
+        if (plc->contains(v.address))
+            continue;
+        outside.push_back(v.address);
+        if (std::find(kinds.begin(), kinds.end(), plainKind(v.address)) == kinds.end())
+            kinds.push_back(plainKind(v.address));
+    }
+    if (outside.empty())
+        return std::nullopt;
+    std::string has;
+    for (ElementType t : kinds)
+        has += (has.empty() ? "" : ", ") + plc->rangeText(t);
+    return makeError(ErrorKind::InvalidAddress,
+                     msg<MsgId::RestoreOutOfRange>(Snapshot::rangesText(outside, 8), outside.size(),
+                                                   m_plcModel.toStdString(), has));
 }
 
 void ValuesRestorer::cancel()
@@ -252,7 +326,7 @@ void ValuesRestorer::fail(ProtocolError error)
         return;
     m_running = false;
     // Stopped while writing: some values are new, some old. Say how many were written.
-    if (!m_writes.empty() && m_written < static_cast<int>(m_writes.size()))
+    if (m_nextWrite > 0 && m_written < static_cast<int>(m_writes.size()))
         error.message = msg<MsgId::RestoreInterrupted>(std::move(error.message), valuesWritten(),
                                                        m_values.size());
     m_error = std::move(error);

@@ -15,10 +15,13 @@ namespace Fatek {
 
 class Session;
 
-// Restores values (a recipe): writes the chosen values of a snapshot in the fewest write frames,
-// then reads them back and reports exactly which elements differ. Refused up front, nothing
-// written, when the session is read-only (operator mode). Through a RequestTracker: never
-// blocks; progress() after each answer, finished() once.
+// Restores values (a recipe): reads the PLC's detail status (53) for its model and ranges, writes
+// the chosen values of a snapshot in the fewest write frames, then reads them back and reports
+// exactly which elements differ. Refused up front, nothing written, when the session is read-only
+// (operator mode); refused after the 53, nothing written, when the snapshot is of another model
+// (unless allowed) or holds an element the PLC does not have. A PLC that does not answer the 53
+// (an error code, not a link failure) is written unchecked: it refuses what it lacks itself.
+// Through a RequestTracker: never blocks; progress() after each answer, finished() once.
 class ValuesRestorer : public QObject
 {
     Q_OBJECT
@@ -30,8 +33,13 @@ public:
     Session *session() const { return m_tracker.session(); }
 
     // Ignored while running. Refusals (no session, read-only, nothing to write) come as
-    // finished() from the event loop, with nothing sent.
-    void start(std::uint8_t station, std::vector<SnapshotValue> values);
+    // finished() from the event loop, with nothing sent. `snapshotModel`: the snapshot's model
+    // text (SnapshotInfo::model); empty or unknown: no model check, the ranges still are.
+    void start(std::uint8_t station, std::vector<SnapshotValue> values,
+               const QString &snapshotModel = {});
+    // A snapshot of another model than the PLC's is written all the same (its elements must
+    // still exist on the PLC). For the next start().
+    void setAllowOtherModel(bool allow) { m_allowOtherModel = allow; }
     // Stops before the next write (a write on the wire completes); finished() with Cancelled.
     void cancel();
     bool isRunning() const { return m_running; }
@@ -49,6 +57,10 @@ public:
     const std::optional<ProtocolError> &error() const { return m_error; }
     // Read back after writing: before = the value written, after = the value read.
     const std::vector<SnapshotDifference> &mismatches() const { return m_mismatches; }
+    // After finished(): refused because the snapshot is of another model (nothing written).
+    bool refusedForModel() const { return m_refusedForModel; }
+    // The PLC's model text from its 53 ("FBs-28MC, OS V3.1, program 13184 words"), once read.
+    const QString &plcModel() const { return m_plcModel; }
     // One sentence: RestoreDone, RestoreDiffer, or the error.
     Message outcome() const;
 
@@ -63,6 +75,9 @@ Q_SIGNALS:
     void finished();
 
 private:
+    void onDetailStatus(const SessionResult &result);
+    // The refusal for the PLC's model, if any (sets m_refusedForModel).
+    std::optional<ProtocolError> checkModel(const DetailStatus &status);
     void submitNext();
     void onWritten(const Request &request, const SessionResult &result);
     void verify();
@@ -73,6 +88,11 @@ private:
     bool m_running = false;
     std::uint8_t m_station = 1;
     std::vector<SnapshotValue> m_values;
+    QString m_snapshotModel;
+    QString m_plcModel;
+    bool m_allowOtherModel = false;
+    bool m_refusedForModel = false;
+    bool m_checked = false; // the 53 is answered
     std::vector<Request> m_writes;
     std::size_t m_nextWrite = 0;
     int m_written = 0;

@@ -136,4 +136,14 @@ std::string DetailStatus::summary() const
     return s;
 }
 
+std::string DetailStatus::summaryNamed(const std::string &model) const
+{
+    std::string s = model;
+    if (const std::optional<std::string> os = osVersionText())
+        s += ", OS " + *os;
+    if (ladderSize)
+        s += ", program " + std::to_string(*ladderSize) + " words";
+    return s;
+}
+
 } // namespace Fatek

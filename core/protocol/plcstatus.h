@@ -53,6 +53,9 @@ struct DetailStatus
     std::optional<std::string> osVersionText() const;
     // "FBs-28MC, OS V3.1, program 13184 words" as far as known.
     std::string summary() const;
+    // The same for a model named from elsewhere (a program header's family): "M series, OS V3.1,
+    // program 16384 words".
+    std::string summaryNamed(const std::string &model) const;
 };
 
 } // namespace Fatek

@@ -7,31 +7,6 @@ namespace Fatek {
 
 namespace {
 
-std::optional<std::size_t> discreteIndex(ElementType t)
-{
-    switch (t) {
-    case ElementType::X: return 0;
-    case ElementType::Y: return 1;
-    case ElementType::M: return 2;
-    case ElementType::S: return 3;
-    case ElementType::T: return 4;
-    case ElementType::C: return 5;
-    default: return std::nullopt;
-    }
-}
-
-std::optional<std::size_t> registerIndex(ElementType t)
-{
-    switch (t) {
-    case ElementType::RT: return 0;
-    case ElementType::RC: return 1;
-    case ElementType::R: return 2;
-    case ElementType::D: return 3;
-    case ElementType::F: return 4;
-    default: return std::nullopt;
-    }
-}
-
 void putWord(Bytes &b, std::size_t statusNumber, std::uint32_t value)
 {
     // STATUSn is b[n - 1]; counts are high byte first and saturate (R 0..65535 does not fit).
@@ -41,37 +16,6 @@ void putWord(Bytes &b, std::size_t statusNumber, std::uint32_t value)
 }
 
 } // namespace
-
-std::uint32_t ModelProfile::size(ElementType plainType) const
-{
-    if (auto i = discreteIndex(plainType))
-        return discretes[*i];
-    if (auto i = registerIndex(plainType))
-        return registers[*i];
-    return 0;
-}
-
-bool ModelProfile::contains(const Address &start, std::uint32_t count) const
-{
-    if (count == 0)
-        return false;
-    const ElementInfo &info = start.info();
-    if (start.number % info.alignment != 0)
-        return false;
-    // Elements of a view occupy `step` numbers of the plain kind (WY0 = Y0..Y15, DR0 = R0..R1).
-    std::uint32_t plainSize = 0;
-    std::uint64_t span = count;
-    if (info.discrete) {
-        plainSize = size(*info.discrete);
-        span = std::uint64_t{count} * info.step;
-    } else if (info.word) {
-        plainSize = size(*info.word);
-        span = std::uint64_t{count} * info.step;
-    } else {
-        plainSize = size(start.type);
-    }
-    return std::uint64_t{start.number} + span <= plainSize;
-}
 
 std::uint16_t ModelProfile::programPages() const
 {
@@ -133,12 +77,9 @@ Bytes ModelProfile::detailStatus(std::uint8_t status1) const
 ModelProfile ModelProfile::fbs()
 {
     ModelProfile p;
+    static_cast<PlcModel &>(p) = PlcModel::fbs();
     p.name = "fbs";
     p.description = "FBs-28MC, OS V3.1, 13K program";
-    // X Y M S T C
-    p.discretes = {256, 256, 2002, 1000, 256, 256};
-    // RT RC R D F: FBs has no file registers in the protocols.
-    p.registers = {256, 256, 3840, 3000, 0};
     p.status2 = 0x54; // 13K step program (FACON 40 table)
     p.status3 = 0x00;
     p.mainUnitType = 0x01;
@@ -153,10 +94,9 @@ ModelProfile ModelProfile::fbs()
 ModelProfile ModelProfile::mSeries()
 {
     ModelProfile p;
+    static_cast<PlcModel &>(p) = PlcModel::mSeries();
     p.name = "m";
     p.description = "M-series, largest ranges of the reference";
-    p.discretes = {10000, 10000, 10000, 10000, 10000, 10000};
-    p.registers = {10000, 10000, 65536, 65536, 65536};
     p.status2 = 0x00;
     p.status3 = 0x00;
     // 53's main unit type and I/O points are documented for the FB series only (00 MA/MU,

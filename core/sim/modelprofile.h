@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/element.h"
+#include "core/protocol/plcmodel.h"
 #include "core/protocol/programheader.h"
 #include "core/protocol/request.h"
 
@@ -12,17 +13,12 @@
 
 namespace Fatek {
 
-// What one simulated PLC model has: how many elements of each kind and the identity it reports
-// in its status bytes. Ranges start at 0; a model has no gaps.
-struct ModelProfile
+// What one simulated PLC model has: its element ranges (PlcModel, the project's table) and the
+// identity it reports in its status bytes.
+struct ModelProfile : PlcModel
 {
     std::string name;        // "fbs", "m": what --profile accepts
     std::string description; // "FBs-28MC, OS V3.1, 13K program"
-
-    // Points per discrete kind, indexed X Y M S T C.
-    std::array<std::uint32_t, 6> discretes{};
-    // Registers per kind, indexed RT RC R D F (0: the model has none).
-    std::array<std::uint32_t, 5> registers{};
 
     std::uint8_t status2 = 0; // 40: program capacity / model code
     std::uint8_t status3 = 0;
@@ -34,11 +30,6 @@ struct ModelProfile
     std::uint16_t analogInputs = 0;
     std::uint16_t analogOutputs = 0;
 
-    // Number of elements of a plain kind (X..C, RT..F); 0 for views (W, DW, DR types).
-    std::uint32_t size(ElementType plainType) const;
-    // Whether `count` consecutive elements from `start` all exist on this model and the start is
-    // aligned (W/DW on a multiple of 8). DRn needs R(n+1) too.
-    bool contains(const Address &start, std::uint32_t count = 1) const;
     // Program pages 4F/50 can address: page 0 (header) plus the program itself.
     std::uint16_t programPages() const;
     // Page 0 of this model's program: family, two digits ("13" for 13K words), ladder size.

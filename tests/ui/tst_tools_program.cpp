@@ -2,6 +2,7 @@
 // person does: the real buttons are clicked, the file and the answers come from the test.
 #include "core/commission/programimage.h"
 #include "testutil.h"
+#include "tst_tools_boxes.h"
 #include "tst_tools_fixture.h"
 #include "ui/mainwindow/mainwindow.h"
 #include "ui/tools/programtransferdialog.h"
@@ -16,6 +17,7 @@
 #include <QTimer>
 
 using namespace Fatek;
+using ToolsTest::BoxHand;
 using ToolsTest::plcPages;
 using ToolsTest::Rig;
 
@@ -50,6 +52,8 @@ private Q_SLOTS:
     void otherModelRefusedBeforeAnyQuestion();
     void restoreCutOffSaysTheProgramIsMixed();
     void runDeclinedAfterRestore();
+    void runOfferedWhenStoppedAndNotWritten_data();
+    void runOfferedWhenStoppedAndNotWritten();
 
 private:
     void open(bool running);
@@ -290,6 +294,45 @@ void TestToolsProgram::runDeclinedAfterRestore()
     QVERIFY(!m_rig.plc->isRunning());
     QVERIFY2(m_dialog->messageText().contains(QStringLiteral("stays in STOP")),
              qPrintable(m_dialog->messageText()));
+    QVERIFY(!m_dialog->messageIsError());
+}
+
+void TestToolsProgram::runOfferedWhenStoppedAndNotWritten_data()
+{
+    QTest::addColumn<bool>("run");
+    QTest::newRow("back to RUN") << true;
+    QTest::newRow("stays in STOP") << false;
+}
+
+// Issue 48 case 11: the PLC in RUN, "Switch to STOP?" Yes, then No at "Write the program?": the
+// dialog stopped the PLC for nothing, so it offers RUN again and says the PLC's state. The
+// questions are the real message boxes, answered by clicking their buttons.
+void TestToolsProgram::runOfferedWhenStoppedAndNotWritten()
+{
+    QFETCH(bool, run);
+    open(true);
+    m_dialog->setConfirmer({});
+    std::vector<std::uint16_t> words = ModelProfile::fbs().powerOnProgram();
+    words[70] = 0x5555;
+    QVERIFY(!ProgramImage::fromWords(words)->save(m_file));
+    const auto before = plcPages(*m_rig.plc);
+    BoxHand hand({true, false, run});
+    QTest::mouseClick(button("restoreButton"), Qt::LeftButton);
+    QVERIFY(waitIdle(*m_dialog));
+    QCOMPARE(hand.questions.size(), 3);
+    QVERIFY2(hand.questions.at(0).contains(QStringLiteral("Switch the PLC to STOP")),
+             qPrintable(hand.questions.at(0)));
+    QVERIFY2(hand.questions.at(1).contains(QStringLiteral("Write the program")),
+             qPrintable(hand.questions.at(1)));
+    QVERIFY2(hand.questions.at(2).contains(QStringLiteral("back to RUN")),
+             qPrintable(hand.questions.at(2)));
+    QCOMPARE(plcPages(*m_rig.plc), before);
+    QCOMPARE(m_rig.plc->isRunning(), run);
+    const QString message = m_dialog->messageText();
+    QVERIFY2(message.contains(QStringLiteral("nothing was written")), qPrintable(message));
+    QVERIFY2(message.contains(run ? QStringLiteral("The PLC is in RUN")
+                                  : QStringLiteral("The PLC stays in STOP")),
+             qPrintable(message));
     QVERIFY(!m_dialog->messageIsError());
 }
 

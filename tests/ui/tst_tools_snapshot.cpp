@@ -1,6 +1,7 @@
 // Tools -> Memory Snapshot (SnapshotDialog) against the in-process simulator: take, compare with
 // the PLC and with a file, filter, export, restore with confirmation, refused in operator mode.
 #include "core/commission/snapshotfile.h"
+#include "tst_tools_boxes.h"
 #include "tst_tools_fixture.h"
 #include "ui/tools/snapshotdialog.h"
 #include "ui/tools/snapshotdiffmodel.h"
@@ -28,6 +29,7 @@ private Q_SLOTS:
     void takeCompareRestore();
     void compareFilesAndExport();
     void refusedInOperatorMode();
+    void otherModelAskedOutOfRangeRefused();
 
 private:
     bool runAndWait(const std::function<void()> &action);
@@ -165,6 +167,64 @@ void TestToolsSnapshot::refusedInOperatorMode()
     QCOMPARE(m_rig.server->counters().frames, frames);
     QCOMPARE(m_rig.plc->value(addr("R0")), std::optional<std::uint32_t>(9));
     QVERIFY2(m_dialog->messageText().contains(QLatin1String("Operator mode")),
+             qPrintable(m_dialog->messageText()));
+}
+
+// Issue 48 case 10 in the GUI: a snapshot of an M-series PLC opened and restored to an FBs. After
+// the restore's question, the dialog asks about the other model (both named): No writes nothing,
+// Yes writes. A value the FBs does not have is refused by name before anything is written. The
+// questions are the real message boxes.
+void TestToolsSnapshot::otherModelAskedOutOfRangeRefused()
+{
+    m_dialog->setConfirmer({});
+    m_dialog->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_dialog.get()));
+    MemorySnapshot m;
+    m.info.model = QStringLiteral("M series, OS V3.1, program 16384 words");
+    m.values = {{addr("R0"), 5}, {addr("R1"), 6}};
+    const QString file = m_dir.filePath(QStringLiteral("m.json"));
+    QVERIFY(!SnapshotFile::saveToFile(m, file));
+    QVERIFY(m_dialog->openSnapshot(file));
+    auto *restore = m_dialog->findChild<QPushButton *>(QStringLiteral("restoreButton"));
+    QVERIFY(restore && restore->isVisible() && restore->isEnabled());
+
+    const quint64 frames = m_rig.server->counters().frames;
+    {
+        ToolsTest::BoxHand hand({true, false});
+        QVERIFY(runAndWait([&] { QTest::mouseClick(restore, Qt::LeftButton); }));
+        QCOMPARE(hand.questions.size(), 2);
+        QVERIFY2(hand.questions.at(1).contains(QLatin1String("another model")),
+                 qPrintable(hand.questions.at(1)));
+        QVERIFY2(hand.questions.at(1).contains(QLatin1String("M series, OS V3.1")),
+                 qPrintable(hand.questions.at(1)));
+        QVERIFY2(hand.questions.at(1).contains(QLatin1String("FBs-28MC")),
+                 qPrintable(hand.questions.at(1)));
+    }
+    QCOMPARE(m_rig.server->counters().frames, frames + 1); // the 53 alone
+    QCOMPARE(m_rig.plc->value(addr("R0")), std::optional<std::uint32_t>(0));
+    QVERIFY2(m_dialog->messageText().contains(QLatin1String("nothing was written")),
+             qPrintable(m_dialog->messageText()));
+    {
+        ToolsTest::BoxHand hand({true, true});
+        QVERIFY(runAndWait([&] { QTest::mouseClick(restore, Qt::LeftButton); }));
+        QCOMPARE(hand.questions.size(), 2);
+    }
+    QCOMPARE(m_rig.plc->value(addr("R1")), std::optional<std::uint32_t>(6));
+    QVERIFY2(m_dialog->messageText().contains(QLatin1String("read back equal")),
+             qPrintable(m_dialog->messageText()));
+
+    // An FBs snapshot holding R5000: refused by name, nothing written.
+    m.info.model = QStringLiteral("FBs-28MC, OS V3.1, program 13184 words");
+    m.values = {{addr("R2"), 7}, {addr("R5000"), 1}};
+    QVERIFY(!SnapshotFile::saveToFile(m, file));
+    QVERIFY(m_dialog->openSnapshot(file));
+    {
+        ToolsTest::BoxHand hand({true});
+        QVERIFY(runAndWait([&] { QTest::mouseClick(restore, Qt::LeftButton); }));
+        QCOMPARE(hand.questions.size(), 1);
+    }
+    QCOMPARE(m_rig.plc->value(addr("R2")), std::optional<std::uint32_t>(0));
+    QVERIFY2(m_dialog->messageText().contains(QLatin1String("not on the PLC: R5000")),
              qPrintable(m_dialog->messageText()));
 }
 

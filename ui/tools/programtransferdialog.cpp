@@ -166,6 +166,7 @@ void ProgramTransferDialog::restore()
     m_path = path;
     m_image = loaded.image();
     m_askedStop = false;
+    m_stoppedForRestore = false;
     m_message->clear();
     startCheck();
 }
@@ -204,34 +205,52 @@ void ProgramTransferDialog::askToStop()
             updateControls();
             return;
         }
+        m_stoppedForRestore = true;
         startCheck();
     });
 }
 
-void ProgramTransferDialog::offerRun(const QString &done)
+void ProgramTransferDialog::offerRun(const QString &done, bool restored, bool error)
 {
-    // Default No: a new program starts machinery; the person says when the machine is ready
-    // (an Enter pressed by habit must not start it). The PLC was in STOP for the restore.
+    // Default No: a program starts machinery; the person says when the machine is ready (an
+    // Enter pressed by habit must not start it). The PLC is in STOP for the restore.
+    const QString target = ToolConfirmation::target(m_station, m_connectionName);
     const QString question
-        = tr("%1\n\nSwitch the PLC at %2 to RUN now? It starts the restored program.")
-              .arg(done, ToolConfirmation::target(m_station, m_connectionName));
+        = restored ? tr("%1\n\nSwitch the PLC at %2 to RUN now? It starts the restored program.")
+                         .arg(done, target)
+                   : tr("%1\n\nThe PLC at %2 was switched to STOP for the restore. Switch it back "
+                        "to RUN now? It runs its program as before.")
+                         .arg(done, target);
     if (!ToolConfirmation::ask(this, tr("Restore Program"), question, m_confirmer)) {
         showMessage(
             tr("%1 The PLC stays in STOP: switch it to RUN when the machine is ready.").arg(done),
-            false);
+            error);
         return;
     }
     m_stopping = true;
     updateControls();
-    m_requests->submit(Request::runStop(m_station, true), [this, done](const SessionResult &r) {
-        m_stopping = false;
-        updateControls();
-        if (!r.ok()) {
-            showMessage(tr("%1 RUN failed: %2").arg(done, translated(r.errorMessage())), true);
-            return;
-        }
-        showMessage(tr("%1 The PLC is in RUN.").arg(done), false);
-    });
+    m_requests->submit(Request::runStop(m_station, true),
+                       [this, done, error](const SessionResult &r) {
+                           m_stopping = false;
+                           updateControls();
+                           if (!r.ok()) {
+                               showMessage(tr("%1 RUN failed: %2 The PLC stays in STOP.")
+                                               .arg(done, translated(r.errorMessage())),
+                                           true);
+                               return;
+                           }
+                           showMessage(tr("%1 The PLC is in RUN.").arg(done), error);
+                       });
+}
+
+void ProgramTransferDialog::restoreFailed(const ProgramTransferResult &result)
+{
+    QString text = translated(result.message);
+    // The interrupted write says it already (and what to do).
+    if (result.message.id != MsgId::ProgramRestoreInterrupted)
+        text = tr("%1 The PLC stays in STOP: check the program before switching it to RUN.")
+                   .arg(text);
+    showMessage(text, true);
 }
 
 void ProgramTransferDialog::onProgress(int done, int total)
@@ -297,7 +316,10 @@ void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
                   .arg(m_image.pageCount())
                   .arg(pages);
         if (!ToolConfirmation::ask(this, tr("Restore Program"), question, m_confirmer)) {
-            showMessage(tr("Not restored: nothing was written."), false);
+            const QString declined = tr("Not restored: nothing was written.");
+            if (m_stoppedForRestore)
+                return offerRun(declined, false);
+            showMessage(declined, false);
             return;
         }
         m_step = Step::Restore;
@@ -307,14 +329,21 @@ void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
         return;
     }
     if (step == Step::Restore && result.ok()) {
-        offerRun(translated(result.message));
+        offerRun(translated(result.message), true);
         return;
     }
+    // A restore that wrote a page (a write that failed may have too) did not verify.
+    if (step == Step::Restore
+        && (result.pagesDone > 0 || result.message.id == MsgId::ProgramRestoreInterrupted))
+        return restoreFailed(result);
     if (step == Step::Check && result.problem == ProgramTransferResult::Problem::Running
         && !m_askedStop) {
         askToStop();
         return;
     }
+    // Ended before writing (cancelled, the link): a PLC stopped for it may run again.
+    if (step != Step::Backup && m_stoppedForRestore)
+        return offerRun(translated(result.message), false, !result.ok());
     showMessage(translated(result.message), !result.ok());
 }
 

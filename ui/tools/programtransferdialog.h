@@ -22,7 +22,8 @@ class Session;
 // Tools → Program Backup / Restore…: the PLC's program to a file and back (core's
 // ProgramTransfer over 4F/50). A restore checks the model first, then asks to switch a PLC in RUN
 // to STOP, shows what it will write (model, size, the pages that differ) before it writes, offers
-// RUN again once verified (default No), and is refused in operator mode.
+// RUN again once verified or, when it stopped the PLC, once it ends with nothing written (default
+// No), says the PLC's state at the end, and is refused in operator mode.
 class ProgramTransferDialog : public QDialog
 {
     Q_OBJECT
@@ -57,8 +58,12 @@ private:
     // "Reading the program: 12 of 207 pages", without the time left.
     QString progressLine(int done, int total) const;
     void askToStop();
-    // After a restore that verified: RUN again? (default No).
-    void offerRun(const QString &done);
+    // After a restore that verified, or one the dialog stopped the PLC for that wrote nothing:
+    // RUN again? (default No). `done` the outcome, shown with the PLC's state either way.
+    void offerRun(const QString &done, bool restored, bool error = false);
+    // How a restore that wrote and did not verify ends: the PLC stays in STOP (its program may
+    // be incomplete), and the message says so.
+    void restoreFailed(const ProgramTransferResult &result);
     void showMessage(const QString &text, bool error);
     void updateControls();
 
@@ -74,6 +79,7 @@ private:
     Step m_step = Step::None;
     bool m_stopping = false; // a STOP or RUN request is on its way
     bool m_askedStop = false;
+    bool m_stoppedForRestore = false; // this restore switched the PLC to STOP
     QString m_path;
     ProgramImage m_image;
     QElapsedTimer m_elapsed;

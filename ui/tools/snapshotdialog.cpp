@@ -403,13 +403,31 @@ void SnapshotDialog::restoreValues()
         showMessage(tr("Not restored: nothing was written."), false);
         return;
     }
+    m_restoreValues = std::move(values);
+    startRestore(false);
+}
+
+void SnapshotDialog::startRestore(bool otherModel)
+{
     showMessage(tr("Writing…"), false);
-    m_restorer->start(m_station, std::move(values));
+    m_restorer->setAllowOtherModel(otherModel);
+    m_restorer->start(m_station, m_restoreValues, m_snapshot->info.model);
     updateControls();
 }
 
 void SnapshotDialog::onRestored()
 {
+    // Another model than the PLC's: nothing was written; the person decides.
+    if (m_restorer->refusedForModel() && m_snapshot) {
+        const QString question
+            = tr("The snapshot is of another model than the PLC at %1.\n\nSnapshot: %2\nPLC: "
+                 "%3\n\nWrite its values all the same? Elements the PLC does not have are "
+                 "refused before anything is written.")
+                  .arg(ToolConfirmation::target(m_station, m_connectionName),
+                       m_snapshot->info.model, m_restorer->plcModel());
+        if (ToolConfirmation::ask(this, tr("Restore Values"), question, m_confirmer))
+            return startRestore(true);
+    }
     if (!m_restorer->error())
         m_model->setDifferences(m_restorer->mismatches(), tr("Written"), tr("Read back"));
     showMessage(translated(m_restorer->outcome()), !m_restorer->ok());

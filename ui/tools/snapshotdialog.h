@@ -68,6 +68,9 @@ Q_SIGNALS:
 private:
     void onSnapshotRead();
     void onCompared();
+    // Writes m_restoreValues (the question answered); `otherModel`: a snapshot of another model
+    // is written all the same.
+    void startRestore(bool otherModel);
     void onRestored();
     void showMessage(const QString &text, bool error);
     void updateControls();
@@ -80,6 +83,7 @@ private:
     QString m_connectionName;
     Confirmer m_confirmer;
     std::optional<MemorySnapshot> m_snapshot;
+    std::vector<SnapshotValue> m_restoreValues; // what the confirmed restore writes
     bool m_comparing = false;
 
     QLabel *m_targetLabel;
