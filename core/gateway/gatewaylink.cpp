@@ -485,8 +485,8 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
     // Not sent once the command is older than its age limit: a write that waited behind a dead
     // PLC must not land when its sender has given up on it (it was told "unknown" or "expired").
     RequestOptions options;
-    options.deadline.setRemainingTime(
-        std::max<qint64>(0, qint64(m_config.commandMaxAgeSec) * 1000 - commandAgeMs(*command)));
+    options.deadline.setRemainingTime(std::max<qint64>(0, qint64(m_config.commandMaxAgeSec) * 1000
+                                                              - commandAgeMs(*command, queued)));
     ChangeVerifier::submit(
         m_session, item.writeRequest(*raw), this,
         [this, reply](const ChangeReport &report) {
@@ -507,12 +507,15 @@ void GatewayLink::onCommand(const QString &topic, const QByteArray &payload, boo
         options);
 }
 
-qint64 GatewayLink::commandAgeMs(const GatewayPayload::SetCommand &command) const
+qint64 GatewayLink::commandAgeMs(const GatewayPayload::SetCommand &command, bool queued) const
 {
-    // Its own time when it has one (checked by tooOld: not in the future), else it came now.
-    if (!command.time)
-        return 0;
-    return std::max<qint64>(0, command.time->msecsTo(QDateTime::currentDateTimeUtc()));
+    // The older of its own time (tooOld refused one in the future) and, for a command the broker
+    // kept, the time since this gateway lost the broker; a live command without a time came now.
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    qint64 age = command.time ? command.time->msecsTo(now) : 0;
+    if (queued && m_brokerDownAt.isValid())
+        age = std::max(age, m_brokerDownAt.msecsTo(now));
+    return std::max<qint64>(0, age);
 }
 
 } // namespace Fatek

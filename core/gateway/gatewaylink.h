@@ -102,8 +102,8 @@ private:
     void onCommand(const QString &topic, const QByteArray &payload, bool retained, bool queued);
     // Why a command is too old to carry out (empty: it is not).
     Message tooOld(const GatewayPayload::SetCommand &command, bool queued) const;
-    // How old the command is by its own time (0 without one).
-    qint64 commandAgeMs(const GatewayPayload::SetCommand &command) const;
+    // How old the command is: by its own time, and by the broker's outage when it was kept there.
+    qint64 commandAgeMs(const GatewayPayload::SetCommand &command, bool queued) const;
     void update(std::size_t index, const std::vector<std::uint32_t> &words, ValueQuality quality,
                 const Message &error, const QDateTime &time);
     void markDirty(std::size_t index);
