@@ -318,6 +318,10 @@
     <context>
         <name>Fatek::Message</name>
         <message>
+            <source>Stopped at the write of %1: %2</source>
+            <translation>Stopped at the write of %1: %2</translation>
+        </message>
+        <message>
             <source>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</source>
             <translation>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</translation>
         </message>
@@ -3508,6 +3512,14 @@ Meaning %4</translation>
     </context>
     <context>
         <name>Fatek::ProgramTransferDialog</name>
+        <message>
+            <source>STOP: %1</source>
+            <translation>STOP: %1</translation>
+        </message>
+        <message>
+            <source>%1 RUN: %2</source>
+            <translation>%1 RUN: %2</translation>
+        </message>
         <message>
             <source>Program Backup / Restore</source>
             <translation>Program Backup / Restore</translation>

@@ -318,6 +318,10 @@
     <context>
         <name>Fatek::Message</name>
         <message>
+            <source>Stopped at the write of %1: %2</source>
+            <translation>在寫入 %1 時停止：%2</translation>
+        </message>
+        <message>
             <source>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</source>
             <translation>結果未知：%1 已送出但沒有回應（%2），PLC 可能已執行。PLC 一回應就會讀回確認。</translation>
         </message>
@@ -3501,6 +3505,14 @@ Meaning %4</source>
     </context>
     <context>
         <name>Fatek::ProgramTransferDialog</name>
+        <message>
+            <source>STOP: %1</source>
+            <translation>STOP：%1</translation>
+        </message>
+        <message>
+            <source>%1 RUN: %2</source>
+            <translation>%1 RUN：%2</translation>
+        </message>
         <message>
             <source>Program Backup / Restore</source>
             <translation>程式備份／還原</translation>

@@ -377,21 +377,29 @@ void CheckoutRunner::doForce(int index)
         // The disable may have reached the PLC: release.
         release(a, false);
     };
-    m_actions.submit(Request::discreteControl(station, DiscreteOp::Disable, a),
-                     [this, a, station, index, failed](const SessionResult &r) {
-                         if (!r.ok())
-                             return failed(r);
-                         // Stopped meanwhile (Ctrl-C): not set; the release follows the disable.
-                         if (m_outputUnderTest != index)
-                             return release(a, false);
-                         m_actions.submit(Request::discreteControl(station, DiscreteOp::Set, a),
-                                          [this, index, failed](const SessionResult &r2) {
-                                              if (!r2.ok())
-                                                  return failed(r2);
-                                              if (m_outputUnderTest == index)
-                                                  Q_EMIT outputForced(index);
-                                          });
-                     });
+    // Forced now or not at all (a force that waited behind a silent line must not surprise the
+    // person later): each step not sent later than a timeout after it was due. A release has no
+    // deadline: it is always wanted.
+    Session *session = m_actions.session();
+    m_actions.submit(
+        Request::discreteControl(station, DiscreteOp::Disable, a),
+        [this, a, station, index, failed](const SessionResult &r) {
+            if (!r.ok())
+                return failed(r);
+            // Stopped meanwhile (Ctrl-C): not set; the release follows the disable.
+            if (m_outputUnderTest != index || !m_actions.session())
+                return release(a, false);
+            m_actions.submit(
+                Request::discreteControl(station, DiscreteOp::Set, a),
+                [this, index, failed](const SessionResult &r2) {
+                    if (!r2.ok())
+                        return failed(r2);
+                    if (m_outputUnderTest == index)
+                        Q_EMIT outputForced(index);
+                },
+                ChangeVerifier::confirmedNow(m_actions.session()));
+        },
+        ChangeVerifier::confirmedNow(session));
 }
 
 void CheckoutRunner::answerOutput(bool seen, const QString &comment)

@@ -191,6 +191,9 @@ FATEK_MSG(RestoreCheckFailed, 1,
                             "Reading the PLC's model and ranges failed (%1): nothing was "
                             "written."))
 FATEK_MSG(RestoreWriteFailed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Writing %1 failed: %2"))
+// %1 the elements, %2 why the write's outcome is unknown (ChangeStillUnknown).
+FATEK_MSG(RestoreWriteUnknown, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Stopped at the write of %1: %2"))
 // Writing stopped half-way (a fault, a cancel): %1 why, %2 values written, %3 values in all.
 FATEK_MSG(RestoreInterrupted, 3,
           QT_TRANSLATE_NOOP(

@@ -287,16 +287,24 @@ void ValuesRestorer::submitNext()
         return;
     }
     const Request request = m_writes[m_nextWrite++];
-    m_tracker.submit(request, [this, request](const SessionResult &r) { onWritten(request, r); });
+    // One write at a time, each under the one rule for changes: sent once, not later than a
+    // timeout from now, and an unanswered one read back before the next goes.
+    m_tracker.submitChange(
+        request, [this, request](const ChangeReport &r) { onWritten(request, r); },
+        ChangeVerifier::confirmedNow(m_tracker.session()));
 }
 
-void ValuesRestorer::onWritten(const Request &request, const SessionResult &result)
+void ValuesRestorer::onWritten(const Request &request, const ChangeReport &report)
 {
-    if (!m_running)
+    if (!m_running || !report.final)
         return;
-    if (!result.ok()) {
-        ProtocolError e = result.error();
-        e.message = msg<MsgId::RestoreWriteFailed>(request.target(), result.error().message);
+    if (report.outcome != ChangeOutcome::Done) {
+        // Not done means the write's own result was an error (a refusal, or no answer that the
+        // read-back then settled): its kind stays, the message says what became of it.
+        ProtocolError e = report.result.error();
+        e.message = report.outcome == ChangeOutcome::Unknown
+                        ? msg<MsgId::RestoreWriteUnknown>(request.target(), report.message)
+                        : msg<MsgId::RestoreWriteFailed>(request.target(), report.message);
         return fail(std::move(e));
     }
     ++m_written;

@@ -79,7 +79,7 @@ private:
     // The refusal for the PLC's model, if any (sets m_refusedForModel).
     std::optional<ProtocolError> checkModel(const DetailStatus &status);
     void submitNext();
-    void onWritten(const Request &request, const SessionResult &result);
+    void onWritten(const Request &request, const ChangeReport &report);
     void verify();
     void fail(ProtocolError error);
 

@@ -71,7 +71,7 @@ void SessionLink::write(const WatchItemSpec &item, std::uint64_t raw, QObject *c
             const bool done = report.outcome == ChangeOutcome::Done;
             completion({done, report.message, report.outcome, report.final});
         },
-        ChangeVerifier::confirmedNow(*m_session));
+        ChangeVerifier::confirmedNow(m_session));
 }
 
 int SessionLink::pendingWrites() const

@@ -28,10 +28,11 @@ ChangeReport ChangeVerifier::reportOf(const Request &change, const SessionResult
     return report;
 }
 
-RequestOptions ChangeVerifier::confirmedNow(const Session &session)
+RequestOptions ChangeVerifier::confirmedNow(const Session *session)
 {
     RequestOptions options;
-    options.deadline.setRemainingTime(session.settings().timeoutMs);
+    if (session)
+        options.deadline.setRemainingTime(session->settings().timeoutMs);
     return options;
 }
 

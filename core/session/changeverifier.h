@@ -43,8 +43,9 @@ public:
                           Callback callback, RequestOptions options = {},
                           Priority priority = Priority::User);
     // Options for a change a person confirmed just now: not sent later than the link's timeout
-    // from now (it must not land long after the question was answered).
-    static RequestOptions confirmedNow(const Session &session);
+    // from now (it must not land long after the question was answered). No session: defaults
+    // (the request is refused anyway).
+    static RequestOptions confirmedNow(const Session *session);
     // Reads back `change` (sent, its outcome unknown: `result`) and reports once, final.
     static void verify(Session *session, const Request &change, const SessionResult &result,
                        QObject *context, Callback callback);

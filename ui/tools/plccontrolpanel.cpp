@@ -283,7 +283,7 @@ void PlcControlPanel::requestMode(bool run)
             refresh();
             refreshDetail(); // its STATUS1 changes too
         },
-        ChangeVerifier::confirmedNow(*m_session));
+        ChangeVerifier::confirmedNow(m_session));
     updateEnabled();
 }
 

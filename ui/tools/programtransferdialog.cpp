@@ -198,16 +198,27 @@ void ProgramTransferDialog::askToStop()
     m_askedStop = true;
     m_stopping = true;
     updateControls();
-    m_requests->submit(Request::runStop(m_station, false), [this](const SessionResult &r) {
-        m_stopping = false;
-        if (!r.ok()) {
-            showMessage(tr("STOP failed: %1").arg(translated(r.errorMessage())), true);
-            updateControls();
-            return;
-        }
-        m_stoppedForRestore = true;
-        startCheck();
-    });
+    m_requests->submitChange(
+        Request::runStop(m_station, false),
+        [this](const ChangeReport &r) {
+            if (!r.final) {
+                // Sent, not answered: the status is read back before anything else happens.
+                showMessage(tr("STOP: %1").arg(translated(r.message)), true);
+                return;
+            }
+            m_stopping = false;
+            if (r.outcome != ChangeOutcome::Done) {
+                showMessage(r.outcome == ChangeOutcome::Refused
+                                ? tr("STOP failed: %1").arg(translated(r.message))
+                                : tr("STOP: %1").arg(translated(r.message)),
+                            true);
+                updateControls();
+                return;
+            }
+            m_stoppedForRestore = true;
+            startCheck();
+        },
+        ChangeVerifier::confirmedNow(m_requests->session()));
 }
 
 void ProgramTransferDialog::offerRun(const QString &done, bool restored, bool error)
@@ -229,18 +240,30 @@ void ProgramTransferDialog::offerRun(const QString &done, bool restored, bool er
     }
     m_stopping = true;
     updateControls();
-    m_requests->submit(Request::runStop(m_station, true),
-                       [this, done, error](const SessionResult &r) {
-                           m_stopping = false;
-                           updateControls();
-                           if (!r.ok()) {
-                               showMessage(tr("%1 RUN failed: %2 The PLC stays in STOP.")
-                                               .arg(done, translated(r.errorMessage())),
-                                           true);
-                               return;
-                           }
-                           showMessage(tr("%1 The PLC is in RUN.").arg(done), error);
-                       });
+    m_requests->submitChange(
+        Request::runStop(m_station, true),
+        [this, done, error](const ChangeReport &r) {
+            if (!r.final) {
+                showMessage(tr("%1 RUN: %2").arg(done, translated(r.message)), true);
+                return;
+            }
+            m_stopping = false;
+            updateControls();
+            switch (r.outcome) {
+            case ChangeOutcome::Done:
+                showMessage(tr("%1 The PLC is in RUN.").arg(done), error);
+                break;
+            case ChangeOutcome::Refused:
+                showMessage(
+                    tr("%1 RUN failed: %2 The PLC stays in STOP.").arg(done, translated(r.message)),
+                    true);
+                break;
+            case ChangeOutcome::Unknown:
+                showMessage(tr("%1 RUN: %2").arg(done, translated(r.message)), true);
+                break;
+            }
+        },
+        ChangeVerifier::confirmedNow(m_requests->session()));
 }
 
 void ProgramTransferDialog::restoreFailed(const ProgramTransferResult &result)
