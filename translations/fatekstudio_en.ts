@@ -318,28 +318,28 @@
     <context>
         <name>Fatek::Message</name>
         <message>
+            <source>Outcome unknown: %1 It may have been carried out; reading it back as soon as the PLC answers.</source>
+            <translation>Outcome unknown: %1 It may have been carried out; reading it back as soon as the PLC answers.</translation>
+        </message>
+        <message>
+            <source>Done: confirmed by reading it back.</source>
+            <translation>Done: confirmed by reading it back.</translation>
+        </message>
+        <message>
+            <source>Not done: read back afterwards, the PLC does not hold what was sent (not carried out, or changed since by its program).</source>
+            <translation>Not done: read back afterwards, the PLC does not hold what was sent (not carried out, or changed since by its program).</translation>
+        </message>
+        <message>
+            <source>Outcome still unknown: it could not be read back (%1). Check the PLC.</source>
+            <translation>Outcome still unknown: it could not be read back (%1). Check the PLC.</translation>
+        </message>
+        <message>
+            <source>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</source>
+            <translation>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</translation>
+        </message>
+        <message>
             <source>Stopped at the write of %1: %2</source>
             <translation>Stopped at the write of %1: %2</translation>
-        </message>
-        <message>
-            <source>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</source>
-            <translation>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</translation>
-        </message>
-        <message>
-            <source>Done: read back afterwards, the PLC holds what %1 asked for.</source>
-            <translation>Done: read back afterwards, the PLC holds what %1 asked for.</translation>
-        </message>
-        <message>
-            <source>Not done: read back afterwards, the PLC does not hold what %1 asked for (not carried out, or changed since by its program).</source>
-            <translation>Not done: read back afterwards, the PLC does not hold what %1 asked for (not carried out, or changed since by its program).</translation>
-        </message>
-        <message>
-            <source>Outcome still unknown: %1 could not be read back (%2). Check the PLC.</source>
-            <translation>Outcome still unknown: %1 could not be read back (%2). Check the PLC.</translation>
-        </message>
-        <message>
-            <source>Outcome unknown: no read can tell whether %1 was carried out. Check the PLC.</source>
-            <translation>Outcome unknown: no read can tell whether %1 was carried out. Check the PLC.</translation>
         </message>
         <message>
             <source>Not sent: it waited past its deadline (nothing reached the PLC).</source>

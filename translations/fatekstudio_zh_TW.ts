@@ -318,28 +318,28 @@
     <context>
         <name>Fatek::Message</name>
         <message>
+            <source>Outcome unknown: %1 It may have been carried out; reading it back as soon as the PLC answers.</source>
+            <translation>結果未知：%1 PLC 可能已執行；PLC 一回應就會讀回確認。</translation>
+        </message>
+        <message>
+            <source>Done: confirmed by reading it back.</source>
+            <translation>已完成：已讀回確認。</translation>
+        </message>
+        <message>
+            <source>Not done: read back afterwards, the PLC does not hold what was sent (not carried out, or changed since by its program).</source>
+            <translation>未完成：事後讀回，PLC 的值與送出的不同（未執行，或之後已被其程式改變）。</translation>
+        </message>
+        <message>
+            <source>Outcome still unknown: it could not be read back (%1). Check the PLC.</source>
+            <translation>結果仍未知：無法讀回（%1）。請檢查 PLC。</translation>
+        </message>
+        <message>
+            <source>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</source>
+            <translation>結果未知：沒有任何讀取能確認是否已執行。請檢查 PLC。</translation>
+        </message>
+        <message>
             <source>Stopped at the write of %1: %2</source>
             <translation>在寫入 %1 時停止：%2</translation>
-        </message>
-        <message>
-            <source>Outcome unknown: %1 was sent and not answered (%2); it may have been carried out. Reading it back as soon as the PLC answers.</source>
-            <translation>結果未知：%1 已送出但沒有回應（%2），PLC 可能已執行。PLC 一回應就會讀回確認。</translation>
-        </message>
-        <message>
-            <source>Done: read back afterwards, the PLC holds what %1 asked for.</source>
-            <translation>已完成：事後讀回，PLC 的值與 %1 要求的相同。</translation>
-        </message>
-        <message>
-            <source>Not done: read back afterwards, the PLC does not hold what %1 asked for (not carried out, or changed since by its program).</source>
-            <translation>未完成：事後讀回，PLC 的值與 %1 要求的不同（未執行，或之後已被其程式改變）。</translation>
-        </message>
-        <message>
-            <source>Outcome still unknown: %1 could not be read back (%2). Check the PLC.</source>
-            <translation>結果仍未知：無法讀回 %1（%2）。請檢查 PLC。</translation>
-        </message>
-        <message>
-            <source>Outcome unknown: no read can tell whether %1 was carried out. Check the PLC.</source>
-            <translation>結果未知：沒有任何讀取能確認 %1 是否已執行。請檢查 PLC。</translation>
         </message>
         <message>
             <source>Not sent: it waited past its deadline (nothing reached the PLC).</source>

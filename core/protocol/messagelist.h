@@ -164,26 +164,26 @@ FATEK_MSG(SessionFewerValues, 0,
           QT_TRANSLATE_NOOP("Fatek::Message", "The answer carries fewer values than asked."))
 FATEK_MSG(SessionCouldNotWrite, 1, QT_TRANSLATE_NOOP("Fatek::Message", "Could not write to %1."))
 FATEK_MSG(SessionNotExecuted, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not executed"))
-// The outcome of a change whose answer was lost (ChangeVerifier); %1 what was sent ("write R50 =
-// 3333 (station 1)"), %2 why it is unknown or why the read-back failed.
-FATEK_MSG(ChangeUnknown, 2,
+// The outcome of a change whose answer was lost (ChangeVerifier). They do not name the change:
+// whoever shows them says what was asked ("Write of R50 = 3333: ..."). %1 why it is unknown, or
+// why the read-back failed (a sentence).
+FATEK_MSG(ChangeUnknown, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Outcome unknown: %1 was sent and not answered (%2); it may have been "
-                            "carried out. Reading it back as soon as the PLC answers."))
-FATEK_MSG(ChangeReadBackDone, 1,
+                            "Outcome unknown: %1 It may have been carried out; reading it back as "
+                            "soon as the PLC answers."))
+FATEK_MSG(ChangeReadBackDone, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Done: confirmed by reading it back."))
+FATEK_MSG(ChangeReadBackNotDone, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Done: read back afterwards, the PLC holds what %1 asked for."))
-FATEK_MSG(ChangeReadBackNotDone, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Not done: read back afterwards, the PLC does not hold what %1 asked "
-                            "for (not carried out, or changed since by its program)."))
+                            "Not done: read back afterwards, the PLC does not hold what was sent "
+                            "(not carried out, or changed since by its program)."))
 FATEK_MSG(
-    ChangeStillUnknown, 2,
+    ChangeStillUnknown, 1,
     QT_TRANSLATE_NOOP("Fatek::Message",
-                      "Outcome still unknown: %1 could not be read back (%2). Check the PLC."))
-FATEK_MSG(ChangeNoReadBack, 1,
+                      "Outcome still unknown: it could not be read back (%1). Check the PLC."))
+FATEK_MSG(ChangeNoReadBack, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "Outcome unknown: no read can tell whether %1 was carried out. Check "
+                            "Outcome unknown: no read can tell whether it was carried out. Check "
                             "the PLC."))
 FATEK_MSG(SessionExpired, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",

@@ -6,16 +6,7 @@
 
 namespace Fatek {
 
-namespace {
-
-Message changeText(const Request &change)
-{
-    return Message::text(change.describe());
-}
-
-} // namespace
-
-ChangeReport ChangeVerifier::reportOf(const Request &change, const SessionResult &result)
+ChangeReport ChangeVerifier::reportOf(const SessionResult &result)
 {
     ChangeReport report;
     report.outcome = result.outcome();
@@ -23,7 +14,7 @@ ChangeReport ChangeVerifier::reportOf(const Request &change, const SessionResult
     if (report.outcome == ChangeOutcome::Refused)
         report.message = result.errorMessage();
     else if (report.outcome == ChangeOutcome::Unknown)
-        report.message = msg<MsgId::ChangeUnknown>(changeText(change), result.errorMessage());
+        report.message = msg<MsgId::ChangeUnknown>(result.errorMessage());
     report.final = report.outcome != ChangeOutcome::Unknown;
     return report;
 }
@@ -45,7 +36,7 @@ quint64 ChangeVerifier::submit(Session *session, const Request &change, QObject 
     return session->submit(
         change, context,
         [guarded, change, owner, callback = std::move(callback)](const SessionResult &result) {
-            const ChangeReport first = reportOf(change, result);
+            const ChangeReport first = reportOf(result);
             callback(first);
             if (!first.final && owner)
                 verify(guarded.data(), change, result, owner.data(), callback);
@@ -84,13 +75,12 @@ void ChangeVerifier::ask()
         return;
     const std::optional<Request> read = ChangeCheck::readBack(m_change);
     if (!read) {
-        conclude(ChangeOutcome::Unknown, msg<MsgId::ChangeNoReadBack>(changeText(m_change)));
+        conclude(ChangeOutcome::Unknown, msg<MsgId::ChangeNoReadBack>());
         return;
     }
     if (!m_session || m_session->linkState() == LinkState::Closed) {
-        conclude(
-            ChangeOutcome::Unknown,
-            msg<MsgId::ChangeStillUnknown>(changeText(m_change), msg<MsgId::LinkSessionClosed>()));
+        conclude(ChangeOutcome::Unknown,
+                 msg<MsgId::ChangeStillUnknown>(msg<MsgId::LinkSessionClosed>()));
         return;
     }
     if (m_session->linkState() != LinkState::Connected) {
@@ -107,10 +97,9 @@ void ChangeVerifier::onAnswer(const SessionResult &answer)
     m_asking = false;
     if (answer.ok()) {
         if (ChangeCheck::inPlace(m_change, answer.response()))
-            conclude(ChangeOutcome::Done, msg<MsgId::ChangeReadBackDone>(changeText(m_change)));
+            conclude(ChangeOutcome::Done, msg<MsgId::ChangeReadBackDone>());
         else
-            conclude(ChangeOutcome::Refused,
-                     msg<MsgId::ChangeReadBackNotDone>(changeText(m_change)));
+            conclude(ChangeOutcome::Refused, msg<MsgId::ChangeReadBackNotDone>());
         return;
     }
     if (answer.errorKind() == ErrorKind::PlcError || answer.errorKind() == ErrorKind::ReadOnly
@@ -118,14 +107,12 @@ void ChangeVerifier::onAnswer(const SessionResult &answer)
         || answer.errorKind() == ErrorKind::InvalidAddress
         || answer.errorKind() == ErrorKind::Unsupported) {
         // The PLC (or the protocol) will not let this be read: asking again tells nothing more.
-        conclude(ChangeOutcome::Unknown,
-                 msg<MsgId::ChangeStillUnknown>(changeText(m_change), answer.errorMessage()));
+        conclude(ChangeOutcome::Unknown, msg<MsgId::ChangeStillUnknown>(answer.errorMessage()));
         return;
     }
     // No answer yet (timeout, link lost): again once the link is up, a timeout's length later.
     if (!m_session || m_session->linkState() == LinkState::Closed) {
-        conclude(ChangeOutcome::Unknown,
-                 msg<MsgId::ChangeStillUnknown>(changeText(m_change), answer.errorMessage()));
+        conclude(ChangeOutcome::Unknown, msg<MsgId::ChangeStillUnknown>(answer.errorMessage()));
         return;
     }
     m_retry.start(std::max(500, m_session->settings().timeoutMs));
@@ -136,8 +123,7 @@ void ChangeVerifier::onLinkState(LinkState state)
     if (state == LinkState::Closed) {
         if (!m_asking) // an asked read-back still gets its own answer (Cancelled)
             conclude(ChangeOutcome::Unknown,
-                     msg<MsgId::ChangeStillUnknown>(changeText(m_change),
-                                                    msg<MsgId::LinkSessionClosed>()));
+                     msg<MsgId::ChangeStillUnknown>(msg<MsgId::LinkSessionClosed>()));
         return;
     }
     if (state == LinkState::Connected && std::exchange(m_waitingForLink, false))

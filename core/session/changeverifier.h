@@ -50,7 +50,7 @@ public:
     static void verify(Session *session, const Request &change, const SessionResult &result,
                        QObject *context, Callback callback);
     // The first report of a change's own result.
-    static ChangeReport reportOf(const Request &change, const SessionResult &result);
+    static ChangeReport reportOf(const SessionResult &result);
 
 private:
     ChangeVerifier(Session *session, const Request &change, const SessionResult &result,

@@ -277,7 +277,7 @@ private Q_SLOTS:
         plc.server.setFaults({});
         QTRY_VERIFY2_WITH_TIMEOUT(table->message().startsWith(QStringLiteral("Wrote R50")),
                                   qPrintable(table->message()), longWait);
-        QVERIFY2(table->message().contains(QStringLiteral("Done: read back")),
+        QVERIFY2(table->message().contains(QStringLiteral("Done: confirmed by reading it back")),
                  qPrintable(table->message()));
         QCOMPARE(plc.count(QStringLiteral("write R50")), qsizetype(1)); // sent once
         QCOMPARE(plc.plc.value(addr("R50")), std::optional<std::uint32_t>(3333));

@@ -270,7 +270,7 @@ void TestChangeOutcome::unknownWriteReadBackDone()
     QVERIFY(waitUntil([&] { return reports.hasFinal(); }));
     QCOMPARE(reports.list.size(), 2);
     QCOMPARE(reports.list.last().outcome, ChangeOutcome::Done);
-    QVERIFY2(english(reports.list.last().message).find("Done: read back") == 0,
+    QVERIFY2(english(reports.list.last().message).find("Done: confirmed by reading it back") == 0,
              english(reports.list.last().message).c_str());
     QCOMPARE(m_plc->value(addr("R50")), std::optional<std::uint32_t>(3333));
 }
