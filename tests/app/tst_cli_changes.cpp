@@ -133,7 +133,8 @@ void TestCliChanges::lostAnswerReadBackDone()
     QVERIFY2(m_err.contains(QStringLiteral("may have been carried out")), qPrintable(m_err));
     m_server->setFaults({});
     QCOMPARE(finish(), 0);
-    QVERIFY2(m_err.contains(QStringLiteral("Done: confirmed by reading it back")), qPrintable(m_err));
+    QVERIFY2(m_err.contains(QStringLiteral("Done: confirmed by reading it back")),
+             qPrintable(m_err));
     QCOMPARE(writes(logged), 1); // sent once although --retries 2
 }
 
