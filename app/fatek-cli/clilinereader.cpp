@@ -1,5 +1,7 @@
 #include "clilinereader.h"
 
+#include "core/session/crossthreadcall.h"
+
 #include <QMetaObject>
 
 #include <iostream>
@@ -57,8 +59,8 @@ void CliLineReader::startReading()
                     line.pop_back();
                 const QString text
                     = QString::fromUtf8(line.data(), static_cast<qsizetype>(line.size()));
-                QMetaObject::invokeMethod(
-                    this, [this, text] { received(text); }, Qt::QueuedConnection);
+                // Marked for ThreadSanitizer (Debian's Qt hides its queue's ordering from it).
+                CrossThreadCall::invoke(this, [this, text] { received(text); });
             }
 #ifdef Q_OS_WIN
             if (console) {
@@ -69,8 +71,7 @@ void CliLineReader::startReading()
 #endif
             break;
         }
-        QMetaObject::invokeMethod(
-            this, [this] { received(std::nullopt); }, Qt::QueuedConnection);
+        CrossThreadCall::invoke(this, [this] { received(std::nullopt); });
     }).detach();
 }
 
