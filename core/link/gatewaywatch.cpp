@@ -308,9 +308,11 @@ void GatewayWatch::flush()
         Q_EMIT itemValues(batch);
 }
 
-void GatewayWatch::write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
-                         WriteCompletion completion)
+void GatewayWatch::writeItem(const WatchItemSpec &item, std::uint64_t raw,
+                             const std::optional<QDeadlineTimer> &deadline, QObject *context,
+                             WriteCompletion completion)
 {
+    Q_UNUSED(deadline);
     const QString id = QUuid::createUuid().toString(QUuid::WithoutBraces);
     const ItemValues values(item);
     PendingWrite pending;

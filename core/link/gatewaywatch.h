@@ -55,10 +55,6 @@ public:
 
     void setReadOnly(bool readOnly) override { m_readOnly = readOnly; }
     bool isReadOnly() const override { return m_readOnly; }
-    // Publishes a command with the item's words for `raw` and its format; the completion gets the
-    // gateway's reply, or why not (read-only, not connected, no reply within replyTimeoutMs()).
-    void write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
-               WriteCompletion completion) override;
     // A command is gone once published: a close has nothing to wait for.
     int pendingWrites() const override { return 0; }
     int closeDrainMs() const override { return 0; }
@@ -71,6 +67,15 @@ public:
     // How long after the gateway's status says up its items may take before an item that has
     // none is reported as not published [1000 ms].
     void setPublishedGraceMs(int ms) { m_graceMs = ms; }
+
+protected:
+    // Publishes a command with the item's words for `raw` and its format; the completion gets the
+    // gateway's reply, or why not (read-only, not connected, no reply within replyTimeoutMs()).
+    // The deadline is not used: the gateway refuses a command older than its own age limit (the
+    // command carries its time).
+    void writeItem(const WatchItemSpec &item, std::uint64_t raw,
+                   const std::optional<QDeadlineTimer> &deadline, QObject *context,
+                   WriteCompletion completion) override;
 
 private:
     struct Published

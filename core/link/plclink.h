@@ -5,12 +5,14 @@
 #include "core/session/sessiontypes.h"
 #include "core/watch/itemassembler.h"
 
+#include <QDeadlineTimer>
 #include <QList>
 #include <QObject>
 #include <QString>
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 namespace Fatek {
 
@@ -73,9 +75,17 @@ public:
     // or twice for an unknown outcome (LinkWriteResult::final); dropped if `context` is destroyed
     // first. The write is not sent later than the link's timeout after this call (the person
     // confirmed it now, not whenever the line is free).
-    virtual void write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
-                       WriteCompletion completion)
-        = 0;
+    void write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
+               WriteCompletion completion)
+    {
+        writeItem(item, raw, std::nullopt, context, std::move(completion));
+    }
+    // The same, not sent after `deadline` (a command's own age limit).
+    void write(const WatchItemSpec &item, std::uint64_t raw, const QDeadlineTimer &deadline,
+               QObject *context, WriteCompletion completion)
+    {
+        writeItem(item, raw, deadline, context, std::move(completion));
+    }
     // Writes accepted and not finished, and how long a close waits for them.
     virtual int pendingWrites() const = 0;
     virtual int closeDrainMs() const = 0;
@@ -85,6 +95,13 @@ public:
     virtual Session *session() const { return nullptr; }
     // What the far end says it talks to ("TCP 10.0.0.7:500, FACON"); empty for a direct link.
     virtual QString peerText() const { return {}; }
+
+protected:
+    // write(): `deadline` unset means the link's timeout from now.
+    virtual void writeItem(const WatchItemSpec &item, std::uint64_t raw,
+                           const std::optional<QDeadlineTimer> &deadline, QObject *context,
+                           WriteCompletion completion)
+        = 0;
 
 Q_SIGNALS:
     void linkStateChanged(Fatek::LinkState state, const Fatek::Message &reason);

@@ -60,9 +60,18 @@ bool SessionLink::isReadOnly() const
     return m_session->isReadOnly();
 }
 
-void SessionLink::write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
-                        WriteCompletion completion)
+void SessionLink::dropTrafficLog()
 {
+    m_session->trafficLog()->setCapacity(0);
+}
+
+void SessionLink::writeItem(const WatchItemSpec &item, std::uint64_t raw,
+                            const std::optional<QDeadlineTimer> &deadline, QObject *context,
+                            WriteCompletion completion)
+{
+    RequestOptions options = ChangeVerifier::confirmedNow(m_session);
+    if (deadline)
+        options.deadline = *deadline;
     ChangeVerifier::submit(
         m_session, ItemValues(item).writeRequest(raw), context,
         [completion = std::move(completion)](const ChangeReport &report) {
@@ -71,7 +80,7 @@ void SessionLink::write(const WatchItemSpec &item, std::uint64_t raw, QObject *c
             const bool done = report.outcome == ChangeOutcome::Done;
             completion({done, report.message, report.outcome, report.final});
         },
-        ChangeVerifier::confirmedNow(m_session));
+        options);
 }
 
 int SessionLink::pendingWrites() const

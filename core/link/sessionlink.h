@@ -23,11 +23,17 @@ public:
     void setItems(const QList<WatchedItem> &items) override;
     void setReadOnly(bool readOnly) override;
     bool isReadOnly() const override;
-    void write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
-               WriteCompletion completion) override;
     int pendingWrites() const override;
     int closeDrainMs() const override;
     Session *session() const override { return m_session; }
+    // The session keeps no traffic log (the studio's raw console shows it; a gateway link has
+    // no reader for it).
+    void dropTrafficLog();
+
+protected:
+    void writeItem(const WatchItemSpec &item, std::uint64_t raw,
+                   const std::optional<QDeadlineTimer> &deadline, QObject *context,
+                   WriteCompletion completion) override;
 
 private:
     Session *m_session;

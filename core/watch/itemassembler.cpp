@@ -18,6 +18,11 @@ std::uint64_t WatchedItem::newKey()
     return nextItemKey.fetch_add(1);
 }
 
+std::uint64_t WatchedItem::newKeys(std::size_t count)
+{
+    return nextItemKey.fetch_add(count);
+}
+
 void ItemAssembler::setItems(const QList<WatchedItem> &items)
 {
     QHash<std::uint64_t, std::size_t> old;

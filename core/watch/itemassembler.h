@@ -21,6 +21,8 @@ struct WatchedItem
 
     // A fresh key from a process-wide counter.
     static std::uint64_t newKey();
+    // The first of `count` consecutive fresh keys (a consumer that finds its items by key - first).
+    static std::uint64_t newKeys(std::size_t count);
 };
 
 // The value of one watch item as a link reports it: its elements' words and their join.

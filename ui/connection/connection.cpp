@@ -22,13 +22,15 @@ Connection::Connection(const SavedConnection &saved, QObject *parent)
     m_rateSamples.emplace_back(0, 0);
     // The one place that picks the kind of link.
     if (saved.gateway)
-        m_link = new GatewayWatch(*saved.gateway, this);
+        m_link = new GatewayWatch(*saved.gateway);
     else
-        m_link = new SessionLink(saved.settings, this);
+        m_link = new SessionLink(saved.settings);
+    m_plant = new PlantConnection(m_link, this);
     m_session = m_link->session();
-    connect(m_link, &PlcLink::linkStateChanged, this, &Connection::onLinkState);
-    connect(m_link, &PlcLink::itemValues, this, &Connection::itemValues);
-    connect(m_link, &PlcLink::statisticsChanged, this, [this](const SessionStatistics &statistics) {
+    connect(m_plant, &PlantConnection::linkStateChanged, this, &Connection::onLinkState);
+    connect(m_plant, &PlantConnection::valuesArrived, this, &Connection::itemValues);
+    connect(m_plant, &PlantConnection::statisticsChanged, this,
+            [this](const SessionStatistics &statistics) {
         m_statistics = statistics;
         Q_EMIT changed();
     });
@@ -44,16 +46,8 @@ Connection::Connection(const SavedConnection &saved, QObject *parent)
 
 void Connection::onLinkState(LinkState state, const Message &reason)
 {
-    // Every failed attempt and every broken link passes through Lost once; a link without a
-    // session of its own stays Lost while it retries, and says so again only when the reason
-    // changes.
-    if (state == LinkState::Lost && (m_session || m_state != LinkState::Lost))
-        ++m_linkFailures;
-    if (state == LinkState::Connected)
-        m_hasConnected = true;
     const bool cameUp = state == LinkState::Connected && m_state != state;
     m_state = state;
-    m_reason = reason;
     if (m_session && cameUp) {
         readIdentity();
         m_statusTimer.start();
@@ -71,7 +65,7 @@ void Connection::onLinkState(LinkState state, const Message &reason)
 Connection::~Connection()
 {
     // The session's destructor stops its thread; nothing may poll into a half-destroyed object.
-    disconnect(m_link, nullptr, this, nullptr);
+    disconnect(m_plant, nullptr, this, nullptr);
 }
 
 void Connection::setStation(quint8 station)
@@ -94,20 +88,17 @@ void Connection::setStation(quint8 station)
 quint64 Connection::errorCount() const
 {
     const StationStatistics &t = m_statistics.total;
-    return t.timeouts + t.checksumErrors + t.plcErrors + m_linkFailures;
+    return t.timeouts + t.checksumErrors + t.plcErrors + m_plant->linkFailures();
 }
 
 QList<quint8> Connection::silentStations() const
 {
     QList<quint8> silent;
-    if (m_state != LinkState::Connected)
+    if (linkState() != LinkState::Connected)
         return silent; // a link that is down says so itself
     // Only stations someone uses: a station scan leaves every empty address unanswered.
-    QSet<quint8> used{m_saved.station};
-    for (const QList<WatchedItem> &items : m_watchItems) {
-        for (const WatchedItem &item : items)
-            used.insert(item.spec.station);
-    }
+    QSet<quint8> used = m_plant->watchedStations();
+    used.insert(m_saved.station);
     for (auto it = m_statistics.stations.cbegin(); it != m_statistics.stations.cend(); ++it) {
         if (it.value().unanswered > 0 && it.key() != 0 && used.contains(it.key()))
             silent << it.key();
@@ -117,7 +108,7 @@ QList<quint8> Connection::silentStations() const
 
 QString Connection::stateText() const
 {
-    const QString state = UiText::linkState(m_state);
+    const QString state = UiText::linkState(linkState());
     const QList<quint8> silent = silentStations();
     if (silent.isEmpty())
         return state;
@@ -199,24 +190,24 @@ void Connection::readStatus()
 
 void Connection::open()
 {
-    m_link->open();
+    m_plant->open();
 }
 
 void Connection::reconnectNow()
 {
     if (m_state == LinkState::Connected || m_state == LinkState::Connecting)
         return;
-    m_link->reconnectNow();
+    m_plant->reconnectNow();
 }
 
 void Connection::close()
 {
-    m_link->close();
+    m_plant->close();
 }
 
 void Connection::closeDiscard()
 {
-    m_link->close(CloseMode::Discard);
+    m_plant->close(CloseMode::Discard);
 }
 
 void Connection::setReadOnly(bool readOnly)
@@ -237,23 +228,6 @@ int Connection::pendingWrites() const
 int Connection::closeDrainMs() const
 {
     return m_link->closeDrainMs();
-}
-
-void Connection::setWatchItems(const QObject *owner, const QList<WatchedItem> &items)
-{
-    if (items.isEmpty())
-        m_watchItems.remove(owner);
-    else
-        m_watchItems.insert(owner, items);
-    pushItems();
-}
-
-void Connection::pushItems()
-{
-    QList<WatchedItem> all;
-    for (auto it = m_watchItems.cbegin(); it != m_watchItems.cend(); ++it)
-        all += it.value();
-    m_link->setItems(all);
 }
 
 void Connection::updateRate()

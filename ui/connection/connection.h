@@ -1,12 +1,12 @@
 #pragma once
 
 #include "core/link/plclink.h"
+#include "core/plant/plantconnection.h"
 #include "core/protocol/plcstatus.h"
 #include "core/session/session.h"
 #include "linksettingsio.h"
 
 #include <QElapsedTimer>
-#include <QHash>
 #include <QObject>
 #include <QTimer>
 
@@ -15,11 +15,10 @@
 
 namespace Fatek {
 
-// One open link in the GUI: a named PlcLink, the station tools act on, link state and rates.
-// Several watch tables may watch through one connection: each owner hands its items in and the
-// connection gives the link their union (a link has a single list of items).
-// Tables read and write only through link(); the tools that talk to the PLC itself use session(),
-// which only a direct link has.
+// The GUI's view of one plant connection (core/plant): its name and saved settings, the station
+// the tools act on, what the PLC there says it is, and the link's state and rates for the
+// Connections dock. Tables subscribe their items to plant() as its consumers and write through
+// it; the tools that talk to the PLC itself use session(), which only a direct link has.
 class Connection : public QObject
 {
     Q_OBJECT
@@ -34,6 +33,7 @@ public:
     quint8 station() const { return m_saved.station; }
     void setStation(quint8 station);
 
+    PlantConnection *plant() const { return m_plant; }
     PlcLink *link() const { return m_link; }
     // The direct link's session; nullptr when another program owns the PLC link.
     Session *session() const { return m_session; }
@@ -47,16 +47,16 @@ public:
     // Writes accepted and not finished; how long a close waits for them.
     int pendingWrites() const;
     int closeDrainMs() const;
-    LinkState linkState() const { return m_state; }
-    Message linkReason() const { return m_reason; }
+    LinkState linkState() const { return m_plant->linkState(); }
+    Message linkReason() const { return m_plant->linkReason(); }
     SessionStatistics statistics() const { return m_statistics; }
     double requestsPerSecond() const { return m_rate; }
     // Timeouts, checksum errors, PLC error answers and link failures.
     quint64 errorCount() const;
     // Connection attempts that failed and open links that broke (refused port, cable pulled).
-    quint64 linkFailures() const { return m_linkFailures; }
+    quint64 linkFailures() const { return m_plant->linkFailures(); }
     // Whether the link ever came up since open().
-    bool hasConnected() const { return m_hasConnected; }
+    bool hasConnected() const { return m_plant->hasConnected(); }
     // While the link is up: stations whose last request got no answer at all (ascending).
     QList<quint8> silentStations() const;
     // "connected", or "connected, no answer from station 5" when a station is silent.
@@ -76,35 +76,29 @@ public:
     // Connects at once when the link is down (skips the reconnect backoff).
     void reconnectNow();
 
-    // Replaces what `owner` watches (an empty list removes it).
-    void setWatchItems(const QObject *owner, const QList<WatchedItem> &items);
-
 Q_SIGNALS:
     void changed(); // link state, statistics or rate
     void linkStateChanged(Fatek::LinkState state, const Fatek::Message &reason);
+    // Every batch of values the link reported (the tables get theirs as the plant's consumers).
     void itemValues(const QList<Fatek::WatchItemValue> &values);
 
 private:
     void onLinkState(LinkState state, const Message &reason);
     void updateRate();
-    void pushItems();
     void readIdentity();
     void readStatus();
 
     SavedConnection m_saved;
-    PlcLink *m_link = nullptr;
+    PlantConnection *m_plant = nullptr;
+    PlcLink *m_link = nullptr; // m_plant's
     Session *m_session = nullptr; // m_link's, if it has one
-    LinkState m_state = LinkState::Closed;
-    quint64 m_linkFailures = 0;
+    LinkState m_state = LinkState::Closed; // as last reported, to see it come up
     class RequestTracker *m_plcRequests = nullptr;
     QTimer m_statusTimer;
     std::optional<DetailStatus> m_detail;
     std::optional<PlcStatus> m_plcStatus;
     bool m_statusPending = false;
-    bool m_hasConnected = false;
-    Message m_reason;
     SessionStatistics m_statistics;
-    QHash<const QObject *, QList<WatchedItem>> m_watchItems;
     QTimer m_rateTimer;
     QElapsedTimer m_rateClock;
     // (ms on m_rateClock, requests counted then) over the last rateWindowMs.

@@ -43,6 +43,7 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     , m_proxy(new WatchTableProxy(this))
     , m_view(new WatchTableView(this))
     , m_forcedMarks(new ForcedMarks(m_model, this))
+    , m_subscription(new PlantSubscription(this))
 {
     m_addEdit = new QLineEdit(this);
     m_addEdit->setObjectName(QStringLiteral("addressEdit"));
@@ -314,8 +315,7 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
 
 WatchTableWidget::~WatchTableWidget()
 {
-    if (m_connection)
-        m_connection->setWatchItems(this, {});
+    m_subscription->setConnection(nullptr);
 }
 
 QTableView *WatchTableWidget::view() const
@@ -477,14 +477,16 @@ void WatchTableWidget::setConnection(Connection *connection)
     if (connection == m_connection)
         return;
     if (m_connection) {
-        m_connection->setWatchItems(this, {});
         disconnect(m_connection, nullptr, m_model, nullptr);
+        disconnect(m_subscription, nullptr, m_model, nullptr);
     }
     m_connection = connection;
+    m_subscription->setItems({}); // pushPollList() subscribes them to the new connection
+    m_subscription->setConnection(connection ? connection->plant() : nullptr);
     if (connection) {
         // A paused table is frozen: a cycle already under way when it paused must not update it.
         // Batches are applied in time slices, coalesced per frame (WatchTableModel::queueValues).
-        connect(connection, &Connection::itemValues, m_model,
+        connect(m_subscription, &PlantSubscription::itemValues, m_model,
                 [this](const QList<WatchItemValue> &values) {
                     if (!isPaused())
                         m_model->queueValues(values);
@@ -530,8 +532,8 @@ void WatchTableWidget::pushPollList()
 {
     if (!m_connection)
         return;
-    m_connection->setWatchItems(this, isPaused() ? QList<WatchedItem>()
-                                                 : m_model->watchItems(intervalMs()));
+    m_subscription->setItems(isPaused() ? QList<WatchedItem>()
+                                        : m_model->watchItems(intervalMs()));
 }
 
 WatchTableSpec WatchTableWidget::spec() const

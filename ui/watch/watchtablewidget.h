@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/plant/plantsubscription.h"
 #include "core/watch/watchlist.h"
 #include "ui/connection/connection.h"
 
@@ -136,6 +137,8 @@ private:
     QAction *m_swapAction;
     ConfirmHandler m_confirm;
     ForcedMarks *m_forcedMarks;
+    // This table as a consumer of its connection's plant connection.
+    PlantSubscription *m_subscription;
     // The table's writes; an outcome counts only while the table uses the connection written to.
 };
 

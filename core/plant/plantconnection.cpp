@@ -1,0 +1,175 @@
+#include "plantconnection.h"
+
+#include "core/session/session.h"
+
+#include <algorithm>
+
+namespace Fatek {
+
+PlantConnection::PlantConnection(PlcLink *link, QObject *parent)
+    : QObject(parent)
+    , m_link(link)
+{
+    m_link->setParent(this);
+    m_state = m_link->linkState();
+    connect(m_link, &PlcLink::linkStateChanged, this, &PlantConnection::onLinkState);
+    connect(m_link, &PlcLink::itemValues, this, &PlantConnection::onValues);
+    connect(m_link, &PlcLink::statisticsChanged, this,
+            [this](const SessionStatistics &statistics) {
+                m_statistics = statistics;
+                Q_EMIT statisticsChanged(statistics);
+            });
+}
+
+PlantConnection::~PlantConnection()
+{
+    // The link's destructor stops its thread; nothing may arrive in a half-destroyed object.
+    disconnect(m_link, nullptr, this, nullptr);
+}
+
+void PlantConnection::open()
+{
+    m_link->open();
+}
+
+void PlantConnection::close(CloseMode mode)
+{
+    m_link->close(mode);
+}
+
+void PlantConnection::reconnectNow()
+{
+    m_link->reconnectNow();
+}
+
+SessionStatistics PlantConnection::statistics() const
+{
+    if (const Session *session = m_link->session())
+        return session->statistics();
+    return m_statistics;
+}
+
+void PlantConnection::subscribe(PlantConsumer *consumer, const QList<WatchedItem> &items)
+{
+    if (items.isEmpty()) {
+        unsubscribe(consumer);
+        return;
+    }
+    const auto it = std::find_if(m_consumers.begin(), m_consumers.end(),
+                                 [consumer](const Consumer &c) { return c.consumer == consumer; });
+    if (it != m_consumers.end())
+        it->items = items;
+    else
+        m_consumers.push_back({consumer, items});
+    pushItems();
+}
+
+void PlantConnection::unsubscribe(PlantConsumer *consumer)
+{
+    const auto it = std::find_if(m_consumers.begin(), m_consumers.end(),
+                                 [consumer](const Consumer &c) { return c.consumer == consumer; });
+    if (it == m_consumers.end())
+        return;
+    m_consumers.erase(it);
+    pushItems();
+}
+
+bool PlantConnection::isSubscribed(const PlantConsumer *consumer) const
+{
+    return std::any_of(m_consumers.cbegin(), m_consumers.cend(),
+                       [consumer](const Consumer &c) { return c.consumer == consumer; });
+}
+
+QSet<quint8> PlantConnection::watchedStations() const
+{
+    QSet<quint8> stations;
+    for (const Consumer &c : m_consumers) {
+        for (const WatchedItem &item : c.items)
+            stations.insert(item.spec.station);
+    }
+    return stations;
+}
+
+void PlantConnection::pushItems()
+{
+    // A link has a single list of items: the union of every consumer's.
+    QList<WatchedItem> all;
+    m_owner.clear();
+    for (const Consumer &c : m_consumers) {
+        all += c.items;
+        for (const WatchedItem &item : c.items)
+            m_owner.insert(item.key, c.consumer);
+    }
+    m_link->setItems(all);
+}
+
+void PlantConnection::write(const WatchItemSpec &item, std::uint64_t raw, QObject *context,
+                            PlcLink::WriteCompletion completion)
+{
+    m_link->write(item, raw, context, std::move(completion));
+}
+
+void PlantConnection::write(const WatchItemSpec &item, std::uint64_t raw,
+                            const QDeadlineTimer &deadline, QObject *context,
+                            PlcLink::WriteCompletion completion)
+{
+    m_link->write(item, raw, deadline, context, std::move(completion));
+}
+
+void PlantConnection::onValues(const QList<WatchItemValue> &values)
+{
+    Q_EMIT valuesArrived(values);
+    if (m_consumers.size() == 1) {
+        // One consumer (a gateway's MQTT side, a studio with one table): the batch is its own,
+        // but for values of items it no longer watches (a report under way while it changed).
+        PlantConsumer *only = m_consumers.front().consumer;
+        const bool all = std::all_of(values.cbegin(), values.cend(), [&](const WatchItemValue &v) {
+            return m_owner.value(v.key) == only;
+        });
+        if (all) {
+            only->plantValues(values);
+            return;
+        }
+    }
+    // Each consumer gets its own items' values, in the batch's order; values of no consumer's
+    // item (one just removed) go nowhere.
+    std::vector<std::pair<PlantConsumer *, QList<WatchItemValue>>> split;
+    for (const WatchItemValue &v : values) {
+        PlantConsumer *owner = m_owner.value(v.key);
+        if (!owner)
+            continue;
+        auto it = std::find_if(split.begin(), split.end(),
+                               [owner](const auto &entry) { return entry.first == owner; });
+        if (it == split.end())
+            it = split.insert(split.end(), {owner, {}});
+        it->second.append(v);
+    }
+    for (const auto &[consumer, own] : split) {
+        if (isSubscribed(consumer)) // not if an earlier consumer's call removed it
+            consumer->plantValues(own);
+    }
+}
+
+void PlantConnection::onLinkState(LinkState state, const Message &reason)
+{
+    // Every failed attempt and every broken link passes through Lost once; a link without a
+    // session of its own stays Lost while it retries, and says so again only when the reason
+    // changes.
+    if (state == LinkState::Lost && (m_link->session() || m_state != LinkState::Lost))
+        ++m_linkFailures;
+    if (state == LinkState::Connected)
+        m_hasConnected = true;
+    m_state = state;
+    m_reason = reason;
+    // A copy: a consumer may unsubscribe (or another subscribe) from inside its call.
+    std::vector<PlantConsumer *> consumers;
+    for (const Consumer &c : m_consumers)
+        consumers.push_back(c.consumer);
+    for (PlantConsumer *consumer : consumers) {
+        if (isSubscribed(consumer))
+            consumer->plantLinkState(state, reason);
+    }
+    Q_EMIT linkStateChanged(state, reason);
+}
+
+} // namespace Fatek
