@@ -1,6 +1,5 @@
 #include "gatewaylink.h"
 
-#include "core/link/sessionlink.h"
 #include "core/plant/plantconnection.h"
 #include "gatewaymessages.h"
 #include "mqttnorth.h"
@@ -9,26 +8,12 @@
 
 namespace Fatek {
 
-namespace {
-
-PlcLink *southLink(const GatewayConnectionConfig &config, bool readOnly)
-{
-    auto *link = new SessionLink(config.link);
-    // Nothing reads a gateway link's traffic: its log would hold 10,000 frames per link for
-    // nothing (about 7 MB for 200 items).
-    link->dropTrafficLog();
-    // Core refuses writes too, should a command ever slip past the gateway's checks.
-    link->setReadOnly(readOnly);
-    return link;
-}
-
-} // namespace
-
 GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &prefix,
                          const MqttBrokerSettings &broker, bool readOnly, QObject *parent)
     : QObject(parent)
     , m_name(config.name)
-    , m_plant(new PlantConnection(southLink(config, readOnly), this))
+    // Core refuses writes too, should a command ever slip past the gateway's checks.
+    , m_plant(PlantConnection::direct(config.link, {readOnly, false}, this))
     , m_north(new MqttNorth(config, prefix, broker, readOnly, m_plant, this))
 {
     connect(m_north, &MqttNorth::logEvent, this, &GatewayLink::logEvent);

@@ -179,8 +179,8 @@ void MqttNorth::plantValues(const QList<WatchItemValue> &values)
         const std::uint64_t index = v.key - m_firstKey;
         if (v.key < m_firstKey || index >= m_items.size())
             continue; // not one of ours (the plant hands out only ours; kept safe all the same)
-        update(static_cast<std::size_t>(index),
-               v.hasValue ? v.words : std::vector<std::uint32_t>{}, v.quality, v.error, v.time);
+        update(static_cast<std::size_t>(index), v.hasValue ? v.words : std::vector<std::uint32_t>{},
+               v.quality, v.error, v.time);
     }
 }
 

@@ -1,5 +1,7 @@
 #include "plantconnection.h"
 
+#include "core/link/gatewaywatch.h"
+#include "core/link/sessionlink.h"
 #include "core/session/session.h"
 
 #include <algorithm>
@@ -14,11 +16,26 @@ PlantConnection::PlantConnection(PlcLink *link, QObject *parent)
     m_state = m_link->linkState();
     connect(m_link, &PlcLink::linkStateChanged, this, &PlantConnection::onLinkState);
     connect(m_link, &PlcLink::itemValues, this, &PlantConnection::onValues);
-    connect(m_link, &PlcLink::statisticsChanged, this,
-            [this](const SessionStatistics &statistics) {
-                m_statistics = statistics;
-                Q_EMIT statisticsChanged(statistics);
-            });
+    connect(m_link, &PlcLink::statisticsChanged, this, [this](const SessionStatistics &statistics) {
+        m_statistics = statistics;
+        Q_EMIT statisticsChanged(statistics);
+    });
+}
+
+PlantConnection *PlantConnection::direct(const LinkSettings &settings, const DirectOptions &options,
+                                         QObject *parent)
+{
+    auto *link = new SessionLink(settings);
+    if (!options.trafficLog)
+        link->dropTrafficLog();
+    link->setReadOnly(options.readOnly);
+    return new PlantConnection(link, parent);
+}
+
+PlantConnection *PlantConnection::throughGateway(const GatewayWatchSettings &settings,
+                                                 QObject *parent)
+{
+    return new PlantConnection(new GatewayWatch(settings), parent);
 }
 
 PlantConnection::~PlantConnection()

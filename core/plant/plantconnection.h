@@ -1,6 +1,8 @@
 #pragma once
 
+#include "core/link/gatewaywatchsettings.h"
 #include "core/link/plclink.h"
+#include "core/transport/linksettings.h"
 #include "plantconsumer.h"
 
 #include <QDeadlineTimer>
@@ -23,8 +25,23 @@ class PlantConnection : public QObject
     Q_OBJECT
 
 public:
+    // How a direct link is made.
+    struct DirectOptions
+    {
+        bool readOnly = false;
+        // Whether the session keeps its traffic log (the studio's raw console reads it; a
+        // gateway's link has no reader for it: 10,000 frames per link for nothing).
+        bool trafficLog = true;
+    };
+
     // Takes `link` (its parent becomes this connection).
     explicit PlantConnection(PlcLink *link, QObject *parent = nullptr);
+    // The kinds of link, made here: a direct session on a serial, TCP or UDP line; a gateway's
+    // connection watched through its broker.
+    static PlantConnection *direct(const LinkSettings &settings, const DirectOptions &options,
+                                   QObject *parent = nullptr);
+    static PlantConnection *throughGateway(const GatewayWatchSettings &settings,
+                                           QObject *parent = nullptr);
     ~PlantConnection() override;
 
     PlcLink *link() const { return m_link; }
@@ -82,7 +99,7 @@ private:
     bool isSubscribed(const PlantConsumer *consumer) const;
 
     PlcLink *m_link;
-    std::vector<Consumer> m_consumers; // in subscription order
+    std::vector<Consumer> m_consumers;             // in subscription order
     QHash<std::uint64_t, PlantConsumer *> m_owner; // item key -> its consumer
     LinkState m_state = LinkState::Closed;
     Message m_reason;

@@ -1,7 +1,5 @@
 #include "connection.h"
 
-#include "core/link/gatewaywatch.h"
-#include "core/link/sessionlink.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
 #include "ui/common/uitext.h"
@@ -20,20 +18,18 @@ Connection::Connection(const SavedConnection &saved, QObject *parent)
     m_rateClock.start();
     // The session's count starts at 0 with the link: the first second already has a rate.
     m_rateSamples.emplace_back(0, 0);
-    // The one place that picks the kind of link.
-    if (saved.gateway)
-        m_link = new GatewayWatch(*saved.gateway);
-    else
-        m_link = new SessionLink(saved.settings);
-    m_plant = new PlantConnection(m_link, this);
+    // The saved connection says which kind of link (PlantConnection makes it).
+    m_plant = saved.gateway ? PlantConnection::throughGateway(*saved.gateway, this)
+                            : PlantConnection::direct(saved.settings, {}, this);
+    m_link = m_plant->link();
     m_session = m_link->session();
     connect(m_plant, &PlantConnection::linkStateChanged, this, &Connection::onLinkState);
     connect(m_plant, &PlantConnection::valuesArrived, this, &Connection::itemValues);
     connect(m_plant, &PlantConnection::statisticsChanged, this,
             [this](const SessionStatistics &statistics) {
-        m_statistics = statistics;
-        Q_EMIT changed();
-    });
+                m_statistics = statistics;
+                Q_EMIT changed();
+            });
     if (!m_session)
         return;
     // What the PLC says it is, and its RUN/STOP state: asked through its own session.

@@ -90,8 +90,8 @@ private:
 
     SavedConnection m_saved;
     PlantConnection *m_plant = nullptr;
-    PlcLink *m_link = nullptr; // m_plant's
-    Session *m_session = nullptr; // m_link's, if it has one
+    PlcLink *m_link = nullptr;             // m_plant's
+    Session *m_session = nullptr;          // m_link's, if it has one
     LinkState m_state = LinkState::Closed; // as last reported, to see it come up
     class RequestTracker *m_plcRequests = nullptr;
     QTimer m_statusTimer;

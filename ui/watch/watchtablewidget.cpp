@@ -532,8 +532,7 @@ void WatchTableWidget::pushPollList()
 {
     if (!m_connection)
         return;
-    m_subscription->setItems(isPaused() ? QList<WatchedItem>()
-                                        : m_model->watchItems(intervalMs()));
+    m_subscription->setItems(isPaused() ? QList<WatchedItem>() : m_model->watchItems(intervalMs()));
 }
 
 WatchTableSpec WatchTableWidget::spec() const

@@ -52,8 +52,7 @@ struct Recorder : PlantConsumer
     void plantLinkState(LinkState state, const Message &) override { states << state; }
 };
 
-bool good(const QHash<std::uint64_t, WatchItemValue> &values, std::uint64_t key,
-          std::uint64_t raw)
+bool good(const QHash<std::uint64_t, WatchItemValue> &values, std::uint64_t key, std::uint64_t raw)
 {
     const WatchItemValue v = values.value(key);
     return v.quality == ValueQuality::Good && v.hasValue && v.raw == raw;
@@ -121,8 +120,7 @@ void TestPlant::consumersGetTheirOwnValues()
     // Each its own items only, and the same value of the same register.
     QCOMPARE(tableValues.size(), 2);
     QCOMPARE(recorder.latest.size(), 2);
-    QCOMPARE(recorder.latest.value(setpoint.key).words,
-             tableValues.value(tableSetpoint.key).words);
+    QCOMPARE(recorder.latest.value(setpoint.key).words, tableValues.value(tableSetpoint.key).words);
 
     // A write through the plant: one result, done on the wire, seen by both consumers.
     std::optional<LinkWriteResult> result;
@@ -131,8 +129,7 @@ void TestPlant::consumersGetTheirOwnValues()
         return simLog.filter(QStringLiteral(" write ")).size();
     };
     const qsizetype before = writes();
-    plant.write(setpoint.spec, 1234, &context,
-                [&result](const LinkWriteResult &r) { result = r; });
+    plant.write(setpoint.spec, 1234, &context, [&result](const LinkWriteResult &r) { result = r; });
     QTRY_VERIFY_WITH_TIMEOUT(result.has_value() && result->final, timeoutMs);
     QVERIFY2(result->ok, qPrintable(englishText(result->error)));
     QCOMPARE(writes(), before + 1);
@@ -142,7 +139,9 @@ void TestPlant::consumersGetTheirOwnValues()
                              timeoutMs);
 
     // A consumer that leaves from inside its own call gets nothing more; the table goes on.
-    recorder.onBatch = [&plant, &recorder] { plant.unsubscribe(&recorder); };
+    recorder.onBatch = [&plant, &recorder] {
+        plant.unsubscribe(&recorder);
+    };
     QTRY_COMPARE_WITH_TIMEOUT(plant.consumerCount(), 1, timeoutMs);
     const int left = recorder.batches;
     QCOMPARE(plant.itemCount(), 2);
