@@ -50,6 +50,8 @@ SessionJob QueryExchange::end()
 
 std::optional<SessionJob> QueryExchange::abandon()
 {
+    // The wait for a broadcast's frame is the query's: a later query must not inherit it.
+    m_awaitingSent = false;
     return std::exchange(m_current, std::nullopt);
 }
 

@@ -48,7 +48,7 @@ public:
     void begin(SessionJob job);
     // Takes the finished query out, its timer and the deframers cleared.
     SessionJob end();
-    // Takes the query out as it is (the link is gone).
+    // Takes the query out as it is, timers left alone (the link is gone).
     std::optional<SessionJob> abandon();
     void stopTimers();
     // stopTimers(), and no longer waiting for a frame to leave (the link is closed).
