@@ -152,6 +152,9 @@ private:
     bool makeLink(const QString &transport, LinkSettings::ProtocolChoice protocol,
                   LinkSettings &settings);
     std::unique_ptr<Session> openSession(const LinkSettings &settings);
+    // A serial line to the PLC side of a pty pair (`plcSide`), in software flow control so that
+    // XOFF holds the session's output; false when socat is not available.
+    bool startXoffLine(LinkSettings &settings, QString *plcSide);
     SessionResult run(Session &session, Results &results, const Request &request,
                       Priority priority = Priority::User);
 
@@ -1347,23 +1350,31 @@ int countEntries(const Session &session, TrafficEntry::Direction direction, cons
 // A broadcast gets no answer: it is done when its frame has left, not when it is queued, and a
 // frame the line does not take is reported as not sent and never leaves later. The test is the
 // PLC side of a pty pair and stops the session's output with XOFF (software flow control).
-void TestSession::broadcastOnTheWireBeforeClose()
+bool TestSession::startXoffLine(LinkSettings &settings, QString *plcSide)
 {
     m_dir = std::make_unique<QTemporaryDir>();
-    const QString plcSide = m_dir->filePath(QStringLiteral("plc"));
+    *plcSide = m_dir->filePath(QStringLiteral("plc"));
     const QString appSide = m_dir->filePath(QStringLiteral("app"));
-    m_socat = startPtyPair(plcSide, appSide);
+    m_socat = startPtyPair(*plcSide, appSide);
     if (!m_socat)
+        return false;
+    settings = LinkSettings::serial(appSide, 9600, LinkSettings::ProtocolChoice::Facon);
+    settings.flowControl = LinkSettings::FlowControl::Software;
+    settings.interFrameMs = 0;
+    settings.reconnectMinMs = 50;
+    return true;
+}
+
+void TestSession::broadcastOnTheWireBeforeClose()
+{
+    LinkSettings settings;
+    QString plcSide;
+    if (!startXoffLine(settings, &plcSide))
         QSKIP("socat is not available for serial pty pairs");
     auto peer = openRaw(plcSide);
     QVERIFY(peer);
     QByteArray received;
     connect(peer.get(), &QSerialPort::readyRead, this, [&] { received += peer->readAll(); });
-    LinkSettings settings
-        = LinkSettings::serial(appSide, 9600, LinkSettings::ProtocolChoice::Facon);
-    settings.flowControl = LinkSettings::FlowControl::Software;
-    settings.interFrameMs = 0;
-    settings.reconnectMinMs = 50;
     auto session = openSession(settings);
     QCOMPARE(session->linkState(), LinkState::Connected);
     Results results(session.get());
@@ -1429,20 +1440,13 @@ void TestSession::broadcastOnTheWireBeforeClose()
 // the broadcast ("done" once its own frame left, or "not sent" at its timeout).
 void TestSession::broadcastHeldWhenLinkLost()
 {
-    m_dir = std::make_unique<QTemporaryDir>();
-    const QString plcSide = m_dir->filePath(QStringLiteral("plc"));
-    const QString appSide = m_dir->filePath(QStringLiteral("app"));
-    m_socat = startPtyPair(plcSide, appSide);
-    if (!m_socat)
+    LinkSettings settings;
+    QString plcSide;
+    if (!startXoffLine(settings, &plcSide))
         QSKIP("socat is not available for serial pty pairs");
+    settings.reconnectMaxMs = 200;
     auto peer = openRaw(plcSide);
     QVERIFY(peer);
-    LinkSettings settings
-        = LinkSettings::serial(appSide, 9600, LinkSettings::ProtocolChoice::Facon);
-    settings.flowControl = LinkSettings::FlowControl::Software;
-    settings.interFrameMs = 0;
-    settings.reconnectMinMs = 50;
-    settings.reconnectMaxMs = 200;
     auto session = openSession(settings);
     QCOMPARE(session->linkState(), LinkState::Connected);
     Results results(session.get());
@@ -1462,7 +1466,7 @@ void TestSession::broadcastHeldWhenLinkLost()
     m_socat.reset();
     QVERIFY(results.waitFor(held));
     QCOMPARE(results.map.value(held).errorKind(), ErrorKind::LinkError);
-    m_socat = startPtyPair(plcSide, appSide);
+    m_socat = startPtyPair(plcSide, m_dir->filePath(QStringLiteral("app")));
     QVERIFY(m_socat);
     peer = openRaw(plcSide);
     QVERIFY(peer);
