@@ -1,6 +1,5 @@
 #include "tcptransport.h"
 
-#include <QNetworkProxy>
 #include <QTcpSocket>
 
 #include <algorithm>
@@ -8,39 +7,32 @@
 namespace Fatek {
 
 TcpTransport::TcpTransport(const LinkSettings &settings, QObject *parent)
-    : Transport(parent)
-    , m_settings(settings)
+    : SocketTransport(settings, Ending::Graceful, parent)
 {
     m_connectTimer.setSingleShot(true);
     connect(&m_connectTimer, &QTimer::timeout, this, [this] {
         fail(msg<MsgId::LinkNoConnectionWithin>(describe().toStdString(),
-                                                m_settings.connectTimeoutMs));
+                                                linkSettings().connectTimeoutMs));
     });
-}
-
-TcpTransport::~TcpTransport()
-{
-    close();
 }
 
 void TcpTransport::open()
 {
     close();
-    m_socket = new QTcpSocket(this);
-    // PLCs sit on the plant network: never route them through a desktop proxy setting.
-    m_socket->setProxy(QNetworkProxy::NoProxy);
-    connect(m_socket, &QTcpSocket::connected, this, [this] {
+    auto *tcp = new QTcpSocket(this);
+    adopt(tcp);
+    connect(tcp, &QTcpSocket::connected, this, [this] {
         m_connectTimer.stop();
-        m_open = true;
+        setOpen();
         // Small queries: do not let Nagle hold them back.
-        m_socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+        socket()->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         Q_EMIT opened();
     });
-    connect(m_socket, &QTcpSocket::bytesWritten, this, [this] {
-        if (m_socket->bytesToWrite() == 0)
+    connect(tcp, &QTcpSocket::bytesWritten, this, [this] {
+        if (socket()->bytesToWrite() == 0)
             Q_EMIT allSent();
     });
-    connect(m_socket, &QTcpSocket::readyRead, this, [this] {
+    connect(tcp, &QTcpSocket::readyRead, this, [this] {
         bool closed = false;
         const QByteArray bytes = readKernel(&closed);
         if (!bytes.isEmpty())
@@ -48,21 +40,21 @@ void TcpTransport::open()
         if (closed)
             failRead();
     });
-    connect(m_socket, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError error) {
+    connect(tcp, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError error) {
         if (error == QAbstractSocket::RemoteHostClosedError)
             fail(msg<MsgId::LinkPeerClosed>(describe().toStdString()));
         else
-            fail(deviceError(m_socket->errorString()));
+            fail(deviceError(socket()->errorString()));
     });
-    connect(m_socket, &QTcpSocket::disconnected, this,
+    connect(tcp, &QTcpSocket::disconnected, this,
             [this] { fail(msg<MsgId::LinkPeerClosed>(describe().toStdString())); });
-    m_connectTimer.start(m_settings.connectTimeoutMs);
+    m_connectTimer.start(linkSettings().connectTimeoutMs);
     // Unbuffered: a query goes to the kernel in the write() call itself. Buffered, Qt appends it
     // to its own buffer and switches the write notifier on and off around the flush; with the
     // glib event dispatcher each switch is a wake-up of the thread's own loop (an eventfd write,
     // a read and one more poll), about three system calls more per query than the send.
-    m_socket->connectToHost(m_settings.host, m_settings.port,
-                            QIODevice::ReadWrite | QIODevice::Unbuffered);
+    tcp->connectToHost(linkSettings().host, linkSettings().port,
+                       QIODevice::ReadWrite | QIODevice::Unbuffered);
 }
 
 QByteArray TcpTransport::readKernel(bool *closed)
@@ -74,7 +66,7 @@ QByteArray TcpTransport::readKernel(bool *closed)
     for (;;) {
         const qsizetype have = bytes.size();
         bytes.resize(have + chunk);
-        const qint64 n = m_socket->read(bytes.data() + have, chunk);
+        const qint64 n = socket()->read(bytes.data() + have, chunk);
         bytes.resize(have + std::max<qint64>(n, 0));
         if (n < 0) {
             // Unbuffered, Qt reports the peer's close (or a read error) only here, as -1, and
@@ -90,17 +82,17 @@ QByteArray TcpTransport::readKernel(bool *closed)
 
 void TcpTransport::failRead()
 {
-    if (!m_socket)
+    if (!socket())
         return;
-    if (m_socket->error() == QAbstractSocket::RemoteHostClosedError)
+    if (socket()->error() == QAbstractSocket::RemoteHostClosedError)
         fail(msg<MsgId::LinkPeerClosed>(describe().toStdString()));
     else
-        fail(deviceError(m_socket->errorString()));
+        fail(deviceError(socket()->errorString()));
 }
 
 void TcpTransport::fail(const Message &reason)
 {
-    if (!m_socket)
+    if (!socket())
         return; // already reported
     close();
     Q_EMIT disconnected(reason);
@@ -109,41 +101,17 @@ void TcpTransport::fail(const Message &reason)
 void TcpTransport::close()
 {
     m_connectTimer.stop();
-    m_open = false;
-    if (QTcpSocket *socket = std::exchange(m_socket, nullptr)) {
-        socket->disconnect(this);
-        // Graceful (FIN after what the kernel holds) once Qt's buffer is empty; what is still in
-        // it here is what the session gave up on, and disconnectFromHost() would wait for it.
-        if (socket->state() == QAbstractSocket::ConnectedState && socket->bytesToWrite() == 0)
-            socket->disconnectFromHost();
-        else
-            socket->abort();
-        socket->deleteLater();
-    }
-}
-
-bool TcpTransport::isOpen() const
-{
-    return m_open;
-}
-
-bool TcpTransport::write(const QByteArray &bytes)
-{
-    if (!m_open)
-        return false;
-    // Unbuffered: handed to the kernel now; what it did not take waits in Qt's buffer for the
-    // write notifier, and allSent() comes when that has left.
-    return m_socket->write(bytes) == bytes.size();
+    SocketTransport::close();
 }
 
 qint64 TcpTransport::unsentBytes() const
 {
-    return m_socket ? m_socket->bytesToWrite() : 0;
+    return socket() ? socket()->bytesToWrite() : 0;
 }
 
 QByteArray TcpTransport::takePending()
 {
-    if (!m_socket || m_socket->state() != QAbstractSocket::ConnectedState)
+    if (!socket() || socket()->state() != QAbstractSocket::ConnectedState)
         return {};
     bool closed = false;
     QByteArray bytes = readKernel(&closed);
@@ -156,7 +124,7 @@ QByteArray TcpTransport::takePending()
 
 QString TcpTransport::describe() const
 {
-    return QStringLiteral("TCP %1:%2").arg(m_settings.host).arg(m_settings.port);
+    return QStringLiteral("TCP %1:%2").arg(linkSettings().host).arg(linkSettings().port);
 }
 
 } // namespace Fatek

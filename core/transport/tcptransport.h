@@ -1,26 +1,21 @@
 #pragma once
 
-#include "transport.h"
+#include "sockettransport.h"
 
 #include <QTimer>
-
-class QTcpSocket;
 
 namespace Fatek {
 
 // TCP client with a connect timeout. Reconnecting is the session's job (it knows the backoff).
-class TcpTransport final : public Transport
+class TcpTransport final : public SocketTransport
 {
     Q_OBJECT
 
 public:
     explicit TcpTransport(const LinkSettings &settings, QObject *parent = nullptr);
-    ~TcpTransport() override;
 
     void open() override;
     void close() override;
-    bool isOpen() const override;
-    bool write(const QByteArray &bytes) override;
     qint64 unsentBytes() const override;
     QByteArray takePending() override;
     QString describe() const override;
@@ -31,10 +26,7 @@ private:
     QByteArray readKernel(bool *closed);
     void failRead(); // after readKernel() said `closed`
 
-    LinkSettings m_settings;
-    QTcpSocket *m_socket = nullptr;
     QTimer m_connectTimer{this};
-    bool m_open = false;
 };
 
 } // namespace Fatek

@@ -137,6 +137,7 @@ private Q_SLOTS:
     void serialMultiDrop_data();
     void serialMultiDrop();
     void broadcastOnTheWireBeforeClose();
+    void broadcastHeldWhenLinkLost();
     void closeSendsQueuedWrites();
     void destroySendsQueuedWrites_data();
     void destroySendsQueuedWrites();
@@ -151,6 +152,9 @@ private:
     bool makeLink(const QString &transport, LinkSettings::ProtocolChoice protocol,
                   LinkSettings &settings);
     std::unique_ptr<Session> openSession(const LinkSettings &settings);
+    // A serial line to the PLC side of a pty pair (`plcSide`), in software flow control so that
+    // XOFF holds the session's output; false when socat is not available.
+    bool startXoffLine(LinkSettings &settings, QString *plcSide);
     SessionResult run(Session &session, Results &results, const Request &request,
                       Priority priority = Priority::User);
 
@@ -1346,23 +1350,31 @@ int countEntries(const Session &session, TrafficEntry::Direction direction, cons
 // A broadcast gets no answer: it is done when its frame has left, not when it is queued, and a
 // frame the line does not take is reported as not sent and never leaves later. The test is the
 // PLC side of a pty pair and stops the session's output with XOFF (software flow control).
-void TestSession::broadcastOnTheWireBeforeClose()
+bool TestSession::startXoffLine(LinkSettings &settings, QString *plcSide)
 {
     m_dir = std::make_unique<QTemporaryDir>();
-    const QString plcSide = m_dir->filePath(QStringLiteral("plc"));
+    *plcSide = m_dir->filePath(QStringLiteral("plc"));
     const QString appSide = m_dir->filePath(QStringLiteral("app"));
-    m_socat = startPtyPair(plcSide, appSide);
+    m_socat = startPtyPair(*plcSide, appSide);
     if (!m_socat)
+        return false;
+    settings = LinkSettings::serial(appSide, 9600, LinkSettings::ProtocolChoice::Facon);
+    settings.flowControl = LinkSettings::FlowControl::Software;
+    settings.interFrameMs = 0;
+    settings.reconnectMinMs = 50;
+    return true;
+}
+
+void TestSession::broadcastOnTheWireBeforeClose()
+{
+    LinkSettings settings;
+    QString plcSide;
+    if (!startXoffLine(settings, &plcSide))
         QSKIP("socat is not available for serial pty pairs");
     auto peer = openRaw(plcSide);
     QVERIFY(peer);
     QByteArray received;
     connect(peer.get(), &QSerialPort::readyRead, this, [&] { received += peer->readAll(); });
-    LinkSettings settings
-        = LinkSettings::serial(appSide, 9600, LinkSettings::ProtocolChoice::Facon);
-    settings.flowControl = LinkSettings::FlowControl::Software;
-    settings.interFrameMs = 0;
-    settings.reconnectMinMs = 50;
     auto session = openSession(settings);
     QCOMPARE(session->linkState(), LinkState::Connected);
     Results results(session.get());
@@ -1421,6 +1433,55 @@ void TestSession::broadcastOnTheWireBeforeClose()
     const QByteArray thirdBytes(reinterpret_cast<const char *>(thirdFrame.data()),
                                 static_cast<qsizetype>(thirdFrame.size()));
     QTRY_COMPARE_WITH_TIMEOUT(received, firstBytes + thirdBytes, 5000);
+}
+
+// A broadcast whose frame the line holds when the link is lost: the wait for that frame goes with
+// the link. After the reconnect the next request waits for its own answer; it is not taken for
+// the broadcast ("done" once its own frame left, or "not sent" at its timeout).
+void TestSession::broadcastHeldWhenLinkLost()
+{
+    LinkSettings settings;
+    QString plcSide;
+    if (!startXoffLine(settings, &plcSide))
+        QSKIP("socat is not available for serial pty pairs");
+    settings.reconnectMaxMs = 200;
+    auto peer = openRaw(plcSide);
+    QVERIFY(peer);
+    auto session = openSession(settings);
+    QCOMPARE(session->linkState(), LinkState::Connected);
+    Results results(session.get());
+    // A byte the session logs, then XOFF: once the byte is logged the XOFF took effect.
+    peer->write("a\x13");
+    QTRY_COMPARE_WITH_TIMEOUT(
+        countEntries(*session, TrafficEntry::Direction::In, QStringLiteral("no query pending")), 1,
+        5000);
+    RequestOptions patient;
+    patient.timeoutMs = 20000;
+    const quint64 held
+        = session->submit(Request::writeRegisters(0, addr("R6"), {1}), Priority::User, patient);
+    QTRY_COMPARE_WITH_TIMEOUT(countEntries(*session, TrafficEntry::Direction::Out, {}), 1, 5000);
+
+    // The line goes (the pty pair ends) while the frame is held, and comes back.
+    peer.reset();
+    m_socat.reset();
+    QVERIFY(results.waitFor(held));
+    QCOMPARE(results.map.value(held).errorKind(), ErrorKind::LinkError);
+    m_socat = startPtyPair(plcSide, m_dir->filePath(QStringLiteral("app")));
+    QVERIFY(m_socat);
+    peer = openRaw(plcSide);
+    QVERIFY(peer);
+    QTRY_COMPARE_WITH_TIMEOUT(session->linkState(), LinkState::Connected, 10000);
+
+    // A read nobody answers: its own timeout.
+    RequestOptions quick;
+    quick.timeoutMs = 300;
+    quick.retries = 0;
+    const quint64 read
+        = session->submit(Request::readRegisters(1, addr("R0"), 1), Priority::User, quick);
+    QVERIFY(results.waitFor(read));
+    const SessionResult r = results.map.value(read);
+    QVERIFY2(!r.ok(), "a read taken for the broadcast held before the link was lost");
+    QCOMPARE(r.errorKind(), ErrorKind::Timeout);
 }
 
 // Writes accepted before close() reach the PLC; reads queued with them are cancelled.
