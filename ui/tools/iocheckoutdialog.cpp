@@ -179,9 +179,7 @@ IoCheckoutDialog::~IoCheckoutDialog() = default;
 
 void IoCheckoutDialog::setTarget(const PlcTarget &target)
 {
-    if (m_runner->isRunning()
-        && (target.session() != m_frame->target().session()
-            || target.station() != m_frame->target().station())) {
+    if (m_runner->isRunning() && !target.isSamePlc(m_frame->target())) {
         stop();
         showMessage(tr("Stopped: the target changed."), true);
     }

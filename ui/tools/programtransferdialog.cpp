@@ -75,7 +75,7 @@ ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
 
 void ProgramTransferDialog::setTarget(const PlcTarget &target)
 {
-    if (target.session() != m_frame->target().session() || target.station() != station()) {
+    if (!target.isSamePlc(m_frame->target())) {
         if (m_transfer->isRunning())
             m_transfer->cancel();
         m_step = Step::None;
