@@ -1,6 +1,9 @@
-// Shared by the tst_tools_* tests: an in-process simulator on a free TCP port and a Session to it.
+// Shared by the tst_tools_* tests: an in-process simulator on a free TCP port and a direct link
+// (a SessionLink) to it.
 #pragma once
 
+#include "core/link/sessionlink.h"
+#include "core/plant/plctarget.h"
 #include "core/session/session.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
@@ -16,11 +19,11 @@ struct Rig
 {
     std::unique_ptr<Fatek::SimulatedPlc> plc;
     std::unique_ptr<Fatek::SimServer> server;
-    std::unique_ptr<Fatek::Session> session;
-    QStringList questions; // every confirmation question asked
-    bool answer = true;    // what the automatic confirmer answers
+    std::unique_ptr<Fatek::SessionLink> link; // reset(): the connection is closed
+    QStringList questions;                    // every confirmation question asked
+    bool answer = true;                       // what the automatic confirmer answers
 
-    // Starts the simulator (RUN) and opens a session in `protocol`; false if it did not connect.
+    // Starts the simulator (RUN) and opens a link in `protocol`; false if it did not connect.
     bool start(Fatek::LinkSettings::ProtocolChoice protocol
                = Fatek::LinkSettings::ProtocolChoice::Facon,
                int timeoutMs = 1000, int retries = 1,
@@ -39,12 +42,20 @@ struct Rig
             = Fatek::LinkSettings::tcp(QStringLiteral("127.0.0.1"), server->tcpPort(), protocol);
         settings.timeoutMs = timeoutMs;
         settings.retries = retries;
-        session = std::make_unique<Fatek::Session>(settings);
-        session->open();
+        link = std::make_unique<Fatek::SessionLink>(settings);
+        link->open();
         QDeadlineTimer deadline(10000);
-        while (session->linkState() != Fatek::LinkState::Connected && !deadline.hasExpired())
+        while (link->linkState() != Fatek::LinkState::Connected && !deadline.hasExpired())
             QTest::qWait(5);
-        return session->linkState() == Fatek::LinkState::Connected;
+        return link->linkState() == Fatek::LinkState::Connected;
+    }
+
+    // The link's session (what core's engines run on); nullptr once the link is closed.
+    Fatek::Session *session() const { return link ? link->session() : nullptr; }
+    // What a tool acts on: `station` behind the link.
+    Fatek::PlcTarget target(quint8 station = 1) const
+    {
+        return Fatek::PlcTarget(link.get(), station, connectionName());
     }
 
     std::function<bool(const QString &)> confirmer()

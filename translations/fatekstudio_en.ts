@@ -2777,14 +2777,6 @@
             <translation>Stopped: the target changed.</translation>
         </message>
         <message>
-            <source>Station %1 on “%2”</source>
-            <translation>Station %1 on “%2”</translation>
-        </message>
-        <message>
-            <source>No connection: choose a connection and a station.</source>
-            <translation>No connection: choose a connection and a station.</translation>
-        </message>
-        <message>
             <source>Running %1 loopback tests of %2 bytes …</source>
             <translation>Running %1 loopback tests of %2 bytes …</translation>
         </message>
@@ -3543,14 +3535,6 @@ Meaning %4</translation>
         <message>
             <source>Stop after the page in progress</source>
             <translation>Stop after the page in progress</translation>
-        </message>
-        <message>
-            <source>Station %1 on “%2”</source>
-            <translation>Station %1 on “%2”</translation>
-        </message>
-        <message>
-            <source>No connection: choose a connection and a station.</source>
-            <translation>No connection: choose a connection and a station.</translation>
         </message>
         <message>
             <source>Program backups (*.fprog *.json);;All files (*)</source>
@@ -4776,14 +4760,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Stopped: the target changed.</translation>
         </message>
         <message>
-            <source>Station %1 on “%2”</source>
-            <translation>Station %1 on “%2”</translation>
-        </message>
-        <message>
-            <source>No connection: choose a connection and a station.</source>
-            <translation>No connection: choose a connection and a station.</translation>
-        </message>
-        <message>
             <source>Snapshot: %1 values, %2, station %3, %4</source>
             <translation>Snapshot: %1 values, %2, station %3, %4</translation>
         </message>
@@ -5004,14 +4980,6 @@ Write its values all the same? Elements the PLC does not have are refused before
             <translation>Stopped: the target changed.</translation>
         </message>
         <message>
-            <source>Station %1 on “%2”</source>
-            <translation>Station %1 on “%2”</translation>
-        </message>
-        <message>
-            <source>No connection: choose a connection and a station.</source>
-            <translation>No connection: choose a connection and a station.</translation>
-        </message>
-        <message>
             <source>(operator mode: outputs are not forced)</source>
             <translation>(operator mode: outputs are not forced)</translation>
         </message>
@@ -5058,6 +5026,17 @@ Write its values all the same? Elements the PLC does not have are refused before
         <message>
             <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
             <translation>Force %1 on at %2? It stays on until you answer, then it is released.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ToolDialogFrame</name>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>Station %1 on “%2”</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>No connection: choose a connection and a station.</translation>
         </message>
     </context>
     <context>

@@ -2775,14 +2775,6 @@
             <translation>已停止：目標已變更。</translation>
         </message>
         <message>
-            <source>Station %1 on “%2”</source>
-            <translation>「%2」上的站號 %1</translation>
-        </message>
-        <message>
-            <source>No connection: choose a connection and a station.</source>
-            <translation>沒有連線：請選擇連線與站號。</translation>
-        </message>
-        <message>
             <source>Running %1 loopback tests of %2 bytes …</source>
             <translation>正在執行 %1 次 %2 位元組的迴路測試 …</translation>
         </message>
@@ -3536,14 +3528,6 @@ Meaning %4</source>
         <message>
             <source>Stop after the page in progress</source>
             <translation>在目前這一頁完成後停止</translation>
-        </message>
-        <message>
-            <source>Station %1 on “%2”</source>
-            <translation>「%2」上的站號 %1</translation>
-        </message>
-        <message>
-            <source>No connection: choose a connection and a station.</source>
-            <translation>沒有連線：請選擇連線與站號。</translation>
         </message>
         <message>
             <source>Program backups (*.fprog *.json);;All files (*)</source>
@@ -4757,14 +4741,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>已停止：目標已變更。</translation>
         </message>
         <message>
-            <source>Station %1 on “%2”</source>
-            <translation>「%2」上的站號 %1</translation>
-        </message>
-        <message>
-            <source>No connection: choose a connection and a station.</source>
-            <translation>沒有連線：請選擇連線與站號。</translation>
-        </message>
-        <message>
             <source>Snapshot: %1 values, %2, station %3, %4</source>
             <translation>快照：%1 個值，%2，站號 %3，%4</translation>
         </message>
@@ -4985,14 +4961,6 @@ PLC：%3
             <translation>已停止：目標已變更。</translation>
         </message>
         <message>
-            <source>Station %1 on “%2”</source>
-            <translation>「%2」上的站號 %1</translation>
-        </message>
-        <message>
-            <source>No connection: choose a connection and a station.</source>
-            <translation>沒有連線：請選擇連線與站號。</translation>
-        </message>
-        <message>
             <source>(operator mode: outputs are not forced)</source>
             <translation>（操作員模式：不強制輸出）</translation>
         </message>
@@ -5039,6 +5007,17 @@ PLC：%3
         <message>
             <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
             <translation>在%2將 %1 強制為 ON？回答前保持 ON，回答後即解除。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ToolDialogFrame</name>
+        <message>
+            <source>Station %1 on “%2”</source>
+            <translation>「%2」上的站號 %1</translation>
+        </message>
+        <message>
+            <source>No connection: choose a connection and a station.</source>
+            <translation>沒有連線：請選擇連線與站號。</translation>
         </message>
     </context>
     <context>

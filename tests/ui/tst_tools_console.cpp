@@ -53,7 +53,7 @@ void TestToolsConsole::open(LinkSettings::ProtocolChoice protocol)
     QVERIFY(m_rig.start(protocol, 500, 0));
     m_console = std::make_unique<RawConsole>();
     m_console->setConfirmer(m_rig.confirmer());
-    m_console->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_console->setTarget(m_rig.target(1));
     m_console->resize(1000, 500);
     m_console->show();
 }
@@ -61,7 +61,7 @@ void TestToolsConsole::open(LinkSettings::ProtocolChoice protocol)
 void TestToolsConsole::cleanup()
 {
     m_console.reset();
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_rig.server.reset();
     m_rig.plc.reset();
 }
@@ -268,7 +268,7 @@ void TestToolsConsole::writeFrameAsksFirst()
 
     // Operator mode: the session refuses raw frames before the wire; shown as an error that
     // says nothing was sent.
-    m_rig.session->setReadOnly(true);
+    m_rig.link->setReadOnly(true);
     bar->setText(QStringLiteral("01411"));
     bar->send();
     QTRY_VERIFY_WITH_TIMEOUT(bar->resultText().startsWith(QStringLiteral("Not sent")), 10000);
@@ -279,9 +279,9 @@ void TestToolsConsole::filtersPauseClearSave()
 {
     open();
     Request read = Request::readRegisters(1, ToolsTest::addr("R0"), 2);
-    QSignalSpy finished(m_rig.session.get(), &Session::finished);
-    m_rig.session->submit(read);
-    m_rig.session->submit(Request::briefStatus(1));
+    QSignalSpy finished(m_rig.session(), &Session::finished);
+    m_rig.session()->submit(read);
+    m_rig.session()->submit(Request::briefStatus(1));
     QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 10000);
     QTRY_VERIFY_WITH_TIMEOUT(m_console->model()->rowCount() >= 4, 10000);
 
@@ -300,7 +300,7 @@ void TestToolsConsole::filtersPauseClearSave()
     // Pause: frames wait in the log and show up on resume.
     m_console->setPaused(true);
     const int before = m_console->model()->rowCount();
-    m_rig.session->submit(Request::briefStatus(1));
+    m_rig.session()->submit(Request::briefStatus(1));
     QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, 10000);
     QTest::qWait(200);
     QCOMPARE(m_console->model()->rowCount(), before);
@@ -340,20 +340,20 @@ void TestToolsConsole::filtersPauseClearSave()
 void TestToolsConsole::noConnection()
 {
     open();
-    m_console->setTarget(nullptr, 1, {});
+    m_console->setTarget(PlcTarget());
     QCOMPARE(m_console->model()->rowCount(), 0);
     m_console->sendBar()->setText(QStringLiteral("0140"));
     m_console->sendBar()->send();
     QVERIFY(m_console->sendBar()->resultText().contains(QStringLiteral("No connection")));
 
-    // A session deleted under the console leaves it in "no connection" too.
-    m_console->setTarget(m_rig.session.get(), 1, Rig::connectionName());
-    m_rig.session->submit(Request::briefStatus(1));
+    // A link closed under the console leaves it in "no connection" too.
+    m_console->setTarget(m_rig.target(1));
+    m_rig.session()->submit(Request::briefStatus(1));
     QTRY_VERIFY_WITH_TIMEOUT(m_console->model()->rowCount() >= 2, 10000);
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_console->sendBar()->send();
     QVERIFY(m_console->sendBar()->resultText().contains(QStringLiteral("No connection")));
-    m_console->setTarget(nullptr, 2, {});
+    m_console->setTarget(PlcTarget(nullptr, 2, {}));
     QCOMPARE(m_console->model()->rowCount(), 0);
 }
 
@@ -365,17 +365,17 @@ void TestToolsConsole::hiddenConsoleKeepsShortLog()
     m_rig = Rig();
     QVERIFY(m_rig.start(LinkSettings::ProtocolChoice::Facon, 500, 0));
     m_console = std::make_unique<RawConsole>();
-    m_console->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_console->setTarget(m_rig.target(1));
     m_console->resize(1000, 500);
-    TrafficLog *log = m_rig.session->trafficLog();
+    TrafficLog *log = m_rig.session()->trafficLog();
     QCOMPARE(log->capacity(), TrafficLog::idleCapacity);
 
     int finished = 0;
-    connect(m_rig.session.get(), &Session::finished, this, [&finished] { ++finished; });
+    connect(m_rig.session(), &Session::finished, this, [&finished] { ++finished; });
     const auto transactions = [this, &finished](int count) {
         const int until = finished + count;
         for (int i = 0; i < count; ++i)
-            m_rig.session->submit(Request::briefStatus(1));
+            m_rig.session()->submit(Request::briefStatus(1));
         QTRY_COMPARE_WITH_TIMEOUT(finished, until, 20000);
     };
     // A frame out and one in each: more than the short log keeps.

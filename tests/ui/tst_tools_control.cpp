@@ -42,14 +42,14 @@ void TestToolsControl::init()
     m_panel = std::make_unique<PlcControlPanel>();
     m_panel->setConfirmer(m_rig.confirmer());
     m_panel->setRefreshInterval(100);
-    m_panel->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_panel->setTarget(m_rig.target(1));
     m_panel->show();
 }
 
 void TestToolsControl::cleanup()
 {
     m_panel.reset();
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_rig.server.reset();
     m_rig.plc.reset();
 }
@@ -168,7 +168,7 @@ void TestToolsControl::detailStatusDecoded()
 
 void TestToolsControl::noConnection()
 {
-    m_panel->setTarget(nullptr, 1, {});
+    m_panel->setTarget(PlcTarget());
     auto *target = m_panel->findChild<QLabel *>(QStringLiteral("targetLabel"));
     QVERIFY(target->text().contains(QStringLiteral("No connection")));
     QVERIFY(!m_panel->findChild<QPushButton *>(QStringLiteral("runButton"))->isEnabled());
@@ -181,7 +181,7 @@ void TestToolsControl::noConnection()
 void TestToolsControl::sessionDeleted()
 {
     QTRY_VERIFY_WITH_TIMEOUT(m_panel->status().has_value(), 10000);
-    m_rig.session.reset();
+    m_rig.link.reset();
     auto *target = m_panel->findChild<QLabel *>(QStringLiteral("targetLabel"));
     QVERIFY(target->text().contains(QStringLiteral("No connection")));
     QVERIFY(!m_panel->findChild<QPushButton *>(QStringLiteral("runButton"))->isEnabled());
@@ -193,14 +193,14 @@ void TestToolsControl::operatorModeDisablesRunStop()
 {
     auto *run = m_panel->findChild<QPushButton *>(QStringLiteral("runButton"));
     QTRY_VERIFY_WITH_TIMEOUT(m_panel->status().has_value() && run->isEnabled(), 10000);
-    m_rig.session->setReadOnly(true);
+    m_rig.link->setReadOnly(true);
     QTRY_VERIFY_WITH_TIMEOUT(!run->isEnabled(), 10000);
     QVERIFY(run->toolTip().contains(QStringLiteral("Read-only")));
     // Called anyway (a shortcut, a script): the session refuses and the panel says so.
     m_panel->requestRun();
     QTRY_VERIFY_WITH_TIMEOUT(m_panel->outcomeText().contains(QStringLiteral("Read-only mode")),
                              10000);
-    m_rig.session->setReadOnly(false);
+    m_rig.link->setReadOnly(false);
     QTRY_VERIFY_WITH_TIMEOUT(run->isEnabled(), 10000);
 }
 

@@ -53,14 +53,14 @@ void TestToolsForcing::init()
     QVERIFY(m_rig.start());
     m_panel = std::make_unique<ForcingPanel>();
     m_panel->setConfirmer(m_rig.confirmer());
-    m_panel->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_panel->setTarget(m_rig.target(1));
     m_panel->show();
 }
 
 void TestToolsForcing::cleanup()
 {
     m_panel.reset();
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_rig.server.reset();
     m_rig.plc.reset();
 }
@@ -315,7 +315,7 @@ void TestToolsForcing::scanCoversEveryPointOfThePlc()
 
 void TestToolsForcing::noConnection()
 {
-    m_panel->setTarget(nullptr, 1, {});
+    m_panel->setTarget(PlcTarget());
     m_panel->applyToSelection(DiscreteOp::Disable);
     m_panel->forcedPointsView()->scan();
     m_panel->forcedPointsView()->enableAll();
@@ -330,7 +330,7 @@ void TestToolsForcing::operatorModeDisablesForcing()
     select(0, 1);
     auto *disable = m_panel->findChild<QPushButton *>(QStringLiteral("disableButton"));
     QVERIFY(disable->isEnabled());
-    m_rig.session->setReadOnly(true);
+    m_rig.link->setReadOnly(true);
     QTRY_VERIFY_WITH_TIMEOUT(!disable->isEnabled(), 10000);
     m_panel->applyToSelection(
         DiscreteOp::Disable); // called anyway: refused by the session, in words

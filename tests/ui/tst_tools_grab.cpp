@@ -45,7 +45,7 @@ void TestToolsGrab::initTestCase()
 
 void TestToolsGrab::cleanupTestCase()
 {
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_rig.server.reset();
     m_rig.plc.reset();
 }
@@ -62,7 +62,7 @@ void TestToolsGrab::save(QWidget *widget, const QString &name)
 void TestToolsGrab::controlPanel()
 {
     PlcControlPanel panel;
-    panel.setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    panel.setTarget(m_rig.target(1));
     panel.resize(560, 620);
     panel.show();
     QTRY_VERIFY_WITH_TIMEOUT(panel.status().has_value() && panel.detailStatus().has_value(), 10000);
@@ -82,7 +82,7 @@ void TestToolsGrab::forcingPanel()
 {
     ForcingPanel panel;
     panel.setConfirmer([](const QString &) { return true; });
-    panel.setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    panel.setTarget(m_rig.target(1));
     panel.resize(620, 560);
     panel.show();
     panel.showRange(ElementType::Y, 0, 16);
@@ -98,7 +98,7 @@ void TestToolsGrab::forcingPanel()
 void TestToolsGrab::loopbackDialog()
 {
     LoopbackDialog dialog;
-    dialog.setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    dialog.setTarget(m_rig.target(1));
     dialog.setRepeatCount(20);
     dialog.resize(640, 480);
     dialog.show();
@@ -110,7 +110,7 @@ void TestToolsGrab::loopbackDialog()
 void TestToolsGrab::rawConsole()
 {
     RawConsole console;
-    console.setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    console.setTarget(m_rig.target(1));
     console.resize(1100, 520);
     console.show();
     FaultConfig faults;

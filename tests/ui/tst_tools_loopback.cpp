@@ -39,14 +39,14 @@ void TestToolsLoopback::open(LinkSettings::ProtocolChoice protocol, int timeoutM
     m_rig = Rig();
     QVERIFY(m_rig.start(protocol, timeoutMs, retries));
     m_dialog = std::make_unique<LoopbackDialog>();
-    m_dialog->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_dialog->setTarget(m_rig.target(1));
     m_dialog->show();
 }
 
 void TestToolsLoopback::cleanup()
 {
     m_dialog.reset();
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_rig.server.reset();
     m_rig.plc.reset();
 }
@@ -190,7 +190,7 @@ void TestToolsLoopback::stopAndNoConnection()
     QCOMPARE(m_dialog->stats().runs(), runs);
     QVERIFY(m_dialog->messageText().startsWith(QStringLiteral("Stopped")));
 
-    m_dialog->setTarget(nullptr, 1, {});
+    m_dialog->setTarget(PlcTarget());
     QVERIFY(!m_dialog->findChild<QPushButton *>(QStringLiteral("startButton"))->isEnabled());
     m_dialog->start();
     QVERIFY(!m_dialog->isRunning());

@@ -75,9 +75,9 @@ void TestToolsProgram::open(bool running)
     m_rig.plc->setRunning(running);
     m_file = m_dir.filePath(QStringLiteral("gui.fprog"));
     m_dialog = std::make_unique<ProgramTransferDialog>();
-    m_dialog->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_dialog->setTarget(m_rig.target(1));
     m_dialog->setConfirmer(m_rig.confirmer());
-    m_dialog->setFileChooser([this](bool) { return m_file; });
+    m_dialog->setFileChooser([this](const ToolDialogFrame::FileQuestion &) { return m_file; });
     m_dialog->show();
 }
 
@@ -111,7 +111,7 @@ void TestToolsProgram::openedFromTheToolsMenu()
 void TestToolsProgram::cleanup()
 {
     m_dialog.reset();
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_rig.server.reset();
     m_rig.plc.reset();
 }
@@ -181,8 +181,8 @@ void TestToolsProgram::operatorModeRefusesRestore()
     std::vector<std::uint32_t> page(64, 0x4321);
     QVERIFY(m_rig.plc->setProgramPage(9, page));
     const auto before = plcPages(*m_rig.plc);
-    m_rig.session->setReadOnly(true);
-    m_dialog->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_rig.link->setReadOnly(true);
+    m_dialog->setTarget(m_rig.target(1));
     QVERIFY(!button("restoreButton")->isEnabled());
     auto *mode = m_dialog->findChild<QLabel *>(QStringLiteral("modeLabel"));
     QVERIFY(mode->isVisible());
@@ -229,9 +229,9 @@ void TestToolsProgram::otherModelRefusedBeforeAnyQuestion()
     m_file = m_dir.filePath(QStringLiteral("fbs.fprog"));
     QVERIFY(!ProgramImage::fromWords(ModelProfile::fbs().powerOnProgram())->save(m_file));
     m_dialog = std::make_unique<ProgramTransferDialog>();
-    m_dialog->setTarget(m_rig.session.get(), 1, Rig::connectionName());
+    m_dialog->setTarget(m_rig.target(1));
     m_dialog->setConfirmer(m_rig.confirmer());
-    m_dialog->setFileChooser([this](bool) { return m_file; });
+    m_dialog->setFileChooser([this](const ToolDialogFrame::FileQuestion &) { return m_file; });
     m_dialog->show();
     const auto before = plcPages(*m_rig.plc);
     QTest::mouseClick(button("restoreButton"), Qt::LeftButton);

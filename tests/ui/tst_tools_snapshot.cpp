@@ -1,11 +1,13 @@
 // Tools -> Memory Snapshot (SnapshotDialog) against the in-process simulator: take, compare with
-// the PLC and with a file, filter, export, restore with confirmation, refused in operator mode.
+// the PLC and with a file, filter, export, restore with confirmation, refused in operator mode;
+// the file buttons and Close of its frame.
 #include "core/commission/snapshotfile.h"
 #include "tst_tools_boxes.h"
 #include "tst_tools_fixture.h"
 #include "ui/tools/snapshotdialog.h"
 #include "ui/tools/snapshotdiffmodel.h"
 
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QLineEdit>
@@ -30,6 +32,7 @@ private Q_SLOTS:
     void compareFilesAndExport();
     void refusedInOperatorMode();
     void otherModelAskedOutOfRangeRefused();
+    void filePickersAndClose();
 
 private:
     bool runAndWait(const std::function<void()> &action);
@@ -43,7 +46,7 @@ void TestToolsSnapshot::init()
 {
     QVERIFY(m_rig.start());
     m_dialog = std::make_unique<SnapshotDialog>();
-    m_dialog->setTarget(m_rig.session.get(), 1, ToolsTest::Rig::connectionName());
+    m_dialog->setTarget(m_rig.target(1));
     m_dialog->setConfirmer(m_rig.confirmer());
     m_rig.questions.clear();
     m_rig.answer = true;
@@ -52,7 +55,7 @@ void TestToolsSnapshot::init()
 void TestToolsSnapshot::cleanup()
 {
     m_dialog.reset();
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_rig.server.reset();
     m_rig.plc.reset();
 }
@@ -160,7 +163,7 @@ void TestToolsSnapshot::refusedInOperatorMode()
     m_dialog->setRanges(QStringLiteral("R0..R3"));
     QVERIFY(runAndWait([this] { m_dialog->takeSnapshot(); }));
     m_rig.plc->setValue(addr("R0"), 9);
-    m_rig.session->setReadOnly(true);
+    m_rig.link->setReadOnly(true);
     const quint64 frames = m_rig.server->counters().frames;
     m_dialog->restoreValues();
     QVERIFY(m_rig.questions.isEmpty());
@@ -226,6 +229,47 @@ void TestToolsSnapshot::otherModelAskedOutOfRangeRefused()
     QCOMPARE(m_rig.plc->value(addr("R2")), std::optional<std::uint32_t>(0));
     QVERIFY2(m_dialog->messageText().contains(QLatin1String("not on the PLC: R5000")),
              qPrintable(m_dialog->messageText()));
+}
+
+// The file buttons ask through the dialog's frame (save or open, its title and filter); a pick
+// cancelled does nothing. Closing the dialog while it reads cancels the read.
+void TestToolsSnapshot::filePickersAndClose()
+{
+    m_dialog->setRanges(QStringLiteral("D0..D3"));
+    QVERIFY(runAndWait([this] { m_dialog->takeSnapshot(); }));
+    QList<ToolDialogFrame::FileQuestion> asked;
+    QString answer; // empty: the person cancelled
+    m_dialog->setFileChooser([&asked, &answer](const ToolDialogFrame::FileQuestion &question) {
+        asked << question;
+        return answer;
+    });
+    auto *save = m_dialog->findChild<QPushButton *>(QStringLiteral("saveButton"));
+    auto *open = m_dialog->findChild<QPushButton *>(QStringLiteral("openButton"));
+    QVERIFY(save && open);
+    const QStringList files = QDir(m_dir.path()).entryList(QDir::Files);
+    save->click();
+    QCOMPARE(asked.size(), 1);
+    QVERIFY(asked.last().save);
+    QCOMPARE(asked.last().title, SnapshotDialog::tr("Save Snapshot"));
+    QCOMPARE(asked.last().filter, SnapshotDialog::tr("Snapshots (*.json *.csv)"));
+    QCOMPARE(QDir(m_dir.path()).entryList(QDir::Files), files); // nothing written
+
+    answer = m_dir.filePath(QStringLiteral("picked.json"));
+    save->click();
+    QVERIFY(QFileInfo::exists(answer));
+    QCOMPARE(m_dialog->messageText(), SnapshotDialog::tr("Saved %1.").arg(answer));
+    open->click();
+    QCOMPARE(asked.size(), 3);
+    QVERIFY(!asked.last().save);
+    QCOMPARE(asked.last().title, SnapshotDialog::tr("Open Snapshot"));
+    QCOMPARE(m_dialog->messageText(), SnapshotDialog::tr("Opened %1.").arg(answer));
+
+    QSignalSpy finished(m_dialog.get(), &SnapshotDialog::actionFinished);
+    m_dialog->takeSnapshot();
+    QVERIFY(m_dialog->isBusy());
+    m_dialog->reject(); // Close, Esc or the window's button
+    QVERIFY(!m_dialog->isBusy());
+    QCOMPARE(finished.size(), 1);
 }
 
 QTEST_MAIN(TestToolsSnapshot)

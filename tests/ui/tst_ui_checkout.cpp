@@ -148,7 +148,7 @@ private:
     bool startPlan(IoCheckoutDialog *dialog, const QString &ranges, const QString &fileName)
     {
         const QString file = m_files.filePath(fileName);
-        dialog->setFileChooser([file](const QString &, const QString &) { return file; });
+        dialog->setFileChooser([file](const ToolDialogFrame::FileQuestion &) { return file; });
         auto *edit = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
         auto *start = dialog->findChild<QPushButton *>(QStringLiteral("startButton"));
         if (!edit || !start)
@@ -194,7 +194,7 @@ private Q_SLOTS:
         // The file dialogs answered by the test; the questions come as real message boxes.
         const QString file = m_files.filePath(QStringLiteral("line3.checkout.json"));
         QString chosen = file;
-        dialog->setFileChooser([&chosen](const QString &, const QString &) { return chosen; });
+        dialog->setFileChooser([&chosen](const ToolDialogFrame::FileQuestion &) { return chosen; });
         // On the laptop's screen, whole.
         QVERIFY2(
             QGuiApplication::primaryScreen()->availableGeometry().contains(dialog->frameGeometry()),

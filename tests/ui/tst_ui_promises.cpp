@@ -93,7 +93,7 @@ private:
         if (!dialog)
             return nullptr;
         const QString file = m_dir.filePath(QStringLiteral("line.fprog"));
-        dialog->setFileChooser([file](bool) { return file; });
+        dialog->setFileChooser([file](const ToolDialogFrame::FileQuestion &) { return file; });
         dialog->setConfirmer([](const QString &) { return true; });
         return dialog;
     }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/plant/plctarget.h"
+
 #include <QString>
 
 #include <functional>
@@ -20,6 +22,10 @@ public:
                     const Confirmer &override);
     // "station 1 on “Line 3 (TCP 10.0.0.5:500)”": how every question names its target.
     static QString target(quint8 station, const QString &connectionName);
+    static QString target(const PlcTarget &target)
+    {
+        return ToolConfirmation::target(target.station(), target.connectionName());
+    }
 };
 
 } // namespace Fatek

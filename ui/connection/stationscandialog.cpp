@@ -1,6 +1,5 @@
 #include "stationscandialog.h"
 
-#include "connection.h"
 #include "core/session/stationscanner.h"
 
 #include <algorithm>
@@ -17,21 +16,21 @@
 
 namespace Fatek {
 
-StationScanDialog::StationScanDialog(Connection *connection, QWidget *parent)
+StationScanDialog::StationScanDialog(const PlcTarget &target, QWidget *parent)
     : QDialog(parent)
-    , m_connection(connection)
+    , m_target(target)
 {
     setObjectName(QStringLiteral("stationScanDialog"));
     setWindowTitle(tr("Scan Stations"));
     auto *layout = new QVBoxLayout(this);
-    auto *target = new QLabel(
-        connection ? tr("Asks each station on \u201c%1\u201d for its status (command 40), one "
-                        "at a time, and lists who answers.")
-                         .arg(connection->name())
-                   : tr("No connection: open one first."),
+    auto *about = new QLabel(
+        target.link() ? tr("Asks each station on \u201c%1\u201d for its status (command 40), "
+                           "one at a time, and lists who answers.")
+                            .arg(target.connectionName())
+                      : tr("No connection: open one first."),
         this);
-    target->setWordWrap(true);
-    layout->addWidget(target);
+    about->setWordWrap(true);
+    layout->addWidget(about);
 
     auto *form = new QFormLayout;
     auto *range = new QHBoxLayout;
@@ -91,8 +90,8 @@ StationScanDialog::StationScanDialog(Connection *connection, QWidget *parent)
     connect(m_list, &QListWidget::itemSelectionChanged, this, &StationScanDialog::updateButtons);
 
     // A gateway connection has no link of its own to scan (ToolDocks does not open this on one).
-    if (connection && connection->session()) {
-        m_scanner = new StationScanner(connection->session(), this);
+    if (target.isDirect()) {
+        m_scanner = new StationScanner(target.session(), this);
         connect(
             m_scanner, &StationScanner::stationFound, this,
             [this](const StationScanner::Hit &hit) { onFound(hit.station, hit.status.running); });
@@ -120,7 +119,7 @@ QList<int> StationScanDialog::foundStations() const
 
 void StationScanDialog::start()
 {
-    if (!m_scanner || !m_connection)
+    if (!m_scanner || !m_target.isDirect())
         return;
     const int first = std::min(m_first->value(), m_last->value());
     const int last = std::max(m_first->value(), m_last->value());
@@ -137,7 +136,7 @@ void StationScanDialog::onFound(int station, bool running)
     auto *item = new QListWidgetItem(
         tr("Station %1 \u2014 %2").arg(station).arg(running ? tr("RUN") : tr("STOP")), m_list);
     item->setData(Qt::UserRole, station);
-    if (m_connection && station == m_connection->station())
+    if (station == m_target.station())
         item->setText(item->text() + tr(" (in use)"));
 }
 
@@ -155,19 +154,20 @@ void StationScanDialog::onFinished()
 void StationScanDialog::useSelected()
 {
     const QList<QListWidgetItem *> selected = m_list->selectedItems();
-    if (selected.isEmpty() || !m_connection)
+    if (selected.isEmpty() || !m_target.link())
         return;
     const int station = selected.first()->data(Qt::UserRole).toInt();
-    m_connection->setStation(static_cast<quint8>(station));
+    m_target = PlcTarget(m_target.link(), static_cast<quint8>(station), m_target.connectionName());
+    Q_EMIT stationChosen(static_cast<quint8>(station));
     m_status->setText(
-        tr("\u201c%1\u201d now uses station %2.").arg(m_connection->name()).arg(station));
+        tr("\u201c%1\u201d now uses station %2.").arg(m_target.connectionName()).arg(station));
 }
 
 void StationScanDialog::updateButtons()
 {
     const bool scanning = isScanning();
     m_start->setText(scanning ? tr("&Cancel Scan") : tr("&Scan"));
-    m_start->setEnabled(m_connection != nullptr);
+    m_start->setEnabled(m_target.link() != nullptr);
     m_use->setEnabled(!scanning && !m_list->selectedItems().isEmpty());
     m_first->setEnabled(!scanning);
     m_last->setEnabled(!scanning);

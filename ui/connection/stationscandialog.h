@@ -1,7 +1,8 @@
 #pragma once
 
+#include "core/plant/plctarget.h"
+
 #include <QDialog>
-#include <QPointer>
 
 class QLabel;
 class QListWidget;
@@ -11,23 +12,28 @@ class QSpinBox;
 
 namespace Fatek {
 
-class Connection;
 class StationScanner;
 
 // Tools > Scan Stations: asks every station of a range on the current connection's link (an
 // RS-485 bus, typically) who answers, lists them with RUN/STOP, and makes the chosen one the
-// connection's station. The asking is core's StationScanner, as for `fatek-cli scan`.
+// connection's station (stationChosen). The asking is core's StationScanner, as for
+// `fatek-cli scan`.
 class StationScanDialog : public QDialog
 {
     Q_OBJECT
 
 public:
-    explicit StationScanDialog(Connection *connection, QWidget *parent = nullptr);
+    // Scans the stations behind `target`'s link; its station is the one in use.
+    explicit StationScanDialog(const PlcTarget &target, QWidget *parent = nullptr);
 
     void start();
     bool isScanning() const;
     // Stations that answered, in order.
     QList<int> foundStations() const;
+
+Q_SIGNALS:
+    // The person chose `station` for the connection (Use Station, or a double click).
+    void stationChosen(quint8 station);
 
 private:
     void onFound(int station, bool running);
@@ -35,7 +41,7 @@ private:
     void useSelected();
     void updateButtons();
 
-    QPointer<Connection> m_connection;
+    PlcTarget m_target;
     StationScanner *m_scanner = nullptr;
     QSpinBox *m_first;
     QSpinBox *m_last;

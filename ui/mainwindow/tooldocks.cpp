@@ -23,6 +23,16 @@
 
 namespace Fatek {
 
+namespace {
+
+// What the tools act on: the connection's station behind its link (none without a connection).
+PlcTarget targetOf(const Connection *c)
+{
+    return c ? PlcTarget(c->link(), c->station(), c->name()) : PlcTarget();
+}
+
+} // namespace
+
 ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu, QMenu *viewMenu)
     : QObject(window)
     , m_window(window)
@@ -65,9 +75,7 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
         QAction *action = dockAction(dock, shortcut, window);
         toolsMenu->addAction(action);
         viewMenu->addAction(action);
-        m_targets.append([tool](Session *session, quint8 station, const QString &connection) {
-            tool->setTarget(session, station, connection);
-        });
+        m_targets.append([tool](const PlcTarget &target) { tool->setTarget(target); });
         m_docks.append(dock);
         return dock;
     };
@@ -132,7 +140,8 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
             Q_EMIT statusMessage(tr("Scan Stations: open a connection first."));
             return;
         }
-        auto *dialog = new StationScanDialog(c, m_window);
+        auto *dialog = new StationScanDialog(targetOf(c), m_window);
+        connect(dialog, &StationScanDialog::stationChosen, c, &Connection::setStation);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         dialog->show();
         dialog->start();
@@ -150,15 +159,13 @@ void ToolDocks::openDialog(Dialog *dialog, const QString &objectName)
     dialog->setObjectName(objectName);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     Connection *c = m_window->currentConnection();
-    dialog->setTarget(c ? c->session() : nullptr, c ? c->station() : quint8(1),
-                      c ? c->name() : QString());
+    dialog->setTarget(targetOf(c));
     // Like the docks, an open dialog follows the current connection (and lets go of a closed
     // one).
-    m_targets.append(
-        [target = QPointer<Dialog>(dialog)](Session *session, quint8 station, const QString &name) {
-            if (target)
-                target->setTarget(session, station, name);
-        });
+    m_targets.append([open = QPointer<Dialog>(dialog)](const PlcTarget &target) {
+        if (open)
+            open->setTarget(target);
+    });
     dialog->show();
 }
 
@@ -236,7 +243,7 @@ void ToolDocks::setTarget(Connection *c, bool force)
     m_connection = c;
     m_station = station;
     for (const SetTarget &target : std::as_const(m_targets))
-        target(c ? c->session() : nullptr, station, c ? c->name() : QString());
+        target(targetOf(c));
     showGatewayNotice(c && c->isGateway());
 }
 
@@ -267,7 +274,7 @@ void ToolDocks::showGatewayNotice(bool gateway)
 void ToolDocks::releaseTargets()
 {
     for (const SetTarget &target : std::as_const(m_targets))
-        target(nullptr, 1, QString());
+        target(PlcTarget());
 }
 
 } // namespace Fatek

@@ -17,7 +17,7 @@ namespace Fatek {
 
 class Connection;
 class MainWindow;
-class Session;
+class PlcTarget;
 
 // The commissioning tools of the main window: the PLC Control, Forcing and Raw Console docks, the
 // Loopback Test, Memory Snapshot, I/O Checkout and Scan Stations dialogs, and their Tools/View menu
@@ -37,9 +37,9 @@ public:
     QWidget *openTool(const QString &name);
     // Points every tool (and open dialog) at `connection` (nullptr: none). Nothing happens when
     // it is the target already with the same station, unless `force` (a tool re-reads the
-    // session's mode).
+    // link's operator mode).
     void setTarget(Connection *connection, bool force = false);
-    // Lets go of every session: the connections are about to go.
+    // Lets go of every link: the connections are about to go.
     void releaseTargets();
 
     // A Tools/View menu entry with a shortcut that shows and raises `dock`, or hides it when it
@@ -52,7 +52,7 @@ Q_SIGNALS:
     void statusMessage(const QString &text);
 
 private:
-    using SetTarget = std::function<void(Session *, quint8, const QString &)>;
+    using SetTarget = std::function<void(const PlcTarget &)>;
 
     // Shows a tool dialog (deleted on close) aimed at the current connection, and keeps it aimed
     // at the current one: the Loopback Test, Program Backup / Restore and Memory Snapshot

@@ -45,10 +45,10 @@ QString pastVerb(DiscreteOp op)
 
 } // namespace
 
-bool DiscreteControlBatch::run(RequestTracker *tracker, quint8 station, DiscreteOp op,
+bool DiscreteControlBatch::run(RequestTracker *tracker, const PlcTarget &target, DiscreteOp op,
                                const QList<Address> &points, Done done)
 {
-    if (!tracker->session() || points.isEmpty())
+    if (!target.isDirect() || points.isEmpty())
         return false;
     struct State
     {
@@ -58,14 +58,14 @@ bool DiscreteControlBatch::run(RequestTracker *tracker, quint8 station, Discrete
     auto state = std::make_shared<State>(State{points.size(), {}});
     // Confirmed now: point i may wait for the i points ahead of it, each at most one timeout (a
     // change is sent once), and not longer.
-    const int timeoutMs = tracker->session()->settings().timeoutMs;
+    const int timeoutMs = target.timeoutMs();
     int ahead = 0;
     for (const Address &point : points) {
         const QString name = QString::fromStdString(point.toString());
         RequestOptions options;
         options.deadline.setRemainingTime(qint64(timeoutMs) * ++ahead);
         tracker->submitChange(
-            Request::discreteControl(station, op, point),
+            Request::discreteControl(target.station(), op, point),
             [state, name, done](const ChangeReport &report) {
                 if (!report.final)
                     return; // unknown so far: counted once the read-back tells

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/plant/plctarget.h"
 #include "core/protocol/address.h"
 #include "core/protocol/request.h"
 
@@ -25,8 +26,9 @@ public:
     };
     using Done = std::function<void(const Outcome &)>;
 
-    // Returns false (and calls nothing) when there is no session or no point.
-    static bool run(RequestTracker *tracker, quint8 station, DiscreteOp op,
+    // Sends through `tracker` (aimed at `target`) to the target's station. Returns false (and
+    // calls nothing) without a direct link or without a point.
+    static bool run(RequestTracker *tracker, const PlcTarget &target, DiscreteOp op,
                     const QList<Address> &points, Done done);
 
     // "Disable Y0, Y1, Y2" / "Enable 40 points (M0 … M39)" for questions and messages.

@@ -5,7 +5,6 @@
 #include "core/protocol/element.h"
 #include "core/protocol/plcstatus.h"
 #include "core/session/requesttracker.h"
-#include "core/session/session.h"
 #include "discretecontrolbatch.h"
 #include "discretescan.h"
 #include "ui/common/symbolnames.h"
@@ -61,15 +60,13 @@ ForcedPointsView::ForcedPointsView(QWidget *parent)
     connect(m_scanButton, &QPushButton::clicked, this, &ForcedPointsView::scan);
     connect(m_ranges, &QLineEdit::returnPressed, this, &ForcedPointsView::scan);
     connect(m_enableAllButton, &QPushButton::clicked, this, &ForcedPointsView::enableAll);
-    setTarget(nullptr, 1, {});
+    setTarget(PlcTarget());
 }
 
-void ForcedPointsView::setTarget(Session *session, quint8 station, const QString &connectionName)
+void ForcedPointsView::setTarget(const PlcTarget &target)
 {
-    m_session = session;
-    m_station = station;
-    m_connectionName = connectionName;
-    m_requests->setSession(session);
+    m_target = target;
+    target.aim(m_requests);
     m_requests->forgetPending(); // answers meant for the previous target are ignored
     ++m_generation;
     m_scanning = m_enabling = false;
@@ -81,8 +78,9 @@ void ForcedPointsView::setTarget(Session *session, quint8 station, const QString
     m_plcNote.clear();
     m_forced.clear();
     showList();
-    m_message->setMessage(
-        session ? tr("Press Scan to list the forced points.") : tr("No connection."), false);
+    m_message->setMessage(target.isDirect() ? tr("Press Scan to list the forced points.")
+                                            : tr("No connection."),
+                          false);
     updateEnabled();
 }
 
@@ -98,9 +96,9 @@ QString ForcedPointsView::messageText() const
 
 void ForcedPointsView::updateEnabled()
 {
-    const bool connected = !m_session.isNull();
+    const bool connected = m_target.isDirect();
     m_scanButton->setEnabled(connected && !m_scanning && !m_enabling);
-    const bool writable = connected && !m_session->isReadOnly();
+    const bool writable = connected && !m_target.isReadOnly();
     m_enableAllButton->setEnabled(writable && !m_scanning && !m_enabling && !m_forced.isEmpty());
     m_enableAllButton->setToolTip(connected && !writable
                                       ? tr("Read-only (operator) mode: forcing is disabled.")
@@ -109,7 +107,7 @@ void ForcedPointsView::updateEnabled()
 
 void ForcedPointsView::scan()
 {
-    if (!m_session || m_scanning || m_enabling)
+    if (!m_target.isDirect() || m_scanning || m_enabling)
         return;
     if (!m_ranges->text().trimmed().isEmpty()) {
         const Result<QList<AddressRange>> ranges = DiscreteScan::parse(m_ranges->text());
@@ -130,7 +128,7 @@ void ForcedPointsView::scan()
     m_message->setMessage(tr("Reading the PLC's sizes \u2026"), false);
     updateEnabled();
     m_requests->submit(
-        Request::detailStatus(m_station), [this, generation](const SessionResult &result) {
+        Request::detailStatus(m_target.station()), [this, generation](const SessionResult &result) {
             if (generation != m_generation)
                 return;
             m_scanning = false;
@@ -179,7 +177,7 @@ void ForcedPointsView::scanRanges(const QList<AddressRange> &ranges, const QStri
     updateEnabled();
     for (const AddressRange &chunk : chunks) {
         m_requests->submit(
-            Request::readEnableFlags(m_station, chunk.start, chunk.count),
+            Request::readEnableFlags(m_target.station(), chunk.start, chunk.count),
             [this, state, chunk, generation, scanned, note](const SessionResult &result) {
                 if (generation != m_generation)
                     return;
@@ -226,18 +224,18 @@ void ForcedPointsView::scanRanges(const QList<AddressRange> &ranges, const QStri
 
 void ForcedPointsView::enableAll()
 {
-    if (!m_session || m_forced.isEmpty() || m_enabling)
+    if (!m_target.isDirect() || m_forced.isEmpty() || m_enabling)
         return;
     const QString question = tr("%1 on %2?")
                                  .arg(DiscreteControlBatch::describe(DiscreteOp::Enable, m_forced),
-                                      ToolConfirmation::target(m_station, m_connectionName));
+                                      ToolConfirmation::target(m_target));
     if (!ToolConfirmation::ask(this, tr("Enable all forced points"), question, m_confirmer)) {
         m_message->setMessage(tr("Enable all cancelled; the points stay forced."), false);
         return;
     }
     m_enabling = true;
     updateEnabled();
-    DiscreteControlBatch::run(m_requests, m_station, DiscreteOp::Enable, m_forced,
+    DiscreteControlBatch::run(m_requests, m_target, DiscreteOp::Enable, m_forced,
                               [this](const DiscreteControlBatch::Outcome &outcome) {
                                   m_enabling = false;
                                   m_prefix = DiscreteControlBatch::outcomeText(DiscreteOp::Enable,

@@ -17,7 +17,6 @@ class QPushButton;
 namespace Fatek {
 
 class RequestTracker;
-class Session;
 class SymbolNames;
 
 // Scans with 43 and lists every disabled (forced) point, with a confirmed "Enable all" so nothing
@@ -30,7 +29,7 @@ class ForcedPointsView : public QWidget
 public:
     explicit ForcedPointsView(QWidget *parent = nullptr);
 
-    void setTarget(Session *session, quint8 station, const QString &connectionName);
+    void setTarget(const PlcTarget &target);
     void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
     void setRanges(const QString &ranges);
     // The window's names (not owned): each forced point is listed with its name, "Y0 Pump run".
@@ -60,9 +59,7 @@ private:
     void updateEnabled();
 
     RequestTracker *m_requests;
-    QPointer<Session> m_session;
-    quint8 m_station = 1;
-    QString m_connectionName;
+    PlcTarget m_target;
     Confirmer m_confirmer;
     QPointer<const SymbolNames> m_symbols;
     QList<Address> m_forced;

@@ -3,7 +3,6 @@
 #include "ui/common/messageline.h"
 
 #include "core/session/requesttracker.h"
-#include "core/session/session.h"
 #include "discretecontrolbatch.h"
 #include "discretetablemodel.h"
 #include "forcedpointsview.h"
@@ -136,29 +135,28 @@ ForcingPanel::ForcingPanel(QWidget *parent)
 
     // A deleted session leaves the tool in "no connection".
     connect(m_requests, &RequestTracker::sessionDestroyed, this,
-            [this] { setTarget(nullptr, m_station, {}); });
-    setTarget(nullptr, 1, {});
+            [this] { setTarget(PlcTarget(nullptr, m_target.station(), {})); });
+    setTarget(PlcTarget());
 }
 
-void ForcingPanel::setTarget(Session *session, quint8 station, const QString &connectionName)
+void ForcingPanel::setTarget(const PlcTarget &target)
 {
-    m_session = session;
-    m_station = station;
-    m_connectionName = connectionName;
-    m_requests->setSession(session);
+    m_target = target;
+    target.aim(m_requests);
     m_requests->forgetPending(); // answers meant for the previous target are ignored
-    m_forced->setTarget(session, station, connectionName);
+    m_forced->setTarget(target);
     ++m_generation;
     m_pendingReads = 0;
     m_reads = 0;
     m_acting = false;
     m_message->setMessage({}, false);
-    if (!session) {
+    if (!target.isDirect()) {
         m_targetLabel->setText(tr("No connection: choose a connection and a station."));
         m_timer.stop();
         m_model->setRange(m_model->range()); // forget the values of the previous PLC
     } else {
-        m_targetLabel->setText(tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName));
+        m_targetLabel->setText(
+            tr("Station %1 on \u201c%2\u201d").arg(target.station()).arg(target.connectionName()));
         applyRangeFromControls();
         setAutoRefresh(m_autoRefresh->isChecked());
     }
@@ -194,7 +192,7 @@ void ForcingPanel::setAutoRefresh(bool on)
 {
     if (m_autoRefresh->isChecked() != on)
         m_autoRefresh->setChecked(on);
-    if (on && m_session)
+    if (on && m_target.isDirect())
         m_timer.start();
     else
         m_timer.stop();
@@ -226,7 +224,7 @@ void ForcingPanel::applyRangeFromControls()
 void ForcingPanel::refresh()
 {
     // Both reads of the previous refresh must be back first: a slow link must not pile up requests.
-    if (!m_session || m_pendingReads > 0 || m_model->range().count == 0)
+    if (!m_target.isDirect() || m_pendingReads > 0 || m_model->range().count == 0)
         return;
     const AddressRange range = m_model->range();
     const quint64 generation = m_generation;
@@ -251,14 +249,15 @@ void ForcingPanel::refresh()
         };
     };
     m_pendingReads = 2;
-    m_requests->submit(Request::readDiscretes(m_station, range.start, range.count), handle(true));
-    m_requests->submit(Request::readEnableFlags(m_station, range.start, range.count),
+    m_requests->submit(Request::readDiscretes(m_target.station(), range.start, range.count),
+                       handle(true));
+    m_requests->submit(Request::readEnableFlags(m_target.station(), range.start, range.count),
                        handle(false));
 }
 
 void ForcingPanel::applyToSelection(DiscreteOp op)
 {
-    if (!m_session || m_acting)
+    if (!m_target.isDirect() || m_acting)
         return;
     QList<int> rows;
     for (const QModelIndex &index : m_view->selectionModel()->selectedRows())
@@ -272,8 +271,7 @@ void ForcingPanel::applyToSelection(DiscreteOp op)
     for (int row : rows)
         points << m_model->addressAt(row);
     const QString action = DiscreteControlBatch::describe(op, points);
-    const QString question
-        = tr("%1 on %2?").arg(action, ToolConfirmation::target(m_station, m_connectionName));
+    const QString question = tr("%1 on %2?").arg(action, ToolConfirmation::target(m_target));
     if (!ToolConfirmation::ask(this, tr("Forcing"), question, m_confirmer)) {
         m_message->setMessage(tr("Cancelled: nothing sent."), false);
         return;
@@ -281,23 +279,22 @@ void ForcingPanel::applyToSelection(DiscreteOp op)
     m_acting = true;
     updateEnabled();
     m_message->setMessage(tr("%1 \u2026").arg(action), false);
-    DiscreteControlBatch::run(m_requests, m_station, op, points,
-                              [this, op](const DiscreteControlBatch::Outcome &outcome) {
-                                  m_acting = false;
-                                  m_message->setMessage(
-                                      DiscreteControlBatch::outcomeText(op, outcome),
-                                      !outcome.errors.isEmpty());
-                                  updateEnabled();
-                                  refresh();
-                              });
+    DiscreteControlBatch::run(
+        m_requests, m_target, op, points, [this, op](const DiscreteControlBatch::Outcome &outcome) {
+            m_acting = false;
+            m_message->setMessage(DiscreteControlBatch::outcomeText(op, outcome),
+                                  !outcome.errors.isEmpty());
+            updateEnabled();
+            refresh();
+        });
 }
 
 void ForcingPanel::updateEnabled()
 {
-    const bool connected = !m_session.isNull();
+    const bool connected = m_target.isDirect();
     const bool selected = m_view->selectionModel() && m_view->selectionModel()->hasSelection();
     // Operator mode: the session would refuse every 42; say so on the buttons.
-    const bool writable = connected && !m_session->isReadOnly();
+    const bool writable = connected && !m_target.isReadOnly();
     const QString tip = connected && !writable
                             ? tr("Read-only (operator) mode: forcing is disabled.")
                             : QString();

@@ -4,7 +4,6 @@
 #include "core/protocol/request.h"
 #include "ui/common/toolconfirmation.h"
 
-#include <QPointer>
 #include <QTimer>
 #include <QWidget>
 
@@ -20,7 +19,6 @@ namespace Fatek {
 class DiscreteTableModel;
 class ForcedPointsView;
 class RequestTracker;
-class Session;
 class SymbolNames;
 
 // Forcing of discretes: a table of a chosen range with each point's state (44) and enable flag
@@ -32,8 +30,8 @@ class ForcingPanel : public QWidget
 public:
     explicit ForcingPanel(QWidget *parent = nullptr);
 
-    // session may be nullptr: the panel shows "no connection" and disables its actions.
-    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
+    // Without a direct link the panel shows "no connection" and disables its actions.
+    void setTarget(const PlcTarget &target);
 
     // Test hook: answers the confirmation questions instead of a message box (both tabs).
     void setConfirmer(Confirmer confirmer);
@@ -63,9 +61,7 @@ private:
     void updateEnabled();
 
     RequestTracker *m_requests;
-    QPointer<Session> m_session;
-    quint8 m_station = 1;
-    QString m_connectionName;
+    PlcTarget m_target;
     Confirmer m_confirmer;
     QTimer m_timer;
     int m_pendingReads = 0;

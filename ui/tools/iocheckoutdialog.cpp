@@ -5,16 +5,12 @@
 #include "core/commission/checkoutreport.h"
 #include "core/commission/checkoutrunner.h"
 #include "core/commission/commissionmessages.h"
-#include "core/session/session.h"
 #include "core/watch/safefile.h"
 #include "report/checkoutpdf.h"
-#include "ui/common/messageline.h"
 #include "ui/common/uitext.h"
 
 #include <QDateTime>
-#include <QDialogButtonBox>
 #include <QDir>
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -32,13 +28,12 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     : QDialog(parent)
     , m_runner(new CheckoutRunner(this))
     , m_model(new CheckoutTableModel(m_runner, this))
+    // Closed: nothing stays forced, nothing polls behind the person's back.
+    , m_frame(new ToolDialogFrame(this, 2, QStringLiteral("message"), [this] { stop(); }))
 {
     setWindowTitle(tr("I/O Checkout"));
     m_runner->setAutoAdvance(true);
-    auto *layout = new QVBoxLayout(this);
-    m_targetLabel = new QLabel(this);
-    m_targetLabel->setObjectName(QStringLiteral("targetLabel"));
-    layout->addWidget(m_targetLabel);
+    QVBoxLayout *layout = m_frame->content();
 
     // The plan: its ranges and who it is for, side by side (a laptop's height goes to the table).
     auto *plan = new QHBoxLayout;
@@ -108,33 +103,21 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     keys->setWordWrap(true);
     layout->addWidget(keys);
 
-    m_message = new MessageLine(2, this);
-    m_message->setObjectName(QStringLiteral("message"));
-    layout->addWidget(m_message);
-    auto *box = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    layout->addWidget(box);
-    connect(box, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    // Closed: nothing stays forced, nothing polls behind the person's back.
-    connect(this, &QDialog::rejected, this, &IoCheckoutDialog::stop);
-
     connect(m_new, &QPushButton::clicked, this, &IoCheckoutDialog::newCheckout);
     connect(m_start, &QPushButton::clicked, this, &IoCheckoutDialog::start);
     connect(m_stop, &QPushButton::clicked, this, &IoCheckoutDialog::stop);
     connect(m_open, &QPushButton::clicked, this, [this] {
         const QString path
-            = QFileDialog::getOpenFileName(this, tr("Open Checkout"), {}, tr("Checkouts (*.json)"));
+            = m_frame->chooseFile({false, tr("Open Checkout"), tr("Checkouts (*.json)"), {}});
         if (!path.isEmpty())
             openCheckout(path);
     });
     connect(m_report, &QPushButton::clicked, this, [this] {
-        const QString path
-            = m_chooseFile(tr("Checkout Report"), tr("PDF reports (*.pdf);;CSV files (*.csv)"));
+        const QString path = m_frame->chooseFile(
+            {true, tr("Checkout Report"), tr("PDF reports (*.pdf);;CSV files (*.csv)"), {}});
         if (!path.isEmpty())
             writeReport(path);
     });
-    m_chooseFile = [this](const QString &title, const QString &filter) {
-        return QFileDialog::getSaveFileName(this, title, {}, filter);
-    };
 
     // The table follows the point under test, and choosing a row tests that point.
     connect(m_runner, &CheckoutRunner::currentPointChanged, this, &IoCheckoutDialog::showCurrent);
@@ -169,7 +152,7 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
                 QTimer::singleShot(0, this, [this, index, text = translated(question)] {
                     if (!m_runner->isRunning())
                         return;
-                    if (!ToolConfirmation::ask(this, tr("Force Output"), text, m_confirmer)) {
+                    if (!m_frame->ask(tr("Force Output"), text)) {
                         showMessage(translated(msg<MsgId::CheckoutRunNotConfirmed>()), false);
                         return;
                     }
@@ -188,33 +171,27 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     connect(m_runner, &CheckoutRunner::saveFailed, this,
             [this](const Message &message) { showMessage(translated(message), true); });
 
-    setTarget(nullptr, 1, {});
+    setTarget(PlcTarget());
     resize(980, 620);
 }
 
 IoCheckoutDialog::~IoCheckoutDialog() = default;
 
-void IoCheckoutDialog::setTarget(Session *session, quint8 station, const QString &connectionName)
+void IoCheckoutDialog::setTarget(const PlcTarget &target)
 {
-    if (m_runner->isRunning() && (session != m_session || station != m_station)) {
+    if (m_runner->isRunning() && !target.isSamePlc(m_frame->target())) {
         stop();
         showMessage(tr("Stopped: the target changed."), true);
     }
-    m_session = session;
-    m_station = station;
-    m_connectionName = connectionName;
-    m_runner->setSession(session);
-    QString text = session ? tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName)
-                           : tr("No connection: choose a connection and a station.");
-    if (session && session->isReadOnly())
-        text += QLatin1Char(' ') + tr("(operator mode: outputs are not forced)");
-    m_targetLabel->setText(text);
+    m_frame->setTarget(target, target.isReadOnly() ? tr("(operator mode: outputs are not forced)")
+                                                   : QString());
+    target.aim(m_runner);
     updateControls();
 }
 
 QString IoCheckoutDialog::messageText() const
 {
-    return m_message->text();
+    return m_frame->messageText();
 }
 
 QString IoCheckoutDialog::pointText(int index) const
@@ -235,14 +212,14 @@ void IoCheckoutDialog::newCheckout()
     m_runner->setFilePath({});
     m_model->planReset();
     m_loaded = false;
-    m_message->clear();
+    m_frame->clearMessage();
     updateControls();
     m_ranges->setFocus();
 }
 
 void IoCheckoutDialog::start()
 {
-    if (!m_session || m_runner->isRunning())
+    if (!m_frame->target().isDirect() || m_runner->isRunning())
         return;
     if (!m_loaded) {
         const auto plan = CheckoutPlan::fromRanges(m_ranges->text());
@@ -250,14 +227,15 @@ void IoCheckoutDialog::start()
             showMessage(translated(plan.error().message), true);
             return;
         }
-        const QString path = m_chooseFile(tr("Save Checkout"), tr("Checkouts (*.json)"));
+        const QString path
+            = m_frame->chooseFile({true, tr("Save Checkout"), tr("Checkouts (*.json)"), {}});
         if (path.isEmpty())
             return;
         CheckoutPlan p = plan.value();
         p.info.project = m_project->text();
         p.info.customer = m_customer->text();
         p.info.engineer = m_engineer->text();
-        p.info.station = m_station;
+        p.info.station = m_frame->target().station();
         p.info.created = QDateTime::currentDateTimeUtc();
         m_runner->setPlan(std::move(p));
         m_runner->setFilePath(path);
@@ -301,9 +279,8 @@ bool IoCheckoutDialog::openCheckout(const QString &path)
         for (const Address &a : m_runner->plan().forced)
             forced << QString::fromStdString(a.toString());
         const QString question = tr("The checkout left %1 forced on %2. Release them now?")
-                                     .arg(forced.join(QStringLiteral(", ")),
-                                          ToolConfirmation::target(m_station, m_connectionName));
-        if (m_session && ToolConfirmation::ask(this, tr("Release Outputs"), question, m_confirmer))
+                                     .arg(forced.join(QStringLiteral(", ")), m_frame->targetText());
+        if (m_frame->target().isDirect() && m_frame->ask(tr("Release Outputs"), question))
             start(); // start() releases them first
         else
             showMessage(tr("Still forced: %1 (Start releases them).")
@@ -388,7 +365,7 @@ void IoCheckoutDialog::pressFailed(int index)
 
 void IoCheckoutDialog::force(int index)
 {
-    if (!m_session || !m_runner->isRunning())
+    if (!m_frame->target().isDirect() || !m_runner->isRunning())
         return;
     if (m_runner->outputUnderTest() >= 0) {
         showMessage(tr("Answer for %1 first (Space: seen, F: not seen).")
@@ -396,14 +373,14 @@ void IoCheckoutDialog::force(int index)
                     true);
         return;
     }
-    if (m_session->isReadOnly()) {
+    if (m_frame->target().isReadOnly()) {
         showMessage(tr("Operator mode: outputs are not forced."), true);
         return;
     }
     const QString question
         = tr("Force %1 on at %2? It stays on until you answer, then it is released.")
-              .arg(pointText(index), ToolConfirmation::target(m_station, m_connectionName));
-    if (!ToolConfirmation::ask(this, tr("Force Output"), question, m_confirmer)) {
+              .arg(pointText(index), m_frame->targetText());
+    if (!m_frame->ask(tr("Force Output"), question)) {
         showMessage(tr("Not forced: nothing was written."), false);
         return;
     }
@@ -428,7 +405,7 @@ void IoCheckoutDialog::showCurrent(int index)
 
 void IoCheckoutDialog::showMessage(const QString &text, bool error)
 {
-    m_message->setMessage(text, error);
+    m_frame->showMessage(text, error);
 }
 
 void IoCheckoutDialog::updateControls()
@@ -437,7 +414,7 @@ void IoCheckoutDialog::updateControls()
     for (QLineEdit *edit : {m_ranges, m_project, m_customer, m_engineer})
         edit->setEnabled(!running);
     m_ranges->setEnabled(!running && !m_loaded);
-    m_start->setEnabled(m_session && !running);
+    m_start->setEnabled(m_frame->target().isDirect() && !running);
     m_stop->setEnabled(running);
     // Another plan would forget an output whose release is still being tried.
     m_new->setEnabled(!running && !m_runner->isRetryingRelease());

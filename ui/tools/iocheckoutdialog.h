@@ -1,11 +1,8 @@
 #pragma once
 
-#include "ui/common/toolconfirmation.h"
+#include "tooldialogframe.h"
 
 #include <QDialog>
-#include <QPointer>
-
-#include <functional>
 
 class QLabel;
 class QLineEdit;
@@ -16,8 +13,6 @@ namespace Fatek {
 
 class CheckoutRunner;
 class CheckoutTableModel;
-class MessageLine;
-class Session;
 
 // Tools -> I/O Checkout (issue 36): the plan (ranges, project, customer, engineer), the points in
 // a table driven from the keyboard (Space: seen, or force the output and then seen; F: failed, or
@@ -30,17 +25,17 @@ class IoCheckoutDialog : public QDialog
     Q_OBJECT
 
 public:
-    // Asks for a file name to save to (tests answer without a file dialog); empty: cancelled.
-    using FileChooser = std::function<QString(const QString &title, const QString &filter)>;
-
     explicit IoCheckoutDialog(QWidget *parent = nullptr);
     ~IoCheckoutDialog() override;
 
-    // session may be nullptr: the plan can be edited and files opened, nothing runs.
-    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
-    // Tests answer the questions (force, release) without a modal box.
-    void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
-    void setFileChooser(FileChooser chooser) { m_chooseFile = std::move(chooser); }
+    // Without a direct link the plan can be edited and files opened, nothing runs.
+    void setTarget(const PlcTarget &target);
+    // Tests answer the questions (force, release) and pick the files without modal dialogs.
+    void setConfirmer(Confirmer confirmer) { m_frame->setConfirmer(std::move(confirmer)); }
+    void setFileChooser(ToolDialogFrame::FileChooser chooser)
+    {
+        m_frame->setFileChooser(std::move(chooser));
+    }
 
     CheckoutRunner *runner() const { return m_runner; }
     CheckoutTableModel *points() const { return m_model; }
@@ -72,15 +67,10 @@ private:
 
     CheckoutRunner *m_runner;
     CheckoutTableModel *m_model;
-    QPointer<Session> m_session;
-    quint8 m_station = 1;
-    QString m_connectionName;
-    Confirmer m_confirmer;
-    FileChooser m_chooseFile;
+    ToolDialogFrame *m_frame;
     bool m_loaded = false; // a plan is built or opened (the fields show it)
     bool m_following = false;
 
-    QLabel *m_targetLabel;
     QLineEdit *m_ranges;
     QLineEdit *m_project;
     QLineEdit *m_customer;
@@ -92,7 +82,6 @@ private:
     QPushButton *m_report;
     QLabel *m_summary;
     QTableView *m_table;
-    MessageLine *m_message;
 };
 
 } // namespace Fatek

@@ -2,12 +2,10 @@
 
 #include "core/protocol/frametext.h"
 #include "core/session/requesttracker.h"
-#include "core/session/session.h"
 #include "ui/common/toolpalette.h"
 #include "ui/common/uitext.h"
 
 #include <QComboBox>
-#include <QDialogButtonBox>
 #include <QFontDatabase>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -24,12 +22,10 @@ namespace Fatek {
 LoopbackDialog::LoopbackDialog(QWidget *parent)
     : QDialog(parent)
     , m_requests(new RequestTracker(this))
+    , m_frame(new ToolDialogFrame(this, 2, QStringLiteral("loopbackMessage"), [this] { stop(); }))
 {
     setWindowTitle(tr("Loopback test"));
-    auto *layout = new QVBoxLayout(this);
-    m_targetLabel = new QLabel(this);
-    m_targetLabel->setObjectName(QStringLiteral("targetLabel"));
-    layout->addWidget(m_targetLabel);
+    QVBoxLayout *layout = m_frame->content();
 
     auto *form = new QFormLayout;
     auto *dataRow = new QHBoxLayout;
@@ -86,15 +82,7 @@ LoopbackDialog::LoopbackDialog(QWidget *parent)
     m_totals->setWordWrap(true);
     m_totals->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_totals);
-    m_message = new QLabel(this);
-    m_message->setObjectName(QStringLiteral("loopbackMessage"));
-    m_message->setWordWrap(true);
-    layout->addWidget(m_message);
-    auto *box = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    layout->addWidget(box);
 
-    connect(box, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    connect(this, &QDialog::rejected, this, &LoopbackDialog::stop);
     connect(m_start, &QPushButton::clicked, this, &LoopbackDialog::start);
     connect(m_stop, &QPushButton::clicked, this, &LoopbackDialog::stop);
     connect(m_mode, &QComboBox::currentIndexChanged, this, &LoopbackDialog::updateControls);
@@ -103,22 +91,17 @@ LoopbackDialog::LoopbackDialog(QWidget *parent)
 
     // A deleted session leaves the tool in "no connection".
     connect(m_requests, &RequestTracker::sessionDestroyed, this,
-            [this] { setTarget(nullptr, m_station, {}); });
-    setTarget(nullptr, 1, {});
+            [this] { setTarget(PlcTarget(nullptr, m_frame->target().station(), {})); });
+    setTarget(PlcTarget());
 }
 
-void LoopbackDialog::setTarget(Session *session, quint8 station, const QString &connectionName)
+void LoopbackDialog::setTarget(const PlcTarget &target)
 {
     if (m_running)
         finish(tr("Stopped: the target changed."));
-    m_session = session;
-    m_station = station;
-    m_connectionName = connectionName;
-    m_requests->setSession(session);
+    m_frame->setTarget(target);
+    target.aim(m_requests);
     m_requests->forgetPending();
-    m_targetLabel->setText(session
-                               ? tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName)
-                               : tr("No connection: choose a connection and a station."));
     updateControls();
 }
 
@@ -149,7 +132,7 @@ void LoopbackDialog::setIntervalMs(int ms)
 
 QString LoopbackDialog::messageText() const
 {
-    return m_message->text();
+    return m_frame->messageText();
 }
 
 QString LoopbackDialog::totalsText() const
@@ -165,14 +148,13 @@ void LoopbackDialog::updateControls()
     m_mode->setEnabled(!m_running);
     m_repeat->setEnabled(!m_running);
     m_interval->setEnabled(!m_running);
-    m_start->setEnabled(!m_session.isNull() && !m_running);
+    m_start->setEnabled(m_frame->target().isDirect() && !m_running);
     m_stop->setEnabled(m_running);
 }
 
 Result<Bytes> LoopbackDialog::testData() const
 {
-    const bool binary
-        = m_session && m_session->isProtocolKnown() && m_session->protocol() == Protocol::Binary;
+    const bool binary = m_frame->target().protocol() == Protocol::Binary;
     Bytes bytesOut;
     switch (static_cast<DataMode>(m_mode->currentIndex())) {
     case DataMode::Text: {
@@ -199,18 +181,20 @@ Result<Bytes> LoopbackDialog::testData() const
     }
     }
     const Protocol protocol = binary ? Protocol::Binary : Protocol::Facon;
-    if (const Status s = validateRequest(Request::loopback(m_station, bytesOut), protocol); !s)
+    if (const Status s
+        = validateRequest(Request::loopback(m_frame->target().station(), bytesOut), protocol);
+        !s)
         return s.error();
     return bytesOut;
 }
 
 void LoopbackDialog::start()
 {
-    if (!m_session || m_running)
+    if (!m_frame->target().isDirect() || m_running)
         return;
     const Result<Bytes> prepared = testData();
     if (!prepared) {
-        ToolPalette::showMessage(m_message, translated(prepared.error().message), true);
+        m_frame->showMessage(translated(prepared.error().message), true);
         return;
     }
     m_data = *prepared;
@@ -219,11 +203,10 @@ void LoopbackDialog::start()
     m_running = true;
     m_runs->clear();
     ToolPalette::showMessage(m_totals, m_stats.summary(), false);
-    ToolPalette::showMessage(m_message,
-                             tr("Running %1 loopback tests of %2 bytes \u2026")
-                                 .arg(m_repeat->value())
-                                 .arg(m_data.size()),
-                             false);
+    m_frame->showMessage(tr("Running %1 loopback tests of %2 bytes \u2026")
+                             .arg(m_repeat->value())
+                             .arg(m_data.size()),
+                         false);
     updateControls();
     runNext();
 }
@@ -236,12 +219,12 @@ void LoopbackDialog::stop()
 
 void LoopbackDialog::runNext()
 {
-    if (!m_running || !m_session)
+    if (!m_running || !m_frame->target().isDirect())
         return;
     const int run = ++m_run;
     auto clock = std::make_shared<QElapsedTimer>();
     clock->start();
-    m_requests->submit(Request::loopback(m_station, m_data),
+    m_requests->submit(Request::loopback(m_frame->target().station(), m_data),
                        [this, run, clock](const SessionResult &r) {
                            onAnswer(run, r, static_cast<double>(clock->nsecsElapsed()) / 1e6);
                        });
@@ -297,7 +280,7 @@ void LoopbackDialog::finish(const QString &why)
     m_intervalTimer.stop();
     m_requests->forgetPending();
     const bool clean = m_stats.successes() == m_stats.runs();
-    ToolPalette::showMessage(m_message, why, false);
+    m_frame->showMessage(why, false);
     ToolPalette::showMessage(m_totals, m_stats.summary(), !clean);
     updateControls();
 }

@@ -2,10 +2,10 @@
 
 #include "core/protocol/request.h"
 #include "core/session/loopbackstats.h"
+#include "tooldialogframe.h"
 
 #include <QDialog>
 #include <QElapsedTimer>
-#include <QPointer>
 #include <QTimer>
 
 class QComboBox;
@@ -18,7 +18,6 @@ class QSpinBox;
 namespace Fatek {
 
 class RequestTracker;
-class Session;
 class SessionResult;
 
 // Loopback test (4E) for checking a link and its cabling: sends test data a number of times at an
@@ -32,8 +31,8 @@ public:
 
     explicit LoopbackDialog(QWidget *parent = nullptr);
 
-    // session may be nullptr: the dialog shows "no connection" and cannot start.
-    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
+    // Without a direct link the dialog shows "no connection" and cannot start.
+    void setTarget(const PlcTarget &target);
 
     void setDataMode(DataMode mode);
     void setData(const QString &text);
@@ -61,16 +60,13 @@ private:
     void updateControls();
 
     RequestTracker *m_requests;
-    QPointer<Session> m_session;
-    quint8 m_station = 1;
-    QString m_connectionName;
+    ToolDialogFrame *m_frame;
     bool m_running = false;
     int m_run = 0;
     Bytes m_data;
     LoopbackStats m_stats;
     QTimer m_intervalTimer;
 
-    QLabel *m_targetLabel;
     QComboBox *m_mode;
     QLineEdit *m_text;
     QSpinBox *m_length;
@@ -80,7 +76,6 @@ private:
     QPushButton *m_stop;
     QPlainTextEdit *m_runs;
     QLabel *m_totals;
-    QLabel *m_message;
 };
 
 } // namespace Fatek

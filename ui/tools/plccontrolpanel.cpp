@@ -1,7 +1,6 @@
 #include "plccontrolpanel.h"
 
 #include "core/session/requesttracker.h"
-#include "core/session/session.h"
 #include "statusindicator.h"
 #include "ui/common/toolpalette.h"
 #include "ui/common/uitext.h"
@@ -144,8 +143,8 @@ PlcControlPanel::PlcControlPanel(QWidget *parent)
 
     // A deleted session leaves the tool in "no connection".
     connect(m_requests, &RequestTracker::sessionDestroyed, this,
-            [this] { setTarget(nullptr, m_station, {}); });
-    setTarget(nullptr, 1, {});
+            [this] { setTarget(PlcTarget(nullptr, m_target.station(), {})); });
+    setTarget(PlcTarget());
 }
 
 QLabel *PlcControlPanel::addDetailRow(const QString &label)
@@ -156,12 +155,10 @@ QLabel *PlcControlPanel::addDetailRow(const QString &label)
     return value;
 }
 
-void PlcControlPanel::setTarget(Session *session, quint8 station, const QString &connectionName)
+void PlcControlPanel::setTarget(const PlcTarget &target)
 {
-    m_session = session;
-    m_station = station;
-    m_connectionName = connectionName;
-    m_requests->setSession(session);
+    m_target = target;
+    target.aim(m_requests);
     m_requests->forgetPending(); // answers meant for the previous target are ignored
     m_briefPending = m_detailPending = m_modePending = false;
     m_status.reset();
@@ -171,11 +168,12 @@ void PlcControlPanel::setTarget(Session *session, quint8 station, const QString 
     showDetail();
     ToolPalette::showMessage(m_outcomeLabel, {}, false);
     ToolPalette::showMessage(m_refreshLabel, {}, false);
-    if (!session) {
+    if (!target.isDirect()) {
         m_targetLabel->setText(tr("No connection: choose a connection and a station."));
         m_timer.stop();
     } else {
-        m_targetLabel->setText(tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName));
+        m_targetLabel->setText(
+            tr("Station %1 on \u201c%2\u201d").arg(target.station()).arg(target.connectionName()));
         m_timer.start();
         refresh();
         refreshDetail();
@@ -195,9 +193,9 @@ QString PlcControlPanel::outcomeText() const
 
 void PlcControlPanel::updateEnabled()
 {
-    const bool connected = !m_session.isNull();
+    const bool connected = m_target.isDirect();
     // Operator mode: the session would refuse RUN/STOP anyway; say so on the buttons.
-    const bool writable = connected && !m_session->isReadOnly();
+    const bool writable = connected && !m_target.isReadOnly();
     const QString tip = connected && !writable
                             ? tr("Read-only (operator) mode: RUN/STOP is disabled.")
                             : QString();
@@ -211,18 +209,18 @@ void PlcControlPanel::updateEnabled()
 void PlcControlPanel::refresh()
 {
     // One status read in flight at most: a slow link must not pile up requests.
-    if (!m_session || m_briefPending)
+    if (!m_target.isDirect() || m_briefPending)
         return;
-    m_briefPending = m_requests->submit(Request::briefStatus(m_station),
+    m_briefPending = m_requests->submit(Request::briefStatus(m_target.station()),
                                         [this](const SessionResult &r) { onBriefStatus(r); })
                      != 0;
 }
 
 void PlcControlPanel::refreshDetail()
 {
-    if (!m_session || m_detailPending)
+    if (!m_target.isDirect() || m_detailPending)
         return;
-    m_detailPending = m_requests->submit(Request::detailStatus(m_station),
+    m_detailPending = m_requests->submit(Request::detailStatus(m_target.station()),
                                          [this](const SessionResult &r) { onDetailStatus(r); })
                       != 0;
 }
@@ -239,11 +237,10 @@ void PlcControlPanel::requestStop()
 
 void PlcControlPanel::requestMode(bool run)
 {
-    if (!m_session || m_modePending)
+    if (!m_target.isDirect() || m_modePending)
         return;
     const QString mode = run ? QStringLiteral("RUN") : QStringLiteral("STOP");
-    const QString question
-        = tr("Put %1 into %2?").arg(ToolConfirmation::target(m_station, m_connectionName), mode);
+    const QString question = tr("Put %1 into %2?").arg(ToolConfirmation::target(m_target), mode);
     if (!ToolConfirmation::ask(this, tr("PLC %1").arg(mode), question, m_confirmer)) {
         ToolPalette::showMessage(m_outcomeLabel, tr("%1 not sent: cancelled.").arg(mode), false);
         return;
@@ -251,7 +248,7 @@ void PlcControlPanel::requestMode(bool run)
     m_modePending = true;
     ToolPalette::showMessage(m_outcomeLabel, tr("Sending %1\u2026").arg(mode), false);
     m_requests->submitChange(
-        Request::runStop(m_station, run),
+        Request::runStop(m_target.station(), run),
         [this, mode](const ChangeReport &report) {
             if (!report.final) {
                 // Sent, not answered: not refused. The status is read back until it tells.
@@ -265,7 +262,7 @@ void PlcControlPanel::requestMode(bool run)
                 ToolPalette::showMessage(
                     m_outcomeLabel,
                     report.message.empty()
-                        ? tr("%1 accepted by station %2.").arg(mode).arg(m_station)
+                        ? tr("%1 accepted by station %2.").arg(mode).arg(m_target.station())
                         : tr("%1: %2").arg(mode, translated(report.message)),
                     false);
                 break;
@@ -283,7 +280,7 @@ void PlcControlPanel::requestMode(bool run)
             refresh();
             refreshDetail(); // its STATUS1 changes too
         },
-        ChangeVerifier::confirmedNow(m_session));
+        m_target.confirmedNow());
     updateEnabled();
 }
 
@@ -348,7 +345,7 @@ void PlcControlPanel::showDetail()
     const DetailStatus &d = *m_detail;
     m_raw->setText(d.raw.empty() ? tr("(no bytes)") : hexBytes(d.raw));
     // The binary protocol does not document the 53 answer: only STATUS1 and the raw bytes.
-    if (m_session && m_session->isProtocolKnown() && m_session->protocol() == Protocol::Binary) {
+    if (m_target.protocol() == Protocol::Binary) {
         m_model->setText(tr("not documented for the binary protocol (see raw bytes)"));
         return;
     }

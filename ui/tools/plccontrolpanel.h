@@ -3,7 +3,6 @@
 #include "core/protocol/plcstatus.h"
 #include "ui/common/toolconfirmation.h"
 
-#include <QPointer>
 #include <QTimer>
 #include <QWidget>
 
@@ -16,7 +15,6 @@ class QPushButton;
 namespace Fatek {
 
 class RequestTracker;
-class Session;
 class SessionResult;
 class StatusIndicator;
 
@@ -30,8 +28,8 @@ class PlcControlPanel : public QWidget
 public:
     explicit PlcControlPanel(QWidget *parent = nullptr);
 
-    // session may be nullptr: the panel shows "no connection" and disables its actions.
-    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
+    // Without a direct link the panel shows "no connection" and disables its actions.
+    void setTarget(const PlcTarget &target);
 
     // Test hook: answers the confirmation questions instead of a message box.
     void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
@@ -58,9 +56,7 @@ private:
     QLabel *addDetailRow(const QString &label);
 
     RequestTracker *m_requests;
-    QPointer<Session> m_session;
-    quint8 m_station = 1;
-    QString m_connectionName;
+    PlcTarget m_target;
     Confirmer m_confirmer;
     QTimer m_timer;
     int m_ticks = 0;

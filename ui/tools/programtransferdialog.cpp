@@ -3,12 +3,8 @@
 #include "core/commission/commissionmessages.h"
 #include "core/protocol/plcstatus.h"
 #include "core/session/requesttracker.h"
-#include "core/session/session.h"
-#include "ui/common/messageline.h"
 #include "ui/common/uitext.h"
 
-#include <QDialogButtonBox>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -24,12 +20,10 @@ ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
     : QDialog(parent)
     , m_transfer(new ProgramTransfer(this))
     , m_requests(new RequestTracker(this))
+    , m_frame(new ToolDialogFrame(this, 3, QStringLiteral("programMessage"), [this] { cancel(); }))
 {
     setWindowTitle(tr("Program Backup / Restore"));
-    auto *layout = new QVBoxLayout(this);
-    m_targetLabel = new QLabel(this);
-    m_targetLabel->setObjectName(QStringLiteral("targetLabel"));
-    layout->addWidget(m_targetLabel);
+    QVBoxLayout *layout = m_frame->content();
     m_modeLabel = new QLabel(this);
     m_modeLabel->setObjectName(QStringLiteral("modeLabel"));
     m_modeLabel->setWordWrap(true);
@@ -62,22 +56,15 @@ ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
     m_progressLabel->setMinimumHeight(2 * fontMetrics().lineSpacing());
     m_progressLabel->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     layout->addWidget(m_progressLabel);
-    m_message = new MessageLine(3, this);
-    m_message->setObjectName(QStringLiteral("programMessage"));
-    layout->addWidget(m_message);
-    auto *box = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    layout->addWidget(box);
 
-    connect(box, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    connect(this, &QDialog::rejected, this, &ProgramTransferDialog::cancel);
     connect(m_backupButton, &QPushButton::clicked, this, &ProgramTransferDialog::backup);
     connect(m_restoreButton, &QPushButton::clicked, this, &ProgramTransferDialog::restore);
     connect(m_cancelButton, &QPushButton::clicked, this, &ProgramTransferDialog::cancel);
     connect(m_transfer, &ProgramTransfer::progress, this, &ProgramTransferDialog::onProgress);
     connect(m_transfer, &ProgramTransfer::finished, this, &ProgramTransferDialog::onFinished);
     connect(m_requests, &RequestTracker::sessionDestroyed, this,
-            [this] { setTarget(nullptr, m_station, {}); });
-    setTarget(nullptr, 1, {});
+            [this] { setTarget(PlcTarget(nullptr, station(), {})); });
+    setTarget(PlcTarget());
     // A width of its own: room for the title beside a window manager's icon and buttons (a
     // narrow dialog shows "Program Backup /… e"), and no resizing while the texts change.
     const QFontMetrics fm = fontMetrics();
@@ -86,35 +73,29 @@ ProgramTransferDialog::ProgramTransferDialog(QWidget *parent)
                             56 * fm.averageCharWidth()}));
 }
 
-void ProgramTransferDialog::setTarget(Session *session, quint8 station,
-                                      const QString &connectionName)
+void ProgramTransferDialog::setTarget(const PlcTarget &target)
 {
-    if (session != m_session || station != m_station) {
+    if (!target.isSamePlc(m_frame->target())) {
         if (m_transfer->isRunning())
             m_transfer->cancel();
         m_step = Step::None;
         m_stopping = false;
     }
-    m_session = session;
-    m_station = station;
-    m_connectionName = connectionName;
-    m_requests->setSession(session);
-    m_transfer->setSession(session);
-    m_transfer->setStation(station);
-    m_targetLabel->setText(session
-                               ? tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName)
-                               : tr("No connection: choose a connection and a station."));
+    m_frame->setTarget(target);
+    target.aim(m_requests);
+    target.aim(m_transfer);
+    m_transfer->setStation(target.station());
     updateControls();
 }
 
 QString ProgramTransferDialog::messageText() const
 {
-    return m_message->text();
+    return m_frame->messageText();
 }
 
 bool ProgramTransferDialog::messageIsError() const
 {
-    return m_message->isError();
+    return m_frame->messageIsError();
 }
 
 QString ProgramTransferDialog::progressText() const
@@ -124,24 +105,23 @@ QString ProgramTransferDialog::progressText() const
 
 QString ProgramTransferDialog::chooseFile(bool save)
 {
-    if (m_chooser)
-        return m_chooser(save);
     const QString filter = tr("Program backups (*.fprog *.json);;All files (*)");
-    return save ? QFileDialog::getSaveFileName(this, tr("Back Up the PLC Program"),
-                                               QStringLiteral("plc-program.fprog"), filter)
-                : QFileDialog::getOpenFileName(this, tr("Restore a PLC Program"), {}, filter);
+    if (save)
+        return m_frame->chooseFile(
+            {true, tr("Back Up the PLC Program"), filter, QStringLiteral("plc-program.fprog")});
+    return m_frame->chooseFile({false, tr("Restore a PLC Program"), filter, {}});
 }
 
 void ProgramTransferDialog::backup()
 {
-    if (!m_session || isRunning())
+    if (!m_frame->target().isDirect() || isRunning())
         return;
     const QString path = chooseFile(true);
     if (path.isEmpty())
         return;
     m_path = path;
     m_step = Step::Backup;
-    m_message->clear();
+    m_frame->clearMessage();
     m_elapsed.start();
     m_transfer->backup();
     updateControls();
@@ -149,9 +129,9 @@ void ProgramTransferDialog::backup()
 
 void ProgramTransferDialog::restore()
 {
-    if (!m_session || isRunning())
+    if (!m_frame->target().isDirect() || isRunning())
         return;
-    if (m_session->isReadOnly()) {
+    if (m_frame->target().isReadOnly()) {
         showMessage(translated(msg<MsgId::ProgramReadOnly>()), true);
         return;
     }
@@ -167,7 +147,7 @@ void ProgramTransferDialog::restore()
     m_image = loaded.image();
     m_askedStop = false;
     m_stoppedForRestore = false;
-    m_message->clear();
+    m_frame->clearMessage();
     startCheck();
 }
 
@@ -190,8 +170,8 @@ void ProgramTransferDialog::askToStop()
     const QString question
         = tr("The PLC at %1 is in RUN. A program can only be written in STOP.\n\n"
              "Switch the PLC to STOP now?")
-              .arg(ToolConfirmation::target(m_station, m_connectionName));
-    if (!ToolConfirmation::ask(this, tr("Restore Program"), question, m_confirmer)) {
+              .arg(m_frame->targetText());
+    if (!m_frame->ask(tr("Restore Program"), question)) {
         showMessage(tr("Not restored: the PLC stays in RUN. Nothing was written."), false);
         return;
     }
@@ -199,7 +179,7 @@ void ProgramTransferDialog::askToStop()
     m_stopping = true;
     updateControls();
     m_requests->submitChange(
-        Request::runStop(m_station, false),
+        Request::runStop(station(), false),
         [this](const ChangeReport &r) {
             if (!r.final) {
                 // Sent, not answered: the status is read back before anything else happens.
@@ -218,21 +198,21 @@ void ProgramTransferDialog::askToStop()
             m_stoppedForRestore = true;
             startCheck();
         },
-        ChangeVerifier::confirmedNow(m_requests->session()));
+        m_frame->target().confirmedNow());
 }
 
 void ProgramTransferDialog::offerRun(const QString &done, bool restored, bool error)
 {
     // Default No: a program starts machinery; the person says when the machine is ready (an
     // Enter pressed by habit must not start it). The PLC is in STOP for the restore.
-    const QString target = ToolConfirmation::target(m_station, m_connectionName);
+    const QString target = m_frame->targetText();
     const QString question
         = restored ? tr("%1\n\nSwitch the PLC at %2 to RUN now? It starts the restored program.")
                          .arg(done, target)
                    : tr("%1\n\nThe PLC at %2 was switched to STOP for the restore. Switch it back "
                         "to RUN now? It runs its program as before.")
                          .arg(done, target);
-    if (!ToolConfirmation::ask(this, tr("Restore Program"), question, m_confirmer)) {
+    if (!m_frame->ask(tr("Restore Program"), question)) {
         showMessage(
             tr("%1 The PLC stays in STOP: switch it to RUN when the machine is ready.").arg(done),
             error);
@@ -241,7 +221,7 @@ void ProgramTransferDialog::offerRun(const QString &done, bool restored, bool er
     m_stopping = true;
     updateControls();
     m_requests->submitChange(
-        Request::runStop(m_station, true),
+        Request::runStop(station(), true),
         [this, done, error](const ChangeReport &r) {
             if (!r.final) {
                 showMessage(tr("%1 RUN: %2").arg(done, translated(r.message)), true);
@@ -263,7 +243,7 @@ void ProgramTransferDialog::offerRun(const QString &done, bool restored, bool er
                 break;
             }
         },
-        ChangeVerifier::confirmedNow(m_requests->session()));
+        m_frame->target().confirmedNow());
 }
 
 void ProgramTransferDialog::restoreFailed(const ProgramTransferResult &result)
@@ -330,15 +310,14 @@ void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
             = tr("Write the program from %1 to the PLC at %2?\n\n"
                  "Backup: %3%4, %5 pages.\n%6\n\n"
                  "The PLC's program is replaced; every page is read back and compared.")
-                  .arg(QFileInfo(m_path).fileName(),
-                       ToolConfirmation::target(m_station, m_connectionName),
+                  .arg(QFileInfo(m_path).fileName(), m_frame->targetText(),
                        translated(m_image.header().model()),
                        m_image.modelText().isEmpty()
                            ? QString()
                            : QStringLiteral(" (%1)").arg(m_image.modelText()))
                   .arg(m_image.pageCount())
                   .arg(pages);
-        if (!ToolConfirmation::ask(this, tr("Restore Program"), question, m_confirmer)) {
+        if (!m_frame->ask(tr("Restore Program"), question)) {
             const QString declined = tr("Not restored: nothing was written.");
             if (m_stoppedForRestore)
                 return offerRun(declined, false);
@@ -372,14 +351,14 @@ void ProgramTransferDialog::onFinished(const ProgramTransferResult &result)
 
 void ProgramTransferDialog::showMessage(const QString &text, bool error)
 {
-    m_message->setMessage(text, error);
+    m_frame->showMessage(text, error);
 }
 
 void ProgramTransferDialog::updateControls()
 {
-    const bool connected = !m_session.isNull();
+    const bool connected = m_frame->target().isDirect();
     const bool busy = isRunning();
-    const bool readOnly = connected && m_session->isReadOnly();
+    const bool readOnly = connected && m_frame->target().isReadOnly();
     m_backupButton->setEnabled(connected && !busy);
     m_restoreButton->setEnabled(connected && !busy && !readOnly);
     m_restoreButton->setToolTip(

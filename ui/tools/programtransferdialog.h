@@ -1,13 +1,10 @@
 #pragma once
 
 #include "core/commission/programtransfer.h"
-#include "ui/common/toolconfirmation.h"
+#include "tooldialogframe.h"
 
 #include <QDialog>
 #include <QElapsedTimer>
-#include <QPointer>
-
-#include <functional>
 
 class QLabel;
 class QProgressBar;
@@ -15,9 +12,7 @@ class QPushButton;
 
 namespace Fatek {
 
-class MessageLine;
 class RequestTracker;
-class Session;
 
 // Tools → Program Backup / Restore…: the PLC's program to a file and back (core's
 // ProgramTransfer over 4F/50). A restore checks the model first, then asks to switch a PLC in RUN
@@ -29,16 +24,17 @@ class ProgramTransferDialog : public QDialog
     Q_OBJECT
 
 public:
-    // Picks a file: `save` true for a backup. Empty: the person cancelled.
-    using FileChooser = std::function<QString(bool save)>;
-
     explicit ProgramTransferDialog(QWidget *parent = nullptr);
 
-    // session may be nullptr: the dialog shows "no connection" and cannot start.
-    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
-    // Tests answer the questions and pick the files without modal dialogs.
-    void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
-    void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+    // Without a direct link the dialog shows "no connection" and cannot start.
+    void setTarget(const PlcTarget &target);
+    // Tests answer the questions and pick the files (a backup saves, a restore opens) without
+    // modal dialogs.
+    void setConfirmer(Confirmer confirmer) { m_frame->setConfirmer(std::move(confirmer)); }
+    void setFileChooser(ToolDialogFrame::FileChooser chooser)
+    {
+        m_frame->setFileChooser(std::move(chooser));
+    }
 
     bool isRunning() const { return m_transfer->isRunning() || m_stopping; }
     QString messageText() const;
@@ -66,16 +62,13 @@ private:
     void restoreFailed(const ProgramTransferResult &result);
     void showMessage(const QString &text, bool error);
     void updateControls();
+    quint8 station() const { return m_frame->target().station(); }
 
     enum class Step { None, Backup, Check, Restore };
 
     ProgramTransfer *m_transfer;
     RequestTracker *m_requests; // 41 STOP when the person agrees
-    QPointer<Session> m_session;
-    quint8 m_station = 1;
-    QString m_connectionName;
-    Confirmer m_confirmer;
-    FileChooser m_chooser;
+    ToolDialogFrame *m_frame;
     Step m_step = Step::None;
     bool m_stopping = false; // a STOP or RUN request is on its way
     bool m_askedStop = false;
@@ -85,14 +78,12 @@ private:
     QElapsedTimer m_elapsed;
     QString m_progressLine; // the last count, without the time left
 
-    QLabel *m_targetLabel;
     QLabel *m_modeLabel;
     QPushButton *m_backupButton;
     QPushButton *m_restoreButton;
     QPushButton *m_cancelButton;
     QProgressBar *m_progress;
     QLabel *m_progressLabel;
-    MessageLine *m_message;
 };
 
 } // namespace Fatek

@@ -1,6 +1,7 @@
 #include "rawconsole.h"
 
-#include "core/session/session.h"
+#include "core/link/plclink.h"
+#include "core/session/trafficlog.h"
 #include "core/watch/safefile.h"
 #include "rawsendbar.h"
 #include "trafficfilterproxy.h"
@@ -136,36 +137,36 @@ RawConsole::RawConsole(QWidget *parent)
     m_fetchTimer.setInterval(50);
     connect(&m_fetchTimer, &QTimer::timeout, this, &RawConsole::fetch);
 
-    setTarget(nullptr, 1, {});
+    setTarget(PlcTarget());
 }
 
-void RawConsole::setTarget(Session *session, quint8 station, const QString &connectionName)
+void RawConsole::setTarget(const PlcTarget &target)
 {
-    m_station = station;
-    m_sendBar->setTarget(session, station, connectionName);
-    const bool sameLink = m_attached && session && m_session == session;
+    m_sendBar->setTarget(target);
+    const bool sameLink = m_attached && target.isDirect() && m_target.link() == target.link();
+    m_target = target;
     if (!sameLink) {
-        disconnect(m_sessionGone);
+        disconnect(m_linkGone);
         listen(false);
-        m_session = session;
-        m_attached = session != nullptr;
+        m_attached = target.isDirect();
         m_lastSequence = 0;
         m_followTail = true;
         m_model->clear();
     }
-    if (!session) {
+    if (!target.isDirect()) {
         m_targetLabel->setText(tr("No connection: choose a connection to see its traffic."));
         ToolPalette::showMessage(m_status, {}, false);
         return;
     }
     // The log belongs to the link, not one station: every frame of the connection is shown.
-    m_targetLabel->setText(
-        tr("Traffic of \u201c%1\u201d (sending to station %2)").arg(connectionName).arg(station));
+    m_targetLabel->setText(tr("Traffic of \u201c%1\u201d (sending to station %2)")
+                               .arg(target.connectionName())
+                               .arg(target.station()));
     if (sameLink)
         return;
-    // A deleted session leaves the console in "no connection".
-    m_sessionGone = connect(session, &QObject::destroyed, this,
-                            [this] { setTarget(nullptr, m_station, {}); });
+    // A closed link leaves the console in "no connection".
+    m_linkGone = connect(target.link(), &QObject::destroyed, this,
+                         [this] { setTarget(PlcTarget(nullptr, m_target.station(), {})); });
     if (isOnScreen())
         startShowing();
 }
@@ -180,7 +181,7 @@ void RawConsole::listen(bool on)
         m_logListener = {};
         return;
     }
-    m_logListener = connect(m_session->trafficLog(), &TrafficLog::entriesAdded, this, [this] {
+    m_logListener = connect(m_target.trafficLog(), &TrafficLog::entriesAdded, this, [this] {
         if (isOnScreen() && !m_fetchTimer.isActive())
             m_fetchTimer.start();
     });
@@ -195,14 +196,14 @@ void RawConsole::hideEvent(QHideEvent *event)
 void RawConsole::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
-    if (m_session && isOnScreen())
+    if (m_target.isDirect() && isOnScreen())
         startShowing();
 }
 
 void RawConsole::setOnScreen(bool onScreen)
 {
     m_tabShown = onScreen;
-    if (m_session && isOnScreen())
+    if (m_target.isDirect() && isOnScreen())
         startShowing();
     else if (!isOnScreen())
         listen(false);
@@ -210,7 +211,7 @@ void RawConsole::setOnScreen(bool onScreen)
 
 void RawConsole::startShowing()
 {
-    m_session->trafficLog()->growCapacity(TrafficLog::fullCapacity);
+    m_target.trafficLog()->growCapacity(TrafficLog::fullCapacity);
     listen(true);
     fetch();
 }
@@ -241,9 +242,9 @@ bool RawConsole::isPaused() const
 
 void RawConsole::fetch()
 {
-    if (!m_session || isPaused() || !isOnScreen())
+    if (!m_target.isDirect() || isPaused() || !isOnScreen())
         return;
-    const QList<TrafficEntry> entries = m_session->trafficLog()->entries(m_lastSequence);
+    const QList<TrafficEntry> entries = m_target.trafficLog()->entries(m_lastSequence);
     if (entries.isEmpty())
         return;
     if (entries.first().sequence > m_lastSequence + 1) {

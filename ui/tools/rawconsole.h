@@ -2,7 +2,6 @@
 
 #include "ui/common/toolconfirmation.h"
 
-#include <QPointer>
 #include <QTimer>
 #include <QWidget>
 
@@ -16,7 +15,6 @@ class QTableView;
 namespace Fatek {
 
 class RawSendBar;
-class Session;
 class TrafficFilterProxy;
 class TrafficLogModel;
 
@@ -30,7 +28,7 @@ public:
     explicit RawConsole(QWidget *parent = nullptr);
 
     // session may be nullptr: the console shows "no connection" and disables sending.
-    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
+    void setTarget(const PlcTarget &target);
 
     // Test hook: answers the confirmation questions instead of a message box.
     void setConfirmer(Confirmer confirmer);
@@ -70,10 +68,9 @@ private:
     void applyFilters();
     QString rowsText(bool selectedOnly) const;
 
-    QPointer<Session> m_session;
-    bool m_attached = false; // m_session was set (a QPointer also reads null once deleted)
-    quint8 m_station = 1;
-    QMetaObject::Connection m_sessionGone;
+    PlcTarget m_target;
+    bool m_attached = false; // a direct link was set (its QPointer also reads null once deleted)
+    QMetaObject::Connection m_linkGone;
     QMetaObject::Connection m_logListener; // the log's entriesAdded, while on screen
     quint64 m_lastSequence = 0;
     bool m_followTail = true;

@@ -4,7 +4,6 @@
 #include "core/protocol/rawframe.h"
 #include "core/session/qtbytes.h"
 #include "core/session/requesttracker.h"
-#include "core/session/session.h"
 #include "ui/common/toolpalette.h"
 #include "ui/common/uitext.h"
 
@@ -61,22 +60,18 @@ RawSendBar::RawSendBar(QWidget *parent)
     connect(m_input, &QLineEdit::returnPressed, this, &RawSendBar::send);
     connect(m_mode, &QComboBox::currentIndexChanged, this, &RawSendBar::updateFramingLabel);
     connect(m_framing, &QCheckBox::toggled, this, &RawSendBar::updateFramingLabel);
-    setTarget(nullptr, 1, {});
+    setTarget(PlcTarget());
 }
 
-void RawSendBar::setTarget(Session *session, quint8 station, const QString &connectionName)
+void RawSendBar::setTarget(const PlcTarget &target)
 {
-    if (m_session)
-        disconnect(m_session, nullptr, this, nullptr);
-    m_session = session;
-    m_station = station;
-    m_connectionName = connectionName;
-    m_requests->setSession(session);
+    disconnect(m_protocolDetected);
+    m_target = target;
+    target.aim(m_requests);
     m_requests->forgetPending();
     m_busy = false;
-    if (session)
-        connect(session, &Session::protocolDetected, this, &RawSendBar::updateFramingLabel);
-    ToolPalette::showMessage(m_result, session ? QString() : tr("No connection."), false);
+    m_protocolDetected = target.onProtocolDetected(this, [this] { updateFramingLabel(); });
+    ToolPalette::showMessage(m_result, target.isDirect() ? QString() : tr("No connection."), false);
     updateFramingLabel();
     updateEnabled();
 }
@@ -103,11 +98,7 @@ QString RawSendBar::resultText() const
 
 bool RawSendBar::framingIsFacon() const
 {
-    if (!m_session)
-        return true;
-    if (m_session->isProtocolKnown())
-        return m_session->protocol() == Protocol::Facon;
-    return m_session->settings().protocol != LinkSettings::ProtocolChoice::Binary;
+    return m_target.framing() == Protocol::Facon;
 }
 
 void RawSendBar::updateFramingLabel()
@@ -127,12 +118,12 @@ void RawSendBar::updateFramingLabel()
 
 void RawSendBar::updateEnabled()
 {
-    m_send->setEnabled(!m_session.isNull() && !m_busy);
+    m_send->setEnabled(m_target.isDirect() && !m_busy);
 }
 
 void RawSendBar::send()
 {
-    if (!m_session || m_busy)
+    if (!m_target.isDirect() || m_busy)
         return;
     const bool hex = m_mode->currentIndex() == 0;
     const Result<Bytes> typed = FrameText::parse(
@@ -152,7 +143,7 @@ void RawSendBar::send()
     const bool harmless = header && isKnownCommand(header->command)
                           && !isWriteCommand(static_cast<Command>(header->command));
     // In operator mode the session refuses it with its own message: no question first.
-    if (!harmless && !m_session->isReadOnly()) {
+    if (!harmless && !m_target.isReadOnly()) {
         // Name the command as the PLC manual does ("RUN/STOP control"), with its code.
         const QString what
             = header ? (isKnownCommand(header->command)
@@ -164,9 +155,8 @@ void RawSendBar::send()
                                   .arg(QString::number(header->command, 16).toUpper())
                                   .arg(header->station))
                      : tr("an unrecognized frame");
-        const QString question
-            = tr("Send %1 (%2) on %3? It may change the PLC.")
-                  .arg(what, asciiOf(frame), ToolConfirmation::target(m_station, m_connectionName));
+        const QString question = tr("Send %1 (%2) on %3? It may change the PLC.")
+                                     .arg(what, asciiOf(frame), ToolConfirmation::target(m_target));
         if (!ToolConfirmation::ask(this, tr("Send raw frame"), question, m_confirmer)) {
             ToolPalette::showMessage(m_result, tr("Cancelled: nothing sent."), false);
             return;
@@ -180,7 +170,7 @@ void RawSendBar::send()
     // The station the frame is for (the session's statistics); the framing is named, so no
     // auto-detect probe goes first.
     RequestOptions options;
-    options.station = m_station;
+    options.station = m_target.station();
     if (framing)
         options.framing = protocol;
     m_requests->sendRaw(

@@ -14,7 +14,6 @@ class QPushButton;
 namespace Fatek {
 
 class RequestTracker;
-class Session;
 class SessionResult;
 
 // The console's send line: a frame typed in hex or ASCII, optionally framed with the link's
@@ -28,7 +27,7 @@ public:
 
     explicit RawSendBar(QWidget *parent = nullptr);
 
-    void setTarget(Session *session, quint8 station, const QString &connectionName);
+    void setTarget(const PlcTarget &target);
     void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
 
     void setMode(Mode mode);
@@ -50,9 +49,8 @@ private:
     bool framingIsFacon() const;
 
     RequestTracker *m_requests;
-    QPointer<Session> m_session;
-    quint8 m_station = 1;
-    QString m_connectionName;
+    PlcTarget m_target;
+    QMetaObject::Connection m_protocolDetected;
     Confirmer m_confirmer;
     bool m_busy = false;
     int m_answers = 0;

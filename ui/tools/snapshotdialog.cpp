@@ -4,14 +4,10 @@
 #include "core/commission/snapshotfile.h"
 #include "core/commission/snapshotreader.h"
 #include "core/commission/valuesrestorer.h"
-#include "core/session/session.h"
 #include "core/watch/safefile.h"
 #include "snapshotdiffmodel.h"
-#include "ui/common/messageline.h"
 #include "ui/common/uitext.h"
 
-#include <QDialogButtonBox>
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -30,12 +26,11 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
     : QDialog(parent)
     , m_reader(new SnapshotReader(this))
     , m_restorer(new ValuesRestorer(this))
+    // Closed while it reads or writes: nothing goes on behind the person's back.
+    , m_frame(new ToolDialogFrame(this, 2, QStringLiteral("message"), [this] { cancel(); }))
 {
     setWindowTitle(tr("Memory Snapshot"));
-    auto *layout = new QVBoxLayout(this);
-    m_targetLabel = new QLabel(this);
-    m_targetLabel->setObjectName(QStringLiteral("targetLabel"));
-    layout->addWidget(m_targetLabel);
+    QVBoxLayout *layout = m_frame->content();
 
     auto *form = new QFormLayout;
     m_ranges = new QLineEdit(this);
@@ -109,40 +104,21 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
     restoreRow->addWidget(m_restore);
     layout->addLayout(restoreRow);
 
-    m_message = new MessageLine(2, this);
-    m_message->setObjectName(QStringLiteral("message"));
-    layout->addWidget(m_message);
-    auto *box = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    layout->addWidget(box);
-    connect(box, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    // Closed while it reads or writes: nothing goes on behind the person's back.
-    connect(this, &QDialog::rejected, this, &SnapshotDialog::cancel);
-
     connect(m_take, &QPushButton::clicked, this, &SnapshotDialog::takeSnapshot);
     connect(m_cancel, &QPushButton::clicked, this, &SnapshotDialog::cancel);
     connect(m_comparePlc, &QPushButton::clicked, this, &SnapshotDialog::compareWithPlc);
     connect(m_restore, &QPushButton::clicked, this, &SnapshotDialog::restoreValues);
-    connect(m_save, &QPushButton::clicked, this, [this] {
-        const QString path
-            = QFileDialog::getSaveFileName(this, tr("Save Snapshot"), {}, fileFilter());
-        if (!path.isEmpty())
-            saveSnapshot(path);
-    });
+    connect(m_save, &QPushButton::clicked, this,
+            [this] { pickSnapshotFile(true, tr("Save Snapshot"), &SnapshotDialog::saveSnapshot); });
     connect(m_open, &QPushButton::clicked, this, [this] {
-        const QString path
-            = QFileDialog::getOpenFileName(this, tr("Open Snapshot"), {}, fileFilter());
-        if (!path.isEmpty())
-            openSnapshot(path);
+        pickSnapshotFile(false, tr("Open Snapshot"), &SnapshotDialog::openSnapshot);
     });
     connect(m_compareFile, &QPushButton::clicked, this, [this] {
-        const QString path
-            = QFileDialog::getOpenFileName(this, tr("Compare With File"), {}, fileFilter());
-        if (!path.isEmpty())
-            compareWithFile(path);
+        pickSnapshotFile(false, tr("Compare With File"), &SnapshotDialog::compareWithFile);
     });
     connect(m_export, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export Differences"), {},
-                                                          tr("CSV files (*.csv)"));
+        const QString path
+            = m_frame->chooseFile({true, tr("Export Differences"), tr("CSV files (*.csv)"), {}});
         if (!path.isEmpty())
             exportDifferences(path);
     });
@@ -161,29 +137,27 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
             onSnapshotRead();
     });
     connect(m_restorer, &ValuesRestorer::finished, this, &SnapshotDialog::onRestored);
-    setTarget(nullptr, 1, {});
+    setTarget(PlcTarget());
     resize(640, 560);
 }
 
-QString SnapshotDialog::fileFilter() const
+void SnapshotDialog::pickSnapshotFile(bool save, const QString &title,
+                                      bool (SnapshotDialog::*use)(const QString &))
 {
-    return tr("Snapshots (*.json *.csv)");
+    const QString path = m_frame->chooseFile({save, title, tr("Snapshots (*.json *.csv)"), {}});
+    if (!path.isEmpty())
+        (this->*use)(path);
 }
 
-void SnapshotDialog::setTarget(Session *session, quint8 station, const QString &connectionName)
+void SnapshotDialog::setTarget(const PlcTarget &target)
 {
     if (isBusy()) {
         cancel();
         showMessage(tr("Stopped: the target changed."), true);
     }
-    m_session = session;
-    m_station = station;
-    m_connectionName = connectionName;
-    m_reader->setSession(session);
-    m_restorer->setSession(session);
-    m_targetLabel->setText(session
-                               ? tr("Station %1 on \u201c%2\u201d").arg(station).arg(connectionName)
-                               : tr("No connection: choose a connection and a station."));
+    m_frame->setTarget(target);
+    target.aim(m_reader);
+    target.aim(m_restorer);
     updateControls();
 }
 
@@ -209,7 +183,7 @@ int SnapshotDialog::visibleDifferences() const
 
 QString SnapshotDialog::messageText() const
 {
-    return m_message->text();
+    return m_frame->messageText();
 }
 
 bool SnapshotDialog::isBusy() const
@@ -219,13 +193,13 @@ bool SnapshotDialog::isBusy() const
 
 void SnapshotDialog::showMessage(const QString &text, bool error)
 {
-    m_message->setMessage(text, error);
+    m_frame->showMessage(text, error);
 }
 
 void SnapshotDialog::updateControls()
 {
     const bool busy = isBusy();
-    const bool connected = !m_session.isNull();
+    const bool connected = m_frame->target().isDirect();
     const bool have = m_snapshot.has_value();
     m_take->setEnabled(connected && !busy);
     m_cancel->setEnabled(busy);
@@ -252,7 +226,7 @@ void SnapshotDialog::updateControls()
 
 void SnapshotDialog::takeSnapshot()
 {
-    if (!m_session || isBusy())
+    if (!m_frame->target().isDirect() || isBusy())
         return;
     const auto ranges = Snapshot::parseRanges(m_ranges->text());
     if (!ranges) {
@@ -261,7 +235,7 @@ void SnapshotDialog::takeSnapshot()
     }
     m_comparing = false;
     showMessage(tr("Reading…"), false);
-    m_reader->start(m_station, ranges.value());
+    m_reader->start(m_frame->target().station(), ranges.value());
     updateControls();
 }
 
@@ -288,7 +262,7 @@ void SnapshotDialog::onSnapshotRead()
 
 void SnapshotDialog::compareWithPlc()
 {
-    if (!m_session || !m_snapshot || isBusy())
+    if (!m_frame->target().isDirect() || !m_snapshot || isBusy())
         return;
     std::vector<Address> addresses;
     addresses.reserve(m_snapshot->values.size());
@@ -296,7 +270,7 @@ void SnapshotDialog::compareWithPlc()
         addresses.push_back(v.address);
     m_comparing = true;
     showMessage(tr("Reading…"), false);
-    m_reader->start(m_station, Snapshot::rangesOf(addresses));
+    m_reader->start(m_frame->target().station(), Snapshot::rangesOf(addresses));
     updateControls();
 }
 
@@ -375,9 +349,9 @@ bool SnapshotDialog::exportDifferences(const QString &path)
 
 void SnapshotDialog::restoreValues()
 {
-    if (!m_session || !m_snapshot || isBusy())
+    if (!m_frame->target().isDirect() || !m_snapshot || isBusy())
         return;
-    if (m_session->isReadOnly()) {
+    if (m_frame->target().isReadOnly()) {
         // The restorer refuses too; saying it here spares the question.
         showMessage(translated(msg<MsgId::RestoreReadOnly>()), true);
         return;
@@ -393,13 +367,13 @@ void SnapshotDialog::restoreValues()
         showMessage(translated(msg<MsgId::RestoreNothing>()), true);
         return;
     }
-    const auto frames = ValuesRestorer::writeRequests(m_station, values).size();
+    const auto frames = ValuesRestorer::writeRequests(m_frame->target().station(), values).size();
     const QString question
         = tr("Write %1 values of the snapshot to %2 in %3 requests, then read them back?")
               .arg(values.size())
-              .arg(ToolConfirmation::target(m_station, m_connectionName))
+              .arg(m_frame->targetText())
               .arg(frames);
-    if (!ToolConfirmation::ask(this, tr("Restore Values"), question, m_confirmer)) {
+    if (!m_frame->ask(tr("Restore Values"), question)) {
         showMessage(tr("Not restored: nothing was written."), false);
         return;
     }
@@ -411,7 +385,7 @@ void SnapshotDialog::startRestore(bool otherModel)
 {
     showMessage(tr("Writing…"), false);
     m_restorer->setAllowOtherModel(otherModel);
-    m_restorer->start(m_station, m_restoreValues, m_snapshot->info.model);
+    m_restorer->start(m_frame->target().station(), m_restoreValues, m_snapshot->info.model);
     updateControls();
 }
 
@@ -423,9 +397,8 @@ void SnapshotDialog::onRestored()
             = tr("The snapshot is of another model than the PLC at %1.\n\nSnapshot: %2\nPLC: "
                  "%3\n\nWrite its values all the same? Elements the PLC does not have are "
                  "refused before anything is written.")
-                  .arg(ToolConfirmation::target(m_station, m_connectionName),
-                       m_snapshot->info.model, m_restorer->plcModel());
-        if (ToolConfirmation::ask(this, tr("Restore Values"), question, m_confirmer))
+                  .arg(m_frame->targetText(), m_snapshot->info.model, m_restorer->plcModel());
+        if (m_frame->ask(tr("Restore Values"), question))
             return startRestore(true);
     }
     if (!m_restorer->error())

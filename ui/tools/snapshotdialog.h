@@ -1,10 +1,9 @@
 #pragma once
 
 #include "core/commission/memorysnapshot.h"
-#include "ui/common/toolconfirmation.h"
+#include "tooldialogframe.h"
 
 #include <QDialog>
-#include <QPointer>
 
 #include <optional>
 
@@ -17,8 +16,6 @@ class QTableView;
 
 namespace Fatek {
 
-class MessageLine;
-class Session;
 class SnapshotDiffModel;
 class SnapshotReader;
 class ValuesRestorer;
@@ -34,10 +31,14 @@ class SnapshotDialog : public QDialog
 public:
     explicit SnapshotDialog(QWidget *parent = nullptr);
 
-    // session may be nullptr: the dialog shows "no connection"; files can still be compared.
-    void setTarget(Fatek::Session *session, quint8 station, const QString &connectionName);
-    // Tests answer the restore question without a modal box.
-    void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
+    // Without a direct link the dialog shows "no connection"; files can still be compared.
+    void setTarget(const PlcTarget &target);
+    // Tests answer the restore question and pick the files without modal dialogs.
+    void setConfirmer(Confirmer confirmer) { m_frame->setConfirmer(std::move(confirmer)); }
+    void setFileChooser(ToolDialogFrame::FileChooser chooser)
+    {
+        m_frame->setFileChooser(std::move(chooser));
+    }
 
     void setRanges(const QString &text);
     void setRestoreRanges(const QString &text);
@@ -74,19 +75,17 @@ private:
     void onRestored();
     void showMessage(const QString &text, bool error);
     void updateControls();
-    QString fileFilter() const;
+    // Asks for a snapshot file (JSON or CSV) and hands its path to `use`.
+    void pickSnapshotFile(bool save, const QString &title,
+                          bool (SnapshotDialog::*use)(const QString &));
 
     SnapshotReader *m_reader;
     ValuesRestorer *m_restorer;
-    QPointer<Session> m_session;
-    quint8 m_station = 1;
-    QString m_connectionName;
-    Confirmer m_confirmer;
+    ToolDialogFrame *m_frame;
     std::optional<MemorySnapshot> m_snapshot;
     std::vector<SnapshotValue> m_restoreValues; // what the confirmed restore writes
     bool m_comparing = false;
 
-    QLabel *m_targetLabel;
     QLineEdit *m_ranges;
     QPushButton *m_take;
     QPushButton *m_cancel;
@@ -103,7 +102,6 @@ private:
     QSortFilterProxyModel *m_proxy;
     QLineEdit *m_restoreRanges;
     QPushButton *m_restore;
-    MessageLine *m_message;
 };
 
 } // namespace Fatek

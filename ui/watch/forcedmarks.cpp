@@ -1,7 +1,6 @@
 #include "forcedmarks.h"
 
 #include "core/session/requesttracker.h"
-#include "core/session/session.h"
 #include "watchtablemodel.h"
 
 #include <map>
@@ -18,14 +17,14 @@ ForcedMarks::ForcedMarks(WatchTableModel *model, QObject *parent)
     connect(&m_timer, &QTimer::timeout, this, &ForcedMarks::readBurst);
 }
 
-void ForcedMarks::setSession(Session *session)
+void ForcedMarks::setTarget(const PlcTarget &target)
 {
-    m_requests->setSession(session);
+    target.aim(m_requests);
     m_requests->forgetPending();
     ++m_generation;
     m_pending = 0;
     m_model->clearForced();
-    if (session)
+    if (target.isDirect())
         m_timer.start();
     else
         m_timer.stop();

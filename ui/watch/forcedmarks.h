@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/plant/plctarget.h"
+
 #include <QObject>
 #include <QTimer>
 
@@ -8,7 +10,6 @@
 namespace Fatek {
 
 class RequestTracker;
-class Session;
 class WatchTableModel;
 
 // Keeps the "forced" marks of a watch table's discretes current: once a second at most it reads
@@ -25,8 +26,9 @@ public:
 
     ForcedMarks(WatchTableModel *model, QObject *parent = nullptr);
 
-    // nullptr stops the reads and forgets every mark.
-    void setSession(Session *session);
+    // Reads through `target`'s link (every station of the table's rows, not only the target's);
+    // without a direct link the reads stop and every mark is forgotten.
+    void setTarget(const PlcTarget &target);
     void setActiveCheck(std::function<bool()> active) { m_active = std::move(active); }
 
 private:

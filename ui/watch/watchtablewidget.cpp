@@ -515,7 +515,9 @@ void WatchTableWidget::setConnection(Connection *connection)
         m_model->setSilentStations({});
         m_model->markAllStale(tr("no connection"));
     }
-    m_forcedMarks->setSession(connection ? connection->session() : nullptr);
+    m_forcedMarks->setTarget(
+        connection ? PlcTarget(connection->link(), connection->station(), connection->name())
+                   : PlcTarget());
     // A link whose far end sets the intervals (its own configuration): the spin box would change
     // nothing.
     const bool fixed = connection && !connection->link()->takesIntervals();

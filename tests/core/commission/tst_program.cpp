@@ -121,7 +121,7 @@ bool TestProgram::open(bool running)
 
 void TestProgram::cleanup()
 {
-    m_rig.session.reset();
+    m_rig.link.reset();
     m_rig.server.reset();
     m_rig.plc.reset();
 }
@@ -129,7 +129,7 @@ void TestProgram::cleanup()
 ProgramTransferResult TestProgram::run(ProgramTransfer &transfer,
                                        const std::function<bool()> &start)
 {
-    transfer.setSession(m_rig.session.get());
+    transfer.setSession(m_rig.session());
     QSignalSpy done(&transfer, &ProgramTransfer::finished);
     if (!start())
         return {};
@@ -429,7 +429,7 @@ void TestProgram::mSeriesNamedInBackup()
 void TestProgram::restoreRefusedInOperatorMode()
 {
     QVERIFY(open(false));
-    m_rig.session->setReadOnly(true);
+    m_rig.session()->setReadOnly(true);
     const auto before = plcPages(*m_rig.plc);
     const quint64 framesBefore = frames();
     ProgramTransfer transfer;

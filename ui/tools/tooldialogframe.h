@@ -1,0 +1,80 @@
+#pragma once
+
+#include "core/plant/plctarget.h"
+#include "ui/common/toolconfirmation.h"
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+
+class QDialog;
+class QLabel;
+class QVBoxLayout;
+
+namespace Fatek {
+
+class MessageLine;
+
+// The frame every commissioning dialog shares (Loopback Test, Program Backup / Restore, Memory
+// Snapshot, I/O Checkout): the target line at the top, the message line and Close at the bottom,
+// the dialog's own controls between them (content()). Closing the dialog (Close, Esc, the
+// window's button) cancels its running job: nothing goes on behind the person's back. It holds
+// the target, asks the dialog's questions and picks its files, each with an automatic answer for
+// tests so that no modal dialog blocks them.
+class ToolDialogFrame : public QObject
+{
+    Q_OBJECT
+
+public:
+    // A file the dialog asks for: to open or to save, the file dialog's title and filter, the
+    // name a save suggests.
+    struct FileQuestion
+    {
+        bool save = false;
+        QString title;
+        QString filter;
+        QString suggested;
+    };
+    // Returns the chosen path; empty: the person cancelled.
+    using FileChooser = std::function<QString(const FileQuestion &question)>;
+
+    // Lays `dialog` out; `cancel` stops its job when it is closed. The message line keeps
+    // `messageLines` lines and is named `messageName` (tests and the translation check find it).
+    ToolDialogFrame(QDialog *dialog, int messageLines, const QString &messageName,
+                    std::function<void()> cancel);
+
+    // Where the dialog puts its own controls (between the target line and the message line).
+    QVBoxLayout *content() const { return m_content; }
+
+    // Shows "Station 1 on “Line 3”", or that there is no connection; `note` follows the station
+    // (the dialog's operator-mode remark) when the tools can talk to the PLC.
+    void setTarget(const PlcTarget &target, const QString &note = {});
+    const PlcTarget &target() const { return m_target; }
+    // How a question names the target: "station 1 on “Line 3 (TCP 10.0.0.5:500)”".
+    QString targetText() const;
+
+    void showMessage(const QString &text, bool error);
+    void clearMessage();
+    QString messageText() const;
+    bool messageIsError() const;
+
+    void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
+    // Yes/No, default No (or the confirmer's answer).
+    bool ask(const QString &title, const QString &question) const;
+
+    void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+    // The file dialog (or the chooser's answer); empty: cancelled.
+    QString chooseFile(const FileQuestion &question) const;
+
+private:
+    QDialog *m_dialog;
+    QVBoxLayout *m_content;
+    QLabel *m_targetLabel;
+    MessageLine *m_message;
+    PlcTarget m_target;
+    Confirmer m_confirmer;
+    FileChooser m_chooser;
+};
+
+} // namespace Fatek
