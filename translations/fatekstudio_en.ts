@@ -2329,6 +2329,9 @@
             <source>(no port)</source>
             <translation>(no port)</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::SavedConnection</name>
         <message>
             <source>MQTT gateway %1 on %2 (prefix %3)</source>
             <translation>MQTT gateway %1 on %2 (prefix %3)</translation>

@@ -2329,6 +2329,9 @@
             <source>(no port)</source>
             <translation>（無連接埠）</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::SavedConnection</name>
         <message>
             <source>MQTT gateway %1 on %2 (prefix %3)</source>
             <translation>MQTT 閘道器 %1，位於 %2（前綴 %3）</translation>
