@@ -4235,6 +4235,9 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <comment>quality, age of the value</comment>
             <translation>%1, %2</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableEdits</name>
         <message numerus="yes">
             <source>Add %n item(s)</source>
             <translation>

@@ -4224,6 +4224,9 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <comment>quality, age of the value</comment>
             <translation>%1，%2</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableEdits</name>
         <message numerus="yes">
             <source>Add %n item(s)</source>
             <translation>
