@@ -4279,14 +4279,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
     <context>
         <name>Fatek::WatchTableWidget</name>
         <message>
-            <source>Wrote %1. %2</source>
-            <translation>Wrote %1. %2</translation>
-        </message>
-        <message>
-            <source>Write of %1: %2</source>
-            <translation>Write of %1: %2</translation>
-        </message>
-        <message>
             <source>Watch</source>
             <translation>Watch</translation>
         </message>
@@ -4335,34 +4327,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Every</translation>
         </message>
         <message>
-            <source>&amp;Write Value…</source>
-            <translation>&amp;Write Value…</translation>
-        </message>
-        <message>
-            <source>&amp;Swap Words</source>
-            <translation>&amp;Swap Words</translation>
-        </message>
-        <message>
-            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
-            <translation>Low word first for 32- and 64-bit values (some HMIs store floats so)</translation>
-        </message>
-        <message>
-            <source>&amp;Paste Items</source>
-            <translation>&amp;Paste Items</translation>
-        </message>
-        <message>
-            <source>&amp;Remove</source>
-            <translation>&amp;Remove</translation>
-        </message>
-        <message>
-            <source>Add to &amp;Trend</source>
-            <translation>Add to &amp;Trend</translation>
-        </message>
-        <message>
-            <source>Plot the selected items over time in the trend view</source>
-            <translation>Plot the selected items over time in the trend view</translation>
-        </message>
-        <message>
             <source>polling paused</source>
             <translation>polling paused</translation>
         </message>
@@ -4397,6 +4361,35 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             </translation>
         </message>
         <message>
+            <source>%1 is connected again; %2 was not written.</source>
+            <translation>%1 is connected again; %2 was not written.</translation>
+        </message>
+        <message numerus="yes">
+            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
+            <translation>
+                <numerusform>Added %n item, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
+                <numerusform>Added %n items, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Filter: address, name or comment</source>
+            <translation>Filter: address, name or comment</translation>
+        </message>
+        <message>
+            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
+            <translation>Show only the rows whose address, name or comment contains this text (Ctrl+F)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Copied %n row(s).</source>
+            <translation>
+                <numerusform>Copied %n row(s).</numerusform>
+                <numerusform>Copied %n row(s).</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableWriter</name>
+        <message>
             <source>%1 (station %2) = %3</source>
             <translation>%1 (station %2) = %3</translation>
         </message>
@@ -4425,39 +4418,43 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Wrote %1.</translation>
         </message>
         <message>
-            <source>Write of %1 failed: %2</source>
-            <translation>Write of %1 failed: %2</translation>
+            <source>Wrote %1. %2</source>
+            <translation>Wrote %1. %2</translation>
         </message>
         <message>
-            <source>%1 is connected again; %2 was not written.</source>
-            <translation>%1 is connected again; %2 was not written.</translation>
+            <source>Write of %1: %2</source>
+            <translation>Write of %1: %2</translation>
+        </message>
+        <message>
+            <source>Write of %1 failed: %2</source>
+            <translation>Write of %1 failed: %2</translation>
         </message>
         <message>
             <source>%1 %2</source>
             <translation>%1 %2</translation>
         </message>
         <message>
-            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
-            <translation>New value for %1 (%2; hex as 0x1A or 1Ah):</translation>
-        </message>
-        <message numerus="yes">
-            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
-            <translation>
-                <numerusform>Added %n item, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
-                <numerusform>Added %n items, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>Operator mode (read-only): %1 cannot be written.</translation>
         </message>
         <message>
-            <source>Filter: address, name or comment</source>
-            <translation>Filter: address, name or comment</translation>
+            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
+            <translation>New value for %1 (%2; hex as 0x1A or 1Ah):</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableActions</name>
+        <message>
+            <source>&amp;Write Value…</source>
+            <translation>&amp;Write Value…</translation>
         </message>
         <message>
-            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
-            <translation>Show only the rows whose address, name or comment contains this text (Ctrl+F)</translation>
+            <source>&amp;Swap Words</source>
+            <translation>&amp;Swap Words</translation>
+        </message>
+        <message>
+            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
+            <translation>Low word first for 32- and 64-bit values (some HMIs store floats so)</translation>
         </message>
         <message>
             <source>&amp;Copy Rows</source>
@@ -4466,6 +4463,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Address, name, value, format, quality and comment of the selected rows as tab-separated text</source>
             <translation>Address, name, value, format, quality and comment of the selected rows as tab-separated text</translation>
+        </message>
+        <message>
+            <source>&amp;Paste Items</source>
+            <translation>&amp;Paste Items</translation>
+        </message>
+        <message>
+            <source>&amp;Remove</source>
+            <translation>&amp;Remove</translation>
         </message>
         <message>
             <source>&amp;Undo</source>
@@ -4495,12 +4500,13 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Set &amp;Format</source>
             <translation>Set &amp;Format</translation>
         </message>
-        <message numerus="yes">
-            <source>Copied %n row(s).</source>
-            <translation>
-                <numerusform>Copied %n row(s).</numerusform>
-                <numerusform>Copied %n row(s).</numerusform>
-            </translation>
+        <message>
+            <source>Add to &amp;Trend</source>
+            <translation>Add to &amp;Trend</translation>
+        </message>
+        <message>
+            <source>Plot the selected items over time in the trend view</source>
+            <translation>Plot the selected items over time in the trend view</translation>
         </message>
     </context>
     <context>

@@ -4265,14 +4265,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
     <context>
         <name>Fatek::WatchTableWidget</name>
         <message>
-            <source>Wrote %1. %2</source>
-            <translation>已寫入 %1。%2</translation>
-        </message>
-        <message>
-            <source>Write of %1: %2</source>
-            <translation>寫入 %1：%2</translation>
-        </message>
-        <message>
             <source>Watch</source>
             <translation>監看</translation>
         </message>
@@ -4321,34 +4313,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>每隔</translation>
         </message>
         <message>
-            <source>&amp;Write Value…</source>
-            <translation>寫入數值(&amp;W)…</translation>
-        </message>
-        <message>
-            <source>&amp;Swap Words</source>
-            <translation>字組對調(&amp;S)</translation>
-        </message>
-        <message>
-            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
-            <translation>32 與 64 位元數值低字組在前（部分人機介面如此儲存浮點數）</translation>
-        </message>
-        <message>
-            <source>&amp;Paste Items</source>
-            <translation>貼上項目(&amp;P)</translation>
-        </message>
-        <message>
-            <source>&amp;Remove</source>
-            <translation>移除(&amp;R)</translation>
-        </message>
-        <message>
-            <source>Add to &amp;Trend</source>
-            <translation>加入趨勢圖(&amp;T)</translation>
-        </message>
-        <message>
-            <source>Plot the selected items over time in the trend view</source>
-            <translation>在趨勢圖中繪製選取項目隨時間的變化</translation>
-        </message>
-        <message>
             <source>polling paused</source>
             <translation>輪詢已暫停</translation>
         </message>
@@ -4381,6 +4345,33 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             </translation>
         </message>
         <message>
+            <source>%1 is connected again; %2 was not written.</source>
+            <translation>%1 已重新連線；%2 未寫入。</translation>
+        </message>
+        <message numerus="yes">
+            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
+            <translation>
+                <numerusform>已加入 %n 個項目，每個計時器與計數器接點旁附上其目前值（RT/RC）。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Filter: address, name or comment</source>
+            <translation>篩選：位址、名稱或註解</translation>
+        </message>
+        <message>
+            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
+            <translation>只顯示位址、名稱或註解含有此文字的列（Ctrl+F）</translation>
+        </message>
+        <message numerus="yes">
+            <source>Copied %n row(s).</source>
+            <translation>
+                <numerusform>已複製 %n 列。</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableWriter</name>
+        <message>
             <source>%1 (station %2) = %3</source>
             <translation>%1（站號 %2）= %3</translation>
         </message>
@@ -4409,38 +4400,43 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>已寫入 %1。</translation>
         </message>
         <message>
-            <source>Write of %1 failed: %2</source>
-            <translation>寫入 %1 失敗：%2</translation>
+            <source>Wrote %1. %2</source>
+            <translation>已寫入 %1。%2</translation>
         </message>
         <message>
-            <source>%1 is connected again; %2 was not written.</source>
-            <translation>%1 已重新連線；%2 未寫入。</translation>
+            <source>Write of %1: %2</source>
+            <translation>寫入 %1：%2</translation>
+        </message>
+        <message>
+            <source>Write of %1 failed: %2</source>
+            <translation>寫入 %1 失敗：%2</translation>
         </message>
         <message>
             <source>%1 %2</source>
             <translation>%1 %2</translation>
         </message>
         <message>
-            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
-            <translation>%1 的新數值（%2；十六進位請寫成 0x1A 或 1Ah）：</translation>
-        </message>
-        <message numerus="yes">
-            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
-            <translation>
-                <numerusform>已加入 %n 個項目，每個計時器與計數器接點旁附上其目前值（RT/RC）。</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>操作員模式（唯讀）：無法寫入 %1。</translation>
         </message>
         <message>
-            <source>Filter: address, name or comment</source>
-            <translation>篩選：位址、名稱或註解</translation>
+            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
+            <translation>%1 的新數值（%2；十六進位請寫成 0x1A 或 1Ah）：</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableActions</name>
+        <message>
+            <source>&amp;Write Value…</source>
+            <translation>寫入數值(&amp;W)…</translation>
         </message>
         <message>
-            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
-            <translation>只顯示位址、名稱或註解含有此文字的列（Ctrl+F）</translation>
+            <source>&amp;Swap Words</source>
+            <translation>字組對調(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
+            <translation>32 與 64 位元數值低字組在前（部分人機介面如此儲存浮點數）</translation>
         </message>
         <message>
             <source>&amp;Copy Rows</source>
@@ -4449,6 +4445,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Address, name, value, format, quality and comment of the selected rows as tab-separated text</source>
             <translation>所選各列的位址、名稱、數值、格式、品質與註解，以定位字元分隔的文字</translation>
+        </message>
+        <message>
+            <source>&amp;Paste Items</source>
+            <translation>貼上項目(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Remove</source>
+            <translation>移除(&amp;R)</translation>
         </message>
         <message>
             <source>&amp;Undo</source>
@@ -4478,11 +4482,13 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Set &amp;Format</source>
             <translation>設定格式(&amp;F)</translation>
         </message>
-        <message numerus="yes">
-            <source>Copied %n row(s).</source>
-            <translation>
-                <numerusform>已複製 %n 列。</numerusform>
-            </translation>
+        <message>
+            <source>Add to &amp;Trend</source>
+            <translation>加入趨勢圖(&amp;T)</translation>
+        </message>
+        <message>
+            <source>Plot the selected items over time in the trend view</source>
+            <translation>在趨勢圖中繪製選取項目隨時間的變化</translation>
         </message>
     </context>
     <context>
