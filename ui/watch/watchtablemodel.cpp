@@ -103,6 +103,35 @@ QList<WatchedItem> WatchTableModel::watchItems(int intervalMs) const
     return items;
 }
 
+QString WatchTableModel::rowsText(const QList<int> &rows) const
+{
+    // A field with the separator of pasted rows (tab, turned into ';' by the paste) or a quote
+    // is quoted, as CSV quotes it.
+    const auto field = [](QString text) {
+        if (text.contains(QLatin1Char(';')) || text.contains(QLatin1Char('"'))
+            || text.contains(QLatin1Char('\t')) || text.contains(QLatin1Char('\n'))) {
+            text.replace(QLatin1Char('"'), QLatin1String("\"\""));
+            text = QLatin1Char('"') + text + QLatin1Char('"');
+        }
+        return text;
+    };
+    // The header's words are the watch list file's column names (not translated): a paste reads
+    // the columns by them, in any language.
+    QStringList lines{QStringLiteral("address\tname\tvalue\tformat\tquality\tcomment")};
+    for (int row : rows) {
+        const WatchItemSpec &item = m_rows.at(row).spec();
+        const QString quality = data(index(row, QualityColumn)).toString();
+        lines << QStringList{QString::fromStdString(item.address.toString()),
+                             field(item.name),
+                             field(valueText(row)),
+                             ValueFormat::name(item.format),
+                             field(quality),
+                             field(item.comment)}
+                     .join(QLatin1Char('\t'));
+    }
+    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
 bool WatchTableModel::removeRows(int row, int count, const QModelIndex &parent)
 {
     if (parent.isValid() || row < 0 || count <= 0 || row + count > m_rows.size())

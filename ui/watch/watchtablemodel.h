@@ -124,6 +124,9 @@ public:
     qint64 ageMs(int row) const { return m_valueState.ageMs(row); }
     QString qualityReason(int row) const;
     QString valueText(int row) const;
+    // The rows as tab-separated text in the given order, a header line first (address, name,
+    // value, format, quality, comment): what a copy of them puts on the clipboard.
+    QString rowsText(const QList<int> &rows) const;
 
     // What the link watches for this table: one item per row, under the row's item key.
     QList<WatchedItem> watchItems(int intervalMs) const;

@@ -312,35 +312,12 @@ QString WatchTableWidget::selectedRowsText() const
     if (viewRows.isEmpty() && m_view->currentIndex().isValid())
         viewRows.append(m_view->currentIndex().row());
     std::sort(viewRows.begin(), viewRows.end());
-    // A field with the separator of pasted rows (tab, turned into ';' by the paste) or a quote
-    // is quoted, as CSV quotes it.
-    const auto field = [](QString text) {
-        if (text.contains(QLatin1Char(';')) || text.contains(QLatin1Char('"'))
-            || text.contains(QLatin1Char('\t')) || text.contains(QLatin1Char('\n'))) {
-            text.replace(QLatin1Char('"'), QLatin1String("\"\""));
-            text = QLatin1Char('"') + text + QLatin1Char('"');
-        }
-        return text;
-    };
-    // The header's words are the watch list file's column names (not translated): a paste reads
-    // the columns by them, in any language.
-    QStringList lines{QStringLiteral("address\tname\tvalue\tformat\tquality\tcomment")};
+    QList<int> rows;
     for (int viewRow : std::as_const(viewRows)) {
-        const int row = modelRow(m_proxy->index(viewRow, 0));
-        if (row < 0)
-            continue;
-        const WatchItemSpec item = m_model->item(row);
-        const QString quality
-            = m_model->index(row, WatchTableModel::QualityColumn).data().toString();
-        lines << QStringList{QString::fromStdString(item.address.toString()),
-                             field(item.name),
-                             field(m_model->valueText(row)),
-                             ValueFormat::name(item.format),
-                             field(quality),
-                             field(item.comment)}
-                     .join(QLatin1Char('\t'));
+        if (const int row = modelRow(m_proxy->index(viewRow, 0)); row >= 0)
+            rows.append(row);
     }
-    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+    return m_model->rowsText(rows);
 }
 
 void WatchTableWidget::copySelected()
