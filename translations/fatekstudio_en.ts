@@ -2837,39 +2837,6 @@
             </translation>
         </message>
         <message>
-            <source>Writes not sent yet</source>
-            <translation>Writes not sent yet</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n write(s) to the PLC have not been sent yet.</source>
-            <translation>
-                <numerusform>%n write to the PLC has not been sent yet.</numerusform>
-                <numerusform>%n writes to the PLC have not been sent yet.</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
-            <translation>
-                <numerusform>Wait for them (at most %n second), or drop them? Dropped writes never reach the PLC.</numerusform>
-                <numerusform>Wait for them (at most %n seconds), or drop them? Dropped writes never reach the PLC.</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>&amp;Wait and Quit</source>
-            <translation>&amp;Wait and Quit</translation>
-        </message>
-        <message>
-            <source>&amp;Drop and Quit</source>
-            <translation>&amp;Drop and Quit</translation>
-        </message>
-        <message numerus="yes">
-            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
-            <translation>
-                <numerusform>Sending %n queued write before quitting (at most %1 s)…</numerusform>
-                <numerusform>Sending %n queued writes before quitting (at most %1 s)…</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Connections</source>
             <translation>Connections</translation>
         </message>
@@ -3006,6 +2973,9 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <source>%1 — %2, station %3</source>
             <translation>%1 — %2, station %3</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::QuitQuestions</name>
         <message>
             <source>The watch list %1 has changes that are not saved.</source>
             <translation>The watch list %1 has changes that are not saved.</translation>
@@ -3033,6 +3003,39 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>Stop Logging and &amp;Quit</source>
             <translation>Stop Logging and &amp;Quit</translation>
+        </message>
+        <message>
+            <source>Writes not sent yet</source>
+            <translation>Writes not sent yet</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n write(s) to the PLC have not been sent yet.</source>
+            <translation>
+                <numerusform>%n write to the PLC has not been sent yet.</numerusform>
+                <numerusform>%n writes to the PLC have not been sent yet.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
+            <translation>
+                <numerusform>Wait for them (at most %n second), or drop them? Dropped writes never reach the PLC.</numerusform>
+                <numerusform>Wait for them (at most %n seconds), or drop them? Dropped writes never reach the PLC.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>&amp;Wait and Quit</source>
+            <translation>&amp;Wait and Quit</translation>
+        </message>
+        <message>
+            <source>&amp;Drop and Quit</source>
+            <translation>&amp;Drop and Quit</translation>
+        </message>
+        <message numerus="yes">
+            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
+            <translation>
+                <numerusform>Sending %n queued write before quitting (at most %1 s)…</numerusform>
+                <numerusform>Sending %n queued writes before quitting (at most %1 s)…</numerusform>
+            </translation>
         </message>
     </context>
     <context>

@@ -2834,36 +2834,6 @@
             </translation>
         </message>
         <message>
-            <source>Writes not sent yet</source>
-            <translation>尚有寫入未送出</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n write(s) to the PLC have not been sent yet.</source>
-            <translation>
-                <numerusform>尚有 %n 筆寫入未送到 PLC。</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
-            <translation>
-                <numerusform>要等候送出（最多 %n 秒），還是捨棄？捨棄的寫入不會送到 PLC。</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>&amp;Wait and Quit</source>
-            <translation>等候後結束(&amp;W)</translation>
-        </message>
-        <message>
-            <source>&amp;Drop and Quit</source>
-            <translation>捨棄並結束(&amp;D)</translation>
-        </message>
-        <message numerus="yes">
-            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
-            <translation>
-                <numerusform>結束前正在送出 %n 筆排隊中的寫入（最多 %1 秒）…</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Connections</source>
             <translation>連線</translation>
         </message>
@@ -2999,6 +2969,9 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <source>%1 — %2, station %3</source>
             <translation>%1 — %2，站號 %3</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::QuitQuestions</name>
         <message>
             <source>The watch list %1 has changes that are not saved.</source>
             <translation>監看清單 %1 有尚未儲存的變更。</translation>
@@ -3026,6 +2999,36 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>Stop Logging and &amp;Quit</source>
             <translation>停止記錄並結束(&amp;Q)</translation>
+        </message>
+        <message>
+            <source>Writes not sent yet</source>
+            <translation>尚有寫入未送出</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n write(s) to the PLC have not been sent yet.</source>
+            <translation>
+                <numerusform>尚有 %n 筆寫入未送到 PLC。</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
+            <translation>
+                <numerusform>要等候送出（最多 %n 秒），還是捨棄？捨棄的寫入不會送到 PLC。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>&amp;Wait and Quit</source>
+            <translation>等候後結束(&amp;W)</translation>
+        </message>
+        <message>
+            <source>&amp;Drop and Quit</source>
+            <translation>捨棄並結束(&amp;D)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
+            <translation>
+                <numerusform>結束前正在送出 %n 筆排隊中的寫入（最多 %1 秒）…</numerusform>
+            </translation>
         </message>
     </context>
     <context>
