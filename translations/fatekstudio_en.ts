@@ -2329,6 +2329,9 @@
             <source>(no port)</source>
             <translation>(no port)</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::SavedConnection</name>
         <message>
             <source>MQTT gateway %1 on %2 (prefix %3)</source>
             <translation>MQTT gateway %1 on %2 (prefix %3)</translation>
@@ -2826,39 +2829,6 @@
             </translation>
         </message>
         <message>
-            <source>Writes not sent yet</source>
-            <translation>Writes not sent yet</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n write(s) to the PLC have not been sent yet.</source>
-            <translation>
-                <numerusform>%n write to the PLC has not been sent yet.</numerusform>
-                <numerusform>%n writes to the PLC have not been sent yet.</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
-            <translation>
-                <numerusform>Wait for them (at most %n second), or drop them? Dropped writes never reach the PLC.</numerusform>
-                <numerusform>Wait for them (at most %n seconds), or drop them? Dropped writes never reach the PLC.</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>&amp;Wait and Quit</source>
-            <translation>&amp;Wait and Quit</translation>
-        </message>
-        <message>
-            <source>&amp;Drop and Quit</source>
-            <translation>&amp;Drop and Quit</translation>
-        </message>
-        <message numerus="yes">
-            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
-            <translation>
-                <numerusform>Sending %n queued write before quitting (at most %1 s)…</numerusform>
-                <numerusform>Sending %n queued writes before quitting (at most %1 s)…</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Connections</source>
             <translation>Connections</translation>
         </message>
@@ -2995,6 +2965,9 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <source>%1 — %2, station %3</source>
             <translation>%1 — %2, station %3</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::QuitQuestions</name>
         <message>
             <source>The watch list %1 has changes that are not saved.</source>
             <translation>The watch list %1 has changes that are not saved.</translation>
@@ -3022,6 +2995,39 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>Stop Logging and &amp;Quit</source>
             <translation>Stop Logging and &amp;Quit</translation>
+        </message>
+        <message>
+            <source>Writes not sent yet</source>
+            <translation>Writes not sent yet</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n write(s) to the PLC have not been sent yet.</source>
+            <translation>
+                <numerusform>%n write to the PLC has not been sent yet.</numerusform>
+                <numerusform>%n writes to the PLC have not been sent yet.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
+            <translation>
+                <numerusform>Wait for them (at most %n second), or drop them? Dropped writes never reach the PLC.</numerusform>
+                <numerusform>Wait for them (at most %n seconds), or drop them? Dropped writes never reach the PLC.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>&amp;Wait and Quit</source>
+            <translation>&amp;Wait and Quit</translation>
+        </message>
+        <message>
+            <source>&amp;Drop and Quit</source>
+            <translation>&amp;Drop and Quit</translation>
+        </message>
+        <message numerus="yes">
+            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
+            <translation>
+                <numerusform>Sending %n queued write before quitting (at most %1 s)…</numerusform>
+                <numerusform>Sending %n queued writes before quitting (at most %1 s)…</numerusform>
+            </translation>
         </message>
     </context>
     <context>
@@ -4216,6 +4222,9 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <comment>quality, age of the value</comment>
             <translation>%1, %2</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableEdits</name>
         <message numerus="yes">
             <source>Add %n item(s)</source>
             <translation>
@@ -4256,14 +4265,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
     </context>
     <context>
         <name>Fatek::WatchTableWidget</name>
-        <message>
-            <source>Wrote %1. %2</source>
-            <translation>Wrote %1. %2</translation>
-        </message>
-        <message>
-            <source>Write of %1: %2</source>
-            <translation>Write of %1: %2</translation>
-        </message>
         <message>
             <source>Watch</source>
             <translation>Watch</translation>
@@ -4313,34 +4314,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Every</translation>
         </message>
         <message>
-            <source>&amp;Write Value…</source>
-            <translation>&amp;Write Value…</translation>
-        </message>
-        <message>
-            <source>&amp;Swap Words</source>
-            <translation>&amp;Swap Words</translation>
-        </message>
-        <message>
-            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
-            <translation>Low word first for 32- and 64-bit values (some HMIs store floats so)</translation>
-        </message>
-        <message>
-            <source>&amp;Paste Items</source>
-            <translation>&amp;Paste Items</translation>
-        </message>
-        <message>
-            <source>&amp;Remove</source>
-            <translation>&amp;Remove</translation>
-        </message>
-        <message>
-            <source>Add to &amp;Trend</source>
-            <translation>Add to &amp;Trend</translation>
-        </message>
-        <message>
-            <source>Plot the selected items over time in the trend view</source>
-            <translation>Plot the selected items over time in the trend view</translation>
-        </message>
-        <message>
             <source>polling paused</source>
             <translation>polling paused</translation>
         </message>
@@ -4375,6 +4348,35 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             </translation>
         </message>
         <message>
+            <source>%1 is connected again; %2 was not written.</source>
+            <translation>%1 is connected again; %2 was not written.</translation>
+        </message>
+        <message numerus="yes">
+            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
+            <translation>
+                <numerusform>Added %n item, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
+                <numerusform>Added %n items, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Filter: address, name or comment</source>
+            <translation>Filter: address, name or comment</translation>
+        </message>
+        <message>
+            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
+            <translation>Show only the rows whose address, name or comment contains this text (Ctrl+F)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Copied %n row(s).</source>
+            <translation>
+                <numerusform>Copied %n row(s).</numerusform>
+                <numerusform>Copied %n row(s).</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableWriter</name>
+        <message>
             <source>%1 (station %2) = %3</source>
             <translation>%1 (station %2) = %3</translation>
         </message>
@@ -4403,39 +4405,43 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Wrote %1.</translation>
         </message>
         <message>
-            <source>Write of %1 failed: %2</source>
-            <translation>Write of %1 failed: %2</translation>
+            <source>Wrote %1. %2</source>
+            <translation>Wrote %1. %2</translation>
         </message>
         <message>
-            <source>%1 is connected again; %2 was not written.</source>
-            <translation>%1 is connected again; %2 was not written.</translation>
+            <source>Write of %1: %2</source>
+            <translation>Write of %1: %2</translation>
+        </message>
+        <message>
+            <source>Write of %1 failed: %2</source>
+            <translation>Write of %1 failed: %2</translation>
         </message>
         <message>
             <source>%1 %2</source>
             <translation>%1 %2</translation>
         </message>
         <message>
-            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
-            <translation>New value for %1 (%2; hex as 0x1A or 1Ah):</translation>
-        </message>
-        <message numerus="yes">
-            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
-            <translation>
-                <numerusform>Added %n item, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
-                <numerusform>Added %n items, each timer and counter contact with its current value (RT/RC) beside it.</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>Operator mode (read-only): %1 cannot be written.</translation>
         </message>
         <message>
-            <source>Filter: address, name or comment</source>
-            <translation>Filter: address, name or comment</translation>
+            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
+            <translation>New value for %1 (%2; hex as 0x1A or 1Ah):</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableActions</name>
+        <message>
+            <source>&amp;Write Value…</source>
+            <translation>&amp;Write Value…</translation>
         </message>
         <message>
-            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
-            <translation>Show only the rows whose address, name or comment contains this text (Ctrl+F)</translation>
+            <source>&amp;Swap Words</source>
+            <translation>&amp;Swap Words</translation>
+        </message>
+        <message>
+            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
+            <translation>Low word first for 32- and 64-bit values (some HMIs store floats so)</translation>
         </message>
         <message>
             <source>&amp;Copy Rows</source>
@@ -4444,6 +4450,14 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Address, name, value, format, quality and comment of the selected rows as tab-separated text</source>
             <translation>Address, name, value, format, quality and comment of the selected rows as tab-separated text</translation>
+        </message>
+        <message>
+            <source>&amp;Paste Items</source>
+            <translation>&amp;Paste Items</translation>
+        </message>
+        <message>
+            <source>&amp;Remove</source>
+            <translation>&amp;Remove</translation>
         </message>
         <message>
             <source>&amp;Undo</source>
@@ -4473,12 +4487,13 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Set &amp;Format</source>
             <translation>Set &amp;Format</translation>
         </message>
-        <message numerus="yes">
-            <source>Copied %n row(s).</source>
-            <translation>
-                <numerusform>Copied %n row(s).</numerusform>
-                <numerusform>Copied %n row(s).</numerusform>
-            </translation>
+        <message>
+            <source>Add to &amp;Trend</source>
+            <translation>Add to &amp;Trend</translation>
+        </message>
+        <message>
+            <source>Plot the selected items over time in the trend view</source>
+            <translation>Plot the selected items over time in the trend view</translation>
         </message>
     </context>
     <context>

@@ -2329,6 +2329,9 @@
             <source>(no port)</source>
             <translation>（無連接埠）</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::SavedConnection</name>
         <message>
             <source>MQTT gateway %1 on %2 (prefix %3)</source>
             <translation>MQTT 閘道器 %1，位於 %2（前綴 %3）</translation>
@@ -2823,36 +2826,6 @@
             </translation>
         </message>
         <message>
-            <source>Writes not sent yet</source>
-            <translation>尚有寫入未送出</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n write(s) to the PLC have not been sent yet.</source>
-            <translation>
-                <numerusform>尚有 %n 筆寫入未送到 PLC。</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
-            <translation>
-                <numerusform>要等候送出（最多 %n 秒），還是捨棄？捨棄的寫入不會送到 PLC。</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>&amp;Wait and Quit</source>
-            <translation>等候後結束(&amp;W)</translation>
-        </message>
-        <message>
-            <source>&amp;Drop and Quit</source>
-            <translation>捨棄並結束(&amp;D)</translation>
-        </message>
-        <message numerus="yes">
-            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
-            <translation>
-                <numerusform>結束前正在送出 %n 筆排隊中的寫入（最多 %1 秒）…</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Connections</source>
             <translation>連線</translation>
         </message>
@@ -2988,6 +2961,9 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <source>%1 — %2, station %3</source>
             <translation>%1 — %2，站號 %3</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::QuitQuestions</name>
         <message>
             <source>The watch list %1 has changes that are not saved.</source>
             <translation>監看清單 %1 有尚未儲存的變更。</translation>
@@ -3015,6 +2991,36 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>Stop Logging and &amp;Quit</source>
             <translation>停止記錄並結束(&amp;Q)</translation>
+        </message>
+        <message>
+            <source>Writes not sent yet</source>
+            <translation>尚有寫入未送出</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n write(s) to the PLC have not been sent yet.</source>
+            <translation>
+                <numerusform>尚有 %n 筆寫入未送到 PLC。</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Wait for them (at most %n second(s)), or drop them? Dropped writes never reach the PLC.</source>
+            <translation>
+                <numerusform>要等候送出（最多 %n 秒），還是捨棄？捨棄的寫入不會送到 PLC。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>&amp;Wait and Quit</source>
+            <translation>等候後結束(&amp;W)</translation>
+        </message>
+        <message>
+            <source>&amp;Drop and Quit</source>
+            <translation>捨棄並結束(&amp;D)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Sending %n queued write(s) before quitting (at most %1 s)…</source>
+            <translation>
+                <numerusform>結束前正在送出 %n 筆排隊中的寫入（最多 %1 秒）…</numerusform>
+            </translation>
         </message>
     </context>
     <context>
@@ -4205,6 +4211,9 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <comment>quality, age of the value</comment>
             <translation>%1，%2</translation>
         </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableEdits</name>
         <message numerus="yes">
             <source>Add %n item(s)</source>
             <translation>
@@ -4242,14 +4251,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
     </context>
     <context>
         <name>Fatek::WatchTableWidget</name>
-        <message>
-            <source>Wrote %1. %2</source>
-            <translation>已寫入 %1。%2</translation>
-        </message>
-        <message>
-            <source>Write of %1: %2</source>
-            <translation>寫入 %1：%2</translation>
-        </message>
         <message>
             <source>Watch</source>
             <translation>監看</translation>
@@ -4299,34 +4300,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>每隔</translation>
         </message>
         <message>
-            <source>&amp;Write Value…</source>
-            <translation>寫入數值(&amp;W)…</translation>
-        </message>
-        <message>
-            <source>&amp;Swap Words</source>
-            <translation>字組對調(&amp;S)</translation>
-        </message>
-        <message>
-            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
-            <translation>32 與 64 位元數值低字組在前（部分人機介面如此儲存浮點數）</translation>
-        </message>
-        <message>
-            <source>&amp;Paste Items</source>
-            <translation>貼上項目(&amp;P)</translation>
-        </message>
-        <message>
-            <source>&amp;Remove</source>
-            <translation>移除(&amp;R)</translation>
-        </message>
-        <message>
-            <source>Add to &amp;Trend</source>
-            <translation>加入趨勢圖(&amp;T)</translation>
-        </message>
-        <message>
-            <source>Plot the selected items over time in the trend view</source>
-            <translation>在趨勢圖中繪製選取項目隨時間的變化</translation>
-        </message>
-        <message>
             <source>polling paused</source>
             <translation>輪詢已暫停</translation>
         </message>
@@ -4359,6 +4332,33 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             </translation>
         </message>
         <message>
+            <source>%1 is connected again; %2 was not written.</source>
+            <translation>%1 已重新連線；%2 未寫入。</translation>
+        </message>
+        <message numerus="yes">
+            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
+            <translation>
+                <numerusform>已加入 %n 個項目，每個計時器與計數器接點旁附上其目前值（RT/RC）。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Filter: address, name or comment</source>
+            <translation>篩選：位址、名稱或註解</translation>
+        </message>
+        <message>
+            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
+            <translation>只顯示位址、名稱或註解含有此文字的列（Ctrl+F）</translation>
+        </message>
+        <message numerus="yes">
+            <source>Copied %n row(s).</source>
+            <translation>
+                <numerusform>已複製 %n 列。</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableWriter</name>
+        <message>
             <source>%1 (station %2) = %3</source>
             <translation>%1（站號 %2）= %3</translation>
         </message>
@@ -4387,38 +4387,43 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>已寫入 %1。</translation>
         </message>
         <message>
-            <source>Write of %1 failed: %2</source>
-            <translation>寫入 %1 失敗：%2</translation>
+            <source>Wrote %1. %2</source>
+            <translation>已寫入 %1。%2</translation>
         </message>
         <message>
-            <source>%1 is connected again; %2 was not written.</source>
-            <translation>%1 已重新連線；%2 未寫入。</translation>
+            <source>Write of %1: %2</source>
+            <translation>寫入 %1：%2</translation>
+        </message>
+        <message>
+            <source>Write of %1 failed: %2</source>
+            <translation>寫入 %1 失敗：%2</translation>
         </message>
         <message>
             <source>%1 %2</source>
             <translation>%1 %2</translation>
         </message>
         <message>
-            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
-            <translation>%1 的新數值（%2；十六進位請寫成 0x1A 或 1Ah）：</translation>
-        </message>
-        <message numerus="yes">
-            <source>Added %n item(s), each timer and counter contact with its current value (RT/RC) beside it.</source>
-            <translation>
-                <numerusform>已加入 %n 個項目，每個計時器與計數器接點旁附上其目前值（RT/RC）。</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Operator mode (read-only): %1 cannot be written.</source>
             <translation>操作員模式（唯讀）：無法寫入 %1。</translation>
         </message>
         <message>
-            <source>Filter: address, name or comment</source>
-            <translation>篩選：位址、名稱或註解</translation>
+            <source>New value for %1 (%2; hex as 0x1A or 1Ah):</source>
+            <translation>%1 的新數值（%2；十六進位請寫成 0x1A 或 1Ah）：</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::WatchTableActions</name>
+        <message>
+            <source>&amp;Write Value…</source>
+            <translation>寫入數值(&amp;W)…</translation>
         </message>
         <message>
-            <source>Show only the rows whose address, name or comment contains this text (Ctrl+F)</source>
-            <translation>只顯示位址、名稱或註解含有此文字的列（Ctrl+F）</translation>
+            <source>&amp;Swap Words</source>
+            <translation>字組對調(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Low word first for 32- and 64-bit values (some HMIs store floats so)</source>
+            <translation>32 與 64 位元數值低字組在前（部分人機介面如此儲存浮點數）</translation>
         </message>
         <message>
             <source>&amp;Copy Rows</source>
@@ -4427,6 +4432,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Address, name, value, format, quality and comment of the selected rows as tab-separated text</source>
             <translation>所選各列的位址、名稱、數值、格式、品質與註解，以定位字元分隔的文字</translation>
+        </message>
+        <message>
+            <source>&amp;Paste Items</source>
+            <translation>貼上項目(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Remove</source>
+            <translation>移除(&amp;R)</translation>
         </message>
         <message>
             <source>&amp;Undo</source>
@@ -4456,11 +4469,13 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Set &amp;Format</source>
             <translation>設定格式(&amp;F)</translation>
         </message>
-        <message numerus="yes">
-            <source>Copied %n row(s).</source>
-            <translation>
-                <numerusform>已複製 %n 列。</numerusform>
-            </translation>
+        <message>
+            <source>Add to &amp;Trend</source>
+            <translation>加入趨勢圖(&amp;T)</translation>
+        </message>
+        <message>
+            <source>Plot the selected items over time in the trend view</source>
+            <translation>在趨勢圖中繪製選取項目隨時間的變化</translation>
         </message>
     </context>
     <context>

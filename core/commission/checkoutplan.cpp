@@ -2,7 +2,7 @@
 
 #include "commissionmessages.h"
 #include "core/protocol/addressrange.h"
-#include "core/watch/csvfield.h"
+#include "core/watch/csvreader.h"
 #include "core/watch/symboltable.h"
 
 #include <QRegularExpression>
@@ -209,38 +209,6 @@ QString groupOf(const QString &name)
     return cut > 0 ? name.left(cut) : QString();
 }
 
-// The fields of one CSV line (',' or ';' separated, quoted fields as the watch-list CSV reads
-// them); nothing when a quote is not closed.
-std::optional<QStringList> csvFields(QStringView line)
-{
-    QStringList fields;
-    qsizetype i = 0;
-    const qsizetype n = line.size();
-    const QChar separator = line.contains(QLatin1Char(',')) || !line.contains(QLatin1Char(';'))
-                                ? QLatin1Char(',')
-                                : QLatin1Char(';');
-    while (true) {
-        QString field;
-        while (i < n && line[i] == QLatin1Char(' '))
-            ++i;
-        if (i < n && line[i] == QLatin1Char('"')) {
-            if (!CsvField::readQuoted(line, i, field))
-                return std::nullopt;
-            while (i < n && line[i] != separator)
-                ++i;
-        } else {
-            const qsizetype start = i;
-            while (i < n && line[i] != separator)
-                ++i;
-            field = line.mid(start, i - start).trimmed().toString();
-        }
-        fields.append(field);
-        if (i >= n)
-            return fields;
-        ++i;
-    }
-}
-
 std::optional<std::uint32_t> number(const QString &text)
 {
     bool ok = false;
@@ -291,25 +259,24 @@ Result<CheckoutPlan> CheckoutPlan::fromSymbols(const SymbolTable &names, const Q
 Result<CheckoutPlan> CheckoutPlan::fromCsv(const QString &text)
 {
     CheckoutPlan plan;
-    const QStringList lines = text.split(QLatin1Char('\n'));
-    for (qsizetype n = 0; n < lines.size(); ++n) {
-        const QString line = lines.at(n).trimmed();
-        const int lineNo = static_cast<int>(n + 1);
-        if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
-            continue;
+    // ',' or ';' separated, quoted fields as the watch-list CSV reads them.
+    CsvReader reader(text, u",;", CsvReader::LineEnds::EndRecord);
+    while (reader.nextRecord()) {
+        const int lineNo = reader.line();
         const auto lineError = [lineNo](Message why) {
             return makeError(ErrorKind::InvalidRequest,
                              msg<MsgId::CheckoutCsvLine>(lineNo, std::move(why)));
         };
-        const std::optional<QStringList> fields = csvFields(line);
-        if (!fields || fields->size() > 7)
+        CsvReader::Problem problem;
+        const QStringList fields = reader.fields(&problem);
+        if (fields.isEmpty() || fields.size() > 7)
             return lineError(
                 msg<MsgId::CheckoutCsvColumns>("address,name,comment,group,low,high,tolerance"));
-        const auto address = Address::parse(fields->at(0).toStdString());
+        const auto address = Address::parse(fields.at(0).toStdString());
         if (!address) {
             // The header line names its columns.
             if (plan.points.empty()
-                && fields->at(0).compare(QLatin1String("address"), Qt::CaseInsensitive) == 0)
+                && fields.at(0).compare(QLatin1String("address"), Qt::CaseInsensitive) == 0)
                 continue;
             return lineError(address.error().message);
         }
@@ -318,7 +285,7 @@ Result<CheckoutPlan> CheckoutPlan::fromCsv(const QString &text)
             return lineError(point.error().message);
         CheckoutPoint p = std::move(point).value();
         const auto field = [&fields](int i) {
-            return i < fields->size() ? fields->at(i) : QString();
+            return i < fields.size() ? fields.at(i) : QString();
         };
         p.name = field(1);
         p.description = field(2);

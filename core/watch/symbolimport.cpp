@@ -2,7 +2,7 @@
 
 // A comment/symbol list of the ladder project, read into a SymbolTable line by line.
 
-#include "csvfield.h"
+#include "csvreader.h"
 #include "watchlisterrors.h"
 #include "watchmessages.h"
 
@@ -84,59 +84,6 @@ std::optional<Decoded> decode(const QByteArray &bytes)
     return Decoded{*big5, SymbolImport::Encoding::Big5};
 }
 
-bool isSeparator(QChar c)
-{
-    return c == QLatin1Char('\t') || c == QLatin1Char(',') || c == QLatin1Char(';');
-}
-
-// The first tab, comma or semicolon outside quotes.
-QChar findSeparator(QStringView line)
-{
-    bool quoted = false;
-    for (const QChar c : line) {
-        if (c == QLatin1Char('"'))
-            quoted = !quoted;
-        else if (!quoted && isSeparator(c))
-            return c;
-    }
-    return {};
-}
-
-// The fields of one line, or why it cannot be split.
-Result<QStringList> splitLine(QStringView line, QChar separator)
-{
-    QStringList fields;
-    const qsizetype n = line.size();
-    qsizetype i = 0;
-    const auto isBlank = [separator](QChar c) {
-        return c != separator && (c == QLatin1Char(' ') || c == QLatin1Char('\t'));
-    };
-    while (true) {
-        while (i < n && isBlank(line[i]))
-            ++i;
-        QString field;
-        if (i < n && line[i] == QLatin1Char('"')) {
-            if (!CsvField::readQuoted(line, i, field))
-                return makeError(ErrorKind::InvalidRequest, msg<MsgId::SymbolsQuoteNotClosed>());
-            while (i < n && isBlank(line[i]))
-                ++i;
-            if (i < n && line[i] != separator) {
-                return makeError(ErrorKind::InvalidRequest,
-                                 msg<MsgId::SymbolsTextAfterQuote>(field.toStdString()));
-            }
-        } else {
-            const qsizetype start = i;
-            while (i < n && line[i] != separator)
-                ++i;
-            field = line.mid(start, i - start).trimmed().toString();
-        }
-        fields.append(field);
-        if (i >= n)
-            return fields;
-        ++i; // the separator
-    }
-}
-
 } // namespace
 
 void SymbolImport::skip(int line, Message reason)
@@ -154,39 +101,31 @@ Result<SymbolImport> SymbolImport::fromBytes(const QByteArray &bytes)
 
     SymbolImport result;
     result.m_encoding = decoded->encoding;
-    const QStringList lines = decoded->text.split(QLatin1Char('\n'));
-    QChar separator;
+    // Tabs, commas or semicolons: the first met fixes the separator, so commas in the comments of
+    // a tab-separated list stay in them.
+    CsvReader reader(decoded->text, u"\t,;", CsvReader::LineEnds::EndRecord);
     bool first = true;
-    for (qsizetype l = 0; l < lines.size(); ++l) {
-        const int lineNumber = static_cast<int>(l + 1);
-        QStringView line(lines.at(l));
-        if (line.endsWith(QLatin1Char('\r')))
-            line.chop(1);
-        const QStringView trimmed = line.trimmed();
-        if (trimmed.isEmpty() || trimmed.startsWith(QLatin1Char('#')))
-            continue;
-        if (line.contains(QChar(QChar::ReplacementCharacter))) {
+    while (reader.nextRecord()) {
+        const int lineNumber = reader.line();
+        if (reader.lineText().contains(QChar(QChar::ReplacementCharacter))) {
             result.skip(lineNumber, msg<MsgId::SymbolsNotBig5>());
             first = false;
             continue;
         }
-        if (separator.isNull())
-            separator = findSeparator(line);
-        // A line without any separator is an address alone (or a header word).
-        auto fields = separator.isNull() ? Result<QStringList>(QStringList{trimmed.toString()})
-                                         : splitLine(line, separator);
-        if (!fields) {
-            result.skip(lineNumber, fields.error().message);
+        CsvReader::Problem problem;
+        const QStringList fields = reader.fields(&problem);
+        if (fields.isEmpty()) {
+            result.skip(lineNumber,
+                        problem.kind == CsvReader::Problem::Kind::QuoteNotClosed
+                            ? msg<MsgId::SymbolsQuoteNotClosed>()
+                            : msg<MsgId::SymbolsTextAfterQuote>(problem.field.toStdString()));
             first = false;
             continue;
         }
-        bool allEmpty = true;
-        for (const QString &field : std::as_const(*fields))
-            allEmpty = allEmpty && field.trimmed().isEmpty();
-        if (allEmpty)
+        if (CsvReader::allEmpty(fields))
             continue; // a row of empty cells (";;;") is a blank line too
 
-        const QString addressText = fields->at(0).trimmed();
+        const QString addressText = fields.at(0).trimmed();
         const auto address = Address::parse(addressText.toStdString());
         // A first row whose first cell is no address, and holds no digit either ("Address",
         // "位址"), names the columns; "R99999" there is a bad address, reported.
@@ -205,8 +144,8 @@ Result<SymbolImport> SymbolImport::fromBytes(const QByteArray &bytes)
             continue;
         }
         Symbol symbol;
-        symbol.name = fields->size() > 1 ? fields->at(1).trimmed() : QString();
-        symbol.comment = fields->size() > 2 ? fields->at(2).trimmed() : QString();
+        symbol.name = fields.size() > 1 ? fields.at(1).trimmed() : QString();
+        symbol.comment = fields.size() > 2 ? fields.at(2).trimmed() : QString();
         if (symbol.name.isEmpty() && symbol.comment.isEmpty()) {
             result.skip(lineNumber, msg<MsgId::SymbolsNoName>(address->toString()));
             continue;

@@ -2,7 +2,7 @@
 
 // Watch rows imported from CSV (spreadsheet exports).
 
-#include "csvfield.h"
+#include "csvreader.h"
 #include "watchlisterrors.h"
 
 #include <QStringDecoder>
@@ -32,81 +32,22 @@ QString decodeText(const QByteArray &bytes)
     return text;
 }
 
-bool isBlankOrComment(QStringView line)
-{
-    const QStringView trimmed = line.trimmed();
-    return trimmed.isEmpty() || trimmed.startsWith(QLatin1Char('#'));
-}
-
 // Splits the text into records of fields. The first ',' or ';' outside quotes fixes the separator
-// for the whole file; until then both count.
+// for the whole file; a quoted field may hold line ends.
 Result<QList<CsvRecord>> splitCsv(const QString &text)
 {
     QList<CsvRecord> records;
-    QChar separator;
-    const auto isSeparator = [&](QChar c) {
-        if (separator.isNull() && (c == QLatin1Char(',') || c == QLatin1Char(';'))) {
-            separator = c;
-            return true;
-        }
-        return !separator.isNull() && c == separator;
-    };
-    const auto isBlank = [](QChar c) {
-        return c == QLatin1Char(' ') || c == QLatin1Char('\t') || c == QLatin1Char('\r');
-    };
-
-    const qsizetype n = text.size();
-    qsizetype i = 0;
-    int line = 1;
-    while (i < n) {
-        qsizetype lineEnd = text.indexOf(QLatin1Char('\n'), i);
-        if (lineEnd < 0)
-            lineEnd = n;
-        if (isBlankOrComment(QStringView(text).mid(i, lineEnd - i))) {
-            i = lineEnd + 1;
-            ++line;
-            continue;
-        }
-
-        CsvRecord record;
-        record.line = line;
-        bool endOfRecord = false;
-        while (!endOfRecord) {
-            while (i < n && isBlank(text[i]))
-                ++i;
-            QString field;
-            if (i < n && text[i] == QLatin1Char('"')) {
-                const int quoteLine = line;
-                if (!CsvField::readQuoted(text, i, field, &line)) {
-                    return atPlace(
-                        linePlace(quoteLine),
-                        fileError(QStringLiteral("a quoted field is not closed (missing \")")));
-                }
-                while (i < n && isBlank(text[i]))
-                    ++i;
-                if (i < n && text[i] != QLatin1Char('\n') && !isSeparator(text[i])) {
-                    return atPlace(
-                        linePlace(line),
-                        fileError(QStringLiteral("unexpected text after the quoted field \"%1\"")
-                                      .arg(field)));
-                }
-            } else {
-                const qsizetype start = i;
-                while (i < n && text[i] != QLatin1Char('\n') && !isSeparator(text[i]))
-                    ++i;
-                field = text.mid(start, i - start).trimmed();
-            }
-            record.fields.append(field);
-            // Here i is at a separator (already recognised), a newline or the end.
-            if (i >= n) {
-                endOfRecord = true;
-            } else if (text[i] == QLatin1Char('\n')) {
-                ++i;
-                ++line;
-                endOfRecord = true;
-            } else {
-                ++i;
-            }
+    CsvReader reader(text, u",;", CsvReader::LineEnds::MayBeQuoted);
+    while (reader.nextRecord()) {
+        CsvReader::Problem problem;
+        CsvRecord record{reader.line(), reader.fields(&problem)};
+        if (record.fields.isEmpty()) {
+            const QString why
+                = problem.kind == CsvReader::Problem::Kind::QuoteNotClosed
+                      ? QStringLiteral("a quoted field is not closed (missing \")")
+                      : QStringLiteral("unexpected text after the quoted field \"%1\"")
+                            .arg(problem.field);
+            return atPlace(linePlace(problem.line), fileError(why));
         }
         records.append(record);
     }
@@ -213,10 +154,7 @@ Result<QList<WatchItemSpec>> importCsv(const QByteArray &csv)
         const QString &comment = cells[static_cast<int>(Column::Comment)];
 
         if (addressText.trimmed().isEmpty()) {
-            bool allEmpty = true;
-            for (const QString &field : record.fields)
-                allEmpty = allEmpty && field.trimmed().isEmpty();
-            if (allEmpty)
+            if (CsvReader::allEmpty(record.fields))
                 continue; // a row of empty cells (";;;;") is a blank line too
             return atPlace(place, fileError(QStringLiteral("the address is missing")));
         }

@@ -1,7 +1,5 @@
 #include "uitext.h"
 
-#include "core/link/gatewaywatchsettings.h"
-
 namespace Fatek {
 
 namespace {
@@ -133,12 +131,6 @@ QString UiText::settings(const LinkSettings &settings)
     }
     text.replace(QStringLiteral("(no port)"), tr("(no port)"));
     return text;
-}
-
-QString UiText::gateway(const GatewayWatchSettings &settings)
-{
-    return tr("MQTT gateway %1 on %2 (prefix %3)")
-        .arg(settings.connection, settings.broker.toUrl(), settings.prefix);
 }
 
 } // namespace Fatek

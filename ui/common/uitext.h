@@ -12,8 +12,6 @@
 
 namespace Fatek {
 
-struct GatewayWatchSettings;
-
 // A core message (error, link reason, traffic-log note) in the UI language: its template
 // translated in the context "Fatek::Message", arguments that are messages translated too,
 // technical tokens (addresses, hosts, hex) as they are. Without a translation it reads in English,
@@ -35,8 +33,6 @@ public:
     static QString protocolChoice(LinkSettings::ProtocolChoice choice);
     // LinkSettings::toString() with its words translated ("TCP 10.0.0.5:500, auto-detect").
     static QString settings(const LinkSettings &settings);
-    // "MQTT gateway line1 on mqtt://broker:1883 (prefix fatek)".
-    static QString gateway(const GatewayWatchSettings &settings);
     // Display format from a name typed in either language (the file names "unsigned" etc. too).
     static std::optional<DisplayFormat> formatFromName(const QString &name);
 };

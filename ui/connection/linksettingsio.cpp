@@ -2,11 +2,18 @@
 
 #include "ui/common/uitext.h"
 
+#include <QCoreApplication>
+
 namespace Fatek {
 
 QString SavedConnection::linkText() const
 {
-    return gateway ? UiText::gateway(*gateway) : UiText::settings(settings);
+    if (!gateway)
+        return UiText::settings(settings);
+    // "MQTT gateway line1 on mqtt://broker:1883 (prefix fatek)".
+    return QCoreApplication::translate("Fatek::SavedConnection",
+                                       "MQTT gateway %1 on %2 (prefix %3)")
+        .arg(gateway->connection, gateway->broker.toUrl(), gateway->prefix);
 }
 
 namespace LinkSettingsIo {

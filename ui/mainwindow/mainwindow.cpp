@@ -1,6 +1,7 @@
 #include "mainwindow.h"
 
 #include "operatormode.h"
+#include "quitquestions.h"
 
 #include "demosimulator.h"
 #include "languagemenu.h"
@@ -53,11 +54,13 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     , m_readOnly(readOnly)
     , m_manager(new ConnectionManager(this))
     , m_document(new WatchListDocument(this))
+    , m_quitQuestions(new QuitQuestions(this, m_manager, m_document))
 {
     initStudioResources();
     setObjectName(QStringLiteral("mainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/icons/fatek-studio.svg")));
     m_manager->setReadOnly(readOnly);
+    connect(m_quitQuestions, &QuitQuestions::statusMessage, this, &MainWindow::showStatus);
 
     m_tabs = new QTabWidget(this);
     m_tabs->setObjectName(QStringLiteral("watchTabs"));
@@ -449,47 +452,6 @@ Status MainWindow::openAtStartup(const std::optional<SavedConnection> &connectio
     return loaded;
 }
 
-bool MainWindow::confirmQuit()
-{
-    const bool unsaved = m_document->isModified();
-    const bool logging = tableLogger()->isLogging();
-    if (!unsaved && !logging)
-        return true;
-    QStringList what;
-    if (unsaved)
-        what << tr("The watch list %1 has changes that are not saved.")
-                    .arg(m_document->path().isEmpty()
-                             ? tr("(untitled)")
-                             : QDir::toNativeSeparators(m_document->path()));
-    if (logging)
-        what << tr("Data logging to %1 is running; quitting stops it.")
-                    .arg(QDir::toNativeSeparators(tableLogger()->path()));
-    QMessageBox box(QMessageBox::Question, tr("Quit FATEK Studio"), what.join(QLatin1Char('\n')),
-                    QMessageBox::NoButton, this);
-    box.setObjectName(QStringLiteral("quitQuestionBox"));
-    QPushButton *save = nullptr;
-    if (unsaved) {
-        save = box.addButton(tr("&Save and Quit"), QMessageBox::AcceptRole);
-        save->setObjectName(QStringLiteral("saveButton"));
-    }
-    QPushButton *quit
-        = box.addButton(unsaved ? tr("Quit &Without Saving") : tr("Stop Logging and &Quit"),
-                        QMessageBox::DestructiveRole);
-    quit->setObjectName(QStringLiteral("quitButton"));
-    QPushButton *cancel = box.addButton(QMessageBox::Cancel);
-    cancel->setObjectName(QStringLiteral("cancelButton"));
-    // The safe answer is the default: Enter saves, or keeps the window open.
-    box.setDefaultButton(save ? save : cancel);
-    box.setEscapeButton(cancel);
-    box.exec();
-    if (box.clickedButton() == quit)
-        return true;
-    if (save && box.clickedButton() == save)
-        return m_document->path().isEmpty() ? m_document->saveDialog()
-                                            : bool(m_document->save(m_document->path()));
-    return false;
-}
-
 void MainWindow::startDemo()
 {
     if (m_demo)
@@ -564,84 +526,13 @@ void MainWindow::showStatus(const QString &text)
     statusBar()->showMessage(text, 10000);
 }
 
-bool MainWindow::settlePendingWritesBeforeQuit()
-{
-    const QList<Connection *> connections = m_manager->connections();
-    int pending = 0;
-    int drainMs = 0;
-    for (Connection *c : connections) {
-        pending += c->pendingWrites();
-        drainMs = std::max(drainMs, c->closeDrainMs());
-    }
-    if (pending == 0)
-        return true;
-    const int seconds = (drainMs + 999) / 1000;
-    QMessageBox box(QMessageBox::Warning, tr("Writes not sent yet"),
-                    tr("%n write(s) to the PLC have not been sent yet.", nullptr, pending),
-                    QMessageBox::NoButton, this);
-    box.setObjectName(QStringLiteral("pendingWritesBox"));
-    box.setInformativeText(tr("Wait for them (at most %n second(s)), or drop them? Dropped writes "
-                              "never reach the PLC.",
-                              nullptr, seconds));
-    QPushButton *wait = box.addButton(tr("&Wait and Quit"), QMessageBox::AcceptRole);
-    wait->setObjectName(QStringLiteral("waitButton"));
-    QPushButton *drop = box.addButton(tr("&Drop and Quit"), QMessageBox::DestructiveRole);
-    drop->setObjectName(QStringLiteral("dropButton"));
-    QPushButton *cancel = box.addButton(QMessageBox::Cancel);
-    box.setDefaultButton(wait);
-    box.setEscapeButton(cancel);
-    box.exec();
-    if (box.clickedButton() == drop) {
-        for (Connection *c : connections)
-            c->closeDiscard();
-        return true;
-    }
-    if (box.clickedButton() != wait)
-        return false;
-    // Non-blocking: the links drain while the window stays responsive; it closes when they are
-    // all closed (each bounded by its drain time).
-    m_quitting = true;
-    showStatus(tr("Sending %n queued write(s) before quitting (at most %1 s)…", nullptr, pending)
-                   .arg(seconds));
-    for (Connection *c : connections) {
-        connect(c, &Connection::linkStateChanged, this, [this](LinkState state) {
-            if (state != LinkState::Closed)
-                return;
-            const QList<Connection *> all = m_manager->connections();
-            if (std::all_of(all.begin(), all.end(), [](const Connection *other) {
-                    return other->linkState() == LinkState::Closed;
-                }))
-                close();
-        });
-        c->close();
-    }
-    return false;
-}
-
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    // Unsaved tables and a running log first, as editors do; then writes not sent yet.
-    if (!m_quitting && !m_quitConfirmed) {
-        if (!confirmQuit()) {
-            event->ignore();
-            return;
-        }
-        m_quitConfirmed = true;
-    }
-    const QList<Connection *> connections = m_manager->connections();
-    const bool quitNow
-        = m_quitting
-              ? std::all_of(connections.begin(), connections.end(),
-                            [](Connection *c) { return c->linkState() == LinkState::Closed; })
-              : settlePendingWritesBeforeQuit();
-    if (!quitNow) {
-        if (!m_quitting)
-            m_quitConfirmed = false; // Cancel on the writes question: ask again next time
+    if (!m_quitQuestions->mayClose()) {
         event->ignore();
         return;
     }
-    m_quitConfirmed = false; // a window shown again asks again
-    stopLogging();           // the log file is complete when the window goes
+    stopLogging(); // the log file is complete when the window goes
     QSettings settings;
     settings.setValue(geometryKey, saveGeometry());
     settings.setValue(stateKey, saveState());

@@ -83,16 +83,12 @@ protected:
     void resizeEvent(QResizeEvent *event) override;
 
 private:
-    // Quitting with writes not sent yet: asks to wait for them or drop them; false: stay open.
-    bool settlePendingWritesBeforeQuit();
     void createActions();
     void newConnectionDialog();
     void closeCurrentConnection();
     void rebuildRecentMenu();
     void closeWatchTable(int index);
     void renameWatchTable(int index);
-    // Asks before quitting with unsaved tables or a running data log; false: stay open.
-    bool confirmQuit();
     void updateLinkStatus();
     void updateToolTargets();
     // Makes the connection of the table in front the current one (the tools' target).
@@ -115,10 +111,6 @@ private:
     void applyOperatorMode(bool active);
 
     bool m_readOnly;
-    // Quit chosen, links draining their queued writes: the window closes once they are closed.
-    bool m_quitting = false;
-    // The unsaved-tables/logging question was answered for this quit.
-    bool m_quitConfirmed = false;
     ConnectionManager *m_manager;
     ConnectionsPanel *m_connectionsPanel;
     QDockWidget *m_connectionsDock;
@@ -131,6 +123,8 @@ private:
     DemoSimulator *m_demo = nullptr;
     ConfirmHandler m_confirm;
     WatchListDocument *m_document;
+    // Asked before the window closes (unsaved list, running log, writes not sent).
+    class QuitQuestions *m_quitQuestions;
     ToolDocks *m_tools = nullptr;
     TrendLogging *m_trend = nullptr;
     int m_tableCounter = 0;

@@ -2,6 +2,7 @@
 
 #include "core/protocol/result.h"
 #include "core/watch/datalogger.h"
+#include "ui/watch/watchtablemodel.h" // model() converts the QPointer: the full type
 
 #include <QObject>
 #include <QPointer>
@@ -10,8 +11,6 @@
 #include <vector>
 
 namespace Fatek {
-
-class WatchTableModel;
 
 // Logs one watch table to a CSV file (DataLogger) while the GUI polls it: one row per batch of
 // values (or change of quality) the table receives, with the columns the table had at start.

@@ -45,29 +45,15 @@ QString qualityName(ValueQuality quality)
 
 WatchTableModel::WatchTableModel(QObject *parent)
     : QAbstractTableModel(parent)
+    , m_valueState([this](int row) -> const WatchItemSpec & { return m_rows.at(row).spec(); })
+    , m_edits(this)
     , m_goodIcon(QStringLiteral(":/icons/good.svg"))
     , m_staleIcon(QStringLiteral(":/icons/stale.svg"))
     , m_errorIcon(QStringLiteral(":/icons/error.svg"))
     , m_forcedIcon(QStringLiteral(":/icons/forced.svg"))
 {
-    m_clock.start();
-    m_flashTimer.setInterval(100);
-    connect(&m_flashTimer, &QTimer::timeout, this, &WatchTableModel::expireFlashes);
-    // One timer for every row's age: a few repaints a second of the quality column only.
-    m_ageTimer.setInterval(ageRefreshMs);
-    connect(&m_ageTimer, &QTimer::timeout, this, &WatchTableModel::refreshAges);
-    m_sliceTimer.setSingleShot(true);
-    connect(&m_sliceTimer, &QTimer::timeout, this, [this] {
-        if (!m_inRound) {
-            m_inRound = true;
-            m_roundStart.start();
-        }
-        applySlice(qint64(sliceBudgetMs) * 1000000);
-        if (m_queue.empty())
-            m_inRound = false;
-        else
-            scheduleSlice();
-    });
+    connect(&m_valueState, &WatchValueState::cellsChanged, this,
+            &WatchTableModel::emitCellsChanged);
 }
 
 quint64 WatchTableModel::newRowKey()
@@ -85,36 +71,14 @@ int WatchTableModel::columnCount(const QModelIndex &parent) const
     return parent.isValid() ? 0 : ColumnCount;
 }
 
-void WatchTableModel::resetValue(Row &row)
-{
-    row.itemKey = WatchedItem::newKey();
-    row.raw = 0;
-    row.quality = ValueQuality::Stale;
-    row.error = {};
-    row.updated = {};
-    row.received = false;
-    row.batch = 0;
-}
-
-void WatchTableModel::rebuildIndex()
-{
-    m_index.clear();
-    for (int r = 0; r < m_rows.size(); ++r)
-        m_index.insert(m_rows.at(r).itemKey, r);
-}
-
 void WatchTableModel::setItems(const QList<WatchItemSpec> &items)
 {
     beginResetModel();
-    // Values queued for the old rows have nowhere to go.
-    m_queue.clear();
-    m_sliceTimer.stop();
-    m_inRound = false;
+    m_valueState.clear();
     m_rows.clear();
-    m_index.clear();
     endResetModel();
     // Another list: the steps taken on the old one mean nothing here.
-    m_undo.clear();
+    undoStack()->clear();
     if (!items.isEmpty())
         applyInsert(0, items);
     else
@@ -128,6 +92,44 @@ QList<WatchItemSpec> WatchTableModel::items() const
     for (const Row &row : m_rows)
         list.append(row.spec());
     return list;
+}
+
+QList<WatchedItem> WatchTableModel::watchItems(int intervalMs) const
+{
+    QList<WatchedItem> items;
+    items.reserve(m_rows.size());
+    for (int r = 0; r < m_rows.size(); ++r)
+        items.append({m_valueState.at(r).itemKey, m_rows.at(r).spec(), intervalMs});
+    return items;
+}
+
+QString WatchTableModel::rowsText(const QList<int> &rows) const
+{
+    // A field with the separator of pasted rows (tab, turned into ';' by the paste) or a quote
+    // is quoted, as CSV quotes it.
+    const auto field = [](QString text) {
+        if (text.contains(QLatin1Char(';')) || text.contains(QLatin1Char('"'))
+            || text.contains(QLatin1Char('\t')) || text.contains(QLatin1Char('\n'))) {
+            text.replace(QLatin1Char('"'), QLatin1String("\"\""));
+            text = QLatin1Char('"') + text + QLatin1Char('"');
+        }
+        return text;
+    };
+    // The header's words are the watch list file's column names (not translated): a paste reads
+    // the columns by them, in any language.
+    QStringList lines{QStringLiteral("address\tname\tvalue\tformat\tquality\tcomment")};
+    for (int row : rows) {
+        const WatchItemSpec &item = m_rows.at(row).spec();
+        const QString quality = data(index(row, QualityColumn)).toString();
+        lines << QStringList{QString::fromStdString(item.address.toString()),
+                             field(item.name),
+                             field(valueText(row)),
+                             ValueFormat::name(item.format),
+                             field(quality),
+                             field(item.comment)}
+                     .join(QLatin1Char('\t'));
+    }
+    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
 
 bool WatchTableModel::removeRows(int row, int count, const QModelIndex &parent)
@@ -167,117 +169,22 @@ int WatchTableModel::valueWidth(int row) const
     return m_rows.at(row).values.width();
 }
 
-bool WatchTableModel::hasValue(int row) const
-{
-    return m_rows.at(row).received;
-}
-
-std::uint64_t WatchTableModel::rawValue(int row) const
-{
-    return m_rows.at(row).raw;
-}
-
-ValueQuality WatchTableModel::quality(int row) const
-{
-    return m_rows.at(row).quality;
-}
-
-qint64 WatchTableModel::ageMs(int row) const
-{
-    const Row &r = m_rows.at(row);
-    if (!r.received || !r.updated.isValid())
-        return -1;
-    return std::max<qint64>(0, QDateTime::currentMSecsSinceEpoch() - r.updated.toMSecsSinceEpoch());
-}
-
-void WatchTableModel::setAgeRows(std::function<std::vector<int>()> rowsOnScreen)
-{
-    m_ageRows = std::move(rowsOnScreen);
-}
-
-void WatchTableModel::refreshAges()
-{
-    if (m_rows.isEmpty()) {
-        m_ageTimer.stop();
-        return;
-    }
-    if (!m_ageRows) {
-        Q_EMIT dataChanged(index(0, QualityColumn), index(rowCount() - 1, QualityColumn),
-                           {Qt::DisplayRole});
-        return;
-    }
-    std::vector<int> rows = m_ageRows();
-    std::erase_if(rows, [this](int r) { return r < 0 || r >= m_rows.size(); });
-    emitRowsChanged(std::move(rows), QualityColumn, QualityColumn);
-}
-
 QString WatchTableModel::qualityReason(int row) const
 {
-    const Row &r = m_rows.at(row);
+    const WatchValueState::RowValue &r = m_valueState.at(row);
     return r.quality != ValueQuality::Good && !r.error.empty() ? translated(r.error) : QString();
 }
 
 QString WatchTableModel::valueText(int row) const
 {
-    const Row &r = m_rows.at(row);
-    if (!r.received)
+    const WatchValueState::RowValue &v = m_valueState.at(row);
+    if (!v.received)
         return {};
-    return r.values.text(r.raw);
+    return m_rows.at(row).values.text(v.raw);
 }
 
-void WatchTableModel::setWriteOutcome(int row, const QString &text)
-{
-    m_rows[row].writeOutcome = text;
-    Q_EMIT dataChanged(index(row, ValueColumn), index(row, ValueColumn), {Qt::ToolTipRole});
-}
-
-void WatchTableModel::setForcedFlags(quint8 station, const Address &start,
-                                     const std::vector<std::uint32_t> &flags)
-{
-    std::vector<int> changed;
-    for (int r = 0; r < m_rows.size(); ++r) {
-        Row &row = m_rows[r];
-        const Address &a = row.spec().address;
-        if (row.spec().station != station || a.type != start.type || a.number < start.number
-            || a.number - start.number >= flags.size())
-            continue;
-        const bool forced = flags[a.number - start.number] != 0;
-        if (row.forced != forced) {
-            row.forced = forced;
-            changed.push_back(r);
-        }
-    }
-    emitRowsChanged(std::move(changed), ValueColumn, ValueColumn);
-}
-
-void WatchTableModel::clearForced()
-{
-    std::vector<int> changed;
-    for (int r = 0; r < m_rows.size(); ++r) {
-        if (m_rows[r].forced) {
-            m_rows[r].forced.reset();
-            changed.push_back(r);
-        }
-    }
-    emitRowsChanged(std::move(changed), ValueColumn, ValueColumn);
-}
-
-void WatchTableModel::setSilentStations(const QList<quint8> &stations)
-{
-    if (stations == m_silentStations)
-        return;
-    // Rows of a station that fell silent or answers again change their quality text.
-    std::vector<int> changed;
-    for (int r = 0; r < m_rows.size(); ++r) {
-        const quint8 s = m_rows.at(r).spec().station;
-        if (stations.contains(s) != m_silentStations.contains(s))
-            changed.push_back(r);
-    }
-    m_silentStations = stations;
-    emitRowsChanged(std::move(changed), QualityColumn, QualityColumn);
-}
-
-void WatchTableModel::emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn)
+void WatchTableModel::emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn,
+                                      const QList<int> &roles)
 {
     // One dataChanged per run of consecutive rows: a 100-row table polled every 100 ms must not
     // cost 100 signals per batch.
@@ -289,30 +196,86 @@ void WatchTableModel::emitRowsChanged(std::vector<int> rows, int firstColumn, in
         std::size_t j = i;
         while (j + 1 < rows.size() && rows[j + 1] == rows[j] + 1)
             ++j;
-        Q_EMIT dataChanged(index(rows[i], firstColumn), index(rows[j], lastColumn));
+        Q_EMIT dataChanged(index(rows[i], firstColumn), index(rows[j], lastColumn), roles);
         i = j + 1;
     }
 }
 
-void WatchTableModel::expireFlashes()
+void WatchTableModel::emitCellsChanged(const std::vector<int> &rows, WatchValueState::Cell cell,
+                                       const QList<int> &roles)
 {
-    const qint64 now = m_clock.elapsed();
-    std::vector<int> expired;
-    bool pending = false;
-    for (int r = 0; r < m_rows.size(); ++r) {
-        Row &row = m_rows[r];
-        if (row.flashUntil == 0)
-            continue;
-        if (row.flashUntil <= now) {
-            row.flashUntil = 0;
-            expired.push_back(r);
-        } else {
-            pending = true;
-        }
+    int column = ValueColumn;
+    switch (cell) {
+    case WatchValueState::Cell::Name: column = NameColumn; break;
+    case WatchValueState::Cell::Value: column = ValueColumn; break;
+    case WatchValueState::Cell::Quality: column = QualityColumn; break;
+    case WatchValueState::Cell::Updated: column = UpdatedColumn; break;
     }
-    if (!pending)
-        m_flashTimer.stop();
-    emitRowsChanged(std::move(expired), ValueColumn, ValueColumn);
+    emitRowsChanged(rows, column, column, roles);
+}
+
+void WatchTableModel::applyInsert(int row, const QList<WatchItemSpec> &items)
+{
+    beginInsertRows({}, row, row + static_cast<int>(items.size()) - 1);
+    QList<Row> made;
+    made.reserve(items.size());
+    for (const WatchItemSpec &spec : items) {
+        Row r;
+        r.values = ItemValues(withSymbols(spec));
+        r.key = newRowKey();
+        made.append(std::move(r));
+    }
+    m_rows.insert(row, made.size(), Row());
+    std::move(made.begin(), made.end(), m_rows.begin() + row);
+    m_valueState.insertRows(row, static_cast<int>(made.size()));
+    endInsertRows();
+    Q_EMIT pollListChanged();
+    Q_EMIT itemsEdited();
+}
+
+void WatchTableModel::applyRemove(int row, int count)
+{
+    beginRemoveRows({}, row, row + count - 1);
+    m_rows.remove(row, count);
+    m_valueState.removeRows(row, count);
+    endRemoveRows();
+    Q_EMIT pollListChanged();
+    Q_EMIT itemsEdited();
+}
+
+void WatchTableModel::applySpec(int row, const WatchItemSpec &spec)
+{
+    Row &r = m_rows[row];
+    const bool stationChanged = r.spec().station != spec.station;
+    const bool spanChanged = r.values.setItem(spec);
+    if (spanChanged)
+        m_valueState.resetRow(row);
+    Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    if (spanChanged || stationChanged)
+        Q_EMIT pollListChanged();
+    Q_EMIT itemsEdited();
+}
+
+void WatchTableModel::applyOrder(const QList<int> &order)
+{
+    Q_EMIT layoutAboutToBeChanged({}, QAbstractItemModel::VerticalSortHint);
+    QList<Row> rows;
+    rows.reserve(m_rows.size());
+    QList<int> newRowOf(order.size());
+    for (int i = 0; i < order.size(); ++i) {
+        rows.append(std::move(m_rows[order.at(i)]));
+        newRowOf[order.at(i)] = i;
+    }
+    m_rows = std::move(rows);
+    m_valueState.reorder(order);
+    const QModelIndexList before = persistentIndexList();
+    QModelIndexList after;
+    after.reserve(before.size());
+    for (const QModelIndex &i : before)
+        after.append(index(newRowOf.at(i.row()), i.column()));
+    changePersistentIndexList(before, after);
+    Q_EMIT layoutChanged({}, QAbstractItemModel::VerticalSortHint);
+    Q_EMIT itemsEdited();
 }
 
 QVariant WatchTableModel::data(const QModelIndex &index, int role) const
@@ -321,8 +284,9 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         return {};
     const int r = index.row();
     const Row &row = m_rows.at(r);
+    const WatchValueState::RowValue &state = m_valueState.at(r);
     const WatchItemSpec &spec = row.spec();
-    const bool have = row.received;
+    const bool have = state.received;
     const ValueQuality q = quality(r);
     const bool discrete = isDiscrete(spec.address.type);
 
@@ -330,7 +294,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
     case Qt::DisplayRole:
         switch (index.column()) {
         // A row without its own name shows the gateway's; typing one replaces it.
-        case NameColumn: return spec.name.isEmpty() ? row.peerName : spec.name;
+        case NameColumn: return spec.name.isEmpty() ? state.peerName : spec.name;
         case AddressColumn: return QString::fromStdString(spec.address.toString());
         case StationColumn: return spec.station;
         case ValueColumn: return have ? valueText(r) : QStringLiteral("…");
@@ -339,7 +303,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                                   : UiText::format(spec.format);
         case QualityColumn: {
             // Short enough for the column; the station is beside it and in the tooltip.
-            QString text = (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
+            QString text = (q == ValueQuality::Stale && m_valueState.isSilent(spec.station))
                                ? tr("no answer")
                            : (!have && q != ValueQuality::Error) ? tr("waiting")
                                                                  : qualityName(q);
@@ -349,7 +313,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             return text;
         }
         case UpdatedColumn: {
-            const QDateTime &latest = row.updated;
+            const QDateTime &latest = state.updated;
             return latest.isValid() ? latest.toLocalTime().toString(QStringLiteral("HH:mm:ss.zzz"))
                                     : QString();
         }
@@ -374,22 +338,22 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             if (!have)
                 return {};
             const std::optional<double> value
-                = ValueFormat::number(row.raw, row.values.width(), spec.format, spec.swapWords);
+                = ValueFormat::number(state.raw, row.values.width(), spec.format, spec.swapWords);
             return value ? QVariant(*value) : QVariant(valueText(r));
         }
         case QualityColumn: return static_cast<int>(q);
-        case UpdatedColumn: return row.updated.isValid() ? row.updated.toMSecsSinceEpoch() : 0;
+        case UpdatedColumn: return state.updated.isValid() ? state.updated.toMSecsSinceEpoch() : 0;
         default: return data(index, Qt::DisplayRole);
         }
     case Qt::CheckStateRole:
         if (index.column() == ValueColumn && discrete && have)
-            return (row.raw & 1u) ? Qt::Checked : Qt::Unchecked;
+            return (state.raw & 1u) ? Qt::Checked : Qt::Unchecked;
         return {};
     case Qt::ToolTipRole: {
         QStringList lines;
         const QString reason = qualityReason(r);
         if (index.column() == ValueColumn || index.column() == QualityColumn) {
-            if (q == ValueQuality::Stale && m_silentStations.contains(spec.station))
+            if (q == ValueQuality::Stale && m_valueState.isSilent(spec.station))
                 lines << tr("No answer from station %1: check the station number, the PLC's "
                             "power and the cable.")
                              .arg(spec.station);
@@ -397,15 +361,16 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                 lines << tr("%1: %2").arg(qualityName(q), reason);
             else if (!have)
                 lines << tr("No value yet");
-            if (!row.writeOutcome.isEmpty())
-                lines << row.writeOutcome;
-            if (index.column() == ValueColumn && row.forced.value_or(false))
+            if (!state.writeOutcome.isEmpty())
+                lines << state.writeOutcome;
+            if (index.column() == ValueColumn && state.forced.value_or(false))
                 lines << tr("Forced: disabled from the ladder, it keeps the value written to it "
                             "(Tools \u25b8 Forcing lists and enables forced points).");
             if (index.column() == ValueColumn)
                 lines << (discrete ? tr("Click the box to toggle")
                                    : tr("Double-click or F2 to write"));
-        } else if (index.column() == NameColumn && spec.name.isEmpty() && !row.peerName.isEmpty()) {
+        } else if (index.column() == NameColumn && spec.name.isEmpty()
+                   && !state.peerName.isEmpty()) {
             lines << tr("The gateway's name for this item; type a name to use your own.");
         } else if (index.column() == AddressColumn) {
             const int count = row.values.elementCount();
@@ -421,11 +386,11 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
     }
     case Qt::DecorationRole:
-        if (index.column() == ValueColumn && row.forced.value_or(false))
+        if (index.column() == ValueColumn && state.forced.value_or(false))
             return m_forcedIcon;
         if (index.column() == QualityColumn) {
             if (q == ValueQuality::Error
-                || (q == ValueQuality::Stale && m_silentStations.contains(spec.station)))
+                || (q == ValueQuality::Stale && m_valueState.isSilent(spec.station)))
                 return m_errorIcon;
             if ((q == ValueQuality::Stale || q == ValueQuality::Late) && have)
                 return m_staleIcon;
@@ -447,7 +412,7 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             return QGuiApplication::palette().brush(QPalette::PlaceholderText);
         return {};
     case Qt::BackgroundRole:
-        if (index.column() == ValueColumn && row.flashUntil > m_clock.elapsed()) {
+        if (index.column() == ValueColumn && m_valueState.isFlashing(r)) {
             QColor flash = QGuiApplication::palette().color(QPalette::Highlight);
             flash.setAlpha(90);
             return flash;

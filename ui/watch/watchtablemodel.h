@@ -1,16 +1,13 @@
 #pragma once
 
-#include "core/session/watchvalue.h"
 #include "core/watch/itemassembler.h"
 #include "core/watch/watchlist.h"
+#include "watchtableedits.h"
+#include "watchvaluestate.h"
 
 #include <QAbstractTableModel>
-#include <QElapsedTimer>
-#include <QHash>
 #include <QIcon>
 #include <QPointer>
-#include <QTimer>
-#include <QUndoStack>
 
 #include <functional>
 #include <optional>
@@ -22,12 +19,12 @@ class SymbolNames;
 class SymbolTable;
 
 // Rows of one watch table: what to watch (WatchItemSpec) plus the latest value, its quality and
-// time. Every item spans one or more elements (a float over R100 is R100+R101); ItemValues makes
-// them. The link (PlcLink) reports each row's value as one item value, its elements joined
-// (ItemAssembler), under the row's item key. Values arrive in batches (applyValues, or queueValues
-// while polling); changed rows are reported with coalesced dataChanged, one per run of rows and
-// changed column. Values are formatted in data(), that is only for the rows a view asks about (the
-// visible ones).
+// time (WatchValueState). Every item spans one or more elements (a float over R100 is R100+R101);
+// ItemValues makes them. The link (PlcLink) reports each row's value as one item value, its
+// elements joined (ItemAssembler), under the row's item key. Values arrive in batches (applyValues,
+// or queueValues while polling); changed rows are reported with coalesced dataChanged, one per run
+// of rows and changed column. Values are formatted in data(), that is only for the rows a view asks
+// about (the visible ones). The edits a person makes are steps of WatchTableEdits.
 class WatchTableModel : public QAbstractTableModel
 {
     Q_OBJECT
@@ -45,9 +42,9 @@ public:
         ColumnCount
     };
     // How long a changed value stays highlighted.
-    static constexpr int flashMs = 700;
+    static constexpr int flashMs = WatchValueState::flashMs;
     // How often the quality column's value ages ("good, 0.4 s") are repainted.
-    static constexpr int ageRefreshMs = 250;
+    static constexpr int ageRefreshMs = WatchValueState::ageRefreshMs;
     // What a sorting proxy compares: numbers for addresses, values and times, else the text.
     static constexpr int SortRole = Qt::UserRole + 1;
 
@@ -57,7 +54,10 @@ public:
     // shows: behind a sort/filter proxy (Qt 6.4 filters every changed row again, whatever the
     // role) a 10,000-row table would otherwise be filtered four times a second for a repaint of
     // the 30 rows on screen.
-    void setAgeRows(std::function<std::vector<int>()> rowsOnScreen);
+    void setAgeRows(std::function<std::vector<int>()> rowsOnScreen)
+    {
+        m_valueState.setAgeRows(std::move(rowsOnScreen));
+    }
 
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
@@ -73,23 +73,32 @@ public:
     // Edits a person makes to the rows (typed, pasted, dragged, removed, formats) are steps on
     // undoStack(); each of the calls below is one step. Values written to the PLC never are: a
     // write cannot be taken back. setItems (a list loaded) starts a new history.
-    QUndoStack *undoStack() { return &m_undo; }
+    QUndoStack *undoStack() { return m_edits.undoStack(); }
     // Rows whose name or comment is empty take those of the window's names (setSymbols).
-    void addItems(const QList<WatchItemSpec> &items);
-    void insertItems(int row, const QList<WatchItemSpec> &items);
-    void removeItems(QList<int> rows);
+    void addItems(const QList<WatchItemSpec> &items) { insertItems(rowCount(), items); }
+    void insertItems(int row, const QList<WatchItemSpec> &items)
+    {
+        m_edits.insertItems(row, items);
+    }
+    void removeItems(QList<int> rows) { m_edits.removeItems(std::move(rows)); }
     // Moves `rows` one place up (delta -1) or down (+1), as a block past their neighbour;
     // false when nothing can move (at the top or bottom already).
-    bool moveItems(const QList<int> &rows, int delta);
+    bool moveItems(const QList<int> &rows, int delta) { return m_edits.moveItems(rows, delta); }
     // Moves `rows` to stand, in their order, before the row that is `destination` now
     // (rowCount(): at the end).
-    bool moveItemsTo(const QList<int> &rows, int destination);
+    bool moveItemsTo(const QList<int> &rows, int destination)
+    {
+        return m_edits.moveItemsTo(rows, destination);
+    }
     // Replaces row `row`'s item (address, name, comment, station, format), validated as a file's
     // entry is.
-    Status editItem(int row, const WatchItemSpec &spec);
+    Status editItem(int row, const WatchItemSpec &spec) { return m_edits.editItem(row, spec); }
     // One format for several rows, one step; rows whose element cannot show it keep theirs and
     // the first refusal is returned.
-    Status setFormats(const QList<int> &rows, DisplayFormat format);
+    Status setFormats(const QList<int> &rows, DisplayFormat format)
+    {
+        return m_edits.setFormats(rows, format);
+    }
     void setItems(const QList<WatchItemSpec> &items);
     // The window's names (the ladder project's, see SymbolNames), not owned; nullptr: none.
     // Rows added from now on get the names their addresses have there when theirs are empty,
@@ -100,57 +109,69 @@ public:
     WatchItemSpec item(int row) const { return m_rows.at(row).values.item(); }
     // Changes the format (and word order), one step; refused with a message when it does not
     // fit the item.
-    Status setFormat(int row, DisplayFormat format, bool swapWords);
+    Status setFormat(int row, DisplayFormat format, bool swapWords)
+    {
+        return m_edits.setFormat(row, format, swapWords);
+    }
     QList<DisplayFormat> availableFormats(int row) const;
 
     // Bits of the row's value (1, 16, 32 or 64) and whether a value has arrived.
     int valueWidth(int row) const;
-    bool hasValue(int row) const;
-    std::uint64_t rawValue(int row) const;
-    ValueQuality quality(int row) const;
+    bool hasValue(int row) const { return m_valueState.at(row).received; }
+    std::uint64_t rawValue(int row) const { return m_valueState.at(row).raw; }
+    ValueQuality quality(int row) const { return m_valueState.at(row).quality; }
     // Milliseconds since the row's value was last read (-1: never).
-    qint64 ageMs(int row) const;
+    qint64 ageMs(int row) const { return m_valueState.ageMs(row); }
     QString qualityReason(int row) const;
     QString valueText(int row) const;
+    // The rows as tab-separated text in the given order, a header line first (address, name,
+    // value, format, quality, comment): what a copy of them puts on the clipboard.
+    QString rowsText(const QList<int> &rows) const;
 
     // What the link watches for this table: one item per row, under the row's item key.
     QList<WatchedItem> watchItems(int intervalMs) const;
     // Applies a batch now: every value is in the model when this returns.
-    void applyValues(const QList<WatchItemValue> &values);
+    void applyValues(const QList<WatchItemValue> &values) { m_valueState.applyValues(values); }
     // Polling: the batch is kept and applied from the event loop, in slices of at most
     // sliceBudgetMs and at most one round of slices started per frameMs, so that a batch of
     // 10,000 values (or a burst of batches) never holds the UI thread for a frame. Batches queued
     // meanwhile are coalesced: the newest value of each item wins, older ones are skipped,
     // none is lost (an item missing from a newer batch keeps its newest older value).
-    void queueValues(const QList<WatchItemValue> &values);
-    bool hasQueuedValues() const { return !m_queue.empty(); }
+    void queueValues(const QList<WatchItemValue> &values) { m_valueState.queueValues(values); }
+    bool hasQueuedValues() const { return m_valueState.hasQueuedValues(); }
     // Applies everything queued now. markAllStale does so first: a good value queued before must
     // not turn a row fresh after it. Rows may be added or removed meanwhile (values are found by
     // item key when applied; those of removed rows are dropped); setItems drops the queue.
-    void flushValues();
-    static constexpr int frameMs = 16;
-    static constexpr int sliceBudgetMs = 3;
+    void flushValues() { m_valueState.flushValues(); }
+    static constexpr int frameMs = WatchValueState::frameMs;
+    static constexpr int sliceBudgetMs = WatchValueState::sliceBudgetMs;
     // No values are coming (no connection, paused): every row keeps its value, marked stale.
     // The reason is a core message ("link lost: ...") or the UI's own text.
-    void markAllStale(const Message &reason);
+    void markAllStale(const Message &reason) { m_valueState.markAllStale(reason); }
     void markAllStale(const QString &reason) { markAllStale(Message::text(reason.toStdString())); }
 
     // Stable handle of a row across inserts and removals (for writes that finish later).
     quint64 rowKey(int row) const { return m_rows.at(row).key; }
     int rowOfKey(quint64 key) const;
-    void setWriteOutcome(int row, const QString &text);
+    void setWriteOutcome(int row, const QString &text) { m_valueState.setWriteOutcome(row, text); }
 
     // Forcing: whether a discrete row is disabled from the ladder (43 flags); nothing for
     // registers and before the first read.
-    std::optional<bool> isForced(int row) const { return m_rows.at(row).forced; }
+    std::optional<bool> isForced(int row) const { return m_valueState.at(row).forced; }
     // Flags of `flags.size()` points from `start` on `station`, as 43 answered them.
     void setForcedFlags(quint8 station, const Address &start,
-                        const std::vector<std::uint32_t> &flags);
-    void clearForced();
+                        const std::vector<std::uint32_t> &flags)
+    {
+        m_valueState.setForcedFlags(station, start, flags);
+    }
+    void clearForced() { m_valueState.clearForced(); }
 
     // Stations that answer nothing at present (every attempt of their last request timed out):
     // their rows say "no answer from station N" instead of "waiting" or "stale".
-    void setSilentStations(const QList<quint8> &stations);
+    void setSilentStations(const QList<quint8> &stations)
+    {
+        m_valueState.setSilentStations(stations);
+    }
 
 Q_SIGNALS:
     void writeRequested(int row, quint64 raw);
@@ -167,35 +188,10 @@ private:
     {
         ItemValues values; // the item: its elements, their join, its text and parsing
         quint64 key = 0;   // the row's handle (rowKey)
-        // What the link knows the item by; a new one when the item spans other elements, so
-        // that values still arriving for the old ones match nothing.
-        quint64 itemKey = 0;
-        std::uint64_t raw = 0;
-        ValueQuality quality = ValueQuality::Stale;
-        Message error;         // translated when shown
-        QDateTime updated;     // when its value was last read
-        QString peerName;      // the far end's name for the item, shown when it has none
-        bool received = false; // every element has been read once
-        // Sequence number of the batch that set it: a newer batch wins, so applying queued
-        // batches newest first ends as applying them in order would.
-        quint64 batch = 0;
-        QString writeOutcome;
-        qint64 flashUntil = 0;
-        std::optional<bool> forced;
-        quint64 slice = 0;        // last apply slice that touched the row
-        std::uint64_t before = 0; // the row's value when that slice first touched it
-        bool hadValue = false;    // and whether it had one
 
         const WatchItemSpec &spec() const { return values.item(); }
     };
-    struct Batch
-    {
-        QList<WatchItemValue> values;
-        quint64 sequence = 0;
-        qsizetype next = 0; // values before this one are applied or skipped
-    };
 
-    static void resetValue(Row &row);
     static quint64 newRowKey();
     // The steps' own changes, without history.
     void applyInsert(int row, const QList<WatchItemSpec> &items);
@@ -203,46 +199,22 @@ private:
     void applySpec(int row, const WatchItemSpec &spec);
     // Row i becomes the row that was order[i].
     void applyOrder(const QList<int> &order);
-    void refreshAges();
     WatchItemSpec withSymbols(WatchItemSpec spec) const;
     void applySymbols(const SymbolTable &previous);
-    void rebuildIndex();
-    void emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn);
-    void scheduleSlice();
-    void applySlice(qint64 budgetNs);
-    void applyOne(const WatchItemValue &v, quint64 batch);
-    void finishSlice();
-    void expireFlashes();
+    void emitRowsChanged(std::vector<int> rows, int firstColumn, int lastColumn,
+                         const QList<int> &roles = {});
+    void emitCellsChanged(const std::vector<int> &rows, WatchValueState::Cell cell,
+                          const QList<int> &roles);
 
     QList<Row> m_rows;
-    QHash<quint64, int> m_index; // item key -> row
-    QElapsedTimer m_clock;
-    QTimer m_flashTimer;
-    QTimer m_ageTimer;
-    std::function<std::vector<int>()> m_ageRows;
-    QUndoStack m_undo;
+    WatchValueState m_valueState;
+    WatchTableEdits m_edits;
     // Loaded once: a QIcon made per paint would parse its SVG every time.
     QIcon m_goodIcon;
     QIcon m_staleIcon;
     QIcon m_errorIcon;
     QIcon m_forcedIcon;
-    QList<quint8> m_silentStations;
     QPointer<const SymbolNames> m_symbols;
-
-    // Queued batches, oldest first; applied newest first (older values of an element that a
-    // newer batch already set are skipped).
-    std::vector<Batch> m_queue;
-    quint64 m_batchSequence = 0;
-    QTimer m_sliceTimer;
-    QElapsedTimer m_roundStart; // start of the last round of slices
-    bool m_inRound = false;     // slices follow each other until the queue is empty
-    // The slice under way: its number and the rows whose cells it changed.
-    quint64 m_slice = 0;
-    std::vector<int> m_touchedRows;
-    std::vector<int> m_valueRows;
-    std::vector<int> m_qualityRows;
-    std::vector<int> m_updatedRows;
-    std::vector<int> m_nameRows;
 };
 
 } // namespace Fatek

@@ -1,5 +1,7 @@
 #include "watchtableview.h"
 
+#include "watchtablemodel.h"
+
 #include <QAccessible>
 #include <QDrag>
 #include <QDragEnterEvent>
@@ -18,6 +20,63 @@ WatchTableView::WatchTableView(QWidget *parent)
 {
     setRowsMovable(true);
     setDropIndicatorShown(false); // the view's own is per cell; the line below is per row
+}
+
+void WatchTableView::setUpColumns()
+{
+    setSelectionBehavior(QAbstractItemView::SelectRows);
+    setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                    | QAbstractItemView::AnyKeyPressed);
+    setAlternatingRowColors(true);
+    setWordWrap(false);
+    verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    verticalHeader()->hide();
+    QHeaderView *header = horizontalHeader();
+    header->setStretchLastSection(true);
+    // Click a header to sort, again for the other way, a third time for the rows' own order.
+    header->setSortIndicatorClearable(true);
+    header->setSortIndicator(-1, Qt::AscendingOrder); // not sorted by the first column at start
+    setSortingEnabled(true);
+    const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    // Quality holds its age too ("good, 0.4 s"). The comment stretches into what is left: its own
+    // width is the least it keeps (a stretched last section never gets narrower than that).
+    const int widths[] = {14, 7, 5, 13, 9, 10, 9, 3};
+    for (int c = 0; c < WatchTableModel::ColumnCount; ++c)
+        header->resizeSection(c, widths[c] * em);
+    header->setMinimumSectionSize(3 * em);
+    setTextElideMode(Qt::ElideRight);
+    m_fitColumns = true;
+}
+
+bool WatchTableView::viewportEvent(QEvent *event)
+{
+    if (m_fitColumns && event->type() == QEvent::Resize)
+        fitColumns();
+    return QTableView::viewportEvent(event);
+}
+
+void WatchTableView::fitColumns()
+{
+    QHeaderView *header = horizontalHeader();
+    const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    const int lastColumn = WatchTableModel::CommentColumn;
+    int others = 0;
+    for (int c = 0; c < lastColumn; ++c)
+        others += header->isSectionHidden(c) ? 0 : header->sectionSize(c);
+    int excess = others + 6 * em - viewport()->width();
+    // The name gives room first (it elides), then the value and the time.
+    for (const auto &[column, least] : {std::pair{int(WatchTableModel::NameColumn), 7 * em},
+                                        std::pair{int(WatchTableModel::ValueColumn), 8 * em},
+                                        std::pair{int(WatchTableModel::UpdatedColumn), 7 * em}}) {
+        if (excess <= 0)
+            break;
+        const int size = header->sectionSize(column);
+        const int give = std::clamp(size - least, 0, excess);
+        if (give > 0) {
+            header->resizeSection(column, size - give);
+            excess -= give;
+        }
+    }
 }
 
 void WatchTableView::setRowsMovable(bool movable)

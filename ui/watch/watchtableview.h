@@ -21,6 +21,12 @@ class WatchTableView : public QTableView
 public:
     explicit WatchTableView(QWidget *parent = nullptr);
 
+    // The watch table's look, once its model is set: whole rows selected, sorted by a header
+    // click, the columns' widths, and from now on the widest columns narrowed when the view is
+    // too narrow for them all (the comment column stretches into what is left, so the table never
+    // scrolls sideways).
+    void setUpColumns();
+
     // While off (sorted or filtered rows), rows cannot be dragged.
     void setRowsMovable(bool movable);
     // What a drag of the selected rows carries (only this view takes it); nullptr: none selected.
@@ -41,6 +47,7 @@ protected:
     void dropEvent(QDropEvent *event) override;
     void startDrag(Qt::DropActions supportedActions) override;
     void paintEvent(QPaintEvent *event) override;
+    bool viewportEvent(QEvent *event) override;
 
 private:
     // The row a drop at `pos` (viewport) goes before.
@@ -48,8 +55,10 @@ private:
     // The view's rows a drag of this view carries; empty when it is not this view's.
     QList<int> draggedRows(const QMimeData *mime) const;
     void setDropLine(int row);
+    void fitColumns();
 
     int m_dropRow = -1; // where the drop line is drawn, -1: none
+    bool m_fitColumns = false;
 };
 
 } // namespace Fatek

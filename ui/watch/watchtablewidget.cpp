@@ -2,7 +2,6 @@
 
 #include "forcedmarks.h"
 #include "ui/common/messageline.h"
-#include "ui/common/toolconfirmation.h"
 #include "ui/common/uitext.h"
 #include "ui/connection/connectionmanager.h"
 #include "watchdelegate.h"
@@ -16,17 +15,14 @@
 #include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
-#include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
-#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableView>
-#include <QTime>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -42,8 +38,36 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     , m_model(new WatchTableModel(this))
     , m_proxy(new WatchTableProxy(this))
     , m_view(new WatchTableView(this))
+    , m_actions(this, m_view, m_model->undoStack())
+    , m_writer(new WatchTableWriter(m_model, this))
     , m_forcedMarks(new ForcedMarks(m_model, this))
     , m_subscription(new PlantSubscription(this))
+{
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(createEntryBar());
+    layout->addLayout(createMessageBar());
+    setUpView();
+    layout->addWidget(m_view, 1);
+    connectActions();
+    connectModel();
+    connectManager();
+    connect(m_writer, &WatchTableWriter::message, this, &WatchTableWidget::showMessage);
+    connect(m_writer, &WatchTableWriter::refused, this,
+            [this](const QString &what) { m_failedWrite = what; });
+
+    // Forced marks cost bus time: only for a table someone can see, that polls a live link.
+    m_forcedMarks->setActiveCheck([this] {
+        return isVisible() && !isPaused() && m_connection
+               && m_connection->linkState() == LinkState::Connected;
+    });
+
+    refreshConnections();
+    if (!manager->connections().isEmpty())
+        setConnection(manager->connections().constFirst());
+}
+
+QLayout *WatchTableWidget::createEntryBar()
 {
     m_addEdit = new QLineEdit(this);
     m_addEdit->setObjectName(QStringLiteral("addressEdit"));
@@ -88,6 +112,24 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     bar->addWidget(m_pause);
     bar->addWidget(m_confirmBox);
 
+    connect(m_addEdit, &QLineEdit::returnPressed, this, [this] { addFromText(m_addEdit->text()); });
+    connect(addButton, &QPushButton::clicked, this, [this] { addFromText(m_addEdit->text()); });
+    connect(m_interval, &QSpinBox::valueChanged, this, &WatchTableWidget::edited);
+    connect(m_confirmBox, &QCheckBox::toggled, this, &WatchTableWidget::edited);
+    connect(this, &WatchTableWidget::nameChanged, this, &WatchTableWidget::edited);
+    connect(m_interval, &QSpinBox::valueChanged, this, &WatchTableWidget::pushPollList);
+    connect(m_pause, &QToolButton::toggled, this, [this](bool paused) {
+        pushPollList();
+        if (paused)
+            m_model->markAllStale(tr("polling paused"));
+    });
+    connect(m_connectionCombo, &QComboBox::activated, this,
+            [this](int index) { setConnection(m_manager->connection(index)); });
+    return bar;
+}
+
+QLayout *WatchTableWidget::createMessageBar()
+{
     // One line, always there: a message that comes and goes never shifts the rows under the
     // pointer. The whole text is in the tooltip and in the status bar.
     m_message = new MessageLine(1, this);
@@ -111,7 +153,16 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
         m_filterEdit->setFocus(Qt::ShortcutFocusReason);
         m_filterEdit->selectAll();
     });
+    connect(m_filterEdit, &QLineEdit::textChanged, m_proxy, &WatchTableProxy::setFilterText);
 
+    auto *messageBar = new QHBoxLayout;
+    messageBar->addWidget(m_message, 1);
+    messageBar->addWidget(m_filterEdit);
+    return messageBar;
+}
+
+void WatchTableWidget::setUpView()
+{
     m_proxy->setSourceModel(m_model);
     m_view->setObjectName(QStringLiteral("watchView"));
     m_view->setModel(m_proxy);
@@ -140,111 +191,13 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
             showMessage(translated(s.error().message), true);
     });
     m_view->setItemDelegate(delegate);
-    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
-                            | QAbstractItemView::AnyKeyPressed);
-    m_view->setAlternatingRowColors(true);
-    m_view->setWordWrap(false);
-    m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 8);
-    m_view->verticalHeader()->hide();
-    QHeaderView *header = m_view->horizontalHeader();
-    header->setStretchLastSection(true);
-    // Click a header to sort, again for the other way, a third time for the rows' own order.
-    header->setSortIndicatorClearable(true);
-    header->setSortIndicator(-1, Qt::AscendingOrder); // not sorted by the first column at start
-    m_view->setSortingEnabled(true);
-    const int em = m_view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    // Quality holds its age too ("good, 0.4 s"). The comment stretches into what is left: its own
-    // width is the least it keeps (a stretched last section never gets narrower than that).
-    const int widths[] = {14, 7, 5, 13, 9, 10, 9, 3};
-    for (int c = 0; c < WatchTableModel::ColumnCount; ++c)
-        header->resizeSection(c, widths[c] * em);
-    header->setMinimumSectionSize(3 * em);
-    m_view->setTextElideMode(Qt::ElideRight);
-    m_view->viewport()->installEventFilter(this);
-    m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
+    m_view->setUpColumns();
 
-    auto *writeAction = new QAction(tr("&Write Value…"), m_view);
-    writeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_W));
-    writeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    m_swapAction = new QAction(tr("&Swap Words"), m_view);
-    m_swapAction->setToolTip(
-        tr("Low word first for 32- and 64-bit values (some HMIs store floats so)"));
-    auto *copyAction = new QAction(tr("&Copy Rows"), m_view);
-    copyAction->setObjectName(QStringLiteral("copyRowsAction"));
-    copyAction->setShortcut(QKeySequence::Copy);
-    copyAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    copyAction->setToolTip(tr("Address, name, value, format, quality and comment of the selected "
-                              "rows as tab-separated text"));
-    auto *pasteAction = new QAction(tr("&Paste Items"), m_view);
-    pasteAction->setObjectName(QStringLiteral("pasteItemsAction"));
-    pasteAction->setShortcut(QKeySequence::Paste);
-    pasteAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    auto *removeAction
-        = new QAction(QIcon(QStringLiteral(":/icons/remove.svg")), tr("&Remove"), m_view);
-    removeAction->setShortcut(QKeySequence::Delete);
-    removeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    // The steps of the rows' edits; writes to the PLC are not among them.
-    QAction *undoAction = m_model->undoStack()->createUndoAction(this, tr("&Undo"));
-    undoAction->setObjectName(QStringLiteral("undoAction"));
-    undoAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
-    undoAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    QAction *redoAction = m_model->undoStack()->createRedoAction(this, tr("&Redo"));
-    redoAction->setObjectName(QStringLiteral("redoAction"));
-    redoAction->setShortcuts(
-        {QKeySequence(Qt::CTRL | Qt::Key_Y), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)});
-    redoAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    addActions({undoAction, redoAction});
-    m_moveUpAction = new QAction(tr("Move &Up"), m_view);
-    m_moveUpAction->setObjectName(QStringLiteral("moveUpAction"));
-    m_moveUpAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Up));
-    m_moveUpAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    m_moveDownAction = new QAction(tr("Move &Down"), m_view);
-    m_moveDownAction->setObjectName(QStringLiteral("moveDownAction"));
-    m_moveDownAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Down));
-    m_moveDownAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    auto *ownOrderAction = new QAction(tr("Own &Order"), m_view);
-    ownOrderAction->setObjectName(QStringLiteral("ownOrderAction"));
-    ownOrderAction->setToolTip(tr("Show the rows in the order you gave them, not sorted"));
-    m_formatMenu = new QMenu(tr("Set &Format"), this);
-    m_formatMenu->setObjectName(QStringLiteral("formatMenu"));
-    auto *separator = new QAction(m_view);
-    separator->setSeparator(true);
-    auto *separator2 = new QAction(m_view);
-    separator2->setSeparator(true);
-    m_view->addActions({writeAction, m_formatMenu->menuAction(), m_swapAction, separator,
-                        undoAction, redoAction, copyAction, pasteAction, removeAction, separator2,
-                        m_moveUpAction, m_moveDownAction, ownOrderAction});
-    auto *trendAction = new QAction(tr("Add to &Trend"), m_view);
-    trendAction->setToolTip(tr("Plot the selected items over time in the trend view"));
-    m_view->addAction(trendAction);
-    connect(trendAction, &QAction::triggered, this, [this] {
-        const QList<int> rows = selectedRows();
-        if (!rows.isEmpty())
-            Q_EMIT addToTrendRequested(rows);
-    });
-
-    auto *messageBar = new QHBoxLayout;
-    messageBar->addWidget(m_message, 1);
-    messageBar->addWidget(m_filterEdit);
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(4, 4, 4, 4);
-    layout->addLayout(bar);
-    layout->addLayout(messageBar);
-    layout->addWidget(m_view, 1);
-
-    connect(copyAction, &QAction::triggered, this, &WatchTableWidget::copySelected);
-    connect(m_moveUpAction, &QAction::triggered, this, [this] { moveSelected(-1); });
-    connect(m_moveDownAction, &QAction::triggered, this, [this] { moveSelected(1); });
-    connect(ownOrderAction, &QAction::triggered, this,
-            [this] { m_view->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder); });
-    connect(m_formatMenu, &QMenu::aboutToShow, this, &WatchTableWidget::fillFormatMenu);
-    connect(m_filterEdit, &QLineEdit::textChanged, m_proxy, &WatchTableProxy::setFilterText);
     // Rows are moved in the model's order: not while the view shows another.
     connect(m_proxy, &WatchTableProxy::rearrangedChanged, this, [this](bool rearranged) {
         m_view->setRowsMovable(!rearranged);
-        m_moveUpAction->setEnabled(!rearranged);
-        m_moveDownAction->setEnabled(!rearranged);
+        m_actions.moveUp->setEnabled(!rearranged);
+        m_actions.moveDown->setEnabled(!rearranged);
     });
     connect(m_view, &WatchTableView::rowsDropped, this,
             [this](const QList<int> &rows, int destination) {
@@ -254,18 +207,31 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
                 // Not rearranged (else no drag): the view's rows are the model's.
                 m_model->moveItemsTo(moved, destination);
             });
-    connect(m_model, &WatchTableModel::itemsEdited, this, &WatchTableWidget::edited);
-    connect(m_interval, &QSpinBox::valueChanged, this, &WatchTableWidget::edited);
-    connect(m_confirmBox, &QCheckBox::toggled, this, &WatchTableWidget::edited);
-    connect(this, &WatchTableWidget::nameChanged, this, &WatchTableWidget::edited);
+}
 
-    connect(m_addEdit, &QLineEdit::returnPressed, this, [this] { addFromText(m_addEdit->text()); });
-    connect(addButton, &QPushButton::clicked, this, [this] { addFromText(m_addEdit->text()); });
-    connect(writeAction, &QAction::triggered, this, &WatchTableWidget::writeDialog);
-    connect(m_swapAction, &QAction::triggered, this, &WatchTableWidget::toggleSwapWords);
-    connect(pasteAction, &QAction::triggered, this,
+void WatchTableWidget::connectActions()
+{
+    connect(m_actions.trend, &QAction::triggered, this, [this] {
+        const QList<int> rows = selectedRows();
+        if (!rows.isEmpty())
+            Q_EMIT addToTrendRequested(rows);
+    });
+    connect(m_actions.copy, &QAction::triggered, this, &WatchTableWidget::copySelected);
+    connect(m_actions.moveUp, &QAction::triggered, this, [this] { moveSelected(-1); });
+    connect(m_actions.moveDown, &QAction::triggered, this, [this] { moveSelected(1); });
+    connect(m_actions.ownOrder, &QAction::triggered, this,
+            [this] { m_view->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder); });
+    connect(m_actions.formatMenu, &QMenu::aboutToShow, this, &WatchTableWidget::fillFormatMenu);
+    connect(m_actions.write, &QAction::triggered, this, &WatchTableWidget::writeDialog);
+    connect(m_actions.swapWords, &QAction::triggered, this, &WatchTableWidget::toggleSwapWords);
+    connect(m_actions.paste, &QAction::triggered, this,
             [this] { addFromPaste(QApplication::clipboard()->text()); });
-    connect(removeAction, &QAction::triggered, this, &WatchTableWidget::removeSelected);
+    connect(m_actions.remove, &QAction::triggered, this, &WatchTableWidget::removeSelected);
+}
+
+void WatchTableWidget::connectModel()
+{
+    connect(m_model, &WatchTableModel::itemsEdited, this, &WatchTableWidget::edited);
     connect(m_model, &WatchTableModel::pollListChanged, this, &WatchTableWidget::pushPollList);
     // Queued: the confirmation dialog must not open inside the editor's commit (a nested event
     // loop while the view is closing its editor). The row is found again by its key.
@@ -282,35 +248,21 @@ WatchTableWidget::WatchTableWidget(ConnectionManager *manager, QWidget *parent)
     });
     connect(m_model, &WatchTableModel::inputRejected, this,
             [this](const QString &text) { showMessage(text, true); });
-    connect(m_interval, &QSpinBox::valueChanged, this, &WatchTableWidget::pushPollList);
-    connect(m_pause, &QToolButton::toggled, this, [this](bool paused) {
-        pushPollList();
-        if (paused)
-            m_model->markAllStale(tr("polling paused"));
-    });
-    connect(m_connectionCombo, &QComboBox::activated, this,
-            [this](int index) { setConnection(m_manager->connection(index)); });
-    connect(manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
+}
+
+void WatchTableWidget::connectManager()
+{
+    connect(m_manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
         refreshConnections();
         if (!m_connection)
             setConnection(c);
     });
-    connect(manager, &ConnectionManager::connectionAboutToBeRemoved, this, [this](Connection *c) {
+    connect(m_manager, &ConnectionManager::connectionAboutToBeRemoved, this, [this](Connection *c) {
         if (c == m_connection)
             setConnection(nullptr);
     });
-    connect(manager, &ConnectionManager::connectionRemoved, this,
+    connect(m_manager, &ConnectionManager::connectionRemoved, this,
             &WatchTableWidget::refreshConnections);
-
-    // Forced marks cost bus time: only for a table someone can see, that polls a live link.
-    m_forcedMarks->setActiveCheck([this] {
-        return isVisible() && !isPaused() && m_connection
-               && m_connection->linkState() == LinkState::Connected;
-    });
-
-    refreshConnections();
-    if (!manager->connections().isEmpty())
-        setConnection(manager->connections().constFirst());
 }
 
 WatchTableWidget::~WatchTableWidget()
@@ -360,35 +312,12 @@ QString WatchTableWidget::selectedRowsText() const
     if (viewRows.isEmpty() && m_view->currentIndex().isValid())
         viewRows.append(m_view->currentIndex().row());
     std::sort(viewRows.begin(), viewRows.end());
-    // A field with the separator of pasted rows (tab, turned into ';' by the paste) or a quote
-    // is quoted, as CSV quotes it.
-    const auto field = [](QString text) {
-        if (text.contains(QLatin1Char(';')) || text.contains(QLatin1Char('"'))
-            || text.contains(QLatin1Char('\t')) || text.contains(QLatin1Char('\n'))) {
-            text.replace(QLatin1Char('"'), QLatin1String("\"\""));
-            text = QLatin1Char('"') + text + QLatin1Char('"');
-        }
-        return text;
-    };
-    // The header's words are the watch list file's column names (not translated): a paste reads
-    // the columns by them, in any language.
-    QStringList lines{QStringLiteral("address\tname\tvalue\tformat\tquality\tcomment")};
+    QList<int> rows;
     for (int viewRow : std::as_const(viewRows)) {
-        const int row = modelRow(m_proxy->index(viewRow, 0));
-        if (row < 0)
-            continue;
-        const WatchItemSpec item = m_model->item(row);
-        const QString quality
-            = m_model->index(row, WatchTableModel::QualityColumn).data().toString();
-        lines << QStringList{QString::fromStdString(item.address.toString()),
-                             field(item.name),
-                             field(m_model->valueText(row)),
-                             ValueFormat::name(item.format),
-                             field(quality),
-                             field(item.comment)}
-                     .join(QLatin1Char('\t'));
+        if (const int row = modelRow(m_proxy->index(viewRow, 0)); row >= 0)
+            rows.append(row);
     }
-    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+    return m_model->rowsText(rows);
 }
 
 void WatchTableWidget::copySelected()
@@ -416,7 +345,7 @@ void WatchTableWidget::setSelectedFormat(DisplayFormat format)
 
 void WatchTableWidget::fillFormatMenu()
 {
-    m_formatMenu->clear();
+    m_actions.formatMenu->clear();
     const QList<int> rows = selectedRows();
     if (rows.isEmpty())
         return;
@@ -427,40 +356,9 @@ void WatchTableWidget::fillFormatMenu()
         formats.removeIf([&own](DisplayFormat f) { return !own.contains(f); });
     }
     for (DisplayFormat f : std::as_const(formats)) {
-        QAction *a = m_formatMenu->addAction(UiText::format(f));
+        QAction *a = m_actions.formatMenu->addAction(UiText::format(f));
         a->setObjectName(QStringLiteral("format_") + ValueFormat::name(f));
         connect(a, &QAction::triggered, this, [this, f] { setSelectedFormat(f); });
-    }
-}
-
-bool WatchTableWidget::eventFilter(QObject *watched, QEvent *event)
-{
-    if (watched == m_view->viewport() && event->type() == QEvent::Resize)
-        fitColumns();
-    return QWidget::eventFilter(watched, event);
-}
-
-void WatchTableWidget::fitColumns()
-{
-    QHeaderView *header = m_view->horizontalHeader();
-    const int em = m_view->fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    const int lastColumn = WatchTableModel::CommentColumn;
-    int others = 0;
-    for (int c = 0; c < lastColumn; ++c)
-        others += header->isSectionHidden(c) ? 0 : header->sectionSize(c);
-    int excess = others + 6 * em - m_view->viewport()->width();
-    // The name gives room first (it elides), then the value and the time.
-    for (const auto &[column, least] : {std::pair{int(WatchTableModel::NameColumn), 7 * em},
-                                        std::pair{int(WatchTableModel::ValueColumn), 8 * em},
-                                        std::pair{int(WatchTableModel::UpdatedColumn), 7 * em}}) {
-        if (excess <= 0)
-            break;
-        const int size = header->sectionSize(column);
-        const int give = std::clamp(size - least, 0, excess);
-        if (give > 0) {
-            header->resizeSection(column, size - give);
-            excess -= give;
-        }
     }
 }
 
@@ -671,62 +569,6 @@ bool WatchTableWidget::addFromPaste(const QString &text)
     return true;
 }
 
-void WatchTableWidget::write(int row, quint64 raw)
-{
-    const WatchItemSpec item = m_model->item(row);
-    const QString address = QString::fromStdString(item.address.toString());
-    const QString text
-        = ValueFormat::format(raw, m_model->valueWidth(row), item.format, item.swapWords);
-    const QString what = tr("%1 (station %2) = %3").arg(address).arg(item.station).arg(text);
-    if (!m_connection) {
-        showMessage(tr("Cannot write %1: the table has no connection.").arg(what), true);
-        return;
-    }
-    // In operator mode the link refuses the write with its own message: no question first.
-    if (confirmWrites() && !m_connection->isReadOnly()) {
-        const QString question = tr("Write %1 to the PLC on %2?").arg(what, m_connection->name());
-        // One rule for every question before the PLC changes: the safe answer is the default,
-        // so a second Enter after typing the value does not write.
-        const bool go = m_confirm ? m_confirm(this, question)
-                                  : ToolConfirmation::ask(this, tr("Write Value"), question, {});
-        if (!go) {
-            showMessage(tr("Write of %1 cancelled.").arg(what), false);
-            return;
-        }
-    }
-    // Answers meant for a connection the table has left since are dropped.
-    m_connection->link()->write(
-        item, raw, this,
-        [this, rowKey = m_model->rowKey(row), what,
-         written = QPointer<Connection>(m_connection)](const LinkWriteResult &result) {
-            if (written == m_connection)
-                onWritten(rowKey, what, result);
-        });
-    showMessage(tr("Writing %1 …").arg(what), false);
-}
-
-void WatchTableWidget::onWritten(quint64 rowKey, const QString &what, const LinkWriteResult &result)
-{
-    // Unknown (sent, not answered) is not a failure: the value is read back and this comes again,
-    // final, with what the PLC holds.
-    QString outcome;
-    if (result.ok)
-        outcome = result.error.empty() ? tr("Wrote %1.").arg(what)
-                                       : tr("Wrote %1. %2").arg(what, translated(result.error));
-    else if (result.outcome == ChangeOutcome::Unknown)
-        outcome = tr("Write of %1: %2").arg(what, translated(result.error));
-    else
-        outcome = tr("Write of %1 failed: %2").arg(what, translated(result.error));
-    const int row = m_model->rowOfKey(rowKey);
-    if (row >= 0)
-        m_model->setWriteOutcome(
-            row,
-            tr("%1 %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), outcome));
-    showMessage(outcome, !result.ok);
-    if (result.outcome == ChangeOutcome::Refused)
-        m_failedWrite = what;
-}
-
 void WatchTableWidget::removeSelected()
 {
     m_model->removeItems(selectedRows());
@@ -734,31 +576,14 @@ void WatchTableWidget::removeSelected()
 
 void WatchTableWidget::writeDialog()
 {
-    const int row = modelRow(m_view->currentIndex());
-    if (row < 0)
-        return;
-    const WatchItemSpec item = m_model->item(row);
-    // Operator mode: say so at once instead of asking for a value that will be refused.
-    if (m_connection && m_connection->isReadOnly()) {
-        showMessage(tr("Operator mode (read-only): %1 cannot be written.")
-                        .arg(QString::fromStdString(item.address.toString())),
-                    true);
-        return;
-    }
-    bool ok = false;
-    const QString text = QInputDialog::getText(
-        this, tr("Write Value"),
-        tr("New value for %1 (%2; hex as 0x1A or 1Ah):")
-            .arg(QString::fromStdString(item.address.toString()), UiText::format(item.format)),
-        QLineEdit::Normal, m_model->valueText(row), &ok);
-    if (ok)
-        m_model->setData(m_model->index(row, WatchTableModel::ValueColumn), text);
+    if (const int row = modelRow(m_view->currentIndex()); row >= 0)
+        m_writer->askAndWrite(row);
 }
 
 void WatchTableWidget::toggleSwapWords()
 {
     // One step to undo for all the rows.
-    m_model->undoStack()->beginMacro(m_swapAction->text().remove(QLatin1Char('&')));
+    m_model->undoStack()->beginMacro(m_actions.swapWords->text().remove(QLatin1Char('&')));
     for (int row : selectedRows()) {
         const WatchItemSpec item = m_model->item(row);
         const Status s = m_model->setFormat(row, item.format, !item.swapWords);

@@ -3,6 +3,8 @@
 #include "core/plant/plantsubscription.h"
 #include "core/watch/watchlist.h"
 #include "ui/connection/connection.h"
+#include "watchtableactions.h"
+#include "watchtablewriter.h"
 
 #include <QHash>
 #include <QPointer>
@@ -15,7 +17,7 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
-class QMenu;
+class QLayout;
 class QModelIndex;
 class QSpinBox;
 class QTableView;
@@ -30,9 +32,6 @@ class SessionResult;
 class WatchTableModel;
 class WatchTableProxy;
 class WatchTableView;
-
-// Asks "write this?"; true = go. Tests put an automatic answer here.
-using ConfirmHandler = std::function<bool(QWidget *parent, const QString &question)>;
 
 // One watch table: an entry line to add items, the table, its poll settings (interval, pause,
 // confirmation) and the connection it polls through. It turns edits into writes on that
@@ -76,7 +75,10 @@ public:
     void setPaused(bool paused);
     bool confirmWrites() const;
     void setConfirmWrites(bool confirm);
-    void setConfirmHandler(ConfirmHandler handler) { m_confirm = std::move(handler); }
+    void setConfirmHandler(ConfirmHandler handler)
+    {
+        m_writer->setConfirmHandler(std::move(handler));
+    }
 
     // Adds items from typed text (addresses, ranges); false with message() set on bad input.
     bool addFromText(const QString &text);
@@ -86,7 +88,7 @@ public:
     QString message() const;
 
     // Starts a write of `raw` to `row` (after confirmation); the outcome comes in statusMessage().
-    void write(int row, quint64 raw);
+    void write(int row, quint64 raw) { m_writer->write(row, raw); }
 
 Q_SIGNALS:
     void statusMessage(const QString &text);
@@ -99,19 +101,22 @@ Q_SIGNALS:
     void edited();
 
 private:
+    // The constructor's parts: the entry line and poll settings, the message line and filter,
+    // the view, and what the actions, the model and the connection manager trigger.
+    QLayout *createEntryBar();
+    QLayout *createMessageBar();
+    void setUpView();
+    void connectActions();
+    void connectModel();
+    void connectManager();
     void showMessage(const QString &text, bool error);
     void pushPollList();
     void refreshConnections();
-    void onWritten(quint64 rowKey, const QString &what, const LinkWriteResult &result);
     void removeSelected();
     void copySelected();
     void moveSelected(int delta);
     void setSelectedFormat(DisplayFormat format);
     void fillFormatMenu();
-    // Narrows the widest columns when the view is too narrow for them all: the last column
-    // (comment) stretches into what is left and the table never scrolls sideways.
-    void fitColumns();
-    bool eventFilter(QObject *watched, QEvent *event) override;
     void writeDialog();
     void toggleSwapWords();
     quint8 defaultStation() const;
@@ -126,16 +131,13 @@ private:
     WatchTableView *m_view;
     QLineEdit *m_addEdit;
     QLineEdit *m_filterEdit;
-    QAction *m_moveUpAction;
-    QAction *m_moveDownAction;
-    QMenu *m_formatMenu;
+    WatchTableActions m_actions;
     QComboBox *m_connectionCombo;
     QSpinBox *m_interval;
     QToolButton *m_pause;
     QCheckBox *m_confirmBox;
     class MessageLine *m_message;
-    QAction *m_swapAction;
-    ConfirmHandler m_confirm;
+    WatchTableWriter *m_writer;
     ForcedMarks *m_forcedMarks;
     // This table as a consumer of its connection's plant connection.
     PlantSubscription *m_subscription;

@@ -1,10 +1,8 @@
-// WatchTableModel, the edits a person makes to the rows: each is a step on the model's undo stack
-// (QUndoStack), made of the model's own changes (applyInsert, applyRemove, applySpec, applyOrder).
-// Rows are named by their position: every change of positions goes through the stack, and a
-// loaded list (setItems) starts a new history.
-#include "watchtablemodel.h"
+// The steps of a watch table's edits, made of the model's own changes (applyInsert, applyRemove,
+// applySpec, applyOrder).
+#include "watchtableedits.h"
 
-#include <QCoreApplication>
+#include "watchtablemodel.h"
 
 #include <algorithm>
 #include <utility>
@@ -91,40 +89,39 @@ QList<int> validRows(QList<int> rows, int count)
 
 } // namespace
 
-void WatchTableModel::addItems(const QList<WatchItemSpec> &items)
-{
-    insertItems(static_cast<int>(m_rows.size()), items);
-}
+WatchTableEdits::WatchTableEdits(WatchTableModel *model)
+    : m_model(model)
+{}
 
-void WatchTableModel::insertItems(int row, const QList<WatchItemSpec> &items)
+void WatchTableEdits::insertItems(int row, const QList<WatchItemSpec> &items)
 {
     if (items.isEmpty())
         return;
     auto *step
-        = new WatchRowsCommand(this, WatchRowsCommand::Kind::Insert,
+        = new WatchRowsCommand(m_model, WatchRowsCommand::Kind::Insert,
                                tr("Add %n item(s)", nullptr, static_cast<int>(items.size())));
-    step->row = std::clamp(row, 0, static_cast<int>(m_rows.size()));
+    step->row = std::clamp(row, 0, m_model->rowCount());
     step->items = items;
     m_undo.push(step);
 }
 
-void WatchTableModel::removeItems(QList<int> rows)
+void WatchTableEdits::removeItems(QList<int> rows)
 {
-    rows = validRows(std::move(rows), static_cast<int>(m_rows.size()));
+    rows = validRows(std::move(rows), m_model->rowCount());
     if (rows.isEmpty())
         return;
     auto *step
-        = new WatchRowsCommand(this, WatchRowsCommand::Kind::Remove,
+        = new WatchRowsCommand(m_model, WatchRowsCommand::Kind::Remove,
                                tr("Remove %n item(s)", nullptr, static_cast<int>(rows.size())));
     step->rows = rows;
     for (int r : std::as_const(rows))
-        step->items.append(m_rows.at(r).spec());
+        step->items.append(m_model->item(r));
     m_undo.push(step);
 }
 
-bool WatchTableModel::moveItems(const QList<int> &rows, int delta)
+bool WatchTableEdits::moveItems(const QList<int> &rows, int delta)
 {
-    const int count = static_cast<int>(m_rows.size());
+    const int count = m_model->rowCount();
     const QList<int> moving = validRows(rows, count);
     if (moving.isEmpty() || (delta != -1 && delta != 1))
         return false;
@@ -154,16 +151,16 @@ bool WatchTableModel::moveItems(const QList<int> &rows, int delta)
         changed = order.at(i) != i;
     if (!changed)
         return false;
-    auto *step = new WatchRowsCommand(this, WatchRowsCommand::Kind::Order,
+    auto *step = new WatchRowsCommand(m_model, WatchRowsCommand::Kind::Order,
                                       delta < 0 ? tr("Move Up") : tr("Move Down"));
     step->order = order;
     m_undo.push(step);
     return true;
 }
 
-bool WatchTableModel::moveItemsTo(const QList<int> &rows, int destination)
+bool WatchTableEdits::moveItemsTo(const QList<int> &rows, int destination)
 {
-    const int count = static_cast<int>(m_rows.size());
+    const int count = m_model->rowCount();
     const QList<int> moving = validRows(rows, count);
     if (moving.isEmpty())
         return false;
@@ -185,44 +182,44 @@ bool WatchTableModel::moveItemsTo(const QList<int> &rows, int destination)
     if (!changed)
         return false;
     auto *step
-        = new WatchRowsCommand(this, WatchRowsCommand::Kind::Order,
+        = new WatchRowsCommand(m_model, WatchRowsCommand::Kind::Order,
                                tr("Move %n item(s)", nullptr, static_cast<int>(moving.size())));
     step->order = order;
     m_undo.push(step);
     return true;
 }
 
-Status WatchTableModel::editItem(int row, const WatchItemSpec &spec)
+Status WatchTableEdits::editItem(int row, const WatchItemSpec &spec)
 {
-    if (row < 0 || row >= m_rows.size())
+    if (row < 0 || row >= m_model->rowCount())
         return makeError(ErrorKind::InvalidRequest, "no such row");
     if (Status s = WatchList::validateEntry(spec); !s)
         return s;
-    const WatchItemSpec before = m_rows.at(row).spec();
+    const WatchItemSpec before = m_model->item(row);
     if (before == spec)
         return Ok{};
     auto *step = new WatchRowsCommand(
-        this, WatchRowsCommand::Kind::Edit,
+        m_model, WatchRowsCommand::Kind::Edit,
         tr("Edit %1").arg(QString::fromStdString(before.address.toString())));
     step->edits.append({row, before, spec});
     m_undo.push(step);
     return Ok{};
 }
 
-Status WatchTableModel::setFormat(int row, DisplayFormat format, bool swapWords)
+Status WatchTableEdits::setFormat(int row, DisplayFormat format, bool swapWords)
 {
-    WatchItemSpec spec = m_rows.at(row).spec();
+    WatchItemSpec spec = m_model->item(row);
     spec.format = format;
     spec.swapWords = swapWords;
     return editItem(row, spec);
 }
 
-Status WatchTableModel::setFormats(const QList<int> &rows, DisplayFormat format)
+Status WatchTableEdits::setFormats(const QList<int> &rows, DisplayFormat format)
 {
     Status result = Ok{};
-    auto *step = new WatchRowsCommand(this, WatchRowsCommand::Kind::Edit, tr("Set Format"));
-    for (int r : validRows(rows, static_cast<int>(m_rows.size()))) {
-        WatchItemSpec spec = m_rows.at(r).spec();
+    auto *step = new WatchRowsCommand(m_model, WatchRowsCommand::Kind::Edit, tr("Set Format"));
+    for (int r : validRows(rows, m_model->rowCount())) {
+        WatchItemSpec spec = m_model->item(r);
         const WatchItemSpec before = spec;
         spec.format = format;
         if (Status s = WatchList::validateEntry(spec); !s) {
@@ -238,73 +235,6 @@ Status WatchTableModel::setFormats(const QList<int> &rows, DisplayFormat format)
     else
         m_undo.push(step);
     return result;
-}
-
-void WatchTableModel::applyInsert(int row, const QList<WatchItemSpec> &items)
-{
-    beginInsertRows({}, row, row + static_cast<int>(items.size()) - 1);
-    QList<Row> made;
-    made.reserve(items.size());
-    for (const WatchItemSpec &spec : items) {
-        Row r;
-        r.values = ItemValues(withSymbols(spec));
-        r.key = newRowKey();
-        resetValue(r);
-        made.append(std::move(r));
-    }
-    m_rows.insert(row, made.size(), Row());
-    std::move(made.begin(), made.end(), m_rows.begin() + row);
-    rebuildIndex();
-    endInsertRows();
-    Q_EMIT pollListChanged();
-    Q_EMIT itemsEdited();
-}
-
-void WatchTableModel::applyRemove(int row, int count)
-{
-    beginRemoveRows({}, row, row + count - 1);
-    m_rows.remove(row, count);
-    rebuildIndex();
-    endRemoveRows();
-    Q_EMIT pollListChanged();
-    Q_EMIT itemsEdited();
-}
-
-void WatchTableModel::applySpec(int row, const WatchItemSpec &spec)
-{
-    Row &r = m_rows[row];
-    const bool stationChanged = r.spec().station != spec.station;
-    const bool spanChanged = r.values.setItem(spec);
-    if (spanChanged) {
-        resetValue(r);
-        rebuildIndex();
-    }
-    Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
-    if (spanChanged || stationChanged)
-        Q_EMIT pollListChanged();
-    Q_EMIT itemsEdited();
-}
-
-void WatchTableModel::applyOrder(const QList<int> &order)
-{
-    Q_EMIT layoutAboutToBeChanged({}, QAbstractItemModel::VerticalSortHint);
-    QList<Row> rows;
-    rows.reserve(m_rows.size());
-    QList<int> newRowOf(order.size());
-    for (int i = 0; i < order.size(); ++i) {
-        rows.append(std::move(m_rows[order.at(i)]));
-        newRowOf[order.at(i)] = i;
-    }
-    m_rows = std::move(rows);
-    rebuildIndex();
-    const QModelIndexList before = persistentIndexList();
-    QModelIndexList after;
-    after.reserve(before.size());
-    for (const QModelIndex &i : before)
-        after.append(index(newRowOf.at(i.row()), i.column()));
-    changePersistentIndexList(before, after);
-    Q_EMIT layoutChanged({}, QAbstractItemModel::VerticalSortHint);
-    Q_EMIT itemsEdited();
 }
 
 } // namespace Fatek
