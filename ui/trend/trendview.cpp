@@ -285,10 +285,7 @@ void TrendView::removeItem(int index)
     if (index < 0 || index >= itemCount())
         return;
     auto it = m_items.begin() + index;
-    for (QLineSeries *s : (*it)->series) {
-        m_chart->removeSeries(s);
-        delete s;
-    }
+    (*it)->removeFrom(m_chart);
     QPointer<WatchTableModel> model = (*it)->model;
     m_items.erase(it);
     if (model && std::none_of(m_items.cbegin(), m_items.cend(), [&model](const auto &i) {
@@ -453,24 +450,8 @@ void TrendView::updateZoomUi()
 qint64 TrendView::spanMs() const
 {
     qint64 span = 0;
-    for (const auto &item : m_items) {
-        const TrendBuffer &b = item->buffer;
-        qint64 first = -1, last = -1;
-        for (qsizetype i = 0; i < b.size(); ++i) {
-            if (!b.at(i).gap) {
-                first = b.at(i).timeMs;
-                break;
-            }
-        }
-        for (qsizetype i = b.size() - 1; i >= 0; --i) {
-            if (!b.at(i).gap) {
-                last = b.at(i).timeMs;
-                break;
-            }
-        }
-        if (first >= 0)
-            span = std::max(span, last - first);
-    }
+    for (const auto &item : m_items)
+        span = std::max(span, item->spanMs());
     return span;
 }
 
@@ -569,36 +550,7 @@ void TrendView::refresh()
     std::map<QValueAxis *, TrendValueAxes::Span> spans;
     for (auto &item : m_items) {
         TrendValueAxes::Span &span = spans[item->axis];
-        const QList<QList<QPointF>> pieces = item->buffer.segments(fromMs, toMs, maxPoints);
-        while (item->series.size() < static_cast<std::size_t>(pieces.size())) {
-            auto *s = new QLineSeries;
-            s->setName(displayName(item->spec));
-            QPen pen(item->color);
-            pen.setWidthF(1.8);
-            s->setPen(pen);
-            m_chart->addSeries(s);
-            s->attachAxis(m_timeAxis);
-            s->attachAxis(item->axis);
-            // One legend entry per item, not per line piece.
-            const auto markers = m_chart->legend()->markers(s);
-            for (QLegendMarker *m : markers)
-                m->setVisible(item->series.empty());
-            item->series.push_back(s);
-        }
-        for (std::size_t i = 0; i < item->series.size(); ++i) {
-            if (i < static_cast<std::size_t>(pieces.size())) {
-                const QList<QPointF> &points = pieces.at(static_cast<qsizetype>(i));
-                item->series[i]->replace(points);
-                for (const QPointF &p : points) {
-                    if (p.x() < static_cast<double>(fromMs) || p.x() > static_cast<double>(toMs))
-                        continue;
-                    span.min = std::min(span.min, p.y());
-                    span.max = std::max(span.max, p.y());
-                }
-            } else if (item->series[i]->count() > 0) {
-                item->series[i]->clear();
-            }
-        }
+        item->draw(m_chart, m_timeAxis, displayName(item->spec), fromMs, toMs, maxPoints, span);
     }
     m_valueAxes.fit(std::move(spans), m_zoomed);
     keepAxisLabelsWhole();

@@ -1,11 +1,9 @@
 #pragma once
 
 #include "core/watch/watchlist.h"
-#include "trendbuffer.h"
+#include "trendline.h"
 #include "trendvalueaxes.h"
 
-#include <QColor>
-#include <QPointer>
 #include <QTimer>
 #include <QWidget>
 
@@ -102,17 +100,7 @@ Q_SIGNALS:
     void statusMessage(const QString &text);
 
 private:
-    struct Item
-    {
-        WatchItemSpec spec;
-        QPointer<WatchTableModel> model;
-        quint64 rowKey = 0;
-        QColor color;
-        TrendBuffer buffer;
-        std::vector<QLineSeries *> series;
-        QValueAxis *axis = nullptr;
-        bool discrete = false; // 0/1: the bit axis
-    };
+    using Item = TrendLine;
     bool addOne(WatchTableModel *model, int row, QString *error);
     void keepAxisLabelsWhole();
     void rebuildAxes();
