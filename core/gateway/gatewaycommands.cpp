@@ -14,9 +14,9 @@
 namespace Fatek {
 
 GatewayCommands::GatewayCommands(const GatewayConnectionConfig &config, const QString &prefix,
-                                 bool readOnly, QHash<QString, WatchItemSpec> watched,
-                                 MqttClient *client, GatewayPublisher *publisher,
-                                 PlantConnection *plant, QObject *parent)
+                                 bool readOnly, WatchedAt watched, MqttClient *client,
+                                 GatewayPublisher *publisher, PlantConnection *plant,
+                                 QObject *parent)
     : QObject(parent)
     , m_config(config)
     , m_prefix(prefix)
@@ -126,9 +126,8 @@ WatchItemSpec GatewayCommands::specOf(int station, const Address &address,
     spec.address = address;
     spec.station = static_cast<quint8>(station);
     spec.format = ValueFormat::defaultFormat(address);
-    const auto watched
-        = m_watched.constFind(GatewayTopics::item(m_prefix, m_config.name, station, address));
-    if (watched != m_watched.cend()) {
+    if (const WatchItemSpec *watched
+        = m_watched(GatewayTopics::item(m_prefix, m_config.name, station, address))) {
         spec.format = watched->format;
         spec.swapWords = watched->swapWords;
         // NaN and infinities only where the watch list allows them for this item.

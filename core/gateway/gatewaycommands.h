@@ -9,6 +9,8 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
+
 namespace Fatek {
 
 class GatewayPublisher;
@@ -45,11 +47,13 @@ public:
         quint64 unknown = 0;  // accepted, outcome still unknown after the read-back
     };
 
-    // `watched`: the spec of each watched item by its item topic (a command's format and
-    // allowNonFinite default to its item's).
+    // The watched item at an item topic, if any (a command's format and allowNonFinite default
+    // to its item's).
+    using WatchedAt = std::function<const WatchItemSpec *(const QString &topic)>;
+
     GatewayCommands(const GatewayConnectionConfig &config, const QString &prefix, bool readOnly,
-                    QHash<QString, WatchItemSpec> watched, MqttClient *client,
-                    GatewayPublisher *publisher, PlantConnection *plant, QObject *parent = nullptr);
+                    WatchedAt watched, MqttClient *client, GatewayPublisher *publisher,
+                    PlantConnection *plant, QObject *parent = nullptr);
 
     // Commands that arrive from now on are ignored (the connection is stopping).
     void stop() { m_stopping = true; }
@@ -79,7 +83,7 @@ private:
     GatewayConnectionConfig m_config;
     QString m_prefix;
     bool m_readOnly;
-    QHash<QString, WatchItemSpec> m_watched;
+    WatchedAt m_watched;
     GatewayPublisher *m_publisher;
     PlantConnection *m_plant;
     Counters m_counters;

@@ -44,7 +44,6 @@ MqttNorth::MqttNorth(const GatewayConnectionConfig &config, const QString &prefi
     for (const WatchTableSpec &table : m_config.tables)
         count += static_cast<std::size_t>(table.items.size());
     m_firstKey = WatchedItem::newKeys(count);
-    QHash<QString, WatchItemSpec> specOfTopic;
     for (const WatchTableSpec &table : m_config.tables) {
         for (const WatchItemSpec &spec : table.items) {
             Item item;
@@ -53,7 +52,7 @@ MqttNorth::MqttNorth(const GatewayConnectionConfig &config, const QString &prefi
                 = GatewayTopics::item(prefix, config.name, spec.station, spec.address);
             item.topicId = m_publisher->retainedTopic(topic, 0);
             m_watched.append({m_firstKey + m_items.size(), spec, table.intervalMs});
-            specOfTopic.insert(topic, spec);
+            m_itemOfTopic.insert(topic, m_items.size());
             m_items.push_back(std::move(item));
         }
     }
@@ -68,8 +67,12 @@ MqttNorth::MqttNorth(const GatewayConnectionConfig &config, const QString &prefi
     GatewayPayload::Status offline{LinkStatus::Offline, m_linkText, {}, {}};
     m_client->setWill(GatewayTopics::status(prefix, config.name),
                       GatewayPayload::encodeStatus(offline), 1, true);
-    m_commands = new GatewayCommands(config, prefix, readOnly, std::move(specOfTopic), m_client,
-                                     m_publisher, plant, this);
+    const auto watchedAt = [this](const QString &topic) -> const WatchItemSpec * {
+        const auto it = m_itemOfTopic.constFind(topic);
+        return it == m_itemOfTopic.cend() ? nullptr : &m_items[*it].values.item();
+    };
+    m_commands = new GatewayCommands(config, prefix, readOnly, watchedAt, m_client, m_publisher,
+                                     plant, this);
     connect(m_commands, &GatewayCommands::logEvent, this, &MqttNorth::logEvent);
 
     m_statisticsTimer.setInterval(config.statisticsIntervalMs);

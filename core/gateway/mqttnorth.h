@@ -10,6 +10,7 @@
 
 #include <QDateTime>
 #include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 #include <QPointer>
 #include <QSet>
@@ -94,6 +95,7 @@ private:
     GatewayPublisher *m_publisher;
     GatewayCommands *m_commands;
     std::vector<Item> m_items;
+    QHash<QString, std::size_t> m_itemOfTopic;
     QList<WatchedItem> m_watched; // m_items as subscribed: key m_firstKey + index
     std::uint64_t m_firstKey = 0;
     std::vector<HomeAssistantDiscovery::Entry> m_discovery;

@@ -105,7 +105,9 @@ protected:
 
 Q_SIGNALS:
     void linkStateChanged(Fatek::LinkState state, const Fatek::Message &reason);
-    // The items whose values were reported (one batch per poll cycle or per burst of messages).
+    // The items whose values were reported (one batch per poll cycle or per burst of messages);
+    // only items of the last setItems() (a cycle under way when they changed reports none of the
+    // items that went).
     void itemValues(const QList<Fatek::WatchItemValue> &values);
     // A direct link's counters (at most 4 times a second).
     void statisticsChanged(const Fatek::SessionStatistics &statistics);

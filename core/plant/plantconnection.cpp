@@ -97,6 +97,14 @@ bool PlantConnection::isSubscribed(const PlantConsumer *consumer) const
                        [consumer](const Consumer &c) { return c.consumer == consumer; });
 }
 
+int PlantConnection::itemCount() const
+{
+    qsizetype count = 0;
+    for (const Consumer &c : m_consumers)
+        count += c.items.size();
+    return static_cast<int>(count);
+}
+
 QSet<quint8> PlantConnection::watchedStations() const
 {
     QSet<quint8> stations;
@@ -109,9 +117,14 @@ QSet<quint8> PlantConnection::watchedStations() const
 
 void PlantConnection::pushItems()
 {
-    // A link has a single list of items: the union of every consumer's.
-    QList<WatchedItem> all;
+    // A link has a single list of items: the union of every consumer's. With one consumer it is
+    // that consumer's list itself (shared, not copied: a gateway link holds thousands).
     m_owner.clear();
+    if (m_consumers.size() == 1) {
+        m_link->setItems(m_consumers.front().items);
+        return;
+    }
+    QList<WatchedItem> all;
     for (const Consumer &c : m_consumers) {
         all += c.items;
         for (const WatchedItem &item : c.items)
@@ -137,16 +150,10 @@ void PlantConnection::onValues(const QList<WatchItemValue> &values)
 {
     Q_EMIT valuesArrived(values);
     if (m_consumers.size() == 1) {
-        // One consumer (a gateway's MQTT side, a studio with one table): the batch is its own,
-        // but for values of items it no longer watches (a report under way while it changed).
-        PlantConsumer *only = m_consumers.front().consumer;
-        const bool all = std::all_of(values.cbegin(), values.cend(), [&](const WatchItemValue &v) {
-            return m_owner.value(v.key) == only;
-        });
-        if (all) {
-            only->plantValues(values);
-            return;
-        }
+        // One consumer (a gateway's MQTT side, a studio with one table): a link reports only the
+        // items of its last setItems() (PlcLink), here all of them this consumer's.
+        m_consumers.front().consumer->plantValues(values);
+        return;
     }
     // Each consumer gets its own items' values, in the batch's order; values of no consumer's
     // item (one just removed) go nowhere.

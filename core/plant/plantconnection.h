@@ -64,7 +64,7 @@ public:
     void unsubscribe(PlantConsumer *consumer);
     int consumerCount() const { return static_cast<int>(m_consumers.size()); }
     // Every item watched, of every consumer.
-    int itemCount() const { return static_cast<int>(m_owner.size()); }
+    int itemCount() const;
     // The stations some consumer watches an item of.
     QSet<quint8> watchedStations() const;
 
@@ -99,8 +99,9 @@ private:
     bool isSubscribed(const PlantConsumer *consumer) const;
 
     PlcLink *m_link;
-    std::vector<Consumer> m_consumers;             // in subscription order
-    QHash<std::uint64_t, PlantConsumer *> m_owner; // item key -> its consumer
+    std::vector<Consumer> m_consumers; // in subscription order
+    // Item key -> its consumer, while there are several (one consumer owns every value).
+    QHash<std::uint64_t, PlantConsumer *> m_owner;
     LinkState m_state = LinkState::Closed;
     Message m_reason;
     quint64 m_linkFailures = 0;
