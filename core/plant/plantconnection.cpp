@@ -105,21 +105,18 @@ int PlantConnection::itemCount() const
     return static_cast<int>(count);
 }
 
-QSet<quint8> PlantConnection::watchedStations() const
-{
-    QSet<quint8> stations;
-    for (const Consumer &c : m_consumers) {
-        for (const WatchedItem &item : c.items)
-            stations.insert(item.spec.station);
-    }
-    return stations;
-}
-
 void PlantConnection::pushItems()
 {
     // A link has a single list of items: the union of every consumer's. With one consumer it is
     // that consumer's list itself (shared, not copied: a gateway link holds thousands).
     m_owner.clear();
+    // Asked at every statistics report (the Connections dock's silent stations): kept, not
+    // counted again over thousands of items each time.
+    m_stations.clear();
+    for (const Consumer &c : m_consumers) {
+        for (const WatchedItem &item : c.items)
+            m_stations.insert(item.spec.station);
+    }
     if (m_consumers.size() == 1) {
         m_link->setItems(m_consumers.front().items);
         return;

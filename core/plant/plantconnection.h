@@ -66,7 +66,7 @@ public:
     // Every item watched, of every consumer.
     int itemCount() const;
     // The stations some consumer watches an item of.
-    QSet<quint8> watchedStations() const;
+    QSet<quint8> watchedStations() const { return m_stations; }
 
     // Operator mode, enforced by the link.
     void setReadOnly(bool readOnly) { m_link->setReadOnly(readOnly); }
@@ -102,6 +102,7 @@ private:
     std::vector<Consumer> m_consumers; // in subscription order
     // Item key -> its consumer, while there are several (one consumer owns every value).
     QHash<std::uint64_t, PlantConsumer *> m_owner;
+    QSet<quint8> m_stations; // of every consumer's items
     LinkState m_state = LinkState::Closed;
     Message m_reason;
     quint64 m_linkFailures = 0;

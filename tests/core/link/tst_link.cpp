@@ -5,6 +5,7 @@
 #include "core/session/session.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "latestvalues.h"
 #include "testutil.h"
 
 #include <QSignalSpy>
@@ -27,19 +28,6 @@ WatchItemSpec spec(const char *address, DisplayFormat format)
     item.format = format;
     return item;
 }
-
-// The latest value of every item, as a table keeps them.
-struct Latest
-{
-    QHash<std::uint64_t, WatchItemValue> values;
-    int batches = 0;
-
-    bool good(std::uint64_t key, std::uint64_t raw) const
-    {
-        const WatchItemValue v = values.value(key);
-        return v.quality == ValueQuality::Good && v.hasValue && v.raw == raw;
-    }
-};
 
 } // namespace
 
@@ -75,12 +63,9 @@ void TestLink::itemsInValuesOutWritesOnTheWire()
     QCOMPARE(link.kind(), PlcLink::Kind::Direct);
     QVERIFY(link.session());
     QVERIFY(link.takesIntervals());
-    Latest latest;
-    connect(&link, &PlcLink::itemValues, this, [&latest](const QList<WatchItemValue> &values) {
-        ++latest.batches;
-        for (const WatchItemValue &v : values)
-            latest.values.insert(v.key, v);
-    });
+    TestUtil::LatestValues latest;
+    connect(&link, &PlcLink::itemValues, this,
+            [&latest](const QList<WatchItemValue> &values) { latest.take(values); });
     QSignalSpy states(&link, &PlcLink::linkStateChanged);
     const std::uint64_t flow = WatchedItem::newKey();
     const std::uint64_t setpoint = WatchedItem::newKey();

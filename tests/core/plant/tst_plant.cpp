@@ -9,6 +9,7 @@
 #include "core/session/session.h"
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "latestvalues.h"
 #include "testutil.h"
 
 #include <QSignalSpy>
@@ -36,27 +37,18 @@ WatchedItem item(const char *address, DisplayFormat format)
 // A consumer as the next issues add them (alarms, history, a server): the whole of it.
 struct Recorder : PlantConsumer
 {
-    QHash<std::uint64_t, WatchItemValue> latest;
-    int batches = 0;
+    TestUtil::LatestValues latest;
     QList<LinkState> states;
     std::function<void()> onBatch;
 
     void plantValues(const QList<WatchItemValue> &values) override
     {
-        ++batches;
-        for (const WatchItemValue &v : values)
-            latest.insert(v.key, v);
+        latest.take(values);
         if (onBatch)
             onBatch();
     }
     void plantLinkState(LinkState state, const Message &) override { states << state; }
 };
-
-bool good(const QHash<std::uint64_t, WatchItemValue> &values, std::uint64_t key, std::uint64_t raw)
-{
-    const WatchItemValue v = values.value(key);
-    return v.quality == ValueQuality::Good && v.hasValue && v.raw == raw;
-}
 
 } // namespace
 
@@ -88,17 +80,14 @@ void TestPlant::consumersGetTheirOwnValues()
     PlantConnection plant(new SessionLink(settings));
 
     // The table's way: a subscription with a signal.
-    PlantSubscription table;
-    QHash<std::uint64_t, WatchItemValue> tableValues;
-    connect(&table, &PlantSubscription::itemValues, this,
-            [&tableValues](const QList<WatchItemValue> &values) {
-                for (const WatchItemValue &v : values)
-                    tableValues.insert(v.key, v);
-            });
+    PlantSubscription subscription;
+    TestUtil::LatestValues table;
+    connect(&subscription, &PlantSubscription::itemValues, this,
+            [&table](const QList<WatchItemValue> &values) { table.take(values); });
     const WatchedItem flow = item("R100", DisplayFormat::Float32);
     const WatchedItem tableSetpoint = item("R200", DisplayFormat::Signed);
-    table.setConnection(&plant);
-    table.setItems({flow, tableSetpoint});
+    subscription.setConnection(&plant);
+    subscription.setItems({flow, tableSetpoint});
 
     // The new consumer: the same R200 under its own key, and D10.
     Recorder recorder;
@@ -111,16 +100,16 @@ void TestPlant::consumersGetTheirOwnValues()
     plant.open();
     QTRY_COMPARE_WITH_TIMEOUT(plant.linkState(), LinkState::Connected, timeoutMs);
     QTRY_VERIFY_WITH_TIMEOUT(recorder.states.contains(LinkState::Connected), timeoutMs);
-    QTRY_VERIFY_WITH_TIMEOUT(good(tableValues, flow.key, std::bit_cast<std::uint32_t>(12.5f))
-                                 && good(tableValues, tableSetpoint.key, 42),
+    QTRY_VERIFY_WITH_TIMEOUT(table.good(flow.key, std::bit_cast<std::uint32_t>(12.5f))
+                                 && table.good(tableSetpoint.key, 42),
                              timeoutMs);
-    QTRY_VERIFY_WITH_TIMEOUT(good(recorder.latest, setpoint.key, 42)
-                                 && good(recorder.latest, counter.key, 7),
-                             timeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        recorder.latest.good(setpoint.key, 42) && recorder.latest.good(counter.key, 7), timeoutMs);
     // Each its own items only, and the same value of the same register.
-    QCOMPARE(tableValues.size(), 2);
-    QCOMPARE(recorder.latest.size(), 2);
-    QCOMPARE(recorder.latest.value(setpoint.key).words, tableValues.value(tableSetpoint.key).words);
+    QCOMPARE(table.values.size(), 2);
+    QCOMPARE(recorder.latest.values.size(), 2);
+    QCOMPARE(recorder.latest.values.value(setpoint.key).words,
+             table.values.value(tableSetpoint.key).words);
 
     // A write through the plant: one result, done on the wire, seen by both consumers.
     std::optional<LinkWriteResult> result;
@@ -134,24 +123,23 @@ void TestPlant::consumersGetTheirOwnValues()
     QVERIFY2(result->ok, qPrintable(englishText(result->error)));
     QCOMPARE(writes(), before + 1);
     QCOMPARE(plc.value(addr("R200")), std::optional<std::uint32_t>(1234));
-    QTRY_VERIFY_WITH_TIMEOUT(good(recorder.latest, setpoint.key, 1234)
-                                 && good(tableValues, tableSetpoint.key, 1234),
-                             timeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        recorder.latest.good(setpoint.key, 1234) && table.good(tableSetpoint.key, 1234), timeoutMs);
 
     // A consumer that leaves from inside its own call gets nothing more; the table goes on.
     recorder.onBatch = [&plant, &recorder] {
         plant.unsubscribe(&recorder);
     };
     QTRY_COMPARE_WITH_TIMEOUT(plant.consumerCount(), 1, timeoutMs);
-    const int left = recorder.batches;
+    const int left = recorder.latest.batches;
     QCOMPARE(plant.itemCount(), 2);
     QCOMPARE(plant.watchedStations(), QSet<quint8>{1});
     QVERIFY(plc.setValue(addr("R200"), 99));
-    QTRY_VERIFY_WITH_TIMEOUT(good(tableValues, tableSetpoint.key, 99), timeoutMs);
-    QCOMPARE(recorder.batches, left);
+    QTRY_VERIFY_WITH_TIMEOUT(table.good(tableSetpoint.key, 99), timeoutMs);
+    QCOMPARE(recorder.latest.batches, left);
 
     // The table moves away: the link watches nothing, and nothing more is read.
-    table.setConnection(nullptr);
+    subscription.setConnection(nullptr);
     QCOMPARE(plant.consumerCount(), 0);
     QCOMPARE(plant.itemCount(), 0);
     QTest::qWait(300); // a poll cycle under way ends
