@@ -2,6 +2,7 @@
 
 #include "core/protocol/address.h"
 #include "core/protocol/result.h"
+#include "alarmdefinition.h"
 #include "symboltable.h"
 #include "valueformat.h"
 
@@ -24,6 +25,8 @@ struct WatchItemSpec
     // Writes may put NaN or an infinity into a float or double item (off: refused, as a PLC
     // program's arithmetic rarely expects one; issue 48).
     bool allowNonFinite = false;
+    // The item's alarms (issue 50), at most one per kind (Alarms::validate).
+    QList<AlarmDefinition> alarms;
 
     bool operator==(const WatchItemSpec &) const = default;
 };

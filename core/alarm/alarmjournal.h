@@ -1,0 +1,55 @@
+#pragma once
+
+#include "alarmtypes.h"
+
+#include "core/protocol/result.h"
+
+#include <QList>
+#include <QString>
+
+#include <memory>
+
+struct sqlite3;
+
+namespace Fatek {
+
+// The alarm journal: one SQLite file (WAL) with every event (raise, acknowledge with who and a
+// comment, return, shelve, unshelve, out of service) and each alarm's last state, so that active
+// alarms come back after a restart. Synchronous and single-threaded: the studio and the gateway
+// use it through AlarmJournalWriter (its own thread); fatek-cli reads it directly.
+class AlarmJournal
+{
+public:
+    ~AlarmJournal();
+    AlarmJournal(const AlarmJournal &) = delete;
+    AlarmJournal &operator=(const AlarmJournal &) = delete;
+
+    // Opens or creates the file (its folder too) and its tables. A file that is not a journal,
+    // damaged, locked by another program or not writable is refused with the reason.
+    static Result<std::unique_ptr<AlarmJournal>> open(const QString &path);
+    // Opens an existing journal to read (fatek-cli alarms --journal).
+    static Result<std::unique_ptr<AlarmJournal>> openReadOnly(const QString &path);
+
+    QString path() const { return m_path; }
+
+    // One transaction: the events appended, each record's state replaced (upsert by connection and
+    // alarm id; a Normal record is removed).
+    Status append(const QList<AlarmEvent> &events, const QList<AlarmRecord> &records);
+    // The kept states (of one connection, or every one when empty).
+    Result<QList<AlarmRecord>> states(const QString &connection = {}) const;
+    // Events with fromMs <= time < toMs, oldest first (of one connection, or every one).
+    Result<QList<AlarmEvent>> events(qint64 fromMs, qint64 toMs,
+                                     const QString &connection = {}) const;
+
+    // CSV with a header row: time (local, ISO 8601 with the UTC offset), connection, alarm,
+    // event, state, priority, group, message, value, user, comment, shelved until.
+    static QByteArray toCsv(const QList<AlarmEvent> &events);
+
+private:
+    explicit AlarmJournal(const QString &path);
+
+    QString m_path;
+    sqlite3 *m_db = nullptr;
+};
+
+} // namespace Fatek
