@@ -334,6 +334,10 @@
             <translation>Outcome still unknown: it could not be read back (%1). Check the PLC.</translation>
         </message>
         <message>
+            <source>other queries to the PLC kept going unanswered meanwhile, so an answer could not be told apart from a late one</source>
+            <translation>other queries to the PLC kept going unanswered meanwhile, so an answer could not be told apart from a late one</translation>
+        </message>
+        <message>
             <source>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</source>
             <translation>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</translation>
         </message>

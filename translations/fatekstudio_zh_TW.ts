@@ -334,6 +334,10 @@
             <translation>結果仍未知：無法讀回（%1）。請檢查 PLC。</translation>
         </message>
         <message>
+            <source>other queries to the PLC kept going unanswered meanwhile, so an answer could not be told apart from a late one</source>
+            <translation>其間送往 PLC 的其他查詢一直沒有回應，無法分辨回應是否為遲到的回應</translation>
+        </message>
+        <message>
             <source>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</source>
             <translation>結果未知：沒有任何讀取能確認是否已執行。請檢查 PLC。</translation>
         </message>
