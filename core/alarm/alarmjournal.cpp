@@ -94,8 +94,9 @@ QString columnText(sqlite3_stmt *stmt, int column)
     return QString::fromUtf8(data, sqlite3_column_bytes(stmt, column));
 }
 
-// "2026-12-07T10:10:50.123+01:00": the time as it read where it happened.
-QString localIso(qint64 ms, int offsetS)
+} // namespace
+
+QString AlarmJournal::localTime(qint64 ms, int offsetS)
 {
     const QDateTime utc = QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC);
     const QString local = utc.addSecs(offsetS).toString(QStringLiteral("yyyy-MM-ddTHH:mm:ss.zzz"));
@@ -105,8 +106,6 @@ QString localIso(qint64 ms, int offsetS)
                  .arg(minutes / 60, 2, 10, QLatin1Char('0'))
                  .arg(minutes % 60, 2, 10, QLatin1Char('0'));
 }
-
-} // namespace
 
 AlarmJournal::AlarmJournal(const QString &path)
     : m_path(path)
@@ -455,7 +454,7 @@ QByteArray AlarmJournal::toCsv(const QList<AlarmEvent> &events)
                                  "value,user,comment,shelved until\n");
     for (const AlarmEvent &e : events) {
         const QString fields[] = {
-            localIso(e.timeMs, e.utcOffsetS),
+            localTime(e.timeMs, e.utcOffsetS),
             e.connection,
             e.alarmId,
             Alarms::kindName(e.kind),
@@ -467,7 +466,7 @@ QByteArray AlarmJournal::toCsv(const QList<AlarmEvent> &events)
             e.value,
             e.user,
             e.comment,
-            e.shelvedUntilMs ? localIso(e.shelvedUntilMs, e.utcOffsetS) : QString(),
+            e.shelvedUntilMs ? localTime(e.shelvedUntilMs, e.utcOffsetS) : QString(),
         };
         bool first = true;
         for (const QString &field : fields) {

@@ -47,6 +47,8 @@ public:
     // connection, alarm, kind, event, state, priority, group, message, value, user, comment,
     // shelved until.
     static QByteArray toCsv(const QList<AlarmEvent> &events);
+    // "2026-12-07T17:23:31.253+08:00": a time as it read where it happened (the CSV's, the CLI's).
+    static QString localTime(qint64 ms, int utcOffsetS);
 
     // The journal's format (PRAGMA user_version) and its mark (PRAGMA application_id, "FALJ"),
     // which tells a journal from another program's SQLite file.

@@ -3,11 +3,14 @@
 // refuses (damaged, another program's database, a newer format, locked by the real sqlite3
 // program), and a writer killed with SIGKILL that leaves every committed event readable.
 
+#include "core/alarm/alarmengine.h"
 #include "core/alarm/alarmjournal.h"
 #include "core/alarm/alarmjournalmessages.h"
+#include "core/alarm/alarmjournalwriter.h"
 
 #include <QFile>
 #include <QProcess>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -70,6 +73,29 @@ int childMain(const QString &path)
         std::printf("%d\n", i);
         std::fflush(stdout);
     }
+}
+
+WatchItemSpec tankLevel()
+{
+    WatchItemSpec spec;
+    spec.address = *Address::parse("R100");
+    spec.format = DisplayFormat::Unsigned;
+    AlarmDefinition high;
+    high.kind = AlarmKind::High;
+    high.limit = 100;
+    spec.alarms = {high};
+    return spec;
+}
+
+WatchItemValue valueOf(std::uint64_t key, std::uint32_t raw)
+{
+    WatchItemValue v;
+    v.key = key;
+    v.words = {raw};
+    v.raw = raw;
+    v.hasValue = true;
+    v.quality = ValueQuality::Good;
+    return v;
 }
 
 const char *const ChildVariable = "FATEK_TEST_JOURNAL_CHILD";
@@ -341,6 +367,77 @@ private Q_SLOTS:
         // And it opens for writing again (the log it left is taken in).
         journal = AlarmJournal::open(file);
         QVERIFY(journal);
+    }
+
+    // The writer's thread with a real engine: the raise journaled and queried back, the state
+    // back after a restart without a second raise.
+    void writerRecordsAndRestores()
+    {
+        const QString file = path("writer.db");
+        const WatchItemSpec spec = tankLevel();
+        const QString id = Alarms::alarmId(spec, AlarmKind::High);
+        qint64 now = 1000000;
+        {
+            AlarmEngine engine(QStringLiteral("line1"));
+            engine.setClock([&now] { return now; });
+            // The engine's keys: the block after this one (WatchedItem::newKeys).
+            const std::uint64_t key = WatchedItem::newKey() + 1;
+            engine.setItems({WatchedItem{0, spec, 100}});
+            AlarmJournalWriter writer(file);
+            QSignalSpy failed(&writer, &AlarmJournalWriter::failed);
+            writer.attach(&engine);
+            // Held until the journal's states are in, then evaluated.
+            engine.plantValues({valueOf(key, 150)});
+            QTRY_COMPARE(engine.status(id)->state, AlarmState::ActiveUnacked);
+            bool answered = false;
+            QList<AlarmEvent> got;
+            writer.query(0, now + 1, QStringLiteral("line1"), this,
+                         [&](const Result<QList<AlarmEvent>> &events) {
+                             answered = true;
+                             QVERIFY(QThread::currentThread() == thread());
+                             QVERIFY(events);
+                             got = *events;
+                         });
+            QTRY_VERIFY(answered);
+            QCOMPARE(got.size(), 1);
+            QCOMPARE(got[0].type, AlarmEventType::Raised);
+            QCOMPARE(got[0].alarmId, id);
+            QVERIFY(failed.isEmpty());
+            // Acknowledged just before the end: the destructor writes it.
+            QVERIFY(engine.acknowledge(id, QStringLiteral("ops"), QStringLiteral("seen")));
+        }
+        {
+            AlarmEngine engine(QStringLiteral("line1"));
+            engine.setClock([&now] { return now; });
+            engine.setItems({WatchedItem{0, spec, 100}});
+            QSignalSpy events(&engine, &AlarmEngine::alarmEvent);
+            AlarmJournalWriter writer(file);
+            writer.attach(&engine);
+            QTRY_COMPARE(engine.status(id)->state, AlarmState::ActiveAcked);
+            QVERIFY(events.isEmpty());
+        }
+        Result<std::unique_ptr<AlarmJournal>> journal = AlarmJournal::openReadOnly(file);
+        QVERIFY(journal);
+        const QList<AlarmEvent> events = *(*journal)->events(0, now + 1);
+        QCOMPARE(events.size(), 2);
+        QCOMPARE(events[1].type, AlarmEventType::Acknowledged);
+        QCOMPARE(events[1].user, QStringLiteral("ops"));
+    }
+
+    void writerReportsAFileItCannotOpen()
+    {
+        AlarmEngine engine(QStringLiteral("line1"));
+        const std::uint64_t key = WatchedItem::newKey() + 1;
+        engine.setItems({WatchedItem{0, tankLevel(), 100}});
+        AlarmJournalWriter writer(QStringLiteral("/proc/version/alarms.db"));
+        QSignalSpy failed(&writer, &AlarmJournalWriter::failed);
+        writer.attach(&engine);
+        QVERIFY(failed.wait(5000));
+        QVERIFY(failed.at(0).at(0).value<Message>().id == MessageId(MsgId::JournalOpenFailed));
+        // The hold ends anyway: the alarms are evaluated without the journal's states.
+        const QString id = Alarms::alarmId(tankLevel(), AlarmKind::High);
+        engine.plantValues({valueOf(key, 150)});
+        QTRY_COMPARE(engine.status(id)->state, AlarmState::ActiveUnacked);
     }
 };
 
