@@ -35,6 +35,8 @@ packages=(
     libmosquitto-dev mosquitto
     # certificates for the TLS tests of the MQTT client (a CA and a broker certificate per test)
     openssl
+    # the alarm journal (SQLite's C library), and the sqlite3 program its tests lock a file with
+    libsqlite3-dev sqlite3
 )
 
 missing=()

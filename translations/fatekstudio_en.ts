@@ -2106,6 +2106,42 @@
             <translation>Alarm %1 is out of service (disabled in its definition).</translation>
         </message>
         <message>
+            <source>Cannot open the alarm journal %1: %2</source>
+            <translation>Cannot open the alarm journal %1: %2</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 does not exist.</source>
+            <translation>The alarm journal %1 does not exist.</translation>
+        </message>
+        <message>
+            <source>%1 is not an alarm journal (another program&apos;s SQLite database); it was left as it is.</source>
+            <translation>%1 is not an alarm journal (another program&apos;s SQLite database); it was left as it is.</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 has format %2, newer than this program reads (%3); it was left as it is.</source>
+            <translation>The alarm journal %1 has format %2, newer than this program reads (%3); it was left as it is.</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 is locked by another program (it holds a write transaction open).</source>
+            <translation>The alarm journal %1 is locked by another program (it holds a write transaction open).</translation>
+        </message>
+        <message>
+            <source>Cannot write to the alarm journal %1: %2</source>
+            <translation>Cannot write to the alarm journal %1: %2</translation>
+        </message>
+        <message>
+            <source>Cannot read the alarm journal %1: %2</source>
+            <translation>Cannot read the alarm journal %1: %2</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1, event %2: unknown %3 &quot;%4&quot;.</source>
+            <translation>The alarm journal %1, event %2: unknown %3 &quot;%4&quot;.</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1, the kept state of %2: unknown %3 &quot;%4&quot;.</source>
+            <translation>The alarm journal %1, the kept state of %2: unknown %3 &quot;%4&quot;.</translation>
+        </message>
+        <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
             <translation>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</translation>
         </message>

@@ -2106,6 +2106,42 @@
             <translation>警報 %1 已停用（在其定義中停用）。</translation>
         </message>
         <message>
+            <source>Cannot open the alarm journal %1: %2</source>
+            <translation>無法開啟警報日誌 %1：%2</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 does not exist.</source>
+            <translation>警報日誌 %1 不存在。</translation>
+        </message>
+        <message>
+            <source>%1 is not an alarm journal (another program&apos;s SQLite database); it was left as it is.</source>
+            <translation>%1 不是警報日誌（是其他程式的 SQLite 資料庫）；檔案保持原樣。</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 has format %2, newer than this program reads (%3); it was left as it is.</source>
+            <translation>警報日誌 %1 的格式為 %2，比本程式能讀取的（%3）更新；檔案保持原樣。</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 is locked by another program (it holds a write transaction open).</source>
+            <translation>警報日誌 %1 被其他程式鎖定（它保持著一個寫入交易）。</translation>
+        </message>
+        <message>
+            <source>Cannot write to the alarm journal %1: %2</source>
+            <translation>無法寫入警報日誌 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cannot read the alarm journal %1: %2</source>
+            <translation>無法讀取警報日誌 %1：%2</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1, event %2: unknown %3 &quot;%4&quot;.</source>
+            <translation>警報日誌 %1，事件 %2：未知的 %3「%4」。</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1, the kept state of %2: unknown %3 &quot;%4&quot;.</source>
+            <translation>警報日誌 %1，%2 保存的狀態：未知的 %3「%4」。</translation>
+        </message>
+        <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
             <translation>%1 不是有限數值：非數值與無限大只會寫入已開啟「%2」選項的項目</translation>
         </message>
