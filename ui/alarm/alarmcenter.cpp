@@ -36,11 +36,7 @@ AlarmCenter::AlarmCenter(ConnectionManager *manager, const QString &journalPath,
     : QObject(parent)
     , m_manager(manager)
     , m_journalPath(journalPath.isEmpty() ? defaultJournalPath() : journalPath)
-    , m_journal(new AlarmJournalWriter(m_journalPath, this))
 {
-    connect(m_journal, &AlarmJournalWriter::failed, this, [this](const Message &reason) {
-        Q_EMIT journalFailed(tr("Alarm journal %1: %2").arg(m_journalPath, translated(reason)));
-    });
     m_updateTimer.setSingleShot(true);
     m_updateTimer.setInterval(0);
     connect(&m_updateTimer, &QTimer::timeout, this, &AlarmCenter::update);
@@ -61,6 +57,17 @@ AlarmCenter::~AlarmCenter()
         e.engine->attach(nullptr);
         delete e.engine;
     }
+}
+
+AlarmJournalWriter *AlarmCenter::journal()
+{
+    if (!m_journal) {
+        m_journal = new AlarmJournalWriter(m_journalPath, this);
+        connect(m_journal, &AlarmJournalWriter::failed, this, [this](const Message &reason) {
+            Q_EMIT journalFailed(tr("Alarm journal %1: %2").arg(m_journalPath, translated(reason)));
+        });
+    }
+    return m_journal;
 }
 
 QString AlarmCenter::defaultJournalPath()
@@ -215,7 +222,7 @@ void AlarmCenter::update()
         // the first definitions arrive.
         if (!e.journaled && !items.isEmpty()) {
             e.journaled = true;
-            m_journal->attach(e.engine);
+            journal()->attach(e.engine);
         }
     }
     countChanged();

@@ -38,7 +38,9 @@ public:
     // QStandardPaths::AppDataLocation + "/alarms.sqlite".
     static QString defaultJournalPath();
     QString journalPath() const { return m_journalPath; }
-    AlarmJournalWriter *journal() const { return m_journal; }
+    // Opened when first needed (the first alarm definitions, or the journal viewer): a studio
+    // without alarms makes no file.
+    AlarmJournalWriter *journal();
 
     // The table's alarm-bearing rows count from now on, on the connection it polls through.
     void addTable(WatchTableWidget *table);
@@ -87,7 +89,7 @@ private:
 
     ConnectionManager *m_manager;
     QString m_journalPath;
-    AlarmJournalWriter *m_journal;
+    AlarmJournalWriter *m_journal = nullptr;
     std::vector<Engine> m_engines;
     QList<QPointer<WatchTableWidget>> m_tables;
     // Edits come in bursts (a pasted list, a loaded file): the engines are fed once per burst.

@@ -136,7 +136,13 @@ QVariant AlarmSummaryModel::headerData(int section, Qt::Orientation orientation,
 
 void AlarmSummaryModel::queue(const AlarmStatus &status)
 {
-    m_pending.insert(keyOf(status.connection, status.alarmId), status);
+    const QString key = keyOf(status.connection, status.alarmId);
+    if (const auto it = m_pendingIndex.constFind(key); it != m_pendingIndex.cend()) {
+        m_pending[*it] = status;
+    } else {
+        m_pendingIndex.insert(key, static_cast<int>(m_pending.size()));
+        m_pending.append(status);
+    }
     m_flushTimer.start();
 }
 
@@ -160,9 +166,9 @@ void AlarmSummaryModel::setAlarms(const QString &connection, const QList<AlarmSt
             queue(gone);
         }
     }
-    for (auto it = m_pending.begin(); it != m_pending.end(); ++it) {
-        if (it->connection == connection && !keep.contains(it->alarmId))
-            it->state = AlarmState::Normal;
+    for (AlarmStatus &pending : m_pending) {
+        if (pending.connection == connection && !keep.contains(pending.alarmId))
+            pending.state = AlarmState::Normal;
     }
 }
 
@@ -174,19 +180,20 @@ void AlarmSummaryModel::flush()
     std::vector<int> changed;
     std::vector<int> removed;
     QList<AlarmStatus> added;
-    for (auto it = m_pending.cbegin(); it != m_pending.cend(); ++it) {
-        const int row = m_rowOf.value(it.key(), -1);
-        const bool listed = Alarms::isListed(it->state);
+    for (const AlarmStatus &pending : std::as_const(m_pending)) {
+        const int row = m_rowOf.value(keyOf(pending.connection, pending.alarmId), -1);
+        const bool listed = Alarms::isListed(pending.state);
         if (row >= 0 && listed) {
-            m_rows[row] = *it;
+            m_rows[row] = pending;
             changed.push_back(row);
         } else if (row >= 0) {
             removed.push_back(row);
         } else if (listed) {
-            added.append(*it);
+            added.append(pending);
         }
     }
     m_pending.clear();
+    m_pendingIndex.clear();
     emitRuns(std::move(changed), 0, ColumnCount - 1, {});
     // From the bottom up, one step per run of consecutive rows: the rows above keep their place.
     std::sort(removed.begin(), removed.end());

@@ -71,8 +71,10 @@ private:
 
     QList<AlarmStatus> m_rows;
     QHash<QString, int> m_rowOf;
-    // Key -> the alarm's newest status, applied by flush().
-    QHash<QString, AlarmStatus> m_pending;
+    // The alarms' newest statuses, in the order they first came (new rows are appended so),
+    // applied by flush(); key -> place in m_pending.
+    QList<AlarmStatus> m_pending;
+    QHash<QString, int> m_pendingIndex;
     QTimer m_flushTimer;
     QTimer m_flashTimer;
     bool m_flashOn = false;
