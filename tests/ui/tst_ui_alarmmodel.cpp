@@ -125,12 +125,8 @@ private Q_SLOTS:
                         {alarm(0, AlarmState::ActiveAcked), alarm(2, AlarmState::ActiveUnacked)});
         model.flush();
         QCOMPARE(model.rowCount(), 7);
-        QCOMPARE(model
-                     .index(model.rowOf(QStringLiteral("Line 1"), QStringLiteral("1-R0-high")),
-                            AlarmSummaryModel::StateRole)
-                     .data(AlarmSummaryModel::StateRole)
-                     .toInt(),
-                 static_cast<int>(AlarmState::ActiveAcked));
+        const int r0 = model.rowOf(QStringLiteral("Line 1"), QStringLiteral("1-R0-high"));
+        QCOMPARE(model.status(r0).state, AlarmState::ActiveAcked);
         model.setAlarms(QStringLiteral("Line 2"), {});
         model.flush();
         QCOMPARE(model.rowCount(), 2);
