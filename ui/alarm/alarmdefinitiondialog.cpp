@@ -129,8 +129,12 @@ void AlarmDefinitionDialog::addLine(QGridLayout *grid, int row, AlarmKind kind,
         line.limit->setObjectName(QStringLiteral("limit_%1").arg(name));
         line.deadband = new QLineEdit(numberText(shown.deadband), this);
         line.deadband->setObjectName(QStringLiteral("deadband_%1").arg(name));
-        for (QLineEdit *edit : {line.limit, line.deadband})
-            edit->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('0')) * 12);
+        // Room for a float's digits ("-12345.678"), no more: the message needs the width.
+        const int digit = fontMetrics().horizontalAdvance(QLatin1Char('0'));
+        for (QLineEdit *edit : {line.limit, line.deadband}) {
+            edit->setMinimumWidth(digit * 9);
+            edit->setMaximumWidth(digit * 12);
+        }
         grid->addWidget(line.limit, row, column++);
         grid->addWidget(line.deadband, row, column++);
     } else {
