@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
+#include <QRegularExpression>
 #include <QVBoxLayout>
 
 namespace Fatek {
@@ -241,8 +242,10 @@ void AlarmDefinitionDialog::accept()
         WatchItemSpec one = m_item;
         one.alarms = {a};
         if (const Status s = Alarms::validate(one); !s) {
-            m_error->setMessage(
-                tr("%1: %2").arg(AlarmText::kind(a.kind), translated(s.error().message)), true);
+            // The line is named by its kind: the file's place ("alarm 1: ") would say nothing.
+            QString reason = translated(s.error().message);
+            reason.remove(QRegularExpression(QStringLiteral("^alarm 1: ")));
+            m_error->setMessage(tr("%1: %2").arg(AlarmText::kind(a.kind), reason), true);
             return;
         }
     }
