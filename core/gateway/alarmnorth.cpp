@@ -33,7 +33,7 @@ AlarmNorth::AlarmNorth(const GatewayConnectionConfig &config, const QString &pre
     , m_publisher(publisher)
 {
     connect(engine, &AlarmEngine::alarmEvent, this, &AlarmNorth::onEvent);
-    connect(engine, &AlarmEngine::alarmsReset, this, &AlarmNorth::publishAll);
+    connect(engine, &AlarmEngine::alarmsReset, this, &AlarmNorth::onReset);
     connect(client, &MqttClient::messageReceived, this, &AlarmNorth::onMessage);
     connect(client, &MqttClient::connected, this, [this] { m_brokerDown = false; });
     connect(client, &MqttClient::disconnected, this, [this] {
@@ -66,6 +66,13 @@ QSet<QString> AlarmNorth::stateTopics(const QString &prefix,
 void AlarmNorth::start()
 {
     m_started = true;
+    if (!m_awaitRestore)
+        publishAll();
+}
+
+void AlarmNorth::onReset()
+{
+    m_awaitRestore = false;
     publishAll();
 }
 

@@ -41,8 +41,10 @@ public:
     AlarmNorth(const GatewayConnectionConfig &config, const QString &prefix, AlarmEngine *engine,
                MqttClient *client, GatewayPublisher *publisher, QObject *parent = nullptr);
 
-    // Publishes every alarm's state (the engine's, restored from the journal by then) and takes
-    // commands from now on.
+    // The journal restores the engine's states (AlarmJournalWriter::attach, asynchronous): the
+    // states are first published after that (the engine's alarmsReset), not as normal before.
+    void awaitRestore() { m_awaitRestore = true; }
+    // Publishes every alarm's state (unless awaiting the restore) and takes commands from now on.
     void start();
     // Commands that arrive from now on are ignored; nothing more is published.
     void stop() { m_stopping = true; }
@@ -60,6 +62,7 @@ Q_SIGNALS:
 
 private:
     void onEvent(const AlarmEvent &event, const AlarmRecord &record);
+    void onReset();
     void publishAll();
     void publishState(const QString &alarmId);
     void onMessage(const QString &topic, const QByteArray &payload, bool retained, bool queued);
@@ -74,6 +77,7 @@ private:
     GatewayPublisher *m_publisher;
     QSet<QString> m_published; // alarm ids with a state on the broker
     bool m_started = false;
+    bool m_awaitRestore = false;
     bool m_stopping = false;
     QDateTime m_brokerDownAt; // when the link to the broker last went down (invalid: never)
     bool m_brokerDown = true;

@@ -74,8 +74,10 @@ bool Gateway::startLink(const GatewayConnectionConfig &connection, int pollDelay
     if (m_config.homeAssistant.discovery)
         link->setDiscovery(discoveryOf(m_config, connection));
     // Before start: the kept states are published with the link's first publications.
-    if (m_journal && link->alarms()->alarmCount() > 0)
+    if (m_journal && link->alarms()->alarmCount() > 0) {
         m_journal->attach(link->alarms());
+        link->awaitAlarmRestore();
+    }
     const QString name = connection.name;
     connect(link.get(), &GatewayLink::logEvent, this,
             [this, name](const Message &event) { Q_EMIT logEvent(name, event); });

@@ -86,6 +86,11 @@ void GatewayLink::clearDiscovery(const QSet<QString> &keep)
     m_north->clearDiscovery(keep);
 }
 
+void GatewayLink::awaitAlarmRestore()
+{
+    m_alarmNorth->awaitRestore();
+}
+
 void GatewayLink::clearAlarms(const QSet<QString> &keep)
 {
     m_alarmNorth->clearStates(keep);

@@ -62,8 +62,10 @@ public:
     // those alarms), before stop().
     void clearAlarms(const QSet<QString> &keep);
     // The connection's alarms (items with alarm definitions); the gateway's journal attaches to
-    // it before start().
+    // it before start(), and then says so with awaitAlarmRestore(): the alarm states go out once
+    // the journal's are back in the engine.
     AlarmEngine *alarms() const { return m_alarms; }
+    void awaitAlarmRestore();
 
     GatewayStatistics statistics() const;
     PlantConnection *plant() const { return m_plant; }

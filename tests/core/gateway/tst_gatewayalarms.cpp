@@ -39,7 +39,7 @@ const QString DiscoveryTopic
 
 const char *const alarmedList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
   {"name":"Main","intervalMs":100,"items":[
-   {"address":"R100","name":"Tank level","alarms":[{"kind":"high","limit":1000,
+   {"address":"R100","name":"Tank level","alarms":[{"type":"high","limit":1000,
      "priority":"high","message":"Tank level too high","group":"tanks"}]},
    {"address":"R101"}]}]})json";
 const char *const plainList = R"json({"format":"fatek-studio-watchlist","version":1,"tables":[
