@@ -2082,6 +2082,26 @@
             <translation>duplicate key &quot;%1&quot;</translation>
         </message>
         <message>
+            <source>There is no alarm %1.</source>
+            <translation>There is no alarm %1.</translation>
+        </message>
+        <message>
+            <source>Alarm %1 has nothing to acknowledge (it is not unacknowledged).</source>
+            <translation>Alarm %1 has nothing to acknowledge (it is not unacknowledged).</translation>
+        </message>
+        <message>
+            <source>Alarm %1 is not shelved.</source>
+            <translation>Alarm %1 is not shelved.</translation>
+        </message>
+        <message>
+            <source>Alarm %1 cannot be shelved until a time that has passed.</source>
+            <translation>Alarm %1 cannot be shelved until a time that has passed.</translation>
+        </message>
+        <message>
+            <source>Alarm %1 is out of service (disabled in its definition).</source>
+            <translation>Alarm %1 is out of service (disabled in its definition).</translation>
+        </message>
+        <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
             <translation>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</translation>
         </message>

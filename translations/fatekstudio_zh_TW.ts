@@ -2082,6 +2082,26 @@
             <translation>「%1」鍵重複出現</translation>
         </message>
         <message>
+            <source>There is no alarm %1.</source>
+            <translation>沒有警報 %1。</translation>
+        </message>
+        <message>
+            <source>Alarm %1 has nothing to acknowledge (it is not unacknowledged).</source>
+            <translation>警報 %1 沒有需要確認的事項（它不是未確認狀態）。</translation>
+        </message>
+        <message>
+            <source>Alarm %1 is not shelved.</source>
+            <translation>警報 %1 未被擱置。</translation>
+        </message>
+        <message>
+            <source>Alarm %1 cannot be shelved until a time that has passed.</source>
+            <translation>警報 %1 不能擱置到已經過去的時間。</translation>
+        </message>
+        <message>
+            <source>Alarm %1 is out of service (disabled in its definition).</source>
+            <translation>警報 %1 已停用（在其定義中停用）。</translation>
+        </message>
+        <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
             <translation>%1 不是有限數值：非數值與無限大只會寫入已開啟「%2」選項的項目</translation>
         </message>
