@@ -6,7 +6,7 @@
 #
 # Run as `cmake -P` or from install(CODE) with: FATEK_DEPLOY_BIN (the folder of the executables),
 # FATEK_DEPLOY_EXES (their names), FATEK_QT_PREFIX (the cross Qt), FATEK_DEPLOY_SEARCH (more folders
-# with DLLs: libmosquitto, the MinGW runtime), FATEK_OBJDUMP, FATEK_QT_TRANSLATIONS (folder of the
+# with DLLs: the MinGW runtime; libmosquitto and SQLite are in the cross Qt's bin/), FATEK_OBJDUMP, FATEK_QT_TRANSLATIONS (folder of the
 # qtbase_*.qm files; optional), FATEK_DEPLOY_LANGUAGES.
 cmake_minimum_required(VERSION 3.25)
 

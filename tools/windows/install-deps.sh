@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs what the Windows cross build, its Wine test run and its installer need (on top of
 # tools/install-deps.sh, whose host Qt 6.4.2 gives moc, rcc, uic and lrelease), and a deb-src
-# entry for Debian's own archive so that tools/windows/build-qt.sh can fetch qtbase's and
-# mosquitto's sources with apt-get source. Only what is missing.
+# entry for Debian's own archive so that tools/windows/build-qt.sh can fetch qtbase's,
+# mosquitto's and sqlite3's sources with apt-get source. Only what is missing.
 set -euo pipefail
 packages=(
     # MinGW-w64 with posix threads (std::thread, std::mutex); objdump for the DLL deployment
@@ -13,6 +13,8 @@ packages=(
     nsis zip
     # apt-get source (dpkg-source), the serial test's pty pair, Qt's translations for the zip
     dpkg-dev socat qt6-translations-l10n
+    # SQLite's amalgamation (sqlite3.c) is generated from Debian's full source tree by Tcl scripts
+    tcl
     # fonts for the offscreen platform under Wine (QT_QPA_FONTDIR in tools/windows/test.sh),
     # Latin and Traditional Chinese; the host's pdftotext reads the checkout reports back
     fonts-liberation fonts-noto-cjk poppler-utils

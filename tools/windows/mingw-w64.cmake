@@ -1,6 +1,8 @@
 # CMake toolchain for the Windows cross build (64-bit, MinGW-w64 from Debian, posix threads so
 # that std::thread and std::mutex exist). Used for Qt (tools/windows/build-qt.sh), libmosquitto
-# and the project (tools/windows/build.sh).
+# and the project (tools/windows/build.sh). (build-qt.sh compiles SQLite's amalgamation with the
+# same x86_64-w64-mingw32-gcc-posix directly; FindSQLite3 finds it in the prefix through the
+# roots below.)
 set(CMAKE_SYSTEM_NAME Windows)
 set(CMAKE_SYSTEM_PROCESSOR x86_64)
 set(_fatek_mingw x86_64-w64-mingw32)
