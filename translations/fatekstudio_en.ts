@@ -2106,6 +2106,54 @@
             <translation>Alarm %1 is out of service (disabled in its definition).</translation>
         </message>
         <message>
+            <source>Refused: no alarm &quot;%1&quot; on this connection.</source>
+            <translation>Refused: no alarm &quot;%1&quot; on this connection.</translation>
+        </message>
+        <message>
+            <source>Refused: a retained alarm command would be carried out again at every restart; publish it without the retain flag.</source>
+            <translation>Refused: a retained alarm command would be carried out again at every restart; publish it without the retain flag.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a key of this alarm command (it takes %2).</source>
+            <translation>&quot;%1&quot; is not a key of this alarm command (it takes %2).</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be text.</source>
+            <translation>&quot;%1&quot; must be text.</translation>
+        </message>
+        <message>
+            <source>A shelve needs &quot;until&quot; (ISO 8601 with its offset, ahead of now) or &quot;durationSec&quot; (1..%1), one of the two.</source>
+            <translation>A shelve needs &quot;until&quot; (ISO 8601 with its offset, ahead of now) or &quot;durationSec&quot; (1..%1), one of the two.</translation>
+        </message>
+        <message>
+            <source>alarm %1 raised (%2 priority): %3 (value %4)</source>
+            <translation>alarm %1 raised (%2 priority): %3 (value %4)</translation>
+        </message>
+        <message>
+            <source>alarm %1 returned to normal: %2 (value %3)</source>
+            <translation>alarm %1 returned to normal: %2 (value %3)</translation>
+        </message>
+        <message>
+            <source>alarm %1 %2 by %3 (comment &quot;%4&quot;)</source>
+            <translation>alarm %1 %2 by %3 (comment &quot;%4&quot;)</translation>
+        </message>
+        <message>
+            <source>alarm %1 %2</source>
+            <translation>alarm %1 %2</translation>
+        </message>
+        <message>
+            <source>alarm %1 %2 (id &quot;%3&quot;) refused: %4</source>
+            <translation>alarm %1 %2 (id &quot;%3&quot;) refused: %4</translation>
+        </message>
+        <message>
+            <source>alarm journal failed (alarms still run, not journaled): %1</source>
+            <translation>alarm journal failed (alarms still run, not journaled): %1</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must name a file.</source>
+            <translation>&quot;%1&quot; must name a file.</translation>
+        </message>
+        <message>
             <source>Cannot open the alarm journal %1: %2</source>
             <translation>Cannot open the alarm journal %1: %2</translation>
         </message>

@@ -2106,6 +2106,54 @@
             <translation>警報 %1 已停用（在其定義中停用）。</translation>
         </message>
         <message>
+            <source>Refused: no alarm &quot;%1&quot; on this connection.</source>
+            <translation>已拒絕：此連線沒有警報「%1」。</translation>
+        </message>
+        <message>
+            <source>Refused: a retained alarm command would be carried out again at every restart; publish it without the retain flag.</source>
+            <translation>已拒絕：保留的警報命令會在每次重新啟動時再次執行；請不帶保留旗標發布。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a key of this alarm command (it takes %2).</source>
+            <translation>「%1」不是此警報命令的鍵（它接受 %2）。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be text.</source>
+            <translation>「%1」必須是文字。</translation>
+        </message>
+        <message>
+            <source>A shelve needs &quot;until&quot; (ISO 8601 with its offset, ahead of now) or &quot;durationSec&quot; (1..%1), one of the two.</source>
+            <translation>擱置需要「until」（含時區偏移的 ISO 8601，晚於現在）或「durationSec」（1..%1），兩者擇一。</translation>
+        </message>
+        <message>
+            <source>alarm %1 raised (%2 priority): %3 (value %4)</source>
+            <translation>警報 %1 觸發（%2 優先度）：%3（值 %4）</translation>
+        </message>
+        <message>
+            <source>alarm %1 returned to normal: %2 (value %3)</source>
+            <translation>警報 %1 恢復正常：%2（值 %3）</translation>
+        </message>
+        <message>
+            <source>alarm %1 %2 by %3 (comment &quot;%4&quot;)</source>
+            <translation>警報 %1 由 %3 %2（備註「%4」）</translation>
+        </message>
+        <message>
+            <source>alarm %1 %2</source>
+            <translation>警報 %1 %2</translation>
+        </message>
+        <message>
+            <source>alarm %1 %2 (id &quot;%3&quot;) refused: %4</source>
+            <translation>警報 %1 %2（id「%3」）被拒絕：%4</translation>
+        </message>
+        <message>
+            <source>alarm journal failed (alarms still run, not journaled): %1</source>
+            <translation>警報日誌失敗（警報仍在運作，但未記錄）：%1</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must name a file.</source>
+            <translation>「%1」必須指定一個檔案。</translation>
+        </message>
+        <message>
             <source>Cannot open the alarm journal %1: %2</source>
             <translation>無法開啟警報日誌 %1：%2</translation>
         </message>

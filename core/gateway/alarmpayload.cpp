@@ -27,7 +27,7 @@ void insertAlarm(QJsonObject &object, const AlarmStatus &status)
     object.insert(QStringLiteral("id"), status.alarmId);
     object.insert(QStringLiteral("state"), Alarms::stateName(status.state));
     object.insert(QStringLiteral("priority"), Alarms::priorityName(status.definition.priority));
-    object.insert(QStringLiteral("kind"), Alarms::kindName(status.definition.kind));
+    object.insert(QStringLiteral("type"), Alarms::kindName(status.definition.kind));
     if (Alarms::isLimitKind(status.definition.kind))
         object.insert(QStringLiteral("limit"), status.definition.limit);
     object.insert(QStringLiteral("message"), status.message);
@@ -92,7 +92,7 @@ QByteArray AlarmPayload::encodeEvent(const AlarmEvent &event,
     object.insert(QStringLiteral("event"), Alarms::eventName(event.type));
     object.insert(QStringLiteral("state"), Alarms::stateName(event.state));
     object.insert(QStringLiteral("priority"), Alarms::priorityName(event.priority));
-    object.insert(QStringLiteral("kind"), Alarms::kindName(event.kind));
+    object.insert(QStringLiteral("type"), Alarms::kindName(event.kind));
     object.insert(QStringLiteral("message"), event.message);
     object.insert(QStringLiteral("group"), event.group);
     object.insert(QStringLiteral("value"), event.value);

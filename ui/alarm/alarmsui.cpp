@@ -10,12 +10,15 @@
 #include "ui/watch/watchtablemodel.h"
 #include "ui/watch/watchtablewidget.h"
 
+#include <QTimer>
+
 #include <QAction>
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QMenu>
 #include <QStatusBar>
 #include <QTableView>
+#include <QTimer>
 
 namespace Fatek {
 
@@ -48,7 +51,13 @@ AlarmsUi::AlarmsUi(QMainWindow *window, QDockWidget *tabWith, ConnectionManager 
     m_summary->addMuteAction(m_annunciator->muteAction());
     connect(m_annunciator, &AlarmAnnunciator::summaryRequested, this, [this] {
         showSummary();
-        m_summary->view()->setFocus(Qt::OtherFocusReason);
+        // After the dock's layout has shown the list (a hidden widget takes no focus).
+        // The top alarm selected: the operator who clicked the count acknowledges it next.
+        QTimer::singleShot(0, m_summary->view(), [view = m_summary->view()] {
+            view->setFocus(Qt::OtherFocusReason);
+            if (!view->selectionModel()->hasSelection() && view->model()->rowCount() > 0)
+                view->selectRow(0);
+        });
     });
     connect(m_summary, &AlarmSummaryWidget::journalRequested, this, &AlarmsUi::showJournal);
     connect(m_summary, &AlarmSummaryWidget::statusMessage, this, &AlarmsUi::statusMessage);

@@ -218,7 +218,7 @@ void TestGatewayAlarms::raiseAcknowledgeRestart()
     QJsonObject state = objectOf(received(AlarmTopic).last());
     QCOMPARE(state.value(QStringLiteral("state")).toString(), QStringLiteral("normal"));
     QCOMPARE(state.value(QStringLiteral("priority")).toString(), QStringLiteral("high"));
-    QCOMPARE(state.value(QStringLiteral("kind")).toString(), QStringLiteral("high"));
+    QCOMPARE(state.value(QStringLiteral("type")).toString(), QStringLiteral("high"));
     QCOMPARE(state.value(QStringLiteral("address")).toString(), QStringLiteral("R100"));
     QCOMPARE(state.value(QStringLiteral("item")).toString(), QStringLiteral("Tank level"));
     QCOMPARE(state.value(QStringLiteral("group")).toString(), QStringLiteral("tanks"));
