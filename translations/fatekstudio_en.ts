@@ -334,6 +334,10 @@
             <translation>Outcome still unknown: it could not be read back (%1). Check the PLC.</translation>
         </message>
         <message>
+            <source>other queries to the PLC kept going unanswered meanwhile, so an answer could not be told apart from a late one</source>
+            <translation>other queries to the PLC kept going unanswered meanwhile, so an answer could not be told apart from a late one</translation>
+        </message>
+        <message>
             <source>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</source>
             <translation>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</translation>
         </message>
@@ -2080,6 +2084,62 @@
         <message>
             <source>duplicate key &quot;%1&quot;</source>
             <translation>duplicate key &quot;%1&quot;</translation>
+        </message>
+        <message>
+            <source>There is no alarm %1.</source>
+            <translation>There is no alarm %1.</translation>
+        </message>
+        <message>
+            <source>Alarm %1 has nothing to acknowledge (it is not unacknowledged).</source>
+            <translation>Alarm %1 has nothing to acknowledge (it is not unacknowledged).</translation>
+        </message>
+        <message>
+            <source>Alarm %1 is not shelved.</source>
+            <translation>Alarm %1 is not shelved.</translation>
+        </message>
+        <message>
+            <source>Alarm %1 cannot be shelved until a time that has passed.</source>
+            <translation>Alarm %1 cannot be shelved until a time that has passed.</translation>
+        </message>
+        <message>
+            <source>Alarm %1 is out of service (disabled in its definition).</source>
+            <translation>Alarm %1 is out of service (disabled in its definition).</translation>
+        </message>
+        <message>
+            <source>Cannot open the alarm journal %1: %2</source>
+            <translation>Cannot open the alarm journal %1: %2</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 does not exist.</source>
+            <translation>The alarm journal %1 does not exist.</translation>
+        </message>
+        <message>
+            <source>%1 is not an alarm journal (another program&apos;s SQLite database); it was left as it is.</source>
+            <translation>%1 is not an alarm journal (another program&apos;s SQLite database); it was left as it is.</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 has format %2, newer than this program reads (%3); it was left as it is.</source>
+            <translation>The alarm journal %1 has format %2, newer than this program reads (%3); it was left as it is.</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 is locked by another program (it holds a write transaction open).</source>
+            <translation>The alarm journal %1 is locked by another program (it holds a write transaction open).</translation>
+        </message>
+        <message>
+            <source>Cannot write to the alarm journal %1: %2</source>
+            <translation>Cannot write to the alarm journal %1: %2</translation>
+        </message>
+        <message>
+            <source>Cannot read the alarm journal %1: %2</source>
+            <translation>Cannot read the alarm journal %1: %2</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1, event %2: unknown %3 &quot;%4&quot;.</source>
+            <translation>The alarm journal %1, event %2: unknown %3 &quot;%4&quot;.</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1, the kept state of %2: unknown %3 &quot;%4&quot;.</source>
+            <translation>The alarm journal %1, the kept state of %2: unknown %3 &quot;%4&quot;.</translation>
         </message>
         <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
@@ -4222,6 +4282,13 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <comment>quality, age of the value</comment>
             <translation>%1, %2</translation>
         </message>
+        <message numerus="yes">
+            <source>%n alarm(s) defined (Alarms… in the context menu, Ctrl+Shift+A)</source>
+            <translation>
+                <numerusform>%n alarm defined (Alarms… in the context menu, Ctrl+Shift+A)</numerusform>
+                <numerusform>%n alarms defined (Alarms… in the context menu, Ctrl+Shift+A)</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableEdits</name>
@@ -4261,6 +4328,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Set Format</source>
             <translation>Set Format</translation>
+        </message>
+        <message>
+            <source>Alarms of %1</source>
+            <translation>Alarms of %1</translation>
         </message>
     </context>
     <context>
@@ -5067,6 +5138,562 @@ Write its values all the same? Elements the PLC does not have are refused before
         <message>
             <source>Address</source>
             <translation>Address</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmAnnunciator</name>
+        <message>
+            <source>&amp;Mute Alarm Sound</source>
+            <translation>&amp;Mute Alarm Sound</translation>
+        </message>
+        <message>
+            <source>Open the alarm summary</source>
+            <translation>Open the alarm summary</translation>
+        </message>
+        <message>
+            <source>No sound while alarms wait for an acknowledge</source>
+            <translation>No sound while alarms wait for an acknowledge</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n unacknowledged alarm(s)</source>
+            <translation>
+                <numerusform>%n unacknowledged alarm</numerusform>
+                <numerusform>%n unacknowledged alarms</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmCenter</name>
+        <message>
+            <source>Alarm journal %1: %2</source>
+            <translation>Alarm journal %1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmDefinitionDialog</name>
+        <message>
+            <source> s</source>
+            <translation> s</translation>
+        </message>
+        <message>
+            <source>Alarms of %1</source>
+            <translation>Alarms of %1</translation>
+        </message>
+        <message>
+            <source>Alarms of %1 (%2)</source>
+            <translation>Alarms of %1 (%2)</translation>
+        </message>
+        <message>
+            <source>Alarm</source>
+            <translation>Alarm</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Limit</translation>
+        </message>
+        <message>
+            <source>Deadband</source>
+            <translation>Deadband</translation>
+        </message>
+        <message>
+            <source>On delay</source>
+            <translation>On delay</translation>
+        </message>
+        <message>
+            <source>Off delay</source>
+            <translation>Off delay</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>Priority</translation>
+        </message>
+        <message>
+            <source>Message</source>
+            <translation>Message</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>Group</translation>
+        </message>
+        <message>
+            <source>In service</source>
+            <translation>In service</translation>
+        </message>
+        <message>
+            <source>Limits are in the item&apos;s format (%1). A high alarm clears when the value is below its limit by the deadband; the delays say how long a condition must hold before it raises or clears the alarm.</source>
+            <translation>Limits are in the item&apos;s format (%1). A high alarm clears when the value is below its limit by the deadband; the delays say how long a condition must hold before it raises or clears the alarm.</translation>
+        </message>
+        <message>
+            <source>The delays say how long a condition must hold before it raises or clears the alarm. A bad quality alarm is raised when the item is stale or in error for its on delay.</source>
+            <translation>The delays say how long a condition must hold before it raises or clears the alarm. A bad quality alarm is raised when the item is stale or in error for its on delay.</translation>
+        </message>
+        <message>
+            <source>Off: out of service, never raised (kept in the list)</source>
+            <translation>Off: out of service, never raised (kept in the list)</translation>
+        </message>
+        <message>
+            <source>%1: type the limit.</source>
+            <translation>%1: type the limit.</translation>
+        </message>
+        <message>
+            <source>%1: the limit &quot;%2&quot; is not a number.</source>
+            <translation>%1: the limit &quot;%2&quot; is not a number.</translation>
+        </message>
+        <message>
+            <source>%1: the deadband &quot;%2&quot; is not a number.</source>
+            <translation>%1: the deadband &quot;%2&quot; is not a number.</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmEventsModel</name>
+        <message>
+            <source>%1 until %2</source>
+            <translation>%1 until %2</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>Time</translation>
+        </message>
+        <message>
+            <source>Connection</source>
+            <translation>Connection</translation>
+        </message>
+        <message>
+            <source>Alarm</source>
+            <translation>Alarm</translation>
+        </message>
+        <message>
+            <source>Event</source>
+            <translation>Event</translation>
+        </message>
+        <message>
+            <source>State after</source>
+            <translation>State after</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>Priority</translation>
+        </message>
+        <message>
+            <source>Message</source>
+            <translation>Message</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Value</translation>
+        </message>
+        <message>
+            <source>User</source>
+            <translation>User</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>Comment</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmJournalDialog</name>
+        <message>
+            <source>&amp;Show</source>
+            <translation>&amp;Show</translation>
+        </message>
+        <message>
+            <source>&amp;Export CSV…</source>
+            <translation>&amp;Export CSV…</translation>
+        </message>
+        <message>
+            <source>Alarm Journal</source>
+            <translation>Alarm Journal</translation>
+        </message>
+        <message>
+            <source>All connections</source>
+            <translation>All connections</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>From:</translation>
+        </message>
+        <message>
+            <source>To:</source>
+            <translation>To:</translation>
+        </message>
+        <message>
+            <source>Connection:</source>
+            <translation>Connection:</translation>
+        </message>
+        <message>
+            <source>The end of the range must come after its start.</source>
+            <translation>The end of the range must come after its start.</translation>
+        </message>
+        <message>
+            <source>Reading the journal…</source>
+            <translation>Reading the journal…</translation>
+        </message>
+        <message>
+            <source>The journal could not be read: %1</source>
+            <translation>The journal could not be read: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n event(s).</source>
+            <translation>
+                <numerusform>%n event.</numerusform>
+                <numerusform>%n events.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Export Alarm Journal</source>
+            <translation>Export Alarm Journal</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv);;All files (*)</source>
+            <translation>CSV files (*.csv);;All files (*)</translation>
+        </message>
+        <message>
+            <source>Not exported: %1</source>
+            <translation>Not exported: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n event(s) written to %1.</source>
+            <translation>
+                <numerusform>%n event written to %1.</numerusform>
+                <numerusform>%n events written to %1.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmsUi</name>
+        <message>
+            <source>Alarms</source>
+            <translation>Alarms</translation>
+        </message>
+        <message>
+            <source>&amp;Alarm Summary</source>
+            <translation>&amp;Alarm Summary</translation>
+        </message>
+        <message>
+            <source>Alarm &amp;Journal…</source>
+            <translation>Alarm &amp;Journal…</translation>
+        </message>
+        <message>
+            <source>&amp;Alarms…</source>
+            <translation>&amp;Alarms…</translation>
+        </message>
+        <message>
+            <source>Limits, bit and quality alarms of the row (not in operator mode)</source>
+            <translation>Limits, bit and quality alarms of the row (not in operator mode)</translation>
+        </message>
+        <message>
+            <source>Operator mode: alarm definitions cannot be changed.</source>
+            <translation>Operator mode: alarm definitions cannot be changed.</translation>
+        </message>
+        <message>
+            <source>Select the row whose alarms to edit.</source>
+            <translation>Select the row whose alarms to edit.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmSummaryModel</name>
+        <message>
+            <source>shelved until %1</source>
+            <translation>shelved until %1</translation>
+        </message>
+        <message>
+            <source>%1, chattering</source>
+            <translation>%1, chattering</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>State</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>Priority</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>Time</translation>
+        </message>
+        <message>
+            <source>Connection</source>
+            <translation>Connection</translation>
+        </message>
+        <message>
+            <source>Item</source>
+            <translation>Item</translation>
+        </message>
+        <message>
+            <source>Message</source>
+            <translation>Message</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Value</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>Group</translation>
+        </message>
+        <message>
+            <source>%1 (%2, station %3)</source>
+            <translation>%1 (%2, station %3)</translation>
+        </message>
+        <message>
+            <source>Chattering: raised %1 times or more within a minute.</source>
+            <translation>Chattering: raised %1 times or more within a minute.</translation>
+        </message>
+        <message>
+            <source>Last action by %1</source>
+            <translation>Last action by %1</translation>
+        </message>
+        <message>
+            <source>Last action by %1: %2</source>
+            <translation>Last action by %1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmSummaryWidget</name>
+        <message>
+            <source>All priorities</source>
+            <translation>All priorities</translation>
+        </message>
+        <message>
+            <source>All states</source>
+            <translation>All states</translation>
+        </message>
+        <message>
+            <source>Unacknowledged</source>
+            <translation>Unacknowledged</translation>
+        </message>
+        <message>
+            <source>Active</source>
+            <translation>Active</translation>
+        </message>
+        <message>
+            <source>Shelved</source>
+            <translation>Shelved</translation>
+        </message>
+        <message>
+            <source>Out of service</source>
+            <translation>Out of service</translation>
+        </message>
+        <message>
+            <source>All groups</source>
+            <translation>All groups</translation>
+        </message>
+        <message>
+            <source>Filter: item, message, group or connection</source>
+            <translation>Filter: item, message, group or connection</translation>
+        </message>
+        <message>
+            <source>Comment (optional)</source>
+            <translation>Comment (optional)</translation>
+        </message>
+        <message>
+            <source>Kept in the journal with the next acknowledge or shelve</source>
+            <translation>Kept in the journal with the next acknowledge or shelve</translation>
+        </message>
+        <message>
+            <source>&amp;Acknowledge</source>
+            <translation>&amp;Acknowledge</translation>
+        </message>
+        <message>
+            <source>Acknowledge All &amp;Shown</source>
+            <translation>Acknowledge All &amp;Shown</translation>
+        </message>
+        <message>
+            <source>Acknowledge (Ctrl+K)</source>
+            <translation>Acknowledge (Ctrl+K)</translation>
+        </message>
+        <message>
+            <source>Acknowledge the selected alarms</source>
+            <translation>Acknowledge the selected alarms</translation>
+        </message>
+        <message>
+            <source>Acknowledge All Shown</source>
+            <translation>Acknowledge All Shown</translation>
+        </message>
+        <message>
+            <source>Acknowledge every alarm the filters show (Ctrl+Shift+K)</source>
+            <translation>Acknowledge every alarm the filters show (Ctrl+Shift+K)</translation>
+        </message>
+        <message>
+            <source>Shelve</source>
+            <translation>Shelve</translation>
+        </message>
+        <message>
+            <source>Hide the selected alarms for a while; they come back by themselves</source>
+            <translation>Hide the selected alarms for a while; they come back by themselves</translation>
+        </message>
+        <message>
+            <source>For 15 min</source>
+            <translation>For 15 min</translation>
+        </message>
+        <message>
+            <source>For 1 h</source>
+            <translation>For 1 h</translation>
+        </message>
+        <message>
+            <source>For 8 h</source>
+            <translation>For 8 h</translation>
+        </message>
+        <message>
+            <source>For a Time…</source>
+            <translation>For a Time…</translation>
+        </message>
+        <message>
+            <source>Unshelve</source>
+            <translation>Unshelve</translation>
+        </message>
+        <message>
+            <source>Journal…</source>
+            <translation>Journal…</translation>
+        </message>
+        <message>
+            <source>Every raise, acknowledge, return and shelve, by time; export to CSV</source>
+            <translation>Every raise, acknowledge, return and shelve, by time; export to CSV</translation>
+        </message>
+        <message>
+            <source>Select the alarms first (click a row, or the arrow keys).</source>
+            <translation>Select the alarms first (click a row, or the arrow keys).</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
+        </message>
+        <message>
+            <source>Acknowledged: %1.</source>
+            <translation>Acknowledged: %1.</translation>
+        </message>
+        <message>
+            <source>No alarm shown waits for an acknowledge.</source>
+            <translation>No alarm shown waits for an acknowledge.</translation>
+        </message>
+        <message>
+            <source>Shelved until %1: %2.</source>
+            <translation>Shelved until %1: %2.</translation>
+        </message>
+        <message>
+            <source>Shelve Alarms</source>
+            <translation>Shelve Alarms</translation>
+        </message>
+        <message>
+            <source>Shelve the selected alarms for (minutes):</source>
+            <translation>Shelve the selected alarms for (minutes):</translation>
+        </message>
+        <message>
+            <source>Unshelved: %1.</source>
+            <translation>Unshelved: %1.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmText</name>
+        <message>
+            <source>normal</source>
+            <translation>normal</translation>
+        </message>
+        <message>
+            <source>active, unacknowledged</source>
+            <translation>active, unacknowledged</translation>
+        </message>
+        <message>
+            <source>active, acknowledged</source>
+            <translation>active, acknowledged</translation>
+        </message>
+        <message>
+            <source>returned, unacknowledged</source>
+            <translation>returned, unacknowledged</translation>
+        </message>
+        <message>
+            <source>shelved</source>
+            <translation>shelved</translation>
+        </message>
+        <message>
+            <source>out of service</source>
+            <translation>out of service</translation>
+        </message>
+        <message>
+            <source>critical</source>
+            <translation>critical</translation>
+        </message>
+        <message>
+            <source>high</source>
+            <translation>high</translation>
+        </message>
+        <message>
+            <source>medium</source>
+            <translation>medium</translation>
+        </message>
+        <message>
+            <source>low</source>
+            <translation>low</translation>
+        </message>
+        <message>
+            <source>High-high</source>
+            <translation>High-high</translation>
+        </message>
+        <message>
+            <source>High</source>
+            <translation>High</translation>
+        </message>
+        <message>
+            <source>Low</source>
+            <translation>Low</translation>
+        </message>
+        <message>
+            <source>Low-low</source>
+            <translation>Low-low</translation>
+        </message>
+        <message>
+            <source>Bit on (1)</source>
+            <translation>Bit on (1)</translation>
+        </message>
+        <message>
+            <source>Bit off (0)</source>
+            <translation>Bit off (0)</translation>
+        </message>
+        <message>
+            <source>Bad quality</source>
+            <translation>Bad quality</translation>
+        </message>
+        <message>
+            <source>raised</source>
+            <translation>raised</translation>
+        </message>
+        <message>
+            <source>returned</source>
+            <translation>returned</translation>
+        </message>
+        <message>
+            <source>acknowledged</source>
+            <translation>acknowledged</translation>
+        </message>
+        <message>
+            <source>unshelved</source>
+            <translation>unshelved</translation>
+        </message>
+        <message>
+            <source>in service</source>
+            <translation>in service</translation>
+        </message>
+        <message>
+            <source>%1 min</source>
+            <translation>%1 min</translation>
+        </message>
+        <message>
+            <source>%1 h</source>
+            <translation>%1 h</translation>
+        </message>
+        <message>
+            <source>%1 h %2 min</source>
+            <translation>%1 h %2 min</translation>
         </message>
     </context>
 </TS>

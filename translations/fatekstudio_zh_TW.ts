@@ -334,6 +334,10 @@
             <translation>結果仍未知：無法讀回（%1）。請檢查 PLC。</translation>
         </message>
         <message>
+            <source>other queries to the PLC kept going unanswered meanwhile, so an answer could not be told apart from a late one</source>
+            <translation>其間送往 PLC 的其他查詢一直沒有回應，無法分辨回應是否為遲到的回應</translation>
+        </message>
+        <message>
             <source>Outcome unknown: no read can tell whether it was carried out. Check the PLC.</source>
             <translation>結果未知：沒有任何讀取能確認是否已執行。請檢查 PLC。</translation>
         </message>
@@ -2080,6 +2084,62 @@
         <message>
             <source>duplicate key &quot;%1&quot;</source>
             <translation>「%1」鍵重複出現</translation>
+        </message>
+        <message>
+            <source>There is no alarm %1.</source>
+            <translation>沒有警報 %1。</translation>
+        </message>
+        <message>
+            <source>Alarm %1 has nothing to acknowledge (it is not unacknowledged).</source>
+            <translation>警報 %1 沒有需要確認的事項（它不是未確認狀態）。</translation>
+        </message>
+        <message>
+            <source>Alarm %1 is not shelved.</source>
+            <translation>警報 %1 未被擱置。</translation>
+        </message>
+        <message>
+            <source>Alarm %1 cannot be shelved until a time that has passed.</source>
+            <translation>警報 %1 不能擱置到已經過去的時間。</translation>
+        </message>
+        <message>
+            <source>Alarm %1 is out of service (disabled in its definition).</source>
+            <translation>警報 %1 已停用（在其定義中停用）。</translation>
+        </message>
+        <message>
+            <source>Cannot open the alarm journal %1: %2</source>
+            <translation>無法開啟警報日誌 %1：%2</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 does not exist.</source>
+            <translation>警報日誌 %1 不存在。</translation>
+        </message>
+        <message>
+            <source>%1 is not an alarm journal (another program&apos;s SQLite database); it was left as it is.</source>
+            <translation>%1 不是警報日誌（是其他程式的 SQLite 資料庫）；檔案保持原樣。</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 has format %2, newer than this program reads (%3); it was left as it is.</source>
+            <translation>警報日誌 %1 的格式為 %2，比本程式能讀取的（%3）更新；檔案保持原樣。</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1 is locked by another program (it holds a write transaction open).</source>
+            <translation>警報日誌 %1 被其他程式鎖定（它保持著一個寫入交易）。</translation>
+        </message>
+        <message>
+            <source>Cannot write to the alarm journal %1: %2</source>
+            <translation>無法寫入警報日誌 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cannot read the alarm journal %1: %2</source>
+            <translation>無法讀取警報日誌 %1：%2</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1, event %2: unknown %3 &quot;%4&quot;.</source>
+            <translation>警報日誌 %1，事件 %2：未知的 %3「%4」。</translation>
+        </message>
+        <message>
+            <source>The alarm journal %1, the kept state of %2: unknown %3 &quot;%4&quot;.</source>
+            <translation>警報日誌 %1，%2 保存的狀態：未知的 %3「%4」。</translation>
         </message>
         <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
@@ -4211,6 +4271,12 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <comment>quality, age of the value</comment>
             <translation>%1，%2</translation>
         </message>
+        <message numerus="yes">
+            <source>%n alarm(s) defined (Alarms… in the context menu, Ctrl+Shift+A)</source>
+            <translation>
+                <numerusform>已定義 %n 個警報（右鍵選單的「警報…」，Ctrl+Shift+A）</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableEdits</name>
@@ -4247,6 +4313,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Set Format</source>
             <translation>設定格式</translation>
+        </message>
+        <message>
+            <source>Alarms of %1</source>
+            <translation>%1 的警報</translation>
         </message>
     </context>
     <context>
@@ -5048,6 +5118,559 @@ PLC：%3
         <message>
             <source>Address</source>
             <translation>位址</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmAnnunciator</name>
+        <message>
+            <source>&amp;Mute Alarm Sound</source>
+            <translation>警報靜音(&amp;M)</translation>
+        </message>
+        <message>
+            <source>Open the alarm summary</source>
+            <translation>開啟警報總覽</translation>
+        </message>
+        <message>
+            <source>No sound while alarms wait for an acknowledge</source>
+            <translation>警報等待確認時不發出聲音</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n unacknowledged alarm(s)</source>
+            <translation>
+                <numerusform>%n 個警報未確認</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmCenter</name>
+        <message>
+            <source>Alarm journal %1: %2</source>
+            <translation>警報日誌 %1：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmDefinitionDialog</name>
+        <message>
+            <source> s</source>
+            <translation> 秒</translation>
+        </message>
+        <message>
+            <source>Alarms of %1</source>
+            <translation>%1 的警報</translation>
+        </message>
+        <message>
+            <source>Alarms of %1 (%2)</source>
+            <translation>%1（%2）的警報</translation>
+        </message>
+        <message>
+            <source>Alarm</source>
+            <translation>警報</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>限值</translation>
+        </message>
+        <message>
+            <source>Deadband</source>
+            <translation>不感帶</translation>
+        </message>
+        <message>
+            <source>On delay</source>
+            <translation>觸發延遲</translation>
+        </message>
+        <message>
+            <source>Off delay</source>
+            <translation>解除延遲</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>優先等級</translation>
+        </message>
+        <message>
+            <source>Message</source>
+            <translation>訊息</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>群組</translation>
+        </message>
+        <message>
+            <source>In service</source>
+            <translation>啟用</translation>
+        </message>
+        <message>
+            <source>Limits are in the item&apos;s format (%1). A high alarm clears when the value is below its limit by the deadband; the delays say how long a condition must hold before it raises or clears the alarm.</source>
+            <translation>限值依此項目的格式（%1）。高警報在數值低於限值超過不感帶時解除；延遲是條件須持續多久才觸發或解除警報。</translation>
+        </message>
+        <message>
+            <source>The delays say how long a condition must hold before it raises or clears the alarm. A bad quality alarm is raised when the item is stale or in error for its on delay.</source>
+            <translation>延遲是條件須持續多久才觸發或解除警報。品質不良警報在項目過期或錯誤持續達觸發延遲時觸發。</translation>
+        </message>
+        <message>
+            <source>Off: out of service, never raised (kept in the list)</source>
+            <translation>關閉：停用，永不觸發（仍保留在清單中）</translation>
+        </message>
+        <message>
+            <source>%1: type the limit.</source>
+            <translation>%1：請輸入限值。</translation>
+        </message>
+        <message>
+            <source>%1: the limit &quot;%2&quot; is not a number.</source>
+            <translation>%1：限值「%2」不是數字。</translation>
+        </message>
+        <message>
+            <source>%1: the deadband &quot;%2&quot; is not a number.</source>
+            <translation>%1：不感帶「%2」不是數字。</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmEventsModel</name>
+        <message>
+            <source>%1 until %2</source>
+            <translation>%1 至 %2</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>時間</translation>
+        </message>
+        <message>
+            <source>Connection</source>
+            <translation>連線</translation>
+        </message>
+        <message>
+            <source>Alarm</source>
+            <translation>警報</translation>
+        </message>
+        <message>
+            <source>Event</source>
+            <translation>事件</translation>
+        </message>
+        <message>
+            <source>State after</source>
+            <translation>事件後狀態</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>優先等級</translation>
+        </message>
+        <message>
+            <source>Message</source>
+            <translation>訊息</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>數值</translation>
+        </message>
+        <message>
+            <source>User</source>
+            <translation>使用者</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>註解</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmJournalDialog</name>
+        <message>
+            <source>&amp;Show</source>
+            <translation>顯示(&amp;S)</translation>
+        </message>
+        <message>
+            <source>&amp;Export CSV…</source>
+            <translation>匯出 CSV(&amp;E)…</translation>
+        </message>
+        <message>
+            <source>Alarm Journal</source>
+            <translation>警報日誌</translation>
+        </message>
+        <message>
+            <source>All connections</source>
+            <translation>所有連線</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>從：</translation>
+        </message>
+        <message>
+            <source>To:</source>
+            <translation>到：</translation>
+        </message>
+        <message>
+            <source>Connection:</source>
+            <translation>連線：</translation>
+        </message>
+        <message>
+            <source>The end of the range must come after its start.</source>
+            <translation>範圍的結束須晚於開始。</translation>
+        </message>
+        <message>
+            <source>Reading the journal…</source>
+            <translation>正在讀取日誌…</translation>
+        </message>
+        <message>
+            <source>The journal could not be read: %1</source>
+            <translation>無法讀取日誌：%1</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n event(s).</source>
+            <translation>
+                <numerusform>%n 筆事件。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Export Alarm Journal</source>
+            <translation>匯出警報日誌</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv);;All files (*)</source>
+            <translation>CSV 檔案 (*.csv);;所有檔案 (*)</translation>
+        </message>
+        <message>
+            <source>Not exported: %1</source>
+            <translation>未匯出：%1</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n event(s) written to %1.</source>
+            <translation>
+                <numerusform>已將 %n 筆事件寫入 %1。</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmsUi</name>
+        <message>
+            <source>Alarms</source>
+            <translation>警報</translation>
+        </message>
+        <message>
+            <source>&amp;Alarm Summary</source>
+            <translation>警報總覽(&amp;A)</translation>
+        </message>
+        <message>
+            <source>Alarm &amp;Journal…</source>
+            <translation>警報日誌(&amp;J)…</translation>
+        </message>
+        <message>
+            <source>&amp;Alarms…</source>
+            <translation>警報(&amp;A)…</translation>
+        </message>
+        <message>
+            <source>Limits, bit and quality alarms of the row (not in operator mode)</source>
+            <translation>此列的限值、位元與品質警報（操作員模式下不可用）</translation>
+        </message>
+        <message>
+            <source>Operator mode: alarm definitions cannot be changed.</source>
+            <translation>操作員模式：無法變更警報定義。</translation>
+        </message>
+        <message>
+            <source>Select the row whose alarms to edit.</source>
+            <translation>請選取要編輯警報的列。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmSummaryModel</name>
+        <message>
+            <source>shelved until %1</source>
+            <translation>擱置至 %1</translation>
+        </message>
+        <message>
+            <source>%1, chattering</source>
+            <translation>%1，頻繁觸發</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>狀態</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>優先等級</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>時間</translation>
+        </message>
+        <message>
+            <source>Connection</source>
+            <translation>連線</translation>
+        </message>
+        <message>
+            <source>Item</source>
+            <translation>項目</translation>
+        </message>
+        <message>
+            <source>Message</source>
+            <translation>訊息</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>數值</translation>
+        </message>
+        <message>
+            <source>Group</source>
+            <translation>群組</translation>
+        </message>
+        <message>
+            <source>%1 (%2, station %3)</source>
+            <translation>%1（%2，站號 %3）</translation>
+        </message>
+        <message>
+            <source>Chattering: raised %1 times or more within a minute.</source>
+            <translation>頻繁觸發：一分鐘內觸發 %1 次以上。</translation>
+        </message>
+        <message>
+            <source>Last action by %1</source>
+            <translation>最後操作者：%1</translation>
+        </message>
+        <message>
+            <source>Last action by %1: %2</source>
+            <translation>最後操作者：%1：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmSummaryWidget</name>
+        <message>
+            <source>All priorities</source>
+            <translation>所有優先等級</translation>
+        </message>
+        <message>
+            <source>All states</source>
+            <translation>所有狀態</translation>
+        </message>
+        <message>
+            <source>Unacknowledged</source>
+            <translation>未確認</translation>
+        </message>
+        <message>
+            <source>Active</source>
+            <translation>作用中</translation>
+        </message>
+        <message>
+            <source>Shelved</source>
+            <translation>已擱置</translation>
+        </message>
+        <message>
+            <source>Out of service</source>
+            <translation>停用</translation>
+        </message>
+        <message>
+            <source>All groups</source>
+            <translation>所有群組</translation>
+        </message>
+        <message>
+            <source>Filter: item, message, group or connection</source>
+            <translation>篩選：項目、訊息、群組或連線</translation>
+        </message>
+        <message>
+            <source>Comment (optional)</source>
+            <translation>註解（選填）</translation>
+        </message>
+        <message>
+            <source>Kept in the journal with the next acknowledge or shelve</source>
+            <translation>隨下一次確認或擱置記入日誌</translation>
+        </message>
+        <message>
+            <source>&amp;Acknowledge</source>
+            <translation>確認(&amp;A)</translation>
+        </message>
+        <message>
+            <source>Acknowledge All &amp;Shown</source>
+            <translation>確認所有顯示的警報(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Acknowledge (Ctrl+K)</source>
+            <translation>確認（Ctrl+K）</translation>
+        </message>
+        <message>
+            <source>Acknowledge the selected alarms</source>
+            <translation>確認選取的警報</translation>
+        </message>
+        <message>
+            <source>Acknowledge All Shown</source>
+            <translation>確認所有顯示的警報</translation>
+        </message>
+        <message>
+            <source>Acknowledge every alarm the filters show (Ctrl+Shift+K)</source>
+            <translation>確認篩選後顯示的所有警報（Ctrl+Shift+K）</translation>
+        </message>
+        <message>
+            <source>Shelve</source>
+            <translation>擱置</translation>
+        </message>
+        <message>
+            <source>Hide the selected alarms for a while; they come back by themselves</source>
+            <translation>暫時隱藏選取的警報；時間到會自動恢復</translation>
+        </message>
+        <message>
+            <source>For 15 min</source>
+            <translation>15 分鐘</translation>
+        </message>
+        <message>
+            <source>For 1 h</source>
+            <translation>1 小時</translation>
+        </message>
+        <message>
+            <source>For 8 h</source>
+            <translation>8 小時</translation>
+        </message>
+        <message>
+            <source>For a Time…</source>
+            <translation>自訂時間…</translation>
+        </message>
+        <message>
+            <source>Unshelve</source>
+            <translation>取消擱置</translation>
+        </message>
+        <message>
+            <source>Journal…</source>
+            <translation>日誌…</translation>
+        </message>
+        <message>
+            <source>Every raise, acknowledge, return and shelve, by time; export to CSV</source>
+            <translation>依時間列出每次觸發、確認、恢復與擱置；可匯出 CSV</translation>
+        </message>
+        <message>
+            <source>Select the alarms first (click a row, or the arrow keys).</source>
+            <translation>請先選取警報（點選一列，或用方向鍵）。</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>%1 %2</source>
+            <translation>%1 %2</translation>
+        </message>
+        <message>
+            <source>Acknowledged: %1.</source>
+            <translation>已確認：%1。</translation>
+        </message>
+        <message>
+            <source>No alarm shown waits for an acknowledge.</source>
+            <translation>顯示的警報都不需要確認。</translation>
+        </message>
+        <message>
+            <source>Shelved until %1: %2.</source>
+            <translation>擱置至 %1：%2。</translation>
+        </message>
+        <message>
+            <source>Shelve Alarms</source>
+            <translation>擱置警報</translation>
+        </message>
+        <message>
+            <source>Shelve the selected alarms for (minutes):</source>
+            <translation>選取的警報擱置（分鐘）：</translation>
+        </message>
+        <message>
+            <source>Unshelved: %1.</source>
+            <translation>已取消擱置：%1。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::AlarmText</name>
+        <message>
+            <source>normal</source>
+            <translation>正常</translation>
+        </message>
+        <message>
+            <source>active, unacknowledged</source>
+            <translation>作用中，未確認</translation>
+        </message>
+        <message>
+            <source>active, acknowledged</source>
+            <translation>作用中，已確認</translation>
+        </message>
+        <message>
+            <source>returned, unacknowledged</source>
+            <translation>已恢復，未確認</translation>
+        </message>
+        <message>
+            <source>shelved</source>
+            <translation>已擱置</translation>
+        </message>
+        <message>
+            <source>out of service</source>
+            <translation>停用</translation>
+        </message>
+        <message>
+            <source>critical</source>
+            <translation>緊急</translation>
+        </message>
+        <message>
+            <source>high</source>
+            <translation>高</translation>
+        </message>
+        <message>
+            <source>medium</source>
+            <translation>中</translation>
+        </message>
+        <message>
+            <source>low</source>
+            <translation>低</translation>
+        </message>
+        <message>
+            <source>High-high</source>
+            <translation>高高</translation>
+        </message>
+        <message>
+            <source>High</source>
+            <translation>高</translation>
+        </message>
+        <message>
+            <source>Low</source>
+            <translation>低</translation>
+        </message>
+        <message>
+            <source>Low-low</source>
+            <translation>低低</translation>
+        </message>
+        <message>
+            <source>Bit on (1)</source>
+            <translation>位元導通（1）</translation>
+        </message>
+        <message>
+            <source>Bit off (0)</source>
+            <translation>位元斷開（0）</translation>
+        </message>
+        <message>
+            <source>Bad quality</source>
+            <translation>品質不良</translation>
+        </message>
+        <message>
+            <source>raised</source>
+            <translation>觸發</translation>
+        </message>
+        <message>
+            <source>returned</source>
+            <translation>恢復</translation>
+        </message>
+        <message>
+            <source>acknowledged</source>
+            <translation>確認</translation>
+        </message>
+        <message>
+            <source>unshelved</source>
+            <translation>取消擱置</translation>
+        </message>
+        <message>
+            <source>in service</source>
+            <translation>啟用</translation>
+        </message>
+        <message>
+            <source>%1 min</source>
+            <translation>%1 分鐘</translation>
+        </message>
+        <message>
+            <source>%1 h</source>
+            <translation>%1 小時</translation>
+        </message>
+        <message>
+            <source>%1 h %2 min</source>
+            <translation>%1 小時 %2 分鐘</translation>
         </message>
     </context>
 </TS>

@@ -59,6 +59,12 @@ void printSummary(const QString &path, const GatewayConfig &config)
                   ? QStringLiteral("Home Assistant, under %1/").arg(config.homeAssistant.prefix)
                   : QStringLiteral("off"))
           << Qt::endl;
+    out() << "alarms     "
+          << (config.alarmCount() == 0 ? QStringLiteral("none")
+                                       : QStringLiteral("%1, journal %2")
+                                             .arg(config.alarmCount())
+                                             .arg(config.alarmJournal))
+          << Qt::endl;
     for (const GatewayConnectionConfig &c : config.connections) {
         const auto counted = [](qsizetype n, const char *one, const char *many) {
             return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));

@@ -3,7 +3,7 @@
 #include "alarmstatemachine.h"
 #include "alarmtypes.h"
 
-#include "core/plant/plantconsumer.h"
+#include "core/plant/plantconnection.h"
 #include "core/watch/itemassembler.h"
 
 #include <QHash>
@@ -16,8 +16,6 @@
 #include <vector>
 
 namespace Fatek {
-
-class PlantConnection;
 
 // The alarms of one plant connection: a consumer of the items that have alarm definitions, which
 // evaluates each value as it arrives (one state machine per alarm) and reports every event. The
@@ -53,8 +51,11 @@ public:
                   const QString &comment);
     Status unshelve(const QString &alarmId, const QString &user);
 
+    // Values are kept but not evaluated until restore(): the journal's states come first, so an
+    // alarm active before a restart is not raised a second time (AlarmJournalWriter::attach).
+    void holdForRestore();
     // Brings back the states the journal kept (records of other connections or unknown ids are
-    // skipped); causes no event.
+    // skipped); causes no event. Ends a hold: the values kept meanwhile are evaluated then.
     void restore(const QList<AlarmRecord> &records);
 
     int alarmCount() const { return static_cast<int>(m_alarms.size()); }
@@ -79,8 +80,8 @@ private:
     {
         WatchedItem watched;
         int width = 16;
-        std::vector<int> alarms; // indices into m_alarms
-        QString value;           // last value as text (made when an event needs it)
+        bool hasNumberAlarm = false; // limit or bit kinds
+        std::vector<int> alarms;     // indices into m_alarms
         std::uint64_t raw = 0;
         bool hasValue = false;
         bool bad = true; // stale or in error
@@ -100,6 +101,10 @@ private:
     void emitEvents(Alarm &alarm, const AlarmStateMachine::Events &events, qint64 nowMs,
                     const QString &user = {}, const QString &comment = {});
     QString valueText(const Item &item) const;
+    // Evaluates the alarms of one item with its last value and quality.
+    void evaluate(Item &item, qint64 nowMs);
+    Status refused(const QString &alarmId, AlarmStateMachine::Refusal refusal) const;
+    void subscribe();
 
     QString m_connection;
     Clock m_clock;
@@ -108,6 +113,7 @@ private:
     std::vector<Alarm> m_alarms;
     QHash<QString, int> m_alarmIndex;
     std::uint64_t m_firstKey = 0;
+    bool m_holding = false;
     AlarmStateMachine::Events m_events; // reused per evaluation
     QTimer m_timer;
 };

@@ -1,6 +1,6 @@
 #include "alarmjournal.h"
 
-#include "alarmjournalmessages.h"
+#include "alarmmessages.h"
 
 #include "core/watch/csvfield.h"
 

@@ -2,8 +2,6 @@
 
 #include "alarmtypes.h"
 
-#include "core/protocol/message.h"
-
 #include <deque>
 #include <vector>
 
@@ -32,11 +30,12 @@ public:
     // Time passing: a shelve's expiry, a quality alarm's delays.
     void tick(qint64 nowMs, Events &events);
 
-    // Operator actions. A refusal says why (nothing to acknowledge, already in that state, an
-    // expiry in the past, out of service) and changes nothing.
-    Status acknowledge(qint64 nowMs, Events &events);
-    Status shelve(qint64 untilMs, qint64 nowMs, Events &events);
-    Status unshelve(qint64 nowMs, Events &events);
+    // Why an operator action was refused (the engine words it with the alarm's id).
+    enum class Refusal { None, NothingToAck, NotShelved, ShelveExpired, OutOfService };
+    // Operator actions. A refusal changes nothing.
+    Refusal acknowledge(qint64 nowMs, Events &events);
+    Refusal shelve(qint64 untilMs, qint64 nowMs, Events &events);
+    Refusal unshelve(qint64 nowMs, Events &events);
 
     // Brings back what the journal kept (after a restart); causes no event. The next value
     // confirms or ends the condition as it is now (an alarm active and unacknowledged whose value
@@ -65,8 +64,8 @@ private:
 
     AlarmDefinition m_definition;
     AlarmState m_state = AlarmState::Normal;
-    bool m_condition = false; // confirmed
-    bool m_lastRaw = false;   // the last raw condition seen (a quality alarm's, for tick)
+    bool m_condition = false;     // confirmed
+    bool m_lastRaw = false;       // the last raw condition seen (a quality alarm's, for tick)
     qint64 m_pendingSinceMs = -1; // since when the raw condition differs from the confirmed one
     qint64 m_sinceMs = 0;
     qint64 m_raisedMs = 0;

@@ -12,12 +12,12 @@ namespace Fatek {
 
 // The states of ISA-18.2 (IEC 62682), one at a time.
 enum class AlarmState {
-    Normal,         // condition clear, nothing to acknowledge
-    ActiveUnacked,  // condition present, not acknowledged (the summary flashes it)
-    ActiveAcked,    // condition present, acknowledged
+    Normal,          // condition clear, nothing to acknowledge
+    ActiveUnacked,   // condition present, not acknowledged (the summary flashes it)
+    ActiveAcked,     // condition present, acknowledged
     ReturnedUnacked, // condition cleared before it was acknowledged
-    Shelved,        // hidden by an operator until an expiry; the condition is still followed
-    OutOfService,   // disabled by design (the definition's "enabled": false)
+    Shelved,         // hidden by an operator until an expiry; the condition is still followed
+    OutOfService,    // disabled by design (the definition's "enabled": false)
 };
 
 // What happened to an alarm: every one is journaled.
@@ -61,9 +61,9 @@ struct AlarmRecord
     QString connection;
     QString alarmId;
     AlarmState state = AlarmState::Normal;
-    qint64 sinceMs = 0;        // when it entered `state` (ms since the epoch, UTC)
-    qint64 raisedMs = 0;       // when it was last raised (0: never)
-    qint64 shelvedUntilMs = 0; // while Shelved
+    qint64 sinceMs = 0;           // when it entered `state` (ms since the epoch, UTC)
+    qint64 raisedMs = 0;          // when it was last raised (0: never)
+    qint64 shelvedUntilMs = 0;    // while Shelved
     bool conditionActive = false; // whether its condition was present when last known
 
     bool operator==(const AlarmRecord &) const = default;
@@ -72,7 +72,7 @@ struct AlarmRecord
 // One event of one alarm, as the journal keeps it and the gateway publishes it.
 struct AlarmEvent
 {
-    qint64 timeMs = 0; // ms since the epoch, UTC
+    qint64 timeMs = 0;  // ms since the epoch, UTC
     int utcOffsetS = 0; // the local offset at that time (the journal shows local time with it)
     QString connection;
     QString alarmId;

@@ -1,5 +1,8 @@
 #include "gateway.h"
 
+#include "alarmnorth.h"
+#include "core/alarm/alarmengine.h"
+#include "core/alarm/alarmjournalwriter.h"
 #include "gatewaylink.h"
 #include "gatewaymessages.h"
 #include "homeassistantdiscovery.h"
@@ -31,6 +34,7 @@ Gateway::~Gateway() = default;
 bool Gateway::start(const GatewayConfig &config, QString *connection, Message *error)
 {
     m_config = config;
+    openJournal();
     // Link i of n opens i/n of the shortest interval (at most 1 s) after the first, so that their
     // poll cycles, and the bursts of publications they cause, are spread over the interval.
     int shortestMs = 1000;
@@ -50,12 +54,30 @@ bool Gateway::start(const GatewayConfig &config, QString *connection, Message *e
     return true;
 }
 
+void Gateway::openJournal()
+{
+    if (m_config.alarmCount() == 0 || (m_journal && m_journalPath == m_config.alarmJournal))
+        return;
+    // Another file (a reload changed it): every link restarts and attaches to the new one.
+    delete m_journal;
+    m_journalPath = m_config.alarmJournal;
+    m_journal = new AlarmJournalWriter(m_journalPath, this);
+    connect(m_journal, &AlarmJournalWriter::failed, this, [this](const Message &error) {
+        Q_EMIT logEvent(QStringLiteral("fatek-gateway"), msg<MsgId::GatewayLogAlarmJournal>(error));
+    });
+}
+
 bool Gateway::startLink(const GatewayConnectionConfig &connection, int pollDelayMs, Message *error)
 {
     auto link = std::make_unique<GatewayLink>(connection, m_config.prefix, m_config.broker,
                                               m_config.readOnly);
     if (m_config.homeAssistant.discovery)
         link->setDiscovery(discoveryOf(m_config, connection));
+    // Before start: the kept states are published with the link's first publications.
+    if (m_journal && link->alarms()->alarmCount() > 0) {
+        m_journal->attach(link->alarms());
+        link->awaitAlarmRestore();
+    }
     const QString name = connection.name;
     connect(link.get(), &GatewayLink::logEvent, this,
             [this, name](const Message &event) { Q_EMIT logEvent(name, event); });
@@ -80,7 +102,8 @@ void Gateway::reload(const GatewayConfig &config)
     }
     const bool everything = config.broker != m_config.broker || config.prefix != m_config.prefix
                             || config.readOnly != m_config.readOnly
-                            || config.homeAssistant != m_config.homeAssistant;
+                            || config.homeAssistant != m_config.homeAssistant
+                            || config.alarmJournal != m_config.alarmJournal;
     // Discovery configs that stay: a retiring link clears the others (entities removed).
     QSet<QString> keep;
     if (config.homeAssistant.discovery) {
@@ -89,7 +112,12 @@ void Gateway::reload(const GatewayConfig &config)
                 keep.insert(entry.topic);
         }
     }
+    // Alarm states that stay: a retiring link clears the others (alarms removed).
+    QSet<QString> keepAlarms;
+    for (const GatewayConnectionConfig &c : config.connections)
+        keepAlarms.unite(AlarmNorth::stateTopics(config.prefix, c));
     m_config = config;
+    openJournal();
     m_reloading = true;
     m_waiting.clear();
     for (Running &running : m_links) {
@@ -111,6 +139,7 @@ void Gateway::reload(const GatewayConfig &config)
         if (!running.retiring)
             continue;
         running.link->clearDiscovery(keep);
+        running.link->clearAlarms(keepAlarms);
         running.link->stop();
     }
     startWaiting();

@@ -11,11 +11,14 @@
 
 namespace Fatek {
 
+class AlarmJournalWriter;
 class GatewayLink;
 
 // The running gateway: one GatewayLink per connection of a configuration, and the reload of a
 // new configuration (SIGHUP) that restarts only the links it changes. A link whose connection
 // is unchanged keeps running: its MQTT session, its values and its status stay as they are.
+// One alarm journal (AlarmJournalWriter, its own thread) for every link's alarms: their events
+// are journaled, and the states it kept come back into a link's AlarmEngine before it starts.
 class Gateway : public QObject
 {
     Q_OBJECT
@@ -30,7 +33,7 @@ public:
     // Applies `config`: links of connections that were removed or changed stop, and the new or
     // changed ones start once their old link has stopped (a restarted link keeps its MQTT client
     // id: two at once would throw each other off the broker). A change of the broker, the
-    // prefix or read-only restarts every link.
+    // prefix, read-only, discovery or the alarm journal restarts every link.
     void reload(const GatewayConfig &config);
     // Every link publishes offline and disconnects; stopped() when all have.
     void stop();
@@ -51,10 +54,15 @@ private:
     };
 
     bool startLink(const GatewayConnectionConfig &connection, int pollDelayMs, Message *error);
+    // Opens the configuration's alarm journal when some connection has alarms (and the journal
+    // is not the one open already).
+    void openJournal();
     void onLinkStopped();
     void startWaiting();
 
     GatewayConfig m_config;
+    AlarmJournalWriter *m_journal = nullptr; // a child; none while no connection has alarms
+    QString m_journalPath;
     std::vector<Running> m_links;
     // Connections of a reload waiting for their old link to stop before they start.
     QList<GatewayConnectionConfig> m_waiting;

@@ -1,5 +1,6 @@
 #include "gatewaycommands.h"
 
+#include "commandage.h"
 #include "core/mqtt/gatewaytopics.h"
 #include "core/mqtt/mqttclient.h"
 #include "core/mqtt/mqttmessages.h"
@@ -57,42 +58,12 @@ void GatewayCommands::refuse(GatewayPayload::Reply reply, const Message &why)
 
 Message GatewayCommands::tooOld(const GatewayPayload::SetCommand &command, bool queued) const
 {
-    const QDateTime now = QDateTime::currentDateTimeUtc();
-    const qint64 maxMs = qint64(m_config.commandMaxAgeSec) * 1000;
-    const auto seconds = [](qint64 ms) {
-        return QString::number(static_cast<double>(ms) / 1000.0, 'f', 1).toStdString();
-    };
-    if (command.time) {
-        const qint64 age = command.time->msecsTo(now);
-        if (age < -qint64(MaxAheadSec) * 1000)
-            return msg<MsgId::GatewayWriteFuture>(seconds(-age), MaxAheadSec);
-        if (age > maxMs)
-            return msg<MsgId::GatewayWriteExpired>(seconds(age), m_config.commandMaxAgeSec);
-    }
-    if (!queued)
-        return {}; // came straight through: as old as the broker's hand-over
-    // Kept by the broker while this gateway was away: at most as old as the outage. Checked with
-    // a "time" too: that is the sender's word, the outage the gateway's own measure.
-    if (!m_brokerDownAt.isValid()) {
-        // Away since this program started: only the command's time tells its age.
-        return command.time ? Message{}
-                            : msg<MsgId::GatewayWriteAgeUnknown>(m_config.commandMaxAgeSec);
-    }
-    const qint64 waited = m_brokerDownAt.msecsTo(now);
-    return waited > maxMs
-               ? msg<MsgId::GatewayWriteWaited>(seconds(waited), m_config.commandMaxAgeSec)
-               : Message{};
+    return CommandAge::tooOld(command.time, queued, m_brokerDownAt, m_config.commandMaxAgeSec);
 }
 
 qint64 GatewayCommands::commandAgeMs(const GatewayPayload::SetCommand &command, bool queued) const
 {
-    // The older of its own time (tooOld refused one in the future) and, for a command the broker
-    // kept, the time since this gateway lost the broker; a live command without a time came now.
-    const QDateTime now = QDateTime::currentDateTimeUtc();
-    qint64 age = command.time ? command.time->msecsTo(now) : 0;
-    if (queued && m_brokerDownAt.isValid())
-        age = std::max(age, m_brokerDownAt.msecsTo(now));
-    return std::max<qint64>(0, age);
+    return CommandAge::ageMs(command.time, queued, m_brokerDownAt);
 }
 
 bool GatewayCommands::refuseBadTopic(const QString &topic)
@@ -144,6 +115,9 @@ void GatewayCommands::onCommand(const QString &topic, const QByteArray &payload,
                                 bool queued)
 {
     if (m_stopping)
+        return;
+    // The alarm commands of this connection come on the same broker connection: AlarmNorth's.
+    if (GatewayTopics::parseAlarmCommand(m_prefix, topic))
         return;
     const std::optional<GatewayTopics::Parsed> parsed = GatewayTopics::parse(m_prefix, topic);
     if (!parsed || parsed->kind != GatewayTopics::Kind::Set

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "commandage.h"
 #include "core/mqtt/gatewaypayload.h"
 #include "core/watch/watchlist.h"
 #include "gatewayconfig.h"
@@ -30,11 +31,8 @@ public:
     static constexpr int MaxPendingWrites = 100;
     // Longest /set payload taken.
     static constexpr int MaxCommandBytes = 4096;
-    // How far a command's "time" may lie ahead of the gateway's clock. Clocks of machines that
-    // sync over NTP differ by milliseconds, by a few seconds when one drifted; further ahead the
-    // time is wrong, and taken as it is it would keep a command alive past commandMaxAgeSec for
-    // as long (a time in 2099 never expired). 5 s stretches the 10 s default by half at most.
-    static constexpr int MaxAheadSec = 5;
+    // How far a command's "time" may lie ahead of the gateway's clock (CommandAge).
+    static constexpr int MaxAheadSec = CommandAge::MaxAheadSec;
     // Set topics whose last command is remembered (to know the broker's retained copy of one
     // already answered); beyond it the memory starts again.
     static constexpr int MaxRememberedCommands = 256;

@@ -456,6 +456,31 @@ int GatewayConnectionConfig::itemCount() const
     return count;
 }
 
+int GatewayConnectionConfig::alarmCount() const
+{
+    int count = 0;
+    for (const WatchTableSpec &table : tables) {
+        for (const WatchItemSpec &item : table.items)
+            count += static_cast<int>(item.alarms.size());
+    }
+    return count;
+}
+
+int GatewayConfig::alarmCount() const
+{
+    int count = 0;
+    for (const GatewayConnectionConfig &connection : connections)
+        count += connection.alarmCount();
+    return count;
+}
+
+QString GatewayConfig::defaultAlarmJournal(const QString &baseDirectory)
+{
+    // systemd gives every directory of StateDirectory=, separated by ':'; ours is the first.
+    const QString state = qEnvironmentVariable("STATE_DIRECTORY").section(u':', 0, 0);
+    return resolve(state.isEmpty() ? baseDirectory : state, QStringLiteral("alarms.db"));
+}
+
 Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString &baseDirectory)
 {
     const auto fail = [](Message m) {
@@ -492,12 +517,18 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
     const QJsonObject broker = r.object(QStringLiteral("broker"), false);
     const QJsonObject homeAssistant = r.object(QStringLiteral("homeAssistant"), false);
     const QJsonArray connections = r.array(QStringLiteral("connections"));
+    const bool journalGiven = r.has(QStringLiteral("alarmJournal"));
+    const QString journal = r.string(QStringLiteral("alarmJournal"));
     r.known({QStringLiteral("format"), QStringLiteral("version")}); // checked above
     r.rejectUnknown();
     if (r.problem)
         return fail(*r.problem);
     if (!GatewayTopics::isValidPrefix(config.prefix))
         return fail(msg<MsgId::GatewayConfigBadPrefix>(config.prefix.toStdString()));
+    if (journalGiven && journal.trimmed().isEmpty())
+        return fail(msg<MsgId::GatewayConfigEmptyFile>("alarmJournal"));
+    config.alarmJournal
+        = journalGiven ? resolve(baseDirectory, journal) : defaultAlarmJournal(baseDirectory);
     if (Problem p = readBroker(broker, baseDirectory, &config.broker))
         return fail(at(msg<MsgId::GatewayPlaceBroker>(), *p));
     // The place is the key itself, as typed (not a word to translate).

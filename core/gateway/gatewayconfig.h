@@ -44,13 +44,16 @@ struct GatewayConnectionConfig
     // Whether `address` lies in one of the allowlist's ranges.
     bool allows(const Address &address) const;
     int itemCount() const;
+    // The alarms its watch lists define (issue 50).
+    int alarmCount() const;
 };
 
 // The gateway's configuration file: versioned JSON (docs/gateway.md has the reference)
 //   {"format":"fatek-gateway","version":1,"broker":{"url":"mqtt://127.0.0.1:1883",...},
 //    "prefix":"fatek","readOnly":false,"connections":[{"name":"line1","link":{...},
 //    "watchLists":[{"file":"line1.json","intervalMs":1000}],"allow":["R100..R199"],
-//    "statisticsIntervalMs":5000}],"homeAssistant":{"discovery":true,"prefix":"homeassistant"}}
+//    "statisticsIntervalMs":5000}],"homeAssistant":{"discovery":true,"prefix":"homeassistant"},
+//    "alarmJournal":"alarms.db"}
 // Everything is checked when loading; an error names its place ("connection 2 (line1): link:
 // port 70000 is out of range (1..65535)"). Watch lists and the password file are read relative
 // to the configuration file.
@@ -75,6 +78,16 @@ struct GatewayConfig
     bool readOnly = false;
     HomeAssistant homeAssistant;
     QList<GatewayConnectionConfig> connections;
+    // The alarm journal's file (AlarmJournal: every alarm event, and the states that come back
+    // after a restart), absolute: "alarmJournal" relative to the configuration file, else
+    // defaultAlarmJournal(). Opened only when some connection has alarms.
+    QString alarmJournal;
+
+    int alarmCount() const;
+    // Where the journal goes when the configuration names none: the service's state directory
+    // (systemd's StateDirectory= sets $STATE_DIRECTORY, /var/lib/fatek-gateway in the packaged
+    // unit, where the hardened unit may write), else beside the configuration file.
+    static QString defaultAlarmJournal(const QString &baseDirectory);
 
     // `baseDirectory`: where relative file names start.
     static Result<GatewayConfig> load(const QByteArray &json, const QString &baseDirectory);

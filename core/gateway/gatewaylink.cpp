@@ -1,5 +1,7 @@
 #include "gatewaylink.h"
 
+#include "alarmnorth.h"
+#include "core/alarm/alarmengine.h"
 #include "core/plant/plantconnection.h"
 #include "gatewaymessages.h"
 #include "mqttnorth.h"
@@ -15,7 +17,19 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
     // Core refuses writes too, should a command ever slip past the gateway's checks.
     , m_plant(PlantConnection::direct(config.link, {readOnly, false}, this))
     , m_north(new MqttNorth(config, prefix, broker, readOnly, m_plant, this))
+    , m_alarms(new AlarmEngine(config.name, this))
 {
+    QList<WatchedItem> alarmed;
+    for (const WatchTableSpec &table : config.tables) {
+        for (const WatchItemSpec &spec : table.items) {
+            if (!spec.alarms.isEmpty())
+                alarmed.append({0, spec, table.intervalMs});
+        }
+    }
+    m_alarms->setItems(alarmed);
+    m_alarmNorth
+        = new AlarmNorth(config, prefix, m_alarms, m_north->client(), m_north->publisher(), this);
+    connect(m_alarmNorth, &AlarmNorth::logEvent, this, &GatewayLink::logEvent);
     connect(m_north, &MqttNorth::logEvent, this, &GatewayLink::logEvent);
     connect(m_north, &MqttNorth::stopped, this, [this] {
         m_plant->close();
@@ -27,8 +41,10 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
 
 GatewayLink::~GatewayLink()
 {
-    // The north leaves the plant connection before the plant connection (and its session's
-    // thread) goes.
+    // The consumers leave the plant connection before the plant connection (and its session's
+    // thread) goes; the alarms' north before the broker connection it shares.
+    delete m_alarmNorth;
+    delete m_alarms;
     delete m_north;
 }
 
@@ -36,6 +52,8 @@ bool GatewayLink::start(Message *error, int pollDelayMs)
 {
     if (!m_north->start(error))
         return false;
+    m_alarmNorth->start();
+    m_alarms->attach(m_plant);
     if (pollDelayMs > 0) {
         QTimer::singleShot(pollDelayMs, this, [this] {
             if (!m_stopping)
@@ -52,6 +70,9 @@ void GatewayLink::stop(int timeoutMs)
     if (m_stopping)
         return;
     m_stopping = true;
+    // The alarms keep their states (the journal has them) rather than see the link close.
+    m_alarms->attach(nullptr);
+    m_alarmNorth->stop();
     m_north->stop(timeoutMs);
 }
 
@@ -63,6 +84,16 @@ void GatewayLink::setDiscovery(std::vector<HomeAssistantDiscovery::Entry> entrie
 void GatewayLink::clearDiscovery(const QSet<QString> &keep)
 {
     m_north->clearDiscovery(keep);
+}
+
+void GatewayLink::awaitAlarmRestore()
+{
+    m_alarmNorth->awaitRestore();
+}
+
+void GatewayLink::clearAlarms(const QSet<QString> &keep)
+{
+    m_alarmNorth->clearStates(keep);
 }
 
 GatewayStatistics GatewayLink::statistics() const

@@ -12,15 +12,19 @@
 
 namespace Fatek {
 
+class AlarmEngine;
+class AlarmNorth;
 class MqttNorth;
 class PlantConnection;
 class Session;
 
 // One connection of the gateway: its south, a plant connection (a direct link polling the
 // connection's watch lists on its own worker thread), and its north, the MQTT side (MqttNorth),
-// which consumes the plant connection's items like any other consumer. What the gateway publishes
-// and how it takes commands is MqttNorth's and GatewayCommands'; this class starts and stops the
-// two in order. Lives in one thread.
+// which consumes the plant connection's items like any other consumer, and its alarms: an
+// AlarmEngine (another consumer of the plant connection) evaluating the items' alarm definitions,
+// published and acknowledged through AlarmNorth on MqttNorth's broker connection. What the
+// gateway publishes and how it takes commands is MqttNorth's, GatewayCommands' and AlarmNorth's;
+// this class starts and stops them in order. Lives in one thread.
 class GatewayLink : public QObject
 {
     Q_OBJECT
@@ -40,6 +44,8 @@ public:
     // settings are not usable, with `error` saying why. The PLC link opens `pollDelayMs` later:
     // the gateway spreads its links' poll cycles over the interval instead of polling (and
     // publishing) all of them in the same instant (docs/performance.md).
+    // The engine's alarms (restored by the journal, if any, before this) go out with the first
+    // publications.
     bool start(Message *error, int pollDelayMs = 0);
     // Publishes the offline status, waits at most `timeoutMs` for the broker to take it, then
     // disconnects and closes the PLC link (accepted writes drain first); stopped() when done.
@@ -51,6 +57,15 @@ public:
     // Clears the discovery configs of this link that `keep` does not hold (an empty retained
     // payload: Home Assistant removes the entity), before stop() when a reload removes items.
     void clearDiscovery(const QSet<QString> &keep);
+
+    // Clears the alarm state topics of this link that `keep` does not hold (a reload removed
+    // those alarms), before stop().
+    void clearAlarms(const QSet<QString> &keep);
+    // The connection's alarms (items with alarm definitions); the gateway's journal attaches to
+    // it before start(), and then says so with awaitAlarmRestore(): the alarm states go out once
+    // the journal's are back in the engine.
+    AlarmEngine *alarms() const { return m_alarms; }
+    void awaitAlarmRestore();
 
     GatewayStatistics statistics() const;
     PlantConnection *plant() const { return m_plant; }
@@ -66,6 +81,8 @@ private:
     QString m_name;
     PlantConnection *m_plant;
     MqttNorth *m_north;
+    AlarmEngine *m_alarms;
+    AlarmNorth *m_alarmNorth;
     bool m_stopping = false;
     bool m_stopped = false;
 };

@@ -91,3 +91,41 @@ FATEK_MSG(GatewayLogReloadFailed, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "not reloaded, the running configuration stays: %1: %2"))
 FATEK_MSG(GatewayLogReloaded, 0, QT_TRANSLATE_NOOP("Fatek::Message", "reloaded"))
+
+// Alarms (issue 50; core/gateway/alarmnorth.cpp, alarmpayload.cpp). A command's refusals go in
+// its reply; the log says what happened to every alarm.
+// %1 the alarm id as the topic names it.
+FATEK_MSG(GatewayAlarmUnknown, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "Refused: no alarm \"%1\" on this connection."))
+FATEK_MSG(GatewayAlarmRetained, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Refused: a retained alarm command would be carried out again at "
+                            "every restart; publish it without the retain flag."))
+// %1 the key as written, %2 the keys the command takes (typed as they are, so an argument).
+FATEK_MSG(GatewayAlarmUnknownKey, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"%1\" is not a key of this alarm command (it takes %2)."))
+FATEK_MSG(GatewayAlarmNotText, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be text."))
+// %1 the longest shelve in seconds.
+FATEK_MSG(GatewayAlarmBadShelve, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "A shelve needs \"until\" (ISO 8601 with its offset, ahead of now) or "
+                            "\"durationSec\" (1..%1), one of the two."))
+// Log lines. %1 the alarm id, %2 its priority, %3 its message, %4 the item's value.
+FATEK_MSG(GatewayLogAlarmRaised, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "alarm %1 raised (%2 priority): %3 (value %4)"))
+FATEK_MSG(GatewayLogAlarmReturned, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message", "alarm %1 returned to normal: %2 (value %3)"))
+// %2 the event ("acknowledged", "shelved", "unshelved"), %3 who, %4 the comment.
+FATEK_MSG(GatewayLogAlarmAction, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "alarm %1 %2 by %3 (comment \"%4\")"))
+// Shelve expiries and definitions taken out of or back into service: %2 the event.
+FATEK_MSG(GatewayLogAlarmEvent, 2, QT_TRANSLATE_NOOP("Fatek::Message", "alarm %1 %2"))
+// A command refused: %1 the alarm id, %2 the action, %3 the command id, %4 why.
+FATEK_MSG(GatewayLogAlarmRefused, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message", "alarm %1 %2 (id \"%3\") refused: %4"))
+FATEK_MSG(GatewayLogAlarmJournal, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "alarm journal failed (alarms still run, not journaled): %1"))
+FATEK_MSG(GatewayConfigEmptyFile, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must name a file."))

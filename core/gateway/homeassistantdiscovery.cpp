@@ -24,6 +24,13 @@ const QString QualityTemplate
 const QString BitTemplate = QStringLiteral(
     "{{ 'None' if value_json.value is none else ('ON' if value_json.value else 'OFF') }}");
 const QString ValueTemplate = QStringLiteral("{{ value_json.value }}");
+// An alarm is on while active (acknowledged or not); shelved, returned or out of service: off.
+const QString AlarmTemplate = QStringLiteral(
+    "{{ 'ON' if value_json.state in ['activeUnacked', 'activeAcked'] else 'OFF' }}");
+// An alarm's last state stays meaningful while the PLC link is down (a quality alarm says so):
+// only a gateway that is gone (its will, or stopped) makes it unavailable.
+const QString GatewayTemplate
+    = QStringLiteral("{{ 'down' if value_json.state == 'offline' else 'up' }}");
 
 bool isBit(const ItemValues &item)
 {
@@ -58,6 +65,40 @@ std::pair<double, double> numberRange(const ItemValues &item)
 }
 
 } // namespace
+
+HomeAssistantDiscovery::Entry
+HomeAssistantDiscovery::alarmEntry(const QString &discoveryPrefix, const QString &prefix,
+                                   const QString &connection, const QString &nodeId,
+                                   const QJsonObject &device, const WatchItemSpec &spec,
+                                   const AlarmDefinition &alarm)
+{
+    // A binary sensor per alarm (issue 50), its attributes the whole state payload (priority,
+    // since, shelvedUntil, ...).
+    const QString alarmId = Alarms::alarmId(spec, alarm.kind);
+    const QString objectId = idLevel(QStringLiteral("alarm_") + alarmId);
+    const QString topic = GatewayTopics::alarm(prefix, connection, alarmId);
+    const QJsonObject config{
+        {QStringLiteral("name"), Alarms::messageOf(spec, alarm)},
+        {QStringLiteral("unique_id"), nodeId + u'_' + objectId},
+        {QStringLiteral("object_id"), nodeId + u'_' + objectId},
+        {QStringLiteral("device_class"), QStringLiteral("problem")},
+        {QStringLiteral("state_topic"), topic},
+        {QStringLiteral("value_template"), AlarmTemplate},
+        {QStringLiteral("payload_on"), QStringLiteral("ON")},
+        {QStringLiteral("payload_off"), QStringLiteral("OFF")},
+        {QStringLiteral("json_attributes_topic"), topic},
+        {QStringLiteral("availability"),
+         QJsonArray{
+             QJsonObject{{QStringLiteral("topic"), GatewayTopics::status(prefix, connection)},
+                         {QStringLiteral("value_template"), GatewayTemplate},
+                         {QStringLiteral("payload_available"), QStringLiteral("up")},
+                         {QStringLiteral("payload_not_available"), QStringLiteral("down")}}}},
+        {QStringLiteral("device"), device},
+    };
+    return {discoveryPrefix + QStringLiteral("/binary_sensor/") + nodeId + u'/' + objectId
+                + QStringLiteral("/config"),
+            QJsonDocument(config).toJson(QJsonDocument::Compact)};
+}
 
 QString HomeAssistantDiscovery::idLevel(const QString &text)
 {
@@ -149,6 +190,9 @@ HomeAssistantDiscovery::entries(const QString &discoveryPrefix, const QString &p
             result.push_back({discoveryPrefix + u'/' + component + u'/' + nodeId + u'/' + objectId
                                   + QStringLiteral("/config"),
                               QJsonDocument(config).toJson(QJsonDocument::Compact)});
+            for (const AlarmDefinition &alarm : spec.alarms)
+                result.push_back(alarmEntry(discoveryPrefix, prefix, connection.name, nodeId,
+                                            device, spec, alarm));
         }
     }
     return result;

@@ -3,6 +3,7 @@
 #include "gatewayconfig.h"
 
 #include <QByteArray>
+#include <QJsonObject>
 #include <QString>
 
 #include <vector>
@@ -19,6 +20,8 @@ namespace Fatek {
 //   sensor         any other item (numbers; ascii as text)
 //   number         a register item the gateway may write, in a format written as a decimal
 //                  (signed, unsigned, float, double; hex, binary and bcd stay sensors)
+// and a binary_sensor (device class "problem") per alarm, on while the alarm is active, with the
+// alarm's state payload as its attributes.
 namespace HomeAssistantDiscovery {
 
 struct Entry
@@ -27,9 +30,15 @@ struct Entry
     QByteArray payload;
 };
 
-// The config messages of every item of `connection`, in watch list order.
+// The config messages of every item of `connection` (each followed by its alarms'), in watch
+// list order.
 std::vector<Entry> entries(const QString &discoveryPrefix, const QString &prefix,
                            const GatewayConnectionConfig &connection, bool readOnly);
+
+// The config of one alarm of `spec` (an entities() entry).
+Entry alarmEntry(const QString &discoveryPrefix, const QString &prefix, const QString &connection,
+                 const QString &nodeId, const QJsonObject &device, const WatchItemSpec &spec,
+                 const AlarmDefinition &alarm);
 
 // A topic level Home Assistant takes as node or object id: letters, digits, '_' and '-' only.
 QString idLevel(const QString &text);

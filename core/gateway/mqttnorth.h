@@ -55,6 +55,10 @@ public:
     void setDiscovery(std::vector<HomeAssistantDiscovery::Entry> entries);
     void clearDiscovery(const QSet<QString> &keep);
     GatewayStatistics statistics() const;
+    // The broker connection and its publisher, shared with the link's other north side (its
+    // alarms: AlarmNorth) so that one connection carries one client id and one will.
+    MqttClient *client() const { return m_client; }
+    GatewayPublisher *publisher() const { return m_publisher; }
 
     void plantValues(const QList<WatchItemValue> &values) override;
     void plantLinkState(LinkState state, const Message &reason) override;

@@ -117,4 +117,63 @@ std::optional<GatewayTopics::Parsed> GatewayTopics::parse(const QString &prefix,
     return parsed;
 }
 
+QString GatewayTopics::alarm(const QString &prefix, const QString &connection,
+                             const QString &alarmId)
+{
+    return prefix + u'/' + connection + QStringLiteral("/alarms/") + alarmId;
+}
+
+QString GatewayTopics::alarmEvents(const QString &prefix, const QString &connection)
+{
+    return prefix + u'/' + connection + QStringLiteral("/alarms/events");
+}
+
+QString GatewayTopics::alarmReply(const QString &prefix, const QString &connection,
+                                  const QString &alarmId)
+{
+    return alarm(prefix, connection, alarmId) + QStringLiteral("/reply");
+}
+
+QString GatewayTopics::alarmActionLevel(AlarmAction action)
+{
+    switch (action) {
+    case AlarmAction::Acknowledge: return QStringLiteral("ack");
+    case AlarmAction::Shelve: return QStringLiteral("shelve");
+    case AlarmAction::Unshelve: return QStringLiteral("unshelve");
+    }
+    return {};
+}
+
+QString GatewayTopics::alarmCommand(const QString &prefix, const QString &connection,
+                                    const QString &alarmId, AlarmAction action)
+{
+    return alarm(prefix, connection, alarmId) + u'/' + alarmActionLevel(action);
+}
+
+QString GatewayTopics::alarmCommandFilter(const QString &prefix, const QString &connection,
+                                          AlarmAction action)
+{
+    return alarmCommand(prefix, connection, QStringLiteral("+"), action);
+}
+
+std::optional<GatewayTopics::AlarmCommandTopic>
+GatewayTopics::parseAlarmCommand(const QString &prefix, const QString &topic)
+{
+    if (!topic.startsWith(prefix + u'/'))
+        return std::nullopt;
+    const QStringList levels = topic.mid(prefix.size() + 1).split(u'/');
+    if (levels.size() != 4 || levels[1] != u"alarms" || levels[2].isEmpty()
+        || !isValidConnectionName(levels[0]))
+        return std::nullopt;
+    AlarmCommandTopic parsed{levels[0], levels[2]};
+    for (const AlarmAction action :
+         {AlarmAction::Acknowledge, AlarmAction::Shelve, AlarmAction::Unshelve}) {
+        if (levels[3] == alarmActionLevel(action)) {
+            parsed.action = action;
+            return parsed;
+        }
+    }
+    return std::nullopt;
+}
+
 } // namespace Fatek

@@ -181,6 +181,12 @@ FATEK_MSG(
     ChangeStillUnknown, 1,
     QT_TRANSLATE_NOOP("Fatek::Message",
                       "Outcome still unknown: it could not be read back (%1). Check the PLC."))
+// Why a read-back was not trusted (after ChangeStillUnknown's "could not be read back (").
+FATEK_MSG(
+    ChangeAnswersLost, 0,
+    QT_TRANSLATE_NOOP("Fatek::Message",
+                      "other queries to the PLC kept going unanswered meanwhile, so an answer "
+                      "could not be told apart from a late one"))
 FATEK_MSG(ChangeNoReadBack, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Outcome unknown: no read can tell whether it was carried out. Check "

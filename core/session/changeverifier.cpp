@@ -2,9 +2,16 @@
 
 #include "core/protocol/changecheck.h"
 
+#include <QAtomicInteger>
+
 #include <algorithm>
 
 namespace Fatek {
+
+namespace {
+// Read-backs not trusted in a row: the line keeps dropping answers, the outcome stays unknown.
+constexpr int maxDistrusted = 4;
+} // namespace
 
 ChangeReport ChangeVerifier::reportOf(const SessionResult &result)
 {
@@ -87,15 +94,76 @@ void ChangeVerifier::ask()
         m_waitingForLink = true; // asked when the link is back (onLinkState)
         return;
     }
+    if (!m_fenced) {
+        askFence();
+        return;
+    }
     m_read = *read;
     m_asking = true;
     m_session->submit(m_read, this, [this](const SessionResult &answer) { onAnswer(answer); });
+}
+
+void ChangeVerifier::askFence()
+{
+    // Data no earlier query carried: an older fence's late echo differs and is not taken.
+    static QAtomicInteger<quint32> counter;
+    const QByteArray data
+        = "FENCE" + QByteArray::number(++counter, 16).toUpper().rightJustified(8, '0');
+    m_fence = Request::loopback(m_change.station, Bytes(data.begin(), data.end()));
+    m_asking = true;
+    m_session->submit(m_fence, this, [this](const SessionResult &answer) { onFence(answer); });
+}
+
+void ChangeVerifier::onFence(const SessionResult &answer)
+{
+    m_asking = false;
+    const ErrorKind kind = answer.ok() ? ErrorKind::InvalidRequest : answer.errorKind();
+    if (answer.ok() || kind == ErrorKind::PlcError || kind == ErrorKind::Unsupported
+        || kind == ErrorKind::InvalidRequest) {
+        // Answered in order: nothing sent before it is still owed. (A PLC that refuses the
+        // loopback is read back without the fence, as before.)
+        m_fenced = true;
+        m_timeoutsAtFence = stationTimeouts();
+        ask();
+        return;
+    }
+    if (kind == ErrorKind::MalformedResponse) {
+        // An earlier fence's echo (other data): this one's answer is behind it.
+        ask();
+        return;
+    }
+    if (!m_session || m_session->linkState() == LinkState::Closed) {
+        conclude(ChangeOutcome::Unknown, msg<MsgId::ChangeStillUnknown>(answer.errorMessage()));
+        return;
+    }
+    m_retry.start(std::max(500, m_session->settings().timeoutMs));
+}
+
+quint64 ChangeVerifier::stationTimeouts() const
+{
+    if (!m_session)
+        return 0;
+    return m_session->statistics().stations.value(m_change.station).timeouts;
 }
 
 void ChangeVerifier::onAnswer(const SessionResult &answer)
 {
     m_asking = false;
     if (answer.ok()) {
+        // Another query to this station went unanswered since the fence: its late answer may be
+        // the one taken for the read-back's. Fenced again (the read-back's own retries are its
+        // own reads, after the fence).
+        const quint64 own = answer.attempts() > 1 ? static_cast<quint64>(answer.attempts() - 1) : 0;
+        if (stationTimeouts() - m_timeoutsAtFence > own) {
+            if (++m_distrusted >= maxDistrusted) {
+                conclude(ChangeOutcome::Unknown,
+                         msg<MsgId::ChangeStillUnknown>(msg<MsgId::ChangeAnswersLost>()));
+                return;
+            }
+            m_fenced = false;
+            ask();
+            return;
+        }
         if (ChangeCheck::inPlace(m_change, answer.response()))
             conclude(ChangeOutcome::Done, msg<MsgId::ChangeReadBackDone>());
         else

@@ -28,7 +28,9 @@ struct ChangeReport
 // forcing, the checkout, recipes, RUN/STOP): the outcome is done, refused (nothing sent, or the
 // PLC said no), or unknown (sent, not answered). An unknown outcome is read back (ChangeCheck) as
 // soon as the link answers again, and reported a second time, final: done or not done; still
-// unknown only if the link is closed first or no read can tell. Lives in the caller's thread.
+// unknown only if the link is closed first or no read can tell. The read-back follows a fence (a
+// loopback answered with its own data) so that no late answer of an earlier query is taken for
+// it. Lives in the caller's thread.
 class ChangeVerifier : public QObject
 {
     Q_OBJECT
@@ -56,7 +58,11 @@ private:
     ChangeVerifier(Session *session, const Request &change, const SessionResult &result,
                    QObject *context, Callback callback);
     void ask();
+    void askFence();
+    void onFence(const SessionResult &answer);
     void onAnswer(const SessionResult &answer);
+    // Attempts to the change's station that went unanswered so far (the session's counters).
+    quint64 stationTimeouts() const;
     void onLinkState(LinkState state);
     void conclude(ChangeOutcome outcome, Message message);
 
@@ -68,6 +74,14 @@ private:
     QTimer m_retry;
     bool m_asking = false;
     bool m_waitingForLink = false;
+    // The fence: a loopback with data of its own, answered before the read-back is asked. The
+    // PLC answers in order, so every late answer to an earlier query (same station, same shape:
+    // FACON answers carry no address) has come and gone by then and none is taken for the
+    // read-back's.
+    Request m_fence;
+    bool m_fenced = false;
+    quint64 m_timeoutsAtFence = 0;
+    int m_distrusted = 0; // read-backs answered but not trusted
 };
 
 } // namespace Fatek

@@ -79,8 +79,8 @@ Status validate(const WatchItemSpec &item);
 // The item's "alarms" list of a watch list file: every key known (an unknown one is refused by
 // name), each value of its type. `keyLine` gives the line of a key of alarm N (0 if unknown) so
 // that the error names it.
-Result<QList<AlarmDefinition>> fromJson(const QJsonValue &value,
-                                        const std::function<int(qsizetype, const QString &)> &keyLine);
+Result<QList<AlarmDefinition>>
+fromJson(const QJsonValue &value, const std::function<int(qsizetype, const QString &)> &keyLine);
 QJsonValue toJson(const QList<AlarmDefinition> &alarms);
 
 } // namespace Alarms

@@ -75,4 +75,73 @@ std::optional<Message> firstDuplicate(const QByteArray &json)
     return std::nullopt;
 }
 
+int keyLine(const QByteArray &json, const Path &path, const QString &key)
+{
+    struct Level
+    {
+        bool object = false;
+        bool expectKey = false;
+        QString key;         // the object's current key
+        qsizetype index = 0; // the array's current element
+    };
+    std::vector<Level> stack;
+    const auto at = [&]() {
+        // Whether the innermost object is the one at `path`.
+        if (static_cast<qsizetype>(stack.size()) != path.size() + 1)
+            return false;
+        for (qsizetype i = 0; i < path.size(); ++i) {
+            const Level &level = stack.at(static_cast<std::size_t>(i));
+            const auto &step = path.at(i);
+            if (level.object) {
+                if (!std::holds_alternative<QString>(step) || std::get<QString>(step) != level.key)
+                    return false;
+            } else if (!std::holds_alternative<qsizetype>(step)
+                       || std::get<qsizetype>(step) != level.index) {
+                return false;
+            }
+        }
+        return true;
+    };
+    int line = 1;
+    const qsizetype size = json.size();
+    for (qsizetype i = 0; i < size; ++i) {
+        const char c = json.at(i);
+        switch (c) {
+        case '\n': ++line; break;
+        case '{': stack.push_back({true, true, {}, 0}); break;
+        case '[': stack.push_back({false, false, {}, 0}); break;
+        case '}':
+        case ']':
+            if (!stack.empty())
+                stack.pop_back();
+            break;
+        case ',':
+            if (!stack.empty()) {
+                if (stack.back().object)
+                    stack.back().expectKey = true;
+                else
+                    ++stack.back().index;
+            }
+            break;
+        case '"': {
+            const qsizetype begin = i;
+            for (++i; i < size && json.at(i) != '"'; ++i) {
+                if (json.at(i) == '\\')
+                    ++i;
+            }
+            if (stack.empty() || !stack.back().object || !stack.back().expectKey)
+                break;
+            Level &level = stack.back();
+            level.expectKey = false;
+            level.key = keyText(json, begin, i);
+            if (level.key == key && at())
+                return line;
+            break;
+        }
+        default: break;
+        }
+    }
+    return 0;
+}
+
 } // namespace Fatek::JsonKeys

@@ -53,7 +53,7 @@ Status validateEntry(const WatchItemSpec &entry)
                                  .arg(lowerFirst(QString::fromStdString(s.error().text()))));
         }
     }
-    return Ok{};
+    return Alarms::validate(entry);
 }
 
 Status validate(const WatchListFile &file)

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "alarmdefinition.h"
 #include "core/protocol/address.h"
 #include "core/protocol/result.h"
-#include "alarmdefinition.h"
 #include "symboltable.h"
 #include "valueformat.h"
 
@@ -55,17 +55,22 @@ struct WatchListFile
 // The saved watch tables: versioned JSON
 //   {"format":"fatek-studio-watchlist","version":1,"tables":[{"name":"Main","intervalMs":500,
 //    "confirmWrites":true,"items":[{"address":"R100","station":1,"format":"signed","swapWords":false,
-//    "name":"Tank level","comment":"...","allowNonFinite":true}]}],
+//    "name":"Tank level","comment":"...","allowNonFinite":true,
+//    "alarms":[{"type":"high","limit":80,"deadband":2,"onDelayMs":0,"offDelayMs":0,
+//               "priority":"high","message":"Tank level high","group":"Tank farm"}]}]}],
 //   "symbols":[{"address":"R12","name":"Tank level","comment":"..."}]}
 // "symbols" (the imported names, SymbolTable) is optional and written only when there are names,
 // an item's "allowNonFinite" only when true: version 1 readers ignore unknown keys, so the version
-// stays 1. A key given twice in one object is an error ("line 4: duplicate key ..."), not the
-// last one silently.
-// Errors name the place ("table 2, item 5: ...", "line 7: ...").
+// stays 1; a file with alarms is version 2 (Alarms::fromJson: every key of an alarm is known,
+// an unknown one is refused with its line). A key given twice in one object is an error ("line 4:
+// duplicate key ..."), not the last one silently. Errors name the place ("table 2, item 5: ...",
+// "line 7: ...").
 namespace WatchList {
 
 inline constexpr const char *FormatMarker = "fatek-studio-watchlist";
 inline constexpr int CurrentVersion = 1;
+// A file whose items have alarms (issue 50) is version 2; this reader reads both.
+inline constexpr int AlarmsVersion = 2;
 inline constexpr int MinIntervalMs = 10;
 inline constexpr int MaxIntervalMs = 3600000;
 inline constexpr int MaxRangeItems = 1024;

@@ -14,6 +14,8 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 
+#include <functional>
+
 #include <cmath>
 
 namespace Fatek::WatchList {
@@ -57,7 +59,10 @@ Result<int> intMember(const QJsonObject &object, const QString &key, int fallbac
     return static_cast<int>(number);
 }
 
-Result<WatchItemSpec> entryFromJson(const QJsonValue &value)
+// The line of a key of an item's alarm N, for the alarms' errors.
+using AlarmKeyLine = std::function<int(qsizetype, const QString &)>;
+
+Result<WatchItemSpec> entryFromJson(const QJsonValue &value, const AlarmKeyLine &alarmKeyLine)
 {
     if (!value.isObject())
         return fileError(QStringLiteral("an item must be a JSON object"));
@@ -109,12 +114,18 @@ Result<WatchItemSpec> entryFromJson(const QJsonValue &value)
         return comment.error();
     entry.comment = *comment;
 
+    auto alarms = Alarms::fromJson(object.value(QStringLiteral("alarms")), alarmKeyLine);
+    if (!alarms)
+        return alarms.error();
+    entry.alarms = std::move(alarms).value();
+
     if (Status s = validateEntry(entry); !s)
         return s.error();
     return entry;
 }
 
-Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index)
+Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index,
+                                     const QByteArray &json)
 {
     const Message place = tablePlace(index);
     if (!value.isObject())
@@ -146,7 +157,13 @@ Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index)
     if (array.size() > MaxTableItems)
         return atPlace(place, tooManyItems(array.size()));
     for (qsizetype i = 0; i < array.size(); ++i) {
-        auto entry = entryFromJson(array.at(i));
+        const auto alarmKeyLine = [&](qsizetype alarm, const QString &key) {
+            return JsonKeys::keyLine(json,
+                                     {QStringLiteral("tables"), index, QStringLiteral("items"), i,
+                                      QStringLiteral("alarms"), alarm},
+                                     key);
+        };
+        auto entry = entryFromJson(array.at(i), alarmKeyLine);
         if (!entry)
             return atPlace(itemPlace(index, i), entry.error());
         table.items.append(std::move(entry).value());
@@ -225,13 +242,13 @@ Result<WatchListFile> load(const QByteArray &json)
         return fileError(QStringLiteral("The watch list has no valid \"version\" (expected %1).")
                              .arg(CurrentVersion));
     }
-    if (versionNumber > CurrentVersion) {
+    if (versionNumber > AlarmsVersion) {
         return fileError(
             QStringLiteral(
                 "The watch list is version %1, written by a newer FATEK Studio; this one "
                 "reads version %2.")
                 .arg(versionNumber)
-                .arg(CurrentVersion));
+                .arg(AlarmsVersion));
     }
 
     const QJsonValue tables = root.value(QStringLiteral("tables"));
@@ -240,7 +257,7 @@ Result<WatchListFile> load(const QByteArray &json)
     WatchListFile file;
     const QJsonArray array = tables.toArray();
     for (qsizetype t = 0; t < array.size(); ++t) {
-        auto table = tableFromJson(array.at(t), t);
+        auto table = tableFromJson(array.at(t), t, json);
         if (!table)
             return table.error();
         file.tables.append(std::move(table).value());
@@ -266,6 +283,7 @@ Result<WatchListFile> loadFromFile(const QString &path)
 QByteArray save(const WatchListFile &file)
 {
     QJsonArray tables;
+    bool hasAlarms = false;
     for (const WatchTableSpec &table : file.tables) {
         QJsonArray items;
         for (const WatchItemSpec &entry : table.items) {
@@ -280,6 +298,10 @@ QByteArray save(const WatchListFile &file)
             // Only when on: the files of every other item stay as they were.
             if (entry.allowNonFinite)
                 item.insert(QStringLiteral("allowNonFinite"), true);
+            if (!entry.alarms.isEmpty()) {
+                item.insert(QStringLiteral("alarms"), Alarms::toJson(entry.alarms));
+                hasAlarms = true;
+            }
             items.append(item);
         }
         tables.append(QJsonObject{
@@ -291,7 +313,9 @@ QByteArray save(const WatchListFile &file)
     }
     QJsonObject root{
         {QStringLiteral("format"), QLatin1String(FormatMarker)},
-        {QStringLiteral("version"), CurrentVersion},
+        // Version 2 only with alarms: a version 1 reader would drop them unseen on its next save,
+        // so it is told the file is newer instead; every other file stays version 1.
+        {QStringLiteral("version"), hasAlarms ? AlarmsVersion : CurrentVersion},
         {QStringLiteral("tables"), tables},
     };
     if (!file.symbols.isEmpty()) {

@@ -6,6 +6,8 @@
 #include "demosimulator.h"
 #include "languagemenu.h"
 #include "linkstatuslabel.h"
+#include "ui/alarm/alarmjournaldialog.h"
+#include "ui/alarm/alarmsui.h"
 #include "ui/common/uitext.h"
 #include "ui/connection/connectiondialog.h"
 #include "ui/connection/connectionmanager.h"
@@ -178,6 +180,8 @@ MainWindow::~MainWindow()
     disconnect(m_manager, nullptr, this, nullptr);
     disconnect(m_tabs, nullptr, this, nullptr);
     m_tools->releaseTargets();
+    delete m_alarms; // its engines leave the plant connections before the manager goes
+    m_alarms = nullptr;
     while (m_tabs->count() > 0) {
         QWidget *w = m_tabs->widget(0);
         m_tabs->removeTab(0);
@@ -255,6 +259,8 @@ void MainWindow::createActions()
     connect(m_trend, &TrendLogging::statusMessage, this, &MainWindow::showStatus);
     // The demo shows its sine wave and its ramp in the trend from the start.
     connect(this, &MainWindow::demoReady, m_trend, &TrendLogging::showDemo);
+    m_alarms = new AlarmsUi(this, m_connectionsDock, m_manager, m_toolsMenu, m_viewMenu);
+    connect(m_alarms, &AlarmsUi::statusMessage, this, &MainWindow::showStatus);
     m_operatorMode = new OperatorMode(m_readOnly, this);
     m_toolsMenu->addSeparator();
     m_toolsMenu->addAction(m_operatorMode->toggleAction());
@@ -286,6 +292,10 @@ QWidget *MainWindow::openTool(const QString &name)
 {
     if (name == QLatin1String("trend"))
         return m_trend->showTrend();
+    if (name == QLatin1String("alarms"))
+        return m_alarms->showSummary();
+    if (name == QLatin1String("journal"))
+        return m_alarms->showJournal();
     if (name == QLatin1String("connection")) {
         // The New Connection dialog, shown without blocking so that --screenshot can grab it.
         auto *dialog = new ConnectionDialog(m_manager->recent(), this);
@@ -376,6 +386,7 @@ WatchTableWidget *MainWindow::addWatchTable(const QString &name)
     if (m_confirm)
         table->setConfirmHandler(m_confirm);
     connect(table, &WatchTableWidget::statusMessage, this, &MainWindow::showStatus);
+    m_alarms->addTable(table);
     connect(table, &WatchTableWidget::edited, m_document, &WatchListDocument::updateModified);
     connect(table, &WatchTableWidget::addToTrendRequested, this,
             [this, table](const QList<int> &rows) { m_trend->addToTrend(table, rows); });

@@ -17,6 +17,7 @@ class QTabWidget;
 
 namespace Fatek {
 
+class AlarmsUi;
 class Connection;
 class ConnectionManager;
 class ConnectionsPanel;
@@ -105,6 +106,8 @@ public:
     // Logs the current watch table to `path` (CSV, appended); a log already running stops first.
     Status startLogging(const QString &path) { return m_trend->startLogging(path); }
     void stopLogging() { m_trend->stopLogging(); }
+    // Alarms: the summary dock, the status bar's count, the journal, the tables' definitions.
+    AlarmsUi *alarms() const { return m_alarms; }
 
 private:
     // Every session, present and future, follows the mode (enforced there); the tools re-read it.
@@ -127,6 +130,7 @@ private:
     class QuitQuestions *m_quitQuestions;
     ToolDocks *m_tools = nullptr;
     TrendLogging *m_trend = nullptr;
+    AlarmsUi *m_alarms = nullptr;
     int m_tableCounter = 0;
     class OperatorMode *m_operatorMode = nullptr;
 };

@@ -237,4 +237,23 @@ Status WatchTableEdits::setFormats(const QList<int> &rows, DisplayFormat format)
     return result;
 }
 
+Status WatchTableEdits::setAlarms(int row, const QList<AlarmDefinition> &alarms)
+{
+    if (row < 0 || row >= m_model->rowCount())
+        return makeError(ErrorKind::InvalidRequest, "no such row");
+    const WatchItemSpec before = m_model->item(row);
+    WatchItemSpec spec = before;
+    spec.alarms = alarms;
+    if (Status s = Alarms::validate(spec); !s)
+        return s;
+    if (spec == before)
+        return Ok{};
+    auto *step = new WatchRowsCommand(
+        m_model, WatchRowsCommand::Kind::Edit,
+        tr("Alarms of %1").arg(QString::fromStdString(before.address.toString())));
+    step->edits.append({row, before, spec});
+    m_undo.push(step);
+    return Ok{};
+}
+
 } // namespace Fatek

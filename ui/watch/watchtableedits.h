@@ -32,6 +32,7 @@ public:
     Status editItem(int row, const WatchItemSpec &spec);
     Status setFormat(int row, DisplayFormat format, bool swapWords);
     Status setFormats(const QList<int> &rows, DisplayFormat format);
+    Status setAlarms(int row, const QList<AlarmDefinition> &alarms);
 
 private:
     WatchTableModel *m_model;

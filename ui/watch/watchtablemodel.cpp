@@ -51,6 +51,7 @@ WatchTableModel::WatchTableModel(QObject *parent)
     , m_staleIcon(QStringLiteral(":/icons/stale.svg"))
     , m_errorIcon(QStringLiteral(":/icons/error.svg"))
     , m_forcedIcon(QStringLiteral(":/icons/forced.svg"))
+    , m_alarmIcon(QStringLiteral(":/icons/alarm.svg"))
 {
     connect(&m_valueState, &WatchValueState::cellsChanged, this,
             &WatchTableModel::emitCellsChanged);
@@ -382,12 +383,17 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                                                    .toString()))
                                       .arg(count)
                                 : UiText::elementName(spec.address.type));
+            if (!spec.alarms.isEmpty())
+                lines << tr("%n alarm(s) defined (Alarms… in the context menu, Ctrl+Shift+A)",
+                            nullptr, static_cast<int>(spec.alarms.size()));
         }
         return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
     }
     case Qt::DecorationRole:
         if (index.column() == ValueColumn && state.forced.value_or(false))
             return m_forcedIcon;
+        if (index.column() == AddressColumn && !spec.alarms.isEmpty())
+            return m_alarmIcon;
         if (index.column() == QualityColumn) {
             if (q == ValueQuality::Error
                 || (q == ValueQuality::Stale && m_valueState.isSilent(spec.station)))

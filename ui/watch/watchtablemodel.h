@@ -99,6 +99,11 @@ public:
     {
         return m_edits.setFormats(rows, format);
     }
+    // The row's alarm definitions (issue 50), checked as a file's are; one step.
+    Status setAlarms(int row, const QList<AlarmDefinition> &alarms)
+    {
+        return m_edits.setAlarms(row, alarms);
+    }
     void setItems(const QList<WatchItemSpec> &items);
     // The window's names (the ladder project's, see SymbolNames), not owned; nullptr: none.
     // Rows added from now on get the names their addresses have there when theirs are empty,
@@ -214,6 +219,7 @@ private:
     QIcon m_staleIcon;
     QIcon m_errorIcon;
     QIcon m_forcedIcon;
+    QIcon m_alarmIcon; // beside the address of a row with alarms
     QPointer<const SymbolNames> m_symbols;
 };
 

@@ -5,7 +5,7 @@
 
 #include "core/alarm/alarmengine.h"
 #include "core/alarm/alarmjournal.h"
-#include "core/alarm/alarmjournalmessages.h"
+#include "core/alarm/alarmmessages.h"
 #include "core/alarm/alarmjournalwriter.h"
 
 #include <QFile>

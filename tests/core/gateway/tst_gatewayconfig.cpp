@@ -24,6 +24,7 @@ private Q_SLOTS:
     void errors_data();
     void errors();
     void passwordFile();
+    void alarmJournal();
     void duplicateKeysNamed();
     void checkValid();
     void checkInvalid();
@@ -316,6 +317,14 @@ void TestGatewayConfig::errors_data()
     QTest::newRow("unknown key, none near")
         << QVariantList{"connections", 1, "colour"} << QJsonValue("red")
         << "connection 2 (line2): \"colour\" is not a known setting.";
+    // Issue 50: the alarm journal's file.
+    QTest::newRow("journal empty")
+        << QVariantList{"alarmJournal"} << QJsonValue(" ") << "\"alarmJournal\" must name a file.";
+    QTest::newRow("journal type") << QVariantList{"alarmJournal"} << QJsonValue(true)
+                                  << "\"alarmJournal\" must be a string.";
+    QTest::newRow("journal misspelt")
+        << QVariantList{"alarmjournal"} << QJsonValue("a.db")
+        << "\"alarmjournal\" is not a known setting; did you mean \"alarmJournal\"?";
     QTest::newRow("interval") << QVariantList{"connections", 0, "watchLists", 0, "intervalMs"}
                               << QJsonValue(1)
                               << "connection 1 (line1): watch list 1: intervalMs 1 is out of "
@@ -383,6 +392,30 @@ void TestGatewayConfig::passwordFile()
     QVERIFY2(config.ok(), config.ok() ? "" : config.error().text().c_str());
     QCOMPARE(config->broker.username, QStringLiteral("op"));
     QCOMPARE(config->broker.password, QStringLiteral("s3cret"));
+}
+
+// Issue 50: "alarmJournal" relative to the configuration file; absent, systemd's state
+// directory, else beside the configuration file.
+void TestGatewayConfig::alarmJournal()
+{
+    QJsonObject json
+        = replaced(validConfig(), {"alarmJournal"}, QJsonValue("alarms/j.db")).toObject();
+    Result<GatewayConfig> config = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());
+    QVERIFY(config.ok());
+    QCOMPARE(config->alarmJournal, m_dir.filePath(QStringLiteral("alarms/j.db")));
+    QCOMPARE(config->alarmCount(), 0);
+    const QByteArray state = qgetenv("STATE_DIRECTORY");
+    qunsetenv("STATE_DIRECTORY");
+    config = GatewayConfig::load(QJsonDocument(validConfig()).toJson(), m_dir.path());
+    QVERIFY(config.ok());
+    QCOMPARE(config->alarmJournal, m_dir.filePath(QStringLiteral("alarms.db")));
+    qputenv("STATE_DIRECTORY", "/var/lib/fatek-gateway:/var/lib/other");
+    QCOMPARE(GatewayConfig::defaultAlarmJournal(m_dir.path()),
+             QStringLiteral("/var/lib/fatek-gateway/alarms.db"));
+    if (state.isNull())
+        qunsetenv("STATE_DIRECTORY");
+    else
+        qputenv("STATE_DIRECTORY", state);
 }
 
 void TestGatewayConfig::checkValid()

@@ -5,6 +5,7 @@
 // and the Chinese one is Chinese. english() and the UI's translated() fill them in alike.
 #include "ui/common/uitext.h"
 
+#include "core/alarm/alarmmessages.h"
 #include "core/commission/commissionmessages.h"
 #include "core/gateway/gatewaymessages.h"
 #include "core/link/linkmessages.h"
@@ -38,7 +39,8 @@ QList<MessageId> allIds()
                              std::span<const MessageDef *const>(commissionMessages),
                              std::span<const MessageDef *const>(mqttMessages),
                              std::span<const MessageDef *const>(linkMessages),
-                             std::span<const MessageDef *const>(gatewayMessages)}) {
+                             std::span<const MessageDef *const>(gatewayMessages),
+                             std::span<const MessageDef *const>(alarmMessages)}) {
         for (const MessageDef *def : list)
             ids.append(*def);
     }

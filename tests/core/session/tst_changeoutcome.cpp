@@ -70,6 +70,7 @@ private Q_SLOTS:
     void retryNotSentPastDeadline();
     void unknownWriteReadBackDone();
     void unknownWriteReadBackNotDone();
+    void lateAnswerNotTakenForTheReadBack();
     void unknownWaitsForTheLink();
     void unknownStillUnknownWhenClosed();
     void runStopReadBack();
@@ -291,6 +292,40 @@ void TestChangeOutcome::unknownWriteReadBackNotDone()
     QCOMPARE(reports.list.last().outcome, ChangeOutcome::Refused);
     QVERIFY2(english(reports.list.last().message).find("Not done") == 0,
              english(reports.list.last().message).c_str());
+}
+
+// A PLC that answers late (in order, as one that stalled): the answer to a read of the same
+// register sent before the write (FACON answers carry no address) must not be taken for the
+// read-back's. Found through the gateway with a PLC stopped mid-request: a write that landed was
+// reported "not done". The read-back follows a fence (a loopback answered with its own data).
+void TestChangeOutcome::lateAnswerNotTakenForTheReadBack()
+{
+    auto session = openSession(400, 0);
+    QVERIFY(m_plc->setValue(addr("R101"), 5));
+    FaultConfig slow;
+    slow.latencyMs = 1000; // every answer after the session gave up on it
+    m_server->setFaults(slow);
+    QObject context;
+    std::optional<SessionResult> read;
+    session->submit(Request::readRegisters(1, addr("R101"), 1), &context,
+                    [&read](const SessionResult &r) { read = r; });
+    QList<ChangeReport> reports;
+    ChangeVerifier::submit(session.get(), Request::writeRegisters(1, addr("R101"), {789}), &context,
+                           [&](const ChangeReport &r) {
+                               reports.append(r);
+                               if (reports.size() == 1) {
+                                   // Answers now come within the timeout, behind the late ones.
+                                   FaultConfig quicker;
+                                   quicker.latencyMs = 300;
+                                   m_server->setFaults(quicker);
+                               }
+                           });
+    QVERIFY(waitUntil([&] { return !reports.isEmpty() && reports.last().final; }));
+    QVERIFY(read && !read->ok());
+    QCOMPARE(reports.first().outcome, ChangeOutcome::Unknown);
+    QCOMPARE(m_plc->value(addr("R101")), std::optional<std::uint32_t>(789));
+    QVERIFY2(reports.last().outcome == ChangeOutcome::Done,
+             english(reports.last().message).c_str());
 }
 
 // The link is lost after the write: the read-back waits for it and goes once it is back.

@@ -219,10 +219,10 @@ void TestWatchList::loadErrors_data()
     QTest::newRow("version 1.5") << QByteArray(
         R"({"format":"fatek-studio-watchlist","version":1.5,"tables":[]})")
                                  << "The watch list has no valid \"version\" (expected 1).";
-    QTest::newRow("version 2")
-        << QByteArray(R"({"format":"fatek-studio-watchlist","version":2,"tables":[]})")
-        << "The watch list is version 2, written by a newer FATEK Studio; this one reads "
-           "version 1.";
+    QTest::newRow("version 3")
+        << QByteArray(R"({"format":"fatek-studio-watchlist","version":3,"tables":[]})")
+        << "The watch list is version 3, written by a newer FATEK Studio; this one reads "
+           "version 2.";
     QTest::newRow("no tables") << QByteArray(R"({"format":"fatek-studio-watchlist","version":1})")
                                << "The watch list has no \"tables\" list.";
     QTest::newRow("tables object")
