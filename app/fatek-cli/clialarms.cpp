@@ -8,7 +8,7 @@
 #include "clioutput.h"
 #include "core/alarm/alarmengine.h"
 #include "core/alarm/alarmjournal.h"
-#include "core/alarm/alarmjournalmessages.h"
+#include "core/alarm/alarmmessages.h"
 #include "core/alarm/alarmjournalwriter.h"
 #include "core/plant/plantconnection.h"
 #include "core/qtbridge/qtmessage.h"
