@@ -260,6 +260,17 @@ int watch(const AlarmsOptions &o)
     direct.readOnly = true; // alarms only read
     direct.trafficLog = false;
     std::unique_ptr<PlantConnection> plant(PlantConnection::direct(link.link, direct));
+    // The link's losses and returns on stderr: a watch that prints nothing may be a link down.
+    QObject::connect(plant.get(), &PlantConnection::linkStateChanged, &engine,
+                     [](LinkState state, const Message &reason) {
+                         if (state != LinkState::Lost && state != LinkState::Connected)
+                             return;
+                         QTextStream err(stderr);
+                         err << "fatek-cli: link " << linkStateName(state);
+                         if (!reason.empty())
+                             err << ": " << englishText(reason);
+                         err << '\n';
+                     });
     engine.attach(plant.get());
     plant->open();
     QTextStream(stderr) << "Watching " << engine.alarmCount() << " alarms of " << o.watchList
