@@ -58,6 +58,8 @@ void runCodec(const Options &options, Report &report);
 void runGateway(const Options &options, Report &report);
 // Planning time of a whole FBs snapshot and of the packing watch lists (issue 35).
 void runPlanTime(const Options &options, Report &report);
+// Alarm evaluation: 10,000 items, a high and a low alarm each, updated at 10 Hz (issue 50).
+void runAlarmEvaluation(const Options &options, Report &report);
 
 QString fmt(double value, int decimals = 2);
 QString ratioText(double value, double base);

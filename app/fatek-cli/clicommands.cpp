@@ -1,6 +1,7 @@
 #include "clicommands.h"
 
 #include "app/common/linkarguments.h"
+#include "clialarms.h"
 #include "clicheckoutcommand.h"
 #include "clicontext.h"
 #include "clicontrolcommand.h"
@@ -248,6 +249,7 @@ QStringList commandNames()
     QStringList names;
     for (const CommandSpec &c : commands)
         names << QLatin1String(c.name);
+    names << QStringLiteral("alarms"); // a program of its own (clialarms.h), not a step
     return names;
 }
 
@@ -260,6 +262,19 @@ QList<std::pair<QString, QString>> commandUsage()
                 rows.append({QLatin1String(u.synopsis), QLatin1String(u.summary)});
         }
     }
+    rows.append({QLatin1String(AlarmsWatchSynopsis),
+                 QStringLiteral("watch the watch list's alarms (ISA-18.2: limits, bits, quality) "
+                                "through the link, one line per event (raised, returned, "
+                                "acknowledged, shelved...) until Ctrl-C; --journal also records "
+                                "them (and brings back the states kept there); NAME names the "
+                                "connection in the journal (default: the file's base name)")});
+    rows.append({QLatin1String(AlarmsReadSynopsis) + QStringLiteral(" [--csv]"),
+                 QStringLiteral("read the journal's events, oldest first; TIME: ISO 8601 "
+                                "(2026-12-07, 2026-12-07T08:00[:00][+08:00], local without an "
+                                "offset), now, or before now (-90s, -30m, -2h, -7d); --until is "
+                                "exclusive; --csv: time (local, with its UTC offset), connection, "
+                                "alarm, kind, event, state, priority, group, message, value, "
+                                "user, comment, shelved until")});
     return rows;
 }
 

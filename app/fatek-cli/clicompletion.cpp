@@ -27,7 +27,15 @@ QString dashed(const QStringList &names)
 }
 
 // The commands whose arguments are files.
-const char *const fileCommands = "backup restore snapshot diff restore-values";
+const char *const fileCommands = "backup restore snapshot diff restore-values alarms";
+
+// The valued options of the runner's parser and those alarms parses itself (clialarms.cpp).
+QStringList completedValuedNames()
+{
+    return valuedOptionNames()
+           + QStringList{QStringLiteral("journal"), QStringLiteral("since"),
+                         QStringLiteral("until"), QStringLiteral("connection")};
+}
 
 // Prints "@NAME" for every line NAME = URL of the named links file (app/common/namedlinks.h).
 const char *const namedLinksShell
@@ -37,7 +45,7 @@ const char *const namedLinksShell
 QString bash()
 {
     const QString valued
-        = dashed(valuedOptionNames()).replace(QLatin1Char(' '), QLatin1String(" | "));
+        = dashed(completedValuedNames()).replace(QLatin1Char(' '), QLatin1String(" | "));
     return QStringLiteral(R"sh(# bash completion for fatek-cli (made by fatek-cli --completion bash)
 _fatek_cli() {
     local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}
@@ -84,8 +92,8 @@ _fatek_cli() {
 complete -F _fatek_cli fatek-cli
 )sh")
         .arg(QString::fromLatin1(namedLinksShell), formats(), valued,
-             dashed(valuedOptionNames() + flagOptionNames()), commandNames().join(QLatin1Char(' ')),
-             QString::fromLatin1(fileCommands));
+             dashed(completedValuedNames() + flagOptionNames()),
+             commandNames().join(QLatin1Char(' ')), QString::fromLatin1(fileCommands));
 }
 
 QString zsh()
@@ -95,7 +103,7 @@ QString zsh()
     auto valued = [&specs](const QString &name, const QString &action) {
         specs << QStringLiteral("'--%1=[]:%1:%2'").arg(name, action);
     };
-    for (const QString &name : valuedOptionNames()) {
+    for (const QString &name : completedValuedNames()) {
         if (name == QLatin1String("serial"))
             valued(name, QStringLiteral("_files -g \"/dev/tty*(N) /dev/serial/by-id/*(N)\""));
         else if (name == QLatin1String("link"))
@@ -112,7 +120,8 @@ QString zsh()
             valued(name, QStringLiteral("(1 2)"));
         else if (name == QLatin1String("completion"))
             valued(name, QStringLiteral("(bash zsh)"));
-        else if (name == QLatin1String("output") || name == QLatin1String("names"))
+        else if (name == QLatin1String("output") || name == QLatin1String("names")
+                 || name == QLatin1String("journal"))
             valued(name, QStringLiteral("_files"));
         else
             valued(name, QStringLiteral(" "));

@@ -1,4 +1,5 @@
 #include "app/common/quitsignal.h"
+#include "clialarms.h"
 #include "clicompletion.h"
 #include "clioptions.h"
 #include "clioutput.h"
@@ -45,6 +46,12 @@ int main(int argc, char *argv[])
 
     QStringList arguments = QCoreApplication::arguments();
     arguments.removeFirst();
+    // alarms runs a plant connection and an alarm engine, not the runner's steps.
+    if (const qsizetype at = arguments.indexOf(QLatin1String("alarms"));
+        at >= 0 && !arguments.contains(QLatin1String("--help"))) {
+        arguments.removeAt(at);
+        return runAlarms(arguments);
+    }
     const CliParseResult parsed = parseCommandLine(arguments);
     if (!parsed.options) {
         QTextStream(stderr) << "fatek-cli: " << parsed.error << "\nTry 'fatek-cli --help'.\n";

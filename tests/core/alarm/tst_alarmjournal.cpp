@@ -5,8 +5,8 @@
 
 #include "core/alarm/alarmengine.h"
 #include "core/alarm/alarmjournal.h"
-#include "core/alarm/alarmmessages.h"
 #include "core/alarm/alarmjournalwriter.h"
+#include "core/alarm/alarmmessages.h"
 
 #include <QFile>
 #include <QProcess>
