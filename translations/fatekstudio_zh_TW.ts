@@ -2123,7 +2123,7 @@
         </message>
         <message>
             <source>A shelve needs &quot;until&quot; (ISO 8601 with its offset, ahead of now) or &quot;durationSec&quot; (1..%1), one of the two.</source>
-            <translation>擱置需要「until」（含時區偏移的 ISO 8601，晚於現在）或「durationSec」（1..%1），兩者擇一。</translation>
+            <translation>擱置需要 {&quot;until&quot;: 含時區偏移、晚於現在的日期時間} 或 {&quot;durationSec&quot;: 1..%1}，兩者擇一。</translation>
         </message>
         <message>
             <source>alarm %1 raised (%2 priority): %3 (value %4)</source>
@@ -2143,7 +2143,7 @@
         </message>
         <message>
             <source>alarm %1 %2 (id &quot;%3&quot;) refused: %4</source>
-            <translation>警報 %1 %2（id「%3」）被拒絕：%4</translation>
+            <translation>警報 %1 %2（命令編號「%3」）被拒絕：%4</translation>
         </message>
         <message>
             <source>alarm journal failed (alarms still run, not journaled): %1</source>
