@@ -66,11 +66,31 @@ AlarmSummaryWidget::AlarmSummaryWidget(AlarmCenter *center, QWidget *parent)
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setSectionResizeMode(AlarmSummaryModel::MessageColumn, QHeaderView::Stretch);
     const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    const int widths[] = {14, 6, 7, 7, 8, 0, 6, 6};
+    const int widths[] = {0, 6, 7, 7, 8, 0, 6, 6};
     for (int c = 0; c < AlarmSummaryModel::ColumnCount; ++c) {
+        // Never narrower than the header's own word, in either language.
+        const int word = fontMetrics().horizontalAdvance(
+                             m_model->headerData(c, Qt::Horizontal, Qt::DisplayRole).toString())
+                         + 2 * em;
         if (widths[c] > 0)
-            m_view->setColumnWidth(c, widths[c] * em);
+            m_view->setColumnWidth(c, std::max(widths[c] * em, word));
     }
+    // The state column fits its longest word (the sort arrow and padding beside it).
+    int state = 0;
+    for (AlarmState st :
+         {AlarmState::Normal, AlarmState::ActiveUnacked, AlarmState::ActiveAcked,
+          AlarmState::ReturnedUnacked, AlarmState::Shelved, AlarmState::OutOfService})
+        state = std::max(state, fontMetrics().horizontalAdvance(AlarmText::state(st)));
+    m_view->setColumnWidth(AlarmSummaryModel::StateColumn, state + 2 * em);
+    // Values and states as they are now: the engine's newest, once a second (coalesced rows).
+    m_refresh.setInterval(1000);
+    connect(&m_refresh, &QTimer::timeout, this, [this] {
+        if (!isVisible())
+            return;
+        for (const QString &connection : m_center->connectionNames())
+            resetConnection(connection);
+    });
+    m_refresh.start();
     m_message->setObjectName(QStringLiteral("alarmMessage"));
 
     auto *layout = new QVBoxLayout(this);

@@ -2,6 +2,7 @@
 
 #include "core/protocol/result.h"
 
+#include <QTimer>
 #include <QWidget>
 
 #include <functional>
@@ -75,6 +76,7 @@ private:
     QLineEdit *m_comment;
     QToolButton *m_shelve;
     QHBoxLayout *m_actionBar = nullptr;
+    QTimer m_refresh;
     MessageLine *m_message;
 };
 
