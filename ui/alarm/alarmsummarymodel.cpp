@@ -178,14 +178,26 @@ void AlarmSummaryModel::flush()
     if (m_pending.isEmpty())
         return;
     std::vector<int> changed;
+    std::vector<int> valueChanged;
     std::vector<int> removed;
     QList<AlarmStatus> added;
     for (const AlarmStatus &pending : std::as_const(m_pending)) {
         const int row = m_rowOf.value(keyOf(pending.connection, pending.alarmId), -1);
         const bool listed = Alarms::isListed(pending.state);
         if (row >= 0 && listed) {
-            m_rows[row] = pending;
-            changed.push_back(row);
+            AlarmStatus &shown = m_rows[row];
+            const bool same
+                = shown.state == pending.state && shown.sinceMs == pending.sinceMs
+                  && shown.chattering == pending.chattering
+                  && shown.shelvedUntilMs == pending.shelvedUntilMs
+                  && shown.message == pending.message && shown.definition == pending.definition
+                  && shown.lastUser == pending.lastUser && shown.lastComment == pending.lastComment;
+            if (same && shown.value == pending.value)
+                continue; // a refresh that changes nothing reports nothing
+            // Only the value: one column, so that the sort and the filters stay as they are
+            // (a new value moves no row: it is neither a sort key nor a filter's).
+            (same ? valueChanged : changed).push_back(row);
+            shown = pending;
         } else if (row >= 0) {
             removed.push_back(row);
         } else if (listed) {
@@ -195,6 +207,7 @@ void AlarmSummaryModel::flush()
     m_pending.clear();
     m_pendingIndex.clear();
     emitRuns(std::move(changed), 0, ColumnCount - 1, {});
+    emitRuns(std::move(valueChanged), ValueColumn, ValueColumn, {Qt::DisplayRole, SortRole});
     // From the bottom up, one step per run of consecutive rows: the rows above keep their place.
     std::sort(removed.begin(), removed.end());
     for (auto end = removed.size(); end > 0;) {
