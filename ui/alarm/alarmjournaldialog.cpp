@@ -24,18 +24,19 @@ namespace Fatek {
 
 namespace {
 
-enum Column {
-    TimeColumn,
-    ConnectionColumn,
-    AlarmColumn,
-    EventColumn,
-    StateColumn,
-    PriorityColumn,
-    MessageColumn,
-    ValueColumn,
-    UserColumn,
-    CommentColumn,
-    ColumnCount
+// The journal's columns (Journal... so that they never meet the summary's names in one unit).
+enum JournalColumn {
+    JournalTimeColumn,
+    JournalConnectionColumn,
+    JournalAlarmColumn,
+    JournalEventColumn,
+    JournalStateColumn,
+    JournalPriorityColumn,
+    JournalMessageColumn,
+    JournalValueColumn,
+    JournalUserColumn,
+    JournalCommentColumn,
+    JournalColumnCount
 };
 
 } // namespace
@@ -55,7 +56,7 @@ int AlarmEventsModel::rowCount(const QModelIndex &parent) const
 
 int AlarmEventsModel::columnCount(const QModelIndex &parent) const
 {
-    return parent.isValid() ? 0 : ColumnCount;
+    return parent.isValid() ? 0 : JournalColumnCount;
 }
 
 QVariant AlarmEventsModel::data(const QModelIndex &index, int role) const
@@ -64,23 +65,23 @@ QVariant AlarmEventsModel::data(const QModelIndex &index, int role) const
         return {};
     const AlarmEvent &e = m_events.at(index.row());
     switch (index.column()) {
-    case TimeColumn:
+    case JournalTimeColumn:
         // Local time as it was then, with its offset (a summer-time change stays readable).
         return QDateTime::fromMSecsSinceEpoch(e.timeMs, Qt::OffsetFromUTC, e.utcOffsetS)
             .toString(Qt::ISODate);
-    case ConnectionColumn: return e.connection;
-    case AlarmColumn: return e.alarmId;
-    case EventColumn:
+    case JournalConnectionColumn: return e.connection;
+    case JournalAlarmColumn: return e.alarmId;
+    case JournalEventColumn:
         return e.type == AlarmEventType::Shelved && e.shelvedUntilMs > 0
                    ? tr("%1 until %2")
                          .arg(AlarmText::event(e.type), AlarmText::time(e.shelvedUntilMs))
                    : AlarmText::event(e.type);
-    case StateColumn: return AlarmText::state(e.state);
-    case PriorityColumn: return AlarmText::priority(e.priority);
-    case MessageColumn: return e.message;
-    case ValueColumn: return e.value;
-    case UserColumn: return e.user;
-    case CommentColumn: return e.comment;
+    case JournalStateColumn: return AlarmText::state(e.state);
+    case JournalPriorityColumn: return AlarmText::priority(e.priority);
+    case JournalMessageColumn: return e.message;
+    case JournalValueColumn: return e.value;
+    case JournalUserColumn: return e.user;
+    case JournalCommentColumn: return e.comment;
     default: return {};
     }
 }
@@ -90,16 +91,16 @@ QVariant AlarmEventsModel::headerData(int section, Qt::Orientation orientation, 
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
         return {};
     switch (section) {
-    case TimeColumn: return tr("Time");
-    case ConnectionColumn: return tr("Connection");
-    case AlarmColumn: return tr("Alarm");
-    case EventColumn: return tr("Event");
-    case StateColumn: return tr("State after");
-    case PriorityColumn: return tr("Priority");
-    case MessageColumn: return tr("Message");
-    case ValueColumn: return tr("Value");
-    case UserColumn: return tr("User");
-    case CommentColumn: return tr("Comment");
+    case JournalTimeColumn: return tr("Time");
+    case JournalConnectionColumn: return tr("Connection");
+    case JournalAlarmColumn: return tr("Alarm");
+    case JournalEventColumn: return tr("Event");
+    case JournalStateColumn: return tr("State after");
+    case JournalPriorityColumn: return tr("Priority");
+    case JournalMessageColumn: return tr("Message");
+    case JournalValueColumn: return tr("Value");
+    case JournalUserColumn: return tr("User");
+    case JournalCommentColumn: return tr("Comment");
     default: return {};
     }
 }
