@@ -4,6 +4,7 @@
 #include "alarmjournalworker.h"
 
 #include "core/qtbridge/qtmessage.h"
+#include "core/session/crossthreadcall.h"
 
 namespace Fatek {
 
@@ -48,8 +49,7 @@ void AlarmJournalWorker::report(const Message &reason)
         return;
     m_lastReport = reason;
     AlarmJournalWriter *writer = m_writer;
-    QMetaObject::invokeMethod(
-        writer, [writer, reason] { Q_EMIT writer->failed(reason); }, Qt::QueuedConnection);
+    CrossThreadCall::invoke(writer, [writer, reason] { Q_EMIT writer->failed(reason); });
 }
 
 void AlarmJournalWorker::record(const AlarmEvent &event, const AlarmRecord &record)
@@ -102,9 +102,8 @@ void AlarmJournalWorker::load(quint64 ticket, const QString &connection)
     if (!records)
         report(records.error().message);
     AlarmJournalWriter *writer = m_writer;
-    QMetaObject::invokeMethod(
-        writer, [writer, ticket, records] { writer->statesLoaded(ticket, records); },
-        Qt::QueuedConnection);
+    CrossThreadCall::invoke(writer,
+                            [writer, ticket, records] { writer->statesLoaded(ticket, records); });
 }
 
 void AlarmJournalWorker::query(quint64 ticket, qint64 fromMs, qint64 toMs,
@@ -116,9 +115,7 @@ void AlarmJournalWorker::query(quint64 ticket, qint64 fromMs, qint64 toMs,
               ? m_journal->events(fromMs, toMs, connection)
               : Result<QList<AlarmEvent>>(makeError(ErrorKind::InvalidRequest, m_lastReport));
     AlarmJournalWriter *writer = m_writer;
-    QMetaObject::invokeMethod(
-        writer, [writer, ticket, events] { writer->answered(ticket, events); },
-        Qt::QueuedConnection);
+    CrossThreadCall::invoke(writer, [writer, ticket, events] { writer->answered(ticket, events); });
 }
 
 void AlarmJournalWorker::finish()
@@ -141,8 +138,7 @@ AlarmJournalWriter::AlarmJournalWriter(const QString &path, QObject *parent)
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     m_thread.start();
     AlarmJournalWorker *worker = m_worker;
-    QMetaObject::invokeMethod(
-        worker, [worker] { worker->ensureOpen(); }, Qt::QueuedConnection);
+    CrossThreadCall::invoke(worker, [worker] { worker->ensureOpen(); });
 }
 
 AlarmJournalWriter::~AlarmJournalWriter()
@@ -150,11 +146,17 @@ AlarmJournalWriter::~AlarmJournalWriter()
     for (const QMetaObject::Connection &c : std::as_const(m_connections))
         disconnect(c);
     // Queued calls run in order: every event posted before this one is written by finish().
+    // Every call posted before this one runs first: finish() writes every event recorded.
     AlarmJournalWorker *worker = m_worker;
-    QMetaObject::invokeMethod(
-        worker, [worker] { worker->finish(); }, Qt::BlockingQueuedConnection);
-    m_thread.quit();
+    QThread *thread = &m_thread;
+    const void *channel = this;
+    CrossThreadCall::invoke(worker, [worker, thread, channel] {
+        worker->finish();
+        CrossThreadCall::threadEnds(channel);
+        thread->quit();
+    });
     m_thread.wait();
+    CrossThreadCall::threadEnded(channel);
 }
 
 void AlarmJournalWriter::attach(AlarmEngine *engine)
@@ -164,13 +166,15 @@ void AlarmJournalWriter::attach(AlarmEngine *engine)
     m_loading.insert(ticket, engine);
     AlarmJournalWorker *worker = m_worker;
     const QString connection = engine->connection();
-    QMetaObject::invokeMethod(
-        worker, [worker, ticket, connection] { worker->load(ticket, connection); },
-        Qt::QueuedConnection);
-    // The worker as the context: each event is copied into a queued call to its thread.
-    m_connections.append(connect(engine, &AlarmEngine::alarmEvent, worker,
+    CrossThreadCall::invoke(worker,
+                            [worker, ticket, connection] { worker->load(ticket, connection); });
+    // Each event is copied into a call to the worker's thread (marked for ThreadSanitizer: a
+    // queued signal's copy is ordered by Qt's own mutex, which it cannot see).
+    m_connections.append(connect(engine, &AlarmEngine::alarmEvent, this,
                                  [worker](const AlarmEvent &event, const AlarmRecord &record) {
-                                     worker->record(event, record);
+                                     CrossThreadCall::invoke(worker, [worker, event, record] {
+                                         worker->record(event, record);
+                                     });
                                  }));
 }
 
@@ -189,12 +193,9 @@ void AlarmJournalWriter::query(qint64 fromMs, qint64 toMs, const QString &connec
     const quint64 ticket = m_nextTicket++;
     m_queries.insert(ticket, Query{context, std::move(callback)});
     AlarmJournalWorker *worker = m_worker;
-    QMetaObject::invokeMethod(
-        worker,
-        [worker, ticket, fromMs, toMs, connection] {
-            worker->query(ticket, fromMs, toMs, connection);
-        },
-        Qt::QueuedConnection);
+    CrossThreadCall::invoke(worker, [worker, ticket, fromMs, toMs, connection] {
+        worker->query(ticket, fromMs, toMs, connection);
+    });
 }
 
 void AlarmJournalWriter::answered(quint64 ticket, const Result<QList<AlarmEvent>> &events)
