@@ -235,7 +235,8 @@ Status AlarmEngine::refused(const QString &alarmId, AlarmStateMachine::Refusal r
     return Ok{};
 }
 
-Status AlarmEngine::acknowledge(const QString &alarmId, const QString &user, const QString &comment)
+Status AlarmEngine::operate(const QString &alarmId, const QString &user, const QString &comment,
+                            const Action &action)
 {
     const int index = indexOf(alarmId);
     if (index < 0)
@@ -244,44 +245,36 @@ Status AlarmEngine::acknowledge(const QString &alarmId, const QString &user, con
     Alarm &alarm = m_alarms[static_cast<std::size_t>(index)];
     const qint64 now = m_clock();
     m_events.clear();
-    const auto refusal = alarm.machine.acknowledge(now, m_events);
+    const auto refusal = action(alarm.machine, now, m_events);
     if (refusal != AlarmStateMachine::Refusal::None)
         return refused(alarmId, refusal);
     emitEvents(alarm, m_events, now, user.isEmpty() ? Alarms::currentUser() : user, comment);
     return Ok{};
+}
+
+Status AlarmEngine::acknowledge(const QString &alarmId, const QString &user, const QString &comment)
+{
+    return operate(alarmId, user, comment,
+                   [](AlarmStateMachine &m, qint64 now, AlarmStateMachine::Events &events) {
+                       return m.acknowledge(now, events);
+                   });
 }
 
 Status AlarmEngine::shelve(const QString &alarmId, qint64 untilMs, const QString &user,
                            const QString &comment)
 {
-    const int index = indexOf(alarmId);
-    if (index < 0)
-        return makeError(ErrorKind::InvalidRequest,
-                         msg<MsgId::AlarmUnknown>(alarmId.toStdString()));
-    Alarm &alarm = m_alarms[static_cast<std::size_t>(index)];
-    const qint64 now = m_clock();
-    m_events.clear();
-    const auto refusal = alarm.machine.shelve(untilMs, now, m_events);
-    if (refusal != AlarmStateMachine::Refusal::None)
-        return refused(alarmId, refusal);
-    emitEvents(alarm, m_events, now, user.isEmpty() ? Alarms::currentUser() : user, comment);
-    return Ok{};
+    return operate(alarmId, user, comment,
+                   [untilMs](AlarmStateMachine &m, qint64 now, AlarmStateMachine::Events &events) {
+                       return m.shelve(untilMs, now, events);
+                   });
 }
 
 Status AlarmEngine::unshelve(const QString &alarmId, const QString &user)
 {
-    const int index = indexOf(alarmId);
-    if (index < 0)
-        return makeError(ErrorKind::InvalidRequest,
-                         msg<MsgId::AlarmUnknown>(alarmId.toStdString()));
-    Alarm &alarm = m_alarms[static_cast<std::size_t>(index)];
-    const qint64 now = m_clock();
-    m_events.clear();
-    const auto refusal = alarm.machine.unshelve(now, m_events);
-    if (refusal != AlarmStateMachine::Refusal::None)
-        return refused(alarmId, refusal);
-    emitEvents(alarm, m_events, now, user.isEmpty() ? Alarms::currentUser() : user, {});
-    return Ok{};
+    return operate(alarmId, user, {},
+                   [](AlarmStateMachine &m, qint64 now, AlarmStateMachine::Events &events) {
+                       return m.unshelve(now, events);
+                   });
 }
 
 void AlarmEngine::emitEvents(Alarm &alarm, const AlarmStateMachine::Events &events, qint64 nowMs,

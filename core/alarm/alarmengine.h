@@ -104,6 +104,11 @@ private:
     // Evaluates the alarms of one item with its last value and quality.
     void evaluate(Item &item, qint64 nowMs);
     Status refused(const QString &alarmId, AlarmStateMachine::Refusal refusal) const;
+    // An operator action on one alarm: found, applied at now, its events reported with who.
+    using Action = std::function<AlarmStateMachine::Refusal(AlarmStateMachine &, qint64,
+                                                            AlarmStateMachine::Events &)>;
+    Status operate(const QString &alarmId, const QString &user, const QString &comment,
+                   const Action &action);
     void subscribe();
 
     QString m_connection;
