@@ -31,8 +31,9 @@ packages=(
     dpkg-dev file desktop-file-utils groff-base man-db gzip
     # the watch-list MIME type: update-mime-database, xmllint, gio (content sniffing)
     shared-mime-info libxml2-utils libglib2.0-bin
-    # the MQTT gateway: the client library, and the broker its integration tests start
-    libmosquitto-dev mosquitto
+    # the MQTT gateway: the client library, the broker its integration tests start, and
+    # mosquitto_pub, the independent client that acknowledges alarms in tst_gatewayalarms
+    libmosquitto-dev mosquitto mosquitto-clients
     # certificates for the TLS tests of the MQTT client (a CA and a broker certificate per test)
     openssl
     # the alarm journal (SQLite's C library), and the sqlite3 program its tests lock a file with
