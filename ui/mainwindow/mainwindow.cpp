@@ -12,8 +12,10 @@
 #include "ui/connection/connectiondialog.h"
 #include "ui/connection/connectionmanager.h"
 #include "ui/connection/connectionspanel.h"
+#include "ui/history/historyui.h"
 #include "ui/tools/forcingpanel.h"
 #include "ui/trend/tablelogger.h"
+#include "ui/trend/trendview.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QAction>
@@ -182,6 +184,9 @@ MainWindow::~MainWindow()
     m_tools->releaseTargets();
     delete m_alarms; // its engines leave the plant connections before the manager goes
     m_alarms = nullptr;
+    trendView()->setHistoryCenter(nullptr);
+    delete m_history; // so do its recorders; then its store writes what is pending
+    m_history = nullptr;
     while (m_tabs->count() > 0) {
         QWidget *w = m_tabs->widget(0);
         m_tabs->removeTab(0);
@@ -261,6 +266,9 @@ void MainWindow::createActions()
     connect(this, &MainWindow::demoReady, m_trend, &TrendLogging::showDemo);
     m_alarms = new AlarmsUi(this, m_connectionsDock, m_manager, m_toolsMenu, m_viewMenu);
     connect(m_alarms, &AlarmsUi::statusMessage, this, &MainWindow::showStatus);
+    m_history = new HistoryUi(this, m_manager);
+    connect(m_history, &HistoryUi::statusMessage, this, &MainWindow::showStatus);
+    trendView()->setHistoryCenter(m_history->center());
     m_operatorMode = new OperatorMode(m_readOnly, this);
     m_toolsMenu->addSeparator();
     m_toolsMenu->addAction(m_operatorMode->toggleAction());
@@ -387,6 +395,7 @@ WatchTableWidget *MainWindow::addWatchTable(const QString &name)
         table->setConfirmHandler(m_confirm);
     connect(table, &WatchTableWidget::statusMessage, this, &MainWindow::showStatus);
     m_alarms->addTable(table);
+    m_history->addTable(table);
     connect(table, &WatchTableWidget::edited, m_document, &WatchListDocument::updateModified);
     connect(table, &WatchTableWidget::addToTrendRequested, this,
             [this, table](const QList<int> &rows) { m_trend->addToTrend(table, rows); });

@@ -18,6 +18,7 @@ class QTabWidget;
 namespace Fatek {
 
 class AlarmsUi;
+class HistoryUi;
 class Connection;
 class ConnectionManager;
 class ConnectionsPanel;
@@ -108,6 +109,8 @@ public:
     void stopLogging() { m_trend->stopLogging(); }
     // Alarms: the summary dock, the status bar's count, the journal, the tables' definitions.
     AlarmsUi *alarms() const { return m_alarms; }
+    // History: what the tables record, the store the trend reads.
+    HistoryUi *history() const { return m_history; }
 
 private:
     // Every session, present and future, follows the mode (enforced there); the tools re-read it.
@@ -131,6 +134,7 @@ private:
     ToolDocks *m_tools = nullptr;
     TrendLogging *m_trend = nullptr;
     AlarmsUi *m_alarms = nullptr;
+    HistoryUi *m_history = nullptr;
     int m_tableCounter = 0;
     class OperatorMode *m_operatorMode = nullptr;
 };

@@ -64,6 +64,18 @@ void TrendChartView::leaveEvent(QEvent *event)
 
 void TrendChartView::wheelEvent(QWheelEvent *event)
 {
+    // Shift+wheel scrolls the time axis, a notch an eighth of it (some systems turn a wheel with
+    // Shift held into a horizontal one).
+    if (event->modifiers() & Qt::ShiftModifier) {
+        const int notches = event->angleDelta().y() != 0 ? event->angleDelta().y()
+                                                         : event->angleDelta().x();
+        if (notches == 0)
+            return QChartView::wheelEvent(event);
+        Q_EMIT userZoomed();
+        chart()->scroll(-notches / 120.0 * chart()->plotArea().width() / 8, 0);
+        event->accept();
+        return;
+    }
     const int delta = event->angleDelta().y();
     if (delta == 0)
         return QChartView::wheelEvent(event);

@@ -18,7 +18,8 @@ class QGraphicsTextItem;
 namespace Fatek {
 
 // The trend's chart on screen: rubber band zoom from Qt Charts plus wheel zoom on the time axis
-// around the mouse (either one stops the window from following the present: userZoomed()), and
+// around the mouse and Shift+wheel scrolling it (each stops the window from following the
+// present: userZoomed()), and
 // the cursor: moving the mouse over the plot shows a vertical line and a read-out of the time and
 // each line's value there.
 class TrendChartView : public QChartView

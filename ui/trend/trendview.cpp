@@ -2,13 +2,13 @@
 
 #include "core/watch/valueformat.h"
 #include "trendchartview.h"
+#include "trendhistory.h"
+#include "trendnavigation.h"
 #include "trendvalueaxes.h"
 #include "ui/common/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
-#include <QComboBox>
 #include <QDateTime>
-#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -45,7 +45,7 @@ qint64 nowMs()
 
 QList<qint64> TrendView::windowChoicesMs()
 {
-    return {10000, 60000, 600000, 3600000};
+    return TrendNavigation::windowChoicesMs();
 }
 
 TrendView::TrendView(QWidget *parent)
@@ -61,17 +61,8 @@ TrendView::TrendView(QWidget *parent)
     m_timeAxis->setTitleText(tr("Time"));
     m_timeAxis->setTickCount(7);
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
-    // As many time labels as fit whole: QtCharts cuts labels that do not fit their tick's width
-    // to "…" (a narrow dock at 1366x768 showed "12:0…").
-    connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF &area) {
-        const int label
-            = QFontMetrics(m_timeAxis->labelsFont()).horizontalAdvance(QStringLiteral("00:00:00"));
-        const int fit = static_cast<int>(area.width()) / (label + label / 2) + 1;
-        const int ticks = std::clamp(fit, 2, 7);
-        if (ticks != m_timeAxis->tickCount())
-            m_timeAxis->setTickCount(ticks);
-        m_valueAxes.setPlotHeight(area.height());
-    });
+    connect(m_chart, &QChart::plotAreaChanged, this,
+            [this](const QRectF &area) { m_valueAxes.setPlotHeight(area.height()); });
     connect(m_chart, &QGraphicsWidget::geometryChanged, this,
             [this] { m_valueAxes.setChartWidth(m_chart->size().width()); });
 
@@ -85,8 +76,10 @@ TrendView::TrendView(QWidget *parent)
         },
         this);
     m_chartView->setObjectName(QStringLiteral("trendChart"));
-    m_chartView->setToolTip(
-        tr("Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis"));
+    m_chartView->setToolTip(tr("Drag a rectangle to zoom in, right-click to zoom out, wheel to "
+                               "zoom the time axis, Shift+wheel to scroll it"));
+    m_navigation = new TrendNavigation(m_chart, m_timeAxis, this);
+    m_history = new TrendHistory(m_chart, m_timeAxis, this);
 
     m_pauseButton = new QToolButton(this);
     m_pauseButton->setObjectName(QStringLiteral("trendPause"));
@@ -96,14 +89,11 @@ TrendView::TrendView(QWidget *parent)
     m_pauseButton->setCheckable(true);
     m_pauseButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
 
-    m_windowBox = new QComboBox(this);
-    m_windowBox->setObjectName(QStringLiteral("trendWindow"));
-    m_windowBox->setToolTip(tr("How much time the trend shows"));
-    m_windowBox->addItem(tr("10 s"), qint64(10000));
-    m_windowBox->addItem(tr("1 min"), qint64(60000));
-    m_windowBox->addItem(tr("10 min"), qint64(600000));
-    m_windowBox->addItem(tr("1 h"), qint64(3600000));
-    m_windowBox->setCurrentIndex(1);
+    m_exportButton = new QToolButton(this);
+    m_exportButton->setObjectName(QStringLiteral("trendExport"));
+    m_exportButton->setText(tr("Export Range…"));
+    m_exportButton->setToolTip(tr("Write the recorded values of the items in the time range shown "
+                                  "to a CSV file"));
 
     m_resetZoomButton = new QToolButton(this);
     m_resetZoomButton->setObjectName(QStringLiteral("trendResetZoom"));
@@ -143,10 +133,11 @@ TrendView::TrendView(QWidget *parent)
     auto *bar = new QHBoxLayout;
     bar->addWidget(m_pauseButton);
     bar->addWidget(new QLabel(tr("Window:"), this));
-    bar->addWidget(m_windowBox);
+    bar->addWidget(m_navigation->windowBox());
     bar->addWidget(m_resetZoomButton);
     bar->addWidget(m_axesButton);
     bar->addStretch(1);
+    bar->addWidget(m_exportButton);
     bar->addWidget(m_removeButton);
 
     auto *side = new QVBoxLayout;
@@ -154,15 +145,25 @@ TrendView::TrendView(QWidget *parent)
     side->addWidget(m_emptyHint);
     auto *body = new QHBoxLayout;
     body->addLayout(side);
-    body->addWidget(m_chartView, 1);
+    auto *chartColumn = new QVBoxLayout;
+    chartColumn->setSpacing(0);
+    chartColumn->addWidget(m_chartView, 1);
+    chartColumn->addWidget(m_navigation->scrollBar());
+    body->addLayout(chartColumn, 1);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(bar);
     layout->addLayout(body, 1);
 
     connect(m_pauseButton, &QToolButton::toggled, this, &TrendView::setPaused);
-    connect(m_windowBox, &QComboBox::currentIndexChanged, this,
-            [this](int index) { setWindowMs(m_windowBox->itemData(index).toLongLong()); });
+    connect(m_navigation, &TrendNavigation::windowChosen, this, &TrendView::setWindowMs);
+    connect(m_navigation, &TrendNavigation::rangeChosen, this, &TrendView::showRange);
+    connect(m_history, &TrendHistory::pointsArrived, this, &TrendView::refresh);
+    connect(m_history, &TrendHistory::statusMessage, this, &TrendView::statusMessage);
+    connect(m_exportButton, &QToolButton::clicked, this, [this] {
+        if (const QString path = TrendHistory::askExportPath(this); !path.isEmpty())
+            exportRange(path);
+    });
     connect(m_resetZoomButton, &QToolButton::clicked, this, &TrendView::resetZoom);
     connect(m_axesButton, &QToolButton::toggled, this, &TrendView::setSeparateAxes);
     auto removeSelected = [this] {
@@ -285,6 +286,7 @@ void TrendView::removeItem(int index)
     if (index < 0 || index >= itemCount())
         return;
     auto it = m_items.begin() + index;
+    m_history->remove(it->get());
     (*it)->removeFrom(m_chart);
     QPointer<WatchTableModel> model = (*it)->model;
     m_items.erase(it);
@@ -404,11 +406,7 @@ void TrendView::setPaused(bool paused)
 void TrendView::setWindowMs(qint64 ms)
 {
     m_windowMs = std::max<qint64>(ms, 1000);
-    const int index = m_windowBox->findData(m_windowMs);
-    if (index >= 0 && index != m_windowBox->currentIndex()) {
-        const QSignalBlocker block(m_windowBox);
-        m_windowBox->setCurrentIndex(index);
-    }
+    m_navigation->showWindow(m_windowMs);
     m_zoomed = false;
     updateZoomUi();
     refresh();
@@ -427,8 +425,18 @@ void TrendView::zoomBy(double factor)
     refresh();
 }
 
+void TrendView::showRange(qint64 fromMs, qint64 toMs)
+{
+    if (toMs <= fromMs)
+        return;
+    userZoomed();
+    setTimeRange(fromMs, toMs);
+    refresh();
+}
+
 void TrendView::resetZoom()
 {
+    m_navigation->showWindow(m_windowMs);
     m_zoomed = false;
     updateZoomUi();
     refresh();
@@ -547,16 +555,31 @@ void TrendView::refresh()
     }
     // About two points per pixel column: more cannot be seen.
     const qsizetype maxPoints = std::max<qsizetype>(400, 2 * m_chartView->width());
+    const int pixels = std::max(100, static_cast<int>(m_chart->plotArea().width()));
     std::map<QValueAxis *, TrendValueAxes::Span> spans;
     for (auto &item : m_items) {
         TrendValueAxes::Span &span = spans[item->axis];
-        item->draw(m_chart, m_timeAxis, displayName(item->spec), fromMs, toMs, maxPoints, span);
+        const QString name = displayName(item->spec);
+        item->draw(m_chart, m_timeAxis, name, fromMs, toMs, maxPoints, span);
+        m_history->draw(*item, name, fromMs, toMs, pixels, span);
     }
     m_valueAxes.fit(std::move(spans), m_zoomed);
     keepAxisLabelsWhole();
     if (!m_zoomed)
         setTimeRange(fromMs, toMs);
+    m_navigation->showRange(fromMs, toMs, nowMs());
     m_chartView->updateReadout(); // the time under the mouse moved with the axis
+}
+
+void TrendView::exportRange(const QString &path)
+{
+    QStringList keys;
+    for (const auto &item : m_items) {
+        if (const QString key = m_history->seriesKey(*item); !key.isEmpty() && !keys.contains(key))
+            keys.append(key);
+    }
+    m_history->exportRange(keys, m_timeAxis->min().toMSecsSinceEpoch(),
+                           m_timeAxis->max().toMSecsSinceEpoch(), path);
 }
 
 } // namespace Fatek

@@ -1,7 +1,9 @@
 #pragma once
 
 #include "core/watch/watchlist.h"
+#include "trendhistory.h"
 #include "trendline.h"
+#include "trendnavigation.h"
 #include "trendvalueaxes.h"
 
 #include <QTimer>
@@ -17,11 +19,13 @@ class QDateTimeAxis;
 class QLabel;
 class QLineSeries;
 class QListWidget;
+class QScrollBar;
 class QToolButton;
 class QValueAxis;
 
 namespace Fatek {
 
+class HistoryCenter;
 class TrendChartView;
 class WatchTableModel;
 
@@ -33,8 +37,10 @@ class WatchTableModel;
 // item's value there.
 // Samples come from the watch table models as their values arrive; a value that is not fresh
 // (stale, refused, polling paused, trend paused) ends the line, so a gap shows where nothing
-// fresh was read. Pause freezes the picture; the time window (10 s .. 1 h) follows the present
-// until the user zooms (rubber band, mouse wheel), Reset Zoom goes back to following.
+// fresh was read. Pause freezes the picture; the time window (10 s .. 7 days, or a custom range)
+// follows the present until the user zooms (rubber band, mouse wheel) or scrolls back (the scroll
+// bar, Shift+wheel), Reset Zoom goes back to following. Before what a line's live buffer holds,
+// its recorded past is drawn from the history (TrendHistory), and a range can be exported to CSV.
 class TrendView : public QWidget
 {
     Q_OBJECT
@@ -44,6 +50,8 @@ class TrendView : public QWidget
 public:
     // The time windows the window box offers.
     static QList<qint64> windowChoicesMs();
+    // Looks at [fromMs, toMs] (no longer following the present until resetZoom()).
+    void showRange(qint64 fromMs, qint64 toMs);
 
     explicit TrendView(QWidget *parent = nullptr);
     ~TrendView() override;
@@ -96,6 +104,24 @@ public:
     // Redraws now (the view also redraws four times a second while not paused).
     void refresh();
 
+    // The recorded past (issue 51): read from `center`'s store (nullptr: live buffers only).
+    void setHistoryCenter(HistoryCenter *center)
+    {
+        m_history->setCenter(center);
+        refresh();
+    }
+    TrendHistory *history() const { return m_history; }
+    // The recorded pieces drawn for an item (one per stretch without a gap).
+    QList<QLineSeries *> historySeries(int index) const
+    {
+        return m_history->series(m_items.at(static_cast<std::size_t>(index)).get());
+    }
+    QScrollBar *scrollBar() const { return m_navigation->scrollBar(); }
+    QComboBox *windowBox() const { return m_navigation->windowBox(); }
+    // The recorded samples of every item in the visible range to `path` (CSV, not blocking:
+    // TrendHistory::exportFinished).
+    void exportRange(const QString &path);
+
 Q_SIGNALS:
     void statusMessage(const QString &text);
 
@@ -125,7 +151,9 @@ private:
     QToolButton *m_pauseButton;
     QToolButton *m_resetZoomButton;
     QToolButton *m_removeButton;
-    QComboBox *m_windowBox;
+    QToolButton *m_exportButton;
+    TrendNavigation *m_navigation;
+    TrendHistory *m_history;
     QLabel *m_emptyHint;
     QTimer m_refreshTimer;
     qint64 m_windowMs = 60000;

@@ -256,4 +256,31 @@ Status WatchTableEdits::setAlarms(int row, const QList<AlarmDefinition> &alarms)
     return Ok{};
 }
 
+Status WatchTableEdits::setHistory(const QList<int> &rows,
+                                   const std::optional<HistorySetting> &setting)
+{
+    if (setting
+        && (setting->heartbeatS < HistorySetting::MinHeartbeatS
+            || setting->heartbeatS > HistorySetting::MaxHeartbeatS || !(setting->deadband >= 0)))
+        return makeError(ErrorKind::InvalidRequest,
+                         tr("The heartbeat must be %1 s to %2 s and the deadband 0 or more.")
+                             .arg(HistorySetting::MinHeartbeatS)
+                             .arg(HistorySetting::MaxHeartbeatS)
+                             .toStdString());
+    auto *step = new WatchRowsCommand(m_model, WatchRowsCommand::Kind::Edit,
+                                      setting ? tr("Record in History") : tr("Stop Recording"));
+    for (int r : validRows(rows, m_model->rowCount())) {
+        const WatchItemSpec before = m_model->item(r);
+        WatchItemSpec spec = before;
+        spec.history = setting;
+        if (spec != before)
+            step->edits.append({r, before, spec});
+    }
+    if (step->edits.isEmpty())
+        delete step;
+    else
+        m_undo.push(step);
+    return Ok{};
+}
+
 } // namespace Fatek

@@ -7,6 +7,8 @@
 #include <QList>
 #include <QUndoStack>
 
+#include <optional>
+
 namespace Fatek {
 
 class WatchTableModel;
@@ -33,6 +35,7 @@ public:
     Status setFormat(int row, DisplayFormat format, bool swapWords);
     Status setFormats(const QList<int> &rows, DisplayFormat format);
     Status setAlarms(int row, const QList<AlarmDefinition> &alarms);
+    Status setHistory(const QList<int> &rows, const std::optional<HistorySetting> &setting);
 
 private:
     WatchTableModel *m_model;

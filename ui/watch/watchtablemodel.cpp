@@ -52,6 +52,7 @@ WatchTableModel::WatchTableModel(QObject *parent)
     , m_errorIcon(QStringLiteral(":/icons/error.svg"))
     , m_forcedIcon(QStringLiteral(":/icons/forced.svg"))
     , m_alarmIcon(QStringLiteral(":/icons/alarm.svg"))
+    , m_historyIcon(QStringLiteral(":/icons/history.svg"))
 {
     connect(&m_valueState, &WatchValueState::cellsChanged, this,
             &WatchTableModel::emitCellsChanged);
@@ -370,9 +371,13 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             if (index.column() == ValueColumn)
                 lines << (discrete ? tr("Click the box to toggle")
                                    : tr("Double-click or F2 to write"));
-        } else if (index.column() == NameColumn && spec.name.isEmpty()
-                   && !state.peerName.isEmpty()) {
-            lines << tr("The gateway's name for this item; type a name to use your own.");
+        } else if (index.column() == NameColumn) {
+            if (spec.name.isEmpty() && !state.peerName.isEmpty())
+                lines << tr("The gateway's name for this item; type a name to use your own.");
+            if (spec.history)
+                lines << tr("Recorded in the history (deadband %1, heartbeat %2 s)")
+                             .arg(spec.history->deadband)
+                             .arg(spec.history->heartbeatS);
         } else if (index.column() == AddressColumn) {
             const int count = row.values.elementCount();
             lines << (count > 1 ? tr("%1 .. %2 (%3 elements)")
@@ -394,6 +399,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
             return m_forcedIcon;
         if (index.column() == AddressColumn && !spec.alarms.isEmpty())
             return m_alarmIcon;
+        if (index.column() == NameColumn && spec.history)
+            return m_historyIcon;
         if (index.column() == QualityColumn) {
             if (q == ValueQuality::Error
                 || (q == ValueQuality::Stale && m_valueState.isSilent(spec.station)))

@@ -104,6 +104,12 @@ public:
     {
         return m_edits.setAlarms(row, alarms);
     }
+    // How the rows are recorded in the history (issue 51; nothing: not recorded), one step;
+    // refused when the setting is out of range.
+    Status setHistory(const QList<int> &rows, const std::optional<HistorySetting> &setting)
+    {
+        return m_edits.setHistory(rows, setting);
+    }
     void setItems(const QList<WatchItemSpec> &items);
     // The window's names (the ladder project's, see SymbolNames), not owned; nullptr: none.
     // Rows added from now on get the names their addresses have there when theirs are empty,
@@ -219,7 +225,8 @@ private:
     QIcon m_staleIcon;
     QIcon m_errorIcon;
     QIcon m_forcedIcon;
-    QIcon m_alarmIcon; // beside the address of a row with alarms
+    QIcon m_alarmIcon;   // beside the address of a row with alarms
+    QIcon m_historyIcon; // beside the name of a row recorded in the history
     QPointer<const SymbolNames> m_symbols;
 };
 

@@ -1,0 +1,471 @@
+// History in the studio (issue 51), as a person meets it at a laptop's 1366x768: a store pre-filled
+// with 26 hours of 1 s values of the demo's sine row (with ten minutes of bad quality an hour and a
+// half ago) is looked back at in the trend, on the in-process demo simulator. The row is marked
+// "Record in History" through its context menu and added to the trend; "8 h" shows the recorded
+// values joined to the live line, one click on the scroll bar's arrow goes back an hour; the drawn
+// points are the stored ones at their times, the bad stretch is a gap. What the studio records
+// itself reaches the store (read through a second handle), a range is exported to CSV through the
+// file dialog and read back, and "Custom…" shows a chosen range. FATEK_HISTORY_SCREENSHOT names a
+// file for the screenshot of a day's trend (docs/images/history-trend.png).
+#include "core/history/historystore.h"
+#include "core/history/historywriter.h"
+#include "testutil.h"
+#include "ui/history/historycenter.h"
+#include "ui/history/historyui.h"
+#include "ui/mainwindow/mainwindow.h"
+#include "ui/trend/trendhistory.h"
+#include "ui/trend/trendview.h"
+#include "ui/watch/watchtablemodel.h"
+#include "uitestutil.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QContextMenuEvent>
+#include <QDateTimeEdit>
+#include <QDialogButtonBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QMenu>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QScreen>
+#include <QScrollBar>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QToolButton>
+#include <QTranslator>
+#include <QtCharts/QDateTimeAxis>
+
+#include <cmath>
+#include <map>
+
+using namespace Fatek;
+
+namespace {
+
+constexpr int longWait = 20000;
+constexpr int keyDelayMs = 120;
+constexpr int mouseDelayMs = 300;
+const QSize laptop(1366, 768);
+constexpr qint64 hourMs = 3600 * 1000;
+const QString seriesKey = QStringLiteral("Demo PLC/1-R1");
+
+// The pre-filled store: 1 s values from 26 h ago to a few seconds ago, a sine-like curve (a
+// 30 min wave with a faster ripple), bad quality from 90 to 80 minutes ago.
+struct Prefill
+{
+    qint64 fromMs = 0;
+    qint64 toMs = 0;
+    qint64 gapFromMs = 0;
+    qint64 gapToMs = 0;
+    std::map<qint64, double> good; // time -> value
+    std::vector<HistorySample> samples;
+};
+
+double curve(qint64 timeMs)
+{
+    const double t = double(timeMs) / 1000.0;
+    return std::round(800 * std::sin(2 * M_PI * t / 1800) + 150 * std::sin(2 * M_PI * t / 97));
+}
+
+QString prefill(const QString &location, Prefill *out)
+{
+    const qint64 now = QDateTime::currentMSecsSinceEpoch() / 1000 * 1000;
+    out->fromMs = now - 26 * hourMs;
+    out->toMs = now - 5000;
+    out->gapFromMs = now - 90 * 60 * 1000;
+    out->gapToMs = now - 80 * 60 * 1000;
+    auto store = HistoryStore::open(location, HistoryStore::Mode::ReadWrite);
+    if (!store)
+        return QString::fromStdString(store.error().message.args.empty()
+                                          ? std::string("cannot open")
+                                          : store.error().message.args.front().text);
+    HistorySeries series;
+    series.source = QStringLiteral("Demo PLC");
+    series.item = QStringLiteral("1-R1");
+    series.label = QStringLiteral("Sine");
+    series.format = QStringLiteral("signed");
+    const auto id = (*store)->seriesId(series);
+    if (!id)
+        return QStringLiteral("no series id");
+    std::vector<HistoryRecord> records;
+    for (qint64 t = out->fromMs; t <= out->toMs; t += 1000) {
+        HistorySample s;
+        s.timeMs = t;
+        if (t >= out->gapFromMs && t < out->gapToMs) {
+            if (t != out->gapFromMs)
+                continue; // one stale sample starts the gap, nothing until it ends
+            s.quality = HistoryQuality::Stale;
+        } else {
+            s.value = curve(t);
+            s.raw = static_cast<std::uint16_t>(static_cast<qint16>(s.value));
+            out->good[t] = s.value;
+        }
+        out->samples.push_back(s);
+        records.push_back({*id, s});
+    }
+    if (const Status s = (*store)->append(records); !s)
+        return QStringLiteral("append failed");
+    return {};
+}
+
+QString location()
+{
+    return qEnvironmentVariable("FATEK_HISTORY");
+}
+
+void clickCell(QTableView *view, const QModelIndex &index)
+{
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(index).center(),
+                      mouseDelayMs);
+}
+
+// Right-clicks the cell and clicks the entry of its context menu whose object name or text is
+// `entry`. Returns whether it was there and enabled; `checked` what its check mark showed.
+bool chooseFromContextMenu(QTableView *view, const QModelIndex &index, const QString &entry,
+                           bool *checked = nullptr)
+{
+    clickCell(view, index);
+    bool chosen = false;
+    QTimer::singleShot(mouseDelayMs, view, [&] {
+        auto *menu = qobject_cast<QMenu *>(QApplication::activePopupWidget());
+        if (!menu)
+            return;
+        for (QAction *a : menu->actions()) {
+            if ((a->objectName() == entry || a->text() == entry) && a->isEnabled()) {
+                if (checked)
+                    *checked = a->isChecked();
+                QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(a).center());
+                chosen = true;
+                return;
+            }
+        }
+        menu->close();
+    });
+    const QPoint pos = view->visualRect(index).center();
+    QContextMenuEvent event(QContextMenuEvent::Mouse, pos, view->viewport()->mapToGlobal(pos));
+    QApplication::sendEvent(view->viewport(), &event); // the menu's own loop until chosen
+    return chosen;
+}
+
+int rowOf(const WatchTableModel *model, const char *address)
+{
+    for (int r = 0; r < model->rowCount(); ++r) {
+        if (model->item(r).address.toString() == address)
+            return r;
+    }
+    return -1;
+}
+
+} // namespace
+
+class TestUiHistory : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_settingsDir;
+    QTranslator m_english;
+    Prefill m_prefill;
+    MainWindow *m_window = nullptr;
+
+    TrendView *trend() const { return m_window->trendView(); }
+
+    // The history drawn and nothing more asked of the store.
+    bool historySettled()
+    {
+        return QTest::qWaitFor(
+            [this] {
+                return trend()->history()->isIdle() && !trend()->historySeries(0).isEmpty();
+            },
+            longWait);
+    }
+
+    // Every drawn point of the recorded part is a stored value at its time (but the value the
+    // line enters the range with and its join to the live line); none lies in the bad stretch,
+    // and no piece bridges it.
+    void checkHistoryPoints(int *matched)
+    {
+        int misses = 0;
+        *matched = 0;
+        const QList<QLineSeries *> pieces = trend()->historySeries(0);
+        for (const QLineSeries *piece : pieces) {
+            const QList<QPointF> points = piece->points();
+            for (qsizetype i = 0; i < points.size(); ++i) {
+                const auto t = static_cast<qint64>(points.at(i).x());
+                QVERIFY2(t <= m_prefill.gapFromMs || t >= m_prefill.gapToMs,
+                         qPrintable(QDateTime::fromMSecsSinceEpoch(t).toString()));
+                if (i > 0) {
+                    const auto before = static_cast<qint64>(points.at(i - 1).x());
+                    QVERIFY(!(before <= m_prefill.gapFromMs && t >= m_prefill.gapToMs));
+                    QVERIFY(t >= before);
+                }
+                const auto stored = m_prefill.good.find(t);
+                if (stored == m_prefill.good.end()) {
+                    ++misses;
+                    continue;
+                }
+                QCOMPARE(points.at(i).y(), stored->second);
+                ++*matched;
+            }
+        }
+        QVERIFY2(misses <= 2 * pieces.size(), qPrintable(QString::number(misses)));
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_settingsDir.isValid());
+        TestUtil::useTestSettings(m_settingsDir.path(), QStringLiteral("tst_ui_history"));
+        QCOMPARE(QGuiApplication::primaryScreen()->size(), laptop);
+        QVERIFY(m_english.load(QStringLiteral(":/i18n/fatekstudio_en.qm")));
+        QCoreApplication::installTranslator(&m_english);
+        const QString error = prefill(location(), &m_prefill);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+    }
+
+    void cleanupTestCase()
+    {
+        delete m_window;
+        m_window = nullptr;
+    }
+
+    void scrollBackIntoRecordedValues();
+};
+
+void TestUiHistory::scrollBackIntoRecordedValues()
+{
+    m_window = new MainWindow;
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    QSignalSpy ready(m_window, &MainWindow::demoReady);
+    m_window->startDemo();
+    QVERIFY(ready.wait(longWait));
+    // The demo put its rows into the trend by itself: the person starts with an empty one.
+    while (trend()->itemCount() > 0)
+        trend()->removeItem(0);
+    WatchTableWidget *table = m_window->currentWatchTable();
+    WatchTableModel *model = table->model();
+    const int sine = rowOf(model, "R1");
+    QVERIFY(sine >= 0);
+    HistoryCenter *center = m_window->history()->center();
+    QCOMPARE(center->location(), location());
+
+    // Record in History, through the row's context menu: checked afterwards, the name marked.
+    const QModelIndex name = table->viewIndex(model->index(sine, WatchTableModel::NameColumn));
+    const qint64 markedMs = QDateTime::currentMSecsSinceEpoch();
+    bool wasChecked = true;
+    QVERIFY(chooseFromContextMenu(table->view(), name, QStringLiteral("recordHistoryAction"),
+                                  &wasChecked));
+    QVERIFY(!wasChecked);
+    QVERIFY(model->item(sine).history.has_value());
+    QCOMPARE(*model->item(sine).history, HistorySetting{});
+    QVERIFY(!model->index(sine, WatchTableModel::NameColumn)
+                 .data(Qt::DecorationRole)
+                 .value<QIcon>()
+                 .isNull());
+    QTRY_VERIFY(center->recorder(QStringLiteral("Demo PLC")));
+    QVERIFY(center->isOpen());
+    // The menu shows it checked now.
+    QVERIFY(chooseFromContextMenu(table->view(), name, QStringLiteral("Add to &Trend"),
+                                  &wasChecked));
+    QTRY_COMPARE(trend()->itemCount(), 1);
+    QCOMPARE(trend()->itemName(0), QStringLiteral("Sine (R1)"));
+
+    // "8 h": typed into the window box, as a person picks it by its first character.
+    QComboBox *window = trend()->windowBox();
+    QVERIFY(window->isVisible());
+    window->setFocus(Qt::TabFocusReason);
+    QTest::keyClicks(window, QStringLiteral("8"), {}, keyDelayMs);
+    QCOMPARE(window->currentText(), QStringLiteral("8 h"));
+    QCOMPARE(trend()->windowMs(), 8 * hourMs);
+    QTRY_VERIFY_WITH_TIMEOUT(trend()->buffer(0).size() >= 3, longWait);
+    QVERIFY(historySettled());
+    trend()->refresh();
+    int matched = 0;
+    checkHistoryPoints(&matched);
+    QVERIFY2(matched > 500, qPrintable(QString::number(matched)));
+    // The recorded line runs into the live one: its last point is the live buffer's first.
+    const QList<QLineSeries *> pieces = trend()->historySeries(0);
+    const QPointF joint = pieces.constLast()->points().constLast();
+    QCOMPARE(static_cast<qint64>(joint.x()), trend()->buffer(0).at(0).timeMs);
+    QVERIFY(!trend()->series(0).isEmpty());
+    QVERIFY(trend()->series(0).constLast()->points().constLast().x() >= joint.x());
+    QVERIFY(!trend()->isZoomed());
+
+    // Back an hour: one click on the scroll bar's left arrow (an eighth of the 8 h shown).
+    QScrollBar *bar = trend()->scrollBar();
+    QVERIFY(bar->isVisible());
+    const qint64 followedTo = trend()->timeAxis()->max().toMSecsSinceEpoch();
+    QTest::mouseClick(bar, Qt::LeftButton, {}, QPoint(bar->height() / 2, bar->height() / 2));
+    QVERIFY(trend()->isZoomed()); // it no longer follows the present
+    const qint64 fromMs = trend()->timeAxis()->min().toMSecsSinceEpoch();
+    const qint64 toMs = trend()->timeAxis()->max().toMSecsSinceEpoch();
+    QCOMPARE(toMs - fromMs, 8 * hourMs);
+    QVERIFY2(std::abs(followedTo - hourMs - toMs) < 3000,
+             qPrintable(QString::number(followedTo - hourMs - toMs)));
+    QVERIFY(historySettled());
+    trend()->refresh();
+    checkHistoryPoints(&matched);
+    QVERIFY2(matched > 500, qPrintable(QString::number(matched)));
+    // The bad stretch, 90 to 80 minutes ago, is in view: a gap with lines on either side.
+    bool before = false, after = false;
+    for (const QLineSeries *piece : trend()->historySeries(0)) {
+        for (const QPointF &p : piece->points()) {
+            before = before || (p.x() < double(m_prefill.gapFromMs)
+                                && p.x() > double(m_prefill.gapFromMs - 5 * 60 * 1000));
+            after = after || (p.x() >= double(m_prefill.gapToMs)
+                              && p.x() < double(m_prefill.gapToMs + 5 * 60 * 1000));
+        }
+    }
+    QVERIFY(before && after);
+    QVERIFY(trend()->historySeries(0).size() >= 2);
+
+    // What the studio recorded itself reaches the store: read through a second handle once the
+    // writer wrote what was pending.
+    bool flushed = false;
+    center->writer()->flush([&flushed] { flushed = true; });
+    QTRY_VERIFY(flushed);
+    {
+        auto reader = HistoryStore::open(location(), HistoryStore::Mode::ReadOnly);
+        QVERIFY(reader);
+        auto all = (*reader)->series();
+        QVERIFY(all);
+        qint64 id = 0;
+        for (const HistorySeries &s : *all) {
+            if (s.key() == seriesKey)
+                id = s.id;
+        }
+        QVERIFY(id != 0);
+        auto recent = (*reader)->samples(id, markedMs, QDateTime::currentMSecsSinceEpoch() + 1);
+        QVERIFY(recent);
+        int fresh = 0;
+        for (const HistorySample &s : *recent) {
+            if (s.timeMs >= markedMs && s.quality == HistoryQuality::Good) {
+                QVERIFY(s.value >= -1000 && s.value <= 1000);
+                ++fresh;
+            }
+        }
+        QVERIFY2(fresh >= 1, qPrintable(QString::number(fresh)));
+    }
+
+    // Export Range…: the file dialog takes the name; the file holds the stored samples.
+    const QString csv = QFileInfo(location()).absolutePath() + QStringLiteral("/range.csv");
+    QSignalSpy exported(trend()->history(), &TrendHistory::exportFinished);
+    auto *exportButton = trend()->findChild<QToolButton *>(QStringLiteral("trendExport"));
+    QVERIFY(exportButton && exportButton->isVisible());
+    bool typed = false;
+    UiTestUtil::answerModal(
+        [&] { QTest::mouseClick(exportButton, Qt::LeftButton, {}, QPoint(), mouseDelayMs); },
+        [&](QWidget *modal) {
+            auto *dialog = qobject_cast<QFileDialog *>(modal);
+            auto *edit
+                = dialog ? dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit")) : nullptr;
+            if (!edit)
+                return;
+            edit->setFocus();
+            QTest::keyClicks(edit, csv);
+            QTest::keyClick(edit, Qt::Key_Return);
+            typed = true;
+        });
+    QVERIFY(typed);
+    QVERIFY(exported.wait(longWait) || !exported.isEmpty());
+    QCOMPARE(exported.constFirst().at(2).toString(), QString());
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'),
+                                                                       Qt::SkipEmptyParts);
+    QCOMPARE(lines.constFirst(), QStringLiteral("time,series,value,raw,quality"));
+    std::vector<HistorySample> expected;
+    for (const HistorySample &s : m_prefill.samples) {
+        if (s.timeMs >= fromMs && s.timeMs < toMs)
+            expected.push_back(s);
+    }
+    QCOMPARE(lines.size() - 1, qsizetype(expected.size()));
+    QCOMPARE(exported.constFirst().at(1).toInt(), int(expected.size()));
+    const QRegularExpression withOffset(QStringLiteral("(Z|[+-]\\d\\d:\\d\\d)$"));
+    bool sawStale = false;
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const QStringList fields = lines.at(i).split(QLatin1Char(','));
+        QCOMPARE(fields.size(), 5);
+        const HistorySample &s = expected[static_cast<std::size_t>(i - 1)];
+        QVERIFY2(withOffset.match(fields.at(0)).hasMatch(), qPrintable(fields.at(0)));
+        QCOMPARE(QDateTime::fromString(fields.at(0), Qt::ISODateWithMs).toMSecsSinceEpoch(),
+                 s.timeMs);
+        QCOMPARE(fields.at(1), seriesKey);
+        QCOMPARE(fields.at(4), History::qualityName(s.quality));
+        if (s.quality == HistoryQuality::Good) {
+            QCOMPARE(fields.at(2).toDouble(), s.value);
+            QCOMPARE(fields.at(3),
+                     QStringLiteral("0x") + QString::number(s.raw, 16).toUpper());
+        } else {
+            QVERIFY(fields.at(2).isEmpty());
+            sawStale = true;
+        }
+    }
+    QVERIFY(sawStale);
+
+    // Custom…: the last choice of the box; the dialog's range is shown.
+    window->setFocus(Qt::TabFocusReason);
+    QTest::keyClick(window, Qt::Key_End, {}, keyDelayMs);
+    QDialog *custom = nullptr;
+    QTRY_VERIFY((custom = trend()->findChild<QDialog *>(QStringLiteral("trendCustomRange")))
+                && custom->isVisible());
+    const QDateTime customFrom = QDateTime::fromMSecsSinceEpoch(m_prefill.fromMs + hourMs);
+    custom->findChild<QDateTimeEdit *>(QStringLiteral("customFrom"))->setDateTime(customFrom);
+    custom->findChild<QDateTimeEdit *>(QStringLiteral("customTo"))
+        ->setDateTime(customFrom.addSecs(2 * 3600));
+    QTest::mouseClick(custom->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok),
+                      Qt::LeftButton, {}, QPoint(), mouseDelayMs);
+    QTRY_VERIFY(!custom->isVisible() || custom->isHidden());
+    QCOMPARE(trend()->timeAxis()->min().toMSecsSinceEpoch(), customFrom.toMSecsSinceEpoch());
+    QCOMPARE(trend()->timeAxis()->max().toMSecsSinceEpoch(),
+             customFrom.addSecs(2 * 3600).toMSecsSinceEpoch());
+    QVERIFY(historySettled());
+    trend()->refresh();
+    checkHistoryPoints(&matched);
+    QVERIFY2(matched > 500, qPrintable(QString::number(matched)));
+
+    // Reset Zoom follows the present again, in the window chosen before.
+    auto *reset = trend()->findChild<QToolButton *>(QStringLiteral("trendResetZoom"));
+    QTest::mouseClick(reset, Qt::LeftButton, {}, QPoint(), mouseDelayMs);
+    QVERIFY(!trend()->isZoomed());
+    QCOMPARE(window->currentText(), QStringLiteral("8 h"));
+
+    // The screenshot for docs/history.md: a day's trend.
+    const QString screenshot = qEnvironmentVariable("FATEK_HISTORY_SCREENSHOT");
+    if (!screenshot.isEmpty()) {
+        window->setFocus(Qt::TabFocusReason);
+        QTest::keyClicks(window, QStringLiteral("2"), {}, keyDelayMs);
+        QCOMPARE(window->currentText(), QStringLiteral("24 h"));
+        QVERIFY(historySettled());
+        QTest::qWait(500);
+        trend()->refresh();
+        QVERIFY(m_window->grab().save(screenshot));
+    }
+}
+
+// A screen of a laptop's size, and the history in a temporary folder, before the application.
+int main(int argc, char *argv[])
+{
+    const UiTestUtil::OffscreenScreen screen(laptop);
+    if (!screen.isReady())
+        return 1;
+    QTemporaryDir dir;
+    if (!dir.isValid())
+        return 1;
+    qputenv("FATEK_HISTORY", dir.filePath(QStringLiteral("history.sqlite")).toUtf8());
+    qputenv("FATEK_ALARM_JOURNAL", dir.filePath(QStringLiteral("alarms.sqlite")).toUtf8());
+    QApplication app(argc, argv);
+    TestUiHistory test;
+    QTEST_SET_MAIN_SOURCE_PATH
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "tst_ui_history.moc"

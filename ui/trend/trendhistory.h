@@ -1,0 +1,116 @@
+#pragma once
+
+#include "core/history/historytypes.h"
+#include "trendvalueaxes.h"
+
+#include <QList>
+#include <QObject>
+#include <QPointer>
+#include <QPointF>
+#include <QTimer>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+class QChart;
+class QDateTimeAxis;
+class QLineSeries;
+class QWidget;
+
+namespace Fatek {
+
+class HistoryCenter;
+struct TrendLine;
+
+// The recorded past of the trend's lines (issue 51): where the visible range reaches before what
+// a line's live buffer holds, its older part is asked of the history store (HistoryWriter::
+// queryPoints, one bucket per pixel column: min/max per column, so a week of 1 s values draws at
+// once), debounced while the user scrolls, and drawn in the line's colour up to the live buffer's
+// first sample, where it joins the live line. Gaps (no value, nothing recorded) stay gaps. Answers
+// for a range no longer wanted are dropped (a generation per request); the UI never waits for the
+// store. A line the store does not record shows nothing there, without a message. Also exports
+// the recorded samples of a range to CSV.
+class TrendHistory : public QObject
+{
+    Q_OBJECT
+
+public:
+    // How long the user may keep scrolling before the store is asked.
+    static constexpr int DebounceMs = 150;
+
+    TrendHistory(QChart *chart, QDateTimeAxis *timeAxis, QObject *parent = nullptr);
+    ~TrendHistory() override;
+
+    // Where the series are read (nullptr: nowhere; the trend shows its live buffers only).
+    void setCenter(HistoryCenter *center);
+    HistoryCenter *center() const { return m_center; }
+    // The series a line is recorded as ("Line 1/1-R1"); empty without a center or connection.
+    QString seriesKey(const TrendLine &line) const;
+
+    // Draws the recorded part of `line` in [fromMs, toMs] (`pixels` columns wide) as `name` and
+    // widens `span` by its values inside the range; asks the store for what it lacks.
+    void draw(TrendLine &line, const QString &name, qint64 fromMs, qint64 toMs, int pixels,
+              TrendValueAxes::Span &span);
+    // The line leaves the trend: its pieces leave the chart.
+    void remove(const TrendLine *line);
+    // The recorded pieces drawn for a line (one per stretch without a gap).
+    QList<QLineSeries *> series(const TrendLine *line) const;
+    // Whether no request is waiting or under way (tests wait for it).
+    bool isIdle() const;
+
+    // Writes the samples of `keys` with fromMs <= time < toMs to `path` (CSV: time in local ISO
+    // 8601 with its offset, series, value, raw in hex, quality), atomically; exportFinished says
+    // how it went. Series the store does not have are left out.
+    void exportRange(const QStringList &keys, qint64 fromMs, qint64 toMs, const QString &path);
+    // Asks where to export (a file dialog); empty when cancelled.
+    static QString askExportPath(QWidget *parent);
+
+Q_SIGNALS:
+    // Points arrived from the store: draw again.
+    void pointsArrived();
+    // `error` empty: `rows` samples written to `path`.
+    void exportFinished(const QString &path, int rows, const QString &error);
+    void statusMessage(const QString &text);
+
+private:
+    struct Range
+    {
+        qint64 fromMs = 0;
+        qint64 toMs = 0;
+        int buckets = 0;
+        double msPerBucket() const { return double(toMs - fromMs) / std::max(buckets, 1); }
+    };
+    struct State
+    {
+        QString key;
+        std::optional<Range> held; // what `points` cover
+        std::optional<Range> wanted;
+        std::optional<Range> asked;
+        quint64 generation = 0; // of the request under way
+        std::vector<HistoryPoint> points;
+        quint64 version = 0; // of `points`
+        std::vector<QLineSeries *> series;
+        // What the pieces show now: redrawn only when it changes.
+        quint64 drawnVersion = 0;
+        qint64 drawnEndMs = -1;
+        QPointF drawnJoin;
+    };
+
+    void send();
+    void answered(const TrendLine *line, quint64 generation,
+                  const Result<std::vector<HistoryPoint>> &points);
+    void clearPieces(State &state);
+    void drawPieces(State &state, const TrendLine &line, const QString &name, qint64 endMs,
+                    std::optional<QPointF> join);
+
+    QChart *m_chart;
+    QDateTimeAxis *m_timeAxis;
+    QPointer<HistoryCenter> m_center;
+    std::map<const TrendLine *, State> m_states;
+    QTimer m_debounce;
+    quint64 m_generation = 0;
+    QString m_lastError; // said once, not per scroll
+};
+
+} // namespace Fatek
