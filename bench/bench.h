@@ -60,6 +60,8 @@ void runGateway(const Options &options, Report &report);
 void runPlanTime(const Options &options, Report &report);
 // Alarm evaluation: 10,000 items, a high and a low alarm each, updated at 10 Hz (issue 50).
 void runAlarmEvaluation(const Options &options, Report &report);
+// History: 10,000 items recorded every second, a day of one item looked back at (issue 51).
+void runHistory(const Options &options, Report &report);
 
 QString fmt(double value, int decimals = 2);
 QString ratioText(double value, double base);

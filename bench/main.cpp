@@ -88,7 +88,7 @@ int main(int argc, char **argv)
     const QCommandLineOption quick(QStringLiteral("quick"),
                                    QStringLiteral("Short runs (for sanitizer builds)."));
     const QCommandLineOption only(QStringLiteral("only"),
-                                  QStringLiteral("Run only these figures (comma list of 1-8)."),
+                                  QStringLiteral("Run only these figures (comma list of 1-9)."),
                                   QStringLiteral("list"));
     parser.addOption(quick);
     parser.addOption(only);
@@ -100,7 +100,8 @@ int main(int argc, char **argv)
     if (figures.isEmpty())
         figures
             = {QStringLiteral("1"), QStringLiteral("2"), QStringLiteral("3"), QStringLiteral("4"),
-               QStringLiteral("5"), QStringLiteral("6"), QStringLiteral("7"), QStringLiteral("8")};
+               QStringLiteral("5"), QStringLiteral("6"), QStringLiteral("7"), QStringLiteral("8"),
+               QStringLiteral("9")};
 
     Report report;
     QElapsedTimer total;
@@ -110,6 +111,7 @@ int main(int argc, char **argv)
         {QStringLiteral("3"), &runTcp},      {QStringLiteral("4"), &runUiLoad},
         {QStringLiteral("5"), &runCodec},    {QStringLiteral("6"), &runGateway},
         {QStringLiteral("7"), &runPlanTime}, {QStringLiteral("8"), &runAlarmEvaluation},
+        {QStringLiteral("9"), &runHistory},
     };
     for (const auto &[key, run] : runs) {
         if (!figures.contains(key))

@@ -2150,6 +2150,22 @@
             <translation>alarm journal failed (alarms still run, not journaled): %1</translation>
         </message>
         <message>
+            <source>&quot;%1&quot; is the setting of every item recorded with &quot;recordAll&quot;: give &quot;recordAll&quot;: true, or put &quot;history&quot; on the items in their watch lists.</source>
+            <translation>&quot;%1&quot; is the setting of every item recorded with &quot;recordAll&quot;: give &quot;recordAll&quot;: true, or put &quot;history&quot; on the items in their watch lists.</translation>
+        </message>
+        <message>
+            <source>The history store&apos;s URL holds a password: keep it in ~/.pgpass or $PGPASSWORD (the service&apos;s EnvironmentFile), out of the configuration.</source>
+            <translation>The history store's URL holds a password: keep it in ~/.pgpass or $PGPASSWORD (the service&apos;s EnvironmentFile), out of the configuration.</translation>
+        </message>
+        <message>
+            <source>history store failed (values still polled and published, not recorded): %1</source>
+            <translation>history store failed (values still polled and published, not recorded): %1</translation>
+        </message>
+        <message>
+            <source>history store %1 written again</source>
+            <translation>history store %1 written again</translation>
+        </message>
+        <message>
             <source>&quot;%1&quot; must name a file.</source>
             <translation>&quot;%1&quot; must name a file.</translation>
         </message>

@@ -2,6 +2,7 @@
 
 #include "app/common/linkarguments.h"
 #include "clialarms.h"
+#include "clihistory.h"
 #include "clicheckoutcommand.h"
 #include "clicontext.h"
 #include "clicontrolcommand.h"
@@ -250,6 +251,7 @@ QStringList commandNames()
     for (const CommandSpec &c : commands)
         names << QLatin1String(c.name);
     names << QStringLiteral("alarms"); // a program of its own (clialarms.h), not a step
+    names << QStringLiteral("history"); // a program of its own (clihistory.h), not a step
     return names;
 }
 
@@ -275,6 +277,14 @@ QList<std::pair<QString, QString>> commandUsage()
                                 "exclusive; --csv: time (local, with its UTC offset), connection, "
                                 "alarm, kind, event, state, priority, group, message, value, "
                                 "user, comment, shelved until")});
+    rows.append({QLatin1String(HistorySynopsis),
+                 QStringLiteral("read a history store (an SQLite file or a postgresql:// URL; "
+                                "docs/history.md): without ITEM its series, else each ITEM's "
+                                "samples from --from (default -1h) to --to (default now, "
+                                "exclusive), oldest first; ITEM: a series (line1/1-R100), an "
+                                "item (1-R100, R100 for station 1) or a label naming one; TIME as "
+                                "for alarms; --csv: time (local, with its UTC offset), series, "
+                                "value, raw, quality")});
     return rows;
 }
 

@@ -1,5 +1,6 @@
 #include "app/common/quitsignal.h"
 #include "clialarms.h"
+#include "clihistory.h"
 #include "clicompletion.h"
 #include "clioptions.h"
 #include "clioutput.h"
@@ -51,6 +52,12 @@ int main(int argc, char *argv[])
         at >= 0 && !arguments.contains(QLatin1String("--help"))) {
         arguments.removeAt(at);
         return runAlarms(arguments);
+    }
+    // history reads a store, not a PLC.
+    if (!arguments.isEmpty() && arguments.first() == QLatin1String("history")
+        && !arguments.contains(QLatin1String("--help"))) {
+        arguments.removeFirst();
+        return runHistory(arguments);
     }
     const CliParseResult parsed = parseCommandLine(arguments);
     if (!parsed.options) {

@@ -65,6 +65,22 @@ void printSummary(const QString &path, const GatewayConfig &config)
                                              .arg(config.alarmCount())
                                              .arg(config.alarmJournal))
           << Qt::endl;
+    const auto retentionText = [](const HistoryRetention &r) {
+        QStringList parts;
+        if (r.maxAgeS > 0)
+            parts << QStringLiteral("%1 days").arg(r.maxAgeS / (24 * 3600));
+        if (r.maxBytes > 0)
+            parts << QStringLiteral("%1 MB").arg(r.maxBytes / (1024 * 1024));
+        return parts.isEmpty() ? QStringLiteral("kept for ever") : parts.join(QStringLiteral(", "));
+    };
+    out() << "history    "
+          << (config.historyCount() == 0
+                  ? QStringLiteral("none")
+                  : QStringLiteral("%1 items%2, store %3, %4")
+                        .arg(config.historyCount())
+                        .arg(config.history.recordAll ? QStringLiteral(" (all)") : QString())
+                        .arg(config.history.store, retentionText(config.history.retention)))
+          << Qt::endl;
     for (const GatewayConnectionConfig &c : config.connections) {
         const auto counted = [](qsizetype n, const char *one, const char *many) {
             return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));

@@ -3,6 +3,7 @@
 #include "alarmnorth.h"
 #include "core/alarm/alarmengine.h"
 #include "core/alarm/alarmjournalwriter.h"
+#include "core/history/historywriter.h"
 #include "gatewaylink.h"
 #include "gatewaymessages.h"
 #include "homeassistantdiscovery.h"
@@ -35,6 +36,7 @@ bool Gateway::start(const GatewayConfig &config, QString *connection, Message *e
 {
     m_config = config;
     openJournal();
+    openHistory();
     // Link i of n opens i/n of the shortest interval (at most 1 s) after the first, so that their
     // poll cycles, and the bursts of publications they cause, are spread over the interval.
     int shortestMs = 1000;
@@ -67,6 +69,28 @@ void Gateway::openJournal()
     });
 }
 
+void Gateway::openHistory()
+{
+    if (m_config.historyCount() == 0
+        || (m_history && m_historyConfig.store == m_config.history.store
+            && m_historyConfig.retention == m_config.history.retention))
+        return;
+    // Links restart (the history's change restarts every link) and record into the new one; the
+    // old store stays until the links recording into it are gone (each keeps an Off sample as it
+    // goes).
+    if (m_history)
+        m_retiredHistory.push_back(m_history);
+    m_historyConfig = m_config.history;
+    m_history = new HistoryWriter(m_historyConfig.store, m_historyConfig.retention, this);
+    connect(m_history, &HistoryWriter::failed, this, [this](const Message &error) {
+        Q_EMIT logEvent(QStringLiteral("fatek-gateway"), msg<MsgId::GatewayLogHistory>(error));
+    });
+    connect(m_history, &HistoryWriter::recovered, this, [this] {
+        Q_EMIT logEvent(QStringLiteral("fatek-gateway"),
+                        msg<MsgId::GatewayLogHistoryRecovered>(m_history->location().toStdString()));
+    });
+}
+
 bool Gateway::startLink(const GatewayConnectionConfig &connection, int pollDelayMs, Message *error)
 {
     auto link = std::make_unique<GatewayLink>(connection, m_config.prefix, m_config.broker,
@@ -78,6 +102,8 @@ bool Gateway::startLink(const GatewayConnectionConfig &connection, int pollDelay
         m_journal->attach(link->alarms());
         link->awaitAlarmRestore();
     }
+    if (m_history && connection.historyCount(m_config.history.recordAll.has_value()) > 0)
+        link->setHistory(m_history, m_config.history.recordAll);
     const QString name = connection.name;
     connect(link.get(), &GatewayLink::logEvent, this,
             [this, name](const Message &event) { Q_EMIT logEvent(name, event); });
@@ -103,7 +129,8 @@ void Gateway::reload(const GatewayConfig &config)
     const bool everything = config.broker != m_config.broker || config.prefix != m_config.prefix
                             || config.readOnly != m_config.readOnly
                             || config.homeAssistant != m_config.homeAssistant
-                            || config.alarmJournal != m_config.alarmJournal;
+                            || config.alarmJournal != m_config.alarmJournal
+                            || config.history != m_config.history;
     // Discovery configs that stay: a retiring link clears the others (entities removed).
     QSet<QString> keep;
     if (config.homeAssistant.discovery) {
@@ -118,6 +145,7 @@ void Gateway::reload(const GatewayConfig &config)
         keepAlarms.unite(AlarmNorth::stateTopics(config.prefix, c));
     m_config = config;
     openJournal();
+    openHistory();
     m_reloading = true;
     m_waiting.clear();
     for (Running &running : m_links) {
@@ -152,6 +180,10 @@ void Gateway::onLinkStopped()
         return r.link->isStopped() && (r.retiring || m_stopping);
     });
     m_links.erase(gone, m_links.end());
+    if (std::none_of(m_links.cbegin(), m_links.cend(), [](const Running &r) { return r.retiring; })) {
+        qDeleteAll(m_retiredHistory);
+        m_retiredHistory.clear();
+    }
     if (m_stopping) {
         if (m_links.empty())
             Q_EMIT stopped();

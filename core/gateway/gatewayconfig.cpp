@@ -2,6 +2,8 @@
 
 #include "core/mqtt/gatewaytopics.h"
 #include "core/watch/jsonkeys.h"
+#include "gatewayconfigreader.h"
+#include "gatewayhistoryconfig.h"
 #include "gatewaymessages.h"
 
 #include <QDir>
@@ -21,198 +23,11 @@ namespace Fatek {
 
 namespace {
 
-// A failed step: the message, already nested in its places.
-using Problem = std::optional<Message>;
+using GatewayConfigRead::at;
+using GatewayConfigRead::Reader;
+using GatewayConfigRead::resolve;
+using Problem = GatewayConfigProblem;
 
-Message at(Message place, Message error)
-{
-    return msg<MsgId::AtPlace>(std::move(place), std::move(error));
-}
-
-std::string keyText(const QString &key)
-{
-    return key.toStdString();
-}
-
-// Edit distance with adjacent transpositions ("hots" -> "host" is 1), ignoring case.
-qsizetype editDistance(const QString &a, const QString &b)
-{
-    const QString x = a.toCaseFolded();
-    const QString y = b.toCaseFolded();
-    std::vector<std::vector<qsizetype>> d(
-        static_cast<std::size_t>(x.size() + 1),
-        std::vector<qsizetype>(static_cast<std::size_t>(y.size() + 1)));
-    const auto at = [&d](qsizetype i, qsizetype j) -> qsizetype & {
-        return d[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
-    };
-    for (qsizetype i = 0; i <= x.size(); ++i)
-        at(i, 0) = i;
-    for (qsizetype j = 0; j <= y.size(); ++j)
-        at(0, j) = j;
-    for (qsizetype i = 1; i <= x.size(); ++i) {
-        for (qsizetype j = 1; j <= y.size(); ++j) {
-            const qsizetype cost = x.at(i - 1) == y.at(j - 1) ? 0 : 1;
-            at(i, j) = std::min({at(i - 1, j) + 1, at(i, j - 1) + 1, at(i - 1, j - 1) + cost});
-            if (i > 1 && j > 1 && x.at(i - 1) == y.at(j - 2) && x.at(i - 2) == y.at(j - 1))
-                at(i, j) = std::min(at(i, j), at(i - 2, j - 2) + 1);
-        }
-    }
-    return at(x.size(), y.size());
-}
-
-// Reads optional typed keys of one JSON object; the first problem wins and the rest is skipped.
-// Every key asked for is a known key of the object: rejectUnknown() then refuses any other, so a
-// misspelt setting ("readonly") is an error instead of a silent default.
-class Reader
-{
-public:
-    explicit Reader(const QJsonObject &object)
-        : m_object(object)
-    {}
-
-    Problem problem;
-
-    bool has(const QString &key)
-    {
-        m_known.insert(key);
-        return m_object.contains(key);
-    }
-
-    // Keys read elsewhere (the format marker and version of the root object).
-    void known(std::initializer_list<QString> keys)
-    {
-        for (const QString &key : keys)
-            m_known.insert(key);
-    }
-
-    // After every key has been asked for: the first key (in order) that none was, with the known
-    // key it most likely means when one is close enough.
-    void rejectUnknown()
-    {
-        if (problem)
-            return;
-        QStringList unknown;
-        for (const QString &key : m_object.keys()) {
-            if (!m_known.contains(key))
-                unknown.append(key);
-        }
-        if (unknown.isEmpty())
-            return;
-        const QString key = unknown.first();
-        QString nearest;
-        qsizetype best = std::max<qsizetype>(1, key.size() / 3) + 1;
-        QStringList candidates(m_known.cbegin(), m_known.cend());
-        candidates.sort();
-        for (const QString &candidate : std::as_const(candidates)) {
-            if (const qsizetype distance = editDistance(key, candidate); distance < best) {
-                best = distance;
-                nearest = candidate;
-            }
-        }
-        problem = nearest.isEmpty()
-                      ? msg<MsgId::GatewayConfigUnknownKey>(keyText(key))
-                      : msg<MsgId::GatewayConfigUnknownKeyNear>(keyText(key), keyText(nearest));
-    }
-
-    QString string(const QString &key, const QString &fallback = {})
-    {
-        const QJsonValue value = valueOf(key);
-        if (value.isUndefined() || problem)
-            return fallback;
-        if (!value.isString()) {
-            wrongType(key, msg<MsgId::GatewayTypeString>());
-            return fallback;
-        }
-        return value.toString();
-    }
-
-    bool boolean(const QString &key, bool fallback)
-    {
-        const QJsonValue value = valueOf(key);
-        if (value.isUndefined() || problem)
-            return fallback;
-        if (!value.isBool()) {
-            wrongType(key, msg<MsgId::GatewayTypeBool>("true", "false"));
-            return fallback;
-        }
-        return value.toBool();
-    }
-
-    // A whole number in [min, max]; `fallback` when absent.
-    std::optional<qint64> integer(const QString &key, qint64 min, qint64 max)
-    {
-        const QJsonValue value = valueOf(key);
-        if (value.isUndefined() || problem)
-            return std::nullopt;
-        const double number = value.toDouble(std::numeric_limits<double>::quiet_NaN());
-        if (!value.isDouble() || !std::isfinite(number) || number != std::floor(number)) {
-            wrongType(key, msg<MsgId::GatewayTypeNumber>());
-            return std::nullopt;
-        }
-        if (number < static_cast<double>(min) || number > static_cast<double>(max)) {
-            problem = msg<MsgId::GatewayConfigOutOfRange>(
-                keyText(key), QString::number(number, 'g', 17).toStdString(), min, max);
-            return std::nullopt;
-        }
-        return static_cast<qint64>(number);
-    }
-
-    template<typename T>
-    void integerInto(const QString &key, qint64 min, qint64 max, T *target)
-    {
-        if (const std::optional<qint64> v = integer(key, min, max))
-            *target = static_cast<T>(*v);
-    }
-
-    QJsonArray array(const QString &key)
-    {
-        const QJsonValue value = valueOf(key);
-        if (value.isUndefined() || problem)
-            return {};
-        if (!value.isArray()) {
-            wrongType(key, msg<MsgId::GatewayTypeArray>());
-            return {};
-        }
-        return value.toArray();
-    }
-
-    QJsonObject object(const QString &key, bool required)
-    {
-        const QJsonValue value = valueOf(key);
-        if (problem)
-            return {};
-        if (value.isUndefined()) {
-            if (required)
-                problem = msg<MsgId::GatewayConfigMissing>(keyText(key));
-            return {};
-        }
-        if (!value.isObject()) {
-            wrongType(key, msg<MsgId::GatewayTypeObject>());
-            return {};
-        }
-        return value.toObject();
-    }
-
-private:
-    QJsonValue valueOf(const QString &key)
-    {
-        m_known.insert(key);
-        return m_object.value(key);
-    }
-
-    void wrongType(const QString &key, Message type)
-    {
-        problem = msg<MsgId::GatewayConfigWrongType>(keyText(key), std::move(type));
-    }
-
-    QJsonObject m_object;
-    QSet<QString> m_known;
-};
-
-QString resolve(const QString &baseDirectory, const QString &file)
-{
-    return QDir(baseDirectory).absoluteFilePath(file);
-}
 
 Problem readBroker(const QJsonObject &json, const QString &baseDirectory, MqttBrokerSettings *out)
 {
@@ -466,6 +281,29 @@ int GatewayConnectionConfig::alarmCount() const
     return count;
 }
 
+int GatewayConnectionConfig::historyCount(bool recordAll) const
+{
+    int count = 0;
+    for (const WatchTableSpec &table : tables) {
+        for (const WatchItemSpec &item : table.items)
+            count += recordAll || item.history ? 1 : 0;
+    }
+    return count;
+}
+
+int GatewayConfig::historyCount() const
+{
+    int count = 0;
+    for (const GatewayConnectionConfig &connection : connections)
+        count += connection.historyCount(history.recordAll.has_value());
+    return count;
+}
+
+QString GatewayConfig::defaultHistoryStore(const QString &baseDirectory)
+{
+    return QFileInfo(defaultAlarmJournal(baseDirectory)).dir().filePath(QStringLiteral("history.db"));
+}
+
 int GatewayConfig::alarmCount() const
 {
     int count = 0;
@@ -519,6 +357,7 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
     const QJsonArray connections = r.array(QStringLiteral("connections"));
     const bool journalGiven = r.has(QStringLiteral("alarmJournal"));
     const QString journal = r.string(QStringLiteral("alarmJournal"));
+    const QJsonObject history = r.object(QStringLiteral("history"), false);
     r.known({QStringLiteral("format"), QStringLiteral("version")}); // checked above
     r.rejectUnknown();
     if (r.problem)
@@ -529,6 +368,8 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
         return fail(msg<MsgId::GatewayConfigEmptyFile>("alarmJournal"));
     config.alarmJournal
         = journalGiven ? resolve(baseDirectory, journal) : defaultAlarmJournal(baseDirectory);
+    if (Problem p = GatewayConfigRead::readHistory(history, baseDirectory, &config.history))
+        return fail(at(Message::text("history"), *p));
     if (Problem p = readBroker(broker, baseDirectory, &config.broker))
         return fail(at(msg<MsgId::GatewayPlaceBroker>(), *p));
     // The place is the key itself, as typed (not a word to translate).

@@ -1,9 +1,11 @@
 #pragma once
 
+#include "core/history/historytypes.h"
 #include "core/mqtt/mqttbrokersettings.h"
 #include "core/protocol/addressrange.h"
 #include "core/protocol/result.h"
 #include "core/transport/linksettings.h"
+#include "core/watch/historysetting.h"
 #include "core/watch/watchlist.h"
 
 #include <QByteArray>
@@ -46,6 +48,9 @@ struct GatewayConnectionConfig
     int itemCount() const;
     // The alarms its watch lists define (issue 50).
     int alarmCount() const;
+    // The items recorded in the history (issue 51): those with a history setting, or every one
+    // when `recordAll`.
+    int historyCount(bool recordAll) const;
 };
 
 // The gateway's configuration file: versioned JSON (docs/gateway.md has the reference)
@@ -53,7 +58,8 @@ struct GatewayConnectionConfig
 //    "prefix":"fatek","readOnly":false,"connections":[{"name":"line1","link":{...},
 //    "watchLists":[{"file":"line1.json","intervalMs":1000}],"allow":["R100..R199"],
 //    "statisticsIntervalMs":5000}],"homeAssistant":{"discovery":true,"prefix":"homeassistant"},
-//    "alarmJournal":"alarms.db"}
+//    "alarmJournal":"alarms.db","history":{"store":"history.db","recordAll":true,
+//    "heartbeatS":600,"retention":{"days":30}}}
 // Everything is checked when loading; an error names its place ("connection 2 (line1): link:
 // port 70000 is out of range (1..65535)"). Watch lists and the password file are read relative
 // to the configuration file.
@@ -73,6 +79,22 @@ struct GatewayConfig
         bool operator==(const HomeAssistant &) const = default;
     };
 
+    // The history (issue 51, docs/history.md): what the items did, kept by a HistoryRecorder per
+    // connection in one store. Items with a "history" setting in their watch list are recorded,
+    // and every item when recordAll names the setting for the others.
+    struct History
+    {
+        // An SQLite file (absolute: "store" relative to the configuration file, else
+        // defaultHistoryStore()) or a PostgreSQL URL ("postgresql://fatek@db/plant"; its password
+        // from ~/.pgpass or $PGPASSWORD, never in this file).
+        QString store;
+        std::optional<HistorySetting> recordAll;
+        // 30 days unless "retention" says otherwise ({"days":0}: kept for ever).
+        HistoryRetention retention{30LL * 24 * 3600, 0};
+
+        bool operator==(const History &) const = default;
+    };
+
     MqttBrokerSettings broker;
     QString prefix = QStringLiteral("fatek");
     bool readOnly = false;
@@ -82,12 +104,17 @@ struct GatewayConfig
     // after a restart), absolute: "alarmJournal" relative to the configuration file, else
     // defaultAlarmJournal(). Opened only when some connection has alarms.
     QString alarmJournal;
+    History history;
 
     int alarmCount() const;
+    // The items recorded, of every connection; the store is opened only when there are some.
+    int historyCount() const;
     // Where the journal goes when the configuration names none: the service's state directory
     // (systemd's StateDirectory= sets $STATE_DIRECTORY, /var/lib/fatek-gateway in the packaged
     // unit, where the hardened unit may write), else beside the configuration file.
     static QString defaultAlarmJournal(const QString &baseDirectory);
+    // The history's file when the configuration names none: history.db where the journal goes.
+    static QString defaultHistoryStore(const QString &baseDirectory);
 
     // `baseDirectory`: where relative file names start.
     static Result<GatewayConfig> load(const QByteArray &json, const QString &baseDirectory);

@@ -2,6 +2,7 @@
 
 #include "alarmnorth.h"
 #include "core/alarm/alarmengine.h"
+#include "core/history/historyrecorder.h"
 #include "core/plant/plantconnection.h"
 #include "gatewaymessages.h"
 #include "mqttnorth.h"
@@ -24,6 +25,7 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
         for (const WatchItemSpec &spec : table.items) {
             if (!spec.alarms.isEmpty())
                 alarmed.append({0, spec, table.intervalMs});
+            m_items.append({0, spec, table.intervalMs});
         }
     }
     m_alarms->setItems(alarmed);
@@ -42,7 +44,9 @@ GatewayLink::GatewayLink(const GatewayConnectionConfig &config, const QString &p
 GatewayLink::~GatewayLink()
 {
     // The consumers leave the plant connection before the plant connection (and its session's
-    // thread) goes; the alarms' north before the broker connection it shares.
+    // thread) goes; the alarms' north before the broker connection it shares. The recorder keeps
+    // an Off sample for its items as it goes: nothing is recorded from here on.
+    delete m_history;
     delete m_alarmNorth;
     delete m_alarms;
     delete m_north;
@@ -54,6 +58,8 @@ bool GatewayLink::start(Message *error, int pollDelayMs)
         return false;
     m_alarmNorth->start();
     m_alarms->attach(m_plant);
+    if (m_history)
+        m_history->attach(m_plant);
     if (pollDelayMs > 0) {
         QTimer::singleShot(pollDelayMs, this, [this] {
             if (!m_stopping)
@@ -89,6 +95,14 @@ void GatewayLink::clearDiscovery(const QSet<QString> &keep)
 void GatewayLink::awaitAlarmRestore()
 {
     m_alarmNorth->awaitRestore();
+}
+
+void GatewayLink::setHistory(HistorySink *sink, const std::optional<HistorySetting> &recordAll)
+{
+    delete m_history;
+    m_history = new HistoryRecorder(m_name, sink, this);
+    m_history->setRecordAll(recordAll);
+    m_history->setItems(m_items);
 }
 
 void GatewayLink::clearAlarms(const QSet<QString> &keep)

@@ -5,8 +5,13 @@
 #include "gatewaystatistics.h"
 #include "homeassistantdiscovery.h"
 
+#include "core/watch/itemassembler.h"
+
+#include <QList>
 #include <QObject>
 #include <QSet>
+
+#include <optional>
 
 #include <vector>
 
@@ -14,6 +19,8 @@ namespace Fatek {
 
 class AlarmEngine;
 class AlarmNorth;
+class HistoryRecorder;
+class HistorySink;
 class MqttNorth;
 class PlantConnection;
 class Session;
@@ -22,7 +29,8 @@ class Session;
 // connection's watch lists on its own worker thread), and its north, the MQTT side (MqttNorth),
 // which consumes the plant connection's items like any other consumer, and its alarms: an
 // AlarmEngine (another consumer of the plant connection) evaluating the items' alarm definitions,
-// published and acknowledged through AlarmNorth on MqttNorth's broker connection. What the
+// published and acknowledged through AlarmNorth on MqttNorth's broker connection, and its history:
+// a HistoryRecorder (one more consumer) keeping what the items did in the gateway's store. What the
 // gateway publishes and how it takes commands is MqttNorth's, GatewayCommands' and AlarmNorth's;
 // this class starts and stops them in order. Lives in one thread.
 class GatewayLink : public QObject
@@ -66,6 +74,11 @@ public:
     // the journal's are back in the engine.
     AlarmEngine *alarms() const { return m_alarms; }
     void awaitAlarmRestore();
+    // Records the connection's items with a history setting (and every other one with
+    // `recordAll`) into `sink` (the gateway's HistoryWriter, which outlives this link), from
+    // start() on. Before start().
+    void setHistory(HistorySink *sink, const std::optional<HistorySetting> &recordAll);
+    HistoryRecorder *history() const { return m_history; }
 
     GatewayStatistics statistics() const;
     PlantConnection *plant() const { return m_plant; }
@@ -83,6 +96,8 @@ private:
     MqttNorth *m_north;
     AlarmEngine *m_alarms;
     AlarmNorth *m_alarmNorth;
+    HistoryRecorder *m_history = nullptr;
+    QList<WatchedItem> m_items; // every item of the watch lists, for the history
     bool m_stopping = false;
     bool m_stopped = false;
 };

@@ -129,3 +129,21 @@ FATEK_MSG(GatewayLogAlarmJournal, 1,
                             "alarm journal failed (alarms still run, not journaled): %1"))
 FATEK_MSG(GatewayConfigEmptyFile, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must name a file."))
+
+// The history (issue 51): gatewayhistoryconfig.cpp, gateway.cpp. %1 the key given.
+FATEK_MSG(GatewayConfigHistoryDefaultsUnused, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"%1\" is the setting of every item recorded with \"recordAll\": "
+                            "give \"recordAll\": true, or put \"history\" on the items in their "
+                            "watch lists."))
+FATEK_MSG(GatewayConfigHistoryPassword, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The history store's URL holds a password: keep it in ~/.pgpass or "
+                            "$PGPASSWORD (the service's EnvironmentFile), out of the "
+                            "configuration."))
+FATEK_MSG(GatewayLogHistory, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "history store failed (values still polled and published, not "
+                            "recorded): %1"))
+FATEK_MSG(GatewayLogHistoryRecovered, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "history store %1 written again"))
