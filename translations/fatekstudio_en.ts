@@ -316,6 +316,100 @@
         </message>
     </context>
     <context>
+        <name>Fatek::HistoryCenter</name>
+        <message>
+            <source>History: %1</source>
+            <translation>History: %1</translation>
+        </message>
+        <message>
+            <source>History: %1 is written again.</source>
+            <translation>History: %1 is written again.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::HistorySettingsDialog</name>
+        <message numerus="yes">
+            <source>History Settings (%n row(s))</source>
+            <translation>
+                <numerusform>History Settings (%n row)</numerusform>
+                <numerusform>History Settings (%n rows)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Bits and texts keep every change</source>
+            <translation>Bits and texts keep every change</translation>
+        </message>
+        <message>
+            <source>A change smaller than this from the last value kept is not recorded; 0: every change</source>
+            <translation>A change smaller than this from the last value kept is not recorded; 0: every change</translation>
+        </message>
+        <message>
+            <source> s</source>
+            <translation> s</translation>
+        </message>
+        <message>
+            <source>A value is recorded at least this often, changed or not, so that a flat line is known to be flat</source>
+            <translation>A value is recorded at least this often, changed or not, so that a flat line is known to be flat</translation>
+        </message>
+        <message>
+            <source>&amp;Deadband:</source>
+            <translation>&amp;Deadband:</translation>
+        </message>
+        <message>
+            <source>&amp;Heartbeat:</source>
+            <translation>&amp;Heartbeat:</translation>
+        </message>
+        <message>
+            <source>Recorded: the first value, every change beyond the deadband, every change of quality, and the value once per heartbeat.</source>
+            <translation>Recorded: the first value, every change beyond the deadband, every change of quality, and the value once per heartbeat.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::HistoryUi</name>
+        <message>
+            <source>Record in &amp;History</source>
+            <translation>Record in &amp;History</translation>
+        </message>
+        <message>
+            <source>Keep the values of the selected rows in the history, to look back at them in the trend (not in operator mode)</source>
+            <translation>Keep the values of the selected rows in the history, to look back at them in the trend (not in operator mode)</translation>
+        </message>
+        <message>
+            <source>History &amp;Settings…</source>
+            <translation>History &amp;Settings…</translation>
+        </message>
+        <message>
+            <source>Deadband and heartbeat of the selected rows&apos; recording</source>
+            <translation>Deadband and heartbeat of the selected rows&apos; recording</translation>
+        </message>
+        <message>
+            <source>Operator mode: what is recorded in the history cannot be changed.</source>
+            <translation>Operator mode: what is recorded in the history cannot be changed.</translation>
+        </message>
+        <message>
+            <source>Select the rows to record in the history.</source>
+            <translation>Select the rows to record in the history.</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n row(s) recorded in the history (%1).</source>
+            <translation>
+                <numerusform>%n row recorded in the history (%1).</numerusform>
+                <numerusform>%n rows recorded in the history (%1).</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n row(s) no longer recorded in the history.</source>
+            <translation>
+                <numerusform>%n row no longer recorded in the history.</numerusform>
+                <numerusform>%n rows no longer recorded in the history.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Select the rows whose recording to set.</source>
+            <translation>Select the rows whose recording to set.</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::Message</name>
         <message>
             <source>Outcome unknown: %1 It may have been carried out; reading it back as soon as the PLC answers.</source>
@@ -2299,6 +2393,95 @@
         </message>
     </context>
     <context>
+        <name>Fatek::TrendHistory</name>
+        <message numerus="yes">
+            <source>%n value(s) exported to %1.</source>
+            <translation>
+                <numerusform>%n value exported to %1.</numerusform>
+                <numerusform>%n values exported to %1.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>History: %1</source>
+            <translation>History: %1</translation>
+        </message>
+        <message>
+            <source>Export Range to CSV</source>
+            <translation>Export Range to CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message>
+            <source>None of the trend&apos;s items is recorded in the history.</source>
+            <translation>None of the trend&apos;s items is recorded in the history.</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>Cannot write %1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendNavigation</name>
+        <message>
+            <source>How much time the trend shows</source>
+            <translation>How much time the trend shows</translation>
+        </message>
+        <message>
+            <source>10 s</source>
+            <translation>10 s</translation>
+        </message>
+        <message>
+            <source>1 min</source>
+            <translation>1 min</translation>
+        </message>
+        <message>
+            <source>10 min</source>
+            <translation>10 min</translation>
+        </message>
+        <message>
+            <source>1 h</source>
+            <translation>1 h</translation>
+        </message>
+        <message>
+            <source>8 h</source>
+            <translation>8 h</translation>
+        </message>
+        <message>
+            <source>24 h</source>
+            <translation>24 h</translation>
+        </message>
+        <message>
+            <source>7 days</source>
+            <translation>7 days</translation>
+        </message>
+        <message>
+            <source>Custom…</source>
+            <translation>Custom…</translation>
+        </message>
+        <message>
+            <source>Scroll back in time (Shift+wheel over the chart too); Reset Zoom follows the present again</source>
+            <translation>Scroll back in time (Shift+wheel over the chart too); Reset Zoom follows the present again</translation>
+        </message>
+        <message>
+            <source>Custom Time Range</source>
+            <translation>Custom Time Range</translation>
+        </message>
+        <message>
+            <source>&amp;From:</source>
+            <translation>&amp;From:</translation>
+        </message>
+        <message>
+            <source>&amp;To:</source>
+            <translation>&amp;To:</translation>
+        </message>
+        <message>
+            <source>The end must come after the beginning.</source>
+            <translation>The end must come after the beginning.</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::UiText</name>
         <message>
             <source>bit</source>
@@ -3986,36 +4169,12 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Time</translation>
         </message>
         <message>
-            <source>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis</source>
-            <translation>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis</translation>
-        </message>
-        <message>
             <source>Pause</source>
             <translation>Pause</translation>
         </message>
         <message>
             <source>Freeze the trend (no new points until resumed)</source>
             <translation>Freeze the trend (no new points until resumed)</translation>
-        </message>
-        <message>
-            <source>How much time the trend shows</source>
-            <translation>How much time the trend shows</translation>
-        </message>
-        <message>
-            <source>10 s</source>
-            <translation>10 s</translation>
-        </message>
-        <message>
-            <source>1 min</source>
-            <translation>1 min</translation>
-        </message>
-        <message>
-            <source>10 min</source>
-            <translation>10 min</translation>
-        </message>
-        <message>
-            <source>1 h</source>
-            <translation>1 h</translation>
         </message>
         <message>
             <source>Reset Zoom</source>
@@ -4087,6 +4246,18 @@ The PLC's program is replaced; every page is read back and compared.</translatio
                 <numerusform>%n item added to the trend.</numerusform>
                 <numerusform>%n items added to the trend.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis, Shift+wheel to scroll it</source>
+            <translation>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis, Shift+wheel to scroll it</translation>
+        </message>
+        <message>
+            <source>Export Range…</source>
+            <translation>Export Range…</translation>
+        </message>
+        <message>
+            <source>Write the recorded values of the items in the time range shown to a CSV file</source>
+            <translation>Write the recorded values of the items in the time range shown to a CSV file</translation>
         </message>
     </context>
     <context>
@@ -4353,6 +4524,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
                 <numerusform>%n alarms defined (Alarms… in the context menu, Ctrl+Shift+A)</numerusform>
             </translation>
         </message>
+        <message>
+            <source>Recorded in the history (deadband %1, heartbeat %2 s)</source>
+            <translation>Recorded in the history (deadband %1, heartbeat %2 s)</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableEdits</name>
@@ -4396,6 +4571,18 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Alarms of %1</source>
             <translation>Alarms of %1</translation>
+        </message>
+        <message>
+            <source>The heartbeat must be %1 s to %2 s and the deadband 0 or more.</source>
+            <translation>The heartbeat must be %1 s to %2 s and the deadband 0 or more.</translation>
+        </message>
+        <message>
+            <source>Record in History</source>
+            <translation>Record in History</translation>
+        </message>
+        <message>
+            <source>Stop Recording</source>
+            <translation>Stop Recording</translation>
         </message>
     </context>
     <context>

@@ -316,6 +316,97 @@
         </message>
     </context>
     <context>
+        <name>Fatek::HistoryCenter</name>
+        <message>
+            <source>History: %1</source>
+            <translation>歷史資料：%1</translation>
+        </message>
+        <message>
+            <source>History: %1 is written again.</source>
+            <translation>歷史資料：%1 已恢復寫入。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::HistorySettingsDialog</name>
+        <message numerus="yes">
+            <source>History Settings (%n row(s))</source>
+            <translation>
+                <numerusform>歷史記錄設定（%n 列）</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Bits and texts keep every change</source>
+            <translation>位元與文字會保留每一次變化</translation>
+        </message>
+        <message>
+            <source>A change smaller than this from the last value kept is not recorded; 0: every change</source>
+            <translation>與上次保留的值相差小於此值的變化不記錄；0：每一次變化都記錄</translation>
+        </message>
+        <message>
+            <source> s</source>
+            <translation> 秒</translation>
+        </message>
+        <message>
+            <source>A value is recorded at least this often, changed or not, so that a flat line is known to be flat</source>
+            <translation>不論是否變化，至少每隔這段時間記錄一次數值，以確認平坦的線確實沒有變化</translation>
+        </message>
+        <message>
+            <source>&amp;Deadband:</source>
+            <translation>不感帶(&amp;D)：</translation>
+        </message>
+        <message>
+            <source>&amp;Heartbeat:</source>
+            <translation>心跳週期(&amp;H)：</translation>
+        </message>
+        <message>
+            <source>Recorded: the first value, every change beyond the deadband, every change of quality, and the value once per heartbeat.</source>
+            <translation>記錄內容：第一個值、每一次超過不感帶的變化、每一次品質變化，以及每個心跳週期一次的數值。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::HistoryUi</name>
+        <message>
+            <source>Record in &amp;History</source>
+            <translation>記錄到歷史資料(&amp;H)</translation>
+        </message>
+        <message>
+            <source>Keep the values of the selected rows in the history, to look back at them in the trend (not in operator mode)</source>
+            <translation>將所選列的數值保存到歷史資料，以便在趨勢圖中回顧（操作員模式下不可用）</translation>
+        </message>
+        <message>
+            <source>History &amp;Settings…</source>
+            <translation>歷史記錄設定(&amp;S)…</translation>
+        </message>
+        <message>
+            <source>Deadband and heartbeat of the selected rows&apos; recording</source>
+            <translation>所選列記錄的不感帶與心跳週期</translation>
+        </message>
+        <message>
+            <source>Operator mode: what is recorded in the history cannot be changed.</source>
+            <translation>操作員模式：無法變更要記錄到歷史資料的項目。</translation>
+        </message>
+        <message>
+            <source>Select the rows to record in the history.</source>
+            <translation>請選取要記錄到歷史資料的列。</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n row(s) recorded in the history (%1).</source>
+            <translation>
+                <numerusform>已將 %n 列記錄到歷史資料（%1）。</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n row(s) no longer recorded in the history.</source>
+            <translation>
+                <numerusform>已有 %n 列不再記錄到歷史資料。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Select the rows whose recording to set.</source>
+            <translation>請選取要設定記錄方式的列。</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::Message</name>
         <message>
             <source>Outcome unknown: %1 It may have been carried out; reading it back as soon as the PLC answers.</source>
@@ -2299,6 +2390,94 @@
         </message>
     </context>
     <context>
+        <name>Fatek::TrendHistory</name>
+        <message numerus="yes">
+            <source>%n value(s) exported to %1.</source>
+            <translation>
+                <numerusform>已將 %n 個數值匯出到 %1。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>History: %1</source>
+            <translation>歷史資料：%1</translation>
+        </message>
+        <message>
+            <source>Export Range to CSV</source>
+            <translation>將範圍匯出為 CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 檔案 (*.csv)</translation>
+        </message>
+        <message>
+            <source>None of the trend&apos;s items is recorded in the history.</source>
+            <translation>趨勢圖中沒有任何項目記錄在歷史資料中。</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>無法寫入 %1：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::TrendNavigation</name>
+        <message>
+            <source>How much time the trend shows</source>
+            <translation>趨勢圖顯示的時間長度</translation>
+        </message>
+        <message>
+            <source>10 s</source>
+            <translation>10 秒</translation>
+        </message>
+        <message>
+            <source>1 min</source>
+            <translation>1 分鐘</translation>
+        </message>
+        <message>
+            <source>10 min</source>
+            <translation>10 分鐘</translation>
+        </message>
+        <message>
+            <source>1 h</source>
+            <translation>1 小時</translation>
+        </message>
+        <message>
+            <source>8 h</source>
+            <translation>8 小時</translation>
+        </message>
+        <message>
+            <source>24 h</source>
+            <translation>24 小時</translation>
+        </message>
+        <message>
+            <source>7 days</source>
+            <translation>7 天</translation>
+        </message>
+        <message>
+            <source>Custom…</source>
+            <translation>自訂…</translation>
+        </message>
+        <message>
+            <source>Scroll back in time (Shift+wheel over the chart too); Reset Zoom follows the present again</source>
+            <translation>向前捲動時間（也可在圖上按住 Shift 並轉動滾輪）；「重設縮放」會再次跟隨目前時間</translation>
+        </message>
+        <message>
+            <source>Custom Time Range</source>
+            <translation>自訂時間範圍</translation>
+        </message>
+        <message>
+            <source>&amp;From:</source>
+            <translation>起(&amp;F)：</translation>
+        </message>
+        <message>
+            <source>&amp;To:</source>
+            <translation>迄(&amp;T)：</translation>
+        </message>
+        <message>
+            <source>The end must come after the beginning.</source>
+            <translation>結束時間必須晚於開始時間。</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::UiText</name>
         <message>
             <source>bit</source>
@@ -3976,36 +4155,12 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>時間</translation>
         </message>
         <message>
-            <source>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis</source>
-            <translation>拖曳矩形可放大，按右鍵可縮小，滾輪可縮放時間軸</translation>
-        </message>
-        <message>
             <source>Pause</source>
             <translation>暫停</translation>
         </message>
         <message>
             <source>Freeze the trend (no new points until resumed)</source>
             <translation>凍結趨勢圖（繼續之前不加入新的點）</translation>
-        </message>
-        <message>
-            <source>How much time the trend shows</source>
-            <translation>趨勢圖顯示的時間長度</translation>
-        </message>
-        <message>
-            <source>10 s</source>
-            <translation>10 秒</translation>
-        </message>
-        <message>
-            <source>1 min</source>
-            <translation>1 分鐘</translation>
-        </message>
-        <message>
-            <source>10 min</source>
-            <translation>10 分鐘</translation>
-        </message>
-        <message>
-            <source>1 h</source>
-            <translation>1 小時</translation>
         </message>
         <message>
             <source>Reset Zoom</source>
@@ -4076,6 +4231,18 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>
                 <numerusform>已將 %n 個項目加入趨勢圖。</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Drag a rectangle to zoom in, right-click to zoom out, wheel to zoom the time axis, Shift+wheel to scroll it</source>
+            <translation>拖曳矩形可放大，按右鍵可縮小，滾輪可縮放時間軸，Shift+滾輪可捲動時間軸</translation>
+        </message>
+        <message>
+            <source>Export Range…</source>
+            <translation>匯出範圍…</translation>
+        </message>
+        <message>
+            <source>Write the recorded values of the items in the time range shown to a CSV file</source>
+            <translation>將顯示的時間範圍內各項目的記錄數值寫入 CSV 檔案</translation>
         </message>
     </context>
     <context>
@@ -4341,6 +4508,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
                 <numerusform>已定義 %n 個警報（右鍵選單的「警報…」，Ctrl+Shift+A）</numerusform>
             </translation>
         </message>
+        <message>
+            <source>Recorded in the history (deadband %1, heartbeat %2 s)</source>
+            <translation>已記錄到歷史資料（不感帶 %1，心跳週期 %2 秒）</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableEdits</name>
@@ -4381,6 +4552,18 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Alarms of %1</source>
             <translation>%1 的警報</translation>
+        </message>
+        <message>
+            <source>The heartbeat must be %1 s to %2 s and the deadband 0 or more.</source>
+            <translation>心跳週期必須為 %1 秒到 %2 秒，不感帶必須為 0 或以上。</translation>
+        </message>
+        <message>
+            <source>Record in History</source>
+            <translation>記錄到歷史資料</translation>
+        </message>
+        <message>
+            <source>Stop Recording</source>
+            <translation>停止記錄</translation>
         </message>
     </context>
     <context>

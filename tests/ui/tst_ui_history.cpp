@@ -402,8 +402,7 @@ void TestUiHistory::scrollBackIntoRecordedValues()
         QCOMPARE(fields.at(4), History::qualityName(s.quality));
         if (s.quality == HistoryQuality::Good) {
             QCOMPARE(fields.at(2).toDouble(), s.value);
-            QCOMPARE(fields.at(3),
-                     QStringLiteral("0x") + QString::number(s.raw, 16).toUpper());
+            QCOMPARE(fields.at(3), QStringLiteral("0x%1").arg(s.raw, 16, 16, QLatin1Char('0')));
         } else {
             QVERIFY(fields.at(2).isEmpty());
             sawStale = true;

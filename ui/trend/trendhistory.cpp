@@ -1,9 +1,9 @@
 #include "trendhistory.h"
 
+#include "core/history/historycsv.h"
 #include "core/history/historymessages.h"
 #include "core/history/historyreducer.h"
 #include "core/history/historywriter.h"
-#include "core/watch/csvfield.h"
 #include "core/watch/safefile.h"
 #include "trendline.h"
 #include "ui/common/lastdirectory.h"
@@ -14,7 +14,6 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QLocale>
 #include <QPen>
 #include <QtCharts/QChart>
 #include <QtCharts/QDateTimeAxis>
@@ -24,7 +23,6 @@
 #include <QtCharts/QValueAxis>
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 
 namespace Fatek {
@@ -291,28 +289,28 @@ QString TrendHistory::askExportPath(QWidget *parent)
     return path;
 }
 
-void TrendHistory::exportRange(const QStringList &keys, qint64 fromMs, qint64 toMs,
+void TrendHistory::exportRange(const QList<HistorySeries> &series, qint64 fromMs, qint64 toMs,
                                const QString &path)
 {
     HistoryWriter *writer = m_center ? m_center->readableWriter() : nullptr;
-    if (keys.isEmpty() || !writer) {
+    if (series.isEmpty() || !writer) {
         Q_EMIT exportFinished(path, 0,
                               tr("None of the trend's items is recorded in the history."));
         return;
     }
     struct Job
     {
-        QStringList keys;
+        QList<HistorySeries> series;
         std::vector<std::vector<HistorySample>> samples;
         std::vector<bool> found;
         qsizetype waiting = 0;
         QString error;
     };
     auto job = std::make_shared<Job>();
-    job->keys = keys;
-    job->samples.resize(static_cast<std::size_t>(keys.size()));
-    job->found.resize(static_cast<std::size_t>(keys.size()), false);
-    job->waiting = keys.size();
+    job->series = series;
+    job->samples.resize(static_cast<std::size_t>(series.size()));
+    job->found.resize(static_cast<std::size_t>(series.size()), false);
+    job->waiting = series.size();
     const auto finish = [this, job, path, fromMs, toMs] {
         if (job->error.isEmpty()
             && std::none_of(job->found.cbegin(), job->found.cend(), [](bool f) { return f; }))
@@ -321,10 +319,12 @@ void TrendHistory::exportRange(const QStringList &keys, qint64 fromMs, qint64 to
             Q_EMIT exportFinished(path, 0, job->error);
             return;
         }
+        // One series after the other would be HistoryCsv::rows; the trend's items side by side
+        // read better in time order.
         struct Row
         {
             qint64 timeMs;
-            qsizetype series;
+            std::size_t series;
             const HistorySample *sample;
         };
         std::vector<Row> rows;
@@ -332,39 +332,30 @@ void TrendHistory::exportRange(const QStringList &keys, qint64 fromMs, qint64 to
             for (const HistorySample &s : job->samples[i]) {
                 // The store adds the sample before the range (the value the line enters with).
                 if (s.timeMs >= fromMs && s.timeMs < toMs)
-                    rows.push_back({s.timeMs, static_cast<qsizetype>(i), &s});
+                    rows.push_back({s.timeMs, i, &s});
             }
         }
         std::stable_sort(rows.begin(), rows.end(),
                          [](const Row &a, const Row &b) { return a.timeMs < b.timeMs; });
-        QString text = QStringLiteral("time,series,value,raw,quality\n");
+        QByteArray text = HistoryCsv::header();
         for (const Row &row : rows) {
-            const QDateTime local = QDateTime::fromMSecsSinceEpoch(row.timeMs);
-            const QDateTime withOffset
-                = QDateTime::fromMSecsSinceEpoch(row.timeMs, Qt::OffsetFromUTC,
-                                                 local.offsetFromUtc());
-            const HistorySample &s = *row.sample;
-            text += withOffset.toString(Qt::ISODateWithMs) + QLatin1Char(',')
-                    + CsvField::quoted(job->keys.at(row.series)) + QLatin1Char(',')
-                    + (std::isnan(s.value) ? QString()
-                                           : QString::number(s.value, 'g',
-                                                             QLocale::FloatingPointShortest))
-                    + QStringLiteral(",0x") + QString::number(s.raw, 16).toUpper()
-                    + QLatin1Char(',') + History::qualityName(s.quality) + QLatin1Char('\n');
+            const HistorySeries &series = job->series.at(static_cast<qsizetype>(row.series));
+            text += HistoryCsv::rows(series, {*row.sample});
         }
-        const QString error = SafeFile::write(path, text.toUtf8());
+        const QString error = SafeFile::write(path, text);
         Q_EMIT exportFinished(path, error.isEmpty() ? static_cast<int>(rows.size()) : 0,
                               error.isEmpty() ? QString()
                                               : tr("Cannot write %1: %2")
                                                     .arg(QDir::toNativeSeparators(path), error));
     };
-    for (qsizetype i = 0; i < keys.size(); ++i) {
+    for (qsizetype i = 0; i < series.size(); ++i) {
         writer->querySamples(
-            keys.at(i), fromMs, toMs, this,
+            series.at(i).key(), fromMs, toMs, this,
             [job, i, finish](const Result<std::vector<HistorySample>> &samples) {
+                const auto n = static_cast<std::size_t>(i);
                 if (samples) {
-                    job->samples[static_cast<std::size_t>(i)] = *samples;
-                    job->found[static_cast<std::size_t>(i)] = true;
+                    job->samples[n] = *samples;
+                    job->found[n] = true;
                 } else if (!unknownSeries(samples.error()) && job->error.isEmpty()) {
                     job->error = translated(samples.error().message);
                 }

@@ -59,10 +59,12 @@ public:
     // Whether no request is waiting or under way (tests wait for it).
     bool isIdle() const;
 
-    // Writes the samples of `keys` with fromMs <= time < toMs to `path` (CSV: time in local ISO
-    // 8601 with its offset, series, value, raw in hex, quality), atomically; exportFinished says
-    // how it went. Series the store does not have are left out.
-    void exportRange(const QStringList &keys, qint64 fromMs, qint64 toMs, const QString &path);
+    // Writes the samples of `series` (by key; the format says how a value is written) with
+    // fromMs <= time < toMs to `path` in time order (HistoryCsv: time in local ISO 8601 with its
+    // offset, series, value, raw in hex, quality), atomically; exportFinished says how it went.
+    // Series the store does not have are left out.
+    void exportRange(const QList<HistorySeries> &series, qint64 fromMs, qint64 toMs,
+                     const QString &path);
     // Asks where to export (a file dialog); empty when cancelled.
     static QString askExportPath(QWidget *parent);
 

@@ -573,12 +573,20 @@ void TrendView::refresh()
 
 void TrendView::exportRange(const QString &path)
 {
+    QList<HistorySeries> series;
     QStringList keys;
     for (const auto &item : m_items) {
-        if (const QString key = m_history->seriesKey(*item); !key.isEmpty() && !keys.contains(key))
-            keys.append(key);
+        const QString key = m_history->seriesKey(*item);
+        if (key.isEmpty() || keys.contains(key))
+            continue;
+        keys.append(key);
+        HistorySeries s;
+        s.source = key.section(QLatin1Char('/'), 0, -2);
+        s.item = key.section(QLatin1Char('/'), -1);
+        s.format = ValueFormat::name(item->spec.format);
+        series.append(s);
     }
-    m_history->exportRange(keys, m_timeAxis->min().toMSecsSinceEpoch(),
+    m_history->exportRange(series, m_timeAxis->min().toMSecsSinceEpoch(),
                            m_timeAxis->max().toMSecsSinceEpoch(), path);
 }
 
