@@ -61,15 +61,46 @@ public:
     void plantLinkState(LinkState state, const Message &reason) override;
 
 private:
-    // Implementation's own (the helper that writes historyrecorder.cpp adds what it needs).
-    struct Item;
+    struct Item
+    {
+        WatchedItem watched;
+        HistorySetting setting;
+        QString id;        // "1-R100" (WatchList::itemId)
+        qint64 series = 0; // the sink's handle
+        int width = 16;
+        bool numeric = false;  // has a number a deadband is measured in (not a bit, not ASCII)
+        bool needFirst = true; // the next value is kept (start, attach, link up, new format)
+        std::optional<HistorySample> kept; // the last one kept
+        qint64 keptAtMs = 0;               // m_clock when it was kept: the heartbeat's start
+        std::optional<HistorySample> seen; // the last one read: what a heartbeat keeps
+    };
+    using Records = std::vector<HistoryRecord>;
+
+    // Applies m_given and m_recordAll: items that stay keep their state, those that go end.
+    void rebuild();
+    void subscribe();
+    HistorySeries seriesOf(const Item &item) const;
+    // The sample a value stands for; nothing for a good value not read yet.
+    std::optional<HistorySample> sampleOf(const Item &item, const WatchItemValue &value,
+                                          qint64 nowMs) const;
+    bool worthKeeping(Item &item, const HistorySample &sample, qint64 nowMs) const;
+    bool heartbeatDue(Item &item, qint64 nowMs) const;
+    void keep(Item &item, HistorySample sample, qint64 nowMs, Records &out) const;
+    // An Off sample (the line ends) unless the item's line already ended or never began.
+    void keepOff(Item &item, qint64 nowMs, Records &out) const;
+    void keepOffAll(qint64 nowMs);
+    void flush(Records &out);
 
     QString m_source;
     HistorySink *m_sink;
     Clock m_clock;
     QPointer<PlantConnection> m_plant;
     std::optional<HistorySetting> m_recordAll;
-    std::vector<Item> *m_itemsPlaceholder = nullptr; // replaced by the implementation
+    QList<WatchedItem> m_given; // as setItems had them (setRecordAll applies to them again)
+    std::vector<Item> m_items;  // the key of m_items[i] is m_firstKey + i
+    QHash<QString, std::size_t> m_index; // by id
+    std::uint64_t m_firstKey = 0;
+    bool m_linkDown = false; // Off was kept for the link: no bad values until it is up again
     QTimer m_timer;
 };
 

@@ -234,9 +234,7 @@ bool isBitKind(AlarmKind kind)
 
 QString alarmId(const WatchItemSpec &item, AlarmKind kind)
 {
-    return QStringLiteral("%1-%2-%3")
-        .arg(item.station)
-        .arg(QString::fromStdString(item.address.toString()), kindName(kind));
+    return WatchList::itemId(item) + QLatin1Char('-') + kindName(kind);
 }
 
 QString defaultMessage(const WatchItemSpec &item, AlarmKind kind)

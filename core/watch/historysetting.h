@@ -1,8 +1,16 @@
 #pragma once
 
+#include "core/protocol/result.h"
+
+#include <QJsonValue>
 #include <QString>
 
+#include <functional>
+#include <optional>
+
 namespace Fatek {
+
+struct WatchItemSpec;
 
 // How one watch item is recorded in the history (issue 51); an item without one is not
 // recorded. In the watch list file: "history": {"deadband": 0.5, "heartbeatS": 600}, both keys
@@ -21,5 +29,22 @@ struct HistorySetting
 
     bool operator==(const HistorySetting &) const = default;
 };
+
+namespace HistorySettings {
+
+// The item's setting checked against it: deadband finite and not negative, none on a bit or
+// ASCII item (no number to measure it in), heartbeat from MinHeartbeatS to MaxHeartbeatS.
+// Errors start with "history: ". Ok without a setting.
+Status validate(const WatchItemSpec &item);
+
+// The item's "history" object of a watch list file: every key known (an unknown one is refused
+// by name), each value of its type. `keyLine` gives the line of a key (0 if unknown) so that the
+// error names it. Nothing when the item has no "history".
+Result<std::optional<HistorySetting>> fromJson(const QJsonValue &value,
+                                               const std::function<int(const QString &)> &keyLine);
+// Both keys, defaults too: the file shows what the item is recorded with.
+QJsonValue toJson(const HistorySetting &setting);
+
+} // namespace HistorySettings
 
 } // namespace Fatek

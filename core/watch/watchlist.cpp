@@ -53,7 +53,16 @@ Status validateEntry(const WatchItemSpec &entry)
                                  .arg(lowerFirst(QString::fromStdString(s.error().text()))));
         }
     }
-    return Alarms::validate(entry);
+    if (Status s = Alarms::validate(entry); !s)
+        return s;
+    return HistorySettings::validate(entry);
+}
+
+QString itemId(const WatchItemSpec &item)
+{
+    return QStringLiteral("%1-%2")
+        .arg(item.station)
+        .arg(QString::fromStdString(item.address.toString()));
 }
 
 Status validate(const WatchListFile &file)

@@ -3,12 +3,15 @@
 #include "alarmdefinition.h"
 #include "core/protocol/address.h"
 #include "core/protocol/result.h"
+#include "historysetting.h"
 #include "symboltable.h"
 #include "valueformat.h"
 
 #include <QByteArray>
 #include <QList>
 #include <QString>
+
+#include <optional>
 
 namespace Fatek {
 
@@ -27,6 +30,8 @@ struct WatchItemSpec
     bool allowNonFinite = false;
     // The item's alarms (issue 50), at most one per kind (Alarms::validate).
     QList<AlarmDefinition> alarms;
+    // How the item is recorded in the history (issue 51); nothing: not recorded.
+    std::optional<HistorySetting> history;
 
     bool operator==(const WatchItemSpec &) const = default;
 };
@@ -57,26 +62,34 @@ struct WatchListFile
 //    "confirmWrites":true,"items":[{"address":"R100","station":1,"format":"signed","swapWords":false,
 //    "name":"Tank level","comment":"...","allowNonFinite":true,
 //    "alarms":[{"type":"high","limit":80,"deadband":2,"onDelayMs":0,"offDelayMs":0,
-//               "priority":"high","message":"Tank level high","group":"Tank farm"}]}]}],
+//               "priority":"high","message":"Tank level high","group":"Tank farm"}],
+//    "history":{"deadband":0.5,"heartbeatS":600}}]}],
 //   "symbols":[{"address":"R12","name":"Tank level","comment":"..."}]}
 // "symbols" (the imported names, SymbolTable) is optional and written only when there are names,
 // an item's "allowNonFinite" only when true: version 1 readers ignore unknown keys, so the version
-// stays 1; a file with alarms is version 2 (Alarms::fromJson: every key of an alarm is known,
-// an unknown one is refused with its line). A key given twice in one object is an error ("line 4:
+// stays 1; a file with alarms or history settings is version 2 (Alarms::fromJson,
+// HistorySettings::fromJson: every key of an alarm or a history setting is known, an unknown one is
+// refused with its line). A key given twice in one object is an error ("line 4:
 // duplicate key ..."), not the last one silently. Errors name the place ("table 2, item 5: ...",
 // "line 7: ...").
 namespace WatchList {
 
 inline constexpr const char *FormatMarker = "fatek-studio-watchlist";
 inline constexpr int CurrentVersion = 1;
-// A file whose items have alarms (issue 50) is version 2; this reader reads both.
-inline constexpr int AlarmsVersion = 2;
+// A file whose items have alarms (issue 50) or history settings (issue 51) is version 2: a
+// version 1 reader would drop them unseen on its next save. This reader reads both.
+inline constexpr int ItemSettingsVersion = 2;
+inline constexpr int AlarmsVersion = ItemSettingsVersion;
 inline constexpr int MinIntervalMs = 10;
 inline constexpr int MaxIntervalMs = 3600000;
 inline constexpr int MaxRangeItems = 1024;
 // One table (or one CSV import) holds at most this many items: more than every element of the
 // largest model, and a bound on what a damaged or hostile file can make the app hold.
 inline constexpr int MaxTableItems = 65536;
+
+// How alarm ids and history series name an item within its connection: "1-R100" (station and
+// address).
+QString itemId(const WatchItemSpec &item);
 
 // Station 1..254 (0 is broadcast: no answer to watch), the address exists, the format applies to it
 // and every register it spans exists (R65535 as float would need R65536).

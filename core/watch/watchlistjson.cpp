@@ -61,8 +61,11 @@ Result<int> intMember(const QJsonObject &object, const QString &key, int fallbac
 
 // The line of a key of an item's alarm N, for the alarms' errors.
 using AlarmKeyLine = std::function<int(qsizetype, const QString &)>;
+// The line of a key of the item's history setting.
+using HistoryKeyLine = std::function<int(const QString &)>;
 
-Result<WatchItemSpec> entryFromJson(const QJsonValue &value, const AlarmKeyLine &alarmKeyLine)
+Result<WatchItemSpec> entryFromJson(const QJsonValue &value, const AlarmKeyLine &alarmKeyLine,
+                                    const HistoryKeyLine &historyKeyLine)
 {
     if (!value.isObject())
         return fileError(QStringLiteral("an item must be a JSON object"));
@@ -118,6 +121,11 @@ Result<WatchItemSpec> entryFromJson(const QJsonValue &value, const AlarmKeyLine 
     if (!alarms)
         return alarms.error();
     entry.alarms = std::move(alarms).value();
+    auto history
+        = HistorySettings::fromJson(object.value(QStringLiteral("history")), historyKeyLine);
+    if (!history)
+        return history.error();
+    entry.history = *history;
 
     if (Status s = validateEntry(entry); !s)
         return s.error();
@@ -163,7 +171,13 @@ Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index,
                                       QStringLiteral("alarms"), alarm},
                                      key);
         };
-        auto entry = entryFromJson(array.at(i), alarmKeyLine);
+        const auto historyKeyLine = [&](const QString &key) {
+            return JsonKeys::keyLine(json,
+                                     {QStringLiteral("tables"), index, QStringLiteral("items"), i,
+                                      QStringLiteral("history")},
+                                     key);
+        };
+        auto entry = entryFromJson(array.at(i), alarmKeyLine, historyKeyLine);
         if (!entry)
             return atPlace(itemPlace(index, i), entry.error());
         table.items.append(std::move(entry).value());
@@ -242,13 +256,13 @@ Result<WatchListFile> load(const QByteArray &json)
         return fileError(QStringLiteral("The watch list has no valid \"version\" (expected %1).")
                              .arg(CurrentVersion));
     }
-    if (versionNumber > AlarmsVersion) {
+    if (versionNumber > ItemSettingsVersion) {
         return fileError(
             QStringLiteral(
                 "The watch list is version %1, written by a newer FATEK Studio; this one "
                 "reads version %2.")
                 .arg(versionNumber)
-                .arg(AlarmsVersion));
+                .arg(ItemSettingsVersion));
     }
 
     const QJsonValue tables = root.value(QStringLiteral("tables"));
@@ -283,7 +297,7 @@ Result<WatchListFile> loadFromFile(const QString &path)
 QByteArray save(const WatchListFile &file)
 {
     QJsonArray tables;
-    bool hasAlarms = false;
+    bool hasItemSettings = false; // alarms or history: version 2
     for (const WatchTableSpec &table : file.tables) {
         QJsonArray items;
         for (const WatchItemSpec &entry : table.items) {
@@ -300,7 +314,11 @@ QByteArray save(const WatchListFile &file)
                 item.insert(QStringLiteral("allowNonFinite"), true);
             if (!entry.alarms.isEmpty()) {
                 item.insert(QStringLiteral("alarms"), Alarms::toJson(entry.alarms));
-                hasAlarms = true;
+                hasItemSettings = true;
+            }
+            if (entry.history) {
+                item.insert(QStringLiteral("history"), HistorySettings::toJson(*entry.history));
+                hasItemSettings = true;
             }
             items.append(item);
         }
@@ -313,9 +331,10 @@ QByteArray save(const WatchListFile &file)
     }
     QJsonObject root{
         {QStringLiteral("format"), QLatin1String(FormatMarker)},
-        // Version 2 only with alarms: a version 1 reader would drop them unseen on its next save,
-        // so it is told the file is newer instead; every other file stays version 1.
-        {QStringLiteral("version"), hasAlarms ? AlarmsVersion : CurrentVersion},
+        // Version 2 only with alarms or history settings: a version 1 reader would drop them
+        // unseen on its next save, so it is told the file is newer instead; every other file
+        // stays version 1.
+        {QStringLiteral("version"), hasItemSettings ? ItemSettingsVersion : CurrentVersion},
         {QStringLiteral("tables"), tables},
     };
     if (!file.symbols.isEmpty()) {
