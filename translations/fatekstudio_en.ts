@@ -4573,10 +4573,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Alarms of %1</translation>
         </message>
         <message>
-            <source>The heartbeat must be %1 s to %2 s and the deadband 0 or more.</source>
-            <translation>The heartbeat must be %1 s to %2 s and the deadband 0 or more.</translation>
-        </message>
-        <message>
             <source>Record in History</source>
             <translation>Record in History</translation>
         </message>

@@ -4554,10 +4554,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>%1 的警報</translation>
         </message>
         <message>
-            <source>The heartbeat must be %1 s to %2 s and the deadband 0 or more.</source>
-            <translation>心跳週期必須為 %1 秒到 %2 秒，不感帶必須為 0 或以上。</translation>
-        </message>
-        <message>
             <source>Record in History</source>
             <translation>記錄到歷史資料</translation>
         </message>

@@ -35,8 +35,7 @@ bool isDatabaseUrl(const QString &location)
 
 } // namespace
 
-HistoryCenter::HistoryCenter(ConnectionManager *manager, const QString &location,
-                             QObject *parent)
+HistoryCenter::HistoryCenter(ConnectionManager *manager, const QString &location, QObject *parent)
     : QObject(parent)
     , m_manager(manager)
     , m_location(location.isEmpty() ? defaultLocation() : location)
@@ -119,9 +118,7 @@ HistoryRecorder *HistoryCenter::recorder(const QString &connection) const
 
 QString HistoryCenter::itemKey(const WatchItemSpec &spec)
 {
-    // As Alarms::alarmId names an item, without the kind.
-    return QStringLiteral("%1-%2").arg(spec.station).arg(
-        QString::fromStdString(spec.address.toString()));
+    return WatchList::itemId(spec);
 }
 
 QString HistoryCenter::seriesKey(const WatchTableModel *model, const WatchItemSpec &spec) const

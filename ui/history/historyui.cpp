@@ -70,8 +70,8 @@ void HistoryUi::addTable(WatchTableWidget *table)
 {
     m_center->addTable(table);
     QTableView *view = table->view();
-    auto *record = new QAction(QIcon(QStringLiteral(":/icons/history.svg")),
-                               tr("Record in &History"), view);
+    auto *record
+        = new QAction(QIcon(QStringLiteral(":/icons/history.svg")), tr("Record in &History"), view);
     record->setObjectName(QStringLiteral("recordHistoryAction"));
     record->setCheckable(true);
     record->setToolTip(tr("Keep the values of the selected rows in the history, to look back at "

@@ -67,8 +67,8 @@ void TrendChartView::wheelEvent(QWheelEvent *event)
     // Shift+wheel scrolls the time axis, a notch an eighth of it (some systems turn a wheel with
     // Shift held into a horizontal one).
     if (event->modifiers() & Qt::ShiftModifier) {
-        const int notches = event->angleDelta().y() != 0 ? event->angleDelta().y()
-                                                         : event->angleDelta().x();
+        const int notches
+            = event->angleDelta().y() != 0 ? event->angleDelta().y() : event->angleDelta().x();
         if (notches == 0)
             return QChartView::wheelEvent(event);
         Q_EMIT userZoomed();

@@ -9,6 +9,7 @@
 #include "ui/common/lastdirectory.h"
 #include "ui/common/uitext.h"
 #include "ui/history/historycenter.h"
+#include "ui/watch/watchtablemodel.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -67,6 +68,11 @@ void TrendHistory::setCenter(HistoryCenter *center)
     }
 }
 
+HistoryCenter *TrendHistory::center() const
+{
+    return m_center.data();
+}
+
 QString TrendHistory::seriesKey(const TrendLine &line) const
 {
     return m_center && line.model ? m_center->seriesKey(line.model, line.spec) : QString();
@@ -102,7 +108,7 @@ void TrendHistory::draw(TrendLine &line, const QString &name, qint64 fromMs, qin
     }
     const double pixelMs = double(toMs - fromMs) / std::max(pixels, 1);
     const auto covers = [&](const std::optional<Range> &r) {
-        return r && r->fromMs <= fromMs && r->toMs + pixelMs >= double(endMs)
+        return r && r->fromMs <= fromMs && double(r->toMs) + pixelMs >= double(endMs)
                && r->msPerBucket() <= 2 * pixelMs;
     };
     if (!covers(state.held) && !covers(state.asked) && !covers(state.wanted)) {
@@ -119,8 +125,8 @@ void TrendHistory::draw(TrendLine &line, const QString &name, qint64 fromMs, qin
     std::optional<QPointF> join;
     if (!live.isEmpty() && !live.at(0).gap && endMs == live.at(0).timeMs && !state.points.empty()) {
         const HistoryPoint &last = state.points.back();
-        const int heartbeatS = line.spec.history ? line.spec.history->heartbeatS
-                                                 : History::DefaultHeartbeatS;
+        const int heartbeatS
+            = line.spec.history ? line.spec.history->heartbeatS : History::DefaultHeartbeatS;
         // A silence longer than the heartbeat allows is a gap (the studio was not running).
         if (!last.gap && last.timeMs < endMs
             && endMs - last.timeMs <= History::maxSilenceMs(heartbeatS))
@@ -294,8 +300,7 @@ void TrendHistory::exportRange(const QList<HistorySeries> &series, qint64 fromMs
 {
     HistoryWriter *writer = m_center ? m_center->readableWriter() : nullptr;
     if (series.isEmpty() || !writer) {
-        Q_EMIT exportFinished(path, 0,
-                              tr("None of the trend's items is recorded in the history."));
+        Q_EMIT exportFinished(path, 0, tr("None of the trend's items is recorded in the history."));
         return;
     }
     struct Job
@@ -339,29 +344,29 @@ void TrendHistory::exportRange(const QList<HistorySeries> &series, qint64 fromMs
                          [](const Row &a, const Row &b) { return a.timeMs < b.timeMs; });
         QByteArray text = HistoryCsv::header();
         for (const Row &row : rows) {
-            const HistorySeries &series = job->series.at(static_cast<qsizetype>(row.series));
-            text += HistoryCsv::rows(series, {*row.sample});
+            text += HistoryCsv::rows(job->series.at(static_cast<qsizetype>(row.series)),
+                                     {*row.sample});
         }
         const QString error = SafeFile::write(path, text);
-        Q_EMIT exportFinished(path, error.isEmpty() ? static_cast<int>(rows.size()) : 0,
-                              error.isEmpty() ? QString()
-                                              : tr("Cannot write %1: %2")
-                                                    .arg(QDir::toNativeSeparators(path), error));
+        Q_EMIT exportFinished(
+            path, error.isEmpty() ? static_cast<int>(rows.size()) : 0,
+            error.isEmpty() ? QString()
+                            : tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), error));
     };
     for (qsizetype i = 0; i < series.size(); ++i) {
-        writer->querySamples(
-            series.at(i).key(), fromMs, toMs, this,
-            [job, i, finish](const Result<std::vector<HistorySample>> &samples) {
-                const auto n = static_cast<std::size_t>(i);
-                if (samples) {
-                    job->samples[n] = *samples;
-                    job->found[n] = true;
-                } else if (!unknownSeries(samples.error()) && job->error.isEmpty()) {
-                    job->error = translated(samples.error().message);
-                }
-                if (--job->waiting == 0)
-                    finish();
-            });
+        writer->querySamples(series.at(i).key(), fromMs, toMs, this,
+                             [job, i, finish](const Result<std::vector<HistorySample>> &samples) {
+                                 const auto n = static_cast<std::size_t>(i);
+                                 if (samples) {
+                                     job->samples[n] = *samples;
+                                     job->found[n] = true;
+                                 } else if (!unknownSeries(samples.error())
+                                            && job->error.isEmpty()) {
+                                     job->error = translated(samples.error().message);
+                                 }
+                                 if (--job->waiting == 0)
+                                     finish();
+                             });
     }
 }
 

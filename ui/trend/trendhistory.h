@@ -1,12 +1,13 @@
 #pragma once
 
 #include "core/history/historytypes.h"
+#include "core/protocol/result.h"
 #include "trendvalueaxes.h"
 
 #include <QList>
 #include <QObject>
-#include <QPointer>
 #include <QPointF>
+#include <QPointer>
 #include <QTimer>
 
 #include <map>
@@ -44,7 +45,7 @@ public:
 
     // Where the series are read (nullptr: nowhere; the trend shows its live buffers only).
     void setCenter(HistoryCenter *center);
-    HistoryCenter *center() const { return m_center; }
+    HistoryCenter *center() const;
     // The series a line is recorded as ("Line 1/1-R1"); empty without a center or connection.
     QString seriesKey(const TrendLine &line) const;
 

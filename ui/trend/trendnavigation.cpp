@@ -40,8 +40,8 @@ TrendNavigation::TrendNavigation(QChart *chart, QDateTimeAxis *timeAxis, QWidget
     m_windowBox = new QComboBox(parent);
     m_windowBox->setObjectName(QStringLiteral("trendWindow"));
     m_windowBox->setToolTip(tr("How much time the trend shows"));
-    const QStringList names = {tr("10 s"), tr("1 min"), tr("10 min"), tr("1 h"),
-                               tr("8 h"),  tr("24 h"),  tr("7 days")};
+    const QStringList names
+        = {tr("10 s"), tr("1 min"), tr("10 min"), tr("1 h"), tr("8 h"), tr("24 h"), tr("7 days")};
     const QList<qint64> windows = windowChoicesMs();
     for (qsizetype i = 0; i < windows.size(); ++i)
         m_windowBox->addItem(names.at(i), windows.at(i));
@@ -90,7 +90,7 @@ void TrendNavigation::showRange(qint64 fromMs, qint64 toMs, qint64 nowMs)
     m_toMs = toMs;
     const qint64 span = std::max<qint64>(toMs - fromMs, unitMs);
     // The date matters once the range is longer than a day.
-    const QString format = span > 2 * dayMs  ? QStringLiteral("MM-dd HH:mm")
+    const QString format = span > 2 * dayMs    ? QStringLiteral("MM-dd HH:mm")
                            : span > 2 * hourMs ? QStringLiteral("HH:mm")
                                                : QStringLiteral("HH:mm:ss");
     if (format != m_timeAxis->format()) {
@@ -116,7 +116,8 @@ void TrendNavigation::scrolled(int value)
 void TrendNavigation::fitTicks()
 {
     const QRectF area = m_chart->plotArea();
-    const QString sample = QDateTime(QDate(2000, 12, 28), QTime(20, 58, 58)).toString(m_timeAxis->format());
+    const QString sample
+        = QDateTime(QDate(2000, 12, 28), QTime(20, 58, 58)).toString(m_timeAxis->format());
     const int label = QFontMetrics(m_timeAxis->labelsFont()).horizontalAdvance(sample);
     const int fit = static_cast<int>(area.width()) / (label + label / 2) + 1;
     const int ticks = std::clamp(fit, 2, 7);

@@ -259,20 +259,21 @@ Status WatchTableEdits::setAlarms(int row, const QList<AlarmDefinition> &alarms)
 Status WatchTableEdits::setHistory(const QList<int> &rows,
                                    const std::optional<HistorySetting> &setting)
 {
-    if (setting
-        && (setting->heartbeatS < HistorySetting::MinHeartbeatS
-            || setting->heartbeatS > HistorySetting::MaxHeartbeatS || !(setting->deadband >= 0)))
-        return makeError(ErrorKind::InvalidRequest,
-                         tr("The heartbeat must be %1 s to %2 s and the deadband 0 or more.")
-                             .arg(HistorySetting::MinHeartbeatS)
-                             .arg(HistorySetting::MaxHeartbeatS)
-                             .toStdString());
+    Status result = Ok{};
     auto *step = new WatchRowsCommand(m_model, WatchRowsCommand::Kind::Edit,
                                       setting ? tr("Record in History") : tr("Stop Recording"));
     for (int r : validRows(rows, m_model->rowCount())) {
         const WatchItemSpec before = m_model->item(r);
         WatchItemSpec spec = before;
         spec.history = setting;
+        // Bits and ASCII take no deadband: among other rows they are recorded at every change.
+        if (spec.history && !HistorySettings::validate(spec))
+            spec.history->deadband = 0;
+        if (Status s = HistorySettings::validate(spec); !s) {
+            if (result)
+                result = s;
+            continue;
+        }
         if (spec != before)
             step->edits.append({r, before, spec});
     }
@@ -280,7 +281,7 @@ Status WatchTableEdits::setHistory(const QList<int> &rows,
         delete step;
     else
         m_undo.push(step);
-    return Ok{};
+    return result;
 }
 
 } // namespace Fatek

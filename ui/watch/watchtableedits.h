@@ -35,6 +35,8 @@ public:
     Status setFormat(int row, DisplayFormat format, bool swapWords);
     Status setFormats(const QList<int> &rows, DisplayFormat format);
     Status setAlarms(int row, const QList<AlarmDefinition> &alarms);
+    // Rows that cannot take the setting's deadband (bits, ASCII) get none; the first refusal is
+    // returned, the other rows are set.
     Status setHistory(const QList<int> &rows, const std::optional<HistorySetting> &setting);
 
 private:
