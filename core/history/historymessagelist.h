@@ -39,8 +39,8 @@ FATEK_MSG(HistorySamplesDropped, 2,
                             "The history store %1 could not be written for a while: %2 samples "
                             "were lost (the oldest)."))
 
-// The SQLite store (sqlitehistorystore.cpp): %1 the file.
-// %2: the folder.
+// The SQLite store (sqlitehistorystore.cpp, sqlitehistoryretention.cpp): %1 the file; %2 its
+// folder.
 FATEK_MSG(HistoryNoFolder, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Cannot create the history store %1: cannot create its folder %2."))

@@ -413,3 +413,8 @@ void HistoryWriter::querySamples(const QString &seriesKey, qint64 fromMs, qint64
 }
 
 } // namespace Fatek
+
+// The writer's moc output in its own object, not in the library's mocs_compilation.cpp beside the
+// recorder's: a program that uses the writer alone (fatek-cli, the kill -9 test's child) links
+// without pulling in the recorder and what it needs.
+#include "moc_historywriter.cpp"
