@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
 
 namespace Fatek::HistoryReducer {
 
@@ -155,12 +157,14 @@ std::vector<HistoryPoint> reduce(const std::vector<HistorySample> &samples, qint
         // A silence ends the line where the last value stops being known.
         if (silenceEnds && hasPrevious && previousHadValue && s.timeMs - previousMs > maxSilenceMs)
             reduction.gap(std::max(previousMs + maxSilenceMs, fromMs));
-        if (History::hasValue(s.quality))
+        // A good sample without a number (an ASCII item) has nothing to draw either.
+        const bool drawn = History::hasValue(s.quality) && !std::isnan(s.value);
+        if (drawn)
             reduction.value(order, atMs, s.value);
         else
             reduction.gap(atMs);
         hasPrevious = true;
-        previousHadValue = History::hasValue(s.quality);
+        previousHadValue = drawn;
         previousMs = s.timeMs;
     };
     if (entering) {

@@ -90,6 +90,11 @@ private Q_SLOTS:
         // One gap for the two without a value in a row; Late has a value.
         QCOMPARE(points, (std::vector<HistoryPoint>{at(0, 1), at(100, 2), gapAt(200), at(400, 4),
                                                     gapAt(500), at(600, 6)}));
+        // A good sample without a number (an ASCII item): nothing to draw either.
+        const std::vector<HistorySample> text{good(0, 1), without(100, HistoryQuality::Good),
+                                              good(200, 2)};
+        QCOMPARE(HistoryReducer::reduce(text, 0, 1000, 100, NoSilence),
+                 (std::vector<HistoryPoint>{at(0, 1), gapAt(100), at(200, 2)}));
         // Reduced too: a gap survives its column.
         std::vector<HistorySample> many;
         for (qint64 t = 0; t < 1000; ++t)

@@ -6,6 +6,7 @@
 // URL in a build without libpq.
 
 #include "core/history/historymessages.h"
+#include "core/history/historyreducer.h"
 #include "core/history/historystore.h"
 #include "core/history/sqlitehistorystore.h"
 
@@ -400,6 +401,42 @@ private Q_SLOTS:
         }
         // Fits now: nothing more goes.
         QCOMPARE(store->applyRetention(HistoryRetention{0, limit}, 0)->samplesRemoved, qint64(0));
+    }
+
+    // Figures for the record (printed, not asserted: the machine decides them).
+    void aDayReadAndReduced()
+    {
+        auto store = openOk(path("day.db"));
+        QVERIFY(store);
+        const qint64 id = *store->seriesId(makeSeries(QStringLiteral("1-R100")));
+        const qint64 start = 1'800'000'000'000;
+        std::vector<HistoryRecord> records;
+        for (qint64 i = 0; i < 86'400; ++i)
+            records.push_back({id, sample(start + i * 1000, std::sin(double(i) / 500.0) * 100,
+                                          std::uint64_t(i))});
+        QElapsedTimer timer;
+        timer.start();
+        QVERIFY(store->append(records));
+        const qint64 appendMs = timer.elapsed();
+        timer.start();
+        const Result<std::vector<HistorySample>> day
+            = store->samples(id, start, start + 86'400'000);
+        const qint64 readNs = timer.nsecsElapsed();
+        QVERIFY(day);
+        QCOMPARE(day->size(), std::size_t(86'400));
+        const std::vector<HistoryPoint> points = HistoryReducer::reduce(
+            *day, start, start + 86'400'000, 1000, History::maxSilenceMs(600));
+        const qint64 bothNs = timer.nsecsElapsed();
+        QVERIFY(points.size() <= 4000);
+        // One record per transaction: what a commit (its fsync, synchronous=FULL) costs.
+        timer.start();
+        for (qint64 i = 0; i < 20; ++i)
+            QVERIFY(store->append({{id, sample(start - 1000 - i, 1)}}));
+        const qint64 commitNs = timer.nsecsElapsed() / 20;
+        qDebug("86,400 samples: append in one transaction %lld ms; read %.1f ms; read + reduce to "
+               "%zu points %.1f ms; a one-sample commit %.2f ms",
+               appendMs, double(readNs) / 1e6, points.size(), double(bothNs) / 1e6,
+               double(commitNs) / 1e6);
     }
 
     void postgresUrlWithoutLibpq()
