@@ -237,6 +237,12 @@ bool PostgresServer::initialize(QString *error)
               QStringLiteral("-E"), QStringLiteral("UTF8"), QStringLiteral("--no-sync")},
              error))
         return false;
+    return true;
+}
+
+bool PostgresServer::pickPort(QString *error)
+{
+    // A port nobody listens on now; the server binds it a moment later.
     QTcpServer probe;
     if (!probe.listen(QHostAddress::LocalHost, 0)) {
         *error = QStringLiteral("no free port: %1").arg(probe.errorString());
@@ -250,9 +256,30 @@ bool PostgresServer::start(QString *error)
 {
     stop();
     const bool first = !m_initialized;
-    if (first && !initialize(error))
+    if (first && (!initialize(error) || !pickPort(error)))
         return false;
     m_initialized = true;
+    // Another program may take the free port between the probe and the bind: a new one then,
+    // at the first start (later starts keep theirs: the test's URLs name it).
+    for (int attempt = 1;; ++attempt) {
+        if (!launch(error))
+            return false;
+        if (waitUntilReady(error))
+            break;
+        if (!first || attempt == 3 || !log().contains(QLatin1String("could not bind"))
+            || !pickPort(error))
+            return false;
+    }
+    if (first
+        && !exec(QStringLiteral("postgres"),
+                 QStringLiteral("CREATE ROLE %1 LOGIN PASSWORD '%2'").arg(user(), password()),
+                 error))
+        return false;
+    return true;
+}
+
+bool PostgresServer::launch(QString *error)
+{
     m_process = std::make_unique<QProcess>();
     prepare(*m_process);
     m_process->setProcessChannelMode(QProcess::MergedChannels);
@@ -272,6 +299,11 @@ bool PostgresServer::start(QString *error)
         m_process.reset();
         return false;
     }
+    return true;
+}
+
+bool PostgresServer::waitUntilReady(QString *error)
+{
     // Crash recovery after kill() takes a moment; a slow CI machine, more.
     const QByteArray info = conninfo(m_port, QStringLiteral("postgres")).toUtf8();
     const QDeadlineTimer deadline(30000);
@@ -293,11 +325,6 @@ bool PostgresServer::start(QString *error)
         }
         QThread::msleep(50);
     }
-    if (first
-        && !exec(QStringLiteral("postgres"),
-                 QStringLiteral("CREATE ROLE %1 LOGIN PASSWORD '%2'").arg(user(), password()),
-                 error))
-        return false;
     return true;
 }
 

@@ -50,6 +50,10 @@ public:
 
 private:
     bool initialize(QString *error);
+    bool pickPort(QString *error);
+    // Starts postgres; waits until it accepts connections (false: it exited or did not in 30 s).
+    bool launch(QString *error);
+    bool waitUntilReady(QString *error);
     // Runs one of PostgreSQL's programs to its end (as nobody when we are root).
     bool run(const QString &program, const QStringList &arguments, QString *error) const;
     void prepare(QProcess &process) const;

@@ -45,8 +45,11 @@ const char *const CreateTablesSql
       "value double precision, raw bigint NOT NULL, quality smallint NOT NULL, "
       "PRIMARY KEY (series, time_ms))";
 
-// The unnest of arrays is one statement for the whole batch (measured in tst_historypostgres:
-// about as fast as COPY into a temporary table and an INSERT from it, one round trip less).
+// The batch as five arrays in PostgreSQL's binary format, unnested in one statement. Measured
+// against COPY into a temporary table and an INSERT ... SELECT from it (10,000 records of 100
+// series, PostgreSQL 15, a shared 2-core machine): 197 against 188 ms, 216 against 224 ms, the
+// same within the noise; this needs no temporary table per session and one round trip. About
+// half of it is the foreign key's check of each row (110 against 103 ms without it).
 const char *const AppendSql
     = "INSERT INTO fatek_history_samples (series, time_ms, value, raw, quality) "
       "SELECT * FROM unnest($1::bigint[], $2::bigint[], $3::float8[], $4::bigint[], "
@@ -243,6 +246,12 @@ Result<PostgresHistoryStore::Reply> PostgresHistoryStore::exec(const char *sql, 
 Status PostgresHistoryStore::setUpSession(Failure id) const
 {
     m_prepared = false;
+    // A series' samples are spread over the table (the series are written interleaved), so the
+    // planner prefers a bitmap scan and a sort for a range; reading the primary key's index in
+    // order is twice as fast (86,400 samples: 37 instead of 81 ms on the server, no sort on
+    // disk). Every other query here is an index or a sequential scan.
+    if (auto set = exec("SET enable_bitmapscan = off", id, PGRES_COMMAND_OK); !set)
+        return set.error();
     if (m_mode == Mode::ReadOnly) {
         if (auto set
             = exec("SET SESSION CHARACTERISTICS AS TRANSACTION READ ONLY", id, PGRES_COMMAND_OK);
