@@ -38,6 +38,9 @@ packages=(
     openssl
     # the alarm journal (SQLite's C library), and the sqlite3 program its tests lock a file with
     libsqlite3-dev sqlite3
+    # history stores in PostgreSQL (libpq's C library), and the server tst_historypostgres starts
+    # on a free port (initdb into a temporary folder)
+    postgresql libpq-dev
 )
 
 missing=()
