@@ -1,6 +1,6 @@
 // History in the studio (issue 51), as a person meets it at a laptop's 1366x768: a store pre-filled
-// with 26 hours of 1 s values of the demo's sine row (with ten minutes of bad quality an hour and a
-// half ago) is looked back at in the trend, on the in-process demo simulator. The row is marked
+// with 26 hours of 1 s values of the demo's sine row (with 40 minutes of bad quality two hours
+// ago) is looked back at in the trend, on the in-process demo simulator. The row is marked
 // "Record in History" through its context menu and added to the trend; "8 h" shows the recorded
 // values joined to the live line, one click on the scroll bar's arrow goes back an hour; the drawn
 // points are the stored ones at their times, the bad stretch is a gap. What the studio records
@@ -58,8 +58,8 @@ const QSize laptop(1366, 768);
 constexpr qint64 hourMs = 3600 * 1000;
 const QString seriesKey = QStringLiteral("Demo PLC/1-R1");
 
-// The pre-filled store: 1 s values from 26 h ago to a few seconds ago, a sine-like curve (a
-// 30 min wave with a faster ripple), bad quality from 90 to 80 minutes ago.
+// The pre-filled store: 1 s values from 26 h ago to a few seconds ago, a sine-like curve (a 4 h
+// wave, a 23 min one and a fast ripple), bad quality from 120 to 80 minutes ago.
 struct Prefill
 {
     qint64 fromMs = 0;
@@ -73,7 +73,8 @@ struct Prefill
 double curve(qint64 timeMs)
 {
     const double t = double(timeMs) / 1000.0;
-    return std::round(800 * std::sin(2 * M_PI * t / 1800) + 150 * std::sin(2 * M_PI * t / 97));
+    return std::round(600 * std::sin(2 * M_PI * t / (4 * 3600))
+                      + 250 * std::sin(2 * M_PI * t / 1380) + 60 * std::sin(2 * M_PI * t / 97));
 }
 
 QString prefill(const QString &location, Prefill *out)
@@ -81,7 +82,7 @@ QString prefill(const QString &location, Prefill *out)
     const qint64 now = QDateTime::currentMSecsSinceEpoch() / 1000 * 1000;
     out->fromMs = now - 26 * hourMs;
     out->toMs = now - 5000;
-    out->gapFromMs = now - 90 * 60 * 1000;
+    out->gapFromMs = now - 120 * 60 * 1000;
     out->gapToMs = now - 80 * 60 * 1000;
     auto store = HistoryStore::open(location, HistoryStore::Mode::ReadWrite);
     if (!store)
@@ -321,7 +322,7 @@ void TestUiHistory::scrollBackIntoRecordedValues()
     trend()->refresh();
     checkHistoryPoints(&matched);
     QVERIFY2(matched > 500, qPrintable(QString::number(matched)));
-    // The bad stretch, 90 to 80 minutes ago, is in view: a gap with lines on either side.
+    // The bad stretch, 120 to 80 minutes ago, is in view: a gap with lines on either side.
     bool before = false, after = false;
     for (const QLineSeries *piece : trend()->historySeries(0)) {
         for (const QPointF &p : piece->points()) {
@@ -452,8 +453,13 @@ void TestUiHistory::scrollBackIntoRecordedValues()
         window->setFocus(Qt::TabFocusReason);
         QTest::keyClicks(window, QStringLiteral("2"), {}, keyDelayMs);
         QCOMPARE(window->currentText(), QStringLiteral("24 h"));
+        // The trend gets most of the window's height, as one looking back at a day gives it.
+        auto *dock = m_window->findChild<QDockWidget *>(QStringLiteral("trendDock"));
+        QVERIFY(dock);
+        m_window->resizeDocks({dock}, {m_window->height() * 3 / 5}, Qt::Vertical);
         QVERIFY(historySettled());
         QTest::qWait(500);
+        QVERIFY(historySettled());
         trend()->refresh();
         QVERIFY(m_window->grab().save(screenshot));
     }
