@@ -42,6 +42,8 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QTranslator>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
 #include <QtCharts/QDateTimeAxis>
 
 #include <cmath>
@@ -226,6 +228,23 @@ class TestUiHistory : public QObject
         QVERIFY2(misses <= 2 * pieces.size(), qPrintable(QString::number(misses)));
     }
 
+    // The mouse over the chart at a time: the read-out's line of the item there.
+    QString readoutAt(qint64 timeMs)
+    {
+        auto *view = trend()->findChild<QChartView *>(QStringLiteral("trendChart"));
+        const QRectF area = trend()->chart()->plotArea();
+        const qint64 fromMs = trend()->timeAxis()->min().toMSecsSinceEpoch();
+        const qint64 toMs = trend()->timeAxis()->max().toMSecsSinceEpoch();
+        const double x
+            = area.left() + area.width() * double(timeMs - fromMs) / double(toMs - fromMs);
+        const QPoint at
+            = view->mapFromScene(trend()->chart()->mapToScene(QPointF(x, area.center().y())));
+        QTest::mouseMove(view->viewport(), at);
+        const QStringList lines = trend()->readoutText().split(QLatin1Char('\n'));
+        QTest::mouseMove(view->viewport(), QPoint(1, 1));
+        return lines.size() == 2 ? lines.at(1) : lines.join(QLatin1Char('|'));
+    }
+
 private Q_SLOTS:
     void initTestCase()
     {
@@ -336,6 +355,14 @@ void TestUiHistory::scrollBackIntoRecordedValues()
     }
     QVERIFY(before && after);
     QVERIFY(trend()->historySeries(0).size() >= 2);
+    // The cursor read-out there: "no value" in the gap, a recorded value beside it.
+    QCOMPARE(readoutAt((m_prefill.gapFromMs + m_prefill.gapToMs) / 2),
+             QStringLiteral("Sine (R1): no value"));
+    const QString recorded = readoutAt(m_prefill.gapToMs + 10 * 60 * 1000);
+    static const QRegularExpression valueLine(QStringLiteral("^Sine \\(R1\\): (-?\\d+)$"));
+    const QRegularExpressionMatch value = valueLine.match(recorded);
+    QVERIFY2(value.hasMatch(), qPrintable(recorded));
+    QVERIFY(std::abs(value.captured(1).toDouble()) <= 1000);
 
     // What the studio recorded itself reaches the store: read through a second handle once the
     // writer wrote what was pending.

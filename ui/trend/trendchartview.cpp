@@ -138,8 +138,11 @@ void TrendChartView::updateReadout()
             else
                 hi = mid;
         }
-        const QString value
-            = lo == 0 || b.at(lo - 1).gap ? tr("no value") : readoutValue(b.at(lo - 1).value);
+        double past = 0;
+        const QString value = line.recorded && line.recorded(timeMs, &past)
+                                  ? (std::isnan(past) ? tr("no value") : readoutValue(past))
+                              : lo == 0 || b.at(lo - 1).gap ? tr("no value")
+                                                            : readoutValue(b.at(lo - 1).value);
         texts << tr("%1: %2").arg(line.name, value);
         html += QStringLiteral("<br><span style=\"color:%1\">&#9632;</span> %2")
                     .arg(line.color.name(), tr("%1: %2").arg(line.name, value).toHtmlEscaped());

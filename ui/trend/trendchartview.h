@@ -33,6 +33,9 @@ public:
         QString name;
         QColor color;
         const TrendBuffer *buffer = nullptr;
+        // The recorded part before the buffer: true when it holds the time, with the value
+        // there (NaN in a gap).
+        std::function<bool(qint64 timeMs, double *value)> recorded;
     };
     using LinesSource = std::function<std::vector<CursorLine>()>;
 

@@ -24,6 +24,7 @@
 #include <QtCharts/QValueAxis>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 namespace Fatek {
@@ -207,6 +208,7 @@ void TrendHistory::clearPieces(State &state)
             s->clear();
     }
     state.drawnVersion = ~quint64(0);
+    state.drawnEndMs = -1;
 }
 
 void TrendHistory::remove(const TrendLine *line)
@@ -232,6 +234,23 @@ QList<QLineSeries *> TrendHistory::series(const TrendLine *line) const
             list.append(s);
     }
     return list;
+}
+
+bool TrendHistory::valueAt(const TrendLine *line, qint64 timeMs, double *value) const
+{
+    const auto it = m_states.find(line);
+    if (it == m_states.end())
+        return false;
+    const std::vector<HistoryPoint> &points = it->second.points;
+    if (points.empty() || timeMs < points.front().timeMs || timeMs >= it->second.drawnEndMs)
+        return false;
+    // The last point at or before the time, as the live read-out takes the last sample.
+    const auto after
+        = std::upper_bound(points.cbegin(), points.cend(), timeMs,
+                           [](qint64 t, const HistoryPoint &p) { return t < p.timeMs; });
+    const HistoryPoint &p = *(after - 1);
+    *value = p.gap ? std::numeric_limits<double>::quiet_NaN() : p.value;
+    return true;
 }
 
 void TrendHistory::send()

@@ -57,6 +57,9 @@ public:
     void remove(const TrendLine *line);
     // The recorded pieces drawn for a line (one per stretch without a gap).
     QList<QLineSeries *> series(const TrendLine *line) const;
+    // The drawn recorded value of a line at a time (NaN in a gap): false when the recorded part
+    // does not reach that time (the live buffer has it, or nothing does).
+    bool valueAt(const TrendLine *line, qint64 timeMs, double *value) const;
     // Whether no request is waiting or under way (tests wait for it).
     bool isIdle() const;
 

@@ -8,10 +8,10 @@
 #include "ui/common/uitext.h"
 #include "ui/watch/watchtablemodel.h"
 
+#include <QComboBox>
 #include <QDateTime>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QComboBox>
 #include <QListWidget>
 #include <QScrollBar>
 #include <QToolButton>
@@ -73,7 +73,10 @@ TrendView::TrendView(QWidget *parent)
         [this] {
             std::vector<TrendChartView::CursorLine> lines;
             for (const auto &item : m_items)
-                lines.push_back({displayName(item->spec), item->color, &item->buffer});
+                lines.push_back({displayName(item->spec), item->color, &item->buffer,
+                                 [this, line = item.get()](qint64 t, double *v) {
+                                     return m_history->valueAt(line, t, v);
+                                 }});
             return lines;
         },
         this);
