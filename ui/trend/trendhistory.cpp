@@ -5,6 +5,7 @@
 #include "core/history/historyreducer.h"
 #include "core/history/historywriter.h"
 #include "core/watch/safefile.h"
+#include "core/watch/valueformat.h"
 #include "trendline.h"
 #include "ui/common/lastdirectory.h"
 #include "ui/common/uitext.h"
@@ -300,6 +301,25 @@ void TrendHistory::answered(const TrendLine *line, quint64 generation,
     }
     ++state.version;
     Q_EMIT pointsArrived();
+}
+
+void TrendHistory::exportRange(const std::vector<std::unique_ptr<TrendLine>> &lines, qint64 fromMs,
+                               qint64 toMs, const QString &path)
+{
+    QList<HistorySeries> series;
+    QStringList keys;
+    for (const auto &line : lines) {
+        const QString key = seriesKey(*line);
+        if (key.isEmpty() || keys.contains(key))
+            continue;
+        keys.append(key);
+        HistorySeries s;
+        s.source = key.section(QLatin1Char('/'), 0, -2);
+        s.item = key.section(QLatin1Char('/'), -1);
+        s.format = ValueFormat::name(line->spec.format);
+        series.append(s);
+    }
+    exportRange(series, fromMs, toMs, path);
 }
 
 QString TrendHistory::askExportPath(QWidget *parent)

@@ -11,6 +11,7 @@
 #include <QTimer>
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -69,6 +70,9 @@ public:
     // Series the store does not have are left out.
     void exportRange(const QList<HistorySeries> &series, qint64 fromMs, qint64 toMs,
                      const QString &path);
+    // The same for the series of `lines` (those with a connection), each once.
+    void exportRange(const std::vector<std::unique_ptr<TrendLine>> &lines, qint64 fromMs,
+                     qint64 toMs, const QString &path);
     // Asks where to export (a file dialog); empty when cancelled.
     static QString askExportPath(QWidget *parent);
 

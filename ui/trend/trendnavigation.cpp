@@ -62,6 +62,9 @@ TrendNavigation::TrendNavigation(QChart *chart, QDateTimeAxis *timeAxis, QWidget
             chooseCustomRange();
     });
 
+    // The labels say it is time: the title's line goes to the scroll bar, so that the plot keeps
+    // its height (a short plot gets fewer value ticks).
+    timeAxis->setTitleVisible(false);
     m_scrollBar = new QScrollBar(Qt::Horizontal, parent);
     m_scrollBar->setObjectName(QStringLiteral("trendScrollBar"));
     m_scrollBar->setToolTip(tr("Scroll back in time (Shift+wheel over the chart too); Reset Zoom "

@@ -97,6 +97,8 @@ TrendView::TrendView(QWidget *parent)
     m_exportButton = new QToolButton(this);
     m_exportButton->setObjectName(QStringLiteral("trendExport"));
     m_exportButton->setText(tr("Export Range…"));
+    // An icon only: the bar must fit a trend docked narrow beside the table.
+    m_exportButton->setIcon(QIcon(QStringLiteral(":/icons/save.svg")));
     m_exportButton->setToolTip(tr("Write the recorded values of the items in the time range shown "
                                   "to a CSV file"));
 
@@ -578,20 +580,7 @@ void TrendView::refresh()
 
 void TrendView::exportRange(const QString &path)
 {
-    QList<HistorySeries> series;
-    QStringList keys;
-    for (const auto &item : m_items) {
-        const QString key = m_history->seriesKey(*item);
-        if (key.isEmpty() || keys.contains(key))
-            continue;
-        keys.append(key);
-        HistorySeries s;
-        s.source = key.section(QLatin1Char('/'), 0, -2);
-        s.item = key.section(QLatin1Char('/'), -1);
-        s.format = ValueFormat::name(item->spec.format);
-        series.append(s);
-    }
-    m_history->exportRange(series, m_timeAxis->min().toMSecsSinceEpoch(),
+    m_history->exportRange(m_items, m_timeAxis->min().toMSecsSinceEpoch(),
                            m_timeAxis->max().toMSecsSinceEpoch(), path);
 }
 
