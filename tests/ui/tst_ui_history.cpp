@@ -36,6 +36,7 @@
 #include <QScreen>
 #include <QScrollBar>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -473,6 +474,30 @@ void TestUiHistory::scrollBackIntoRecordedValues()
     QTest::mouseClick(reset, Qt::LeftButton, {}, QPoint(), mouseDelayMs);
     QVERIFY(!trend()->isZoomed());
     QCOMPARE(window->currentText(), QStringLiteral("8 h"));
+
+    // History Settings…: the heartbeat typed, OK; an edit of the table, undone and redone.
+    QVERIFY(chooseFromContextMenu(table->view(), name, QStringLiteral("historySettingsAction")));
+    QPointer<QDialog> settings;
+    QTRY_VERIFY((settings = table->findChild<QDialog *>(QStringLiteral("historySettingsDialog")))
+                && settings->isVisible());
+    auto *heartbeat = settings->findChild<QSpinBox *>(QStringLiteral("historyHeartbeat"));
+    QVERIFY(heartbeat);
+    heartbeat->setFocus(Qt::TabFocusReason);
+    heartbeat->selectAll();
+    QTest::keyClicks(heartbeat, QStringLiteral("60"), {}, keyDelayMs);
+    QTest::mouseClick(settings->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok),
+                      Qt::LeftButton, {}, QPoint(), mouseDelayMs);
+    QTRY_COMPARE(model->item(sine).history.value_or(HistorySetting{}).heartbeatS, 60);
+    // The window active again, as a window manager makes it when a dialog closes.
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    clickCell(table->view(), name);
+    QTest::keyClick(table->view(), Qt::Key_Z, Qt::ControlModifier, keyDelayMs);
+    QTRY_COMPARE(model->item(sine).history.value_or(HistorySetting{}).heartbeatS, 600);
+    QTest::keyClick(table->view(), Qt::Key_Z, Qt::ControlModifier, keyDelayMs);
+    QTRY_VERIFY(!model->item(sine).history);
+    QTest::keyClick(table->view(), Qt::Key_Y, Qt::ControlModifier, keyDelayMs);
+    QTRY_VERIFY(model->item(sine).history.has_value());
 
     // The screenshot for docs/history.md: a day's trend.
     const QString screenshot = qEnvironmentVariable("FATEK_HISTORY_SCREENSHOT");
