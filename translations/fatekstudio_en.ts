@@ -2206,6 +2206,58 @@
             <translation>The alarm journal %1, the kept state of %2: unknown %3 &quot;%4&quot;.</translation>
         </message>
         <message>
+            <source>Cannot open the history store %1: %2</source>
+            <translation>Cannot open the history store %1: %2</translation>
+        </message>
+        <message>
+            <source>The history store %1 does not exist.</source>
+            <translation>The history store %1 does not exist.</translation>
+        </message>
+        <message>
+            <source>%1 is not a history store (another program&apos;s database); it was left as it is.</source>
+            <translation>%1 is not a history store (another program&apos;s database); it was left as it is.</translation>
+        </message>
+        <message>
+            <source>The history store %1 has format %2, newer than this program reads (%3); it was left as it is.</source>
+            <translation>The history store %1 has format %2, newer than this program reads (%3); it was left as it is.</translation>
+        </message>
+        <message>
+            <source>The history store %1 is locked by another program (it holds a write transaction open).</source>
+            <translation>The history store %1 is locked by another program (it holds a write transaction open).</translation>
+        </message>
+        <message>
+            <source>Cannot write to the history store %1: %2</source>
+            <translation>Cannot write to the history store %1: %2</translation>
+        </message>
+        <message>
+            <source>Cannot read the history store %1: %2</source>
+            <translation>Cannot read the history store %1: %2</translation>
+        </message>
+        <message>
+            <source>The history store %1 has no series %2.</source>
+            <translation>The history store %1 has no series %2.</translation>
+        </message>
+        <message>
+            <source>Cannot open the history store %1: this build of FATEK Studio has no PostgreSQL client (use an SQLite file).</source>
+            <translation>Cannot open the history store %1: this build of FATEK Studio has no PostgreSQL client (use an SQLite file).</translation>
+        </message>
+        <message>
+            <source>The history store %1 could not be written for a while: %2 samples were lost (the oldest).</source>
+            <translation>The history store %1 could not be written for a while: %2 samples were lost (the oldest).</translation>
+        </message>
+        <message>
+            <source>Cannot create the history store %1: cannot create its folder %2.</source>
+            <translation>Cannot create the history store %1: cannot create its folder %2.</translation>
+        </message>
+        <message>
+            <source>The history store %1 was opened to read only; nothing was written.</source>
+            <translation>The history store %1 was opened to read only; nothing was written.</translation>
+        </message>
+        <message>
+            <source>The history store %1, series %2 at %3: unknown quality %4.</source>
+            <translation>The history store %1, series %2 at %3: unknown quality %4.</translation>
+        </message>
+        <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
             <translation>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</translation>
         </message>

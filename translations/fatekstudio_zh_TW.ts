@@ -2206,6 +2206,58 @@
             <translation>警報日誌 %1，%2 保存的狀態：未知的 %3「%4」。</translation>
         </message>
         <message>
+            <source>Cannot open the history store %1: %2</source>
+            <translation>無法開啟歷史資料庫 %1：%2</translation>
+        </message>
+        <message>
+            <source>The history store %1 does not exist.</source>
+            <translation>歷史資料庫 %1 不存在。</translation>
+        </message>
+        <message>
+            <source>%1 is not a history store (another program&apos;s database); it was left as it is.</source>
+            <translation>%1 不是歷史資料庫（是其他程式的資料庫）；檔案保持原樣。</translation>
+        </message>
+        <message>
+            <source>The history store %1 has format %2, newer than this program reads (%3); it was left as it is.</source>
+            <translation>歷史資料庫 %1 的格式為 %2，比本程式能讀取的（%3）更新；資料庫保持原樣。</translation>
+        </message>
+        <message>
+            <source>The history store %1 is locked by another program (it holds a write transaction open).</source>
+            <translation>歷史資料庫 %1 被其他程式鎖定（它保持著一個寫入交易）。</translation>
+        </message>
+        <message>
+            <source>Cannot write to the history store %1: %2</source>
+            <translation>無法寫入歷史資料庫 %1：%2</translation>
+        </message>
+        <message>
+            <source>Cannot read the history store %1: %2</source>
+            <translation>無法讀取歷史資料庫 %1：%2</translation>
+        </message>
+        <message>
+            <source>The history store %1 has no series %2.</source>
+            <translation>歷史資料庫 %1 沒有資料序列 %2。</translation>
+        </message>
+        <message>
+            <source>Cannot open the history store %1: this build of FATEK Studio has no PostgreSQL client (use an SQLite file).</source>
+            <translation>無法開啟歷史資料庫 %1：此版本的 FATEK Studio 沒有 PostgreSQL 用戶端（請改用 SQLite 檔案）。</translation>
+        </message>
+        <message>
+            <source>The history store %1 could not be written for a while: %2 samples were lost (the oldest).</source>
+            <translation>歷史資料庫 %1 有一段時間無法寫入：遺失了 %2 筆樣本（最舊的）。</translation>
+        </message>
+        <message>
+            <source>Cannot create the history store %1: cannot create its folder %2.</source>
+            <translation>無法建立歷史資料庫 %1：無法建立其資料夾 %2。</translation>
+        </message>
+        <message>
+            <source>The history store %1 was opened to read only; nothing was written.</source>
+            <translation>歷史資料庫 %1 以唯讀方式開啟；未寫入任何資料。</translation>
+        </message>
+        <message>
+            <source>The history store %1, series %2 at %3: unknown quality %4.</source>
+            <translation>歷史資料庫 %1，資料序列 %2 於 %3：未知的品質 %4。</translation>
+        </message>
+        <message>
             <source>%1 is not a finite number: NaN and infinities are written only to an item whose &quot;%2&quot; option is on</source>
             <translation>%1 不是有限數值：非數值與無限大只會寫入已開啟「%2」選項的項目</translation>
         </message>

@@ -38,3 +38,16 @@ FATEK_MSG(HistorySamplesDropped, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The history store %1 could not be written for a while: %2 samples "
                             "were lost (the oldest)."))
+
+// The SQLite store (sqlitehistorystore.cpp, sqlitehistoryretention.cpp): %1 the file; %2 its
+// folder.
+FATEK_MSG(HistoryNoFolder, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Cannot create the history store %1: cannot create its folder %2."))
+FATEK_MSG(HistoryReadOnly, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The history store %1 was opened to read only; nothing was written."))
+// %2 the series' id, %3 the sample's time (ms since the epoch), %4 the number found.
+FATEK_MSG(HistoryQualityUnknown, 4,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The history store %1, series %2 at %3: unknown quality %4."))

@@ -12,6 +12,7 @@
 #include <QPointer>
 #include <QThread>
 
+#include <any>
 #include <atomic>
 #include <functional>
 
@@ -80,11 +81,24 @@ Q_SIGNALS:
 private:
     friend class HistoryWriterWorker;
 
+    // A query's answer on its way back: kept in this object's thread with its ticket until the
+    // worker answers (the callback never travels to the store's thread).
+    struct Query
+    {
+        QPointer<QObject> context;
+        std::function<void(const std::any &)> deliver;
+    };
+    quint64 ask(QObject *context, std::function<void(const std::any &)> deliver);
+    // Called by the worker, through a CrossThreadCall, in this object's thread.
+    void answered(quint64 ticket, const std::any &result);
+
     QString m_location;
     QThread m_thread;
     HistoryWriterWorker *m_worker = nullptr;
     QHash<QString, qint64> m_handles; // series key -> handle
     QList<HistorySeries> m_series;    // by handle - 1
+    quint64 m_nextTicket = 1;
+    QHash<quint64, Query> m_queries;
     // Updated by the worker after each transaction.
     std::atomic<qint64> m_written{0};
     std::atomic<qint64> m_pending{0};

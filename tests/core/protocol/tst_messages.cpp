@@ -8,6 +8,7 @@
 #include "core/alarm/alarmmessages.h"
 #include "core/commission/commissionmessages.h"
 #include "core/gateway/gatewaymessages.h"
+#include "core/history/historymessages.h"
 #include "core/link/linkmessages.h"
 #include "core/mqtt/mqttmessages.h"
 #include "core/protocol/message.h"
@@ -40,7 +41,8 @@ QList<MessageId> allIds()
                              std::span<const MessageDef *const>(mqttMessages),
                              std::span<const MessageDef *const>(linkMessages),
                              std::span<const MessageDef *const>(gatewayMessages),
-                             std::span<const MessageDef *const>(alarmMessages)}) {
+                             std::span<const MessageDef *const>(alarmMessages),
+                             std::span<const MessageDef *const>(historyMessages)}) {
         for (const MessageDef *def : list)
             ids.append(*def);
     }
