@@ -221,13 +221,14 @@ void runHistory(const Options &options, Report &report)
 #ifdef FATEK_BENCH_POSTGRES
     TestUtil::PostgresServer server;
     QString error;
-    if (!server.start(&error)) {
+    if (!server.start(&error) || !server.createDatabase(QStringLiteral("bench"), &error)) {
         std::fprintf(stderr, "figure 9: no PostgreSQL server: %s\n", qPrintable(error));
         report.result(QStringLiteral("history_postgres_record_cpu_percent"), 0,
                       QStringLiteral("<=10"), false);
         return;
     }
-    reportStore(QStringLiteral("PostgreSQL"), QStringLiteral("postgres"), server.url(), seconds,
+    reportStore(QStringLiteral("PostgreSQL"), QStringLiteral("postgres"),
+                server.url(QStringLiteral("bench")), seconds,
                 report);
 #endif
 }

@@ -122,7 +122,7 @@ void TestGatewayHistory::configRefusals_data()
     QTest::addColumn<QString>("history");
     QTest::addColumn<QString>("error");
     QTest::newRow("misspelt key") << R"({"recordAll":true,"heartbeat":60})"
-                                  << R"(history: unknown key "heartbeat" (did you mean "heartbeatS"?))";
+                                  << R"(history: "heartbeat" is not a known setting; did you mean "heartbeatS"?)";
     QTest::newRow("defaults without recordAll")
         << R"({"deadband":2})"
         << R"(history: "deadband" is the setting of every item recorded with "recordAll")";
@@ -131,7 +131,7 @@ void TestGatewayHistory::configRefusals_data()
     QTest::newRow("negative deadband") << R"({"recordAll":true,"deadband":-1})"
                                        << "history: deadband";
     QTest::newRow("retention key") << R"({"retention":{"day":3}})"
-                                   << R"(history: retention: unknown key "day")";
+                                   << R"(history: retention: "day" is not a known setting; did you mean "days"?)";
     QTest::newRow("negative days") << R"({"retention":{"days":-1}})" << "history: retention: days";
     QTest::newRow("empty store") << R"({"store":" "})" << R"("store" must name a file.)";
     QTest::newRow("password in the URL")
