@@ -41,7 +41,9 @@ qint64 cpuNs()
 {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    const auto ns = [](const timeval &t) { return qint64(t.tv_sec) * 1000000000 + qint64(t.tv_usec) * 1000; };
+    const auto ns = [](const timeval &t) {
+        return qint64(t.tv_sec) * 1000000000 + qint64(t.tv_usec) * 1000;
+    };
     return ns(usage.ru_utime) + ns(usage.ru_stime);
 }
 
@@ -144,9 +146,9 @@ double lookBackMs(const QString &location, bool *ok)
         = HistoryStore::open(location, HistoryStore::Mode::ReadWrite);
     if (!store)
         return 0;
-    const Result<qint64> id = (*store)->seriesId(
-        {0, QStringLiteral("bench"), QStringLiteral("9-R0"), QStringLiteral("day"),
-         QStringLiteral("signed"), 600});
+    const Result<qint64> id
+        = (*store)->seriesId({0, QStringLiteral("bench"), QStringLiteral("9-R0"),
+                              QStringLiteral("day"), QStringLiteral("signed"), 600});
     if (!id)
         return 0;
     const qint64 start = Q_INT64_C(1796601600000); // 2026-12-07T00:00:00Z
@@ -171,9 +173,9 @@ double lookBackMs(const QString &location, bool *ok)
             = (*store)->samples(*id, start, start + qint64(DaySamples) * 1000);
         if (!samples)
             return 0;
-        const std::vector<HistoryPoint> reduced = HistoryReducer::reduce(
-            *samples, start, start + qint64(DaySamples) * 1000, TrendPixels,
-            History::maxSilenceMs(600));
+        const std::vector<HistoryPoint> reduced
+            = HistoryReducer::reduce(*samples, start, start + qint64(DaySamples) * 1000,
+                                     TrendPixels, History::maxSilenceMs(600));
         best = std::min(best, static_cast<double>(clock.nsecsElapsed()) / 1e6);
         points = reduced.size();
         *ok = samples->size() == DaySamples && points > 0 && points <= 4 * TrendPixels;
@@ -185,7 +187,9 @@ void reportStore(const QString &name, const QString &key, const QString &locatio
                  Report &report)
 {
     const Recording r = record(location, seconds);
-    report.row(QStringLiteral("history %1: 10,000 items changing every second, %2 s").arg(name).arg(seconds),
+    report.row(QStringLiteral("history %1: 10,000 items changing every second, %2 s")
+                   .arg(name)
+                   .arg(seconds),
                QStringLiteral("%1% of one core").arg(fmt(r.cpuPercent, 1)),
                QStringLiteral("queue at most %1 values (last %2); %3 of %4 values written; "
                               "%5 bytes per value")
@@ -228,8 +232,7 @@ void runHistory(const Options &options, Report &report)
         return;
     }
     reportStore(QStringLiteral("PostgreSQL"), QStringLiteral("postgres"),
-                server.url(QStringLiteral("bench")), seconds,
-                report);
+                server.url(QStringLiteral("bench")), seconds, report);
 #endif
 }
 

@@ -98,10 +98,9 @@ int main(int argc, char **argv)
     options.quick = parser.isSet(quick);
     QStringList figures = parser.value(only).split(QLatin1Char(','), Qt::SkipEmptyParts);
     if (figures.isEmpty())
-        figures
-            = {QStringLiteral("1"), QStringLiteral("2"), QStringLiteral("3"), QStringLiteral("4"),
-               QStringLiteral("5"), QStringLiteral("6"), QStringLiteral("7"), QStringLiteral("8"),
-               QStringLiteral("9")};
+        figures = {QStringLiteral("1"), QStringLiteral("2"), QStringLiteral("3"),
+                   QStringLiteral("4"), QStringLiteral("5"), QStringLiteral("6"),
+                   QStringLiteral("7"), QStringLiteral("8"), QStringLiteral("9")};
 
     Report report;
     QElapsedTimer total;

@@ -2242,11 +2242,11 @@
         </message>
         <message>
             <source>&quot;%1&quot; is the setting of every item recorded with &quot;recordAll&quot;: give &quot;recordAll&quot;: true, or put &quot;history&quot; on the items in their watch lists.</source>
-            <translation>「%1」是以「recordAll」記錄的每個項目的設定：請設定「recordAll」: true，或在監看清單的項目上加入「history」。</translation>
+            <translation>「%1」是以 {&quot;recordAll&quot;: true} 記錄的每個項目的設定：請加上 {&quot;recordAll&quot;: true}，或在監看清單的項目上加入「history」。</translation>
         </message>
         <message>
             <source>The history store&apos;s URL holds a password: keep it in ~/.pgpass or $PGPASSWORD (the service&apos;s EnvironmentFile), out of the configuration.</source>
-            <translation>歷史資料庫的 URL 含有密碼：請將密碼放在 ~/.pgpass 或 $PGPASSWORD（服務的 EnvironmentFile），不要寫在設定檔中。</translation>
+            <translation>歷史資料庫的 URL 含有密碼：請將密碼放在 ~/.pgpass 或 $PGPASSWORD（服務的環境設定檔），不要寫在設定檔中。</translation>
         </message>
         <message>
             <source>history store failed (values still polled and published, not recorded): %1</source>

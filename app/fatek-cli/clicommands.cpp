@@ -2,12 +2,12 @@
 
 #include "app/common/linkarguments.h"
 #include "clialarms.h"
-#include "clihistory.h"
 #include "clicheckoutcommand.h"
 #include "clicontext.h"
 #include "clicontrolcommand.h"
 #include "clidiffcommand.h"
 #include "cliforcedcommand.h"
+#include "clihistory.h"
 #include "cliloopbackcommand.h"
 #include "climonitorcommand.h"
 #include "cliprogramcommand.h"
@@ -250,7 +250,7 @@ QStringList commandNames()
     QStringList names;
     for (const CommandSpec &c : commands)
         names << QLatin1String(c.name);
-    names << QStringLiteral("alarms"); // a program of its own (clialarms.h), not a step
+    names << QStringLiteral("alarms");  // a program of its own (clialarms.h), not a step
     names << QStringLiteral("history"); // a program of its own (clihistory.h), not a step
     return names;
 }

@@ -34,8 +34,8 @@ struct HistoryOptions
 void printJsonError(const QString &text, int code)
 {
     const QJsonObject object{{QStringLiteral("error"), text}, {QStringLiteral("code"), code}};
-    CliOutput::printStdout(
-        QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)) + '\n');
+    CliOutput::printStdout(QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact))
+                           + '\n');
 }
 
 int usageError(const QString &error, bool json)
@@ -135,16 +135,14 @@ QByteArray seriesLines(const QList<HistorySeries> &all, bool json)
     QByteArray out;
     for (const HistorySeries &s : all) {
         if (json) {
-            const QJsonObject o{{QStringLiteral("series"), s.key()},
-                                {QStringLiteral("source"), s.source},
-                                {QStringLiteral("item"), s.item},
-                                {QStringLiteral("label"), s.label},
-                                {QStringLiteral("format"), s.format},
-                                {QStringLiteral("heartbeatS"), s.heartbeatS}};
+            const QJsonObject o{
+                {QStringLiteral("series"), s.key()},  {QStringLiteral("source"), s.source},
+                {QStringLiteral("item"), s.item},     {QStringLiteral("label"), s.label},
+                {QStringLiteral("format"), s.format}, {QStringLiteral("heartbeatS"), s.heartbeatS}};
             out += QJsonDocument(o).toJson(QJsonDocument::Compact) + '\n';
         } else {
-            out += QStringList{s.key(), s.label.isEmpty() ? QStringLiteral("-") : s.label,
-                               s.format, QStringLiteral("heartbeat %1 s").arg(s.heartbeatS)}
+            out += QStringList{s.key(), s.label.isEmpty() ? QStringLiteral("-") : s.label, s.format,
+                               QStringLiteral("heartbeat %1 s").arg(s.heartbeatS)}
                        .join(QLatin1String("  "))
                        .toUtf8()
                    + '\n';
@@ -168,8 +166,7 @@ QByteArray sampleLines(const HistorySeries &series, const std::vector<HistorySam
                           {QStringLiteral("raw"), HistoryCsv::rawText(s.raw)},
                           {QStringLiteral("quality"), History::qualityName(s.quality)}};
             // A number that reads back exactly; none without a value.
-            o.insert(QStringLiteral("value"),
-                     value.isEmpty() ? QJsonValue() : QJsonValue(s.value));
+            o.insert(QStringLiteral("value"), value.isEmpty() ? QJsonValue() : QJsonValue(s.value));
             out += QJsonDocument(o).toJson(QJsonDocument::Compact) + '\n';
         } else {
             out += QStringList{HistoryCsv::localTime(s.timeMs), series.key(),

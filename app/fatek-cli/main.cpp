@@ -1,7 +1,7 @@
 #include "app/common/quitsignal.h"
 #include "clialarms.h"
-#include "clihistory.h"
 #include "clicompletion.h"
+#include "clihistory.h"
 #include "clioptions.h"
 #include "clioutput.h"
 #include "clirunner.h"

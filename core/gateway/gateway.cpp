@@ -86,8 +86,8 @@ void Gateway::openHistory()
         Q_EMIT logEvent(QStringLiteral("fatek-gateway"), msg<MsgId::GatewayLogHistory>(error));
     });
     connect(m_history, &HistoryWriter::recovered, this, [this] {
-        Q_EMIT logEvent(QStringLiteral("fatek-gateway"),
-                        msg<MsgId::GatewayLogHistoryRecovered>(m_history->location().toStdString()));
+        Q_EMIT logEvent(QStringLiteral("fatek-gateway"), msg<MsgId::GatewayLogHistoryRecovered>(
+                                                             m_history->location().toStdString()));
     });
 }
 
@@ -126,11 +126,10 @@ void Gateway::reload(const GatewayConfig &config)
         m_next = config;
         return;
     }
-    const bool everything = config.broker != m_config.broker || config.prefix != m_config.prefix
-                            || config.readOnly != m_config.readOnly
-                            || config.homeAssistant != m_config.homeAssistant
-                            || config.alarmJournal != m_config.alarmJournal
-                            || config.history != m_config.history;
+    const bool everything
+        = config.broker != m_config.broker || config.prefix != m_config.prefix
+          || config.readOnly != m_config.readOnly || config.homeAssistant != m_config.homeAssistant
+          || config.alarmJournal != m_config.alarmJournal || config.history != m_config.history;
     // Discovery configs that stay: a retiring link clears the others (entities removed).
     QSet<QString> keep;
     if (config.homeAssistant.discovery) {
@@ -180,7 +179,8 @@ void Gateway::onLinkStopped()
         return r.link->isStopped() && (r.retiring || m_stopping);
     });
     m_links.erase(gone, m_links.end());
-    if (std::none_of(m_links.cbegin(), m_links.cend(), [](const Running &r) { return r.retiring; })) {
+    if (std::none_of(m_links.cbegin(), m_links.cend(),
+                     [](const Running &r) { return r.retiring; })) {
         qDeleteAll(m_retiredHistory);
         m_retiredHistory.clear();
     }

@@ -28,7 +28,6 @@ using GatewayConfigRead::Reader;
 using GatewayConfigRead::resolve;
 using Problem = GatewayConfigProblem;
 
-
 Problem readBroker(const QJsonObject &json, const QString &baseDirectory, MqttBrokerSettings *out)
 {
     Reader r(json);
@@ -301,7 +300,9 @@ int GatewayConfig::historyCount() const
 
 QString GatewayConfig::defaultHistoryStore(const QString &baseDirectory)
 {
-    return QFileInfo(defaultAlarmJournal(baseDirectory)).dir().filePath(QStringLiteral("history.db"));
+    return QFileInfo(defaultAlarmJournal(baseDirectory))
+        .dir()
+        .filePath(QStringLiteral("history.db"));
 }
 
 int GatewayConfig::alarmCount() const

@@ -151,7 +151,8 @@ std::optional<double> Reader::number(const QString &key, double min, double max)
     if (number < min || number > max) {
         problem = msg<MsgId::GatewayConfigOutOfRange>(
             keyText(key), QString::number(number, 'g', 17).toStdString(),
-            QString::number(min, 'g', 17).toStdString(), QString::number(max, 'g', 17).toStdString());
+            QString::number(min, 'g', 17).toStdString(),
+            QString::number(max, 'g', 17).toStdString());
         return std::nullopt;
     }
     return number;

@@ -21,11 +21,11 @@ QByteArray rows(const HistorySeries &series, const std::vector<HistorySample> &s
     QByteArray out;
     out.reserve(static_cast<qsizetype>(samples.size()) * 80);
     for (const HistorySample &s : samples) {
-        const QString line = localTime(s.timeMs) + QLatin1Char(',') + key + QLatin1Char(',')
-                             + (History::hasValue(s.quality) ? valueText(s.value, series.format)
-                                                             : QString())
-                             + QLatin1Char(',') + rawText(s.raw) + QLatin1Char(',')
-                             + History::qualityName(s.quality) + QLatin1Char('\n');
+        const QString line
+            = localTime(s.timeMs) + QLatin1Char(',') + key + QLatin1Char(',')
+              + (History::hasValue(s.quality) ? valueText(s.value, series.format) : QString())
+              + QLatin1Char(',') + rawText(s.raw) + QLatin1Char(',')
+              + History::qualityName(s.quality) + QLatin1Char('\n');
         out += line.toUtf8();
     }
     return out;

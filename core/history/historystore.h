@@ -60,7 +60,8 @@ public:
 
     // Removes what `retention` no longer keeps, as of nowMs.
     virtual Result<HistoryRetentionOutcome> applyRetention(const HistoryRetention &retention,
-                                                           qint64 nowMs) = 0;
+                                                           qint64 nowMs)
+        = 0;
     // Bytes the store takes (the file with its WAL; PostgreSQL: the tables' total relation size).
     virtual Result<qint64> sizeBytes() const = 0;
     // How many samples it holds (every series).

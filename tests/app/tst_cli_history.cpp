@@ -28,7 +28,8 @@ struct Run
 Run runCli(const QStringList &arguments)
 {
     QProcess process;
-    process.start(QStringLiteral(FATEK_CLI_PATH), QStringList{QStringLiteral("history")} + arguments);
+    process.start(QStringLiteral(FATEK_CLI_PATH),
+                  QStringList{QStringLiteral("history")} + arguments);
     Run run;
     if (!process.waitForFinished(30000)) {
         process.kill();
@@ -70,13 +71,17 @@ void TestCliHistory::initTestCase()
     Result<std::unique_ptr<HistoryStore>> store
         = HistoryStore::open(m_store, HistoryStore::Mode::ReadWrite);
     QVERIFY2(store, store ? "" : store.error().text().c_str());
-    HistorySeries level{0, QStringLiteral("line1"), QStringLiteral("1-R100"),
-                        QStringLiteral("Tank level"), QStringLiteral("signed"), 600};
-    HistorySeries temp{0, QStringLiteral("line1"), QStringLiteral("1-R200"), QString(),
-                       QStringLiteral("float"), 60};
+    HistorySeries level{0,
+                        QStringLiteral("line1"),
+                        QStringLiteral("1-R100"),
+                        QStringLiteral("Tank level"),
+                        QStringLiteral("signed"),
+                        600};
+    HistorySeries temp{0,         QStringLiteral("line1"), QStringLiteral("1-R200"),
+                       QString(), QStringLiteral("float"), 60};
     // The same address on another line: "R100" alone names two series.
-    HistorySeries other{0, QStringLiteral("line2"), QStringLiteral("1-R100"), QString(),
-                        QStringLiteral("signed"), 600};
+    HistorySeries other{0,         QStringLiteral("line2"),  QStringLiteral("1-R100"),
+                        QString(), QStringLiteral("signed"), 600};
     const Result<qint64> a = (*store)->seriesId(level);
     const Result<qint64> b = (*store)->seriesId(temp);
     const Result<qint64> c = (*store)->seriesId(other);
@@ -111,7 +116,8 @@ void TestCliHistory::listsSeries()
     const QStringList lines = QString::fromUtf8(run.out).split(u'\n', Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 3);
     QCOMPARE(lines.at(0), QStringLiteral("line1/1-R100  Tank level  signed  heartbeat 600 s"));
-    QVERIFY2(lines.at(1).startsWith(QLatin1String("line1/1-R200  -  float")), qPrintable(lines.at(1)));
+    QVERIFY2(lines.at(1).startsWith(QLatin1String("line1/1-R200  -  float")),
+             qPrintable(lines.at(1)));
     QVERIFY(lines.at(2).startsWith(QLatin1String("line2/1-R100")));
 }
 
@@ -128,7 +134,8 @@ void TestCliHistory::samplesAsText()
                               .toOffsetFromUtc(QDateTime::fromMSecsSinceEpoch(T0).offsetFromUtc())
                               .toString(Qt::ISODateWithMs);
     QCOMPARE(lines.first(), first + QStringLiteral("  line1/1-R100  110  good"));
-    QVERIFY2(lines.at(20).endsWith(QLatin1String("line1/1-R100  -  stale")), qPrintable(lines.at(20)));
+    QVERIFY2(lines.at(20).endsWith(QLatin1String("line1/1-R100  -  stale")),
+             qPrintable(lines.at(20)));
     QVERIFY(lines.last().endsWith(QLatin1String("  139  good")));
     // --limit stops early.
     const Run limited = runCli({m_store, QStringLiteral("line1/1-R100"), QStringLiteral("--from"),
@@ -187,9 +194,9 @@ void TestCliHistory::refusals()
     const Run unknown = runCli({m_store, QStringLiteral("R999")});
     QCOMPARE(unknown.code, 2);
     QVERIFY2(unknown.err.contains("R999 is no series of the store"), unknown.err.constData());
-    const Run backwards = runCli({m_store, QStringLiteral("line1/1-R100"), QStringLiteral("--from"),
-                                  QStringLiteral("now"), QStringLiteral("--to"),
-                                  QStringLiteral("-1h")});
+    const Run backwards
+        = runCli({m_store, QStringLiteral("line1/1-R100"), QStringLiteral("--from"),
+                  QStringLiteral("now"), QStringLiteral("--to"), QStringLiteral("-1h")});
     QCOMPARE(backwards.code, 2);
     QVERIFY2(backwards.err.contains("must come after --from"), backwards.err.constData());
     const Run badTime = runCli({m_store, QStringLiteral("line1/1-R100"), QStringLiteral("--from"),

@@ -37,8 +37,8 @@ const char *const recordedList = R"json({"format":"fatek-studio-watchlist","vers
   {"name":"Main","intervalMs":100,"items":[
    {"address":"R100","name":"Tank level","history":{"heartbeatS":5}},{"address":"R101"}]}]})json";
 
-QString configJson(const QString &history, const QString &broker = QStringLiteral("mqtt://127.0.0.1:1"),
-                   int port = 1)
+QString configJson(const QString &history,
+                   const QString &broker = QStringLiteral("mqtt://127.0.0.1:1"), int port = 1)
 {
     return QStringLiteral(R"({"format":"fatek-gateway","version":1,"prefix":"fatek","readOnly":true,
       "broker":{"url":"%1"},%2"connections":[{"name":"line1",
@@ -121,23 +121,28 @@ void TestGatewayHistory::configRefusals_data()
 {
     QTest::addColumn<QString>("history");
     QTest::addColumn<QString>("error");
-    QTest::newRow("misspelt key") << R"({"recordAll":true,"heartbeat":60})"
-                                  << R"(history: "heartbeat" is not a known setting; did you mean "heartbeatS"?)";
+    QTest::newRow("misspelt key")
+        << R"({"recordAll":true,"heartbeat":60})"
+        << R"(history: "heartbeat" is not a known setting; did you mean "heartbeatS"?)";
     QTest::newRow("defaults without recordAll")
         << R"({"deadband":2})"
         << R"(history: "deadband" is the setting of every item recorded with "recordAll")";
-    QTest::newRow("heartbeat out of range")
-        << R"({"recordAll":true,"heartbeatS":0})" << "history: heartbeatS";
+    QTest::newRow("heartbeat out of range") << R"({"recordAll":true,"heartbeatS":0})"
+                                            << "history: heartbeatS";
     QTest::newRow("negative deadband") << R"({"recordAll":true,"deadband":-1})"
                                        << "history: deadband";
-    QTest::newRow("retention key") << R"({"retention":{"day":3}})"
-                                   << R"(history: retention: "day" is not a known setting; did you mean "days"?)";
-    QTest::newRow("negative days") << R"({"retention":{"days":-1}})" << "history: retention: days";
-    QTest::newRow("empty store") << R"({"store":" "})" << R"("store" must name a file.)";
+    QTest::newRow("retention key")
+        << R"({"retention":{"day":3}})"
+        << R"(history: retention: "day" is not a known setting; did you mean "days"?)";
+    QTest::newRow("negative days") << R"({"retention":{"days":-1}})"
+                                   << "history: retention: days";
+    QTest::newRow("empty store") << R"({"store":" "})"
+                                 << R"("store" must name a file.)";
     QTest::newRow("password in the URL")
         << R"({"store":"postgresql://fatek:secret@127.0.0.1/plant"})"
         << (HistoryStore::hasPostgres() ? "holds a password" : "has no PostgreSQL client");
-    QTest::newRow("not an object") << R"(true)" << "history";
+    QTest::newRow("not an object") << R"(true)"
+                                   << "history";
 }
 
 void TestGatewayHistory::configRefusals()
@@ -268,9 +273,9 @@ void TestGatewayHistory::killedGatewayLosesAtMostTheLastSecond()
 #else
     QFile config(m_dir->filePath(QStringLiteral("gateway.json")));
     QVERIFY(config.open(QIODevice::WriteOnly));
-    config.write(configJson(QStringLiteral(R"({"recordAll":true})"), m_broker->url(),
-                            m_server->tcpPort())
-                     .toUtf8());
+    config.write(
+        configJson(QStringLiteral(R"({"recordAll":true})"), m_broker->url(), m_server->tcpPort())
+            .toUtf8());
     config.close();
     QProcess gateway;
     gateway.setProcessChannelMode(QProcess::ForwardedErrorChannel);
@@ -297,9 +302,10 @@ void TestGatewayHistory::killedGatewayLosesAtMostTheLastSecond()
     // committed for sure.
     for (const auto &[at, value] : std::as_const(set)) {
         if (at < killed - 1600)
-            QVERIFY2(values.contains(value), qPrintable(QStringLiteral("%1 set %2 ms before the kill is missing")
-                                                            .arg(value)
-                                                            .arg(killed - at)));
+            QVERIFY2(values.contains(value),
+                     qPrintable(QStringLiteral("%1 set %2 ms before the kill is missing")
+                                    .arg(value)
+                                    .arg(killed - at)));
     }
 #endif
 }
