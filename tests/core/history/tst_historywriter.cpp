@@ -51,7 +51,8 @@ std::vector<HistorySample> readBack(const QString &file, const QString &item)
         qWarning("%s", english(store.error().message).c_str());
         return {};
     }
-    for (const HistorySeries &s : *(*store)->series()) {
+    const Result<QList<HistorySeries>> series = (*store)->series();
+    for (const HistorySeries &s : *series) {
         if (s.item == item)
             return *(*store)->samples(s.id, 0, Q_INT64_C(1) << 50);
     }
