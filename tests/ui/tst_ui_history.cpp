@@ -27,6 +27,7 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLineEdit>
 #include <QLineSeries>
 #include <QMenu>
@@ -264,8 +265,38 @@ private Q_SLOTS:
         m_window = nullptr;
     }
 
+    void nothingRecordedMakesNoFile();
     void scrollBackIntoRecordedValues();
 };
+
+// A studio whose tables record nothing, with the demo's rows in the trend and the window going
+// back 8 h, makes no store: the history is opened for the first recorded row, or read when one
+// exists.
+void TestUiHistory::nothingRecordedMakesNoFile()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString unused = dir.filePath(QStringLiteral("never.sqlite"));
+    const QByteArray before = qgetenv("FATEK_HISTORY");
+    qputenv("FATEK_HISTORY", unused.toUtf8());
+    auto *window = new MainWindow;
+    window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    QSignalSpy ready(window, &MainWindow::demoReady);
+    window->startDemo();
+    QVERIFY(ready.wait(longWait));
+    QCOMPARE(window->history()->center()->location(), unused);
+    auto *trendView = window->findChild<TrendView *>();
+    QVERIFY(trendView);
+    QVERIFY(trendView->itemCount() > 0);
+    trendView->setWindowMs(8 * 3600 * 1000LL);
+    QTest::qWait(1500); // polls, trend refreshes and the debounced history request
+    QVERIFY(!window->history()->center()->isOpen());
+    QVERIFY2(!QFileInfo::exists(unused), qPrintable(unused));
+    delete window;
+    QVERIFY(!QFileInfo::exists(unused));
+    qputenv("FATEK_HISTORY", before);
+}
 
 void TestUiHistory::scrollBackIntoRecordedValues()
 {
