@@ -95,6 +95,7 @@ if [ -z "$(find "$tarball" -mtime -30 2>/dev/null)" ]; then
     debootstrap --variant=minbase bookworm "$fresh" "$mirror" >"$fresh.log" 2>&1 ||
         { tail -20 "$fresh.log" >&2; rm -rf --one-file-system "$fresh" "$fresh.log"; exit 1; }
     say "debootstrap took $((SECONDS / 60))m$((SECONDS % 60))s"
+    chmod 755 "$fresh" # mktemp's 0700 would become the root's "/"
     tar -C "$fresh" -cf "$tarball.tmp" .
     mv "$tarball.tmp" "$tarball"
     rm -rf --one-file-system "$fresh" "$fresh.log"
@@ -129,6 +130,9 @@ trap 'exit 143' TERM
 say "unpacking a new root in $root ($(date -r "$tarball" +%F) debootstrap)"
 mkdir "$root"
 tar -C "$root" -xf "$tarball"
+# "/" as on every Debian machine: a tarball made from mktemp's folder says 0700, and then no
+# other user can reach anything (PostgreSQL, which the tests run as nobody, could not start).
+chmod 755 "$root"
 cp /etc/resolv.conf "$root/etc/resolv.conf" # as DHCP would have set it on a new machine
 # The root is thrown away: dpkg need not sync every file it unpacks to the disk.
 echo force-unsafe-io >"$root/etc/dpkg/dpkg.cfg.d/fresh-root-unsafe-io"
