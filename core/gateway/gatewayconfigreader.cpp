@@ -2,13 +2,13 @@
 
 #include "gatewaymessages.h"
 
+#include "core/watch/jsonkeys.h"
+
 #include <QDir>
 #include <QStringList>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace Fatek::GatewayConfigRead {
 
@@ -17,32 +17,6 @@ namespace {
 std::string keyText(const QString &key)
 {
     return key.toStdString();
-}
-
-// Edit distance with adjacent transpositions ("hots" -> "host" is 1), ignoring case.
-qsizetype editDistance(const QString &a, const QString &b)
-{
-    const QString x = a.toCaseFolded();
-    const QString y = b.toCaseFolded();
-    std::vector<std::vector<qsizetype>> d(
-        static_cast<std::size_t>(x.size() + 1),
-        std::vector<qsizetype>(static_cast<std::size_t>(y.size() + 1)));
-    const auto at = [&d](qsizetype i, qsizetype j) -> qsizetype & {
-        return d[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
-    };
-    for (qsizetype i = 0; i <= x.size(); ++i)
-        at(i, 0) = i;
-    for (qsizetype j = 0; j <= y.size(); ++j)
-        at(0, j) = j;
-    for (qsizetype i = 1; i <= x.size(); ++i) {
-        for (qsizetype j = 1; j <= y.size(); ++j) {
-            const qsizetype cost = x.at(i - 1) == y.at(j - 1) ? 0 : 1;
-            at(i, j) = std::min({at(i - 1, j) + 1, at(i, j - 1) + 1, at(i - 1, j - 1) + cost});
-            if (i > 1 && j > 1 && x.at(i - 1) == y.at(j - 2) && x.at(i - 2) == y.at(j - 1))
-                at(i, j) = std::min(at(i, j), at(i - 2, j - 2) + 1);
-        }
-    }
-    return at(x.size(), y.size());
 }
 
 } // namespace
@@ -81,16 +55,9 @@ void Reader::rejectUnknown()
     if (unknown.isEmpty())
         return;
     const QString key = unknown.first();
-    QString nearest;
-    qsizetype best = std::max<qsizetype>(1, key.size() / 3) + 1;
     QStringList candidates(m_known.cbegin(), m_known.cend());
-    candidates.sort();
-    for (const QString &candidate : std::as_const(candidates)) {
-        if (const qsizetype distance = editDistance(key, candidate); distance < best) {
-            best = distance;
-            nearest = candidate;
-        }
-    }
+    candidates.sort(); // ties: the same choice whatever the set's order
+    const QString nearest = JsonKeys::nearest(key, candidates);
     problem = nearest.isEmpty()
                   ? msg<MsgId::GatewayConfigUnknownKey>(keyText(key))
                   : msg<MsgId::GatewayConfigUnknownKeyNear>(keyText(key), keyText(nearest));

@@ -85,8 +85,7 @@ Result<std::optional<HistorySetting>> fromJson(const QJsonValue &value,
     };
     for (auto it = object.begin(); it != object.end(); ++it) {
         if (!knownKeys().contains(it.key())) {
-            return at(it.key(), QStringLiteral("unknown key \"%1\" (known: %2)")
-                                    .arg(it.key(), knownKeys().join(QStringLiteral(", "))));
+            return at(it.key(), WatchList::Errors::unknownKey(it.key(), knownKeys()));
         }
     }
 

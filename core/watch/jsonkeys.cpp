@@ -7,6 +7,7 @@
 #include <QSet>
 #include <QString>
 
+#include <algorithm>
 #include <vector>
 
 namespace Fatek::JsonKeys {
@@ -30,7 +31,46 @@ QString keyText(const QByteArray &json, qsizetype begin, qsizetype end)
     return one.array().at(0).toString();
 }
 
+// Edit distance with adjacent transpositions ("hots" -> "host" is 1), ignoring case.
+qsizetype editDistance(const QString &a, const QString &b)
+{
+    const QString x = a.toCaseFolded();
+    const QString y = b.toCaseFolded();
+    std::vector<std::vector<qsizetype>> d(
+        static_cast<std::size_t>(x.size() + 1),
+        std::vector<qsizetype>(static_cast<std::size_t>(y.size() + 1)));
+    const auto at = [&d](qsizetype i, qsizetype j) -> qsizetype & {
+        return d[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+    };
+    for (qsizetype i = 0; i <= x.size(); ++i)
+        at(i, 0) = i;
+    for (qsizetype j = 0; j <= y.size(); ++j)
+        at(0, j) = j;
+    for (qsizetype i = 1; i <= x.size(); ++i) {
+        for (qsizetype j = 1; j <= y.size(); ++j) {
+            const qsizetype cost = x.at(i - 1) == y.at(j - 1) ? 0 : 1;
+            at(i, j) = std::min({at(i - 1, j) + 1, at(i, j - 1) + 1, at(i - 1, j - 1) + cost});
+            if (i > 1 && j > 1 && x.at(i - 1) == y.at(j - 2) && x.at(i - 2) == y.at(j - 1))
+                at(i, j) = std::min(at(i, j), at(i - 2, j - 2) + 1);
+        }
+    }
+    return at(x.size(), y.size());
+}
+
 } // namespace
+
+QString nearest(const QString &key, const QStringList &known)
+{
+    QString best;
+    qsizetype bestDistance = std::max<qsizetype>(1, key.size() / 3) + 1;
+    for (const QString &candidate : known) {
+        if (const qsizetype distance = editDistance(key, candidate); distance < bestDistance) {
+            bestDistance = distance;
+            best = candidate;
+        }
+    }
+    return best;
+}
 
 std::optional<Message> firstDuplicate(const QByteArray &json)
 {

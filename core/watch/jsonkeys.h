@@ -6,6 +6,7 @@
 
 #include <QList>
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 #include <variant>
@@ -24,5 +25,11 @@ using Path = QList<std::variant<QString, qsizetype>>;
 // The line of `key` in the object at `path` of `json` (text QJsonDocument accepted), or 0 when
 // there is none: an error about one key names the line an editor shows.
 int keyLine(const QByteArray &json, const Path &path, const QString &key);
+
+// The key of `known` that the unknown `key` most likely means, for "did you mean": the closest by
+// edit distance (case ignored, two swapped neighbours one edit), when at most a third of its
+// length (at least 1) away; empty when none is that close. Ties go to the first in `known`.
+// Shared by the watch list and the gateway's configuration, so one slip reads the same in both.
+QString nearest(const QString &key, const QStringList &known);
 
 } // namespace Fatek::JsonKeys

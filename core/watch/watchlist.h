@@ -66,10 +66,11 @@ struct WatchListFile
 //    "history":{"deadband":0.5,"heartbeatS":600}}]}],
 //   "symbols":[{"address":"R12","name":"Tank level","comment":"..."}]}
 // "symbols" (the imported names, SymbolTable) is optional and written only when there are names,
-// an item's "allowNonFinite" only when true: version 1 readers ignore unknown keys, so the version
-// stays 1; a file with alarms or history settings is version 2 (Alarms::fromJson,
-// HistorySettings::fromJson: every key of an alarm or a history setting is known, an unknown one is
-// refused with its line). A key given twice in one object is an error ("line 4:
+// an item's "allowNonFinite" only when true: readers before issue 55 ignored unknown keys, so the
+// version stays 1; a file with alarms or history settings is version 2. Every object of the file
+// (root, table, item, symbol, alarm, history setting) refuses a key it does not know, with its line
+// and the known key it most likely means (issue 55: a misspelt "staton" polled station 1), so a
+// new key needs a new version. A key given twice in one object is an error ("line 4:
 // duplicate key ..."), not the last one silently. Errors name the place ("table 2, item 5: ...",
 // "line 7: ...").
 namespace WatchList {
@@ -98,8 +99,8 @@ Status validateEntry(const WatchItemSpec &entry);
 Status validate(const WatchListFile &file);
 
 // Parses and validates a watch list file. Within version 1, missing optional keys take their
-// defaults (station 1, format by element type, swapWords false, intervalMs 500, confirmWrites true)
-// and unknown keys are ignored.
+// defaults (station 1, format by element type, swapWords false, intervalMs 500, confirmWrites
+// true); an unknown key is an error.
 Result<WatchListFile> load(const QByteArray &json);
 Result<WatchListFile> loadFromFile(const QString &path);
 

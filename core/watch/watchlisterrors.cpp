@@ -1,5 +1,6 @@
 #include "watchlisterrors.h"
 
+#include "jsonkeys.h"
 #include "watchlist.h"
 
 #include <QStringList>
@@ -34,6 +35,15 @@ QString knownFormats()
     for (DisplayFormat f : ValueFormat::allFormats())
         names.append(ValueFormat::name(f));
     return names.join(QStringLiteral(", "));
+}
+
+QString unknownKey(const QString &key, const QStringList &known)
+{
+    QString text = QStringLiteral("unknown key \"%1\" (known: %2)")
+                       .arg(key, known.join(QStringLiteral(", ")));
+    if (const QString near = JsonKeys::nearest(key, known); !near.isEmpty())
+        text += QStringLiteral("; did you mean \"%1\"?").arg(near);
+    return text;
 }
 
 Message tablePlace(qsizetype table)

@@ -7,6 +7,7 @@
 #include "core/protocol/result.h"
 
 #include <QString>
+#include <QStringList>
 
 namespace Fatek::WatchList::Errors {
 
@@ -21,6 +22,10 @@ ProtocolError atPlace(const QString &place, const ProtocolError &error);
 // The display format names, for "unknown format" messages.
 QString knownFormats();
 ProtocolError tooManyItems(qsizetype count);
+// A key no reader of its object knows, refused rather than ignored (a misspelt "staton" would
+// poll station 1): "unknown key "fromat" (known: ...); did you mean "format"?", the hint only
+// when one known key is close. Plain text like the other watch list file errors.
+QString unknownKey(const QString &key, const QStringList &known);
 
 // Places count from 1; table and item are indices.
 Message tablePlace(qsizetype table);

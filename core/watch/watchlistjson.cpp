@@ -14,9 +14,8 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 
-#include <functional>
-
 #include <cmath>
+#include <utility>
 
 namespace Fatek::WatchList {
 
@@ -24,70 +23,156 @@ using namespace Errors;
 
 namespace {
 
-Result<QString> textMember(const QJsonObject &object, const QString &key, const QString &fallback)
+// One object of the file. Every key it does not know is refused (a misspelt "staton" would
+// otherwise poll station 1 on a multi-drop line), and an error about a key names its line.
+class Members
 {
-    const QJsonValue value = object.value(key);
-    if (value.isUndefined())
-        return fallback;
-    if (!value.isString())
-        return fileError(QStringLiteral("\"%1\" must be text").arg(key));
-    return value.toString();
-}
+public:
+    Members(const QJsonObject &object, const QByteArray &json, JsonKeys::Path path)
+        : m_object(object)
+        , m_json(json)
+        , m_path(std::move(path))
+    {}
 
-Result<bool> boolMember(const QJsonObject &object, const QString &key, bool fallback)
-{
-    const QJsonValue value = object.value(key);
-    if (value.isUndefined())
-        return fallback;
-    if (!value.isBool())
-        return fileError(QStringLiteral("\"%1\" must be true or false").arg(key));
-    return value.toBool();
-}
+    const QJsonObject &object() const { return m_object; }
+    const JsonKeys::Path &path() const { return m_path; }
 
-Result<int> intMember(const QJsonObject &object, const QString &key, int fallback, int min, int max)
-{
-    const QJsonValue value = object.value(key);
-    if (value.isUndefined())
-        return fallback;
-    const double number = value.toDouble();
-    if (!value.isDouble() || std::floor(number) != number || number < min || number > max) {
-        return fileError(QStringLiteral("\"%1\" must be a whole number from %2 to %3")
-                             .arg(key)
-                             .arg(min)
-                             .arg(max));
+    ProtocolError error(const QString &key, const QString &text) const
+    {
+        const int line = JsonKeys::keyLine(m_json, m_path, key);
+        return fileError(line > 0 ? QStringLiteral("line %1: %2").arg(line).arg(text) : text);
     }
-    return static_cast<int>(number);
+
+    // The first unknown key in the file's order (QJsonObject sorts its keys).
+    Status rejectUnknown(const QStringList &known) const
+    {
+        QString first;
+        int firstLine = 0;
+        for (auto it = m_object.begin(); it != m_object.end(); ++it) {
+            if (known.contains(it.key()))
+                continue;
+            const int line = JsonKeys::keyLine(m_json, m_path, it.key());
+            if (first.isNull() || (line > 0 && (firstLine == 0 || line < firstLine))) {
+                first = it.key();
+                firstLine = line;
+            }
+        }
+        if (first.isNull())
+            return Ok{};
+        return error(first, unknownKey(first, known));
+    }
+
+    Result<QString> text(const QString &key, const QString &fallback) const
+    {
+        const QJsonValue value = m_object.value(key);
+        if (value.isUndefined())
+            return fallback;
+        if (!value.isString())
+            return error(key, QStringLiteral("\"%1\" must be text").arg(key));
+        return value.toString();
+    }
+
+    Result<bool> boolean(const QString &key, bool fallback) const
+    {
+        const QJsonValue value = m_object.value(key);
+        if (value.isUndefined())
+            return fallback;
+        if (!value.isBool())
+            return error(key, QStringLiteral("\"%1\" must be true or false").arg(key));
+        return value.toBool();
+    }
+
+    Result<int> integer(const QString &key, int fallback, int min, int max) const
+    {
+        const QJsonValue value = m_object.value(key);
+        if (value.isUndefined())
+            return fallback;
+        const double number = value.toDouble();
+        if (!value.isDouble() || std::floor(number) != number || number < min || number > max) {
+            return error(key, QStringLiteral("\"%1\" must be a whole number from %2 to %3")
+                                  .arg(key)
+                                  .arg(min)
+                                  .arg(max));
+        }
+        return static_cast<int>(number);
+    }
+
+    // A required address ("R100").
+    Result<Address> address() const
+    {
+        const QString key = QStringLiteral("address");
+        const QJsonValue value = m_object.value(key);
+        if (value.isUndefined())
+            return fileError(QStringLiteral("the \"address\" is missing"));
+        if (!value.isString())
+            return error(key, QStringLiteral("\"address\" must be text such as \"R100\""));
+        auto parsed = Address::parse(value.toString().toStdString());
+        if (!parsed) {
+            const int line = JsonKeys::keyLine(m_json, m_path, key);
+            return line > 0 ? atPlace(linePlace(line), parsed.error()) : parsed.error();
+        }
+        return *parsed;
+    }
+
+private:
+    QJsonObject m_object;
+    const QByteArray &m_json;
+    JsonKeys::Path m_path;
+};
+
+// Every key each object of the file has: what save() writes.
+const QStringList &rootKeys()
+{
+    static const QStringList keys{QStringLiteral("format"), QStringLiteral("version"),
+                                  QStringLiteral("tables"), QStringLiteral("symbols")};
+    return keys;
 }
 
-// The line of a key of an item's alarm N, for the alarms' errors.
-using AlarmKeyLine = std::function<int(qsizetype, const QString &)>;
-// The line of a key of the item's history setting.
-using HistoryKeyLine = std::function<int(const QString &)>;
+const QStringList &tableKeys()
+{
+    static const QStringList keys{QStringLiteral("name"), QStringLiteral("intervalMs"),
+                                  QStringLiteral("confirmWrites"), QStringLiteral("items")};
+    return keys;
+}
 
-Result<WatchItemSpec> entryFromJson(const QJsonValue &value, const AlarmKeyLine &alarmKeyLine,
-                                    const HistoryKeyLine &historyKeyLine)
+const QStringList &itemKeys()
+{
+    static const QStringList keys{
+        QStringLiteral("address"),   QStringLiteral("station"),        QStringLiteral("format"),
+        QStringLiteral("swapWords"), QStringLiteral("allowNonFinite"), QStringLiteral("name"),
+        QStringLiteral("comment"),   QStringLiteral("alarms"),         QStringLiteral("history"),
+    };
+    return keys;
+}
+
+const QStringList &symbolKeys()
+{
+    static const QStringList keys{QStringLiteral("address"), QStringLiteral("name"),
+                                  QStringLiteral("comment")};
+    return keys;
+}
+
+Result<WatchItemSpec> entryFromJson(const QJsonValue &value, const QByteArray &json,
+                                    const JsonKeys::Path &path)
 {
     if (!value.isObject())
         return fileError(QStringLiteral("an item must be a JSON object"));
-    const QJsonObject object = value.toObject();
+    const Members m(value.toObject(), json, path);
+    if (Status s = m.rejectUnknown(itemKeys()); !s)
+        return s.error();
 
     WatchItemSpec entry;
-    const QJsonValue address = object.value(QStringLiteral("address"));
-    if (address.isUndefined())
-        return fileError(QStringLiteral("the \"address\" is missing"));
-    if (!address.isString())
-        return fileError(QStringLiteral("\"address\" must be text such as \"R100\""));
-    const auto parsed = Address::parse(address.toString().toStdString());
-    if (!parsed)
-        return parsed.error();
-    entry.address = *parsed;
+    const auto address = m.address();
+    if (!address)
+        return address.error();
+    entry.address = *address;
 
-    const auto station = intMember(object, QStringLiteral("station"), 1, 1, 254);
+    const auto station = m.integer(QStringLiteral("station"), 1, 1, 254);
     if (!station)
         return station.error();
     entry.station = static_cast<quint8>(*station);
 
-    const auto formatName = textMember(object, QStringLiteral("format"), QString());
+    const auto formatName = m.text(QStringLiteral("format"), QString());
     if (!formatName)
         return formatName.error();
     if (formatName->isEmpty()) {
@@ -95,34 +180,45 @@ Result<WatchItemSpec> entryFromJson(const QJsonValue &value, const AlarmKeyLine 
     } else if (const auto format = ValueFormat::fromName(*formatName)) {
         entry.format = *format;
     } else {
-        return fileError(
+        return m.error(
+            QStringLiteral("format"),
             QStringLiteral("unknown format \"%1\" (known: %2)").arg(*formatName, knownFormats()));
     }
 
-    const auto swap = boolMember(object, QStringLiteral("swapWords"), false);
+    const auto swap = m.boolean(QStringLiteral("swapWords"), false);
     if (!swap)
         return swap.error();
     entry.swapWords = *swap;
-    const auto nonFinite = boolMember(object, QStringLiteral("allowNonFinite"), false);
+    const auto nonFinite = m.boolean(QStringLiteral("allowNonFinite"), false);
     if (!nonFinite)
         return nonFinite.error();
     entry.allowNonFinite = *nonFinite;
 
-    const auto name = textMember(object, QStringLiteral("name"), QString());
+    const auto name = m.text(QStringLiteral("name"), QString());
     if (!name)
         return name.error();
     entry.name = *name;
-    const auto comment = textMember(object, QStringLiteral("comment"), QString());
+    const auto comment = m.text(QStringLiteral("comment"), QString());
     if (!comment)
         return comment.error();
     entry.comment = *comment;
 
-    auto alarms = Alarms::fromJson(object.value(QStringLiteral("alarms")), alarmKeyLine);
+    const auto alarmKeyLine = [&](qsizetype alarm, const QString &key) {
+        JsonKeys::Path at = path;
+        at << QStringLiteral("alarms") << alarm;
+        return JsonKeys::keyLine(json, at, key);
+    };
+    const auto historyKeyLine = [&](const QString &key) {
+        JsonKeys::Path at = path;
+        at << QStringLiteral("history");
+        return JsonKeys::keyLine(json, at, key);
+    };
+    auto alarms = Alarms::fromJson(m.object().value(QStringLiteral("alarms")), alarmKeyLine);
     if (!alarms)
         return alarms.error();
     entry.alarms = std::move(alarms).value();
     auto history
-        = HistorySettings::fromJson(object.value(QStringLiteral("history")), historyKeyLine);
+        = HistorySettings::fromJson(m.object().value(QStringLiteral("history")), historyKeyLine);
     if (!history)
         return history.error();
     entry.history = *history;
@@ -138,46 +234,37 @@ Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index,
     const Message place = tablePlace(index);
     if (!value.isObject())
         return atPlace(place, fileError(QStringLiteral("a table must be a JSON object")));
-    const QJsonObject object = value.toObject();
+    const Members m(value.toObject(), json, {QStringLiteral("tables"), index});
+    if (Status s = m.rejectUnknown(tableKeys()); !s)
+        return atPlace(place, s.error());
 
     WatchTableSpec table;
-    const auto name
-        = textMember(object, QStringLiteral("name"), QStringLiteral("Table %1").arg(index + 1));
+    const auto name = m.text(QStringLiteral("name"), QStringLiteral("Table %1").arg(index + 1));
     if (!name)
         return atPlace(place, name.error());
     table.name = *name;
     const auto interval
-        = intMember(object, QStringLiteral("intervalMs"), 500, MinIntervalMs, MaxIntervalMs);
+        = m.integer(QStringLiteral("intervalMs"), 500, MinIntervalMs, MaxIntervalMs);
     if (!interval)
         return atPlace(place, interval.error());
     table.intervalMs = *interval;
-    const auto confirm = boolMember(object, QStringLiteral("confirmWrites"), true);
+    const auto confirm = m.boolean(QStringLiteral("confirmWrites"), true);
     if (!confirm)
         return atPlace(place, confirm.error());
     table.confirmWrites = *confirm;
 
-    const QJsonValue items = object.value(QStringLiteral("items"));
+    const QString itemsKey = QStringLiteral("items");
+    const QJsonValue items = m.object().value(itemsKey);
     if (items.isUndefined())
         return table;
     if (!items.isArray())
-        return atPlace(place, fileError(QStringLiteral("\"items\" must be a list")));
+        return atPlace(place, m.error(itemsKey, QStringLiteral("\"items\" must be a list")));
     const QJsonArray array = items.toArray();
     if (array.size() > MaxTableItems)
         return atPlace(place, tooManyItems(array.size()));
     for (qsizetype i = 0; i < array.size(); ++i) {
-        const auto alarmKeyLine = [&](qsizetype alarm, const QString &key) {
-            return JsonKeys::keyLine(json,
-                                     {QStringLiteral("tables"), index, QStringLiteral("items"), i,
-                                      QStringLiteral("alarms"), alarm},
-                                     key);
-        };
-        const auto historyKeyLine = [&](const QString &key) {
-            return JsonKeys::keyLine(json,
-                                     {QStringLiteral("tables"), index, QStringLiteral("items"), i,
-                                      QStringLiteral("history")},
-                                     key);
-        };
-        auto entry = entryFromJson(array.at(i), alarmKeyLine, historyKeyLine);
+        auto entry
+            = entryFromJson(array.at(i), json, {QStringLiteral("tables"), index, itemsKey, i});
         if (!entry)
             return atPlace(itemPlace(index, i), entry.error());
         table.items.append(std::move(entry).value());
@@ -185,27 +272,27 @@ Result<WatchTableSpec> tableFromJson(const QJsonValue &value, qsizetype index,
     return table;
 }
 
-Result<std::pair<Address, Symbol>> symbolFromJson(const QJsonValue &value)
+Result<std::pair<Address, Symbol>> symbolFromJson(const QJsonValue &value, qsizetype index,
+                                                  const QByteArray &json)
 {
     if (!value.isObject())
         return fileError(QStringLiteral("a symbol must be a JSON object"));
-    const QJsonObject object = value.toObject();
-    const QJsonValue address = object.value(QStringLiteral("address"));
-    if (!address.isString())
-        return fileError(QStringLiteral("\"address\" must be text such as \"R100\""));
-    const auto parsed = Address::parse(address.toString().toStdString());
-    if (!parsed)
-        return parsed.error();
-    const auto name = textMember(object, QStringLiteral("name"), QString());
+    const Members m(value.toObject(), json, {QStringLiteral("symbols"), index});
+    if (Status s = m.rejectUnknown(symbolKeys()); !s)
+        return s.error();
+    const auto address = m.address();
+    if (!address)
+        return address.error();
+    const auto name = m.text(QStringLiteral("name"), QString());
     if (!name)
         return name.error();
-    const auto comment = textMember(object, QStringLiteral("comment"), QString());
+    const auto comment = m.text(QStringLiteral("comment"), QString());
     if (!comment)
         return comment.error();
-    return std::pair{*parsed, Symbol{*name, *comment}};
+    return std::pair{*address, Symbol{*name, *comment}};
 }
 
-Result<SymbolTable> symbolsFromJson(const QJsonValue &value)
+Result<SymbolTable> symbolsFromJson(const QJsonValue &value, const QByteArray &json)
 {
     SymbolTable symbols;
     if (value.isUndefined())
@@ -214,7 +301,7 @@ Result<SymbolTable> symbolsFromJson(const QJsonValue &value)
         return fileError(QStringLiteral("\"symbols\" must be a list"));
     const QJsonArray array = value.toArray();
     for (qsizetype i = 0; i < array.size(); ++i) {
-        const auto symbol = symbolFromJson(array.at(i));
+        const auto symbol = symbolFromJson(array.at(i), i, json);
         if (!symbol)
             return atPlace(msg<MsgId::PlaceSymbol>(i + 1), symbol.error());
         symbols.insert(symbol->first, symbol->second);
@@ -265,6 +352,9 @@ Result<WatchListFile> load(const QByteArray &json)
                 .arg(ItemSettingsVersion));
     }
 
+    // After the version: a newer file's new keys are "written by a newer FATEK Studio".
+    if (Status s = Members(root, json, {}).rejectUnknown(rootKeys()); !s)
+        return s.error();
     const QJsonValue tables = root.value(QStringLiteral("tables"));
     if (!tables.isArray())
         return fileError(QStringLiteral("The watch list has no \"tables\" list."));
@@ -276,7 +366,7 @@ Result<WatchListFile> load(const QByteArray &json)
             return table.error();
         file.tables.append(std::move(table).value());
     }
-    auto symbols = symbolsFromJson(root.value(QStringLiteral("symbols")));
+    auto symbols = symbolsFromJson(root.value(QStringLiteral("symbols")), json);
     if (!symbols)
         return symbols.error();
     file.symbols = std::move(symbols).value();

@@ -26,6 +26,8 @@ private Q_SLOTS:
     void passwordFile();
     void alarmJournal();
     void duplicateKeysNamed();
+    void watchListUnknownKeys_data();
+    void watchListUnknownKeys();
     void checkValid();
     void checkInvalid();
     void checkUsage();
@@ -379,6 +381,69 @@ void TestGatewayConfig::duplicateKeysNamed()
     const QString text = QString::fromStdString(config.error().text());
     QVERIFY2(text.endsWith(QStringLiteral("dup.json: line 2: duplicate key \"address\"")),
              qPrintable(text));
+}
+
+// Issue 55: a watch list's misspelt key once passed --check and ran (R200 read as signed, station 1
+// polled instead of 2, interval 500, an empty table). Refused, naming the file, the place, the
+// line and the key it most likely means, by the library and by the real program.
+void TestGatewayConfig::watchListUnknownKeys_data()
+{
+    QTest::addColumn<QByteArray>("list");
+    QTest::addColumn<QString>("expected");
+    const QByteArray head = "{\"format\":\"fatek-studio-watchlist\",\"version\":1,\n\"tables\":[\n";
+    const QString item = QStringLiteral("unknown key \"%1\" (known: address, station, format, "
+                                        "swapWords, allowNonFinite, name, comment, alarms, "
+                                        "history); did you mean \"%2\"?");
+    const QString table = QStringLiteral("unknown key \"%1\" (known: name, intervalMs, "
+                                         "confirmWrites, items); did you mean \"%2\"?");
+    QTest::newRow("fromat") << head + R"({"items":[{"address":"R100"},
+{"address":"R200",
+"fromat":"float"}]}]})"
+                            << "table 1, item 2: line 5: " + item.arg("fromat", "format");
+    QTest::newRow("staton") << head + R"({"items":[{"address":"DR10",
+"staton":2}]}]})"
+                            << "table 1, item 1: line 4: " + item.arg("staton", "station");
+    QTest::newRow("swapwords") << head + R"({"items":[{"address":"DR10","format":"float",
+"swapwords":true}]}]})"
+                               << "table 1, item 1: line 4: " + item.arg("swapwords", "swapWords");
+    QTest::newRow("intervalMS") << head + R"({"name":"Fast",
+"intervalMS":50,"items":[{"address":"R1"}]}]})"
+                                << "table 1: line 4: " + table.arg("intervalMS", "intervalMs");
+    QTest::newRow("itmes") << head + R"({"items":[{"address":"R1"}]},
+{"name":"Second",
+"itmes":[{"address":"R2"}]}]})"
+                           << "table 2: line 5: " + table.arg("itmes", "items");
+    QTest::newRow("root key")
+        << head + R"({"items":[{"address":"R1"}]}],
+"tabels":[]})"
+        << "line 4: unknown key \"tabels\" (known: format, version, tables, symbols); "
+           "did you mean \"tables\"?";
+}
+
+void TestGatewayConfig::watchListUnknownKeys()
+{
+    QFETCH(QByteArray, list);
+    QFETCH(QString, expected);
+    const QString file = QStringLiteral("hostile-%1.json").arg(QTest::currentDataTag());
+    QVERIFY(!write(file, list).isEmpty());
+    const QJsonObject json
+        = replaced(validConfig(), {"connections", 0, "watchLists", 0, "file"}, QJsonValue(file))
+              .toObject();
+    const QString message = QStringLiteral("connection 1 (line1): watch list ") + file
+                            + QStringLiteral(": ") + expected;
+    const Result<GatewayConfig> config
+        = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());
+    QVERIFY(!config.ok());
+    QCOMPARE(QString::fromStdString(config.error().text()), message);
+
+    const QString path
+        = write(QStringLiteral("hostile-gateway.json"), QJsonDocument(json).toJson());
+    const TestUtil::ProgramRun run
+        = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--check", path});
+    QCOMPARE(run.code, 2);
+    QVERIFY(run.out.isEmpty());
+    QCOMPARE(run.err.trimmed(),
+             QStringLiteral("fatek-gateway: ") + path + QStringLiteral(": ") + message);
 }
 
 void TestGatewayConfig::passwordFile()

@@ -124,7 +124,7 @@ void TestAlarmDefinitions::loadErrors_data()
       "dedband":2}]})")
         << at
                + "line 4: unknown key \"dedband\" (known: type, limit, deadband, onDelayMs, "
-                 "offDelayMs, priority, message, group, enabled)";
+                 "offDelayMs, priority, message, group, enabled); did you mean \"deadband\"?";
     QTest::newRow("unknown type") << QByteArray(R"({"address":"R100","alarms":[{"type":"hi"}]})")
                                   << at
                                          + "line 3: unknown type \"hi\" (known: highHigh, high, "
@@ -166,7 +166,8 @@ void TestAlarmDefinitions::loadErrors_data()
       {"type":"low","limit":1,
        "Limit":2}]})")
         << "table 1, item 2: alarm 2: line 5: unknown key \"Limit\" (known: type, limit, "
-           "deadband, onDelayMs, offDelayMs, priority, message, group, enabled)";
+           "deadband, onDelayMs, offDelayMs, priority, message, group, enabled); did you mean "
+           "\"limit\"?";
 }
 
 void TestAlarmDefinitions::loadErrors()

@@ -133,7 +133,9 @@ void TestHistorySettings::loadErrors_data()
     QTest::newRow("unknown key, with its line")
         << QByteArray(R"({"address":"R100","history":{"heartbeatS":60,
       "dedband":2}})")
-        << at + "line 4: unknown key \"dedband\" (known: deadband, heartbeatS)";
+        << at
+               + "line 4: unknown key \"dedband\" (known: deadband, heartbeatS); did you mean "
+                 "\"deadband\"?";
     QTest::newRow("key twice") << QByteArray(R"({"address":"R100","history":{"deadband":1,
       "deadband":2}})") << "line 4: duplicate key \"deadband\"";
     QTest::newRow("not an object") << QByteArray(R"({"address":"R100","history":true})")

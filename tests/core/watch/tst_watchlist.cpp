@@ -84,6 +84,8 @@ private slots:
     void loadDefaults();
     void loadErrors_data();
     void loadErrors();
+    void unknownKeysRefused_data();
+    void unknownKeysRefused();
     void notJsonNamesLine();
     void errorNamesTableAndItem();
     void saveToFileAndBack();
@@ -168,8 +170,8 @@ void TestWatchList::savedJsonShape()
 void TestWatchList::loadDefaults()
 {
     const auto loaded = WatchList::load(
-        R"({"format":"fatek-studio-watchlist","version":1,"future":"ignored",
-            "tables":[{"items":[{"address":"R100"},{"address":"y3","extra":5}]}, {}]})");
+        R"({"format":"fatek-studio-watchlist","version":1,
+            "tables":[{"items":[{"address":"R100"},{"address":"y3"}]}, {}]})");
     QVERIFY2(loaded.ok(), qPrintable(errorText(loaded)));
     QCOMPARE(loaded->tables.size(), 2);
     const WatchTableSpec &t = loaded->tables.at(0);
@@ -233,39 +235,40 @@ void TestWatchList::loadErrors_data()
         << "table 1: a table must be a JSON object";
     QTest::newRow("interval small")
         << fileWithItems({}, R"(,"intervalMs":5)")
-        << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
+        << "table 1: line 1: \"intervalMs\" must be a whole number from 10 to 3600000";
     QTest::newRow("interval text")
         << fileWithItems({}, R"(,"intervalMs":"500")")
-        << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
+        << "table 1: line 1: \"intervalMs\" must be a whole number from 10 to 3600000";
     QTest::newRow("interval fraction")
         << fileWithItems({}, R"(,"intervalMs":500.5)")
-        << "table 1: \"intervalMs\" must be a whole number from 10 to 3600000";
+        << "table 1: line 1: \"intervalMs\" must be a whole number from 10 to 3600000";
     QTest::newRow("confirm text") << fileWithItems({}, R"(,"confirmWrites":"yes")")
-                                  << "table 1: \"confirmWrites\" must be true or false";
+                                  << "table 1: line 1: \"confirmWrites\" must be true or false";
     QTest::newRow("table name number")
         << QByteArray(R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"name":5}]})")
-        << "table 1: \"name\" must be text";
+        << "table 1: line 1: \"name\" must be text";
     QTest::newRow("items object") << QByteArray(
         R"({"format":"fatek-studio-watchlist","version":1,"tables":[{"items":{}}]})")
-                                  << "table 1: \"items\" must be a list";
+                                  << "table 1: line 1: \"items\" must be a list";
     QTest::newRow("item not object")
         << fileWithItems("\"R100\"") << "table 1, item 1: an item must be a JSON object";
     QTest::newRow("no address") << fileWithItems(R"({"station":1})")
                                 << "table 1, item 1: the \"address\" is missing";
-    QTest::newRow("address number") << fileWithItems(R"({"address":100})")
-                                    << "table 1, item 1: \"address\" must be text such as \"R100\"";
+    QTest::newRow("address number")
+        << fileWithItems(R"({"address":100})")
+        << "table 1, item 1: line 1: \"address\" must be text such as \"R100\"";
     QTest::newRow("address range")
         << fileWithItems(R"({"address":"R70000"})")
-        << "table 1, item 1: address R70000 is out of range: R numbers go from 0 to 65535.";
+        << "table 1, item 1: line 1: address R70000 is out of range: R numbers go from 0 to 65535.";
     QTest::newRow("address unaligned")
         << fileWithItems(R"({"address":"WY4"})")
-        << "table 1, item 1: address WY4 is not aligned: WY must start at a multiple "
+        << "table 1, item 1: line 1: address WY4 is not aligned: WY must start at a multiple "
            "of 8 (e.g. WY0).";
     QTest::newRow("unknown format")
         << fileWithItems(R"({"address":"R1"},{"address":"R2","format":"decimal"})")
-        << "table 1, item 2: unknown format \"decimal\" (known: " + knownFormats + ")";
+        << "table 1, item 2: line 1: unknown format \"decimal\" (known: " + knownFormats + ")";
     QTest::newRow("format number") << fileWithItems(R"({"address":"R1","format":3})")
-                                   << "table 1, item 1: \"format\" must be text";
+                                   << "table 1, item 1: line 1: \"format\" must be text";
     QTest::newRow("float on bit")
         << fileWithItems(R"({"address":"X0","format":"float"})")
         << "table 1, item 1: format \"float\" does not apply to X0 (input)";
@@ -282,19 +285,19 @@ void TestWatchList::loadErrors_data()
            "from DR65534 run past DR65534, the last DR.";
     QTest::newRow("station 0")
         << fileWithItems(R"({"address":"R1","station":0})")
-        << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
+        << "table 1, item 1: line 1: \"station\" must be a whole number from 1 to 254";
     QTest::newRow("station 255")
         << fileWithItems(R"({"address":"R1","station":255})")
-        << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
+        << "table 1, item 1: line 1: \"station\" must be a whole number from 1 to 254";
     QTest::newRow("station text")
         << fileWithItems(R"({"address":"R1","station":"1"})")
-        << "table 1, item 1: \"station\" must be a whole number from 1 to 254";
+        << "table 1, item 1: line 1: \"station\" must be a whole number from 1 to 254";
     QTest::newRow("swap text") << fileWithItems(R"({"address":"DR0","swapWords":"no"})")
-                               << "table 1, item 1: \"swapWords\" must be true or false";
+                               << "table 1, item 1: line 1: \"swapWords\" must be true or false";
     QTest::newRow("name number") << fileWithItems(R"({"address":"R1","name":1})")
-                                 << "table 1, item 1: \"name\" must be text";
+                                 << "table 1, item 1: line 1: \"name\" must be text";
     QTest::newRow("comment list") << fileWithItems(R"({"address":"R1","comment":[]})")
-                                  << "table 1, item 1: \"comment\" must be text";
+                                  << "table 1, item 1: line 1: \"comment\" must be text";
     // Issue 48: QJsonDocument keeps the last of two equal keys; the file says which line.
     QTest::newRow("duplicate item key")
         << fileWithItems("{\"address\":\"R1\",\n\"format\":\"hex\",\n\"format\":\"float\"}")
@@ -306,8 +309,9 @@ void TestWatchList::loadErrors_data()
     QTest::newRow("duplicate escaped key")
         << fileWithItems(R"({"address":"R1","name":"a","n\u0061me":"b"})")
         << "line 1: duplicate key \"name\"";
-    QTest::newRow("nonfinite text") << fileWithItems(R"({"address":"R1","allowNonFinite":1})")
-                                    << "table 1, item 1: \"allowNonFinite\" must be true or false";
+    QTest::newRow("nonfinite text")
+        << fileWithItems(R"({"address":"R1","allowNonFinite":1})")
+        << "table 1, item 1: line 1: \"allowNonFinite\" must be true or false";
     QByteArray many = R"({"address":"R1"})";
     for (int i = 1; i <= WatchList::MaxTableItems; ++i)
         many += R"(,{"address":"R1"})";
@@ -322,6 +326,64 @@ void TestWatchList::loadErrors()
     QFETCH(QString, message);
     const auto r = WatchList::load(json);
     QVERIFY(!r.ok());
+    QCOMPARE(errorText(r), message);
+}
+
+// Issue 55: a misspelt key was ignored, so R200 was read as signed, station 1 polled instead of 2
+// (another PLC on a multi-drop line), the interval stayed 500 and a table was silently empty. Each
+// object of the file now refuses a key it does not know, with its place, its line and the key it
+// most likely means.
+void TestWatchList::unknownKeysRefused_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("message");
+    const QByteArray head = "{\"format\":\"fatek-studio-watchlist\",\"version\":1,\n\"tables\":[\n";
+    const QString item = QStringLiteral("unknown key \"%1\" (known: address, station, format, "
+                                        "swapWords, allowNonFinite, name, comment, alarms, "
+                                        "history); did you mean \"%2\"?");
+    const QString table = QStringLiteral("unknown key \"%1\" (known: name, intervalMs, "
+                                         "confirmWrites, items); did you mean \"%2\"?");
+    const QString root = QStringLiteral("line 4: unknown key \"%1\" (known: format, version, "
+                                        "tables, symbols)");
+    QTest::newRow("fromat") << head + R"({"items":[{"address":"R100"},
+{"address":"R200",
+"fromat":"float"}]}]})"
+                            << "table 1, item 2: line 5: " + item.arg("fromat", "format");
+    QTest::newRow("staton") << head + R"({"items":[{"address":"DR10",
+"staton":2}]}]})"
+                            << "table 1, item 1: line 4: " + item.arg("staton", "station");
+    QTest::newRow("swapwords") << head + R"({"items":[{"address":"DR10","format":"float",
+"swapwords":true}]}]})"
+                               << "table 1, item 1: line 4: " + item.arg("swapwords", "swapWords");
+    QTest::newRow("intervalMS") << head + R"({"name":"Fast",
+"intervalMS":50,"items":[{"address":"R1"}]}]})"
+                                << "table 1: line 4: " + table.arg("intervalMS", "intervalMs");
+    QTest::newRow("itmes, second table") << head + R"({"items":[{"address":"R1"}]},
+{"name":"Second",
+"itmes":[{"address":"R2"}]}]})"
+                                         << "table 2: line 5: " + table.arg("itmes", "items");
+    QTest::newRow("root tabels") << head + "],\n\"tabels\":[]}"
+                                 << root.arg("tabels") + "; did you mean \"tables\"?";
+    QTest::newRow("root, none near") << head + "],\n\"author\":\"me\"}" << root.arg("author");
+    QTest::newRow("symbol nmae")
+        << head + "],\"symbols\":[{\"address\":\"R1\",\n\"nmae\":\"Pump\"}]}"
+        << "symbol 1: line 4: unknown key \"nmae\" (known: address, name, comment); did you mean "
+           "\"name\"?";
+    // A wrong type names its line as well.
+    QTest::newRow("interval text") << head + "{\"name\":\"T\",\n\"intervalMs\":\"fast\"}]}"
+                                   << "table 1: line 4: \"intervalMs\" must be a whole number "
+                                      "from 10 to 3600000";
+    QTest::newRow("station text")
+        << head + "{\"items\":[{\"address\":\"R1\",\n\"station\":\"2\"}]}]}"
+        << "table 1, item 1: line 4: \"station\" must be a whole "
+           "number from 1 to 254";
+}
+
+void TestWatchList::unknownKeysRefused()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, message);
+    const auto r = WatchList::load(json);
     QCOMPARE(errorText(r), message);
 }
 
@@ -353,10 +415,8 @@ void TestWatchList::errorNamesTableAndItem()
                              {"address":"R-1"}]}]})";
     const auto r = WatchList::load(json);
     QVERIFY(!r.ok());
-    QCOMPARE(
-        errorText(r),
-        QStringLiteral(
-            "table 2, item 5: invalid address \"R-1\": \"-1\" is not a decimal element number."));
+    QCOMPARE(errorText(r), QStringLiteral("table 2, item 5: line 4: invalid address \"R-1\": "
+                                          "\"-1\" is not a decimal element number."));
     QCOMPARE(r.error().kind, ErrorKind::InvalidAddress);
 }
 
@@ -456,7 +516,7 @@ void TestWatchList::loadFromFileErrors()
     const auto bad = WatchList::loadFromFile(path);
     QVERIFY(!bad.ok());
     QVERIFY2(errorText(bad).startsWith(
-                 QStringLiteral("bad.fwatch: table 1, item 1: invalid address \"Q1\"")),
+                 QStringLiteral("bad.fwatch: table 1, item 1: line 1: invalid address \"Q1\"")),
              qPrintable(errorText(bad)));
 }
 
