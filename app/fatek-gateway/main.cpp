@@ -7,6 +7,7 @@
 #include "core/gateway/gatewayconfig.h"
 #include "core/gateway/gatewaymessages.h"
 #include "core/protocol/logtext.h"
+#include "core/qtbridge/secrets.h"
 #include "systemdnotifier.h"
 
 #include <QCommandLineParser>
@@ -51,6 +52,8 @@ QString allowText(const GatewayConnectionConfig &connection)
 void printSummary(const QString &path, const GatewayConfig &config)
 {
     out() << path << ": OK" << Qt::endl;
+    // Never a password (issue 55): toUrl() leaves it out, the history store's is refused and
+    // masked all the same.
     out() << "broker     " << config.broker.toUrl() << Qt::endl;
     out() << "prefix     " << config.prefix << Qt::endl;
     out() << "read-only  " << (config.readOnly ? "yes" : "no") << Qt::endl;
@@ -79,7 +82,8 @@ void printSummary(const QString &path, const GatewayConfig &config)
                   : QStringLiteral("%1 items%2, store %3, %4")
                         .arg(config.historyCount())
                         .arg(config.history.recordAll ? QStringLiteral(" (all)") : QString())
-                        .arg(config.history.store, retentionText(config.history.retention)))
+                        .arg(Secrets::maskUrl(config.history.store),
+                             retentionText(config.history.retention)))
           << Qt::endl;
     for (const GatewayConnectionConfig &c : config.connections) {
         const auto counted = [](qsizetype n, const char *one, const char *many) {

@@ -4,6 +4,7 @@
 #include "core/alarm/alarmengine.h"
 #include "core/alarm/alarmjournalwriter.h"
 #include "core/history/historywriter.h"
+#include "core/qtbridge/secrets.h"
 #include "gatewaylink.h"
 #include "gatewaymessages.h"
 #include "homeassistantdiscovery.h"
@@ -86,8 +87,9 @@ void Gateway::openHistory()
         Q_EMIT logEvent(QStringLiteral("fatek-gateway"), msg<MsgId::GatewayLogHistory>(error));
     });
     connect(m_history, &HistoryWriter::recovered, this, [this] {
-        Q_EMIT logEvent(QStringLiteral("fatek-gateway"), msg<MsgId::GatewayLogHistoryRecovered>(
-                                                             m_history->location().toStdString()));
+        Q_EMIT logEvent(QStringLiteral("fatek-gateway"),
+                        msg<MsgId::GatewayLogHistoryRecovered>(
+                            Secrets::maskUrl(m_history->location()).toStdString()));
     });
 }
 

@@ -2,9 +2,8 @@
 
 #include "core/history/historymessages.h"
 #include "core/history/historystore.h"
+#include "core/qtbridge/secrets.h"
 #include "gatewaymessages.h"
-
-#include <QUrl>
 
 namespace Fatek::GatewayConfigRead {
 
@@ -12,8 +11,9 @@ namespace {
 
 bool isPostgresUrl(const QString &store)
 {
-    return store.startsWith(QLatin1String("postgresql://"))
-           || store.startsWith(QLatin1String("postgres://"));
+    // As HistoryStore::open tells them: any case.
+    return store.startsWith(QLatin1String("postgresql://"), Qt::CaseInsensitive)
+           || store.startsWith(QLatin1String("postgres://"), Qt::CaseInsensitive);
 }
 
 GatewayConfigProblem readRetention(const QJsonObject &json, HistoryRetention *out)
@@ -62,11 +62,12 @@ GatewayConfigProblem readHistory(const QJsonObject &json, const QString &baseDir
     if (!storeGiven) {
         out->store = GatewayConfig::defaultHistoryStore(baseDirectory);
     } else if (isPostgresUrl(store)) {
-        if (!HistoryStore::hasPostgres())
-            return msg<MsgId::HistoryNoPostgres>(store.toStdString());
-        // A password in the file would be shown by every --check and log line.
-        if (!QUrl(store).password().isEmpty())
+        // A password in the file would be shown by every --check and log line: refused first,
+        // in the user info or as a "password=" parameter, and never quoted.
+        if (Secrets::holdsPassword(store))
             return msg<MsgId::GatewayConfigHistoryPassword>();
+        if (!HistoryStore::hasPostgres())
+            return msg<MsgId::HistoryNoPostgres>(Secrets::maskUrl(store).toStdString());
         out->store = store;
     } else {
         out->store = resolve(baseDirectory, store);

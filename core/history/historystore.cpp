@@ -1,5 +1,6 @@
 #include "historystore.h"
 
+#include "core/qtbridge/secrets.h"
 #include "historymessages.h"
 #include "sqlitehistorystore.h"
 
@@ -17,22 +18,6 @@ bool isPostgresUrl(const QString &location)
            || location.startsWith(QLatin1String("postgres://"), Qt::CaseInsensitive);
 }
 
-#ifndef FATEK_HAVE_POSTGRES
-// The URL as a message may show it: "user:password@" loses its password.
-std::string withoutPassword(const QString &url)
-{
-    QString shown = url;
-    const qsizetype scheme = shown.indexOf(QLatin1String("://")) + 3;
-    const qsizetype at = shown.indexOf(QLatin1Char('@'), scheme);
-    if (at > 0) {
-        const qsizetype colon = shown.indexOf(QLatin1Char(':'), scheme);
-        if (colon > 0 && colon < at)
-            shown.remove(colon, at - colon);
-    }
-    return shown.toStdString();
-}
-#endif
-
 } // namespace
 
 Result<std::unique_ptr<HistoryStore>> HistoryStore::open(const QString &location, Mode mode)
@@ -42,7 +27,7 @@ Result<std::unique_ptr<HistoryStore>> HistoryStore::open(const QString &location
         return PostgresHistoryStore::open(location, mode);
 #else
         return makeError(ErrorKind::InvalidRequest,
-                         msg<MsgId::HistoryNoPostgres>(withoutPassword(location)));
+                         msg<MsgId::HistoryNoPostgres>(Secrets::maskUrl(location).toStdString()));
 #endif
     }
     return SqliteHistoryStore::open(location, mode);

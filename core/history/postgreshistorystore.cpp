@@ -1,5 +1,6 @@
 #include "postgreshistorystore.h"
 
+#include "core/qtbridge/secrets.h"
 #include "historymessages.h"
 #include "postgreshistorystore_p.h"
 
@@ -174,7 +175,8 @@ QString PostgresHistoryStore::withoutPassword(const QString &url)
         rest = rest.left(query)
                + (params.isEmpty() ? QString() : QLatin1Char('?') + params.join(QLatin1Char('&')));
     }
-    return url.left(start) + authority + rest;
+    // What the authority's end missed (a raw '/' or '?' in the password): masked.
+    return Secrets::maskUrl(url.left(start) + authority + rest);
 }
 
 Result<std::unique_ptr<HistoryStore>> PostgresHistoryStore::open(const QString &url,

@@ -1,5 +1,6 @@
 #include "mqttbrokersettings.h"
 
+#include "core/qtbridge/secrets.h"
 #include "mqttmessages.h"
 
 #include <QFileInfo>
@@ -16,19 +17,20 @@ Result<MqttBrokerSettings> MqttBrokerSettings::fromUrl(const QString &text)
         return makeError(ErrorKind::InvalidRequest, msg<MsgId::MqttUrlEmpty>());
     if (!trimmed.contains(QStringLiteral("://")))
         trimmed.prepend(QStringLiteral("mqtt://"));
+    // The refusals quote the text as given, its password masked: they reach --check, the log
+    // and the studio's dialogs.
+    const std::string shown = Secrets::maskUrl(text.trimmed()).toStdString();
     const QUrl url(trimmed, QUrl::StrictMode);
     const QString scheme = url.scheme().toLower();
     if (!url.isValid() || url.host().isEmpty() || (scheme != u"mqtt" && scheme != u"mqtts")
         || (!url.path().isEmpty() && url.path() != u"/") || url.hasQuery() || url.hasFragment())
-        return makeError(ErrorKind::InvalidRequest,
-                         msg<MsgId::MqttUrlInvalid>(text.trimmed().toStdString()));
+        return makeError(ErrorKind::InvalidRequest, msg<MsgId::MqttUrlInvalid>(shown));
     MqttBrokerSettings settings;
     settings.tls = scheme == u"mqtts";
     settings.host = url.host();
     const int port = url.port(settings.tls ? 8883 : 1883);
     if (port <= 0 || port > 65535)
-        return makeError(ErrorKind::InvalidRequest,
-                         msg<MsgId::MqttUrlInvalid>(text.trimmed().toStdString()));
+        return makeError(ErrorKind::InvalidRequest, msg<MsgId::MqttUrlInvalid>(shown));
     settings.port = static_cast<quint16>(port);
     settings.username = url.userName(QUrl::FullyDecoded);
     settings.password = url.password(QUrl::FullyDecoded);

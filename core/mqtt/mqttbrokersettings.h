@@ -35,7 +35,8 @@ struct MqttBrokerSettings
     // mqtt://[user[:password]@]host[:port] (1883) or mqtts://... (TLS, 8883). A bare "host[:port]"
     // is mqtt://.
     static Result<MqttBrokerSettings> fromUrl(const QString &url);
-    // The URL without the password ("mqtts://operator@broker:8883").
+    // The URL without the password ("mqtts://operator@broker:8883"): messages and the files the
+    // studio saves may show it.
     QString toUrl() const;
     // Empty when usable, else what to fix (TLS files that do not exist, a port of 0 ...).
     Message validate() const;

@@ -140,7 +140,7 @@ void TestGatewayHistory::configRefusals_data()
                                  << R"("store" must name a file.)";
     QTest::newRow("password in the URL")
         << R"({"store":"postgresql://fatek:secret@127.0.0.1/plant"})"
-        << (HistoryStore::hasPostgres() ? "holds a password" : "has no PostgreSQL client");
+        << "holds a password"; // refused before a build without libpq says so (issue 55)
     QTest::newRow("not an object") << R"(true)"
                                    << "history";
 }
