@@ -40,30 +40,6 @@ struct AlarmsOptions
     LinkArguments link;
 };
 
-int usageError(const QString &error, bool json)
-{
-    QTextStream(stderr) << "fatek-cli: " << error << "\nTry 'fatek-cli --help'.\n";
-    if (json) {
-        const QJsonObject object{{QStringLiteral("error"), error},
-                                 {QStringLiteral("code"), ExitCode::Usage}};
-        CliOutput::printStdout(
-            QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)) + '\n');
-    }
-    return ExitCode::Usage;
-}
-
-int failure(const Message &reason, int code, bool json)
-{
-    const QString text = englishText(reason);
-    QTextStream(stderr) << "fatek-cli: " << text << '\n';
-    if (json) {
-        const QJsonObject object{{QStringLiteral("error"), text}, {QStringLiteral("code"), code}};
-        CliOutput::printStdout(
-            QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)) + '\n');
-    }
-    return code;
-}
-
 // The options in any order, before or after the word "alarms"; an option's value is the next
 // argument or follows '=' (--since=-2h).
 QString parse(const QStringList &arguments, AlarmsOptions *o)
@@ -177,22 +153,23 @@ int readJournal(const AlarmsOptions &o)
             continue;
         const std::optional<qint64> ms = CliAlarms::parseTime(text, now);
         if (!ms)
-            return usageError(QStringLiteral("--%1: \"%2\" is not a time (ISO 8601 such as "
-                                             "2026-12-07 or 2026-12-07T08:00[:00][+08:00], "
-                                             "now, or before now: -90s, -30m, -2h, -7d).")
-                                  .arg(QLatin1String(name), text),
-                              o.json);
+            return CliOutput::usageError(
+                QStringLiteral("--%1: \"%2\" is not a time (ISO 8601 such as "
+                               "2026-12-07 or 2026-12-07T08:00[:00][+08:00], "
+                               "now, or before now: -90s, -30m, -2h, -7d).")
+                    .arg(QLatin1String(name), text),
+                o.json);
         *out = *ms;
     }
     Result<std::unique_ptr<AlarmJournal>> journal = AlarmJournal::openReadOnly(o.journal);
     if (!journal) {
         const bool missing = journal.error().message.id == MessageId(MsgId::JournalMissing);
-        return failure(journal.error().message, missing ? ExitCode::Usage : ExitCode::Internal,
-                       o.json);
+        return CliOutput::failure(journal.error().message,
+                                  missing ? ExitCode::Usage : ExitCode::Internal, o.json);
     }
     Result<QList<AlarmEvent>> events = (*journal)->events(from, to, o.connection);
     if (!events)
-        return failure(events.error().message, ExitCode::Internal, o.json);
+        return CliOutput::failure(events.error().message, ExitCode::Internal, o.json);
     QByteArray out;
     if (o.csv) {
         out = AlarmJournal::toCsv(*events);
@@ -210,7 +187,7 @@ int watch(const AlarmsOptions &o)
 {
     Result<WatchListFile> file = WatchList::loadFromFile(o.watchList);
     if (!file)
-        return failure(file.error().message, ExitCode::Usage, o.json);
+        return CliOutput::failure(file.error().message, ExitCode::Usage, o.json);
     QList<WatchedItem> items;
     for (const WatchTableSpec &table : std::as_const(file->tables)) {
         for (const WatchItemSpec &item : table.items) {
@@ -219,14 +196,14 @@ int watch(const AlarmsOptions &o)
         }
     }
     if (items.isEmpty())
-        return usageError(
+        return CliOutput::usageError(
             QStringLiteral("%1 defines no alarm (an item's \"alarms\").").arg(o.watchList), o.json);
     LinkArgumentRules rules;
     rules.minStation = 1;
     rules.environment = true;
     const LinkArgumentsResult link = resolveLinkArguments(o.link, rules);
     if (!link.error.isEmpty())
-        return usageError(link.error, o.json);
+        return CliOutput::usageError(link.error, o.json);
 
     const QString connection
         = o.connection.isEmpty() ? QFileInfo(o.watchList).completeBaseName() : o.connection;
@@ -242,7 +219,7 @@ int watch(const AlarmsOptions &o)
         QObject::connect(writer.get(), &AlarmJournalWriter::failed, &engine,
                          [&code](const Message &reason) {
                              code = ExitCode::Internal;
-                             failure(reason, ExitCode::Internal, false);
+                             CliOutput::failure(reason, ExitCode::Internal, false);
                          });
         writer->attach(&engine);
     }
@@ -325,7 +302,7 @@ int runAlarms(const QStringList &arguments)
 {
     AlarmsOptions o;
     if (const QString error = parse(arguments, &o); !error.isEmpty())
-        return usageError(error, arguments.contains(QLatin1String("--json")));
+        return CliOutput::usageError(error, arguments.contains(QLatin1String("--json")));
     return o.watchList.isEmpty() ? readJournal(o) : watch(o);
 }
 

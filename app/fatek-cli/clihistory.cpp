@@ -31,30 +31,6 @@ struct HistoryOptions
     bool csv = false;
 };
 
-void printJsonError(const QString &text, int code)
-{
-    const QJsonObject object{{QStringLiteral("error"), text}, {QStringLiteral("code"), code}};
-    CliOutput::printStdout(QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact))
-                           + '\n');
-}
-
-int usageError(const QString &error, bool json)
-{
-    QTextStream(stderr) << "fatek-cli: " << error << "\nTry 'fatek-cli --help'.\n";
-    if (json)
-        printJsonError(error, ExitCode::Usage);
-    return ExitCode::Usage;
-}
-
-int failure(const Message &reason, int code, bool json)
-{
-    const QString text = englishText(reason);
-    QTextStream(stderr) << "fatek-cli: " << text << '\n';
-    if (json)
-        printJsonError(text, code);
-    return code;
-}
-
 QString parse(const QStringList &arguments, HistoryOptions *o)
 {
     for (qsizetype i = 0; i < arguments.size(); ++i) {
@@ -189,27 +165,29 @@ int run(const HistoryOptions &o)
          {std::tuple{o.from, "from", &from}, std::tuple{o.to, "to", &to}}) {
         const std::optional<qint64> ms = CliAlarms::parseTime(text, now);
         if (!ms)
-            return usageError(QStringLiteral("--%1: \"%2\" is not a time (ISO 8601 such as "
-                                             "2026-12-07 or 2026-12-07T08:00[:00][+08:00], "
-                                             "now, or before now: -90s, -30m, -2h, -7d).")
-                                  .arg(QLatin1String(name), text),
-                              o.json);
+            return CliOutput::usageError(
+                QStringLiteral("--%1: \"%2\" is not a time (ISO 8601 such as "
+                               "2026-12-07 or 2026-12-07T08:00[:00][+08:00], "
+                               "now, or before now: -90s, -30m, -2h, -7d).")
+                    .arg(QLatin1String(name), text),
+                o.json);
         *out = *ms;
     }
     if (to <= from)
-        return usageError(QStringLiteral("--to (%1) must come after --from (%2).")
-                              .arg(HistoryCsv::localTime(to), HistoryCsv::localTime(from)),
-                          o.json);
+        return CliOutput::usageError(
+            QStringLiteral("--to (%1) must come after --from (%2).")
+                .arg(HistoryCsv::localTime(to), HistoryCsv::localTime(from)),
+            o.json);
     Result<std::unique_ptr<HistoryStore>> store
         = HistoryStore::open(o.store, HistoryStore::Mode::ReadOnly);
     if (!store) {
         const bool missing = store.error().message.id == MessageId(MsgId::HistoryMissing);
-        return failure(store.error().message, missing ? ExitCode::Usage : ExitCode::Internal,
-                       o.json);
+        return CliOutput::failure(store.error().message,
+                                  missing ? ExitCode::Usage : ExitCode::Internal, o.json);
     }
     const Result<QList<HistorySeries>> all = (*store)->series();
     if (!all)
-        return failure(all.error().message, ExitCode::Internal, o.json);
+        return CliOutput::failure(all.error().message, ExitCode::Internal, o.json);
     QByteArray out;
     if (o.items.isEmpty()) {
         out = seriesLines(*all, o.json);
@@ -218,7 +196,7 @@ int run(const HistoryOptions &o)
         for (const QString &item : o.items) {
             HistorySeries s;
             if (const QString error = find(*all, item, &s); !error.isEmpty())
-                return usageError(error, o.json);
+                return CliOutput::usageError(error, o.json);
             chosen.append(s);
         }
         if (o.csv)
@@ -227,7 +205,7 @@ int run(const HistoryOptions &o)
             const Result<std::vector<HistorySample>> samples
                 = (*store)->samples(s.id, from, to, o.limit);
             if (!samples)
-                return failure(samples.error().message, ExitCode::Internal, o.json);
+                return CliOutput::failure(samples.error().message, ExitCode::Internal, o.json);
             // The sample before the range is what the line enters it with: not asked for here.
             std::vector<HistorySample> inRange;
             for (const HistorySample &sample : *samples) {
@@ -249,7 +227,7 @@ int runHistory(const QStringList &arguments)
 {
     HistoryOptions o;
     if (const QString error = parse(arguments, &o); !error.isEmpty())
-        return usageError(error, arguments.contains(QLatin1String("--json")));
+        return CliOutput::usageError(error, arguments.contains(QLatin1String("--json")));
     return run(o);
 }
 

@@ -1,9 +1,13 @@
 #include "clioutput.h"
 
+#include "clioptions.h"
+#include "core/qtbridge/qtmessage.h"
 #include "core/watch/csvfield.h"
 
 #include <QFile>
 #include <QJsonDocument>
+#include <QJsonObject>
+#include <QTextStream>
 
 #include <cerrno>
 #include <cstdio>
@@ -227,6 +231,34 @@ void CliOutput::note(const QString &message)
 {
     m_err << "fatek-cli: " << message << '\n';
     m_err.flush();
+}
+
+namespace {
+
+void printJsonError(const QString &text, int code)
+{
+    const QJsonObject object{{QStringLiteral("error"), text}, {QStringLiteral("code"), code}};
+    CliOutput::printStdout(QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact))
+                           + '\n');
+}
+
+} // namespace
+
+int CliOutput::usageError(const QString &error, bool json)
+{
+    QTextStream(stderr) << "fatek-cli: " << error << "\nTry 'fatek-cli --help'.\n";
+    if (json)
+        printJsonError(error, ExitCode::Usage);
+    return ExitCode::Usage;
+}
+
+int CliOutput::failure(const Fatek::Message &reason, int code, bool json)
+{
+    const QString text = Fatek::englishText(reason);
+    QTextStream(stderr) << "fatek-cli: " << text << '\n';
+    if (json)
+        printJsonError(text, code);
+    return code;
 }
 
 } // namespace Fatek

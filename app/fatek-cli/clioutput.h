@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/protocol/message.h"
+
 #include "clioptions.h"
 
 #include <QJsonObject>
@@ -66,6 +68,11 @@ public:
     static QString writeStdout(const QByteArray &bytes, bool *closedPipe = nullptr);
     // --help, --version: stdout without a CliOutput; the exit code (Ok, or the failure's).
     static int printStdout(const QString &text);
+    // The refusal of a command line for the programs of their own (alarms, history): on stderr
+    // with the hint to --help, and with --json also as {"error","code"} on stdout; ExitCode::Usage.
+    static int usageError(const QString &error, bool json);
+    // A failure with its reason in English, the same two ways; returns `code`.
+    static int failure(const Fatek::Message &reason, int code, bool json);
 
 private:
     void write(const QString &text);
