@@ -8,12 +8,14 @@
 
 namespace Fatek::CheckoutPdf {
 
-// The report as an A4 landscape PDF (QPdfWriter and QTextDocument: Qt's own): title, the header
-// fields, the summary, one table row per point and the signature lines. Needs a QGuiApplication
-// (the offscreen platform is enough: fonts are laid out, nothing is shown).
+// The report as an A4 landscape PDF (QPdfWriter and QPainter: Qt's own), laid out for signing:
+// a summary page (the header fields, the summary, the failed points and those not tested), then
+// one row per point, rows never split across pages, the column header repeated on every page,
+// and the signature block (engineer, witness, customer) after the last row, never alone on a
+// page. Every page carries the project, the customer, when the report was made and "Page N of
+// M". Needs a QGuiApplication (the offscreen platform is enough: fonts are laid out, nothing is
+// shown).
 QByteArray render(const CheckoutReport &report, const CheckoutReport::TextFunction &text);
-// The HTML the PDF is laid out from (tests, a GUI preview).
-QString html(const CheckoutReport &report, const CheckoutReport::TextFunction &text);
 // Through SafeFile: written completely or an error (ReportCannotWrite), never a partial file.
 Status write(const CheckoutReport &report, const QString &path,
              const CheckoutReport::TextFunction &text);

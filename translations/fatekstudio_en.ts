@@ -1900,6 +1900,70 @@
             <translation>Customer representative</translation>
         </message>
         <message>
+            <source>Witness</source>
+            <translation>Witness</translation>
+        </message>
+        <message>
+            <source>Role</source>
+            <translation>Role</translation>
+        </message>
+        <message>
+            <source>Printed name</source>
+            <translation>Printed name</translation>
+        </message>
+        <message>
+            <source>Company</source>
+            <translation>Company</translation>
+        </message>
+        <message>
+            <source>Signature</source>
+            <translation>Signature</translation>
+        </message>
+        <message>
+            <source>Tested</source>
+            <translation>Tested</translation>
+        </message>
+        <message>
+            <source>%1 to %2</source>
+            <translation>%1 to %2</translation>
+        </message>
+        <message>
+            <source>nothing recorded yet</source>
+            <translation>nothing recorded yet</translation>
+        </message>
+        <message>
+            <source>Report made</source>
+            <translation>Report made</translation>
+        </message>
+        <message>
+            <source>%1 (%2 {2:point|points})</source>
+            <translation>%1 (%2 {2:point|points})</translation>
+        </message>
+        <message>
+            <source>not named</source>
+            <translation>not named</translation>
+        </message>
+        <message>
+            <source>Page %1 of %2</source>
+            <translation>Page %1 of %2</translation>
+        </message>
+        <message>
+            <source>Results</source>
+            <translation>Results</translation>
+        </message>
+        <message>
+            <source>Failed points</source>
+            <translation>Failed points</translation>
+        </message>
+        <message>
+            <source>No point failed.</source>
+            <translation>No point failed.</translation>
+        </message>
+        <message>
+            <source>Not tested (%1): %2</source>
+            <translation>Not tested (%1): %2</translation>
+        </message>
+        <message>
             <source>Cannot write the report %1: %2</source>
             <translation>Cannot write the report %1: %2</translation>
         </message>

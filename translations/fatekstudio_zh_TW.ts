@@ -1897,6 +1897,70 @@
             <translation>客戶代表</translation>
         </message>
         <message>
+            <source>Witness</source>
+            <translation>見證人</translation>
+        </message>
+        <message>
+            <source>Role</source>
+            <translation>身分</translation>
+        </message>
+        <message>
+            <source>Printed name</source>
+            <translation>姓名（正楷）</translation>
+        </message>
+        <message>
+            <source>Company</source>
+            <translation>公司</translation>
+        </message>
+        <message>
+            <source>Signature</source>
+            <translation>簽名</translation>
+        </message>
+        <message>
+            <source>Tested</source>
+            <translation>測試期間</translation>
+        </message>
+        <message>
+            <source>%1 to %2</source>
+            <translation>%1 至 %2</translation>
+        </message>
+        <message>
+            <source>nothing recorded yet</source>
+            <translation>尚無紀錄</translation>
+        </message>
+        <message>
+            <source>Report made</source>
+            <translation>報告產生時間</translation>
+        </message>
+        <message>
+            <source>%1 (%2 {2:point|points})</source>
+            <translation>%1（%2 點）</translation>
+        </message>
+        <message>
+            <source>not named</source>
+            <translation>未填姓名</translation>
+        </message>
+        <message>
+            <source>Page %1 of %2</source>
+            <translation>第 %1 頁，共 %2 頁</translation>
+        </message>
+        <message>
+            <source>Results</source>
+            <translation>測試結果</translation>
+        </message>
+        <message>
+            <source>Failed points</source>
+            <translation>不合格點</translation>
+        </message>
+        <message>
+            <source>No point failed.</source>
+            <translation>沒有不合格的點。</translation>
+        </message>
+        <message>
+            <source>Not tested (%1): %2</source>
+            <translation>未測試（%1 點）：%2</translation>
+        </message>
+        <message>
             <source>Cannot write the report %1: %2</source>
             <translation>無法寫入報告 %1：%2</translation>
         </message>

@@ -6,6 +6,10 @@
 
 #include <QStringList>
 
+#include <algorithm>
+#include <cstdlib>
+#include <utility>
+
 namespace Fatek {
 
 namespace {
@@ -17,6 +21,18 @@ Message textOrNotReported(const QString &value)
 
 } // namespace
 
+QString CheckoutReport::timeText(const QDateTime &time)
+{
+    const QDateTime local = time.toLocalTime();
+    const int offset = local.offsetFromUtc();
+    const int minutes = std::abs(offset) / 60;
+    return local.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss "))
+           + QLatin1Char(offset < 0 ? '-' : '+')
+           + QStringLiteral("%1:%2")
+                 .arg(minutes / 60, 2, 10, QLatin1Char('0'))
+                 .arg(minutes % 60, 2, 10, QLatin1Char('0'));
+}
+
 CheckoutReport CheckoutReport::of(const CheckoutPlan &plan, const QDateTime &date)
 {
     CheckoutReport r;
@@ -24,14 +40,54 @@ CheckoutReport CheckoutReport::of(const CheckoutPlan &plan, const QDateTime &dat
     const auto text = [](const QString &s) {
         return Message::text(s.toStdString());
     };
+    r.project = plan.info.project;
+    r.customer = plan.info.customer;
+    r.made = timeText(when);
+    QDateTime first;
+    QDateTime last;
+    // Who recorded how many results, in order of first appearance.
+    std::vector<std::pair<QString, int>> engineers;
+    for (const CheckoutPoint &p : plan.points) {
+        if (!p.time.isValid())
+            continue;
+        if (!first.isValid() || p.time < first)
+            first = p.time;
+        if (!last.isValid() || p.time > last)
+            last = p.time;
+        const auto it = std::find_if(engineers.begin(), engineers.end(),
+                                     [&p](const auto &e) { return e.first == p.engineer; });
+        if (it == engineers.end())
+            engineers.emplace_back(p.engineer, 1);
+        else
+            ++it->second;
+    }
+    std::stable_sort(engineers.begin(), engineers.end(),
+                     [](const auto &a, const auto &b) { return a.second > b.second; });
+    Message engineerField = text(plan.info.engineer);
+    r.engineer = plan.info.engineer;
+    if (!engineers.empty()) {
+        engineerField = {};
+        for (const auto &[who, count] : engineers) {
+            Message part = msg<MsgId::ReportEngineerPoints>(
+                who.isEmpty() ? msg<MsgId::ReportUnnamed>() : text(who), count);
+            engineerField = engineerField.empty()
+                                ? std::move(part)
+                                : msg<MsgId::Listed>(std::move(engineerField), std::move(part));
+        }
+        if (!engineers.front().first.isEmpty())
+            r.engineer = engineers.front().first;
+    }
     r.fields.push_back({msg<MsgId::ReportProject>(), text(plan.info.project)});
     r.fields.push_back({msg<MsgId::ReportCustomer>(), text(plan.info.customer)});
     r.fields.push_back({msg<MsgId::ReportPlcModel>(), textOrNotReported(plan.info.plcModel)});
     r.fields.push_back({msg<MsgId::ReportOsVersion>(), textOrNotReported(plan.info.osVersion)});
     r.fields.push_back({msg<MsgId::ReportStation>(), text(QString::number(plan.info.station))});
-    r.fields.push_back({msg<MsgId::ReportDate>(),
-                        text(when.toLocalTime().toString(QStringLiteral("yyyy-MM-dd")))});
-    r.fields.push_back({msg<MsgId::ReportEngineer>(), text(plan.info.engineer)});
+    r.fields.push_back({msg<MsgId::ReportTestDates>(),
+                        first.isValid() ? msg<MsgId::ReportTestRange>(timeText(first).toStdString(),
+                                                                      timeText(last).toStdString())
+                                        : msg<MsgId::ReportNotYet>()});
+    r.fields.push_back({msg<MsgId::ReportMade>(), text(r.made)});
+    r.fields.push_back({msg<MsgId::ReportEngineer>(), engineerField});
     for (const CheckoutPoint &p : plan.points) {
         Row row;
         row.address = QString::fromStdString(p.address.toString());
@@ -45,7 +101,7 @@ CheckoutReport CheckoutReport::of(const CheckoutPlan &plan, const QDateTime &dat
         row.measured = p.measured();
         row.comment = p.comment;
         if (p.time.isValid())
-            row.time = p.time.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+            row.time = timeText(p.time);
         row.engineer = p.engineer;
         r.rows.push_back(std::move(row));
     }

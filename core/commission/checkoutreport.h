@@ -32,15 +32,26 @@ struct CheckoutReport
         CheckoutResult result = CheckoutResult::Untested;
         Message measured;
         QString comment;
-        QString time; // local "yyyy-MM-dd HH:mm:ss", empty when untested
+        QString time; // local "yyyy-MM-dd HH:mm:ss +08:00", empty when untested
         QString engineer;
     };
 
-    std::vector<Field> fields; // project, customer, PLC model, OS version, station, date, engineer
+    // Project, customer, PLC model, OS version, station, the test dates, when the report was
+    // made, and who recorded the results (with how many each).
+    std::vector<Field> fields;
     std::vector<Row> rows;
     Message summary;
+    // For every page's running header and the signature block.
+    QString project;
+    QString customer;
+    QString engineer; // who recorded the most results (the plan's engineer when none)
+    QString made;     // when the report was made, local with its UTC offset
 
-    // `date`: the report's date (now when invalid).
+    // A time as the report prints it: local, with its UTC offset ("2026-12-07 09:00:00 +08:00"),
+    // so a report read in another time zone still says when.
+    static QString timeText(const QDateTime &time);
+
+    // `date`: when the report is made (now when invalid).
     static CheckoutReport of(const CheckoutPlan &plan, const QDateTime &date = {});
     // The column titles of the rows, in order.
     static std::vector<Message> columns();

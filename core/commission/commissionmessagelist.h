@@ -334,6 +334,27 @@ FATEK_MSG(ReportSummaryTitle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Summary"))
 FATEK_MSG(ReportSignatures, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Signatures"))
 FATEK_MSG(ReportSignEngineer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Commissioning engineer"))
 FATEK_MSG(ReportSignCustomer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Customer representative"))
+FATEK_MSG(ReportSignWitness, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Witness"))
+FATEK_MSG(ReportSignRole, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Role"))
+FATEK_MSG(ReportSignName, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Printed name"))
+FATEK_MSG(ReportSignCompany, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Company"))
+FATEK_MSG(ReportSignature, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Signature"))
+FATEK_MSG(ReportTestDates, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Tested"))
+// %1 the first result's time, %2 the last one's (with their UTC offsets).
+FATEK_MSG(ReportTestRange, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 to %2"))
+FATEK_MSG(ReportNotYet, 0, QT_TRANSLATE_NOOP("Fatek::Message", "nothing recorded yet"))
+FATEK_MSG(ReportMade, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Report made"))
+// %1 who, %2 how many points they recorded.
+FATEK_MSG(ReportEngineerPoints, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 (%2 {2:point|points})"))
+FATEK_MSG(ReportUnnamed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not named"))
+// %1 this page, %2 the report's pages.
+FATEK_MSG(ReportPageOf, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Page %1 of %2"))
+FATEK_MSG(ReportResults, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Results"))
+FATEK_MSG(ReportPunchList, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Failed points"))
+FATEK_MSG(ReportNoFailed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "No point failed."))
+// %1 how many, %2 their addresses.
+FATEK_MSG(ReportUntestedList, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Not tested (%1): %2"))
 FATEK_MSG(ReportCannotWrite, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "Cannot write the report %1: %2"))
 FATEK_MSG(ReportUnknownType, 1,

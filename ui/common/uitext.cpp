@@ -1,37 +1,14 @@
 #include "uitext.h"
 
+#include "core/qtbridge/messagetext.h"
+
 namespace Fatek {
-
-namespace {
-
-// The translated template filled by core's fillTemplate (arguments, plural words).
-QString fill(const QString &templ, const QStringList &args)
-{
-    std::vector<std::string> utf8Args;
-    utf8Args.reserve(static_cast<std::size_t>(args.size()));
-    for (const QString &arg : args)
-        utf8Args.push_back(arg.toStdString());
-    return QString::fromStdString(fillTemplate(templ.toStdString(), utf8Args));
-}
-
-QString argText(const MessageArg &arg)
-{
-    return arg.message ? translated(*arg.message) : QString::fromStdString(arg.text);
-}
-
-} // namespace
 
 QString translated(const Message &message)
 {
-    if (message.id == MsgId::Text)
-        return message.args.empty() ? QString() : argText(message.args.front());
-    QStringList args;
-    args.reserve(static_cast<qsizetype>(message.args.size()));
-    for (const MessageArg &arg : message.args)
-        args.append(argText(arg));
-    if (message.id == MsgId::AtPlace && args.size() == 2)
-        args[1] = QString::fromStdString(lowerFirst(args[1].toStdString()));
-    return fill(QCoreApplication::translate(messageContext, messageTemplate(message.id)), args);
+    return translatedText(message, [](const char *templ) {
+        return QCoreApplication::translate(messageContext, templ);
+    });
 }
 
 QString UiText::linkState(LinkState state)

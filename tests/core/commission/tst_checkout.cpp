@@ -14,6 +14,7 @@
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
 #include "core/watch/symboltable.h"
+#include "pdftext.h"
 #include "report/checkoutpdf.h"
 #include "report/reporttranslator.h"
 #include "testutil.h"
@@ -56,49 +57,10 @@ CheckoutPlan fullPlan()
     return p;
 }
 
-// Qt's PDF writer names each glyph by the lowest code point the font maps to it, and Noto Sans
-// CJK draws the Kangxi radicals (U+2F00..U+2FD5) with the ideographs' glyphs: a reader gets
-// "客⼾" (U+2F3E) where the report says "客戶" (U+6236). The same character to a person, and
-// to NFKC.
-QString withIdeographs(QString text)
-{
-    for (qsizetype i = 0; i < text.size(); ++i) {
-        if (text.at(i).unicode() >= 0x2F00 && text.at(i).unicode() <= 0x2FD5)
-            text.replace(i, 1, QString(text.at(i)).normalized(QString::NormalizationForm_KC));
-    }
-    return text;
-}
-
-// pdftotext's text of a PDF (radicals read as the ideographs they stand for); the test fails
-// (never skips) when the tool is missing.
+// The PDF as a reader gets its text (tests/pdftext.h).
 QString pdfText(const QString &pdf)
 {
-    if (TestUtil::underWine()) {
-        // The host's Linux pdftotext: Wine starts a Linux program but gives the Windows side no
-        // handle to wait on, so the text arrives in a file renamed into place once complete.
-        const QString text = pdf + QStringLiteral(".txt");
-        QFile::remove(text); // an earlier call's text
-        QProcess p;
-        p.start(QStringLiteral("/bin/bash"),
-                {QStringLiteral("-c"),
-                 QStringLiteral("pdftotext -layout \"$1\" \"$2.part\" && mv \"$2.part\" \"$2\" "
-                                "|| echo \"<pdftotext failed or is missing>\" > \"$2\""),
-                 QStringLiteral("pdftotext-wrapper"), TestUtil::hostPath(pdf),
-                 TestUtil::hostPath(text)});
-        QFile file(text);
-        if (!QTest::qWaitFor([&] { return file.exists(); }, 60000))
-            return QStringLiteral("<pdftotext did not finish>");
-        file.open(QIODevice::ReadOnly);
-        return withIdeographs(QString::fromUtf8(file.readAll()));
-    }
-    const QString tool = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
-    if (tool.isEmpty())
-        return QStringLiteral("<pdftotext is missing: install poppler-utils>");
-    QProcess p;
-    p.start(tool, {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
-    if (!p.waitForFinished(60000))
-        return QStringLiteral("<pdftotext did not finish>");
-    return withIdeographs(QString::fromUtf8(p.readAllStandardOutput()));
+    return PdfText::plain(pdf);
 }
 
 } // namespace
@@ -345,7 +307,8 @@ void TestCheckout::fullCheckoutAndReports()
         lines.last()
             == QStringLiteral("# Summary: 26 points: 24 passed, 2 failed, 0 skipped, 0 untested."),
         qPrintable(lines.last()));
-    QCOMPARE(lines.size(), 7 + 1 + 1 + 26 + 1);
+    // Title, 8 fields, header, 26 points, summary.
+    QCOMPARE(lines.size(), 1 + 8 + 1 + 26 + 1);
 
     // PDF report, in English and in Chinese, read back as text.
     const QString pdf = freeFile("report.pdf");
