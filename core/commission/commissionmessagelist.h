@@ -345,8 +345,7 @@ FATEK_MSG(ReportTestRange, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 to %2"))
 FATEK_MSG(ReportNotYet, 0, QT_TRANSLATE_NOOP("Fatek::Message", "nothing recorded yet"))
 FATEK_MSG(ReportMade, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Report made"))
 // %1 who, %2 how many points they recorded.
-FATEK_MSG(ReportEngineerPoints, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message", "%1 (%2 {2:point|points})"))
+FATEK_MSG(ReportEngineerPoints, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 (%2 {2:point|points})"))
 FATEK_MSG(ReportUnnamed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not named"))
 // %1 this page, %2 the report's pages.
 FATEK_MSG(ReportPageOf, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Page %1 of %2"))
