@@ -93,10 +93,13 @@ void CliWriteCommand::writePart(std::size_t done)
     m_context.submitChange(request, [this, from, done, size](const SessionResult &) {
         // Split: each part's outcome is said as it comes; a later part that fails ends the
         // program with its reason, and these lines tell what is in the PLC already.
-        if (size < step().values.size())
-            out().note(QStringLiteral("%1..%2 written.")
-                           .arg(addressText(from),
-                                addressText(from.advanced(static_cast<std::uint32_t>(size - 1)))));
+        if (size < step().values.size()) {
+            const Address last = from.advanced(static_cast<std::uint32_t>(size - 1));
+            out().note(QStringLiteral("%1 written.")
+                           .arg(size == 1 ? addressText(from)
+                                          : QStringLiteral("%1..%2").arg(addressText(from),
+                                                                         addressText(last))));
+        }
         writePart(done + size);
     });
 }
