@@ -22,18 +22,15 @@
 
 namespace {
 
-struct Run
-{
-    int code = -1;
-    QString out;
-    QString err;
-};
+using Run = TestUtil::ProgramRun;
 
 // fatek-cli with `input` on its standard input (then closed), its standard output into `outFile`
 // when given, or into a pipe whose reader is gone when `closedPipe`.
 Run cli(const QStringList &arguments, const QByteArray &input = {}, const QString &outFile = {},
         bool closedPipe = false)
 {
+    if (outFile.isEmpty() && !closedPipe)
+        return TestUtil::runProgramWith(QStringLiteral(FATEK_CLI_PATH), arguments, input);
     QProcess p;
     if (!outFile.isEmpty())
         p.setStandardOutputFile(outFile);
@@ -48,16 +45,13 @@ Run cli(const QStringList &arguments, const QByteArray &input = {}, const QStrin
     p.start(QStringLiteral(FATEK_CLI_PATH), arguments);
     Run r;
     if (p.waitForStarted(10000)) {
-        p.write(input);
         p.closeWriteChannel();
-        if (!p.waitForFinished(60000)) {
+        if (p.waitForFinished(60000)) {
+            r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+            r.err = QString::fromUtf8(p.readAllStandardError());
+        } else {
             p.kill();
             p.waitForFinished();
-            r.err = QStringLiteral("fatek-cli did not end");
-        } else {
-            r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-            r.out = QString::fromUtf8(p.readAllStandardOutput());
-            r.err = QString::fromUtf8(p.readAllStandardError());
         }
     }
 #ifdef Q_OS_UNIX
@@ -84,38 +78,23 @@ bool writeBytes(const QString &path, const QByteArray &bytes)
     return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
 }
 
-// A tmpfs of `kilobytes` at `dir` (read-only when `readOnly`, after `fill` bytes were written to
-// a file "fill" in it); an empty text when mounted, else why not. Unmounted by Unmount.
-QString mountTmpfs(const QString &dir, int kilobytes, qint64 fill = 0, bool readOnly = false,
-                   const QString &keep = {}, const QByteArray &keepBytes = {})
+// The places of a test's rows: a regular file "plain.txt" in `dir` (a path under it is "Not a
+// directory") and, when `readOnly`, a read-only tmpfs "ro" (holding `keep` when given); an empty
+// text when ready, else why not (no right to mount).
+QString preparePlace(const QTemporaryDir &dir, bool readOnly, TestUtil::TmpfsMount *mount,
+                     const QString &keep = {}, const QByteArray &keepBytes = {})
 {
-    QDir().mkpath(dir);
-    if (QProcess::execute(QStringLiteral("mount"),
-                          {QStringLiteral("-t"), QStringLiteral("tmpfs"), QStringLiteral("-o"),
-                           QStringLiteral("size=%1k").arg(kilobytes), QStringLiteral("tmpfs"), dir})
-        != 0)
-        return QStringLiteral("cannot mount a tmpfs (needs root and the right to mount)");
-    if (fill > 0)
-        writeBytes(QDir(dir).filePath(QStringLiteral("fill")), QByteArray(fill, 'x'));
+    if (!writeBytes(dir.filePath(QStringLiteral("plain.txt")), "x"))
+        return QStringLiteral("cannot write in the test's folder");
+    if (!readOnly)
+        return {};
+    const QString ro = dir.filePath(QStringLiteral("ro"));
+    if (QString problem = mount->mount(ro, 64); !problem.isEmpty())
+        return problem;
     if (!keep.isEmpty())
-        writeBytes(QDir(dir).filePath(keep), keepBytes);
-    if (readOnly
-        && QProcess::execute(QStringLiteral("mount"),
-                             {QStringLiteral("-o"), QStringLiteral("remount,ro"), dir})
-               != 0)
-        return QStringLiteral("cannot remount the tmpfs read-only");
-    return {};
+        writeBytes(QDir(ro).filePath(keep), keepBytes);
+    return mount->makeReadOnly();
 }
-
-struct Unmount
-{
-    QString dir;
-    ~Unmount()
-    {
-        if (!dir.isEmpty())
-            QProcess::execute(QStringLiteral("umount"), {dir});
-    }
-};
 
 const QString fullDevice = QStringLiteral("/dev/full");
 
@@ -164,14 +143,9 @@ void TestCliPromises::reportCheckedBeforeForcing()
     QFETCH(QString, reason);
     QFETCH(bool, readOnlyMount);
     QTemporaryDir dir;
-    QVERIFY(writeBytes(dir.filePath(QStringLiteral("plain.txt")), "x"));
-    Unmount unmount;
-    if (readOnlyMount) {
-        if (const QString problem = mountTmpfs(dir.filePath(QStringLiteral("ro")), 64, 0, true);
-            !problem.isEmpty())
-            QSKIP(qPrintable(problem));
-        unmount.dir = dir.filePath(QStringLiteral("ro"));
-    }
+    TestUtil::TmpfsMount mount;
+    if (const QString problem = preparePlace(dir, readOnlyMount, &mount); !problem.isEmpty())
+        QSKIP(qPrintable(problem));
     const QString path = dir.filePath(report);
     const Run r = cli(sim({QStringLiteral("--yes"), QStringLiteral("checkout"),
                            QStringLiteral("Y0..Y1"), QStringLiteral("--report"), path}),
@@ -269,14 +243,9 @@ void TestCliPromises::monitorLogPlaceExit1()
     QFETCH(QString, log);
     QFETCH(bool, readOnlyMount);
     QTemporaryDir dir;
-    QVERIFY(writeBytes(dir.filePath(QStringLiteral("plain.txt")), "x"));
-    Unmount unmount;
-    if (readOnlyMount) {
-        if (const QString problem = mountTmpfs(dir.filePath(QStringLiteral("ro")), 64, 0, true);
-            !problem.isEmpty())
-            QSKIP(qPrintable(problem));
-        unmount.dir = dir.filePath(QStringLiteral("ro"));
-    }
+    TestUtil::TmpfsMount mount;
+    if (const QString problem = preparePlace(dir, readOnlyMount, &mount); !problem.isEmpty())
+        QSKIP(qPrintable(problem));
     const QString path = log.startsWith(QLatin1Char('/')) ? log : dir.filePath(log);
     const Run r
         = cli(sim({QStringLiteral("monitor"), QStringLiteral("R0"), QStringLiteral("--cycles"),
@@ -316,10 +285,11 @@ void TestCliPromises::monitorLogOnFullDiskWholeRows()
 {
     QTemporaryDir dir;
     const QString disk = dir.filePath(QStringLiteral("small"));
-    // 64 KiB with 15 pages taken: the header and a few rows of 100 elements fit in the last.
-    if (const QString problem = mountTmpfs(disk, 64, 61440); !problem.isEmpty())
+    TestUtil::TmpfsMount mount;
+    if (const QString problem = mount.mount(disk, 64); !problem.isEmpty())
         QSKIP(qPrintable(problem));
-    const Unmount unmount{disk};
+    // 15 of its 16 pages taken: the header and a few rows of 100 elements fit in the last.
+    QVERIFY(writeBytes(QDir(disk).filePath(QStringLiteral("fill")), QByteArray(61440, 'x')));
     const QString path = QDir(disk).filePath(QStringLiteral("log.csv"));
     const Run r
         = cli(sim({QStringLiteral("monitor"), QStringLiteral("R0..R99:hex"),
@@ -364,11 +334,11 @@ void TestCliPromises::snapshotReadOnlyMediumSaysWhy()
 {
     QTemporaryDir dir;
     const QString disk = dir.filePath(QStringLiteral("ro"));
+    TestUtil::TmpfsMount mount;
     if (const QString problem
-        = mountTmpfs(disk, 64, 0, true, QStringLiteral("s.json"), "yesterday\n");
+        = preparePlace(dir, true, &mount, QStringLiteral("s.json"), "yesterday\n");
         !problem.isEmpty())
         QSKIP(qPrintable(problem));
-    const Unmount unmount{disk};
     const QString path = QDir(disk).filePath(QStringLiteral("s.json"));
     const Run r = cli(sim({QStringLiteral("snapshot"), path, QStringLiteral("R0..R9")}));
     QCOMPARE(r.code, 1);
