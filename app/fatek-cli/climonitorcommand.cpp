@@ -177,9 +177,11 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
             out().note(QStringLiteral("%1: %2").arg(name, cell.reason));
         }
     }
-    // Late elements: one line per cycle that names them, not one line each.
-    if (!late.isEmpty())
+    // Late elements: one line naming them, not one line each, and again only when other
+    // elements fall behind (the table marks every late value anyway).
+    if (!late.isEmpty() && late != m_lastLate)
         out().note(QStringLiteral("%1: %2").arg(late.join(QStringLiteral(", ")), lateReason));
+    m_lastLate = late;
     if (m_logger.isOpen()) {
         // A log that cannot be written (full disk) is said at once; the values go on on stdout,
         // and the program ends with exit 1 (file not written) when the monitor ends.
