@@ -100,16 +100,11 @@ QJsonObject ProgramRun::json() const
     return QJsonDocument::fromJson(out.section(QLatin1Char('\n'), 0, 0).toUtf8()).object();
 }
 
-ProgramRun runProgram(const QString &program, const QStringList &arguments, int timeoutMs)
+namespace {
+
+// The run of `p` once it ended, or killed when it did not.
+ProgramRun resultOf(QProcess &p, const QString &program, int timeoutMs)
 {
-    QProcess p;
-    QEventLoop loop;
-    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
-    QObject::connect(&p, &QProcess::errorOccurred, &loop, &QEventLoop::quit);
-    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-    p.start(program, arguments);
-    if (p.state() != QProcess::NotRunning)
-        loop.exec();
     ProgramRun r;
     if (p.state() != QProcess::NotRunning) {
         p.kill();
@@ -121,6 +116,67 @@ ProgramRun runProgram(const QString &program, const QStringList &arguments, int 
     r.out = QString::fromUtf8(p.readAllStandardOutput());
     r.err = QString::fromUtf8(p.readAllStandardError());
     return r;
+}
+
+} // namespace
+
+ProgramRun runProgram(const QString &program, const QStringList &arguments, int timeoutMs)
+{
+    QProcess p;
+    QEventLoop loop;
+    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
+    QObject::connect(&p, &QProcess::errorOccurred, &loop, &QEventLoop::quit);
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    p.start(program, arguments);
+    if (p.state() != QProcess::NotRunning)
+        loop.exec();
+    return resultOf(p, program, timeoutMs);
+}
+
+ProgramRun runProgramWith(const QString &program, const QStringList &arguments,
+                          const QByteArray &input, const QProcessEnvironment &env, int timeoutMs)
+{
+    QProcess p;
+    p.setProcessEnvironment(env);
+    p.start(program, arguments);
+    if (!p.waitForStarted(10000))
+        return {};
+    p.write(input);
+    p.closeWriteChannel();
+    p.waitForFinished(timeoutMs);
+    return resultOf(p, program, timeoutMs);
+}
+
+TmpfsMount::~TmpfsMount()
+{
+    if (!m_dir.isEmpty())
+        QProcess::execute(QStringLiteral("umount"), {m_dir});
+}
+
+QString TmpfsMount::mount(const QString &dir, int kilobytes)
+{
+    QDir().mkpath(dir);
+    QProcess mounter;
+    mounter.start(QStringLiteral("mount"),
+                  {QStringLiteral("-t"), QStringLiteral("tmpfs"), QStringLiteral("-o"),
+                   QStringLiteral("size=%1k").arg(kilobytes), QStringLiteral("tmpfs"), dir});
+    if (!mounter.waitForFinished(10000) || mounter.exitStatus() != QProcess::NormalExit
+        || mounter.exitCode() != 0)
+        return QStringLiteral("Cannot mount a %1 KiB tmpfs (needs root and the right to mount in "
+                              "this container): %2")
+            .arg(kilobytes)
+            .arg(QString::fromLocal8Bit(mounter.readAllStandardError()).trimmed());
+    m_dir = dir;
+    return {};
+}
+
+QString TmpfsMount::makeReadOnly()
+{
+    if (QProcess::execute(QStringLiteral("mount"),
+                          {QStringLiteral("-o"), QStringLiteral("remount,ro"), m_dir})
+        != 0)
+        return QStringLiteral("Cannot remount %1 read-only").arg(m_dir);
+    return {};
 }
 
 #ifdef Q_OS_WIN

@@ -5,6 +5,7 @@
 #include <QByteArray>
 #include <QJsonObject>
 #include <QList>
+#include <QProcessEnvironment>
 #include <QString>
 #include <QStringList>
 
@@ -82,5 +83,30 @@ struct ProgramRun
 // Runs `program` with the event loop turning (an in-process simulator keeps answering); standard
 // input is a pipe, not a terminal. Killed after `timeoutMs`.
 ProgramRun runProgram(const QString &program, const QStringList &arguments, int timeoutMs = 30000);
+// Runs `program` with `input` on its standard input (then closed) in the environment `env`,
+// waiting for it (no event loop: for programs that need nothing of the test). Killed after
+// `timeoutMs`.
+ProgramRun runProgramWith(const QString &program, const QStringList &arguments,
+                          const QByteArray &input,
+                          const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment(),
+                          int timeoutMs = 60000);
+
+// A small tmpfs mounted for a test (a full or read-only disk for real; needs root and the right
+// to mount), unmounted when it goes.
+class TmpfsMount
+{
+public:
+    TmpfsMount() = default;
+    TmpfsMount(const TmpfsMount &) = delete;
+    TmpfsMount &operator=(const TmpfsMount &) = delete;
+    ~TmpfsMount();
+    // Mounts `kilobytes` at `dir` (created); an empty text when mounted, else why not.
+    QString mount(const QString &dir, int kilobytes);
+    // Makes it read-only (what was written stays readable); an empty text when done.
+    QString makeReadOnly();
+
+private:
+    QString m_dir;
+};
 
 } // namespace TestUtil

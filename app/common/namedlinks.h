@@ -14,7 +14,8 @@ namespace Fatek {
 QString namedLinksPath();
 // The names the file defines, in its order (for shell completion); empty without a file.
 QStringList namedLinkNames();
-// The URL `name` stands for; empty with `error` set when there is none.
+// The URL `name` stands for; empty with `error` set when there is none, or when the file has a
+// line that is not NAME = URL or a name given twice (which line, in `error`).
 QString lookUpNamedLink(const QString &name, QString *error);
 
 } // namespace Fatek

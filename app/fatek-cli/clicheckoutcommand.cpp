@@ -121,6 +121,17 @@ void CliCheckoutCommand::run()
         out().error(englishText(plan.error().message), ExitCode::Usage);
         return m_context.finish(ExitCode::Usage);
     }
+    // The report is written at the end: a place that cannot take it is said before anything is
+    // forced, not after the whole checkout.
+    if (const QString &report = options().checkoutReport; !report.isEmpty()) {
+        if (const QString reason = SafeFile::checkWritable(report); !reason.isEmpty()) {
+            out().error(englishText(msg<MsgId::ReportCannotWrite>(
+                            report.toStdString(), Message::text(reason.toStdString())))
+                            + QStringLiteral(" Nothing was forced."),
+                        ExitCode::Internal);
+            return m_context.finish(ExitCode::Internal);
+        }
+    }
     CheckoutPlan p = std::move(plan).value();
     p.info.station = m_context.station();
     if (!options().checkoutProject.isEmpty())
@@ -412,6 +423,10 @@ void CliCheckoutCommand::writeReport()
         }
         if (!s) {
             out().error(englishText(s.error().message), ExitCode::Internal);
+            // A device that failed (a full disk behind a link): the results are not lost.
+            out().note(QStringLiteral("The report follows on standard output instead."));
+            out().line(QString::fromUtf8(report.toCsv(text)).trimmed());
+            out().note(englishText(report.summary));
             return m_context.finish(ExitCode::Internal);
         }
     }

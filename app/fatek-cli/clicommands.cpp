@@ -106,7 +106,8 @@ constexpr CommandSpec commands[] = {
      make<CliWriteCommand>,
      {{"write ADDR[:FORMAT] VALUE...",
        "typed as in a watch table: 12, -5, 0x1A, 1Ah, 0b1010; discretes 0/1/on/off; R0:float "
-       "1.5 writes R0 and R1; several = consecutive items"}}},
+       "1.5 writes R0 and R1; several = consecutive items, up to 1024, in as many requests as "
+       "it takes"}}},
     {"set",
      CliCommandKind::Control,
      1,

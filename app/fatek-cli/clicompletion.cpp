@@ -26,8 +26,9 @@ QString dashed(const QStringList &names)
     return out.join(QLatin1Char(' '));
 }
 
-// The commands whose arguments are files.
-const char *const fileCommands = "backup restore snapshot diff restore-values alarms";
+// The commands whose arguments are files (checkout: its plan, a CSV or a checkout file).
+const char *const fileCommands
+    = "backup restore snapshot diff restore-values alarms history checkout";
 
 // The valued options of the runner's parser and those alarms parses itself (clialarms.cpp).
 QStringList completedValuedNames()
@@ -46,48 +47,71 @@ QString bash()
 {
     const QString valued
         = dashed(completedValuedNames()).replace(QLatin1Char(' '), QLatin1String(" | "));
+    // The words are split at blanks only: bash's COMP_WORDBREAKS (with @ : =) would cut "@line1",
+    // "tcp://host" and "--lang=en" apart. bash then replaces only the part of the word after its
+    // last break character, so the replies lose what comes before it.
     return QStringLiteral(R"sh(# bash completion for fatek-cli (made by fatek-cli --completion bash)
 _fatek_cli() {
-    local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}
+    local line=${COMP_LINE:0:COMP_POINT} cur= prev= words=() i word command= broken=
+    read -ra words <<<"$line"
+    [[ $line =~ [[:space:]]$ ]] && words+=("")
+    cur=${words[${#words[@]}-1]}
+    ((${#words[@]} > 1)) && prev=${words[${#words[@]}-2]}
+    if [[ $cur == --*=* ]]; then
+        prev=${cur%%=*}
+        cur=${cur#*=}
+    fi
     COMPREPLY=()
     case $prev in
     --serial)
-        COMPREPLY=($(compgen -W "$(ls -d /dev/ttyUSB* /dev/ttyACM* /dev/ttyS* /dev/serial/by-id/* 2>/dev/null)" -- "$cur"))
-        return ;;
+        COMPREPLY=($(compgen -W "$(ls -d /dev/ttyUSB* /dev/ttyACM* /dev/ttyS* /dev/serial/by-id/* 2>/dev/null)" -- "$cur")) ;;
     --link)
         COMPREPLY=($(compgen -W "$(%1) tcp:// udp:// serial://" -- "$cur"))
-        compopt -o nospace 2>/dev/null
-        return ;;
-    --protocol) COMPREPLY=($(compgen -W "facon binary auto" -- "$cur")); return ;;
-    --format) COMPREPLY=($(compgen -W "%2" -- "$cur")); return ;;
-    --parity) COMPREPLY=($(compgen -W "N E O" -- "$cur")); return ;;
-    --data) COMPREPLY=($(compgen -W "7 8" -- "$cur")); return ;;
-    --stop) COMPREPLY=($(compgen -W "1 2" -- "$cur")); return ;;
-    --completion) COMPREPLY=($(compgen -W "bash zsh" -- "$cur")); return ;;
-    --output | --names) COMPREPLY=($(compgen -f -- "$cur")); return ;;
-    %3) return ;;
-    esac
-    if [[ $cur == -* ]]; then
-        COMPREPLY=($(compgen -W "%4" -- "$cur"))
-        return
-    fi
-    # The command of this step: the first word after the program or the last --then that is
-    # neither an option nor an option's value.
-    local i word command=
-    for ((i = 1; i < COMP_CWORD; i++)); do
-        word=${COMP_WORDS[i]}
-        case $word in
-        --then) command= ;;
-        %3) ((i++)) ;;
-        -*) ;;
-        *) [[ -z $command ]] && command=$word ;;
-        esac
-    done
-    if [[ -z $command ]]; then
-        COMPREPLY=($(compgen -W "%5" -- "$cur"))
-    elif [[ " %6 " == *" $command "* ]]; then
+        compopt -o nospace 2>/dev/null ;;
+    --protocol) COMPREPLY=($(compgen -W "facon binary auto" -- "$cur")) ;;
+    --format) COMPREPLY=($(compgen -W "%2" -- "$cur")) ;;
+    --parity) COMPREPLY=($(compgen -W "N E O" -- "$cur")) ;;
+    --data) COMPREPLY=($(compgen -W "7 8" -- "$cur")) ;;
+    --stop) COMPREPLY=($(compgen -W "1 2" -- "$cur")) ;;
+    --completion) COMPREPLY=($(compgen -W "bash zsh" -- "$cur")) ;;
+    --lang) COMPREPLY=($(compgen -W "en zh_TW" -- "$cur")) ;;
+    --output | --names | --report | --save | --journal)
         COMPREPLY=($(compgen -f -- "$cur"))
-    fi
+        compopt -o filenames 2>/dev/null ;;
+    %3) ;;
+    *)
+        if [[ $cur == -* ]]; then
+            COMPREPLY=($(compgen -W "%4" -- "$cur"))
+        else
+            # The command of this step: the first word after the program or the last --then
+            # that is neither an option nor an option's value.
+            for ((i = 1; i < ${#words[@]} - 1; i++)); do
+                word=${words[i]}
+                case $word in
+                --then) command= ;;
+                --*=*) ;;
+                %3) ((i++)) ;;
+                -*) ;;
+                *) [[ -z $command ]] && command=$word ;;
+                esac
+            done
+            if [[ -z $command ]]; then
+                COMPREPLY=($(compgen -W "%5" -- "$cur"))
+            elif [[ " %6 " == *" $command "* ]]; then
+                COMPREPLY=($(compgen -f -- "$cur"))
+                compopt -o filenames 2>/dev/null
+            fi
+        fi ;;
+    esac
+    for ((i = ${#cur} - 1; i >= 0; i--)); do
+        case ${cur:i:1} in
+        [@\$]) broken=${cur:0:i} ;; # readline keeps these in the word it replaces
+        *) [[ $COMP_WORDBREAKS == *"${cur:i:1}"* ]] && broken=${cur:0:i+1} ;;
+        esac
+        [[ -n $broken || $COMP_WORDBREAKS == *"${cur:i:1}"* ]] && break
+    done
+    [[ -n $broken ]] && COMPREPLY=("${COMPREPLY[@]#"$broken"}")
+    return 0
 }
 complete -F _fatek_cli fatek-cli
 )sh")
@@ -120,8 +144,11 @@ QString zsh()
             valued(name, QStringLiteral("(1 2)"));
         else if (name == QLatin1String("completion"))
             valued(name, QStringLiteral("(bash zsh)"));
+        else if (name == QLatin1String("lang"))
+            valued(name, QStringLiteral("(en zh_TW)"));
         else if (name == QLatin1String("output") || name == QLatin1String("names")
-                 || name == QLatin1String("journal"))
+                 || name == QLatin1String("journal") || name == QLatin1String("report")
+                 || name == QLatin1String("save"))
             valued(name, QStringLiteral("_files"));
         else
             valued(name, QStringLiteral(" "));

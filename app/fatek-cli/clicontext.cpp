@@ -75,6 +75,9 @@ bool CliContext::applyNames()
     }
     if (names->skipped() > 0)
         m_out.note(englishText(names->summary()));
+    else if (names->imported() == 0) // an empty file, or only a header: say so, not nothing
+        m_out.note(QStringLiteral("%1 names no address: the columns keep their addresses.")
+                       .arg(m_options.namesPath));
     for (CliStep &s : m_options.steps) {
         for (WatchItemSpec &item : s.items) {
             if (item.name.isEmpty())
@@ -246,6 +249,9 @@ void CliContext::failWith(const SessionResult &result)
     QString text = result.errorText();
     if (text.isEmpty())
         text = QString::fromStdString(result.error().text());
+    // A link failure names the link: a script talking to several PLCs can tell which one.
+    if (code == ExitCode::Link && m_session)
+        text = QStringLiteral("%1: %2").arg(linkName(), text);
     m_out.error(text, code, extra);
     finish(code);
 }
@@ -266,8 +272,10 @@ void CliContext::finish(int exitCode)
     if (m_done)
         return;
     m_done = true;
-    // Whatever the command made of it, output that did not arrive is not a success.
-    if (exitCode == ExitCode::Ok)
+    // Whatever the command made of it, output that did not arrive is not a success, nor a
+    // result to act on: diff's 6 ("differences, listed") is 141 or 1 when the list was lost.
+    if ((exitCode == ExitCode::Ok || exitCode == ExitCode::Differ)
+        && m_out.failure() != CliOutput::Failure::None)
         exitCode = m_out.failureExitCode();
     m_watchdog.stop();
     m_requests.forgetPending(); // results that still come are not reported
@@ -280,6 +288,11 @@ QJsonObject CliContext::itemJson(const Address &address) const
 {
     return {{QStringLiteral("address"), addressText(address)},
             {QStringLiteral("station"), m_options.station}};
+}
+
+QString CliContext::linkName() const
+{
+    return m_options.link.toUrl().section(QLatin1Char('?'), 0, 0); // without its settings
 }
 
 QString CliContext::stationText() const

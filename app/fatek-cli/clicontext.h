@@ -40,6 +40,8 @@ public:
     RequestTracker &requests() { return m_requests; }
     std::uint8_t station() const { return m_options.station; }
     QString stationText() const;
+    // The link as a script names it: "tcp://192.168.1.3:500", "serial:///dev/ttyUSB0".
+    QString linkName() const;
     // {"address": ..., "station": ...}: how every JSON result names what it is about.
     QJsonObject itemJson(const Address &address) const;
 
@@ -63,8 +65,8 @@ public:
     int requestBudgetMs() const;
 
     bool isDone() const { return m_done; }
-    // Ends the program with `exitCode` (once): finished() follows at once. Ok becomes the
-    // output's failure code when stdout could not be written (CliOutput::failureExitCode).
+    // Ends the program with `exitCode` (once): finished() follows at once. Ok and Differ become
+    // the output's failure code when stdout could not be written (CliOutput::failureExitCode).
     void finish(int exitCode);
     // Reports a failed result (stderr / JSON) and ends with its exit code.
     void failWith(const SessionResult &result);

@@ -92,9 +92,10 @@ void CliMonitorCommand::run()
         // Every row reaches the disk at once: an interrupted monitor loses nothing.
         m_logger.setFlushIntervalMs(0);
         if (const Status s = m_logger.open(options().outputPath, items); !s) {
-            // A file that could not be written (full disk, /dev/full) is exit 1, like every file
-            // not written; a wrong path or another log's columns is a usage error.
-            const int code = m_logger.writeFailed() ? ExitCode::Internal : ExitCode::Usage;
+            // A file that cannot be written (no such folder, a read-only medium, a full disk) is
+            // exit 1, like every file not written; another log's columns is a usage error.
+            const int code = m_logger.writeFailed() || m_logger.fileProblem() ? ExitCode::Internal
+                                                                              : ExitCode::Usage;
             out().error(QString::fromStdString(s.error().text()), code);
             return m_context.finish(code);
         }
@@ -115,6 +116,7 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
     const QList<WatchItemSpec> &items = step().items;
     // An item the cycle brought nothing of has no value this cycle.
     QList<DataLogger::Cell> cells(items.size());
+    QList<Message> cellErrors(items.size());
     for (DataLogger::Cell &c : cells) {
         c.quality = DataLogger::Quality::Missing;
         c.reason = QStringLiteral("no value this cycle");
@@ -127,12 +129,16 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
         cell.raw = v.raw;
         cell.quality = DataLogger::qualityOf(v.quality);
         cell.reason = v.quality == ValueQuality::Good ? QString() : englishText(v.error);
+        cellErrors[item] = v.error;
     }
     const QDateTime now = QDateTime::currentDateTime();
     QStringList tableCells{QString::number(m_cycle), now.toString(QStringLiteral("HH:mm:ss.zzz"))};
     QJsonArray jsonValues, jsonTexts, jsonAddresses, jsonQualities;
     bool anyGood = false;
     QString staleReason;
+    bool stationSilent = false; // the stale reason is the poller's "polled again at ..."
+    QStringList late;           // the elements shown late this cycle, said in one line
+    QString lateReason;
     for (qsizetype i = 0; i < items.size(); ++i) {
         DataLogger::Cell &cell = cells[i];
         const WatchItemSpec &item = items.at(i);
@@ -153,7 +159,8 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
             tableCells << QStringLiteral("%1 (late)").arg(text);
             jsonValues.append(static_cast<qint64>(cell.raw));
             jsonTexts.append(text);
-            out().note(QStringLiteral("%1: %2").arg(name, cell.reason));
+            late << name;
+            lateReason = cell.reason;
             continue;
         }
         tableCells << QStringLiteral("?");
@@ -161,13 +168,20 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
         jsonTexts.append(QJsonValue::Null);
         if (cell.quality == DataLogger::Quality::Error)
             m_errors = true;
-        else
+        else {
             staleReason = cell.reason;
+            stationSilent = cellErrors.value(i).id == MsgId::SessionStationDemoted;
+        }
         if (!m_reported.contains(name + cell.reason)) {
             m_reported.insert(name + cell.reason);
             out().note(QStringLiteral("%1: %2").arg(name, cell.reason));
         }
     }
+    // Late elements: one line naming them, not one line each, and again only when other
+    // elements fall behind (the table marks every late value anyway).
+    if (!late.isEmpty() && late != m_lastLate)
+        out().note(QStringLiteral("%1: %2").arg(late.join(QStringLiteral(", ")), lateReason));
+    m_lastLate = late;
     if (m_logger.isOpen()) {
         // A log that cannot be written (full disk) is said at once; the values go on on stdout,
         // and the program ends with exit 1 (file not written) when the monitor ends.
@@ -190,8 +204,11 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
     // Nothing read for three cycles in a row: the link is gone for practical purposes.
     m_staleCycles = (!anyGood && !staleReason.isEmpty()) ? m_staleCycles + 1 : 0;
     if (m_staleCycles >= 3) {
-        out().error(QStringLiteral("Nothing read for 3 cycles: %1").arg(staleReason),
-                    ExitCode::Link);
+        // The program ends here: the poller's "polled again at ..." would not happen.
+        const QString why = stationSilent ? QStringLiteral("station %1 does not answer on %2.")
+                                                .arg(m_context.stationText(), m_context.linkName())
+                                          : staleReason;
+        out().error(QStringLiteral("Nothing read for 3 cycles: %1").arg(why), ExitCode::Link);
         return m_context.finish(ExitCode::Link);
     }
     if (options().cycles > 0 && m_cycle >= options().cycles) {

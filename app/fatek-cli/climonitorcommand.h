@@ -41,6 +41,7 @@ private:
     int m_staleCycles = 0;
     bool m_errors = false;
     QSet<QString> m_reported; // "address + reason" noted once (for every monitor step)
+    QStringList m_lastLate;   // the elements said late last cycle
     DataLogger m_logger;      // --output
     ItemAssembler m_items;    // step().items (keys: their indexes), their elements joined
 };

@@ -7,6 +7,8 @@
 #include "clitext.h"
 #include "core/watch/watchlist.h"
 
+#include <QFileInfo>
+
 namespace Fatek {
 
 namespace {
@@ -43,7 +45,60 @@ QString commandsText()
     return text;
 }
 
+// The exit code table's lines: the code in a column of 5, its meaning wrapped beside it.
+QString exitCodesText()
+{
+    QString text = QStringLiteral("Exit codes:\n");
+    for (const auto &[code, meaning] : exitCodeUsage()) {
+        QString line = QStringLiteral("  %1").arg(code, -5);
+        bool first = true;
+        for (const QString &word : meaning.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+            if (!first && line.size() + 1 + word.size() > 92) {
+                text += line + QLatin1Char('\n');
+                line = QString(7, QLatin1Char(' '));
+                first = true;
+            }
+            line += (first ? QString() : QStringLiteral(" ")) + word;
+            first = false;
+        }
+        text += line + QLatin1Char('\n');
+    }
+    return text;
+}
+
 } // namespace
+
+QList<std::pair<int, QString>> exitCodeUsage()
+{
+    return {
+        {ExitCode::Ok, QStringLiteral("ok")},
+        {ExitCode::Internal,
+         QStringLiteral("a file or the output not written (the reason on stderr; also a missing "
+                        "folder, a read-only medium, a full disk), the simulator could not "
+                        "listen")},
+        {ExitCode::Usage,
+         QStringLiteral("usage (also a damaged file, another model, a restore not confirmed)")},
+        {ExitCode::Link, QStringLiteral("link failure (timeout, no connection)")},
+        {ExitCode::Plc,
+         QStringLiteral("PLC error (also RUN during restore, program verification failed)")},
+        {ExitCode::ReadOnly, QStringLiteral("refused by --read-only")},
+        {ExitCode::Differ,
+         QStringLiteral("differences found (diff; restore-values read back other values; "
+                        "checkout: a point failed or untested)")},
+        {ExitCode::Unknown,
+         QStringLiteral("a change sent and not answered, and reading it back could not tell "
+                        "whether the PLC carried it out: check the PLC")},
+        {ExitCode::Interrupted, QStringLiteral("interrupted (Ctrl-C, SIGTERM)")},
+        {ExitCode::ClosedPipe,
+         QStringLiteral("the output's reader is gone (a closed pipe, as \"| head\")")},
+    };
+}
+
+bool isDevice(const QString &path)
+{
+    const QFileInfo info(path); // follows links: a link to a device is one
+    return info.exists() && !info.isFile() && !info.isDir();
+}
 
 QString usageText()
 {
@@ -90,17 +145,8 @@ QString usageText()
                "Commands:\n"
                "%1"
                "\n"
-               "Exit codes: 0 ok, 1 file or output not written (reason on stderr), 2 usage (also "
-               "a\n"
-               "damaged file, another model, a restore not confirmed), 3 link failure (timeout, "
-               "no\n"
-               "connection), 4 PLC error (also RUN during restore, program verification failed),\n"
-               "5 refused by --read-only, 6 differences found (diff; restore-values read back "
-               "other\n"
-               "values; checkout: a point failed or untested), 130 interrupted (Ctrl-C), 141 the "
-               "output's reader is gone (a closed "
-               "pipe).\n")
-        .arg(commandsText());
+               "%2")
+        .arg(commandsText(), exitCodesText());
 }
 
 QStringList valuedOptionNames()
@@ -145,6 +191,12 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                 o.help = true;
             else if (!onlyPositional && (arg == QLatin1String("-v")))
                 o.version = true;
+            else if (!onlyPositional && arg.size() > 1 && arg.at(0) == QLatin1Char('-')
+                     && arg.at(1).isLetter()
+                     && (positional.isEmpty() || positional.last() == QLatin1String("\x01then")))
+                // Where a command is due, "-x" is a mistyped option, not a command ("write R0
+                // -5" and other values keep their dash).
+                return fail(QStringLiteral("Unknown option %1 (see --help).").arg(arg));
             else
                 positional << arg;
             continue;
@@ -183,9 +235,11 @@ CliParseResult parseCommandLine(const QStringList &arguments)
             if (name == QLatin1String("report") || name == QLatin1String("save")) {
                 if (value.trimmed().isEmpty())
                     return fail(QStringLiteral("--%1 needs a file name.").arg(name));
+                // A device (/dev/stdout, /dev/full) is written directly, as CSV.
                 if (name == QLatin1String("report")
                     && !value.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)
-                    && !value.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
+                    && !value.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)
+                    && !isDevice(value))
                     return fail(QStringLiteral("--report: a report file name ends in .pdf or "
                                                ".csv, not \"%1\".")
                                     .arg(value));

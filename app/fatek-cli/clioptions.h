@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace Fatek {
 
@@ -66,7 +67,8 @@ struct CliStep
     std::uint32_t count = 1;
     bool mixed = false; // read: several addresses -> 48
     std::vector<std::uint32_t> values;
-    int controlOp = 0; // DiscreteOp value for set/reset/enable/disable
+    int controlOp = 0;              // DiscreteOp value for set/reset/enable/disable
+    std::uint32_t itemElements = 1; // write: the elements of one typed value (R0:float: 2)
 
     QByteArray loopbackData;
     QByteArray rawBytes;
@@ -136,6 +138,12 @@ struct CliParseResult
 CliParseResult parseCommandLine(const QStringList &arguments);
 
 QString usageText();
+// The exit codes and what each means, in --help's order (the man page's EXIT STATUS is checked
+// against them by packaging/check-man-commands.py).
+QList<std::pair<int, QString>> exitCodeUsage();
+// Whether `path` names a device or a pipe (also through a link): written directly whatever its
+// name (snapshot /dev/stdout, --report /dev/full).
+bool isDevice(const QString &path);
 // The options that take a value and those that do not (without "--"), for the completions.
 QStringList valuedOptionNames();
 QStringList flagOptionNames();

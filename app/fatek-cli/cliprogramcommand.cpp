@@ -121,8 +121,14 @@ void CliProgramCommand::failTransfer(const ProgramTransferResult &result)
     extra.insert(QStringLiteral("file"), step().file);
     if (!result.pages.empty())
         extra.insert(QStringLiteral("pages"), pagesJson(result.pages));
-    if (result.stoppedAtPage >= 0)
+    // Where a backup's reading or a restore's writing stopped; a restore stopped while it
+    // compared has written nothing, and no page to name ("Cancelled before anything was
+    // written.").
+    const bool comparing = step().command == CliCommandKind::Restore && !m_writing;
+    if (result.stoppedAtPage >= 0 && !comparing)
         extra.insert(QStringLiteral("stoppedAtPage"), result.stoppedAtPage);
+    if (step().command == CliCommandKind::Restore)
+        extra.insert(QStringLiteral("writeStarted"), m_writing);
     out().error(text, code, extra);
     m_context.finish(code);
 }
@@ -174,6 +180,7 @@ void CliProgramCommand::runBackup()
 
 void CliProgramCommand::runRestore()
 {
+    m_writing = false;
     const ProgramImage::LoadResult loaded = ProgramImage::load(step().file);
     if (!loaded.ok()) {
         out().error(QString::fromStdString(loaded.error().text()), ExitCode::Usage);
@@ -260,6 +267,7 @@ void CliProgramCommand::confirmRestore(const ProgramImage &image,
                 succeedWith(block);
             });
     m_context.armWatchdog(m_context.requestBudgetMs());
+    m_writing = true;
     m_program->restore(image);
 }
 

@@ -38,6 +38,8 @@ private:
     std::unique_ptr<ProgramTransfer> m_program;
     bool m_progressShown = false;
     bool m_interrupted = false;
+    // restore: the pages are being written (before: read and compared, nothing written yet).
+    bool m_writing = false;
 };
 
 } // namespace Fatek

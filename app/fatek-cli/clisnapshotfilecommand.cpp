@@ -51,10 +51,10 @@ bool CliSnapshotFileCommand::isSnapshotFileName(const QString &path)
     return SnapshotFile::formatFor(path).has_value();
 }
 
-// A snapshot file name: .json or .csv.
+// A snapshot file name: .json or .csv, or a device (written and read as JSON).
 QString CliSnapshotFileCommand::snapshotFileArg(CliStepArgs &a, const QString &path, QString *out)
 {
-    if (!SnapshotFile::formatFor(path))
+    if (!SnapshotFile::formatFor(path) && !isDevice(path))
         return QStringLiteral("%1: \"%2\" is not a .json or .csv file name.").arg(a.cmd(), path);
     *out = path;
     return {};

@@ -55,20 +55,52 @@ QString CliWriteCommand::parse(CliStepArgs &a)
         s.values.insert(s.values.end(), words.cbegin(), words.cend());
     }
     s.count = static_cast<std::uint32_t>(s.values.size());
+    s.itemElements = elements;
+    // As many as read takes: sent in as many requests as it takes (run()).
+    if (s.count > static_cast<std::uint32_t>(WatchList::MaxRangeItems))
+        return QStringLiteral("write takes at most %1 elements, not %2.")
+            .arg(WatchList::MaxRangeItems)
+            .arg(s.count);
     const Status span = validateSpan(s.addresses.first(), s.count);
     return span ? QString() : CliText::error(span.error());
 }
 
 void CliWriteCommand::run()
 {
+    writePart(0);
+}
+
+void CliWriteCommand::writePart(std::size_t done)
+{
     const Address start = step().addresses.first();
-    const Request request
-        = isDiscrete(start.type)
-              ? Request::writeDiscretes(m_context.station(), start, step().values)
-              : Request::writeRegisters(m_context.station(), start, step().values);
-    m_context.submitChange(request, [this, start](const SessionResult &) {
-        succeedWithElements(start, step().values, QStringLiteral("written"),
-                            [](std::uint32_t value) { return QString::number(value); });
+    const std::vector<std::uint32_t> &all = step().values;
+    if (done >= all.size())
+        return succeedWithElements(start, all, QStringLiteral("written"),
+                                   [](std::uint32_t value) { return QString::number(value); });
+    // As large as one request may be (64 registers, 256 discretes), never cutting a typed value
+    // (R0:float) in two; each part goes under the one rule of changes, one after the other.
+    const std::uint32_t limit
+        = isDiscrete(start.type) ? Limits::maxDiscretes : Limits::maxRegisterWords;
+    const std::uint32_t unit = std::max<std::uint32_t>(1, step().itemElements);
+    const std::size_t size
+        = std::min<std::size_t>(all.size() - done, std::max(unit, limit / unit * unit));
+    const Address from = start.advanced(static_cast<std::uint32_t>(done));
+    const std::vector<std::uint32_t> part(all.begin() + static_cast<std::ptrdiff_t>(done),
+                                          all.begin() + static_cast<std::ptrdiff_t>(done + size));
+    const Request request = isDiscrete(start.type)
+                                ? Request::writeDiscretes(m_context.station(), from, part)
+                                : Request::writeRegisters(m_context.station(), from, part);
+    m_context.submitChange(request, [this, from, done, size](const SessionResult &) {
+        // Split: each part's outcome is said as it comes; a later part that fails ends the
+        // program with its reason, and these lines tell what is in the PLC already.
+        if (size < step().values.size()) {
+            const Address last = from.advanced(static_cast<std::uint32_t>(size - 1));
+            out().note(QStringLiteral("%1 written.")
+                           .arg(size == 1 ? addressText(from)
+                                          : QStringLiteral("%1..%2").arg(addressText(from),
+                                                                         addressText(last))));
+        }
+        writePart(done + size);
     });
 }
 

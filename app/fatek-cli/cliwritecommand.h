@@ -6,7 +6,8 @@ namespace Fatek {
 
 struct CliStepArgs;
 
-// write ADDR[:FORMAT] VALUE...: consecutive elements (45/47), typed as in a watch table.
+// write ADDR[:FORMAT] VALUE...: consecutive elements (45/47), typed as in a watch table; up to
+// 1,024 of them, in as many requests as it takes (as read).
 class CliWriteCommand : public CliCommand
 {
     Q_OBJECT
@@ -19,6 +20,10 @@ public:
 protected:
     void run() override;
     bool changesPlc() const override { return true; }
+
+private:
+    // Sends the values from index `done` on, one request's worth at a time.
+    void writePart(std::size_t done);
 };
 
 } // namespace Fatek

@@ -23,6 +23,23 @@
 
 using namespace Fatek;
 
+namespace {
+
+QtMessageHandler qtHandler = nullptr;
+
+// The offscreen platform of a checkout's PDF asks for the runtime folder, and Qt warns on stderr
+// when the environment has none (cron, a service, su): nothing the person can act on, so that
+// one warning is dropped; every other message goes through.
+void withoutRuntimeDirWarning(QtMsgType type, const QMessageLogContext &context,
+                              const QString &message)
+{
+    if (message.startsWith(QLatin1String("QStandardPaths: XDG_RUNTIME_DIR not set")))
+        return;
+    qtHandler(type, context, message);
+}
+
+} // namespace
+
 int main(int argc, char *argv[])
 {
 #ifdef Q_OS_UNIX
@@ -38,6 +55,8 @@ int main(int argc, char *argv[])
         checkout = checkout || std::strcmp(argv[i], "checkout") == 0;
     if (checkout && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (checkout)
+        qtHandler = qInstallMessageHandler(withoutRuntimeDirWarning);
     const std::unique_ptr<QCoreApplication> application
         = checkout ? std::make_unique<QGuiApplication>(argc, argv)
                    : std::make_unique<QCoreApplication>(argc, argv);

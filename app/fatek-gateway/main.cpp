@@ -2,6 +2,7 @@
 // (docs/gateway.md). One GatewayLink per connection of the configuration file (Gateway); SIGHUP
 // reloads the file.
 
+#include "app/common/programoptions.h"
 #include "app/common/quitsignal.h"
 #include "core/gateway/gateway.h"
 #include "core/gateway/gatewayconfig.h"
@@ -109,8 +110,7 @@ int main(int argc, char *argv[])
         QStringLiteral("Publishes the values of FATEK PLCs to an MQTT broker and carries out "
                        "allowlisted writes.\nRuns until SIGINT or SIGTERM; logs one line per "
                        "event on standard error; SIGHUP reloads the configuration."));
-    parser.addHelpOption();
-    parser.addVersionOption();
+    ProgramOptions::addHelpAndVersion(parser);
     const QCommandLineOption checkOpt(
         QStringLiteral("check"),
         QStringLiteral("Check the configuration, print a summary and exit (0: usable, 2: not)."));
@@ -123,13 +123,13 @@ int main(int argc, char *argv[])
                                  QStringLiteral("The configuration file (JSON)."));
     // Usage errors exit 2, as in the other programs (process() would exit 1).
     if (!parser.parse(QCoreApplication::arguments())) {
-        err() << "fatek-gateway: " << parser.errorText() << Qt::endl;
+        err() << "fatek-gateway: " << ProgramOptions::errorText(parser) << Qt::endl;
         return 2;
     }
     if (parser.isSet(QStringLiteral("help")))
-        parser.showHelp(0);
+        return ProgramOptions::printHelp(parser);
     if (parser.isSet(QStringLiteral("version")))
-        parser.showVersion();
+        return ProgramOptions::printVersion();
 
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1) {

@@ -1,6 +1,7 @@
 // fatek-sim: a simulated FATEK PLC on TCP, UDP and/or a serial port, both protocols everywhere.
 
 #include "app/common/linkarguments.h"
+#include "app/common/programoptions.h"
 #include "app/common/quitsignal.h"
 #include "core/commission/programimage.h"
 #include "core/protocol/logtext.h"
@@ -67,10 +68,19 @@ SerialSettings serialSettings(const LinkSettings &link)
     return s;
 }
 
+// A usage error: exit 2.
 int fail(const QString &message)
 {
     err() << "fatek-sim: " << message << Qt::endl;
     return 2;
+}
+
+// An endpoint that cannot be served (a port taken, a serial device missing): exit 1, as fatek-cli
+// --sim when its simulator cannot listen.
+int cannotServe(const QString &message)
+{
+    err() << "fatek-sim: " << message << Qt::endl;
+    return 1;
 }
 
 } // namespace
@@ -86,8 +96,7 @@ int main(int argc, char *argv[])
         QStringLiteral("Simulated FATEK PLC. Answers the FACON ASCII and the FATEK binary protocol "
                        "on every endpoint\n"
                        "(told apart by the first byte of each frame). Stop with Ctrl-C."));
-    parser.addHelpOption();
-    parser.addVersionOption();
+    ProgramOptions::addHelpAndVersion(parser);
     const QCommandLineOption tcpOpt(QStringLiteral("tcp"),
                                     QStringLiteral("Listen on TCP <port> (0: any free port)."),
                                     QStringLiteral("port"));
@@ -180,11 +189,11 @@ int main(int argc, char *argv[])
     parser.addOptions(serialLineOpts);
     // Usage errors exit 2, as in the other programs (process() would exit 1).
     if (!parser.parse(QCoreApplication::arguments()))
-        return fail(parser.errorText());
+        return fail(ProgramOptions::errorText(parser));
     if (parser.isSet(QStringLiteral("help")))
-        parser.showHelp(0);
+        return ProgramOptions::printHelp(parser);
     if (parser.isSet(QStringLiteral("version")))
-        parser.showVersion();
+        return ProgramOptions::printVersion();
     LinkArguments serialLine;
     for (const QString &name :
          {QStringLiteral("serial"), QStringLiteral("baud"), QStringLiteral("parity"),
@@ -301,7 +310,7 @@ int main(int argc, char *argv[])
             return fail(QStringLiteral("--tcp needs a port 0..65535, not \"%1\".")
                             .arg(parser.value(tcpOpt)));
         if (!server.listenTcp(static_cast<quint16>(port), &error))
-            return fail(error);
+            return cannotServe(error);
         out() << "listening on tcp " << bind.toString() << ':' << server.tcpPort() << Qt::endl;
     }
     if (parser.isSet(udpOpt)) {
@@ -310,13 +319,13 @@ int main(int argc, char *argv[])
             return fail(QStringLiteral("--udp needs a port 0..65535, not \"%1\".")
                             .arg(parser.value(udpOpt)));
         if (!server.listenUdp(static_cast<quint16>(port), &error))
-            return fail(error);
+            return cannotServe(error);
         out() << "listening on udp " << bind.toString() << ':' << server.udpPort() << Qt::endl;
     }
     if (parser.isSet(serialOpt)) {
         const SerialSettings serial = serialSettings(serialResolved.link);
         if (!server.openSerial(serial, &error))
-            return fail(error);
+            return cannotServe(error);
         out() << "listening on serial " << serial.portName << Qt::endl;
     }
     server.setDemoLadder(parser.isSet(ladderOpt));

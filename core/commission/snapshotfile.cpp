@@ -4,6 +4,7 @@
 #include "core/watch/safefile.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -344,6 +345,9 @@ std::optional<Format> formatFor(const QString &path)
         return Format::Json;
     if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
         return Format::Csv;
+    // A device or a pipe (/dev/stdout) has no extension to go by: JSON.
+    if (const QFileInfo info(path); info.exists() && !info.isFile() && !info.isDir())
+        return Format::Json;
     return std::nullopt;
 }
 

@@ -35,7 +35,7 @@ inline constexpr const char *FormatMarker = "fatek-studio-snapshot";
 inline constexpr int CurrentVersion = 1;
 
 enum class Format { Json, Csv };
-// By extension (.json, .csv, any case); nothing for other names.
+// By extension (.json, .csv, any case); JSON for a device or a pipe; nothing for other names.
 std::optional<Format> formatFor(const QString &path);
 
 // Why a file was refused. `line` (1-based, 0 when the place is not a line) and `valueIndex`

@@ -88,7 +88,9 @@ void SessionProtocol::detect(SessionJob waiting, quint8 station, ProbeHooks hook
         SessionJob probe;
         probe.request = Request::briefStatus(station);
         probe.probe = protocol;
-        probe.options.retries = 0;
+        // As many attempts as the request waiting for it would get: a timeout says "attempt 3
+        // of 3" under the retries in force, not "1 of 1".
+        probe.options.retries = held->options.retries;
         probe.done = [station, held, shared, next = weakProbeIn.lock(),
                       protocol](const SessionResult &result) {
             // A PLC error is an answer too: the protocol is right.

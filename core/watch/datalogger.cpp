@@ -18,6 +18,27 @@ ProtocolError fileError(const QString &text)
     return makeError(ErrorKind::InvalidRequest, text.toStdString());
 }
 
+// Where the file's last whole row ends: its size when it ends with a line end, else just after
+// the last line end (0 without one).
+qint64 lastRowEnd(QFile &file)
+{
+    constexpr qint64 chunk = 64 * 1024;
+    qint64 end = file.size();
+    while (end > 0) {
+        const qint64 from = std::max<qint64>(0, end - chunk);
+        if (!file.seek(from))
+            return file.size();
+        const QByteArray bytes = file.read(end - from);
+        if (bytes.size() != end - from)
+            return file.size();
+        const qsizetype newline = bytes.lastIndexOf('\n');
+        if (newline >= 0)
+            return from + newline + 1;
+        end = from;
+    }
+    return 0;
+}
+
 // The first line of an existing file, without its line end (and without a UTF-8 BOM).
 QString firstLine(QFile &file)
 {
@@ -175,6 +196,7 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
 {
     close();
     m_failure.reset();
+    m_fileProblem = false;
     m_rows = 0;
     if (path.trimmed().isEmpty())
         return fileError(QStringLiteral("No log file given."));
@@ -191,6 +213,8 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
 
     const QString native = QDir::toNativeSeparators(path);
     const QFileInfo info(path);
+    // From here on a refusal is the file system's (the place, the medium), not the items'.
+    m_fileProblem = true;
     if (info.isDir())
         return fileError(QStringLiteral("%1 is a folder, not a file.").arg(native));
     if (!info.absoluteDir().exists())
@@ -203,6 +227,7 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
     // or a named pipe (QFileInfo follows links) cannot be read back nor sought: it is written
     // only, each row flushed and checked like a file's.
     const bool regular = !info.exists() || info.isFile();
+    const bool existed = info.exists();
     // Unbuffered: each row reaches the system at once and its write's result is the real one
     // (a buffered row that fails later, at a flush, loses the system's reason).
     if (!m_file.open(regular ? QIODevice::ReadWrite | QIODevice::Append | QIODevice::Unbuffered
@@ -215,19 +240,16 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
         const QString existing = firstLine(m_file);
         if (existing != header) {
             m_file.close();
+            m_fileProblem = false; // what the file holds: another log
             return fileError(QStringLiteral("%1 already holds a log with other columns (\"%2\"); "
                                             "choose a new file.")
                                  .arg(native, existing.left(120)));
         }
-        // Appending: a file whose last row lacks its line end gets one first.
-        m_file.seek(m_file.size() - 1);
-        char last = '\n';
-        m_file.getChar(&last);
+        // Appending: a last row cut short (an earlier run on a full disk, a power cut) is
+        // dropped, so that the new rows do not follow half a row.
+        if (const qint64 end = lastRowEnd(m_file); end < m_file.size() && !m_file.resize(end))
+            return fail(QStringLiteral("Cannot write to %1").arg(native), m_file.errorString());
         m_file.seek(m_file.size());
-        if (last != '\n') {
-            if (const QString reason = SafeFile::writeAll(m_file, "\n"); !reason.isEmpty())
-                return fail(QStringLiteral("Cannot write to %1").arg(native), reason);
-        }
     }
     m_path = path;
     m_items = items;
@@ -236,9 +258,18 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
     if (isNew) {
         if (const QString reason
             = SafeFile::writeAll(m_file, (header + QLatin1Char('\n')).toUtf8());
-            !reason.isEmpty())
+            !reason.isEmpty()) {
+            // No log is left behind that holds nothing, or half a header.
+            if (regular) {
+                if (existed)
+                    m_file.resize(0);
+                else
+                    m_file.remove();
+            }
             return fail(QStringLiteral("Cannot write to %1").arg(native), reason);
+        }
     }
+    m_fileProblem = false;
     m_sinceFlush.start();
     return Ok{};
 }
@@ -250,9 +281,14 @@ Status DataLogger::writeRow(const QDateTime &time, const QList<Cell> &cells)
     if (!m_file.isOpen())
         return fileError(QStringLiteral("The data log is not open."));
     const QByteArray line = (rowLine(time, m_items, cells) + QLatin1Char('\n')).toUtf8();
-    if (const QString reason = SafeFile::writeAll(m_file, line); !reason.isEmpty())
+    // A row is written whole or not at all: what part of it fitted is taken back.
+    const qint64 before = m_file.isSequential() ? -1 : m_file.size();
+    if (const QString reason = SafeFile::writeAll(m_file, line); !reason.isEmpty()) {
+        if (before >= 0)
+            m_file.resize(before);
         return fail(QStringLiteral("Cannot write to %1").arg(QDir::toNativeSeparators(m_path)),
                     reason);
+    }
     ++m_rows;
     if (m_flushIntervalMs <= 0 || m_sinceFlush.elapsed() >= m_flushIntervalMs)
         return flush();

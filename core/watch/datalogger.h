@@ -40,6 +40,9 @@ namespace Fatek {
 // is written only (no header check). Each row is written unbuffered and checked
 // (SafeFile::writeAll): a failed write (disk full, removed medium) is returned by that row's
 // writeRow with the system's reason, closes the log, and every later call returns that error.
+// A row is whole or absent: what part of a failed row reached a file is cut off again, an
+// existing log's cut last row is dropped before appending, and a new log whose header does not
+// fit is removed (no empty file is left).
 // flushIntervalMs is kept for the callers; the rows reach the system as they are written.
 class DataLogger
 {
@@ -67,6 +70,9 @@ public:
     bool isOpen() const { return m_file.isOpen(); }
     // A write failed (disk full, removed medium): the log is closed, every call returns why.
     bool writeFailed() const { return m_failure.has_value(); }
+    // The last open() failed on the file system (no such folder, not writable, a folder, a full
+    // disk), not on the items or on another log's columns in the file.
+    bool fileProblem() const { return m_fileProblem; }
     QString path() const { return m_path; }
     qint64 rowCount() const { return m_rows; }
     QStringList columns() const { return m_columns; }
@@ -103,6 +109,7 @@ private:
     int m_flushIntervalMs = 1000;
     QElapsedTimer m_sinceFlush;
     std::optional<ProtocolError> m_failure;
+    bool m_fileProblem = false;
 };
 
 } // namespace Fatek

@@ -1,8 +1,10 @@
 #include "safefile.h"
 
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QSaveFile>
+#include <QTemporaryFile>
 
 #ifdef Q_OS_UNIX
 #include <cerrno>
@@ -28,6 +30,22 @@ QString writeAll(QFileDevice &file, const QByteArray &data)
 
 namespace {
 
+// Why QSaveFile could not open `path`: the system's reason where Qt gives its own sentence
+// ("Existing file ... is not writable" on a read-only medium).
+QString openFailure(const QString &path, const QString &qtReason)
+{
+#ifdef Q_OS_UNIX
+    const QFileInfo info(path);
+    const QByteArray target
+        = QFile::encodeName(info.exists() ? info.absoluteFilePath() : info.absolutePath());
+    if (::access(target.constData(), W_OK) != 0)
+        return QString::fromLocal8Bit(std::strerror(errno));
+#else
+    Q_UNUSED(path);
+#endif
+    return qtReason;
+}
+
 QString writeDirectly(const QString &path, const QByteArray &data)
 {
     QFile file(path);
@@ -50,7 +68,7 @@ QString write(const QString &path, const QByteArray &data)
     // Unbuffered: each write reaches the system at once, so its result is the real one (a buffered
     // write that only fails when QSaveFile::commit() flushes is not reported by commit()).
     if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
-        return file.errorString();
+        return openFailure(path, file.errorString());
     if (QString reason = writeAll(file, data); !reason.isEmpty()) {
         file.cancelWriting();
         return reason;
@@ -66,6 +84,20 @@ QString write(const QString &path, const QByteArray &data)
 #endif
     if (!file.commit())
         return file.errorString();
+    return {};
+}
+
+QString checkWritable(const QString &path)
+{
+    const QFileInfo info(path);
+    if (info.isDir())
+        return QStringLiteral("It is a folder");
+    if (info.exists() && !info.isFile())
+        return {}; // a device or a pipe: written directly, nothing to try beforehand
+    const QString folder = info.absolutePath();
+    QTemporaryFile probe(QDir(folder).filePath(QStringLiteral(".%1.XXXXXX").arg(info.fileName())));
+    if (!probe.open())
+        return openFailure(path, probe.errorString());
     return {};
 }
 

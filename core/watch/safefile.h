@@ -21,6 +21,13 @@ namespace Fatek::SafeFile {
 // ("No space left on device"), for the caller's sentence that names the file.
 QString write(const QString &path, const QByteArray &data);
 
+// Whether write() could write `path`, found out without changing it: a regular file's folder
+// takes a new file (one is created and removed at once), a device or pipe is taken as it is.
+// Empty when it could, else the system's reason ("No such file or directory", "Read-only file
+// system", "Not a directory"). For files written at the end of a long job (a checkout's report):
+// the job is refused before it starts rather than its result lost.
+QString checkWritable(const QString &path);
+
 // Writes all of `data` to an open file (best opened Unbuffered, so each write reaches the system
 // and its result is the real one), then flushes it. A short write (the disk took what fit) is
 // retried, and the retry gives the system's error. Empty when written, else the reason. For the

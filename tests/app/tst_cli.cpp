@@ -126,33 +126,6 @@ bool onlyOwnLines(const QString &err)
     });
 }
 
-// A 64 KiB tmpfs at `dir` with 40000 bytes taken (the report's setup); unmounted by the guard.
-// An empty text when mounted, else why not.
-QString mountSmallDisk(const QString &dir)
-{
-    QDir().mkpath(dir);
-    QProcess mount;
-    mount.start(QStringLiteral("mount"),
-                {QStringLiteral("-t"), QStringLiteral("tmpfs"), QStringLiteral("-o"),
-                 QStringLiteral("size=64k"), QStringLiteral("tmpfs"), dir});
-    if (!mount.waitForFinished(10000) || mount.exitStatus() != QProcess::NormalExit
-        || mount.exitCode() != 0)
-        return QStringLiteral("Cannot mount a 64 KiB tmpfs (needs root and the right to mount in "
-                              "this container): %1")
-            .arg(QString::fromLocal8Bit(mount.readAllStandardError()).trimmed());
-    return {};
-}
-
-struct Unmount
-{
-    QString dir;
-    ~Unmount()
-    {
-        if (!dir.isEmpty())
-            QProcess::execute(QStringLiteral("umount"), {dir});
-    }
-};
-
 } // namespace
 
 #define RUN_OK(r)                                                                                  \
@@ -712,23 +685,21 @@ void TestCli::completions()
     QVERIFY(links.open(QIODevice::WriteOnly));
     links.write("# bench\nline1 = tcp://10.0.0.5\npress=serial://COM3  # east\n");
     links.close();
-    // What the shell offers for the words typed so far (the last one being completed).
+    // What the shell offers for the words typed so far (the last one being completed), given as
+    // bash gives them: the line up to the cursor (tests/docs/check_cli_completion.py presses TAB
+    // in a real interactive bash).
     auto offers = [&](const QStringList &words) {
-        QStringList quoted;
-        for (const QString &w : words)
-            quoted << QLatin1Char('\'') + w + QLatin1Char('\'');
         QProcess p;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
         env.remove(QStringLiteral("FATEK_LINKS"));
         p.setProcessEnvironment(env);
         p.setWorkingDirectory(dir.path());
-        p.start(bash,
-                {QStringLiteral("-c"),
-                 QStringLiteral("source fatek-cli.bash; COMP_WORDS=(fatek-cli %1); "
-                                "COMP_CWORD=%2; _fatek_cli; printf '%s\\n' \"${COMPREPLY[@]}\"")
-                     .arg(quoted.join(QLatin1Char(' ')))
-                     .arg(words.size())});
+        p.start(bash, {QStringLiteral("-c"),
+                       QStringLiteral("source fatek-cli.bash; COMP_LINE='fatek-cli %1'; "
+                                      "COMP_POINT=${#COMP_LINE}; _fatek_cli; "
+                                      "printf '%s\\n' \"${COMPREPLY[@]}\"")
+                           .arg(words.join(QLatin1Char(' ')))});
         p.waitForFinished(10000);
         return QString::fromUtf8(p.readAllStandardOutput())
             .split(QLatin1Char('\n'), Qt::SkipEmptyParts);
@@ -1201,9 +1172,9 @@ void TestCli::filesOnFullDisk()
     QFETCH(QString, name);
     QTemporaryDir dir;
     const QString disk = dir.filePath(QStringLiteral("small"));
-    if (const QString problem = mountSmallDisk(disk); !problem.isEmpty())
+    TestUtil::TmpfsMount mount; // 64 KiB, the report's setup
+    if (const QString problem = mount.mount(disk, 64); !problem.isEmpty())
         QSKIP(qPrintable(problem));
-    const Unmount unmount{disk};
     QVERIFY(writeFile(QDir(disk).filePath(QStringLiteral("f")), QByteArray(40000, '\0')));
     const QString path = QDir(disk).filePath(name);
     const QByteArray old = "the backup of yesterday\n";
@@ -1238,9 +1209,9 @@ void TestCli::monitorLogFillsTheDisk()
 {
     QTemporaryDir dir;
     const QString disk = dir.filePath(QStringLiteral("small"));
-    if (const QString problem = mountSmallDisk(disk); !problem.isEmpty())
+    TestUtil::TmpfsMount mount; // 64 KiB, the report's setup
+    if (const QString problem = mount.mount(disk, 64); !problem.isEmpty())
         QSKIP(qPrintable(problem));
-    const Unmount unmount{disk};
     // One page left: the header and a few rows of 100 elements (about 530 bytes each) fit, then
     // the disk is full.
     QVERIFY(writeFile(QDir(disk).filePath(QStringLiteral("f")), QByteArray(61440, '\0')));
