@@ -1,6 +1,7 @@
 #include "closedtables.h"
 
 #include "mainwindow.h"
+#include "ui/connection/connection.h"
 #include "ui/watch/watchtablewidget.h"
 
 #include <QAction>

@@ -32,7 +32,7 @@ QVariant UserGuideDialog::Browser::loadResource(int type, const QUrl &name)
     if (type != QTextDocument::ImageResource)
         return resource;
     QImage image;
-    if (resource.canConvert<QImage>())
+    if (resource.typeId() == QMetaType::QImage)
         image = resource.value<QImage>();
     else if (resource.typeId() == QMetaType::QByteArray)
         image.loadFromData(resource.toByteArray());

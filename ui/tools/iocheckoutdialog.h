@@ -55,6 +55,8 @@ public Q_SLOTS:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    // Close, Esc, the window's button: results its file could not take ask first.
+    void reject() override;
 
 private:
     void pressSeen(int index);
