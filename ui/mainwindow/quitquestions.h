@@ -10,8 +10,8 @@ class MainWindow;
 class WatchListDocument;
 
 // What must be settled before the main window closes: a tool dialog's unsaved work, a watch list
-// with unsaved changes or a data log running (asked first, as editors do), then writes to the PLC not sent yet (waited for
-// while the window stays responsive, or dropped).
+// with unsaved changes or a data log running (asked first, as editors do), then writes to the PLC
+// not sent yet (waited for while the window stays responsive, or dropped).
 class QuitQuestions : public QObject
 {
     Q_OBJECT

@@ -246,10 +246,9 @@ void ToolDocks::setTarget(Connection *c, bool force)
     // The dock's title names the PLC its buttons act on (RUN/STOP, forcing, raw frames), also
     // when the dock floats or sits behind another tab.
     for (qsizetype i = 0; i < m_docks.size(); ++i)
-        m_docks.at(i)->setWindowTitle(c ? tr("%1 \u2014 %2, station %3")
-                                              .arg(m_titles.at(i), c->name())
-                                              .arg(station)
-                                        : m_titles.at(i));
+        m_docks.at(i)->setWindowTitle(
+            c ? tr("%1 \u2014 %2, station %3").arg(m_titles.at(i), c->name()).arg(station)
+              : m_titles.at(i));
     showGatewayNotice(c && c->isGateway());
 }
 

@@ -50,17 +50,17 @@ UserGuideDialog::UserGuideDialog(QWidget *parent)
     setWindowTitle(tr("FATEK Studio User Guide"));
     auto *layout = new QVBoxLayout(this);
     auto *bar = new QHBoxLayout;
-    auto addButton = [this, bar](QStyle::StandardPixmap icon, const QString &text,
-                                 const QString &name) {
-        auto *b = new QToolButton(this);
-        b->setIcon(style()->standardIcon(icon));
-        b->setText(text);
-        b->setToolTip(text);
-        b->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-        b->setObjectName(name);
-        bar->addWidget(b);
-        return b;
-    };
+    auto addButton
+        = [this, bar](QStyle::StandardPixmap icon, const QString &text, const QString &name) {
+              auto *b = new QToolButton(this);
+              b->setIcon(style()->standardIcon(icon));
+              b->setText(text);
+              b->setToolTip(text);
+              b->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+              b->setObjectName(name);
+              bar->addWidget(b);
+              return b;
+          };
     QToolButton *back = addButton(QStyle::SP_ArrowBack, tr("Back"), QStringLiteral("backButton"));
     QToolButton *forward
         = addButton(QStyle::SP_ArrowForward, tr("Forward"), QStringLiteral("forwardButton"));

@@ -149,8 +149,7 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
             return tr("The memory snapshot of %n value(s) taken at %1 from station %2 is not "
                       "saved.",
                       nullptr, static_cast<int>(m_snapshot->values.size()))
-                .arg(QLocale().toString(m_snapshot->info.taken.toLocalTime(),
-                                        QLocale::ShortFormat))
+                .arg(QLocale().toString(m_snapshot->info.taken.toLocalTime(), QLocale::ShortFormat))
                 .arg(m_snapshot->info.station);
         },
         [this] {

@@ -88,7 +88,7 @@ private:
     ValuesRestorer *m_restorer;
     ToolDialogFrame *m_frame;
     std::optional<MemorySnapshot> m_snapshot;
-    bool m_snapshotSaved = false; // m_snapshot is in a file (saved or opened)
+    bool m_snapshotSaved = false;               // m_snapshot is in a file (saved or opened)
     std::vector<SnapshotValue> m_restoreValues; // what the confirmed restore writes
     bool m_comparing = false;
 
