@@ -176,6 +176,7 @@ private Q_SLOTS:
         Connection *c
             = window->openConnection(savedFor(plc.port, QStringLiteral("Press 1")), false);
         WatchTableWidget *pumps = window->currentWatchTable();
+        QTRY_COMPARE_WITH_TIMEOUT(c->linkState(), LinkState::Connected, longWait);
         WatchTableSpec spec;
         spec.name = QStringLiteral("Pumps");
         spec.intervalMs = 750;
@@ -236,7 +237,7 @@ private Q_SLOTS:
         QVERIFY(clickMenu(window, QStringLiteral("Tools"), "memorySnapshotAction"));
         SnapshotDialog *dialog = nullptr;
         QTRY_VERIFY((dialog = window->findChild<SnapshotDialog *>()) && dialog->isVisible());
-        QTest::qWaitForWindowActive(dialog);
+        QVERIFY(QTest::qWaitForWindowActive(dialog));
         auto *ranges = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
         QTest::mouseClick(ranges, Qt::LeftButton);
         QTest::keyClicks(ranges, QStringLiteral("R0..R99, M0..M63"));

@@ -54,7 +54,7 @@ QString placeOf(const QAction *action)
         if (qobject_cast<const WatchTableWidget *>(o))
             return ShortcutListDialog::tr("Watch table");
         if (const auto *dock = qobject_cast<const QDockWidget *>(o))
-            return dock->toggleViewAction()->text();
+            return plainText(dock->toggleViewAction()->text());
     }
     return ShortcutListDialog::tr("Main window");
 }
@@ -107,6 +107,7 @@ ShortcutListDialog::ShortcutListDialog(QWidget *window)
     m_table->setColumnCount(3);
     m_table->setHorizontalHeaderLabels({tr("Keys"), tr("Action"), tr("Where")});
     m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setWordWrap(false);
@@ -128,7 +129,7 @@ ShortcutListDialog::ShortcutListDialog(QWidget *window)
     int width = 0;
     for (int c = 0; c < m_table->columnCount(); ++c)
         width += m_table->columnWidth(c);
-    resize(std::max(520, width + 60), 600);
+    resize(std::max(520, width + 60), 640);
 }
 
 } // namespace Fatek
