@@ -13,14 +13,13 @@
 #include "testutil.h"
 #include "ui/connection/connection.h"
 #include "ui/mainwindow/mainwindow.h"
-#include "ui/mainwindow/shortcutlistdialog.h"
-#include "ui/mainwindow/userguidedialog.h"
 #include "ui/tools/snapshotdialog.h"
 #include "ui/watch/watchtablemodel.h"
 #include "uitestutil.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
@@ -355,29 +354,43 @@ private Q_SLOTS:
     {
         MainWindow *window = openWindow();
         QTest::keyClick(window, Qt::Key_F1);
-        UserGuideDialog *guide = nullptr;
-        QTRY_VERIFY((guide = window->findChild<UserGuideDialog *>()) && guide->isVisible());
-        QTextBrowser *browser = guide->browser();
+        QDialog *guide = nullptr;
+        QTRY_VERIFY((guide = window->findChild<QDialog *>(QStringLiteral("userGuideDialog")))
+                    && guide->isVisible());
+        auto *browser = guide->findChild<QTextBrowser *>(QStringLiteral("guideBrowser"));
+        QVERIFY(browser);
         QVERIFY2(browser->toPlainText().contains(QStringLiteral("FATEK Studio documentation")),
                  qPrintable(browser->toPlainText().left(200)));
-        // Click the link "Forcing discretes" where it shows.
+        // Click the link "Forcing discretes" where it shows: its page, with its screenshot.
         QTextCursor link = browser->document()->find(QStringLiteral("Forcing discretes"));
         QVERIFY(!link.isNull());
         link.setPosition(link.selectionStart() + 2);
         QTest::mouseClick(browser->viewport(), Qt::LeftButton, {},
                           browser->cursorRect(link).center());
-        QTRY_COMPARE(guide->page(), QStringLiteral("guide/forcing.md"));
+        QTRY_VERIFY2(browser->source().path().endsWith(QStringLiteral("/guide/forcing.md")),
+                     qPrintable(browser->source().toString()));
         QVERIFY2(browser->toPlainText().contains(QStringLiteral("Forcing")),
                  qPrintable(browser->toPlainText().left(200)));
-        guide->showPage(QStringLiteral("gui.md"));
-        QTRY_VERIFY(browser->toPlainText().contains(QStringLiteral("fatek-studio --demo")));
         saveShot(guide, QStringLiteral("user-guide"));
+        // Back to the contents, on to the GUI page.
+        QTest::mouseClick(guide->findChild<QWidget *>(QStringLiteral("backButton")),
+                          Qt::LeftButton);
+        QTRY_VERIFY(browser->toPlainText().contains(QStringLiteral("FATEK Studio documentation")));
+        link = browser->document()->find(QStringLiteral("GUI internals"));
+        QVERIFY(!link.isNull());
+        link.setPosition(link.selectionStart() + 2);
+        QTest::mouseClick(browser->viewport(), Qt::LeftButton, {},
+                          browser->cursorRect(link).center());
+        QTRY_VERIFY(browser->toPlainText().contains(QStringLiteral("fatek-studio --demo")));
+        saveShot(guide, QStringLiteral("user-guide-gui"));
         guide->close();
 
         QVERIFY(clickMenu(window, QStringLiteral("Help"), "shortcutListAction"));
-        ShortcutListDialog *list = nullptr;
-        QTRY_VERIFY((list = window->findChild<ShortcutListDialog *>()) && list->isVisible());
-        QTableWidget *table = list->table();
+        QDialog *list = nullptr;
+        QTRY_VERIFY((list = window->findChild<QDialog *>(QStringLiteral("shortcutListDialog")))
+                    && list->isVisible());
+        auto *table = list->findChild<QTableWidget *>(QStringLiteral("shortcutTable"));
+        QVERIFY(table);
         QMultiHash<QString, QString> rows; // keys -> action
         for (int r = 0; r < table->rowCount(); ++r)
             rows.insert(table->item(r, 0)->text(), table->item(r, 1)->text());
