@@ -3320,24 +3320,6 @@
             <translation>&amp;Tools</translation>
         </message>
         <message>
-            <source>&amp;Help</source>
-            <translation>&amp;Help</translation>
-        </message>
-        <message>
-            <source>&amp;About FATEK Studio</source>
-            <translation>&amp;About FATEK Studio</translation>
-        </message>
-        <message>
-            <source>About FATEK Studio</source>
-            <translation>About FATEK Studio</translation>
-        </message>
-        <message>
-            <source>FATEK Studio %1
-Commissioning and monitoring tool for FATEK PLCs.</source>
-            <translation>FATEK Studio %1
-Commissioning and monitoring tool for FATEK PLCs.</translation>
-        </message>
-        <message>
             <source>Connecting to %1 (%2)…</source>
             <translation>Connecting to %1 (%2)…</translation>
         </message>
@@ -3387,6 +3369,118 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>%1 — %2, station %3</source>
             <translation>%1 — %2, station %3</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ClosedTables</name>
+        <message>
+            <source>&amp;Reopen Closed Table</source>
+            <translation>&amp;Reopen Closed Table</translation>
+        </message>
+        <message numerus="yes">
+            <source>Closed “%1” (%n row(s)): %2 reopens it.</source>
+            <translation>
+                <numerusform>Closed “%1” (%n row): %2 reopens it.</numerusform>
+                <numerusform>Closed “%1” (%n rows): %2 reopens it.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Reopened “%1” (%n row(s)).</source>
+            <translation>
+                <numerusform>Reopened “%1” (%n row).</numerusform>
+                <numerusform>Reopened “%1” (%n rows).</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No watch table was closed</source>
+            <translation>No watch table was closed</translation>
+        </message>
+        <message>
+            <source>Open “%1” again, with its rows and settings</source>
+            <translation>Open “%1” again, with its rows and settings</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::HelpMenu</name>
+        <message>
+            <source>&amp;Help</source>
+            <translation>&amp;Help</translation>
+        </message>
+        <message>
+            <source>&amp;User Guide</source>
+            <translation>&amp;User Guide</translation>
+        </message>
+        <message>
+            <source>&amp;Keyboard Shortcuts</source>
+            <translation>&amp;Keyboard Shortcuts</translation>
+        </message>
+        <message>
+            <source>&amp;About FATEK Studio</source>
+            <translation>&amp;About FATEK Studio</translation>
+        </message>
+        <message>
+            <source>About FATEK Studio</source>
+            <translation>About FATEK Studio</translation>
+        </message>
+        <message>
+            <source>FATEK Studio %1
+Commissioning and monitoring tool for FATEK PLCs.</source>
+            <translation>FATEK Studio %1
+Commissioning and monitoring tool for FATEK PLCs.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ShortcutListDialog</name>
+        <message>
+            <source>Watch table</source>
+            <translation>Watch table</translation>
+        </message>
+        <message>
+            <source>Main window</source>
+            <translation>Main window</translation>
+        </message>
+        <message>
+            <source>Keyboard Shortcuts</source>
+            <translation>Keyboard Shortcuts</translation>
+        </message>
+        <message>
+            <source>Keys</source>
+            <translation>Keys</translation>
+        </message>
+        <message>
+            <source>Action</source>
+            <translation>Action</translation>
+        </message>
+        <message>
+            <source>Where</source>
+            <translation>Where</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::UserGuideDialog</name>
+        <message>
+            <source>FATEK Studio User Guide</source>
+            <translation>FATEK Studio User Guide</translation>
+        </message>
+        <message>
+            <source>Back</source>
+            <translation>Back</translation>
+        </message>
+        <message>
+            <source>Forward</source>
+            <translation>Forward</translation>
+        </message>
+        <message>
+            <source>Contents</source>
+            <translation>Contents</translation>
+        </message>
+        <message>
+            <source>%1 is not part of the user guide built into the program.</source>
+            <translation>%1 is not part of the user guide built into the program.</translation>
+        </message>
+        <message>
+            <source>FATEK Studio User Guide — %1</source>
+            <translation>FATEK Studio User Guide — %1</translation>
         </message>
     </context>
     <context>
@@ -4140,6 +4234,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message>
             <source>Check every input, output and analog point of a machine and write the report</source>
             <translation>Check every input, output and analog point of a machine and write the report</translation>
+        </message>
+        <message>
+            <source>%1 — %2, station %3</source>
+            <translation>%1 — %2, station %3</translation>
         </message>
     </context>
     <context>
@@ -5290,6 +5388,13 @@ Write its values all the same? Elements the PLC does not have are refused before
             <source>Read back</source>
             <translation>Read back</translation>
         </message>
+        <message numerus="yes">
+            <source>The memory snapshot of %n value(s) taken at %1 from station %2 is not saved.</source>
+            <translation>
+                <numerusform>The memory snapshot of %n value taken at %1 from station %2 is not saved.</numerusform>
+                <numerusform>The memory snapshot of %n values taken at %1 from station %2 is not saved.</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::CheckoutTableModel</name>
@@ -5476,6 +5581,10 @@ Write its values all the same? Elements the PLC does not have are refused before
             <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
             <translation>Force %1 on at %2? It stays on until you answer, then it is released.</translation>
         </message>
+        <message>
+            <source>The latest results of the checkout are not saved: %1</source>
+            <translation>The latest results of the checkout are not saved: %1</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::ToolDialogFrame</name>
@@ -5486,6 +5595,18 @@ Write its values all the same? Elements the PLC does not have are refused before
         <message>
             <source>No connection: choose a connection and a station.</source>
             <translation>No connection: choose a connection and a station.</translation>
+        </message>
+        <message>
+            <source>Save it first? Discarded, it is lost.</source>
+            <translation>Save it first? Discarded, it is lost.</translation>
+        </message>
+        <message>
+            <source>&amp;Save…</source>
+            <translation>&amp;Save…</translation>
+        </message>
+        <message>
+            <source>&amp;Discard</source>
+            <translation>&amp;Discard</translation>
         </message>
     </context>
     <context>

@@ -3313,24 +3313,6 @@
             <translation>工具(&amp;T)</translation>
         </message>
         <message>
-            <source>&amp;Help</source>
-            <translation>說明(&amp;H)</translation>
-        </message>
-        <message>
-            <source>&amp;About FATEK Studio</source>
-            <translation>關於 FATEK Studio(&amp;A)</translation>
-        </message>
-        <message>
-            <source>About FATEK Studio</source>
-            <translation>關於 FATEK Studio</translation>
-        </message>
-        <message>
-            <source>FATEK Studio %1
-Commissioning and monitoring tool for FATEK PLCs.</source>
-            <translation>FATEK Studio %1
-永宏 FATEK PLC 的試車與監控工具。</translation>
-        </message>
-        <message>
             <source>Connecting to %1 (%2)…</source>
             <translation>正在連線到 %1（%2）…</translation>
         </message>
@@ -3379,6 +3361,116 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>%1 — %2, station %3</source>
             <translation>%1 — %2，站號 %3</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ClosedTables</name>
+        <message>
+            <source>&amp;Reopen Closed Table</source>
+            <translation>重新開啟已關閉的監看表(&amp;R)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Closed “%1” (%n row(s)): %2 reopens it.</source>
+            <translation>
+                <numerusform>已關閉「%1」（%n 列）：按 %2 可重新開啟。</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Reopened “%1” (%n row(s)).</source>
+            <translation>
+                <numerusform>已重新開啟「%1」（%n 列）。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No watch table was closed</source>
+            <translation>沒有已關閉的監看表</translation>
+        </message>
+        <message>
+            <source>Open “%1” again, with its rows and settings</source>
+            <translation>重新開啟「%1」，連同其列與設定</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::HelpMenu</name>
+        <message>
+            <source>&amp;Help</source>
+            <translation>說明(&amp;H)</translation>
+        </message>
+        <message>
+            <source>&amp;User Guide</source>
+            <translation>使用手冊(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Keyboard Shortcuts</source>
+            <translation>鍵盤快速鍵(&amp;K)</translation>
+        </message>
+        <message>
+            <source>&amp;About FATEK Studio</source>
+            <translation>關於 FATEK Studio(&amp;A)</translation>
+        </message>
+        <message>
+            <source>About FATEK Studio</source>
+            <translation>關於 FATEK Studio</translation>
+        </message>
+        <message>
+            <source>FATEK Studio %1
+Commissioning and monitoring tool for FATEK PLCs.</source>
+            <translation>FATEK Studio %1
+永宏 FATEK PLC 的試車與監控工具。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::ShortcutListDialog</name>
+        <message>
+            <source>Watch table</source>
+            <translation>監看表</translation>
+        </message>
+        <message>
+            <source>Main window</source>
+            <translation>主視窗</translation>
+        </message>
+        <message>
+            <source>Keyboard Shortcuts</source>
+            <translation>鍵盤快速鍵</translation>
+        </message>
+        <message>
+            <source>Keys</source>
+            <translation>按鍵</translation>
+        </message>
+        <message>
+            <source>Action</source>
+            <translation>動作</translation>
+        </message>
+        <message>
+            <source>Where</source>
+            <translation>位置</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::UserGuideDialog</name>
+        <message>
+            <source>FATEK Studio User Guide</source>
+            <translation>FATEK Studio 使用手冊</translation>
+        </message>
+        <message>
+            <source>Back</source>
+            <translation>上一頁</translation>
+        </message>
+        <message>
+            <source>Forward</source>
+            <translation>下一頁</translation>
+        </message>
+        <message>
+            <source>Contents</source>
+            <translation>目錄</translation>
+        </message>
+        <message>
+            <source>%1 is not part of the user guide built into the program.</source>
+            <translation>%1 不在程式內建的使用手冊中。</translation>
+        </message>
+        <message>
+            <source>FATEK Studio User Guide — %1</source>
+            <translation>FATEK Studio 使用手冊 — %1</translation>
         </message>
     </context>
     <context>
@@ -4128,6 +4220,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
         <message>
             <source>Check every input, output and analog point of a machine and write the report</source>
             <translation>逐一檢查機台的每個輸入、輸出與類比點，並寫出報告</translation>
+        </message>
+        <message>
+            <source>%1 — %2, station %3</source>
+            <translation>%1 — %2，站號 %3</translation>
         </message>
     </context>
     <context>
@@ -5266,6 +5362,12 @@ PLC：%3
             <source>Read back</source>
             <translation>回讀</translation>
         </message>
+        <message numerus="yes">
+            <source>The memory snapshot of %n value(s) taken at %1 from station %2 is not saved.</source>
+            <translation>
+                <numerusform>於 %1 從站號 %2 擷取的記憶體快照（%n 個值）尚未儲存。</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::CheckoutTableModel</name>
@@ -5452,6 +5554,10 @@ PLC：%3
             <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
             <translation>在%2將 %1 強制為 ON？回答前保持 ON，回答後即解除。</translation>
         </message>
+        <message>
+            <source>The latest results of the checkout are not saved: %1</source>
+            <translation>點檢最新的結果尚未儲存：%1</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::ToolDialogFrame</name>
@@ -5462,6 +5568,18 @@ PLC：%3
         <message>
             <source>No connection: choose a connection and a station.</source>
             <translation>沒有連線：請選擇連線與站號。</translation>
+        </message>
+        <message>
+            <source>Save it first? Discarded, it is lost.</source>
+            <translation>要先儲存嗎？捨棄後便無法找回。</translation>
+        </message>
+        <message>
+            <source>&amp;Save…</source>
+            <translation>儲存(&amp;S)…</translation>
+        </message>
+        <message>
+            <source>&amp;Discard</source>
+            <translation>捨棄(&amp;D)</translation>
         </message>
     </context>
     <context>

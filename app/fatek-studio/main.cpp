@@ -122,18 +122,35 @@ int usageError(const QString &message)
     return 2;
 }
 
-} // namespace
-
-int main(int argc, char *argv[])
+// --help, --help-all and --version print text and end: they need no display (an engineer on an
+// SSH session reads the options), so they are answered before any GUI application exists.
+bool asksForText(int argc, char *argv[])
 {
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("FATEK Studio"));
-    QApplication::setApplicationName(QStringLiteral("fatek-studio"));
-    QApplication::setApplicationDisplayName(QStringLiteral("FATEK Studio"));
-    // Wayland and the task bar match the window to packaging/linux/fatek-studio.desktop.
-    QGuiApplication::setDesktopFileName(QStringLiteral("fatek-studio"));
-    QApplication::setApplicationVersion(QStringLiteral(FATEK_VERSION));
+    for (int i = 1; i < argc; ++i) {
+        const QLatin1String a(argv[i]);
+        if (a == QLatin1String("--help") || a == QLatin1String("-h") || a == QLatin1String("-?")
+            || a == QLatin1String("--help-all") || a == QLatin1String("--version")
+            || a == QLatin1String("-v"))
+            return true;
+    }
+    return false;
+}
 
+// Returned by run() under a QCoreApplication when the command line wants the window after all
+// ("--screenshot --help" names a file called --help).
+constexpr int needsWindow = -1;
+
+int run(QCoreApplication &app)
+{
+    auto *gui = qobject_cast<QApplication *>(&app);
+    QCoreApplication::setOrganizationName(QStringLiteral("FATEK Studio"));
+    QCoreApplication::setApplicationName(QStringLiteral("fatek-studio"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(FATEK_VERSION));
+    if (gui) {
+        QGuiApplication::setApplicationDisplayName(QStringLiteral("FATEK Studio"));
+        // Wayland and the task bar match the window to packaging/linux/fatek-studio.desktop.
+        QGuiApplication::setDesktopFileName(QStringLiteral("fatek-studio"));
+    }
     const QString language = languageArgument(QCoreApplication::arguments());
     if (!language.isEmpty() && !Fatek::Language::isKnown(language)) {
         std::fprintf(stderr, "fatek-studio: unknown language %s (%s)\n", qPrintable(language),
@@ -184,6 +201,8 @@ int main(int argc, char *argv[])
     if (!parser.parse(QCoreApplication::arguments()))
         return usageError(parser.errorText());
     parser.process(app);
+    if (!gui)
+        return needsWindow;
 
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1)
@@ -231,4 +250,17 @@ int main(int argc, char *argv[])
         scheduleScreenshot(&window, parser.value(screenshotOpt), parser.isSet(demoOpt),
                            parser.value(toolOpt));
     return QApplication::exec();
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    if (asksForText(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        if (const int code = run(app); code != needsWindow)
+            return code;
+    }
+    QApplication app(argc, argv);
+    return run(app);
 }

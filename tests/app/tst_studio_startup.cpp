@@ -32,6 +32,8 @@ class TestStudioStartup : public QObject
 private Q_SLOTS:
     void initTestCase();
     void help();
+    void helpAndVersionWithoutDisplay_data();
+    void helpAndVersionWithoutDisplay();
     void usageErrors_data();
     void usageErrors();
     void opensLinkAndWatchList();
@@ -41,7 +43,8 @@ private Q_SLOTS:
 private:
     // Starts fatek-studio and waits (running this thread's event loop, so the simulator of the
     // test answers meanwhile) until it has ended.
-    Run runStudio(const QStringList &arguments, int timeoutMs = 120000);
+    // `headless`: as over SSH, no DISPLAY, no WAYLAND_DISPLAY and no QT_QPA_PLATFORM.
+    Run runStudio(const QStringList &arguments, int timeoutMs = 120000, bool headless = false);
     QString writeFile(const QString &name, const QByteArray &content);
 
     QTemporaryDir m_dir;
@@ -57,7 +60,7 @@ void TestStudioStartup::initTestCase()
                           QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
 }
 
-Run TestStudioStartup::runStudio(const QStringList &arguments, int timeoutMs)
+Run TestStudioStartup::runStudio(const QStringList &arguments, int timeoutMs, bool headless)
 {
     QProcess p;
     // The developer's own settings (recent connections, last watch list) stay out of the test.
@@ -68,6 +71,10 @@ Run TestStudioStartup::runStudio(const QStringList &arguments, int timeoutMs)
     env.insert(QStringLiteral("XDG_RUNTIME_DIR"), m_dir.filePath(QStringLiteral("run")));
     env.insert(QStringLiteral("LANGUAGE"), QStringLiteral("en"));
     env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C.UTF-8"));
+    if (headless) {
+        for (const char *name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+            env.remove(QLatin1String(name));
+    }
     p.setProcessEnvironment(env);
     p.start(QStringLiteral(FATEK_STUDIO_PATH), arguments);
     Run r;
@@ -109,6 +116,33 @@ void TestStudioStartup::help()
           "--protocol", "--station", "--timeout", "--retries", "--demo", "--read-only",
           "--screenshot", "--language", "[file]"})
         QVERIFY2(r.out.contains(QLatin1String(option)), qPrintable(option + (": " + r.out)));
+}
+
+// Issue 54 item 9: over SSH (no display at all) --help and --version answered, exit 0; they
+// aborted in the platform plugin (rc 134, "Could not load the Qt platform plugin").
+void TestStudioStartup::helpAndVersionWithoutDisplay_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("--help") << QStringList{QStringLiteral("--help")} << QStringLiteral("--tcp");
+    QTest::newRow("-h") << QStringList{QStringLiteral("-h")} << QStringLiteral("--demo");
+    QTest::newRow("--help-all") << QStringList{QStringLiteral("--help-all")}
+                                << QStringLiteral("--read-only");
+    QTest::newRow("--version") << QStringList{QStringLiteral("--version")}
+                               << QStringLiteral("fatek-studio " FATEK_VERSION);
+    QTest::newRow("--language zh_TW --help")
+        << QStringList{QStringLiteral("--language"), QStringLiteral("zh_TW"),
+                       QStringLiteral("--help")}
+        << QStringLiteral("--serial");
+}
+
+void TestStudioStartup::helpAndVersionWithoutDisplay()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, expected);
+    const Run r = runStudio(arguments, 60000, true);
+    QVERIFY2(r.code == 0, qPrintable(QStringLiteral("rc %1: %2").arg(r.code).arg(r.err)));
+    QVERIFY2(r.out.contains(expected), qPrintable(r.out));
 }
 
 void TestStudioStartup::usageErrors_data()

@@ -176,9 +176,13 @@ private Q_SLOTS:
 
         QTabBar *tabs = nullptr;
         int consoleTab = -1;
+        // The dock's tab names the PLC too ("Raw Console — Test PLC, station 1").
+        const QString title
+            = window.findChild<QDockWidget *>(QStringLiteral("rawConsoleDock"))->windowTitle();
+        QVERIFY2(title.startsWith(QLatin1String("Raw Console")), qPrintable(title));
         for (QTabBar *bar : window.findChildren<QTabBar *>()) {
             for (int i = 0; i < bar->count(); ++i) {
-                if (bar->isVisible() && bar->tabText(i) == QLatin1String("Raw Console")) {
+                if (bar->isVisible() && bar->tabText(i) == title) {
                     tabs = bar;
                     consoleTab = i;
                 }

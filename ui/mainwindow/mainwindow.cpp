@@ -3,7 +3,9 @@
 #include "operatormode.h"
 #include "quitquestions.h"
 
+#include "closedtables.h"
 #include "demosimulator.h"
+#include "helpmenu.h"
 #include "languagemenu.h"
 #include "linkstatuslabel.h"
 #include "ui/alarm/alarmjournaldialog.h"
@@ -26,7 +28,6 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
 #include <QSettings>
@@ -77,6 +78,7 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
     connect(m_tabs, &QTabWidget::currentChanged, this, [this] {
         if (WatchTableWidget *t = currentWatchTable())
             followTable(t->connection());
+        updateToolTargets();
     });
     connect(m_tabs->tabBar(), &QTabBar::tabBarDoubleClicked, this, &MainWindow::renameWatchTable);
 
@@ -103,10 +105,10 @@ MainWindow::MainWindow(bool readOnly, QWidget *parent)
         updateToolTargets();
     });
     connect(m_manager, &ConnectionManager::connectionChanged, this, [this](Connection *c) {
-        if (c == currentConnection()) {
+        if (c == currentConnection())
             updateLinkStatus();
+        if (c == currentConnection() || c == toolConnection())
             updateToolTargets(); // the station may have changed
-        }
     });
     connect(m_manager, &ConnectionManager::recentChanged, this, &MainWindow::rebuildRecentMenu);
     connect(m_manager, &ConnectionManager::connectionAdded, this, [this](Connection *c) {
@@ -252,6 +254,8 @@ void MainWindow::createActions()
     auto *closeTable = watch->addAction(tr("&Close Table"), this,
                                         [this] { closeWatchTable(m_tabs->currentIndex()); });
     closeTable->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F4));
+    m_closedTables = new ClosedTables(this, m_tabs, watch);
+    connect(m_closedTables, &ClosedTables::statusMessage, this, &MainWindow::showStatus);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     for (QDockWidget *dock : findChildren<QDockWidget *>())
@@ -280,12 +284,7 @@ void MainWindow::createActions()
     m_viewMenu->addSeparator();
     m_viewMenu->addMenu(new LanguageMenu(m_viewMenu));
 
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About FATEK Studio"), this, [this] {
-        QMessageBox::about(this, tr("About FATEK Studio"),
-                           tr("FATEK Studio %1\nCommissioning and monitoring tool for FATEK PLCs.")
-                               .arg(QApplication::applicationVersion()));
-    });
+    new HelpMenu(this);
 
     toolBar->addAction(connectAction);
     toolBar->addAction(disconnectAction);
@@ -403,8 +402,10 @@ WatchTableWidget *MainWindow::addWatchTable(const QString &name)
         m_tabs->setTabText(m_tabs->indexOf(table), text);
     });
     connect(table, &WatchTableWidget::connectionChanged, this, [this, table](Connection *c) {
-        if (table == currentWatchTable())
+        if (table == currentWatchTable()) {
             followTable(c);
+            updateToolTargets();
+        }
     });
     m_tabs->addTab(table, QIcon(QStringLiteral(":/icons/table.svg")), table->name());
     m_document->updateModified();
@@ -427,6 +428,14 @@ QList<WatchTableWidget *> MainWindow::watchTables() const
 }
 
 void MainWindow::closeWatchTable(int index)
+{
+    // No question, as a browser closes a tab: Watch > Reopen Closed Table undoes it.
+    if (auto *table = qobject_cast<WatchTableWidget *>(m_tabs->widget(index)))
+        m_closedTables->remember(table, index);
+    removeWatchTable(index);
+}
+
+void MainWindow::removeWatchTable(int index)
 {
     QWidget *w = m_tabs->widget(index);
     if (!w)
@@ -451,7 +460,8 @@ void MainWindow::renameWatchTable(int index)
 void MainWindow::replaceWatchTables(const QList<WatchTableSpec> &specs)
 {
     while (m_tabs->count() > 0)
-        closeWatchTable(0);
+        removeWatchTable(0);
+    m_closedTables->forget(); // tables of the list that was replaced
     for (const WatchTableSpec &spec : specs)
         addWatchTable(spec.name)->setSpec(spec);
     if (m_tabs->count() == 0)
@@ -535,10 +545,19 @@ void MainWindow::followTable(Connection *connection)
         m_connectionsPanel->setCurrentConnection(connection);
 }
 
+Connection *MainWindow::toolConnection() const
+{
+    // The PLC the person sees named in the table in front; a connection added meanwhile becomes
+    // the panel's current one (new tables take it) but must not retarget RUN/STOP or forcing.
+    if (const WatchTableWidget *t = currentWatchTable(); t && t->connection())
+        return t->connection();
+    return currentConnection();
+}
+
 void MainWindow::updateToolTargets()
 {
     if (m_tools) // not yet while the menus are made
-        m_tools->setTarget(currentConnection());
+        m_tools->setTarget(toolConnection());
 }
 
 void MainWindow::showStatus(const QString &text)
@@ -565,7 +584,7 @@ void MainWindow::applyOperatorMode(bool active)
     m_manager->setReadOnly(active);
     m_document->updateWindowTitle();
     if (m_tools)
-        m_tools->setTarget(currentConnection(), true);
+        m_tools->setTarget(toolConnection(), true);
 }
 
 } // namespace Fatek

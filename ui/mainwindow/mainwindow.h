@@ -38,6 +38,8 @@ public:
 
     ConnectionManager *connections() const { return m_manager; }
     Connection *currentConnection() const;
+    // What the tools act on: the connection of the table in front, else the current one.
+    Connection *toolConnection() const;
     bool isReadOnly() const { return m_readOnly; }
 
     // Opens a connection (and remembers it as recent unless `remember` is false).
@@ -89,11 +91,14 @@ private:
     void newConnectionDialog();
     void closeCurrentConnection();
     void rebuildRecentMenu();
+    // Close Table: undone by Watch > Reopen Closed Table (ClosedTables).
     void closeWatchTable(int index);
+    // Removes the tab and deletes its table (closing, or a watch list replacing the tables).
+    void removeWatchTable(int index);
     void renameWatchTable(int index);
     void updateLinkStatus();
     void updateToolTargets();
-    // Makes the connection of the table in front the current one (the tools' target).
+    // Makes the connection of the table in front the current one.
     void followTable(Connection *connection);
     void showStatus(const QString &text);
     // Brings the window (its frame too) inside the screen's available area: the default size
@@ -135,6 +140,7 @@ private:
     TrendLogging *m_trend = nullptr;
     AlarmsUi *m_alarms = nullptr;
     HistoryUi *m_history = nullptr;
+    class ClosedTables *m_closedTables = nullptr;
     int m_tableCounter = 0;
     class OperatorMode *m_operatorMode = nullptr;
 };

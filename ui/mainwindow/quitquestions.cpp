@@ -2,9 +2,11 @@
 
 #include "mainwindow.h"
 #include "ui/connection/connectionmanager.h"
+#include "ui/tools/tooldialogframe.h"
 #include "ui/trend/tablelogger.h"
 #include "watchlistdocument.h"
 
+#include <QDialog>
 #include <QDir>
 #include <QMessageBox>
 #include <QPushButton>
@@ -25,7 +27,7 @@ bool QuitQuestions::mayClose()
 {
     // Unsaved tables and a running log first, as editors do; then writes not sent yet.
     if (!m_quitting && !m_quitConfirmed) {
-        if (!confirmQuit())
+        if (!settleToolDialogs() || !confirmQuit())
             return false;
         m_quitConfirmed = true;
     }
@@ -41,6 +43,20 @@ bool QuitQuestions::mayClose()
         return false;
     }
     m_quitConfirmed = false; // a window shown again asks again
+    return true;
+}
+
+bool QuitQuestions::settleToolDialogs()
+{
+    for (ToolDialogFrame *frame : m_window->findChildren<ToolDialogFrame *>()) {
+        if (!frame->hasUnsaved())
+            continue;
+        frame->dialog()->show();
+        frame->dialog()->raise();
+        frame->dialog()->activateWindow();
+        if (!frame->mayDiscard())
+            return false;
+    }
     return true;
 }
 

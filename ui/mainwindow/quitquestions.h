@@ -9,9 +9,9 @@ class ConnectionManager;
 class MainWindow;
 class WatchListDocument;
 
-// What must be settled before the main window closes: a watch list with unsaved changes or a
-// data log running (asked first, as editors do), then writes to the PLC not sent yet (waited for
-// while the window stays responsive, or dropped).
+// What must be settled before the main window closes: a tool dialog's unsaved work, a watch list
+// with unsaved changes or a data log running (asked first, as editors do), then writes to the PLC
+// not sent yet (waited for while the window stays responsive, or dropped).
 class QuitQuestions : public QObject
 {
     Q_OBJECT
@@ -27,6 +27,9 @@ Q_SIGNALS:
     void statusMessage(const QString &text);
 
 private:
+    // Each open tool dialog that holds unsaved work (a memory snapshot) asks its own question,
+    // in front; false: Cancel, stay open.
+    bool settleToolDialogs();
     // Asks before quitting with unsaved tables or a running data log; false: stay open.
     bool confirmQuit();
     // Quitting with writes not sent yet: asks to wait for them or drop them; false: stay open.

@@ -77,6 +77,7 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
         viewMenu->addAction(action);
         m_targets.append([tool](const PlcTarget &target) { tool->setTarget(target); });
         m_docks.append(dock);
+        m_titles.append(title);
         return dock;
     };
     QDockWidget *control
@@ -135,7 +136,7 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
     checkout->setToolTip(
         tr("Check every input, output and analog point of a machine and write the report"));
     auto *scan = toolsMenu->addAction(tr("Scan &Stations…"), this, [this] {
-        Connection *c = m_window->currentConnection();
+        Connection *c = m_connection;
         if (!c) {
             Q_EMIT statusMessage(tr("Scan Stations: open a connection first."));
             return;
@@ -150,7 +151,7 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
     scan->setToolTip(tr("Find the PLCs that answer on the current connection's link"));
     for (QAction *action : {m_loopbackAction, program, snapshot, checkout, scan})
         m_linkActions.insert(action, action->toolTip());
-    setTarget(window->currentConnection());
+    setTarget(window->toolConnection());
 }
 
 template<typename Dialog>
@@ -158,8 +159,7 @@ void ToolDocks::openDialog(Dialog *dialog, const QString &objectName)
 {
     dialog->setObjectName(objectName);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    Connection *c = m_window->currentConnection();
-    dialog->setTarget(targetOf(c));
+    dialog->setTarget(targetOf(m_connection));
     // Like the docks, an open dialog follows the current connection (and lets go of a closed
     // one).
     m_targets.append([open = QPointer<Dialog>(dialog)](const PlcTarget &target) {
@@ -179,7 +179,6 @@ QAction *ToolDocks::dockAction(QDockWidget *dock, const QKeySequence &shortcut, 
     action->setChecked(!dock->isHidden());
     action->setShortcut(shortcut);
     connect(dock->toggleViewAction(), &QAction::toggled, action, &QAction::setChecked);
-    connect(dock, &QDockWidget::windowTitleChanged, action, &QAction::setText);
     connect(action, &QAction::triggered, dock, [dock, action] {
         if (dock->isHidden()) {
             dock->show();
@@ -244,6 +243,12 @@ void ToolDocks::setTarget(Connection *c, bool force)
     m_station = station;
     for (const SetTarget &target : std::as_const(m_targets))
         target(targetOf(c));
+    // The dock's title names the PLC its buttons act on (RUN/STOP, forcing, raw frames), also
+    // when the dock floats or sits behind another tab.
+    for (qsizetype i = 0; i < m_docks.size(); ++i)
+        m_docks.at(i)->setWindowTitle(
+            c ? tr("%1 \u2014 %2, station %3").arg(m_titles.at(i), c->name()).arg(station)
+              : m_titles.at(i));
     showGatewayNotice(c && c->isGateway());
 }
 

@@ -21,7 +21,8 @@ class PlcTarget;
 
 // The commissioning tools of the main window: the PLC Control, Forcing and Raw Console docks, the
 // Loopback Test, Memory Snapshot, I/O Checkout and Scan Stations dialogs, and their Tools/View menu
-// entries. Every tool acts on one target, the current connection and its station.
+// entries. Every tool acts on one target, MainWindow::toolConnection() and its station (the
+// docks' titles name it).
 class ToolDocks : public QObject
 {
     Q_OBJECT
@@ -64,6 +65,7 @@ private:
 
     MainWindow *m_window;
     QList<QDockWidget *> m_docks;
+    QList<QString> m_titles; // the docks' own titles, without the target
     // The dialogs' actions that need a PLC link, with their own tooltips.
     QHash<QAction *, QString> m_linkActions;
     QAction *m_loopbackAction = nullptr;

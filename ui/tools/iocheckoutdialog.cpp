@@ -171,8 +171,36 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     connect(m_runner, &CheckoutRunner::saveFailed, this,
             [this](const Message &message) { showMessage(translated(message), true); });
 
+    // The checkout saves itself after every answer; only results its file refused (a full disk,
+    // a removed stick) are in no file, and are asked about before they go.
+    m_frame->setUnsaved(
+        [this] {
+            const std::optional<Message> &error = m_runner->saveError();
+            if (!m_loaded || !error)
+                return QString();
+            return tr("The latest results of the checkout are not saved: %1")
+                .arg(translated(*error));
+        },
+        [this] {
+            const QString path
+                = m_frame->chooseFile({true, tr("Save Checkout"), tr("Checkouts (*.json)"), {}});
+            if (path.isEmpty())
+                return false;
+            if (const Status s = CheckoutFile::saveToFile(m_runner->plan(), path); !s) {
+                showMessage(translated(s.error().message), true);
+                return false;
+            }
+            m_runner->setFilePath(path); // later answers go there too
+            return true;
+        });
     setTarget(PlcTarget());
     resize(980, 620);
+}
+
+void IoCheckoutDialog::reject()
+{
+    if (m_frame->mayDiscard())
+        QDialog::reject();
 }
 
 IoCheckoutDialog::~IoCheckoutDialog() = default;

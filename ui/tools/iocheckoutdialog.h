@@ -43,6 +43,8 @@ public:
     QString messageText() const;
 
 public Q_SLOTS:
+    // Close, Esc, the window's button: results its file could not take ask first.
+    void reject() override;
     // A new, empty checkout: the plan fields are edited again.
     void newCheckout();
     // Builds the plan from the fields when none is loaded (asking for the file it is saved in),

@@ -104,14 +104,19 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
     restoreRow->addWidget(m_restore);
     layout->addLayout(restoreRow);
 
-    connect(m_take, &QPushButton::clicked, this, &SnapshotDialog::takeSnapshot);
+    // A new snapshot or an opened file replaces the one held: asked first when it is not saved.
+    connect(m_take, &QPushButton::clicked, this, [this] {
+        if (m_frame->mayDiscard())
+            takeSnapshot();
+    });
     connect(m_cancel, &QPushButton::clicked, this, &SnapshotDialog::cancel);
     connect(m_comparePlc, &QPushButton::clicked, this, &SnapshotDialog::compareWithPlc);
     connect(m_restore, &QPushButton::clicked, this, &SnapshotDialog::restoreValues);
     connect(m_save, &QPushButton::clicked, this,
             [this] { pickSnapshotFile(true, tr("Save Snapshot"), &SnapshotDialog::saveSnapshot); });
     connect(m_open, &QPushButton::clicked, this, [this] {
-        pickSnapshotFile(false, tr("Open Snapshot"), &SnapshotDialog::openSnapshot);
+        if (m_frame->mayDiscard())
+            pickSnapshotFile(false, tr("Open Snapshot"), &SnapshotDialog::openSnapshot);
     });
     connect(m_compareFile, &QPushButton::clicked, this, [this] {
         pickSnapshotFile(false, tr("Compare With File"), &SnapshotDialog::compareWithFile);
@@ -137,6 +142,20 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
             onSnapshotRead();
     });
     connect(m_restorer, &ValuesRestorer::finished, this, &SnapshotDialog::onRestored);
+    m_frame->setUnsaved(
+        [this] {
+            if (!hasUnsavedSnapshot())
+                return QString();
+            return tr("The memory snapshot of %n value(s) taken at %1 from station %2 is not "
+                      "saved.",
+                      nullptr, static_cast<int>(m_snapshot->values.size()))
+                .arg(QLocale().toString(m_snapshot->info.taken.toLocalTime(), QLocale::ShortFormat))
+                .arg(m_snapshot->info.station);
+        },
+        [this] {
+            pickSnapshotFile(true, tr("Save Snapshot"), &SnapshotDialog::saveSnapshot);
+            return !hasUnsavedSnapshot();
+        });
     setTarget(PlcTarget());
     resize(640, 560);
 }
@@ -239,6 +258,12 @@ void SnapshotDialog::takeSnapshot()
     updateControls();
 }
 
+void SnapshotDialog::reject()
+{
+    if (m_frame->mayDiscard())
+        QDialog::reject();
+}
+
 void SnapshotDialog::cancel()
 {
     m_reader->cancel();
@@ -252,6 +277,7 @@ void SnapshotDialog::onSnapshotRead()
         showMessage(translated(m_reader->error().message), true);
     } else {
         m_snapshot = m_reader->snapshot();
+        m_snapshotSaved = false;
         showMessage(translated(msg<MsgId::SnapshotTaken>(m_snapshot->values.size(),
                                                          m_reader->requestsTotal())),
                     false);
@@ -298,6 +324,7 @@ bool SnapshotDialog::saveSnapshot(const QString &path)
         showMessage(translated(problem->message), true);
         return false;
     }
+    m_snapshotSaved = true;
     showMessage(tr("Saved %1.").arg(path), false);
     return true;
 }
@@ -310,6 +337,7 @@ bool SnapshotDialog::openSnapshot(const QString &path)
         return false;
     }
     m_snapshot = loaded.snapshot;
+    m_snapshotSaved = true;
     m_model->setDifferences({}, tr("Before"), tr("After"));
     showMessage(tr("Opened %1.").arg(path), false);
     updateControls();

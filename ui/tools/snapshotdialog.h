@@ -50,6 +50,11 @@ public:
     int visibleDifferences() const;
     QString messageText() const;
     bool isBusy() const;
+    // A snapshot taken from the PLC that is in no file yet (Close, Esc, Take, Open and quitting
+    // the main window ask first).
+    bool hasUnsavedSnapshot() const { return m_snapshot && !m_snapshotSaved; }
+    // Close, Esc, the window's button: asks first when the snapshot is not saved.
+    void reject() override;
 
 public Q_SLOTS:
     void takeSnapshot();
@@ -83,6 +88,7 @@ private:
     ValuesRestorer *m_restorer;
     ToolDialogFrame *m_frame;
     std::optional<MemorySnapshot> m_snapshot;
+    bool m_snapshotSaved = false;               // m_snapshot is in a file (saved or opened)
     std::vector<SnapshotValue> m_restoreValues; // what the confirmed restore writes
     bool m_comparing = false;
 

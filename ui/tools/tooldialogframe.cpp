@@ -6,6 +6,8 @@
 #include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QVBoxLayout>
 
 namespace Fatek {
@@ -71,6 +73,40 @@ bool ToolDialogFrame::messageIsError() const
 bool ToolDialogFrame::ask(const QString &title, const QString &question) const
 {
     return ToolConfirmation::ask(m_dialog, title, question, m_confirmer);
+}
+
+void ToolDialogFrame::setUnsaved(std::function<QString()> describe, std::function<bool()> save)
+{
+    m_describeUnsaved = std::move(describe);
+    m_saveUnsaved = std::move(save);
+}
+
+bool ToolDialogFrame::mayDiscard() const
+{
+    const QString what = m_describeUnsaved ? m_describeUnsaved() : QString();
+    if (what.isEmpty())
+        return true;
+    if (m_confirmer)
+        return m_confirmer(what);
+    // As an editor asks about an unsaved document: Save is the default, Esc keeps it.
+    QMessageBox box(QMessageBox::Warning, m_dialog->windowTitle(), what, QMessageBox::NoButton,
+                    m_dialog);
+    box.setObjectName(QStringLiteral("unsavedBox"));
+    box.setInformativeText(tr("Save it first? Discarded, it is lost."));
+    QPushButton *save = box.addButton(tr("&Save…"), QMessageBox::AcceptRole);
+    save->setObjectName(QStringLiteral("saveButton"));
+    QPushButton *discard = box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+    discard->setObjectName(QStringLiteral("discardButton"));
+    QPushButton *cancel = box.addButton(QMessageBox::Cancel);
+    cancel->setObjectName(QStringLiteral("cancelButton"));
+    box.setDefaultButton(save);
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() == discard)
+        return true;
+    if (box.clickedButton() == save)
+        return m_saveUnsaved && m_saveUnsaved();
+    return false;
 }
 
 QString ToolDialogFrame::chooseFile(const FileQuestion &question) const

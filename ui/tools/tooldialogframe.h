@@ -19,7 +19,8 @@ class MessageLine;
 // The frame every commissioning dialog shares (Loopback Test, Program Backup / Restore, Memory
 // Snapshot, I/O Checkout): the target line at the top, the message line and Close at the bottom,
 // the dialog's own controls between them (content()). Closing the dialog (Close, Esc, the
-// window's button) cancels its running job: nothing goes on behind the person's back. It holds
+// window's button) cancels its running job: nothing goes on behind the person's back; a dialog
+// that holds unsaved work asks first (setUnsaved, mayDiscard). It holds
 // the target, asks the dialog's questions and picks its files, each with an automatic answer for
 // tests so that no modal dialog blocks them.
 class ToolDialogFrame : public QObject
@@ -44,6 +45,7 @@ public:
     ToolDialogFrame(QDialog *dialog, int messageLines, const QString &messageName,
                     std::function<void()> cancel);
 
+    QDialog *dialog() const { return m_dialog; }
     // Where the dialog puts its own controls (between the target line and the message line).
     QVBoxLayout *content() const { return m_content; }
 
@@ -63,6 +65,16 @@ public:
     // Yes/No, default No (or the confirmer's answer).
     bool ask(const QString &title, const QString &question) const;
 
+    // What the dialog holds that is in no file yet, in a sentence ("The memory snapshot of 11,378
+    // values taken … is not saved."; empty: nothing), and how to save it (false: not saved).
+    void setUnsaved(std::function<QString()> describe, std::function<bool()> save);
+    // What the dialog holds may be dropped (closed, replaced, the main window quits): nothing is
+    // unsaved, or the person saved it or chose Discard; false: Cancel, keep it. The confirmer of
+    // the tests answers instead (true: discard).
+    bool mayDiscard() const;
+    // Whether the dialog holds something unsaved now.
+    bool hasUnsaved() const { return m_describeUnsaved && !m_describeUnsaved().isEmpty(); }
+
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
     // The file dialog (or the chooser's answer); empty: cancelled.
     QString chooseFile(const FileQuestion &question) const;
@@ -75,6 +87,8 @@ private:
     PlcTarget m_target;
     Confirmer m_confirmer;
     FileChooser m_chooser;
+    std::function<QString()> m_describeUnsaved;
+    std::function<bool()> m_saveUnsaved;
 };
 
 } // namespace Fatek
