@@ -1,5 +1,7 @@
 #include "alarmnorth.h"
 
+#include "core/protocol/logtext.h"
+
 #include "commandage.h"
 #include "core/alarm/alarmengine.h"
 #include "core/mqtt/mqttclient.h"
@@ -139,7 +141,8 @@ void AlarmNorth::onEvent(const AlarmEvent &event, const AlarmRecord &)
     case AlarmEventType::Unshelved:
         if (!event.user.isEmpty()) {
             Q_EMIT logEvent(msg<MsgId::GatewayLogAlarmAction>(
-                id, text(Alarms::eventName(event.type)), text(event.user), text(event.comment)));
+                id, text(Alarms::eventName(event.type)), text(event.user),
+                quotedFieldForLog(text(event.comment))));
             break;
         }
         [[fallthrough]]; // an unshelve at the shelve's expiry: nobody did it
@@ -226,7 +229,7 @@ void AlarmNorth::answer(const AlarmPayload::Reply &reply)
     if (!reply.ok)
         Q_EMIT logEvent(msg<MsgId::GatewayLogAlarmRefused>(
             text(reply.alarmId), text(GatewayTopics::alarmActionLevel(reply.action)),
-            text(reply.id), reply.error));
+            quotedFieldForLog(text(reply.id)), reply.error));
 }
 
 } // namespace Fatek
