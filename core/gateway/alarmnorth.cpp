@@ -1,12 +1,11 @@
 #include "alarmnorth.h"
 
-#include "core/protocol/logtext.h"
-
 #include "commandage.h"
 #include "core/alarm/alarmengine.h"
 #include "core/mqtt/mqttclient.h"
 #include "core/mqtt/mqttmessages.h"
 #include "core/plant/plantconnection.h" // AlarmEngine::plant()'s QPointer needs the whole type
+#include "core/protocol/logtext.h"
 #include "gatewaymessages.h"
 #include "gatewaypublisher.h"
 

@@ -431,8 +431,7 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
     if (r.problem)
         return fail(*r.problem);
     if (!GatewayTopics::isValidPrefix(config.prefix))
-        return fail(
-            msg<MsgId::GatewayConfigBadPrefix>(escapedForLog(config.prefix.toStdString())));
+        return fail(msg<MsgId::GatewayConfigBadPrefix>(escapedForLog(config.prefix.toStdString())));
     if (journalGiven && journal.trimmed().isEmpty())
         return fail(msg<MsgId::GatewayConfigEmptyFile>("alarmJournal"));
     config.alarmJournal

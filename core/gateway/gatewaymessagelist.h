@@ -98,7 +98,8 @@ FATEK_MSG(GatewayLogPlcLinkState, 1, QT_TRANSLATE_NOOP("Fatek::Message", "PLC li
 // reason, or for an item %2 its address and %3 the PLC's error).
 FATEK_MSG(GatewayLogStationSilent, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "station %1 does not answer: %2"))
-FATEK_MSG(GatewayLogStationDemoted, 2, QT_TRANSLATE_NOOP("Fatek::Message", "station %1 demoted: %2"))
+FATEK_MSG(GatewayLogStationDemoted, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "station %1 demoted: %2"))
 FATEK_MSG(GatewayLogStationAnswers, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "station %1 answers again"))
 FATEK_MSG(GatewayLogItemError, 3, QT_TRANSLATE_NOOP("Fatek::Message", "station %1 %2: %3"))

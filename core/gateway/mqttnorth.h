@@ -34,10 +34,10 @@ class PlantConnection;
 // Items are published (retained, QoS 0) when their words or quality change, and all again after
 // every broker (re)connect; an item that changes again before it went out goes once, newest state.
 // Good means read in the cycle that published it; when the PLC link goes down every item is
-// published stale with the reason. The status goes connecting -> up -> down (reason) -> up ... (down
-// also while the link is up and no station answers: StationActivity, which also logs what the
-// stations do); the
-// broker's will (offline) covers a gateway that dies, stop() publishes offline itself.
+// published stale with the reason. The status goes connecting -> up -> down (reason) -> up ...
+// (down also while the link is up and no station answers: StationActivity, which also logs what
+// the stations do); the broker's will (offline) covers a gateway that dies, stop() publishes
+// offline itself.
 class MqttNorth : public QObject, public PlantConsumer
 {
     Q_OBJECT

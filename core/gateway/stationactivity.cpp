@@ -10,7 +10,8 @@ namespace {
 
 bool noAnswer(const Message &error)
 {
-    return error.id == MsgId::SessionNoAnswerFromStation || error.id == MsgId::SessionNoAnswerWithin;
+    return error.id == MsgId::SessionNoAnswerFromStation
+           || error.id == MsgId::SessionNoAnswerWithin;
 }
 
 } // namespace
@@ -40,7 +41,8 @@ std::vector<Message> StationActivity::item(int station, const Address &address,
             s.reason = error;
         }
     }
-    const QString key = QString::number(station) + u'/' + QString::fromStdString(address.toString());
+    const QString key
+        = QString::number(station) + u'/' + QString::fromStdString(address.toString());
     const auto known = m_itemErrors.constFind(key);
     if (quality == ValueQuality::Error) {
         if (known == m_itemErrors.cend() || *known != error) {

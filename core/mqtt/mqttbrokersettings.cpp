@@ -74,9 +74,9 @@ Message MqttBrokerSettings::validate() const
     // certificate that the gateway is to show one; in clear text neither happens.
     if (!tls) {
         const std::pair<bool, const char *> tlsOnly[] = {{!caFile.isEmpty(), "caFile"},
-                                                          {!certFile.isEmpty(), "certFile"},
-                                                          {!keyFile.isEmpty(), "keyFile"},
-                                                          {tlsInsecure, "tlsInsecure"}};
+                                                         {!certFile.isEmpty(), "certFile"},
+                                                         {!keyFile.isEmpty(), "keyFile"},
+                                                         {tlsInsecure, "tlsInsecure"}};
         for (const auto &[given, key] : tlsOnly) {
             if (given)
                 return msg<MsgId::MqttTlsWithoutTls>(key);

@@ -26,8 +26,8 @@ std::uint32_t bidiControlAt(std::string_view utf8, std::size_t i)
     if (at(0) != 0xE2)
         return 0;
     const std::uint32_t code = 0x2000U | ((at(1) & 0x3FU) << 6) | (at(2) & 0x3FU);
-    const bool bidi = (at(1) == 0x80 && (code == 0x200E || code == 0x200F
-                                         || (code >= 0x202A && code <= 0x202E)))
+    const bool bidi = (at(1) == 0x80
+                       && (code == 0x200E || code == 0x200F || (code >= 0x202A && code <= 0x202E)))
                       || (at(1) == 0x81 && code >= 0x2066 && code <= 0x2069);
     return bidi && (at(2) & 0xC0U) == 0x80 ? code : 0;
 }
@@ -66,7 +66,7 @@ std::string escapedForLog(std::string_view utf8)
         } else if (const std::uint32_t bidi = bidiControlAt(utf8, i); bidi != 0) {
             out += "\\u";
             appendHex(out, bidi, 4);
-            i += bidi == 0x061C ? 1 : 2;
+            i += bidi == 0x061C ? std::size_t{1} : std::size_t{2};
         } else {
             out += static_cast<char>(c);
         }

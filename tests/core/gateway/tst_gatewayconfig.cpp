@@ -213,12 +213,14 @@ void TestGatewayConfig::errors_data()
                              << "Configuration version 2 is not supported (this program reads "
                                 "version 1).";
     QTest::newRow("no version") << QVariantList{"version"} << absent << "\"version\" is missing.";
-    QTest::newRow("prefix") << QVariantList{"prefix"} << QJsonValue("a/+/b")
-                            << "\"a/+/b\" is not a usable topic prefix: levels separated by '/', "
-                               "none empty, without '+', '#' or a NUL character, not starting with '$'.";
+    QTest::newRow("prefix")
+        << QVariantList{"prefix"} << QJsonValue("a/+/b")
+        << "\"a/+/b\" is not a usable topic prefix: levels separated by '/', "
+           "none empty, without '+', '#' or a NUL character, not starting with '$'.";
     // Issue 55: a NUL cut every topic at the broker (the gateway took its own values for
     // commands), a '$' prefix is the broker's and everything published there was dropped.
-    QTest::newRow("prefix NUL") << QVariantList{"prefix"} << QJsonValue(QStringLiteral("pl\u0000ant"))
+    QTest::newRow("prefix NUL") << QVariantList{"prefix"}
+                                << QJsonValue(QStringLiteral("pl\u0000ant"))
                                 << "\"pl\\x00ant\" is not a usable topic prefix: levels separated "
                                    "by '/', none empty, without '+', '#' or a NUL character, not "
                                    "starting with '$'.";
@@ -298,8 +300,8 @@ void TestGatewayConfig::errors_data()
         << QVariantList{"connections", 1, "link"} << QJsonValue("serial:///dev/ttyUSB0?station=2")
         << "connection 2 (line2): link: Link \"serial:///dev/ttyUSB0?station=2\": no setting "
            "\"station\" (this link takes baud, format, flow, protocol, timeout, retries).";
-    QTest::newRow("keepalive huge") << QVariantList{"broker", "keepAliveSec"} << QJsonValue(1e300)
-                                    << "broker: keepAliveSec 1";
+    QTest::newRow("keepalive huge")
+        << QVariantList{"broker", "keepAliveSec"} << QJsonValue(1e300) << "broker: keepAliveSec 1";
     QTest::newRow("serial format type")
         << QVariantList{"connections", 1, "link", "format"} << QJsonValue(5)
         << "connection 2 (line2): link: \"format\" must be a string.";
@@ -310,6 +312,12 @@ void TestGatewayConfig::errors_data()
     QTest::newRow("url host syntax")
         << QVariantList{"connections", 0, "link"} << QJsonValue("tcp://plc_1..local")
         << "connection 1 (line1): link: \"plc_1..local\" is not a host";
+    // Issue 55, item 6: both would be Home Assistant's device plant_fatek_line_1, one
+    // connection's entities lost.
+    QTest::newRow("discovery ids collide")
+        << QVariantList{"connections", 1, "name"} << QJsonValue("line_1")
+        << "connection 2 (line_1): connections \"line.1\" and \"line_1\" would get the same Home "
+           "Assistant id \"plant_fatek_line_1\"";
     QTest::newRow("ca without tls")
         << QVariantList{"broker", "caFile"} << QJsonValue("line1.json")
         << "broker: caFile is a TLS setting, but the broker URL is mqtt:// (clear text): write "
@@ -382,6 +390,10 @@ void TestGatewayConfig::errors()
     QJsonObject json = validConfig();
     if (QTest::currentDataTag() == QByteArray("password twice"))
         json = replaced(json, {"broker", "password"}, QJsonValue("x")).toObject();
+    if (QTest::currentDataTag() == QByteArray("discovery ids collide")) {
+        json = replaced(json, {"homeAssistant", "discovery"}, QJsonValue(true)).toObject();
+        json = replaced(json, {"connections", 0, "name"}, QJsonValue("line.1")).toObject();
+    }
     json = replaced(json, path, value).toObject();
     const Result<GatewayConfig> config
         = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());

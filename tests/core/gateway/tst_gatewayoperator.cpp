@@ -26,6 +26,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <csignal>
 #include <memory>
 
@@ -85,7 +86,7 @@ private:
     QByteArray config(const QJsonArray &items, int keepAliveSec = 30) const;
     bool startLink(const QJsonArray &items);
     std::unique_ptr<MqttClient> subscriber(Retained *retained, const QString &clientId = {});
-    qsizetype logCount(const QString &text) const;
+    int logCount(const QString &text) const;
 
     std::unique_ptr<QTemporaryDir> m_dir;
     std::unique_ptr<SimulatedPlc> m_plc;
@@ -123,13 +124,13 @@ QByteArray TestGatewayOperator::config(const QJsonArray &items, int keepAliveSec
     QFile list(m_dir->filePath(QStringLiteral("op.json")));
     if (!list.open(QIODevice::WriteOnly | QIODevice::Truncate))
         return {};
-    list.write(QJsonDocument(QJsonObject{{QStringLiteral("format"), "fatek-studio-watchlist"},
-                                         {QStringLiteral("version"), 1},
-                                         {QStringLiteral("tables"),
-                                          QJsonArray{QJsonObject{
-                                              {QStringLiteral("intervalMs"), 100},
-                                              {QStringLiteral("items"), items}}}}})
-                   .toJson());
+    list.write(
+        QJsonDocument(QJsonObject{{QStringLiteral("format"), "fatek-studio-watchlist"},
+                                  {QStringLiteral("version"), 1},
+                                  {QStringLiteral("tables"),
+                                   QJsonArray{QJsonObject{{QStringLiteral("intervalMs"), 100},
+                                                          {QStringLiteral("items"), items}}}}})
+            .toJson());
     list.close();
     const QJsonObject link{{QStringLiteral("host"), "127.0.0.1"},
                            {QStringLiteral("port"), m_server->tcpPort()},
@@ -141,13 +142,12 @@ QByteArray TestGatewayOperator::config(const QJsonArray &items, int keepAliveSec
                                  {QStringLiteral("watchLists"),
                                   QJsonArray{QJsonObject{{QStringLiteral("file"), "op.json"}}}},
                                  {QStringLiteral("allow"), QJsonArray{"R100..R199"}}};
-    return QJsonDocument(
-               QJsonObject{{QStringLiteral("format"), "fatek-gateway"},
-                           {QStringLiteral("version"), 1},
-                           {QStringLiteral("broker"),
-                            QJsonObject{{QStringLiteral("url"), m_broker->url()},
-                                        {QStringLiteral("keepAliveSec"), keepAliveSec}}},
-                           {QStringLiteral("connections"), QJsonArray{connection}}})
+    return QJsonDocument(QJsonObject{{QStringLiteral("format"), "fatek-gateway"},
+                                     {QStringLiteral("version"), 1},
+                                     {QStringLiteral("broker"),
+                                      QJsonObject{{QStringLiteral("url"), m_broker->url()},
+                                                  {QStringLiteral("keepAliveSec"), keepAliveSec}}},
+                                     {QStringLiteral("connections"), QJsonArray{connection}}})
         .toJson();
 }
 
@@ -191,10 +191,11 @@ std::unique_ptr<MqttClient> TestGatewayOperator::subscriber(Retained *retained,
     return client;
 }
 
-qsizetype TestGatewayOperator::logCount(const QString &text) const
+int TestGatewayOperator::logCount(const QString &text) const
 {
-    return std::count_if(m_log.cbegin(), m_log.cend(),
-                         [&text](const QString &line) { return line.contains(text); });
+    return static_cast<int>(
+        std::count_if(m_log.cbegin(), m_log.cend(),
+                      [&text](const QString &line) { return line.contains(text); }));
 }
 
 // Issue 55, item 4: a 13 s SIGSTOP of the PLC left the log silent and the status "up"; R9999's
@@ -241,14 +242,15 @@ void TestGatewayOperator::stationsAndPlcErrorsAreLogged()
 // the link itself then dropped.
 void TestGatewayOperator::demotedItemsTakeTheLinksReason()
 {
-    QVERIFY(startLink({QJsonObject{{QStringLiteral("address"), "R100"}},
-                       QJsonObject{{QStringLiteral("address"), "R0"}, {QStringLiteral("station"), 7}}}));
+    QVERIFY(startLink(
+        {QJsonObject{{QStringLiteral("address"), "R100"}},
+         QJsonObject{{QStringLiteral("address"), "R0"}, {QStringLiteral("station"), 7}}}));
     Retained retained;
     const std::unique_ptr<MqttClient> client = subscriber(&retained);
     QVERIFY(client);
-    QTRY_VERIFY_WITH_TIMEOUT(retained.item("R0", 7)
-                                 && retained.item("R0", 7)->error.id == MsgId::SessionStationDemoted,
-                             Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        retained.item("R0", 7) && retained.item("R0", 7)->error.id == MsgId::SessionStationDemoted,
+        Wait);
     m_server->close(); // the PLC link goes down
     QTRY_COMPARE_WITH_TIMEOUT(retained.status()->state, LinkStatus::Down, Wait);
     const Message linkReason = retained.status()->reason;
@@ -264,7 +266,11 @@ void TestGatewayOperator::logFieldsCannotBeForged()
     QCOMPARE(quotedFieldForLog(R"(1" (id "admin"): written)"),
              std::string(R"(1\" (id \"admin\"): written)"));
     QCOMPARE(quotedFieldForLog(R"(C:\plc)"), std::string(R"(C:\\plc)"));
-    QCOMPARE(escapedForLog("a\xe2\x80\xae" "b\xe2\x81\xa6" "c\xe2\x80\x8f" "d\xd8\x9c" "e"),
+    QCOMPARE(escapedForLog("a\xe2\x80\xae"
+                           "b\xe2\x81\xa6"
+                           "c\xe2\x80\x8f"
+                           "d\xd8\x9c"
+                           "e"),
              std::string("a\\u202eb\\u2066c\\u200fd\\u061ce"));
     // Other text of the same blocks stays: an en dash, a bullet, Arabic letters.
     QCOMPARE(escapedForLog("\xe2\x80\x93\xe2\x80\xa2\xd8\xa8"),
@@ -274,8 +280,7 @@ void TestGatewayOperator::logFieldsCannotBeForged()
     Retained retained;
     const std::unique_ptr<MqttClient> client = subscriber(&retained);
     QVERIFY(client);
-    QTRY_VERIFY_WITH_TIMEOUT(retained.status() && retained.status()->state == LinkStatus::Up,
-                             Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(retained.status() && retained.status()->state == LinkStatus::Up, Wait);
     const QString set = QStringLiteral("fatek/op/1/R100/set");
     QVERIFY(client->publish(set, "1\" (id \"admin\"): written \xe2\x80\xae", 1, false));
     QTRY_COMPARE_WITH_TIMEOUT(logCount(QStringLiteral("write station 1 R100")), 1, Wait);
@@ -293,12 +298,11 @@ void TestGatewayOperator::commandsAreLoggedAsAnswered()
     Retained retained;
     const std::unique_ptr<MqttClient> client = subscriber(&retained);
     QVERIFY(client);
-    QTRY_VERIFY_WITH_TIMEOUT(retained.status() && retained.status()->state == LinkStatus::Up,
-                             Wait);
-    QVERIFY(client->publish(QStringLiteral("fatek/op/1/R100/set"),
-                            R"({"words":[70000],"id":"w1"})", 1, false));
-    QVERIFY(client->publish(QStringLiteral("fatek/op/1/R99999/set"), R"({"value":"1","id":"n"})",
+    QTRY_VERIFY_WITH_TIMEOUT(retained.status() && retained.status()->state == LinkStatus::Up, Wait);
+    QVERIFY(client->publish(QStringLiteral("fatek/op/1/R100/set"), R"({"words":[70000],"id":"w1"})",
                             1, false));
+    QVERIFY(client->publish(QStringLiteral("fatek/op/1/R99999/set"), R"({"value":"1","id":"n"})", 1,
+                            false));
     QTRY_COMPARE_WITH_TIMEOUT(logCount(QStringLiteral("(id \"w1\")")), 1, Wait);
     QVERIFY2(logCount(QStringLiteral("write station 1 R100 = \"[70000]\" (id \"w1\"): ")) == 1,
              qPrintable(m_log.join(u'\n')));
@@ -368,8 +372,7 @@ void TestGatewayOperator::willCarriesItsTime()
     QProcess gateway;
     TestUtil::startConsoleProgram(&gateway, QStringLiteral(FATEK_GATEWAY_PATH), {path});
     QVERIFY(gateway.waitForStarted(Wait));
-    QTRY_VERIFY_WITH_TIMEOUT(retained.status() && retained.status()->state == LinkStatus::Up,
-                             Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(retained.status() && retained.status()->state == LinkStatus::Up, Wait);
     const QDateTime beforeConnect = QDateTime::currentDateTimeUtc().addSecs(-60);
     gateway.kill(); // no goodbye: the broker publishes the will at 1.5 x keep-alive
     QVERIFY(gateway.waitForFinished(Wait));
@@ -436,8 +439,7 @@ void TestGatewayOperator::tlsFilesRefusedAlike()
     QProcess running;
     TestUtil::startConsoleProgram(&running, QStringLiteral(FATEK_GATEWAY_PATH), {path});
     QVERIFY(running.waitForStarted(Wait));
-    QTRY_VERIFY_WITH_TIMEOUT(retained.status() && retained.status()->state == LinkStatus::Up,
-                             Wait);
+    QTRY_VERIFY_WITH_TIMEOUT(retained.status() && retained.status()->state == LinkStatus::Up, Wait);
     QString log;
     for (const auto &c : cases) {
         QVERIFY(writeConfig(withBroker(c.broker)));

@@ -236,10 +236,12 @@ void TestMqtt::tlsFailuresSayWhich_data()
     QTest::newRow("wrong CA") << false << ip << false
                               << QStringLiteral("certificate verify failed: unable to get local "
                                                 "issuer certificate");
-    QTest::newRow("host mismatch") << true << QStringLiteral("localhost") << false
-                                   << QStringLiteral("certificate verify failed: hostname mismatch");
+    QTest::newRow("host mismatch")
+        << true << QStringLiteral("localhost") << false
+        << QStringLiteral("certificate verify failed: hostname mismatch");
     QTest::newRow("expired") << true << ip << true
-                             << QStringLiteral("certificate verify failed: certificate has expired");
+                             << QStringLiteral(
+                                    "certificate verify failed: certificate has expired");
 }
 
 // Issue 33 (major 3): a failed TLS connection is reported at once, every attempt, naming the check
@@ -266,8 +268,7 @@ void TestMqtt::tlsFailuresSayWhich()
         sign.setProcessChannelMode(QProcess::MergedChannels);
         sign.start(QStringLiteral("openssl"),
                    {"x509", "-req", "-in", "server.csr", "-CA", "ca.crt", "-CAkey", "ca.key",
-                    "-CAcreateserial", "-out", "server.crt", "-days", "-1", "-extfile",
-                    "ext.cnf"});
+                    "-CAcreateserial", "-out", "server.crt", "-days", "-1", "-extfile", "ext.cnf"});
         QVERIFY2(sign.waitForFinished(30000) && sign.exitCode() == 0, sign.readAll().constData());
         QVERIFY2(broker.start(&error, QStringLiteral("cafile %1\ncertfile %2\nkeyfile %3\n")
                                           .arg(dir.filePath(QStringLiteral("ca.crt")),
