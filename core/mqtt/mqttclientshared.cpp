@@ -1,9 +1,8 @@
 #include "mqttclientshared.h"
 
-#include "mqtttls.h"
-
 #include "mqttmessages.h"
 #include "mqttpacket.h"
+#include "mqtttls.h"
 
 #include <QMetaObject>
 #include <QRandomGenerator>
