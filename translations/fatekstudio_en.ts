@@ -1972,6 +1972,10 @@
             <translation>The broker %1 closed the connection right after accepting it, %2 times in a row: another client with the same client id &quot;%3&quot; took over (a second gateway with this configuration?); trying again less often.</translation>
         </message>
         <message>
+            <source>&quot;%1&quot; must be a string.</source>
+            <translation>&quot;%1&quot; must be a string.</translation>
+        </message>
+        <message>
             <source>Cannot read the TLS file %1.</source>
             <translation>Cannot read the TLS file %1.</translation>
         </message>

@@ -1969,6 +1969,10 @@
             <translation>代理伺服器 %1 在接受連線後隨即關閉，連續 %2 次：另一個使用相同用戶端識別碼「%3」的用戶端接手了（是否有第二個使用此設定的閘道器？）；將降低重試頻率。</translation>
         </message>
         <message>
+            <source>&quot;%1&quot; must be a string.</source>
+            <translation>「%1」必須是字串。</translation>
+        </message>
+        <message>
             <source>Cannot read the TLS file %1.</source>
             <translation>無法讀取 TLS 檔案 %1。</translation>
         </message>

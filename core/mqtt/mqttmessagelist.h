@@ -84,6 +84,8 @@ FATEK_MSG(GatewaySetBadFormat, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a value format."))
 // A boolean key with another value ("swapWords":"yes"): refused, never read as false. %1 the
 // key, %2 and %3 the values it takes (typed as they are, so arguments).
+// A text key with another value ("format":5): %1 the key.
+FATEK_MSG(GatewaySetNotString, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be a string."))
 FATEK_MSG(GatewaySetNotBool, 3, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2 or %3."))
 FATEK_MSG(GatewaySetBadWords, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",

@@ -80,6 +80,7 @@ private Q_SLOTS:
     void duplicateClientIdIsNamedAndBackedOff();
     void willCarriesItsTime();
     void tlsFilesRefusedAlike();
+    void setCommandKeyTypes();
 
 private:
     // A configuration of one connection "op" on the simulator with `items` (watch list items).
@@ -463,6 +464,18 @@ void TestGatewayOperator::tlsFilesRefusedAlike()
     QCOMPARE(retained.status()->state, LinkStatus::Up); // the running one kept running
     TestUtil::stopConsoleProgram(&running);
     QVERIFY(running.waitForFinished(Wait));
+}
+
+// Issue 55, item 9: {"value":"1","format":5} was refused as '"" is not a value format'.
+void TestGatewayOperator::setCommandKeyTypes()
+{
+    Message error;
+    QVERIFY(!GatewayPayload::decodeSet(R"({"value":"1","format":5})", &error));
+    QCOMPARE(QString::fromStdString(english(error)),
+             QStringLiteral("\"format\" must be a string."));
+    QVERIFY(!GatewayPayload::decodeSet(R"({"value":"1","time":5})", &error));
+    QCOMPARE(QString::fromStdString(english(error)), QStringLiteral("\"time\" must be a string."));
+    QVERIFY(GatewayPayload::decodeSet(R"({"value":"1","format":"hex"})", &error));
 }
 
 QTEST_GUILESS_MAIN(TestGatewayOperator)
