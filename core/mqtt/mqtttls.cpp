@@ -18,16 +18,14 @@ namespace Fatek::MqttTls {
 #ifndef _WIN32
 namespace {
 
-// OpenSSL's reason for the last failure ("no certificate or crl found", "key values mismatch").
+// OpenSSL's reason for the failure ("bad base64 decode", "no certificate or crl found", "key
+// values mismatch"): the first in its queue, the cause (the later ones are the callers giving up,
+// "PEM lib").
 std::string lastError()
 {
-    unsigned long code = 0;
-    unsigned long last = 0;
-    while ((code = ERR_get_error()) != 0)
-        last = code;
-    if (last == 0)
-        return "not readable as PEM";
-    const char *reason = ERR_reason_error_string(last);
+    const unsigned long first = ERR_get_error();
+    ERR_clear_error();
+    const char *reason = first != 0 ? ERR_reason_error_string(first) : nullptr;
     return reason ? reason : "not readable as PEM";
 }
 
@@ -81,7 +79,8 @@ std::string verifyFailure(struct mosquitto *mosq)
     if (!ssl)
         return {};
     const long result = SSL_get_verify_result(ssl);
-    if (result == X509_V_OK)
+    // Unspecified: libmosquitto's own check refused it (the host name), and said so itself.
+    if (result == X509_V_OK || result == X509_V_ERR_UNSPECIFIED)
         return {};
     return X509_verify_cert_error_string(result);
 #endif

@@ -294,11 +294,11 @@ void TestGatewayConfig::errors_data()
     // so by --check, a start and a reload alike.
     QTest::newRow("url unknown setting")
         << QVariantList{"connections", 0, "link"} << QJsonValue("tcp://10.0.0.5?colour=red")
-        << "connection 1 (line1): link: Link \"tcp://10.0.0.5?colour=red\": no setting "
+        << "connection 1 (line1): link: link \"tcp://10.0.0.5?colour=red\": no setting "
            "\"colour\" (this link takes protocol, timeout, retries).";
     QTest::newRow("url station")
         << QVariantList{"connections", 1, "link"} << QJsonValue("serial:///dev/ttyUSB0?station=2")
-        << "connection 2 (line2): link: Link \"serial:///dev/ttyUSB0?station=2\": no setting "
+        << "connection 2 (line2): link: link \"serial:///dev/ttyUSB0?station=2\": no setting "
            "\"station\" (this link takes baud, format, flow, protocol, timeout, retries).";
     QTest::newRow("keepalive huge")
         << QVariantList{"broker", "keepAliveSec"} << QJsonValue(1e300) << "broker: keepAliveSec 1";

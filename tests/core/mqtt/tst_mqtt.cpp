@@ -234,11 +234,12 @@ void TestMqtt::tlsFailuresSayWhich_data()
         << QStringLiteral("certificate required|may require a client certificate");
     // Issue 55: each failed check named, not "certificate verify failed" alone.
     QTest::newRow("wrong CA") << false << ip << false
-                              << QStringLiteral("certificate verify failed: unable to get local "
-                                                "issuer certificate");
-    QTest::newRow("host mismatch")
-        << true << QStringLiteral("localhost") << false
-        << QStringLiteral("certificate verify failed: hostname mismatch");
+                              << QStringLiteral("certificate verify failed: (self-signed "
+                                                "certificate in certificate chain|unable to get "
+                                                "local issuer certificate)");
+    // (libmosquitto names this one itself.)
+    QTest::newRow("host mismatch") << true << QStringLiteral("localhost") << false
+                                   << QStringLiteral("host name verification failed");
     QTest::newRow("expired") << true << ip << true
                              << QStringLiteral(
                                     "certificate verify failed: certificate has expired");
