@@ -1980,6 +1980,66 @@
             <translation>&quot;%1&quot; is not a broker address: write mqtt://host:1883 or mqtts://user@host:8883.</translation>
         </message>
         <message>
+            <source>refused a command on &quot;%1&quot;: %2</source>
+            <translation>refused a command on &quot;%1&quot;: %2</translation>
+        </message>
+        <message>
+            <source>station %1 does not answer: %2</source>
+            <translation>station %1 does not answer: %2</translation>
+        </message>
+        <message>
+            <source>station %1 demoted: %2</source>
+            <translation>station %1 demoted: %2</translation>
+        </message>
+        <message>
+            <source>station %1 answers again</source>
+            <translation>station %1 answers again</translation>
+        </message>
+        <message>
+            <source>station %1 %2: %3</source>
+            <translation>station %1 %2: %3</translation>
+        </message>
+        <message>
+            <source>station %1 %2 read again</source>
+            <translation>station %1 %2 read again</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a host: write an IP address (192.168.1.5) or a host name (letters, digits, &apos;-&apos; and &apos;.&apos;).</source>
+            <translation>&quot;%1&quot; is not a host: write an IP address (192.168.1.5) or a host name (letters, digits, &apos;-&apos; and &apos;.&apos;).</translation>
+        </message>
+        <message>
+            <source>Connections &quot;%1&quot; and &quot;%2&quot; would get the same Home Assistant id &quot;%3&quot; (characters other than letters, digits, &apos;-&apos; and &apos;_&apos; become &apos;_&apos;): rename one.</source>
+            <translation>Connections &quot;%1&quot; and &quot;%2&quot; would get the same Home Assistant id &quot;%3&quot; (characters other than letters, digits, &apos;-&apos; and &apos;_&apos; become &apos;_&apos;): rename one.</translation>
+        </message>
+        <message>
+            <source>%1 is a TLS setting, but the broker URL is mqtt:// (clear text): write mqtts://, or remove %1.</source>
+            <translation>%1 is a TLS setting, but the broker URL is mqtt:// (clear text): write mqtts://, or remove %1.</translation>
+        </message>
+        <message>
+            <source>The CA file %1 holds no usable certificate: %2.</source>
+            <translation>The CA file %1 holds no usable certificate: %2.</translation>
+        </message>
+        <message>
+            <source>The certificate file %1 is not usable: %2.</source>
+            <translation>The certificate file %1 is not usable: %2.</translation>
+        </message>
+        <message>
+            <source>The key file %1 is not usable: %2.</source>
+            <translation>The key file %1 is not usable: %2.</translation>
+        </message>
+        <message>
+            <source>The key file %1 is not the key of the certificate %2.</source>
+            <translation>The key file %1 is not the key of the certificate %2.</translation>
+        </message>
+        <message>
+            <source>The broker %1 closed the connection right after accepting it, %2 times in a row: another client with the same client id &quot;%3&quot; took over (a second gateway with this configuration?); trying again less often.</source>
+            <translation>The broker %1 closed the connection right after accepting it, %2 times in a row: another client with the same client id &quot;%3&quot; took over (a second gateway with this configuration?); trying again less often.</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be a string.</source>
+            <translation>&quot;%1&quot; must be a string.</translation>
+        </message>
+        <message>
             <source>Cannot read the TLS file %1.</source>
             <translation>Cannot read the TLS file %1.</translation>
         </message>
@@ -2188,8 +2248,8 @@
             <translation>The connection name &quot;%1&quot; is used twice.</translation>
         </message>
         <message>
-            <source>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos; or &apos;#&apos;.</source>
-            <translation>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos; or &apos;#&apos;.</translation>
+            <source>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos;, &apos;#&apos; or a NUL character, not starting with &apos;$&apos;.</source>
+            <translation>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos;, &apos;#&apos; or a NUL character, not starting with &apos;$&apos;.</translation>
         </message>
         <message>
             <source>&quot;%1&quot; is not a link kind: write %2, %3 or %4.</source>

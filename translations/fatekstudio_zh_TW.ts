@@ -1977,6 +1977,66 @@
             <translation>「%1」不是代理伺服器位址：請寫成 mqtt://host:1883 或 mqtts://user@host:8883。</translation>
         </message>
         <message>
+            <source>refused a command on &quot;%1&quot;: %2</source>
+            <translation>拒絕主題「%1」上的命令：%2</translation>
+        </message>
+        <message>
+            <source>station %1 does not answer: %2</source>
+            <translation>站號 %1 沒有回應：%2</translation>
+        </message>
+        <message>
+            <source>station %1 demoted: %2</source>
+            <translation>站號 %1 已降級：%2</translation>
+        </message>
+        <message>
+            <source>station %1 answers again</source>
+            <translation>站號 %1 恢復回應</translation>
+        </message>
+        <message>
+            <source>station %1 %2: %3</source>
+            <translation>站號 %1 %2：%3</translation>
+        </message>
+        <message>
+            <source>station %1 %2 read again</source>
+            <translation>站號 %1 %2 恢復讀取</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; is not a host: write an IP address (192.168.1.5) or a host name (letters, digits, &apos;-&apos; and &apos;.&apos;).</source>
+            <translation>「%1」不是主機：請寫 IP 位址（192.168.1.5）或主機名稱（字母、數字、&apos;-&apos; 與 &apos;.&apos;）。</translation>
+        </message>
+        <message>
+            <source>Connections &quot;%1&quot; and &quot;%2&quot; would get the same Home Assistant id &quot;%3&quot; (characters other than letters, digits, &apos;-&apos; and &apos;_&apos; become &apos;_&apos;): rename one.</source>
+            <translation>連線「%1」與「%2」會得到相同的 Home Assistant 識別碼「%3」（字母、數字、&apos;-&apos; 與 &apos;_&apos; 以外的字元都變成 &apos;_&apos;）：請將其中一個改名。</translation>
+        </message>
+        <message>
+            <source>%1 is a TLS setting, but the broker URL is mqtt:// (clear text): write mqtts://, or remove %1.</source>
+            <translation>%1 是 TLS 設定，但代理伺服器網址是 mqtt://（明文）：請寫 mqtts://，或移除 %1。</translation>
+        </message>
+        <message>
+            <source>The CA file %1 holds no usable certificate: %2.</source>
+            <translation>CA 檔案 %1 沒有可用的憑證：%2。</translation>
+        </message>
+        <message>
+            <source>The certificate file %1 is not usable: %2.</source>
+            <translation>憑證檔案 %1 無法使用：%2。</translation>
+        </message>
+        <message>
+            <source>The key file %1 is not usable: %2.</source>
+            <translation>金鑰檔案 %1 無法使用：%2。</translation>
+        </message>
+        <message>
+            <source>The key file %1 is not the key of the certificate %2.</source>
+            <translation>金鑰檔案 %1 不是憑證 %2 的金鑰。</translation>
+        </message>
+        <message>
+            <source>The broker %1 closed the connection right after accepting it, %2 times in a row: another client with the same client id &quot;%3&quot; took over (a second gateway with this configuration?); trying again less often.</source>
+            <translation>代理伺服器 %1 在接受連線後隨即關閉，連續 %2 次：另一個使用相同用戶端識別碼「%3」的用戶端接手了（是否有第二個使用此設定的閘道器？）；將降低重試頻率。</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; must be a string.</source>
+            <translation>「%1」必須是字串。</translation>
+        </message>
+        <message>
             <source>Cannot read the TLS file %1.</source>
             <translation>無法讀取 TLS 檔案 %1。</translation>
         </message>
@@ -2185,8 +2245,8 @@
             <translation>連線名稱 &quot;%1&quot; 重複使用。</translation>
         </message>
         <message>
-            <source>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos; or &apos;#&apos;.</source>
-            <translation>&quot;%1&quot; 不是可用的主題前綴：以 &apos;/&apos; 分隔層級，不可為空，不可含 &apos;+&apos; 或 &apos;#&apos;。</translation>
+            <source>&quot;%1&quot; is not a usable topic prefix: levels separated by &apos;/&apos;, none empty, without &apos;+&apos;, &apos;#&apos; or a NUL character, not starting with &apos;$&apos;.</source>
+            <translation>&quot;%1&quot; 不是可用的主題前綴：以 &apos;/&apos; 分隔層級，不可為空，不可含 &apos;+&apos;、&apos;#&apos; 或 NUL 字元，不可以 &apos;$&apos; 開頭。</translation>
         </message>
         <message>
             <source>&quot;%1&quot; is not a link kind: write %2, %3 or %4.</source>

@@ -5,6 +5,7 @@
 #include "core/mqtt/mqttclient.h"
 #include "core/mqtt/mqttmessages.h"
 #include "core/plant/plantconnection.h" // AlarmEngine::plant()'s QPointer needs the whole type
+#include "core/protocol/logtext.h"
 #include "gatewaymessages.h"
 #include "gatewaypublisher.h"
 
@@ -139,7 +140,8 @@ void AlarmNorth::onEvent(const AlarmEvent &event, const AlarmRecord &)
     case AlarmEventType::Unshelved:
         if (!event.user.isEmpty()) {
             Q_EMIT logEvent(msg<MsgId::GatewayLogAlarmAction>(
-                id, text(Alarms::eventName(event.type)), text(event.user), text(event.comment)));
+                id, text(Alarms::eventName(event.type)), text(event.user),
+                quotedFieldForLog(text(event.comment))));
             break;
         }
         [[fallthrough]]; // an unshelve at the shelve's expiry: nobody did it
@@ -226,7 +228,7 @@ void AlarmNorth::answer(const AlarmPayload::Reply &reply)
     if (!reply.ok)
         Q_EMIT logEvent(msg<MsgId::GatewayLogAlarmRefused>(
             text(reply.alarmId), text(GatewayTopics::alarmActionLevel(reply.action)),
-            text(reply.id), reply.error));
+            quotedFieldForLog(text(reply.id)), reply.error));
 }
 
 } // namespace Fatek

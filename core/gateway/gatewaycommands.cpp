@@ -42,8 +42,10 @@ void GatewayCommands::answer(const GatewayPayload::Reply &reply)
     m_publisher->publishReply(
         GatewayTopics::itemReply(m_prefix, m_config.name, reply.station, reply.address),
         GatewayPayload::encodeReply(reply));
+    // The sender's value and id between quotes: their own quotes escaped (issue 55).
     Q_EMIT logEvent(msg<MsgId::GatewayLogWrite>(
-        reply.station, reply.address.toString(), reply.value.toStdString(), reply.id.toStdString(),
+        reply.station, reply.address.toString(), quotedFieldForLog(reply.value.toStdString()),
+        quotedFieldForLog(reply.id.toStdString()),
         reply.ok && reply.error.empty() ? msg<MsgId::GatewayWriteDone>() : reply.error));
 }
 
@@ -82,6 +84,10 @@ bool GatewayCommands::refuseBadTopic(const QString &topic)
         reply.time = QDateTime::currentDateTimeUtc();
         m_publisher->publishReply(topic.left(topic.size() - 3) + QStringLiteral("reply"),
                                   GatewayPayload::encodeReply(reply));
+        // Logged as what its sender was told: refused, and why.
+        Q_EMIT logEvent(msg<MsgId::GatewayLogBadTopicRefused>(
+            quotedFieldForLog(topic.toStdString()), reply.error));
+        return true;
     }
     // Anything else has nowhere to be answered: only counted and logged.
     Q_EMIT logEvent(msg<MsgId::GatewayWriteBadTopic>(topic.toStdString()));
@@ -144,6 +150,14 @@ void GatewayCommands::onCommand(const QString &topic, const QByteArray &payload,
     if (command) {
         reply.id = command->id;
         reply.value = command->value;
+        // A words command's value is its words as sent ([0,16712]) until they are converted:
+        // its refusals show them (issue 55: they were logged as "").
+        if (command->words) {
+            QStringList words;
+            for (const std::uint32_t word : *command->words)
+                words << QString::number(word);
+            reply.value = u'[' + words.join(u',') + u']';
+        }
     }
     if (retained)
         return refuse(reply, msg<MsgId::GatewayWriteRetained>());

@@ -1,18 +1,23 @@
 #include "gatewayconfig.h"
 
 #include "core/mqtt/gatewaytopics.h"
+#include "core/protocol/logtext.h"
 #include "core/watch/jsonkeys.h"
 #include "gatewayconfigreader.h"
 #include "gatewayhistoryconfig.h"
 #include "gatewaymessages.h"
+#include "homeassistantdiscovery.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
+#include <QHostAddress>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSet>
+#include <QUrl>
 
 #include <algorithm>
 #include <cmath>
@@ -82,8 +87,41 @@ Problem readHomeAssistant(const QJsonObject &json, GatewayConfig::HomeAssistant 
     if (r.problem)
         return r.problem;
     if (!GatewayTopics::isValidPrefix(out->prefix))
-        return msg<MsgId::GatewayConfigBadPrefix>(out->prefix.toStdString());
+        return msg<MsgId::GatewayConfigBadPrefix>(escapedForLog(out->prefix.toStdString()));
     return std::nullopt;
+}
+
+// A host as a start would look it up: an IP address, or a DNS name of labels of letters,
+// digits, '-' (and '_', which local names have), none empty or longer than 63 (issue 55: "not a
+// host!" passed --check and the link retried for ever).
+bool isHostSyntax(const QString &host)
+{
+    if (QHostAddress address; address.setAddress(host))
+        return true;
+    const QByteArray ace = QUrl::toAce(host);
+    if (ace.isEmpty() || ace.size() > 253)
+        return false;
+    for (const QByteArray &label : ace.split('.')) {
+        if (label.isEmpty() || label.size() > 63 || label.startsWith('-') || label.endsWith('-'))
+            return false;
+        for (const char c : label) {
+            const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')
+                               || (c >= '0' && c <= '9') || c == '-' || c == '_';
+            if (!plain)
+                return false;
+        }
+    }
+    return true;
+}
+
+// The checks of every link, given as an object or as a URL.
+Message validateLink(const LinkSettings &link)
+{
+    if (const Message m = link.validate(); !m.empty())
+        return m;
+    if (link.kind != LinkSettings::Kind::Serial && !isHostSyntax(link.host.trimmed()))
+        return msg<MsgId::GatewayConfigBadHost>(escapedForLog(link.host.toStdString()));
+    return {};
 }
 
 Problem readLink(const QJsonObject &json, LinkSettings *out)
@@ -108,7 +146,8 @@ Problem readLink(const QJsonObject &json, LinkSettings *out)
     r.integerInto(QStringLiteral("baud"), 1, std::numeric_limits<qint32>::max(), &link.baudRate);
     const QString format = r.string(QStringLiteral("format"));
     const QString protocol = r.string(QStringLiteral("protocol"), QStringLiteral("facon"));
-    r.integerInto(QStringLiteral("timeoutMs"), 1, 60000, &link.timeoutMs);
+    // The range of a link URL's timeout= (10 ms is already shorter than any PLC answers in).
+    r.integerInto(QStringLiteral("timeoutMs"), 10, 60000, &link.timeoutMs);
     r.integerInto(QStringLiteral("retries"), 0, 10, &link.retries);
     r.rejectUnknown();
     if (r.problem)
@@ -123,7 +162,7 @@ Problem readLink(const QJsonObject &json, LinkSettings *out)
         return msg<MsgId::GatewayConfigBadProtocol>(protocol.toStdString(), "facon", "binary",
                                                     "auto");
     link.protocol = *choice;
-    if (const Message m = link.validate(); !m.empty())
+    if (const Message m = validateLink(link); !m.empty())
         return m;
     *out = link;
     return std::nullopt;
@@ -218,15 +257,19 @@ Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
         Message error;
         const std::optional<LinkSettings::Parsed> parsed
             = LinkSettings::fromUrl(url, &error, defaults);
+        // The station is the watch lists' (each item names its own): neither refusal lists it
+        // among the settings a gateway's link takes.
+        const char *takes = url.trimmed().startsWith(QLatin1String("serial:"), Qt::CaseInsensitive)
+                                ? "baud, format, flow, protocol, timeout, retries"
+                                : "protocol, timeout, retries";
+        if (!parsed && error.id == MsgId::SettingsUrlUnknown && error.args.size() == 3)
+            error = msg<MsgId::SettingsUrlUnknown>(error.args[0], error.args[1], takes);
         if (!parsed)
             return at(msg<MsgId::GatewayPlaceLink>(), error);
-        // The station is the watch lists' (each item names its own).
         if (parsed->station)
             return at(msg<MsgId::GatewayPlaceLink>(),
-                      msg<MsgId::SettingsUrlUnknown>(url.toStdString(), "station",
-                                                     "protocol, timeout, retries and, on "
-                                                     "serial links, baud, format, flow"));
-        if (const Message m = parsed->settings.validate(); !m.empty())
+                      msg<MsgId::SettingsUrlUnknown>(url.toStdString(), "station", takes));
+        if (const Message m = validateLink(parsed->settings); !m.empty())
             return at(msg<MsgId::GatewayPlaceLink>(), m);
         c->link = parsed->settings;
     } else if (Problem p = readLink(link, &c->link)) {
@@ -245,6 +288,30 @@ Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
         c->allow.push_back(*range);
     }
     return readWatchLists(r, baseDirectory, c);
+}
+
+// Home Assistant's ids keep only letters, digits, '-' and '_' (HomeAssistantDiscovery::idLevel):
+// "line.1" and "line_1" would be one device, one connection's entities lost (issue 55). Refused
+// rather than made injective, so that the ids of existing entities stay as they are.
+Problem checkDiscoveryIds(const GatewayConfig &config)
+{
+    if (!config.homeAssistant.discovery)
+        return std::nullopt;
+    QHash<QString, qsizetype> nodes;
+    for (qsizetype i = 0; i < config.connections.size(); ++i) {
+        const QString name = config.connections.at(i).name;
+        const QString node = HomeAssistantDiscovery::idLevel(config.prefix + u'_' + name);
+        const auto other = nodes.constFind(node);
+        if (other == nodes.cend()) {
+            nodes.insert(node, i);
+            continue;
+        }
+        return at(msg<MsgId::GatewayPlaceConnection>(i + 1, name.toStdString()),
+                  msg<MsgId::GatewayConfigDiscoveryIdTwice>(
+                      config.connections.at(*other).name.toStdString(), name.toStdString(),
+                      node.toStdString()));
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -364,7 +431,7 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
     if (r.problem)
         return fail(*r.problem);
     if (!GatewayTopics::isValidPrefix(config.prefix))
-        return fail(msg<MsgId::GatewayConfigBadPrefix>(config.prefix.toStdString()));
+        return fail(msg<MsgId::GatewayConfigBadPrefix>(escapedForLog(config.prefix.toStdString())));
     if (journalGiven && journal.trimmed().isEmpty())
         return fail(msg<MsgId::GatewayConfigEmptyFile>("alarmJournal"));
     config.alarmJournal
@@ -396,6 +463,8 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
         names.insert(connection.name);
         config.connections.append(connection);
     }
+    if (Problem p = checkDiscoveryIds(config))
+        return fail(*p);
     return config;
 }
 

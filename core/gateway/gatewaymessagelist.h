@@ -44,7 +44,8 @@ FATEK_MSG(GatewayConfigDuplicateName, 1,
 FATEK_MSG(GatewayConfigBadPrefix, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "\"%1\" is not a usable topic prefix: levels separated by '/', "
-                            "none empty, without '+' or '#'."))
+                            "none empty, without '+', '#' or a NUL character, not starting with "
+                            "'$'."))
 // %2..%4 the words to write instead (as typed).
 FATEK_MSG(GatewayConfigBadKind, 4,
           QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a link kind: write %2, %3 or %4."))
@@ -56,6 +57,17 @@ FATEK_MSG(GatewayConfigNoItems, 0,
 FATEK_MSG(GatewayConfigDuplicateItem, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "station %1 %2 is watched twice (each address has one topic)"))
+// Issue 55: %1 the host as written.
+FATEK_MSG(GatewayConfigBadHost, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"%1\" is not a host: write an IP address (192.168.1.5) or a host "
+                            "name (letters, digits, '-' and '.')."))
+// Issue 55: %1 and %2 the connections' names, %3 the Home Assistant id both would get.
+FATEK_MSG(GatewayConfigDiscoveryIdTwice, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Connections \"%1\" and \"%2\" would get the same Home Assistant id "
+                            "\"%3\" (characters other than letters, digits, '-' and '_' become "
+                            "'_'): rename one."))
 FATEK_MSG(GatewayConfigPasswordTwice, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "Give the broker \"%1\" or a \"%2\", not both."))
 FATEK_MSG(GatewayPlaceConnection, 2, QT_TRANSLATE_NOOP("Fatek::Message", "connection %1 (%2)"))
@@ -72,12 +84,27 @@ FATEK_MSG(GatewayWriteBadTopic, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Ignored a command on %1: not an item of this connection."))
 
+// A command on a topic that names no item, answered on its reply topic: %1 the topic, %2 why.
+FATEK_MSG(GatewayLogBadTopicRefused, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "refused a command on \"%1\": %2"))
+
 // Log lines of fatek-gateway (one per event, on standard error).
 // %1 station, %2 address, %3 the value as sent, %4 the command id, %5 the outcome.
 FATEK_MSG(GatewayLogWrite, 5,
           QT_TRANSLATE_NOOP("Fatek::Message", "write station %1 %2 = \"%3\" (id \"%4\"): %5"))
 FATEK_MSG(GatewayLogPlcLink, 2, QT_TRANSLATE_NOOP("Fatek::Message", "PLC link %1: %2"))
 FATEK_MSG(GatewayLogPlcLinkState, 1, QT_TRANSLATE_NOOP("Fatek::Message", "PLC link %1"))
+// What the PLCs do (issue 55; stationactivity.cpp): %1 the station, %2 why (the session's
+// reason, or for an item %2 its address and %3 the PLC's error).
+FATEK_MSG(GatewayLogStationSilent, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "station %1 does not answer: %2"))
+FATEK_MSG(GatewayLogStationDemoted, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "station %1 demoted: %2"))
+FATEK_MSG(GatewayLogStationAnswers, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "station %1 answers again"))
+FATEK_MSG(GatewayLogItemError, 3, QT_TRANSLATE_NOOP("Fatek::Message", "station %1 %2: %3"))
+FATEK_MSG(GatewayLogItemReadAgain, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "station %1 %2 read again"))
 FATEK_MSG(GatewayLogBrokerUp, 1, QT_TRANSLATE_NOOP("Fatek::Message", "broker %1 connected"))
 FATEK_MSG(GatewayLogBrokerDown, 1, QT_TRANSLATE_NOOP("Fatek::Message", "broker down: %1"))
 FATEK_MSG(GatewayLogStarted, 3,

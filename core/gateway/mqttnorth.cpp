@@ -64,9 +64,15 @@ MqttNorth::MqttNorth(const GatewayConnectionConfig &config, const QString &prefi
             Q_EMIT logEvent(msg<MsgId::GatewayLogBrokerDown>(reason));
     });
 
-    GatewayPayload::Status offline{LinkStatus::Offline, m_linkText, {}, {}};
-    m_client->setWill(GatewayTopics::status(prefix, config.name),
-                      GatewayPayload::encodeStatus(offline), 1, true);
+    // The will's time is that of the connect that left it with the broker (docs/gateway.md, "a
+    // historian"): the broker publishes it later, when it finds this connection dead.
+    m_client->setWill(
+        GatewayTopics::status(prefix, config.name),
+        [link = m_linkText] {
+            return GatewayPayload::encodeStatus(
+                {LinkStatus::Offline, link, {}, QDateTime::currentDateTimeUtc()});
+        },
+        1, true);
     const auto watchedAt = [this](const QString &topic) -> const WatchItemSpec * {
         const auto it = m_itemOfTopic.constFind(topic);
         return it == m_itemOfTopic.cend() ? nullptr : &m_items[*it].values.item();
@@ -191,6 +197,10 @@ void MqttNorth::update(std::size_t index, const std::vector<std::uint32_t> &word
                        ValueQuality quality, const Message &error, const QDateTime &time)
 {
     Item &item = m_items[index];
+    const WatchItemSpec &spec = item.values.item();
+    for (const Message &line : m_activity.item(spec.station, spec.address, quality, error))
+        Q_EMIT logEvent(line);
+    updateSilence();
     // A stale item goes out again when its reason changes kind (no answer -> station demoted),
     // not for every new detail (the next try's time).
     const bool changed = !item.published || words != item.words || quality != item.quality
@@ -258,10 +268,27 @@ void MqttNorth::publishItem(Item &item)
         item.topicId, GatewayPayload::encodeItem(head, item.values, item.words, item.time));
 }
 
+void MqttNorth::updateSilence()
+{
+    // The link is up but no station answers (a stopped PLC, a wrong station number): no value of
+    // this connection is current, and the status, the readers' gap marker, says so.
+    const std::optional<Message> silence = m_activity.silence();
+    if (silence && m_status == LinkStatus::Up) {
+        m_silent = true;
+        publishStatus(LinkStatus::Down, *silence);
+    } else if (!silence && m_silent && m_status == LinkStatus::Down) {
+        m_silent = false;
+        publishStatus(LinkStatus::Up, {});
+    }
+}
+
 void MqttNorth::plantLinkState(LinkState state, const Message &reason)
 {
     if (m_stopping)
         return;
+    // The link's own state wins; its stations start anew.
+    m_activity.reset();
+    m_silent = false;
     switch (state) {
     case LinkState::Connected:
         publishStatus(LinkStatus::Up, {});
@@ -274,7 +301,8 @@ void MqttNorth::plantLinkState(LinkState state, const Message &reason)
         const QDateTime now = QDateTime::currentDateTimeUtc();
         for (std::size_t i = 0; i < m_items.size(); ++i) {
             Item &item = m_items[i];
-            if (item.quality == ValueQuality::Stale && item.published)
+            // Stale for another reason (its station demoted): republished with the link's.
+            if (item.quality == ValueQuality::Stale && item.published && item.error.id == reason.id)
                 continue;
             item.quality = ValueQuality::Stale;
             item.error = reason;

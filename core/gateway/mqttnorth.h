@@ -7,6 +7,7 @@
 #include "gatewaypublisher.h"
 #include "gatewaystatistics.h"
 #include "homeassistantdiscovery.h"
+#include "stationactivity.h"
 
 #include <QDateTime>
 #include <QElapsedTimer>
@@ -33,8 +34,10 @@ class PlantConnection;
 // Items are published (retained, QoS 0) when their words or quality change, and all again after
 // every broker (re)connect; an item that changes again before it went out goes once, newest state.
 // Good means read in the cycle that published it; when the PLC link goes down every item is
-// published stale with the reason. The status goes connecting -> up -> down (reason) -> up ...; the
-// broker's will (offline) covers a gateway that dies, stop() publishes offline itself.
+// published stale with the reason. The status goes connecting -> up -> down (reason) -> up ...
+// (down also while the link is up and no station answers: StationActivity, which also logs what
+// the stations do); the broker's will (offline) covers a gateway that dies, stop() publishes
+// offline itself.
 class MqttNorth : public QObject, public PlantConsumer
 {
     Q_OBJECT
@@ -88,6 +91,8 @@ private:
     void publishNextDirty();
     void publishItem(Item &item);
     void publishStatus(GatewayPayload::LinkStatus state, const Message &reason);
+    // Status down while no station answers, up again when one does.
+    void updateSilence();
     void publishStatistics();
     void checkStopped();
 
@@ -109,6 +114,8 @@ private:
     quint64 m_coalesced = 0;
     DelayHistogram m_delays; // since the last statistics
     GatewayPayload::LinkStatus m_status = GatewayPayload::LinkStatus::Connecting;
+    StationActivity m_activity;
+    bool m_silent = false; // the status is down because no station answers
     QTimer m_statisticsTimer;
     QTimer m_stopTimer;
     QElapsedTimer m_stopClock;

@@ -400,6 +400,14 @@ std::optional<GatewayPayload::SetCommand> GatewayPayload::decodeSet(const QByteA
             *error = msg<MsgId::GatewaySetNoValue>();
             return std::nullopt;
         }
+        // A key of the wrong type is named as such (issue 55: "format":5 was read as "").
+        for (const char *key : {"format", "time"}) {
+            const QJsonValue v = object->value(QLatin1String(key));
+            if (!v.isUndefined() && !v.isString()) {
+                *error = msg<MsgId::GatewaySetNotString>(key);
+                return std::nullopt;
+            }
+        }
         if (object->contains(QStringLiteral("format"))) {
             command.format
                 = ValueFormat::fromName(object->value(QStringLiteral("format")).toString());

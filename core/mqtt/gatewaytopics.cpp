@@ -28,7 +28,11 @@ bool GatewayTopics::isValidConnectionName(const QString &name)
 
 bool GatewayTopics::isValidPrefix(const QString &prefix)
 {
-    if (prefix.isEmpty() || prefix.contains(u'+') || prefix.contains(u'#'))
+    // MQTT topic levels (issue 55): a NUL ends the topic where the broker reads it (the gateway
+    // then took its own values as commands); a topic starting with '$' is the broker's ($SYS),
+    // which drops what a client publishes there; '+' and '#' are wildcards.
+    if (prefix.isEmpty() || prefix.contains(u'+') || prefix.contains(u'#')
+        || prefix.contains(QChar(0)) || prefix.startsWith(u'$'))
         return false;
     for (const QString &level : prefix.split(u'/')) {
         if (level.isEmpty())

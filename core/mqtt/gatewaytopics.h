@@ -26,7 +26,8 @@ namespace GatewayTopics {
 // A connection name usable as one topic level: 1..64 characters, letters, digits, '-', '_', '.',
 // and not a number (the station level is one).
 bool isValidConnectionName(const QString &name);
-// A prefix: one or more non-empty levels without '+', '#', and not starting or ending with '/'.
+// A prefix: one or more non-empty levels without '+', '#' or NUL, not starting with '$' or '/',
+// not ending with '/'.
 bool isValidPrefix(const QString &prefix);
 
 QString item(const QString &prefix, const QString &connection, int station, const Address &address);

@@ -2,6 +2,7 @@
 
 #include "core/qtbridge/secrets.h"
 #include "mqttmessages.h"
+#include "mqtttls.h"
 
 #include <QFileInfo>
 #include <QUrl>
@@ -69,13 +70,25 @@ Message MqttBrokerSettings::validate() const
     }
     if (certFile.isEmpty() != keyFile.isEmpty())
         return msg<MsgId::MqttTlsCertNeedsKey>();
+    // Refused, not warned about: a CA file says the broker is to be checked, a client
+    // certificate that the gateway is to show one; in clear text neither happens.
+    if (!tls) {
+        const std::pair<bool, const char *> tlsOnly[] = {{!caFile.isEmpty(), "caFile"},
+                                                         {!certFile.isEmpty(), "certFile"},
+                                                         {!keyFile.isEmpty(), "keyFile"},
+                                                         {tlsInsecure, "tlsInsecure"}};
+        for (const auto &[given, key] : tlsOnly) {
+            if (given)
+                return msg<MsgId::MqttTlsWithoutTls>(key);
+        }
+    }
     if (!password.isEmpty() && username.isEmpty())
         return msg<MsgId::MqttPasswordNeedsUser>();
     if (keepAliveSec < 5 || reconnectMinMs < 10 || reconnectMaxMs < reconnectMinMs)
         return msg<MsgId::MqttTimingInvalid>();
     if (tls && !tlsAvailable())
         return msg<MsgId::MqttTlsUnavailable>(toUrl().toStdString());
-    return {};
+    return MqttTls::checkFiles(*this);
 }
 
 } // namespace Fatek

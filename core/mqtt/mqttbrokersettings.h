@@ -38,7 +38,8 @@ struct MqttBrokerSettings
     // The URL without the password ("mqtts://operator@broker:8883"): messages and the files the
     // studio saves may show it.
     QString toUrl() const;
-    // Empty when usable, else what to fix (TLS files that do not exist, a port of 0 ...).
+    // Empty when usable, else what to fix (TLS files that do not exist or that libmosquitto would
+    // not load, a key not of its certificate, TLS settings with an mqtt:// URL, a port of 0 ...).
     Message validate() const;
     // Whether this build's MQTT library can speak TLS (mqtts://): the Windows build's cannot
     // yet (docs/windows.md). validate() refuses TLS settings where it cannot.

@@ -59,6 +59,14 @@ void MqttClient::setWill(const QString &topic, const QByteArray &payload, int qo
     m_shared->will = MqttClientShared::Outgoing{topic.toUtf8(), payload, qos, retain};
 }
 
+void MqttClient::setWill(const QString &topic, std::function<QByteArray()> payload, int qos,
+                         bool retain)
+{
+    setWill(topic, payload(), qos, retain);
+    std::lock_guard lock(m_shared->mutex);
+    m_shared->willPayload = std::move(payload);
+}
+
 void MqttClient::subscribe(const QString &filter, int qos)
 {
     std::lock_guard lock(m_shared->mutex);

@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
 #include <memory>
 
 namespace Fatek {
@@ -31,6 +32,10 @@ public:
     // The message the broker publishes for this client when its link dies without a clean
     // disconnect (the gateway's "offline" status). Set before open().
     void setWill(const QString &topic, const QByteArray &payload, int qos = 1, bool retain = true);
+    // The same with a payload made again before every (re)connect, on the network thread (so
+    // `payload` must not touch anything but its own copies): a will that says when it was made.
+    void setWill(const QString &topic, std::function<QByteArray()> payload, int qos = 1,
+                 bool retain = true);
     // Subscribed on every (re)connect; adding one while connected subscribes at once.
     void subscribe(const QString &filter, int qos = 0);
 

@@ -2,6 +2,7 @@
 
 #include "mqttmessages.h"
 #include "mqttpacket.h"
+#include "mqtttls.h"
 
 #include <QMetaObject>
 #include <QRandomGenerator>
@@ -83,10 +84,11 @@ void onConnect(struct mosquitto *mosq, void *userdata, int rc, int flags)
     }
 #endif
     shared->connackSeen = true;
+    shared->connackAt = std::chrono::steady_clock::now();
     shared->post([](MqttClient *client) { Q_EMIT client->connected(); });
 }
 
-void onLog(struct mosquitto *, void *userdata, int level, const char *text)
+void onLog(struct mosquitto *mosq, void *userdata, int level, const char *text)
 {
     if (level != MOSQ_LOG_ERR || !text)
         return;
@@ -96,6 +98,13 @@ void onLog(struct mosquitto *, void *userdata, int level, const char *text)
         line = line.substr(routines + 10);
     else if (const auto colon = line.find("]: "); colon != std::string::npos)
         line = line.substr(colon + 3);
+    // Which check: an expired certificate, an unknown CA and a host name that does not match all
+    // read "certificate verify failed" (issue 55); OpenSSL's verify result tells them apart, while
+    // the handshake is still there to ask.
+    if (line.find("certificate verify failed") != std::string::npos) {
+        if (const std::string why = MqttTls::verifyFailure(mosq); !why.empty())
+            line += ": " + why;
+    }
     std::vector<std::string> &errors = sharedOf(userdata)->attemptErrors;
     if (errors.size() < 3 && std::find(errors.begin(), errors.end(), line) == errors.end())
         errors.push_back(line);
@@ -169,8 +178,17 @@ void MqttClientShared::linkDown(int rc)
     const Message why = rc == MOSQ_ERR_KEEPALIVE
                             ? msg<MsgId::MqttKeepaliveTimeout>(settings.keepAliveSec)
                             : Message::text(libraryError(rc));
-    const Message reason
-        = rc == 0 ? msg<MsgId::MqttClosed>(url) : msg<MsgId::MqttLinkLost>(url, why);
+    // A broker drops a client when another connects with its id (MQTT 3.1.1 says no more than
+    // closing the connection): two gateways with one configuration throw each other off, each
+    // right after it connected. Recognised by that, said so, and the backoff keeps growing.
+    const bool dropped = rc != 0 && rc != MOSQ_ERR_KEEPALIVE;
+    if (dropped && std::chrono::steady_clock::now() - connackAt < shortSession())
+        ++shortSessions;
+    else
+        shortSessions = 0;
+    Message reason = rc == 0 ? msg<MsgId::MqttClosed>(url) : msg<MsgId::MqttLinkLost>(url, why);
+    if (shortSessions >= 2)
+        reason = msg<MsgId::MqttTakenOver>(url, shortSessions, settings.clientId.toStdString());
     post([reason](MqttClient *client) { Q_EMIT client->disconnected(reason); });
 }
 
@@ -391,7 +409,7 @@ bool MqttClientShared::serve()
 
 void MqttClientShared::run()
 {
-    int delayMs = settings.reconnectMinMs;
+    delayMs = settings.reconnectMinMs;
     bool first = true;
     for (;;) {
         {
@@ -401,6 +419,12 @@ void MqttClientShared::run()
         }
         attemptErrors.clear();
         attemptReported = false;
+        if (willPayload && will) {
+            // The library sends the will with CONNECT: made now, it carries this connect's time.
+            const QByteArray payload = willPayload();
+            mosquitto_will_set(mosq, will->topic.constData(), static_cast<int>(payload.size()),
+                               payload.constData(), will->qos, will->retain);
+        }
         const int rc = first ? mosquitto_connect(mosq, settings.host.toUtf8().constData(),
                                                  settings.port, settings.keepAliveSec)
                              : mosquitto_reconnect(mosq);
@@ -414,7 +438,8 @@ void MqttClientShared::run()
             // the owner must still learn that the link is down.
             linkDown(MOSQ_ERR_CONN_LOST);
             if (connackSeen.exchange(false)) {
-                delayMs = settings.reconnectMinMs;
+                if (shortSessions < 2)
+                    delayMs = settings.reconnectMinMs;
             } else if (!attemptReported) {
                 // Connected, then dropped before the broker accepted us: a TLS handshake the
                 // broker failed (no client certificate), or a broker closing at once. Every

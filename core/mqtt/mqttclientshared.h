@@ -8,6 +8,7 @@
 #include <QHash>
 #include <QString>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -58,6 +59,9 @@ struct MqttClientShared
     QHash<QByteArray, std::size_t> outboxIndex;
     std::atomic<quint64> superseded{0};
     std::optional<Outgoing> will;
+    // Writes the will's payload again before every connect (its time: issue 55); set before
+    // open(), then read by the network thread only.
+    std::function<QByteArray()> willPayload;
     Message openError;
     std::atomic<bool> connected{false};
     std::atomic<bool> connackSeen{false};
@@ -81,6 +85,16 @@ struct MqttClientShared
     // attempt's failure was reported already (a refusing CONNACK).
     std::vector<std::string> attemptErrors;
     bool attemptReported = false;
+    // Network thread only: sessions the broker ended right after accepting them, in a row (another
+    // client with the same id taking over: issue 55), when the last one began, and the backoff.
+    int shortSessions = 0;
+    std::chrono::steady_clock::time_point connackAt;
+    int delayMs = 0;
+    // A session the broker ends sooner than this after its CONNACK is "right after".
+    std::chrono::milliseconds shortSession() const
+    {
+        return std::chrono::milliseconds(std::max(5000, 2 * delayMs));
+    }
     // Network thread only: the broker resumed a persistent session; what it sends before the
     // answer to our SUBSCRIBE waited at the broker while this client was away.
     bool resumed = false;

@@ -13,6 +13,23 @@ FATEK_MSG(MqttTlsFileMissing, 1,
 FATEK_MSG(MqttTlsCertNeedsKey, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "A client certificate needs its key file, and a key its certificate."))
+// TLS settings with an mqtt:// URL (issue 55: they passed and the connection went in clear text):
+// %1 the setting as typed.
+FATEK_MSG(MqttTlsWithoutTls, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 is a TLS setting, but the broker URL is mqtt:// (clear text): "
+                            "write mqtts://, or remove %1."))
+// The TLS files as libmosquitto loads them when it connects (MqttTls::checkFiles): %1 the file,
+// %2 OpenSSL's reason.
+FATEK_MSG(MqttTlsCaUnusable, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "The CA file %1 holds no usable certificate: %2."))
+FATEK_MSG(MqttTlsCertUnusable, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "The certificate file %1 is not usable: %2."))
+FATEK_MSG(MqttTlsKeyUnusable, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message", "The key file %1 is not usable: %2."))
+FATEK_MSG(MqttTlsKeyMismatch, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The key file %1 is not the key of the certificate %2."))
 FATEK_MSG(MqttTlsUnavailable, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "%1 needs TLS, which this build's MQTT library does not have (the "
@@ -39,6 +56,14 @@ FATEK_MSG(MqttTlsFailed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "the TLS handsha
 // %1 a reason, %2 the MQTT library's own words on it (its TLS checks), as it gives them.
 FATEK_MSG(MqttErrorDetail, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 (the library says: %2)"))
 FATEK_MSG(MqttLinkLost, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Link to the broker %1 lost: %2"))
+// Issue 55: %1 the broker, %2 how many sessions in a row it ended right after accepting them,
+// %3 the client id.
+FATEK_MSG(MqttTakenOver, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The broker %1 closed the connection right after accepting it, %2 "
+                            "times in a row: another client with the same client id \"%3\" took "
+                            "over (a second gateway with this configuration?); trying again less "
+                            "often."))
 FATEK_MSG(MqttClosed, 1, QT_TRANSLATE_NOOP("Fatek::Message", "Disconnected from the broker %1."))
 // %2 of MqttLinkLost when the broker stopped answering (libmosquitto's MOSQ_ERR_KEEPALIVE, which
 // its own mosquitto_strerror() calls "Unknown error"): %1 the keep-alive in seconds.
@@ -59,6 +84,8 @@ FATEK_MSG(GatewaySetBadFormat, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a value format."))
 // A boolean key with another value ("swapWords":"yes"): refused, never read as false. %1 the
 // key, %2 and %3 the values it takes (typed as they are, so arguments).
+// A text key with another value ("format":5): %1 the key.
+FATEK_MSG(GatewaySetNotString, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be a string."))
 FATEK_MSG(GatewaySetNotBool, 3, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2 or %3."))
 FATEK_MSG(GatewaySetBadWords, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",

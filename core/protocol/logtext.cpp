@@ -15,6 +15,23 @@ void appendHex(std::string &out, std::uint32_t value, int digits)
         out += hex[(value >> static_cast<unsigned>(shift)) & 0xFU];
 }
 
+// The bidirectional control at `i` (U+061C, U+200E/F, U+202A..U+202E, U+2066..U+2069), else 0.
+std::uint32_t bidiControlAt(std::string_view utf8, std::size_t i)
+{
+    const auto at = [&utf8, i](std::size_t k) {
+        return i + k < utf8.size() ? static_cast<unsigned char>(utf8[i + k]) : 0U;
+    };
+    if (at(0) == 0xD8 && at(1) == 0x9C)
+        return 0x061C;
+    if (at(0) != 0xE2)
+        return 0;
+    const std::uint32_t code = 0x2000U | ((at(1) & 0x3FU) << 6) | (at(2) & 0x3FU);
+    const bool bidi = (at(1) == 0x80
+                       && (code == 0x200E || code == 0x200F || (code >= 0x202A && code <= 0x202E)))
+                      || (at(1) == 0x81 && code >= 0x2066 && code <= 0x2069);
+    return bidi && (at(2) & 0xC0U) == 0x80 ? code : 0;
+}
+
 } // namespace
 
 std::string escapedForLog(std::string_view utf8)
@@ -46,9 +63,25 @@ std::string escapedForLog(std::string_view utf8)
             // U+2028 LINE SEPARATOR, U+2029 PARAGRAPH SEPARATOR
             out += static_cast<unsigned char>(utf8[i + 2]) == 0xA8 ? "\\u2028" : "\\u2029";
             i += 2;
+        } else if (const std::uint32_t bidi = bidiControlAt(utf8, i); bidi != 0) {
+            out += "\\u";
+            appendHex(out, bidi, 4);
+            i += bidi == 0x061C ? std::size_t{1} : std::size_t{2};
         } else {
             out += static_cast<char>(c);
         }
+    }
+    return out;
+}
+
+std::string quotedFieldForLog(std::string_view utf8)
+{
+    std::string out;
+    out.reserve(utf8.size());
+    for (const char c : utf8) {
+        if (c == '\\' || c == '"')
+            out += '\\';
+        out += c;
     }
     return out;
 }

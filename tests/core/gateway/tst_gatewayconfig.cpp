@@ -213,9 +213,22 @@ void TestGatewayConfig::errors_data()
                              << "Configuration version 2 is not supported (this program reads "
                                 "version 1).";
     QTest::newRow("no version") << QVariantList{"version"} << absent << "\"version\" is missing.";
-    QTest::newRow("prefix") << QVariantList{"prefix"} << QJsonValue("a/+/b")
-                            << "\"a/+/b\" is not a usable topic prefix: levels separated by '/', "
-                               "none empty, without '+' or '#'.";
+    QTest::newRow("prefix")
+        << QVariantList{"prefix"} << QJsonValue("a/+/b")
+        << "\"a/+/b\" is not a usable topic prefix: levels separated by '/', "
+           "none empty, without '+', '#' or a NUL character, not starting with '$'.";
+    // Issue 55: a NUL cut every topic at the broker (the gateway took its own values for
+    // commands), a '$' prefix is the broker's and everything published there was dropped.
+    QTest::newRow("prefix NUL") << QVariantList{"prefix"}
+                                << QJsonValue(QStringLiteral("pl\u0000ant"))
+                                << "\"pl\\x00ant\" is not a usable topic prefix: levels separated "
+                                   "by '/', none empty, without '+', '#' or a NUL character, not "
+                                   "starting with '$'.";
+    QTest::newRow("prefix $SYS") << QVariantList{"prefix"} << QJsonValue("$SYS/x")
+                                 << "\"$SYS/x\" is not a usable topic prefix";
+    QTest::newRow("homeAssistant prefix $")
+        << QVariantList{"homeAssistant", "prefix"} << QJsonValue("$ha")
+        << "homeAssistant: \"$ha\" is not a usable topic prefix";
     QTest::newRow("readOnly type")
         << QVariantList{"readOnly"} << QJsonValue("yes") << "\"readOnly\" must be true or false.";
     QTest::newRow("homeAssistant discovery type")
@@ -224,7 +237,7 @@ void TestGatewayConfig::errors_data()
     QTest::newRow("homeAssistant prefix")
         << QVariantList{"homeAssistant", "prefix"} << QJsonValue("ha/#")
         << "homeAssistant: \"ha/#\" is not a usable topic prefix: levels separated by '/', "
-           "none empty, without '+' or '#'.";
+           "none empty, without '+', '#' or a NUL character, not starting with '$'.";
     QTest::newRow("homeAssistant unknown key")
         << QVariantList{"homeAssistant", "discover"} << QJsonValue(true)
         << "homeAssistant: \"discover\" is not a known setting; did you mean \"discovery\"?";
@@ -273,9 +286,45 @@ void TestGatewayConfig::errors_data()
     QTest::newRow("baud") << QVariantList{"connections", 1, "link", "baud"} << QJsonValue(300)
                           << "connection 2 (line2): link: baud rate 300 is out of range (1200 to "
                              "921600).";
-    QTest::newRow("timeout") << QVariantList{"connections", 0, "link", "timeoutMs"} << QJsonValue(0)
-                             << "connection 1 (line1): link: timeoutMs 0 is out of range "
-                                "(1..60000)";
+    // Issue 55: the range of a link URL's timeout= (the object took 1..60000, the URL 10..60000).
+    QTest::newRow("timeout") << QVariantList{"connections", 0, "link", "timeoutMs"} << QJsonValue(5)
+                             << "connection 1 (line1): link: timeoutMs 5 is out of range "
+                                "(10..60000)";
+    // Issue 55, items 3 and 9: what a start refused (or did silently wrong) is refused at load,
+    // so by --check, a start and a reload alike.
+    QTest::newRow("url unknown setting")
+        << QVariantList{"connections", 0, "link"} << QJsonValue("tcp://10.0.0.5?colour=red")
+        << "connection 1 (line1): link: link \"tcp://10.0.0.5?colour=red\": no setting "
+           "\"colour\" (this link takes protocol, timeout, retries).";
+    QTest::newRow("url station")
+        << QVariantList{"connections", 1, "link"} << QJsonValue("serial:///dev/ttyUSB0?station=2")
+        << "connection 2 (line2): link: link \"serial:///dev/ttyUSB0?station=2\": no setting "
+           "\"station\" (this link takes baud, format, flow, protocol, timeout, retries).";
+    QTest::newRow("keepalive huge")
+        << QVariantList{"broker", "keepAliveSec"} << QJsonValue(1e300) << "broker: keepAliveSec 1";
+    QTest::newRow("serial format type")
+        << QVariantList{"connections", 1, "link", "format"} << QJsonValue(5)
+        << "connection 2 (line2): link: \"format\" must be a string.";
+    QTest::newRow("host syntax")
+        << QVariantList{"connections", 0, "link", "host"} << QJsonValue("not a host!")
+        << "connection 1 (line1): link: \"not a host!\" is not a host: write an IP address "
+           "(192.168.1.5) or a host name (letters, digits, '-' and '.').";
+    QTest::newRow("url host syntax")
+        << QVariantList{"connections", 0, "link"} << QJsonValue("tcp://plc_1..local")
+        << "connection 1 (line1): link: \"plc_1..local\" is not a host";
+    // Issue 55, item 6: both would be Home Assistant's device plant_fatek_line_1, one
+    // connection's entities lost.
+    QTest::newRow("discovery ids collide")
+        << QVariantList{"connections", 1, "name"} << QJsonValue("line_1")
+        << "connection 2 (line_1): connections \"line.1\" and \"line_1\" would get the same Home "
+           "Assistant id \"plant_fatek_line_1\"";
+    QTest::newRow("ca without tls")
+        << QVariantList{"broker", "caFile"} << QJsonValue("line1.json")
+        << "broker: caFile is a TLS setting, but the broker URL is mqtt:// (clear text): write "
+           "mqtts://, or remove caFile.";
+    QTest::newRow("insecure without tls")
+        << QVariantList{"broker", "tlsInsecure"} << QJsonValue(true)
+        << "broker: tlsInsecure is a TLS setting, but the broker URL is mqtt://";
     QTest::newRow("allow") << QVariantList{"connections", 0, "allow", 1} << QJsonValue("Q1..Q9")
                            << "connection 1 (line1): allow \"Q1..Q9\": ";
     QTest::newRow("allow type") << QVariantList{"connections", 0, "allow", 0} << QJsonValue(5)
@@ -341,6 +390,10 @@ void TestGatewayConfig::errors()
     QJsonObject json = validConfig();
     if (QTest::currentDataTag() == QByteArray("password twice"))
         json = replaced(json, {"broker", "password"}, QJsonValue("x")).toObject();
+    if (QTest::currentDataTag() == QByteArray("discovery ids collide")) {
+        json = replaced(json, {"homeAssistant", "discovery"}, QJsonValue(true)).toObject();
+        json = replaced(json, {"connections", 0, "name"}, QJsonValue("line.1")).toObject();
+    }
     json = replaced(json, path, value).toObject();
     const Result<GatewayConfig> config
         = GatewayConfig::load(QJsonDocument(json).toJson(), m_dir.path());

@@ -223,12 +223,26 @@ void TestMqtt::brokerTlsWhereTheLibraryHasIt()
 void TestMqtt::tlsFailuresSayWhich_data()
 {
     QTest::addColumn<bool>("rightCa");
+    QTest::addColumn<QString>("host");
+    QTest::addColumn<bool>("expired");
     QTest::addColumn<QString>("expected");
+    const QString ip = QStringLiteral("127.0.0.1");
     // The broker wants a client certificate and the client has none: TLS 1.3 tells after the
     // handshake, so the connection opens and closes before any CONNACK.
     QTest::newRow("no client certificate")
-        << true << QStringLiteral("certificate required|may require a client certificate");
-    QTest::newRow("wrong CA") << false << QStringLiteral("certificate verify failed");
+        << true << ip << false
+        << QStringLiteral("certificate required|may require a client certificate");
+    // Issue 55: each failed check named, not "certificate verify failed" alone.
+    QTest::newRow("wrong CA") << false << ip << false
+                              << QStringLiteral("certificate verify failed: (self-signed "
+                                                "certificate in certificate chain|unable to get "
+                                                "local issuer certificate)");
+    // (libmosquitto names this one itself.)
+    QTest::newRow("host mismatch") << true << QStringLiteral("localhost") << false
+                                   << QStringLiteral("host name verification failed");
+    QTest::newRow("expired") << true << ip << true
+                             << QStringLiteral(
+                                    "certificate verify failed: certificate has expired");
 }
 
 // Issue 33 (major 3): a failed TLS connection is reported at once, every attempt, naming the check
@@ -239,6 +253,8 @@ void TestMqtt::tlsFailuresSayWhich()
     QSKIP("the Windows build's MQTT library has no TLS (brokerTlsWhereTheLibraryHasIt)");
 #else
     QFETCH(bool, rightCa);
+    QFETCH(QString, host);
+    QFETCH(bool, expired);
     QFETCH(QString, expected);
     TestUtil::MosquittoBroker broker;
     const QDir dir(broker.directory());
@@ -246,8 +262,24 @@ void TestMqtt::tlsFailuresSayWhich()
         QSKIP("openssl is not installed (tools/install-deps.sh installs it)");
     QString error;
     QVERIFY2(broker.startWithTls(&error), qPrintable(error + broker.log()));
+    if (expired) {
+        // The broker's certificate again, with its end a day ago, and the broker on it.
+        QProcess sign;
+        sign.setWorkingDirectory(dir.path());
+        sign.setProcessChannelMode(QProcess::MergedChannels);
+        sign.start(QStringLiteral("openssl"),
+                   {"x509", "-req", "-in", "server.csr", "-CA", "ca.crt", "-CAkey", "ca.key",
+                    "-CAcreateserial", "-out", "server.crt", "-days", "-1", "-extfile", "ext.cnf"});
+        QVERIFY2(sign.waitForFinished(30000) && sign.exitCode() == 0, sign.readAll().constData());
+        QVERIFY2(broker.start(&error, QStringLiteral("cafile %1\ncertfile %2\nkeyfile %3\n")
+                                          .arg(dir.filePath(QStringLiteral("ca.crt")),
+                                               dir.filePath(QStringLiteral("server.crt")),
+                                               dir.filePath(QStringLiteral("server.key")))),
+                 qPrintable(error + broker.log()));
+    }
 
     MqttBrokerSettings settings = settingsFor(broker);
+    settings.host = host;
     settings.tls = true;
     settings.caFile
         = dir.filePath(rightCa ? QStringLiteral("ca.crt") : QStringLiteral("other.crt"));
