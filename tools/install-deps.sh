@@ -34,8 +34,9 @@ packages=(
     # the MQTT gateway: the client library, the broker its integration tests start, and
     # mosquitto_pub, the independent client that acknowledges alarms in tst_gatewayalarms
     libmosquitto-dev mosquitto mosquitto-clients
-    # certificates for the TLS tests of the MQTT client (a CA and a broker certificate per test)
-    openssl
+    # certificates for the TLS tests of the MQTT client (a CA and a broker certificate per test),
+    # and OpenSSL's library: the gateway checks its TLS files as libmosquitto will load them
+    openssl libssl-dev
     # the alarm journal (SQLite's C library), and the sqlite3 program its tests lock a file with
     libsqlite3-dev sqlite3
     # history stores in PostgreSQL (libpq's C library), and the server tst_historypostgres starts
