@@ -618,10 +618,11 @@ void TestGatewayConfig::checkUsage()
     TestUtil::ProgramRun run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {});
     QCOMPARE(run.code, 2);
     QVERIFY2(run.err.contains(QStringLiteral("give one configuration file")), qPrintable(run.err));
-    // An unknown option is a usage error: exit 2, as in the other programs.
+    // An unknown option is a usage error: exit 2, in the words of the other programs.
     run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--bogus", "x.json"});
     QCOMPARE(run.code, 2);
-    QVERIFY2(run.err.contains(QStringLiteral("Unknown option 'bogus'")), qPrintable(run.err));
+    QVERIFY2(run.err.contains(QStringLiteral("Unknown option --bogus (see --help).")),
+             qPrintable(run.err));
     run = TestUtil::runProgram(QStringLiteral(FATEK_GATEWAY_PATH), {"--help"});
     QCOMPARE(run.code, 0);
     for (const char *option : {"--check", "--read-only", "--version"})
