@@ -38,27 +38,7 @@ Run runCli(const QStringList &arguments, int timeoutMs = 30000)
     return TestUtil::runProgram(QStringLiteral(FATEK_CLI_PATH), arguments, timeoutMs);
 }
 
-#ifdef Q_OS_UNIX
-std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b)
-{
-    const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
-    if (socat.isEmpty())
-        return nullptr;
-    std::shared_ptr<QProcess> process(new QProcess, [](QProcess *p) {
-        p->terminate();
-        p->waitForFinished(5000);
-        delete p;
-    });
-    process->start(socat, {QStringLiteral("pty,raw,echo=0,link=") + a,
-                           QStringLiteral("pty,raw,echo=0,link=") + b});
-    if (!process->waitForStarted(5000))
-        return nullptr;
-    QDeadlineTimer deadline(5000);
-    while (!(QFile::exists(a) && QFile::exists(b)) && !deadline.hasExpired())
-        QTest::qWait(10);
-    return QFile::exists(a) && QFile::exists(b) ? process : nullptr;
-}
-#endif
+using TestUtil::startPtyPair;
 
 } // namespace
 
