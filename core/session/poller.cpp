@@ -332,10 +332,14 @@ void Poller::onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
         finishCycle(group);
 }
 
+qint64 Poller::recentCycle(const Group &group)
+{
+    return *std::max_element(group.recentCycleMs.begin(), group.recentCycleMs.end());
+}
+
 qint64 Poller::expectedPeriod(const Group &group)
 {
-    const qint64 recent = *std::max_element(group.recentCycleMs.begin(), group.recentCycleMs.end());
-    return std::max<qint64>(group.intervalMs, recent);
+    return std::max<qint64>(group.intervalMs, recentCycle(group));
 }
 
 qint64 Poller::lateAt(const Group &group)
@@ -349,7 +353,7 @@ void Poller::noteCycleTime(Group &group, qint64 ms)
     group.recentNext = (group.recentNext + 1) % group.recentCycleMs.size();
     // Said once per change, with a band between (1 to 1.5 x the interval) so that a cycle time
     // close to the interval does not flap the message either.
-    const qint64 recent = *std::max_element(group.recentCycleMs.begin(), group.recentCycleMs.end());
+    const qint64 recent = recentCycle(group);
     if (!group.slowed && 2 * recent > 3 * static_cast<qint64>(group.intervalMs)) {
         group.slowed = true;
         Q_EMIT effectiveIntervalChanged(group.station, group.intervalMs, static_cast<int>(recent));

@@ -37,15 +37,14 @@ namespace Fatek {
 // reason and the next try, and the other stations keep their rate. A resting station, and a
 // station of the list that never answered yet, is not polled but probed: one small request
 // (brief status, one attempt) with a short timeout of its own (probeTimeoutMs(), from the line's
-// measured round trip), sent only in the line's slack before the next due poll, so a dead
-// station never makes the other stations' items late. No answer to the probe: it rests (again).
-// A batch failing with PLC error A or 2 is split until the bad element is found; only that
-// element is marked, later plans keep it alone, and it is asked again only every
-// refusalRecheckMs, without counting as an error.
-// Late (issue 55): a group is expected every max(interval, its recent cycle time); its good
-// values are reported late when that is overdue twice over. A line slower than the interval
-// thus adapts the period once (and says so: effectiveIntervalChanged) instead of flapping
-// good/late every cycle.
+// measured round trip), sent only in the line's slack before the next due poll (or delaying it
+// by at most half its spare time), so a dead station never makes the other stations' items late. No
+// answer to the probe: it rests (again). A batch failing with PLC error A or 2 is split until the
+// bad element is found; only that element is marked, later plans keep it alone, and it is asked
+// again only every refusalRecheckMs, without counting as an error. Late (issue 55): a group is
+// expected every max(interval, its recent cycle time); its good values are reported late when that
+// is overdue twice over. A line slower than the interval thus adapts the period once (and says so:
+// effectiveIntervalChanged) instead of flapping good/late every cycle.
 class Poller : public QObject
 {
     Q_OBJECT
@@ -58,7 +57,7 @@ public:
     // Bounds of a probe's timeout (probeTimeoutMs()). A probe waits for slack at most one more
     // rest (demotionMs) past its due time, then goes anyway: a line with no slack must not keep a
     // station resting for ever.
-    static constexpr int probeMinMs = 100;
+    static constexpr int probeMinMs = 50;
     static constexpr int probeRoundTrips = 4;
 
     struct Policy
@@ -161,6 +160,7 @@ private:
     Message demotedReason(quint8 station) const;
     void reportLate(Group &group, qint64 now);
     // The period a group can keep on this line, and when its values become late.
+    static qint64 recentCycle(const Group &group); // the longest of the last few cycles
     static qint64 expectedPeriod(const Group &group);
     static qint64 lateAt(const Group &group);
     void noteCycleTime(Group &group, qint64 ms);

@@ -34,7 +34,8 @@ void Poller::noteAnswer(quint8 station, const SessionResult &result)
     }
     ++health.unanswered;
     // A resting station whose probe is unanswered rests again; another rests after demoteAfter
-    // requests in a row (a station new to the list: probes, in the slack, but for the first one).
+    // requests in a row (for a station new to the list these are probes: only the first one can
+    // hold the line, the others wait for its slack).
     if (m_policy.demoteAfter <= 0)
         return;
     if (health.demoted ? !health.trialOut : health.unanswered < m_policy.demoteAfter)
@@ -146,17 +147,20 @@ std::optional<qint64> Poller::probeAt(const StationHealth &health, qint64 now) c
     const qint64 at = std::max(health.until, now);
     if (at >= health.until + m_policy.demotionMs)
         return at; // waited a whole rest for slack: the line has none
-    // The slack: no polled group on the line, and the probe's timeout ends before the next one
-    // is due.
-    std::optional<qint64> nextDue;
+    // The slack: no polled group on the line, and the probe's timeout ends before each one's
+    // next cycle is due, or delays it by at most half of its spare time (interval minus cycle
+    // time): it then neither loses an update nor turns late.
+    std::optional<qint64> latest;
     for (const auto &[key, group] : m_groups) {
         if (!isPolled(group.station))
             continue;
         if (group.inFlight)
             return std::nullopt;
-        nextDue = nextDue ? std::min(*nextDue, group.deadline) : group.deadline;
+        const qint64 spare = std::max<qint64>(0, group.intervalMs - recentCycle(group));
+        const qint64 until = group.deadline + spare / 2;
+        latest = latest ? std::min(*latest, until) : until;
     }
-    if (nextDue && at + probeTimeoutMs() > *nextDue)
+    if (latest && at + probeTimeoutMs() > *latest)
         return std::nullopt;
     return at;
 }
