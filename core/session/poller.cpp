@@ -129,7 +129,7 @@ void Poller::reschedule()
                 continue;
             // No slack now: a cycle's end reschedules; past one more rest it goes anyway.
             const std::optional<qint64> at = probeAt(health, now);
-            consider(at ? *at : health.until + m_policy.demotionMs);
+            consider(at ? *at : health.until + probePatience(health));
         }
     }
     if (!next)

@@ -54,8 +54,8 @@ public:
                                               std::function<void(const SessionResult &)>)>;
     static constexpr qint64 refusalRecheckMs = 60000;
 
-    // Bounds of a probe's timeout (probeTimeoutMs()). A probe waits for slack at most one more
-    // rest (demotionMs) past its due time, then goes anyway: a line with no slack must not keep a
+    // Bounds of a probe's timeout (probeTimeoutMs()). A probe waits for slack at most
+    // probePatience() past its due time, then goes anyway: a line with no slack must not keep a
     // station resting for ever.
     static constexpr int probeMinMs = 50;
     static constexpr int probeRoundTrips = 4;
@@ -170,6 +170,8 @@ private:
     bool isPolled(quint8 station) const;
     bool probeOut() const;
     std::optional<qint64> probeAt(const StationHealth &health, qint64 now) const;
+    // How long past its due time a probe waits for slack before it goes anyway.
+    qint64 probePatience(const StationHealth &health) const;
     void submitProbe(quint8 station);
     void onProbeDone(quint8 station, quint64 probe, const SessionResult &result);
     void finishCycle(Group &group);

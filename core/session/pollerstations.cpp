@@ -142,11 +142,18 @@ bool Poller::probeOut() const
                        [](const auto &entry) { return entry.second.trialOut; });
 }
 
+qint64 Poller::probePatience(const StationHealth &health) const
+{
+    // A resting station can wait one more rest; a new one waits one timeout between its probes,
+    // or a busy line would keep its items without a word for many rests.
+    return health.demoted ? m_policy.demotionMs : m_policy.timeoutMs;
+}
+
 std::optional<qint64> Poller::probeAt(const StationHealth &health, qint64 now) const
 {
     const qint64 at = std::max(health.until, now);
-    if (at >= health.until + m_policy.demotionMs)
-        return at; // waited a whole rest for slack: the line has none
+    if (at >= health.until + probePatience(health))
+        return at; // the line has no slack for it
     // The slack: no polled group on the line, and the probe's timeout ends before each one's
     // next cycle is due, or delays it by at most half of its spare time (interval minus cycle
     // time): it then neither loses an update nor turns late.
