@@ -33,18 +33,21 @@ namespace Fatek {
 // two poll requests.
 //
 // Field faults (issue 31, issue 54): a station that leaves `demoteAfter` requests in a row
-// unanswered is demoted: it rests for `demotionMs`; meanwhile its items are stale with the
-// reason and the next try, and the other stations keep their rate. A resting station, and a
-// station of the list that never answered yet, is not polled but probed: one small request
-// (brief status, one attempt) with a short timeout of its own (probeTimeoutMs(), from the line's
-// measured round trip), sent only in the line's slack before the next due poll (or delaying it
-// by at most half its spare time), so a dead station never makes the other stations' items late. No
-// answer to the probe: it rests (again). A batch failing with PLC error A or 2 is split until the
-// bad element is found; only that element is marked, later plans keep it alone, and it is asked
-// again only every refusalRecheckMs, without counting as an error. Late (issue 55): a group is
-// expected every max(interval, its recent cycle time); its good values are reported late when that
-// is overdue twice over. A line slower than the interval thus adapts the period once (and says so:
-// effectiveIntervalChanged) instead of flapping good/late every cycle.
+// unanswered is demoted: it rests for `demotionMs`; meanwhile its items are stale with the reason
+// and the next try, and the other stations keep their rate. A resting station, and a station of
+// the list that never answered yet, is not polled but probed: one small request (brief status,
+// one attempt) with a short timeout of its own (probeTimeoutMs(), from the line's measured round
+// trip), sent only in the line's slack before the next due poll (or delaying it by at most half
+// its spare time), so a dead station never makes the other stations' items late. No answer to the
+// probe: it rests (again).
+//
+// A batch failing with PLC error A or 2 is split until the bad element is found; only that
+// element is marked, later plans keep it alone, and it is asked again only every
+// refusalRecheckMs, without counting as an error.
+//
+// Late (issue 55): a group is expected every max(interval, its recent cycle time); its good values
+// are reported late when that is overdue twice over. A line slower than the interval thus adapts
+// the period once (and says so: effectiveIntervalChanged) instead of flapping good/late.
 class Poller : public QObject
 {
     Q_OBJECT
