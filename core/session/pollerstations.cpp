@@ -73,6 +73,7 @@ void Poller::noteAnswer(quint8 station, const SessionResult &result)
         if (!batch.isEmpty())
             Q_EMIT values(batch);
     }
+    reschedule(); // its probe, when the rest ends
 }
 
 bool Poller::isSuspect(quint8 station) const
@@ -189,8 +190,11 @@ void Poller::submitProbe(quint8 station)
 void Poller::onProbeDone(quint8 station, quint64 probe, const SessionResult &result)
 {
     const auto it = m_health.find(station);
-    if (it == m_health.end() || it->second.probe != probe || !it->second.trialOut)
-        return; // the list changed, or another answer ended the rest meanwhile
+    if (it == m_health.end() || it->second.probe != probe || !it->second.trialOut) {
+        // The list changed, or other requests' answers (or silence) decided meanwhile.
+        reschedule();
+        return;
+    }
     if (!result.ok()
         && (result.errorKind() == ErrorKind::LinkError || result.errorKind() == ErrorKind::Cancelled
             || result.errorKind() == ErrorKind::Expired)) {
