@@ -1,6 +1,7 @@
 #include "testutil.h"
 
 #include <QCoreApplication>
+#include <QDeadlineTimer>
 #include <QDir>
 #include <QEventLoop>
 #include <QFile>
@@ -9,7 +10,9 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStringList>
+#include <QThread>
 #include <QTimer>
 
 #ifdef Q_OS_WIN
@@ -226,6 +229,27 @@ void startConsoleProgram(QProcess *process, const QString &program, const QStrin
         [](QProcess::CreateProcessArguments *args) { args->flags |= CREATE_NEW_PROCESS_GROUP; });
 #endif
     process->start(program, arguments);
+}
+
+std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b)
+{
+    const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
+    if (socat.isEmpty())
+        return nullptr;
+    std::shared_ptr<QProcess> process(new QProcess, [](QProcess *p) {
+        p->terminate();
+        p->waitForFinished(5000);
+        delete p;
+    });
+    process->start(socat, {QStringLiteral("pty,raw,echo=0,link=") + a,
+                           QStringLiteral("pty,raw,echo=0,link=") + b});
+    if (!process->waitForStarted(5000))
+        return nullptr;
+    // socat makes the links itself: nothing of ours needs the event loop meanwhile.
+    QDeadlineTimer deadline(5000);
+    while (!(QFile::exists(a) && QFile::exists(b)) && !deadline.hasExpired())
+        QThread::msleep(10);
+    return QFile::exists(a) && QFile::exists(b) ? process : nullptr;
 }
 
 void stopConsoleProgram(QProcess *process)

@@ -12,6 +12,7 @@
 class QProcess;
 
 #include <cstring>
+#include <memory>
 #include <span>
 
 namespace TestUtil {
@@ -62,6 +63,10 @@ QString hostPath(const QString &path);
 // Starts a console program (fatek-gateway, fatek-sim) so that stopConsoleProgram() can ask it to
 // stop as a user would. On Windows it gets a process group of its own, the target of a Ctrl-Break.
 void startConsoleProgram(QProcess *process, const QString &program, const QStringList &arguments);
+// Starts `socat` with a pty pair linked at `a` and `b` (stopped when the last copy goes); null
+// when socat is missing or fails.
+std::shared_ptr<QProcess> startPtyPair(const QString &a, const QString &b);
+
 // SIGTERM on Unix; on Windows a Ctrl-Break (QProcess::terminate() sends WM_CLOSE there, which a
 // console program, having no window, never gets). The program's stop path is the same as for a
 // user's Ctrl-C.

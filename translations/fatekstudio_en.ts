@@ -836,6 +836,14 @@
             <translation>station %1 answers again; polled as usual</translation>
         </message>
         <message>
+            <source>station %1: items polled every %2 ms are read every %3 ms, as fast as the line allows; late is counted from that</source>
+            <translation>station %1: items polled every %2 ms are read every %3 ms, as fast as the line allows; late is counted from that</translation>
+        </message>
+        <message>
+            <source>station %1: items polled every %2 ms are read on time again</source>
+            <translation>station %1: items polled every %2 ms are read on time again</translation>
+        </message>
+        <message>
             <source>Empty address: type an element such as R12 or X0.</source>
             <translation>Empty address: type an element such as R12 or X0.</translation>
         </message>

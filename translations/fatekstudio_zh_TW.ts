@@ -833,6 +833,14 @@
             <translation>站號 %1 已恢復回應；恢復正常輪詢</translation>
         </message>
         <message>
+            <source>station %1: items polled every %2 ms are read every %3 ms, as fast as the line allows; late is counted from that</source>
+            <translation>站號 %1：每 %2 毫秒輪詢的項目實際每 %3 毫秒讀取一次，已是線路最快速度；延遲由此起算</translation>
+        </message>
+        <message>
+            <source>station %1: items polled every %2 ms are read on time again</source>
+            <translation>站號 %1：每 %2 毫秒輪詢的項目已恢復準時讀取</translation>
+        </message>
+        <message>
             <source>Empty address: type an element such as R12 or X0.</source>
             <translation>位址空白：請輸入元件，例如 R12 或 X0。</translation>
         </message>

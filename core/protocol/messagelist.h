@@ -211,6 +211,15 @@ FATEK_MSG(LogStationDemoted, 3,
                             "at %3"))
 FATEK_MSG(LogStationAnswersAgain, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "station %1 answers again; polled as usual"))
+// A line slower than a poll interval (issue 55): %1 the station, %2 the interval asked (ms), %3 the
+// period the line gives (ms), from which "late" is counted.
+FATEK_MSG(LogPollSlower, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "station %1: items polled every %2 ms are read every %3 ms, as fast "
+                            "as the line allows; late is counted from that"))
+FATEK_MSG(LogPollOnTime, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "station %1: items polled every %2 ms are read on time again"))
 
 // Addresses typed by the user.
 FATEK_MSG(AddressEmpty, 0,

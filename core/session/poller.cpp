@@ -1,16 +1,11 @@
 #include "poller.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace Fatek {
 
 namespace {
-
-// Nobody answered at all. A refusal, a damaged frame or a wrong answer means someone is there.
-bool noAnswer(const SessionResult &result)
-{
-    return !result.ok() && result.errorKind() == ErrorKind::Timeout;
-}
 
 QString secondsText(qint64 ms)
 {
@@ -64,7 +59,7 @@ void Poller::setWatchList(const QList<WatchEntry> &entries)
     // A station that left the list starts afresh if it comes back.
     for (auto it = m_health.begin(); it != m_health.end();) {
         if (stations.contains(it->first)) {
-            it->second.trialOut = false; // a trial of the old list is answered to nobody
+            it->second.trialOut = false; // a probe of the old list is answered to nobody
             ++it;
             continue;
         }
@@ -73,6 +68,12 @@ void Poller::setWatchList(const QList<WatchEntry> &entries)
         it = m_health.erase(it);
     }
     const qint64 now = m_clock.elapsed();
+    // A station new to the list is probed first; its probe is due from now.
+    for (const quint8 station : stations) {
+        if (const auto [it, added] = m_health.try_emplace(station); added)
+            it->second.until = now;
+    }
+    m_stations = std::move(stations);
     for (auto &[key, group] : m_groups) {
         group.generation = ++m_generation;
         group.deadline = now;
@@ -115,14 +116,25 @@ void Poller::reschedule()
         next = next ? std::min(*next, at) : at;
     };
     for (const auto &[key, group] : m_groups) {
-        if (!group.inFlight)
+        if (!group.inFlight && isPolled(group.station))
             consider(group.deadline);
         if (!group.lateReported && !group.goodLastTime.empty())
-            consider(group.lastDelivery + 2 * group.intervalMs);
+            consider(lateAt(group));
+    }
+    const qint64 now = m_clock.elapsed();
+    if (!probeOut()) {
+        for (const quint8 station : m_stations) {
+            const StationHealth &health = m_health[station];
+            if (!needsProbe(health))
+                continue;
+            // No slack now: a cycle's end reschedules; past one more rest it goes anyway.
+            const std::optional<qint64> at = probeAt(health, now);
+            consider(at ? *at : health.until + probePatience(health));
+        }
     }
     if (!next)
         return;
-    m_timer.start(static_cast<int>(std::max<qint64>(0, *next - m_clock.elapsed())));
+    m_timer.start(static_cast<int>(std::max<qint64>(0, *next - now)));
 }
 
 void Poller::onTimer()
@@ -131,12 +143,25 @@ void Poller::onTimer()
         return;
     const qint64 now = m_clock.elapsed();
     for (auto &[key, group] : m_groups) {
-        if (!group.inFlight && group.deadline <= now)
+        if (!group.inFlight && group.deadline <= now && isPolled(group.station))
             startCycle(group);
     }
     for (auto &[key, group] : m_groups) {
-        if (!group.lateReported && now >= group.lastDelivery + 2 * group.intervalMs)
+        if (!group.lateReported && !group.goodLastTime.empty() && now >= lateAt(group))
             reportLate(group, now);
+    }
+    // One probe at a time, after the due cycles have taken the line; the longest due first.
+    if (!probeOut()) {
+        std::optional<quint8> first;
+        for (const quint8 station : m_stations) {
+            const StationHealth &health = m_health[station];
+            if (!needsProbe(health) || (first && m_health[*first].until <= health.until))
+                continue;
+            if (const std::optional<qint64> at = probeAt(health, now); at && *at <= now)
+                first = station;
+        }
+        if (first)
+            submitProbe(*first);
     }
     reschedule();
 }
@@ -153,6 +178,12 @@ std::set<StationAddress> Poller::elementsOf(const PlanStep &step)
     return elements;
 }
 
+bool Poller::noAnswer(const SessionResult &result)
+{
+    // Nobody answered at all. A refusal, a damaged frame or a wrong answer means someone is there.
+    return !result.ok() && result.errorKind() == ErrorKind::Timeout;
+}
+
 bool Poller::isRefusal(const PlanStep &step) const
 {
     // Isolated elements are planned alone: a step of one refused element.
@@ -165,17 +196,6 @@ bool Poller::isRefusal(const PlanStep &step) const
 void Poller::startCycle(Group &group)
 {
     const qint64 now = m_clock.elapsed();
-    StationHealth &health = m_health[group.station];
-    group.trial = false;
-    if (health.demoted) {
-        if (now < health.until || health.trialOut) {
-            // Resting (its items already say so), or another group is trying the station.
-            group.deadline = health.trialOut ? now + group.intervalMs : health.until;
-            return;
-        }
-        health.trialOut = true;
-        group.trial = true;
-    }
     group.inFlight = true;
     group.cycleStart = now;
     // A new list every cycle: the last one went out as the batch, and its receivers on other
@@ -226,107 +246,6 @@ void Poller::submitNext(Group &group)
     group.submitting = false;
     if (group.outstanding == 0 && group.pending.empty() && group.inFlight)
         finishCycle(group);
-}
-
-void Poller::noteAnswer(quint8 station, const SessionResult &result)
-{
-    StationHealth &health = m_health[station];
-    if (!noAnswer(result)) {
-        if (!result.ok()
-            && (result.errorKind() == ErrorKind::LinkError
-                || result.errorKind() == ErrorKind::Cancelled))
-            return; // says nothing about the station
-        const bool wasDemoted = health.demoted;
-        health = StationHealth{};
-        if (wasDemoted) {
-            Q_EMIT stationHealthChanged(station, false, {}, 0);
-            const qint64 now = m_clock.elapsed();
-            for (auto &[key, group] : m_groups) {
-                if (group.station == station && !group.inFlight)
-                    group.deadline = std::min(group.deadline, now);
-            }
-        }
-        return;
-    }
-    ++health.unanswered;
-    const bool trialFailed = health.demoted && health.trialOut;
-    if (m_policy.demoteAfter <= 0
-        || (!trialFailed && (health.demoted || health.unanswered < m_policy.demoteAfter)))
-        return;
-    const qint64 now = m_clock.elapsed();
-    health.demoted = true;
-    health.trialOut = false;
-    health.until = now + m_policy.demotionMs;
-    Q_EMIT stationHealthChanged(station, true,
-                                QDateTime::currentDateTimeUtc().addMSecs(m_policy.demotionMs),
-                                health.unanswered);
-    const QDateTime wallNow = QDateTime::currentDateTimeUtc();
-    for (auto &[key, group] : m_groups) {
-        if (group.station != station)
-            continue;
-        if (group.inFlight) {
-            // The rest of the cycle is not sent: the station would only hold up the line.
-            markDemoted(group, {group.pending.begin(), group.pending.end()});
-            group.pending.clear();
-            continue;
-        }
-        // Resting groups say so at once, with the next try.
-        const Message reason = demotedReason(station);
-        QList<WatchValue> batch;
-        batch.reserve(static_cast<qsizetype>(group.items.size()));
-        for (std::size_t i = 0; i < group.items.size(); ++i) {
-            const LastGood &last = group.lastGood[i];
-            batch.append({group.items[i].id, last.value,
-                          last.timestamp.isValid() ? last.timestamp : wallNow, ValueQuality::Stale,
-                          reason});
-        }
-        group.goodLastTime.clear();
-        group.lastDelivery = now;
-        group.deadline = health.until;
-        if (!batch.isEmpty())
-            Q_EMIT values(batch);
-    }
-}
-
-bool Poller::isSuspect(quint8 station) const
-{
-    const auto it = m_health.find(station);
-    return it != m_health.end() && it->second.unanswered > 0;
-}
-
-bool Poller::isResting(quint8 station, Message *reason) const
-{
-    const auto it = m_health.find(station);
-    if (it == m_health.end() || !it->second.demoted)
-        return false;
-    if (reason)
-        *reason = demotedReason(station);
-    return true;
-}
-
-Message Poller::demotedReason(quint8 station) const
-{
-    const auto it = m_health.find(station);
-    const StationHealth health = it != m_health.end() ? it->second : StationHealth{};
-    const QDateTime next = QDateTime::currentDateTime().addMSecs(
-        std::max<qint64>(0, health.until - m_clock.elapsed()));
-    return msg<MsgId::SessionStationDemoted>(
-        station, health.unanswered, next.toString(QStringLiteral("HH:mm:ss")).toStdString());
-}
-
-void Poller::markDemoted(Group &group, const std::vector<PlanStep> &steps)
-{
-    const Message reason = demotedReason(group.station);
-    for (const PlanStep &step : steps) {
-        for (const PlanSlot &slot : step.itemSlots) {
-            const LastGood &last = group.lastGood[slot.itemIndex];
-            setCycleValue(
-                group, slot.itemIndex,
-                {slot.itemId, last.value,
-                 last.timestamp.isValid() ? last.timestamp : QDateTime::currentDateTimeUtc(),
-                 ValueQuality::Stale, reason});
-        }
-    }
 }
 
 void Poller::onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
@@ -413,6 +332,37 @@ void Poller::onStepDone(GroupKey key, quint64 generation, const PlanStep &step,
         finishCycle(group);
 }
 
+qint64 Poller::recentCycle(const Group &group)
+{
+    return *std::max_element(group.recentCycleMs.begin(), group.recentCycleMs.end());
+}
+
+qint64 Poller::expectedPeriod(const Group &group)
+{
+    return std::max<qint64>(group.intervalMs, recentCycle(group));
+}
+
+qint64 Poller::lateAt(const Group &group)
+{
+    return group.lastDelivery + 2 * expectedPeriod(group);
+}
+
+void Poller::noteCycleTime(Group &group, qint64 ms)
+{
+    group.recentCycleMs[group.recentNext] = ms;
+    group.recentNext = (group.recentNext + 1) % group.recentCycleMs.size();
+    // Said once per change, with a band between (1 to 1.5 x the interval) so that a cycle time
+    // close to the interval does not flap the message either.
+    const qint64 recent = recentCycle(group);
+    if (!group.slowed && 2 * recent > 3 * static_cast<qint64>(group.intervalMs)) {
+        group.slowed = true;
+        Q_EMIT effectiveIntervalChanged(group.station, group.intervalMs, static_cast<int>(recent));
+    } else if (group.slowed && recent <= group.intervalMs) {
+        group.slowed = false;
+        Q_EMIT effectiveIntervalChanged(group.station, group.intervalMs, group.intervalMs);
+    }
+}
+
 void Poller::reportLate(Group &group, qint64 now)
 {
     group.lateReported = true;
@@ -422,9 +372,9 @@ void Poller::reportLate(Group &group, qint64 now)
         const LastGood &last = group.lastGood[index];
         const qint64 age
             = last.timestamp.isValid() ? last.timestamp.msecsTo(wallNow) : now - group.lastDelivery;
-        batch.append(
-            {group.items[index].id, last.value, last.timestamp, ValueQuality::Late,
-             msg<MsgId::SessionValueLate>(secondsText(age).toStdString(), group.intervalMs)});
+        batch.append({group.items[index].id, last.value, last.timestamp, ValueQuality::Late,
+                      msg<MsgId::SessionValueLate>(secondsText(age).toStdString(),
+                                                   static_cast<int>(expectedPeriod(group)))});
     }
     group.goodLastTime.clear();
     if (!batch.isEmpty())
@@ -467,15 +417,8 @@ void Poller::finishCycle(Group &group)
         }
     }
     group.inFlight = false;
-    StationHealth &health = m_health[group.station];
-    if (group.trial) {
-        group.trial = false;
-        if (health.trialOut) {
-            // The trial got no verdict (the link went, or nothing was asked): try again.
-            health.trialOut = false;
-            health.until = std::min(health.until, now);
-        }
-    }
+    const StationHealth &health = m_health[group.station];
+    noteCycleTime(group, now - group.cycleStart);
     if (group.replan)
         replan(group);
     // Absolute deadlines: the next cycle is one interval after the previous deadline, or right

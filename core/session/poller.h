@@ -16,6 +16,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <array>
 #include <deque>
 #include <functional>
 #include <map>
@@ -31,12 +32,22 @@ namespace Fatek {
 // at a time, so the stations of a line take turns and one-shot requests get the line between any
 // two poll requests.
 //
-// Field faults (issue 31): a station that leaves `demoteAfter` requests in a row unanswered is
-// demoted: not polled for `demotionMs`, then tried once; meanwhile its items are stale with the
-// reason and the next try, and the other stations keep their rate. A batch failing with PLC
-// error A or 2 is split until the bad element is found; only that element is marked, later plans
-// keep it alone, and it is asked again only every refusalRecheckMs, without counting as an error.
-// A group whose cycle is overdue by twice its interval reports its good values as late.
+// Field faults (issue 31, issue 54): a station that leaves `demoteAfter` requests in a row
+// unanswered is demoted: it rests for `demotionMs`; meanwhile its items are stale with the reason
+// and the next try, and the other stations keep their rate. A resting station, and a station of
+// the list that never answered yet, is not polled but probed: one small request (brief status,
+// one attempt) with a short timeout of its own (probeTimeoutMs(), from the line's measured round
+// trip), sent only in the line's slack before the next due poll (or delaying it by at most half
+// its spare time), so a dead station never makes the other stations' items late. No answer to the
+// probe: it rests (again).
+//
+// A batch failing with PLC error A or 2 is split until the bad element is found; only that
+// element is marked, later plans keep it alone, and it is asked again only every
+// refusalRecheckMs, without counting as an error.
+//
+// Late (issue 55): a group is expected every max(interval, its recent cycle time); its good values
+// are reported late when that is overdue twice over. A line slower than the interval thus adapts
+// the period once (and says so: effectiveIntervalChanged) instead of flapping good/late.
 class Poller : public QObject
 {
     Q_OBJECT
@@ -46,10 +57,19 @@ public:
                                               std::function<void(const SessionResult &)>)>;
     static constexpr qint64 refusalRecheckMs = 60000;
 
+    // Bounds of a probe's timeout (probeTimeoutMs()). A probe waits for slack at most
+    // probePatience() past its due time, then goes anyway: a line with no slack must not keep a
+    // station resting for ever.
+    static constexpr int probeMinMs = 50;
+    static constexpr int probeRoundTrips = 4;
+
     struct Policy
     {
-        int demoteAfter = 3; // 0: never demote
+        int demoteAfter = 3; // 0: never demote (and never probe)
         int demotionMs = 10000;
+        int timeoutMs = 1000; // the link's timeout: the longest a probe may wait
+        // The line's measured round trip (p99, ms; 0 while nothing was measured).
+        std::function<double()> roundTripMs;
     };
 
     explicit Poller(SubmitFunction submit, Policy policy, QObject *parent = nullptr);
@@ -70,6 +90,9 @@ public:
     // What a request of someone else told about the station (an answer ends a demotion early,
     // no answer counts towards one).
     void noteAnswer(quint8 station, const SessionResult &result);
+    // The timeout of a probe: probeRoundTrips x the line's round trip, at least probeMinMs, at
+    // most the link's timeout (which it is while nothing was measured).
+    int probeTimeoutMs() const;
 
 Q_SIGNALS:
     void values(const QList<Fatek::WatchValue> &values);
@@ -77,6 +100,10 @@ Q_SIGNALS:
     // A station was demoted (`demoted`, with the time of its next try) or answers again.
     void stationHealthChanged(quint8 station, bool demoted, const QDateTime &nextTry,
                               int unanswered);
+    // The items of a group are read every `effectiveMs` instead of every `intervalMs`: the line
+    // cannot go faster (said above 1.5 x the interval); back to `intervalMs` once the recent
+    // cycles fit in it again. Late is counted from the effective period.
+    void effectiveIntervalChanged(quint8 station, int intervalMs, int effectiveMs);
 
 private:
     using GroupKey = std::pair<int, quint8>; // interval, station
@@ -107,7 +134,10 @@ private:
         std::vector<bool> cycleFilled;
         qint64 lastDelivery = 0; // ms on m_clock: the last batch, or the group's start
         bool lateReported = false;
-        bool trial = false;                      // this cycle tries a demoted station
+        // The last few cycle times (ms): the period the group can have on this line.
+        std::array<qint64, 3> recentCycleMs{};
+        std::size_t recentNext = 0;
+        bool slowed = false;                     // effectiveIntervalChanged said it is slower
         bool submitting = false;                 // inside submitNext()
         std::vector<std::uint32_t> goodLastTime; // positions of the items good in the last batch
     };
@@ -115,8 +145,10 @@ private:
     {
         int unanswered = 0; // poll requests in a row without an answer
         bool demoted = false;
+        bool heard = false;    // answered since it joined the list: polled, not probed
         qint64 until = 0;      // ms on m_clock: end of the demotion
-        bool trialOut = false; // a group of the station is trying it
+        bool trialOut = false; // a probe of the station is out
+        quint64 probe = 0;     // which probe (a result of an earlier list's probe is ignored)
     };
 
     void replan(Group &group);
@@ -130,16 +162,34 @@ private:
     void markDemoted(Group &group, const std::vector<PlanStep> &steps);
     Message demotedReason(quint8 station) const;
     void reportLate(Group &group, qint64 now);
+    // The period a group can keep on this line, and when its values become late.
+    static qint64 recentCycle(const Group &group); // the longest of the last few cycles
+    static qint64 expectedPeriod(const Group &group);
+    static qint64 lateAt(const Group &group);
+    void noteCycleTime(Group &group, qint64 ms);
+    // Stations not polled but probed (resting, or never answered), and when a probe may go:
+    // nullopt while the line has no slack for it.
+    bool needsProbe(const StationHealth &health) const;
+    bool isPolled(quint8 station) const;
+    bool probeOut() const;
+    std::optional<qint64> probeAt(const StationHealth &health, qint64 now) const;
+    // How long past its due time a probe waits for slack before it goes anyway.
+    qint64 probePatience(const StationHealth &health) const;
+    void submitProbe(quint8 station);
+    void onProbeDone(quint8 station, quint64 probe, const SessionResult &result);
     void finishCycle(Group &group);
     static void setCycleValue(Group &group, std::uint32_t index, WatchValue value);
     static std::set<StationAddress> elementsOf(const PlanStep &step);
     bool isRefusal(const PlanStep &step) const;
+    static bool noAnswer(const SessionResult &result);
 
     SubmitFunction m_submit;
     Policy m_policy;
     std::optional<PollPlanner> m_planner;
     std::map<GroupKey, Group> m_groups;
     std::map<quint8, StationHealth> m_health;
+    std::set<quint8> m_stations; // the stations of the list
+    quint64 m_probes = 0;
     std::set<StationAddress> m_isolated;
     // Isolated elements: the refusal to show, and when to ask again (ms on m_clock).
     struct Refusal

@@ -54,9 +54,20 @@ SessionWorker::SessionWorker(const LinkSettings &settings, std::shared_ptr<Sessi
             job.done = std::move(done);
             enqueue(std::move(job));
         },
-        {m_settings.demoteAfter, m_settings.demotionMs}, this);
+        {m_settings.demoteAfter, m_settings.demotionMs, m_settings.timeoutMs,
+         [this] {
+             return m_statistics.roundTripP99Ms();
+         }},
+        this);
     connect(m_poller, &Poller::values, this, &SessionWorker::values);
     connect(m_poller, &Poller::stationHealthChanged, this, &SessionWorker::onStationHealth);
+    connect(m_poller, &Poller::effectiveIntervalChanged, this,
+            [this](quint8 station, int intervalMs, int effectiveMs) {
+                m_log->append(TrafficEntry::Direction::Event, {},
+                              effectiveMs > intervalMs
+                                  ? msg<MsgId::LogPollSlower>(station, intervalMs, effectiveMs)
+                                  : msg<MsgId::LogPollOnTime>(station, intervalMs));
+            });
     connect(m_poller, &Poller::cycleCompleted, this, [this](double ms) {
         m_statistics.pollCycle(ms);
         m_statistics.publish();

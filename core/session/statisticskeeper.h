@@ -33,6 +33,8 @@ public:
     // Noise the deframers skipped.
     void discardNoise(quint64 bytes);
     void pollCycle(double ms);
+    // The line's round trip, p99 over the last answers (0 while none was measured).
+    double roundTripP99Ms() const { return m_statistics.total.rttP99Ms; }
     void linkLost();
     void stationHealth(quint8 station, bool demoted, const QDateTime &nextTry);
     void reset();

@@ -361,14 +361,16 @@ private Q_SLOTS:
         QVERIFY(!mark.data(Qt::DecorationRole).isValid());
     }
 
-    // Issue 31.1: a PLC answering after 200 ms, polled every 50 ms: between answers the row keeps
-    // its last value and says "late", then "good" again with the next answer.
+    // Issue 31.1: a PLC polled every 50 ms whose answers now and then come 300 ms late (a stalled
+    // line): meanwhile the row keeps its last value and says "late", then "good" again with the
+    // next answer. (A line always slower than the interval adapts the period instead, issue 55.)
     void lateValuesShowAsLate()
     {
         DemoPlc plc;
         QVERIFY(plc.port != 0);
         FaultConfig faults;
-        faults.latencyMs = 200;
+        faults.spikeRate = 0.3;
+        faults.spikeMs = 300;
         plc.server.setFaults(faults);
         WatchTableWidget *table = openTable(plc.port, QStringLiteral("R0"));
         QVERIFY(table);
