@@ -2688,6 +2688,35 @@
             <source>(no port)</source>
             <translation>(no port)</translation>
         </message>
+        <message>
+            <source>OS %1</source>
+            <translation>OS %1</translation>
+        </message>
+        <message>
+            <source>program %1 words</source>
+            <translation>program %1 words</translation>
+        </message>
+        <message>
+            <source>%1 I/O points</source>
+            <translation>%1 I/O points</translation>
+        </message>
+        <message>
+            <source>main unit type %1</source>
+            <translation>main unit type %1</translation>
+        </message>
+        <message>
+            <source>M series</source>
+            <translation>M series</translation>
+        </message>
+        <message>
+            <source>FBs series</source>
+            <translation>FBs series</translation>
+        </message>
+        <message>
+            <source>, </source>
+            <comment>between the parts of a model text</comment>
+            <translation>, </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::SavedConnection</name>
@@ -3625,6 +3654,18 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>%1 words</source>
             <translation>%1 words</translation>
+        </message>
+        <message>
+            <source>The link is %1: RUN/STOP waits for it to connect.</source>
+            <translation>The link is %1: RUN/STOP waits for it to connect.</translation>
+        </message>
+        <message>
+            <source>M series (the unit does not report its type)</source>
+            <translation>M series (the unit does not report its type)</translation>
+        </message>
+        <message>
+            <source>not reported</source>
+            <translation>not reported</translation>
         </message>
     </context>
     <context>
@@ -4580,21 +4621,29 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Recorded in the history (deadband %1, heartbeat %2 s)</source>
             <translation>Recorded in the history (deadband %1, heartbeat %2 s)</translation>
         </message>
+        <message>
+            <source>ON</source>
+            <translation>ON</translation>
+        </message>
+        <message>
+            <source>OFF</source>
+            <translation>OFF</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableEdits</name>
         <message numerus="yes">
             <source>Add %n item(s)</source>
             <translation>
-                <numerusform>Add %n item(s)</numerusform>
-                <numerusform>Add %n item(s)</numerusform>
+                <numerusform>Add %n item</numerusform>
+                <numerusform>Add %n items</numerusform>
             </translation>
         </message>
         <message numerus="yes">
             <source>Remove %n item(s)</source>
             <translation>
-                <numerusform>Remove %n item(s)</numerusform>
-                <numerusform>Remove %n item(s)</numerusform>
+                <numerusform>Remove %n item</numerusform>
+                <numerusform>Remove %n items</numerusform>
             </translation>
         </message>
         <message>
@@ -4608,8 +4657,8 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message numerus="yes">
             <source>Move %n item(s)</source>
             <translation>
-                <numerusform>Move %n item(s)</numerusform>
-                <numerusform>Move %n item(s)</numerusform>
+                <numerusform>Move %n item</numerusform>
+                <numerusform>Move %n items</numerusform>
             </translation>
         </message>
         <message>
@@ -4739,9 +4788,25 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message numerus="yes">
             <source>Copied %n row(s).</source>
             <translation>
-                <numerusform>Copied %n row(s).</numerusform>
-                <numerusform>Copied %n row(s).</numerusform>
+                <numerusform>Copied %n row.</numerusform>
+                <numerusform>Copied %n rows.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>Resume</translation>
+        </message>
+        <message>
+            <source>Poll this table again</source>
+            <translation>Poll this table again</translation>
+        </message>
+        <message>
+            <source>Rows move only in own order: clear the filter, choose Own Order.</source>
+            <translation>Rows move only in own order: clear the filter, choose Own Order.</translation>
+        </message>
+        <message>
+            <source>Operator mode is off; %1 was not written.</source>
+            <translation>Operator mode is off; %1 was not written.</translation>
         </message>
     </context>
     <context>
@@ -4975,6 +5040,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>STOP</source>
             <translation>STOP</translation>
         </message>
+        <message>
+            <source>M series</source>
+            <translation>M series</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::StationScanDialog</name>
@@ -5188,9 +5257,12 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Exported %1 differences to %2.</source>
             <translation>Exported %1 differences to %2.</translation>
         </message>
-        <message>
-            <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
-            <translation>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</translation>
+        <message numerus="yes">
+            <source>Write %1 values of the snapshot to %2 in %n request(s), then read them back?</source>
+            <translation>
+                <numerusform>Write %1 values of the snapshot to %2 in %n request, then read them back?</numerusform>
+                <numerusform>Write %1 values of the snapshot to %2 in %n requests, then read them back?</numerusform>
+            </translation>
         </message>
         <message>
             <source>The snapshot is of another model than the PLC at %1.

@@ -2684,6 +2684,35 @@
             <source>(no port)</source>
             <translation>（無連接埠）</translation>
         </message>
+        <message>
+            <source>OS %1</source>
+            <translation>OS %1</translation>
+        </message>
+        <message>
+            <source>program %1 words</source>
+            <translation>程式 %1 字組</translation>
+        </message>
+        <message>
+            <source>%1 I/O points</source>
+            <translation>%1 個 I/O 點</translation>
+        </message>
+        <message>
+            <source>main unit type %1</source>
+            <translation>主機類型 %1</translation>
+        </message>
+        <message>
+            <source>M series</source>
+            <translation>M 系列</translation>
+        </message>
+        <message>
+            <source>FBs series</source>
+            <translation>FBs 系列</translation>
+        </message>
+        <message>
+            <source>, </source>
+            <comment>between the parts of a model text</comment>
+            <translation>，</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::SavedConnection</name>
@@ -3614,6 +3643,18 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>%1 words</source>
             <translation>%1 字組</translation>
+        </message>
+        <message>
+            <source>The link is %1: RUN/STOP waits for it to connect.</source>
+            <translation>連線%1：RUN/STOP 須待連線恢復。</translation>
+        </message>
+        <message>
+            <source>M series (the unit does not report its type)</source>
+            <translation>M 系列（主機未回報其類型）</translation>
+        </message>
+        <message>
+            <source>not reported</source>
+            <translation>未回報</translation>
         </message>
     </context>
     <context>
@@ -4564,6 +4605,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Recorded in the history (deadband %1, heartbeat %2 s)</source>
             <translation>已記錄到歷史資料（不感帶 %1，心跳週期 %2 秒）</translation>
         </message>
+        <message>
+            <source>ON</source>
+            <translation>導通</translation>
+        </message>
+        <message>
+            <source>OFF</source>
+            <translation>斷開</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableEdits</name>
@@ -4719,6 +4768,22 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>
                 <numerusform>已複製 %n 列。</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>繼續</translation>
+        </message>
+        <message>
+            <source>Poll this table again</source>
+            <translation>重新輪詢此表格</translation>
+        </message>
+        <message>
+            <source>Rows move only in own order: clear the filter, choose Own Order.</source>
+            <translation>列只能在自訂順序中移動：請清除篩選並選擇「自訂順序」。</translation>
+        </message>
+        <message>
+            <source>Operator mode is off; %1 was not written.</source>
+            <translation>操作員模式已關閉；%1 未寫入。</translation>
         </message>
     </context>
     <context>
@@ -4952,6 +5017,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>STOP</source>
             <translation>停止</translation>
         </message>
+        <message>
+            <source>M series</source>
+            <translation>M 系列</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::StationScanDialog</name>
@@ -5164,9 +5233,11 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Exported %1 differences to %2.</source>
             <translation>已將 %1 筆差異匯出至 %2。</translation>
         </message>
-        <message>
-            <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
-            <translation>要以 %3 次請求將快照中的 %1 個值寫入 %2，然後回讀確認嗎？</translation>
+        <message numerus="yes">
+            <source>Write %1 values of the snapshot to %2 in %n request(s), then read them back?</source>
+            <translation>
+                <numerusform>要以 %n 次請求將快照中的 %1 個值寫入 %2，然後回讀確認嗎？</numerusform>
+            </translation>
         </message>
         <message>
             <source>The snapshot is of another model than the PLC at %1.

@@ -1,5 +1,7 @@
 #include "uitext.h"
 
+#include <QRegularExpression>
+
 namespace Fatek {
 
 namespace {
@@ -32,6 +34,31 @@ QString translated(const Message &message)
     if (message.id == MsgId::AtPlace && args.size() == 2)
         args[1] = QString::fromStdString(lowerFirst(args[1].toStdString()));
     return fill(QCoreApplication::translate(messageContext, messageTemplate(message.id)), args);
+}
+
+QString UiText::modelText(const QString &english)
+{
+    // The parts DetailStatus::summary() and PlcModel::modelText() write, joined by ", ".
+    static const QRegularExpression os(QStringLiteral("^OS (V\\S+)$"));
+    static const QRegularExpression program(QStringLiteral("^program (\\d+) words$"));
+    static const QRegularExpression points(QStringLiteral("^(\\d+) I/O points$"));
+    static const QRegularExpression unitType(QStringLiteral("^main unit type (\\d+)$"));
+    QStringList parts = english.split(QStringLiteral(", "));
+    for (QString &part : parts) {
+        if (const auto m = os.match(part); m.hasMatch())
+            part = tr("OS %1").arg(m.captured(1));
+        else if (const auto p = program.match(part); p.hasMatch())
+            part = tr("program %1 words").arg(p.captured(1));
+        else if (const auto n = points.match(part); n.hasMatch())
+            part = tr("%1 I/O points").arg(n.captured(1));
+        else if (const auto t = unitType.match(part); t.hasMatch())
+            part = tr("main unit type %1").arg(t.captured(1));
+        else if (part == QLatin1String("M series"))
+            part = tr("M series");
+        else if (part == QLatin1String("FBs series"))
+            part = tr("FBs series");
+    }
+    return parts.join(tr(", ", "between the parts of a model text"));
 }
 
 QString UiText::linkState(LinkState state)

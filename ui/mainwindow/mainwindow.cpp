@@ -161,6 +161,8 @@ void MainWindow::fitIntoScreen()
 void MainWindow::resizeEvent(QResizeEvent *event)
 {
     QMainWindow::resizeEvent(event);
+    if (m_linkStatus)
+        m_linkStatus->setRoom(width() * 2 / 5);
     // A dock shown or moved may have grown the window past the screen on its way (Qt grows a
     // window to its minimum, and never shrinks it back): once the layout has settled, fit it.
     if (isVisible())
@@ -543,7 +545,13 @@ void MainWindow::updateToolTargets()
 
 void MainWindow::showStatus(const QString &text)
 {
-    statusBar()->showMessage(text, 10000);
+    // Left of the link summary (at most 2/5 of the bar): a longer message is elided, whole in
+    // the tooltip (it was cut by the summary).
+    const int room = width() * 3 / 5 - 24;
+    statusBar()->showMessage(
+        isVisible() ? statusBar()->fontMetrics().elidedText(text, Qt::ElideRight, room) : text,
+        10000);
+    statusBar()->setToolTip(text);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
@@ -563,6 +571,10 @@ void MainWindow::applyOperatorMode(bool active)
 {
     m_readOnly = active;
     m_manager->setReadOnly(active);
+    for (WatchTableWidget *table : watchTables()) {
+        if (!active)
+            table->operatorModeEnded();
+    }
     m_document->updateWindowTitle();
     if (m_tools)
         m_tools->setTarget(currentConnection(), true);

@@ -5,6 +5,7 @@
 #include <QList>
 #include <QObject>
 #include <QPointer>
+#include <QRectF>
 
 #include <functional>
 
@@ -51,8 +52,13 @@ public:
 Q_SIGNALS:
     void statusMessage(const QString &text);
 
+public:
+    // The plot height the trend dock is given when it first shows (if the window has it).
+    int usefulPlotHeight() const;
+
 private:
     void startLoggingDialog();
+    void growPlot(const QRectF &plot);
     void updateLoggingStatus();
 
     QMainWindow *m_window;
@@ -64,6 +70,7 @@ private:
     QLabel *m_loggingLabel;
     QAction *m_startLoggingAction;
     QAction *m_stopLoggingAction;
+    bool m_growPlot = false; // the dock was just arranged: grow it once for the plot
 };
 
 } // namespace Fatek

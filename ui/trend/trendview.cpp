@@ -519,7 +519,8 @@ void TrendView::rebuildAxes()
 {
     std::vector<TrendValueAxes::Line> lines;
     for (const auto &item : m_items)
-        lines.push_back({displayName(item->spec), item->color, item->discrete});
+        lines.push_back({displayName(item->spec), item->color, item->discrete,
+                         QString::fromStdString(item->spec.address.toString())});
     const std::vector<QValueAxis *> axes = m_valueAxes.rebuild(lines, m_separateAxes);
     for (std::size_t i = 0; i < m_items.size(); ++i) {
         m_items[i]->axis = axes[i];

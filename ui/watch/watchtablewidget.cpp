@@ -119,6 +119,8 @@ QLayout *WatchTableWidget::createEntryBar()
     connect(this, &WatchTableWidget::nameChanged, this, &WatchTableWidget::edited);
     connect(m_interval, &QSpinBox::valueChanged, this, &WatchTableWidget::pushPollList);
     connect(m_pause, &QToolButton::toggled, this, [this](bool paused) {
+        m_pause->setText(paused ? tr("Resume") : tr("Pause")); // what a click does
+        m_pause->setToolTip(paused ? tr("Poll this table again") : tr("Stop polling this table"));
         pushPollList();
         if (paused)
             m_model->markAllStale(tr("polling paused"));
@@ -193,12 +195,9 @@ void WatchTableWidget::setUpView()
     m_view->setItemDelegate(delegate);
     m_view->setUpColumns();
 
-    // Rows are moved in the model's order: not while the view shows another.
-    connect(m_proxy, &WatchTableProxy::rearrangedChanged, this, [this](bool rearranged) {
-        m_view->setRowsMovable(!rearranged);
-        m_actions.moveUp->setEnabled(!rearranged);
-        m_actions.moveDown->setEnabled(!rearranged);
-    });
+    // Rows are moved in the model's order: not while the view shows another (Ctrl+Up says so).
+    connect(m_proxy, &WatchTableProxy::rearrangedChanged, this,
+            [this](bool rearranged) { m_view->setRowsMovable(!rearranged); });
     connect(m_view, &WatchTableView::rowsDropped, this,
             [this](const QList<int> &rows, int destination) {
                 QList<int> moved;
@@ -330,8 +329,10 @@ void WatchTableWidget::copySelected()
 
 void WatchTableWidget::moveSelected(int delta)
 {
-    if (m_proxy->isRearranged())
+    if (m_proxy->isRearranged()) {
+        showMessage(tr("Rows move only in own order: clear the filter, choose Own Order."), false);
         return;
+    }
     m_model->moveItems(selectedRows(), delta);
     // The current row goes along (the selection does, as persistent indexes).
     m_view->scrollTo(m_view->currentIndex());
@@ -545,6 +546,7 @@ bool WatchTableWidget::addFromText(const QString &text)
         }
     }
     m_model->addItems(items);
+    m_view->scrollTo(m_proxy->mapFromSource(m_model->index(m_model->rowCount() - 1, 0)));
     m_addEdit->clear();
     const int typed = static_cast<int>(items.size()) - companions;
     showMessage(companions == 0
@@ -565,6 +567,7 @@ bool WatchTableWidget::addFromPaste(const QString &text)
     }
     // Rows only, as new rows: a paste never writes a value to the PLC.
     m_model->addItems(*items);
+    m_view->scrollTo(m_proxy->mapFromSource(m_model->index(m_model->rowCount() - 1, 0)));
     showMessage(tr("Pasted %n item(s).", nullptr, static_cast<int>(items->size())), false);
     return true;
 }

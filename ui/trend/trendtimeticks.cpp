@@ -1,0 +1,114 @@
+#include "trendtimeticks.h"
+
+#include <QDateTime>
+#include <QtCharts/QCategoryAxis>
+#include <QtCharts/QChart>
+#include <QtCharts/QDateTimeAxis>
+
+#include <array>
+#include <cmath>
+
+namespace Fatek {
+
+namespace {
+
+constexpr qint64 secondMs = 1000;
+constexpr qint64 minuteMs = 60 * secondMs;
+constexpr qint64 hourMs = 60 * minuteMs;
+constexpr qint64 dayMs = 24 * hourMs;
+constexpr std::array<qint64, 19> roundSteps
+    = {secondMs,      2 * secondMs,  5 * secondMs, 10 * secondMs, 15 * secondMs,
+       30 * secondMs, minuteMs,      2 * minuteMs, 5 * minuteMs,  10 * minuteMs,
+       15 * minuteMs, 30 * minuteMs, hourMs,       2 * hourMs,    3 * hourMs,
+       6 * hourMs,    12 * hourMs,   dayMs,        2 * dayMs};
+
+// Where local time's round moments fall: the offset from UTC at `ms` (summer time included).
+qint64 localOffsetMs(qint64 ms)
+{
+    return qint64(QDateTime::fromMSecsSinceEpoch(ms).offsetFromUtc()) * secondMs;
+}
+
+} // namespace
+
+TrendTimeTicks::TrendTimeTicks(QChart *chart, QDateTimeAxis *timeAxis, QObject *parent)
+    : QObject(parent)
+    , m_timeAxis(timeAxis)
+    , m_axis(new QCategoryAxis(chart))
+{
+    m_axis->setObjectName(QStringLiteral("trendTimeLabels"));
+    m_axis->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+    m_axis->setLabelsFont(timeAxis->labelsFont());
+    m_axis->setGridLinePen(timeAxis->gridLinePen());
+    m_axis->setTitleVisible(false);
+    // The date-time axis keeps the series' range; its own evenly spread labels are not shown.
+    timeAxis->setVisible(false);
+    chart->addAxis(m_axis, Qt::AlignBottom);
+    connect(timeAxis, &QDateTimeAxis::rangeChanged, this, &TrendTimeTicks::update);
+    update();
+}
+
+qint64 TrendTimeTicks::stepMs(qint64 spanMs, int maxTicks)
+{
+    // n labels a step apart span (n - 1) steps; one label: the whole range per step.
+    const qint64 intervals = std::max(1, maxTicks - 1);
+    const qint64 wanted = (std::max<qint64>(spanMs, 1) + intervals - 1) / intervals;
+    for (qint64 step : roundSteps) {
+        if (step >= wanted)
+            return step;
+    }
+    return (wanted + dayMs - 1) / dayMs * dayMs; // whole days
+}
+
+QList<qint64> TrendTimeTicks::ticks(qint64 fromMs, qint64 toMs, int maxTicks)
+{
+    QList<qint64> out;
+    if (toMs <= fromMs)
+        return out;
+    const qint64 step = stepMs(toMs - fromMs, maxTicks);
+    const qint64 offset = localOffsetMs(fromMs);
+    // The first multiple of the step, in local time, at or after the start.
+    const qint64 local = fromMs + offset;
+    qint64 first = (local / step) * step;
+    if (first < local)
+        first += step;
+    for (qint64 t = first - offset; t <= toMs; t += step)
+        out << t;
+    return out;
+}
+
+void TrendTimeTicks::setFormat(const QString &format)
+{
+    if (format == m_format)
+        return;
+    m_format = format;
+    update();
+}
+
+void TrendTimeTicks::setMaxTicks(int maxTicks)
+{
+    if (maxTicks == m_maxTicks)
+        return;
+    m_maxTicks = maxTicks;
+    update();
+}
+
+void TrendTimeTicks::update()
+{
+    const qint64 fromMs = m_timeAxis->min().toMSecsSinceEpoch();
+    const qint64 toMs = m_timeAxis->max().toMSecsSinceEpoch();
+    for (const QString &label : m_axis->categoriesLabels())
+        m_axis->remove(label);
+    m_axis->setRange(double(fromMs), double(toMs));
+    m_axis->setStartValue(double(fromMs));
+    for (qint64 t : ticks(fromMs, toMs, m_maxTicks)) {
+        // A category's label is its key: the same text twice (a day's wrap in "HH:mm") gets an
+        // invisible mark to stay a label of its own.
+        QString label = QDateTime::fromMSecsSinceEpoch(t).toString(m_format);
+        while (m_axis->categoriesLabels().contains(label))
+            label += QChar(0x200B);
+        if (t > fromMs)
+            m_axis->append(label, double(t));
+    }
+}
+
+} // namespace Fatek
