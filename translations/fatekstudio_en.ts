@@ -84,8 +84,8 @@
             <translation>&amp;Host:</translation>
         </message>
         <message>
-            <source>P&amp;ort:</source>
-            <translation>P&amp;ort:</translation>
+            <source>Po&amp;rt:</source>
+            <translation>Po&amp;rt:</translation>
         </message>
         <message>
             <source>FACON (ASCII)</source>
@@ -128,8 +128,8 @@
             <translation>Pro&amp;tocol:</translation>
         </message>
         <message>
-            <source>S&amp;tation:</source>
-            <translation>S&amp;tation:</translation>
+            <source>St&amp;ation:</source>
+            <translation>St&amp;ation:</translation>
         </message>
         <message>
             <source>T&amp;imeout:</source>
@@ -208,8 +208,8 @@
             <translation>Browse…</translation>
         </message>
         <message>
-            <source>TLS C&amp;A file:</source>
-            <translation>TLS C&amp;A file:</translation>
+            <source>TLS CA &amp;file:</source>
+            <translation>TLS CA &amp;file:</translation>
         </message>
         <message>
             <source>CA Certificate</source>
@@ -2709,10 +2709,6 @@
             <translation>M series</translation>
         </message>
         <message>
-            <source>FBs series</source>
-            <translation>FBs series</translation>
-        </message>
-        <message>
             <source>, </source>
             <comment>between the parts of a model text</comment>
             <translation>, </translation>
@@ -3338,8 +3334,8 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             </translation>
         </message>
         <message>
-            <source>&amp;Reconnect Now</source>
-            <translation>&amp;Reconnect Now</translation>
+            <source>Reconn&amp;ect Now</source>
+            <translation>Reconn&amp;ect Now</translation>
         </message>
         <message>
             <source>Reconnecting %1 now…</source>
@@ -3425,8 +3421,8 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>&amp;Operator Mode (Read-Only)</translation>
         </message>
         <message>
-            <source>Operator Mode &amp;Password…</source>
-            <translation>Operator Mode &amp;Password…</translation>
+            <source>Operator Mode Pass&amp;word…</source>
+            <translation>Operator Mode Pass&amp;word…</translation>
         </message>
         <message>
             <source>Started with --read-only: operator mode stays on until the program is restarted without it.</source>
@@ -4192,8 +4188,8 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Write every value of the current watch table to a CSV file with timestamps</translation>
         </message>
         <message>
-            <source>Sto&amp;p Data Logging</source>
-            <translation>Sto&amp;p Data Logging</translation>
+            <source>Stop Data Lo&amp;gging</source>
+            <translation>Stop Data Lo&amp;gging</translation>
         </message>
         <message>
             <source>Data logging stopped: %1</source>
@@ -4455,8 +4451,8 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>%1 — Operator mode (read-only)</translation>
         </message>
         <message>
-            <source>Import &amp;Names and Comments…</source>
-            <translation>Import &amp;Names and Comments…</translation>
+            <source>Import Names and Co&amp;mments…</source>
+            <translation>Import Names and Co&amp;mments…</translation>
         </message>
         <message>
             <source>Read the names and comments of addresses from the ladder project&apos;s comment/symbol list (CSV or tab-separated text)</source>

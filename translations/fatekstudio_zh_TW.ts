@@ -84,8 +84,8 @@
             <translation>主機(&amp;H)：</translation>
         </message>
         <message>
-            <source>P&amp;ort:</source>
-            <translation>埠號(&amp;O)：</translation>
+            <source>Po&amp;rt:</source>
+            <translation>埠號(&amp;R)：</translation>
         </message>
         <message>
             <source>FACON (ASCII)</source>
@@ -128,8 +128,8 @@
             <translation>通訊協定(&amp;T)：</translation>
         </message>
         <message>
-            <source>S&amp;tation:</source>
-            <translation>站號(&amp;T)：</translation>
+            <source>St&amp;ation:</source>
+            <translation>站號(&amp;A)：</translation>
         </message>
         <message>
             <source>T&amp;imeout:</source>
@@ -208,8 +208,8 @@
             <translation>瀏覽…</translation>
         </message>
         <message>
-            <source>TLS C&amp;A file:</source>
-            <translation>TLS CA 檔案(&amp;A)：</translation>
+            <source>TLS CA &amp;file:</source>
+            <translation>TLS CA 檔案(&amp;F)：</translation>
         </message>
         <message>
             <source>CA Certificate</source>
@@ -2705,10 +2705,6 @@
             <translation>M 系列</translation>
         </message>
         <message>
-            <source>FBs series</source>
-            <translation>FBs 系列</translation>
-        </message>
-        <message>
             <source>, </source>
             <comment>between the parts of a model text</comment>
             <translation>，</translation>
@@ -3330,8 +3326,8 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             </translation>
         </message>
         <message>
-            <source>&amp;Reconnect Now</source>
-            <translation>立即重新連線(&amp;R)</translation>
+            <source>Reconn&amp;ect Now</source>
+            <translation>立即重新連線(&amp;E)</translation>
         </message>
         <message>
             <source>Reconnecting %1 now…</source>
@@ -3414,8 +3410,8 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>操作員模式（唯讀）(&amp;O)</translation>
         </message>
         <message>
-            <source>Operator Mode &amp;Password…</source>
-            <translation>操作員模式密碼(&amp;P)…</translation>
+            <source>Operator Mode Pass&amp;word…</source>
+            <translation>操作員模式密碼(&amp;W)…</translation>
         </message>
         <message>
             <source>Started with --read-only: operator mode stays on until the program is restarted without it.</source>
@@ -4180,8 +4176,8 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>將目前監看表的每個數值連同時間戳記寫入 CSV 檔</translation>
         </message>
         <message>
-            <source>Sto&amp;p Data Logging</source>
-            <translation>停止資料記錄(&amp;P)</translation>
+            <source>Stop Data Lo&amp;gging</source>
+            <translation>停止資料記錄(&amp;G)</translation>
         </message>
         <message>
             <source>Data logging stopped: %1</source>
@@ -4440,8 +4436,8 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>%1 — 操作員模式（唯讀）</translation>
         </message>
         <message>
-            <source>Import &amp;Names and Comments…</source>
-            <translation>匯入名稱與註解(&amp;N)…</translation>
+            <source>Import Names and Co&amp;mments…</source>
+            <translation>匯入名稱與註解(&amp;M)…</translation>
         </message>
         <message>
             <source>Read the names and comments of addresses from the ladder project&apos;s comment/symbol list (CSV or tab-separated text)</source>

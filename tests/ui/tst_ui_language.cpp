@@ -138,7 +138,8 @@ class TestUiLanguage : public QObject
         auto *dialog = qobject_cast<QDialog *>(m_window->openTool(QStringLiteral("connection")));
         if (!dialog)
             return {QStringLiteral("no connection dialog")};
-        QTest::qWaitForWindowExposed(dialog);
+        if (!QTest::qWaitForWindowExposed(dialog))
+            return {QStringLiteral("the connection dialog did not show")};
         auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("linkKindCombo"));
         for (int i = 0; kind && i < kind->count(); ++i) {
             kind->setCurrentIndex(i);

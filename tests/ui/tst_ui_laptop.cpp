@@ -9,7 +9,6 @@
 #include "ui/connection/connectiondialog.h"
 #include "ui/connection/connectionmanager.h"
 #include "ui/mainwindow/mainwindow.h"
-#include "ui/trend/trendlogging.h"
 #include "ui/trend/trendview.h"
 #include "ui/watch/watchtablewidget.h"
 #include "uitestutil.h"
@@ -392,15 +391,13 @@ private Q_SLOTS:
         QVERIFY(openDemo());
         auto *trend = qobject_cast<TrendView *>(m_window->openTool(QStringLiteral("trend")));
         QVERIFY(trend);
-        auto *logging = m_window->findChild<TrendLogging *>(QStringLiteral("trendLogging"));
-        QVERIFY(logging);
         QTRY_VERIFY_WITH_TIMEOUT(trend->itemCount() >= 2, longWait);
         QTest::qWait(500); // laid out, grown
         const double plot = trend->chart()->plotArea().height();
-        QVERIFY2(plot >= logging->usefulPlotHeight(),
+        QVERIFY2(plot >= trend->usefulPlotHeight(),
                  qPrintable(QStringLiteral("the plot is %1 px tall, %2 px wanted")
                                 .arg(plot)
-                                .arg(logging->usefulPlotHeight())));
+                                .arg(trend->usefulPlotHeight())));
         for (QValueAxis *axis : trend->valueAxes()) {
             QVERIFY2(TrendView::tickValues(axis).size() >= 3,
                      qPrintable(QStringLiteral("%1: %2 labels")

@@ -96,9 +96,11 @@ QStringList cutCells(const QTableView *view)
             const QString text = index.data().toString();
             if (text.isEmpty() || text.contains(QLatin1Char('\n')))
                 continue;
-            // Margins of the item, and room for an icon or a check box.
-            int room = view->columnWidth(c)
-                       - 2 * (view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin) + 1) - 2;
+            // The item's text margins (QCommonStyle: the focus frame's margin and one pixel, on
+            // each side), and room for an icon or a check box.
+            const int margin
+                = view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, view) + 1;
+            int room = view->columnWidth(c) - 2 * margin;
             if (!index.data(Qt::DecorationRole).isNull()
                 || !index.data(Qt::CheckStateRole).isNull())
                 room -= view->iconSize().isValid() ? view->iconSize().width() + 4 : 20;

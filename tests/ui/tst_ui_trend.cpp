@@ -631,19 +631,29 @@ void TestUiTrend::timeTicksAreRound()
                         3600000LL, 8 * 3600000LL, 86400000LL}) {
         for (int maxTicks = 2; maxTicks <= 7; ++maxTicks) {
             const QList<qint64> ticks = TrendTimeTicks::ticks(start, start + span, maxTicks);
-            const qint64 step = TrendTimeTicks::stepMs(span, maxTicks);
+            const qint64 step = TrendTimeTicks::stepMs(start, start + span, maxTicks);
             const QString where = QStringLiteral("span %1 ms, %2 labels: step %3, ticks %4")
                                       .arg(span)
                                       .arg(maxTicks)
                                       .arg(step)
                                       .arg(ticks.size());
             QVERIFY2(roundSteps.contains(step), qPrintable(where));
-            QVERIFY2(ticks.size() <= maxTicks, qPrintable(where));
             QVERIFY2(!ticks.isEmpty(), qPrintable(where));
+            // No more labels than fit, unless the next round step would leave none.
+            const qsizetype next = roundSteps.indexOf(step) + 1;
+            if (ticks.size() > maxTicks)
+                QVERIFY2(
+                    next < roundSteps.size()
+                        && TrendTimeTicks::ticksOfStep(start, start + span, roundSteps.at(next))
+                               .isEmpty(),
+                    qPrintable(where));
             // No smaller round step would have done.
             const qsizetype smaller = roundSteps.indexOf(step) - 1;
-            if (smaller >= 0)
-                QVERIFY2(roundSteps.at(smaller) * (maxTicks - 1) < span, qPrintable(where));
+            if (smaller >= 0 && ticks.size() <= maxTicks)
+                QVERIFY2(
+                    TrendTimeTicks::ticksOfStep(start, start + span, roundSteps.at(smaller)).size()
+                        > maxTicks,
+                    qPrintable(where));
             for (qsizetype i = 0; i < ticks.size(); ++i) {
                 QVERIFY2(ticks.at(i) >= start && ticks.at(i) <= start + span, qPrintable(where));
                 QVERIFY2((ticks.at(i) + offset) % step == 0, qPrintable(where));
@@ -652,13 +662,15 @@ void TestUiTrend::timeTicksAreRound()
             }
         }
     }
-    // The zoom: 14:37:37.4 .. 14:37:47.9 with five labels gives :40 and :45.
+    // The zoom (:38 :40 :43 :45 :47): 14:37:37.4 .. 14:37:47.9 with five labels.
     const qint64 from = start + 14000; // 14:37:37.417
     const QList<qint64> zoomed = TrendTimeTicks::ticks(from, from + 10500, 5);
     QStringList labels;
     for (qint64 t : zoomed)
         labels << QDateTime::fromMSecsSinceEpoch(t).toString(QStringLiteral("HH:mm:ss"));
-    QCOMPARE(labels, QStringList({QStringLiteral("14:37:40"), QStringLiteral("14:37:45")}));
+    QCOMPARE(labels, QStringList({QStringLiteral("14:37:38"), QStringLiteral("14:37:40"),
+                                  QStringLiteral("14:37:42"), QStringLiteral("14:37:44"),
+                                  QStringLiteral("14:37:46")}));
 }
 
 // In the chart: after a zoom the labels under the plot are round moments, evenly spaced.

@@ -55,8 +55,6 @@ QString UiText::modelText(const QString &english)
             part = tr("main unit type %1").arg(t.captured(1));
         else if (part == QLatin1String("M series"))
             part = tr("M series");
-        else if (part == QLatin1String("FBs series"))
-            part = tr("FBs series");
     }
     return parts.join(tr(", ", "between the parts of a model text"));
 }

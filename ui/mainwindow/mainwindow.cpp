@@ -217,7 +217,7 @@ void MainWindow::createActions()
         = file->addAction(QIcon(QStringLiteral(":/icons/disconnect.svg")), tr("&Close Connection"),
                           this, &MainWindow::closeCurrentConnection);
     disconnectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
-    m_reconnectAction = file->addAction(tr("&Reconnect Now"), this, [this] {
+    m_reconnectAction = file->addAction(tr("Reconn&ect Now"), this, [this] {
         if (Connection *c = currentConnection()) {
             showStatus(tr("Reconnecting %1 now…").arg(c->name()));
             c->reconnectNow();

@@ -52,10 +52,6 @@ public:
 Q_SIGNALS:
     void statusMessage(const QString &text);
 
-public:
-    // The plot height the trend dock is given when it first shows (if the window has it).
-    int usefulPlotHeight() const;
-
 private:
     void startLoggingDialog();
     void growPlot(const QRectF &plot);

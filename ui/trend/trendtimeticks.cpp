@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace Fatek {
 
@@ -47,33 +48,42 @@ TrendTimeTicks::TrendTimeTicks(QChart *chart, QDateTimeAxis *timeAxis, QObject *
     update();
 }
 
-qint64 TrendTimeTicks::stepMs(qint64 spanMs, int maxTicks)
+QList<qint64> TrendTimeTicks::ticksOfStep(qint64 fromMs, qint64 toMs, qint64 stepMs)
 {
-    // n labels a step apart span (n - 1) steps; one label: the whole range per step.
-    const qint64 intervals = std::max(1, maxTicks - 1);
-    const qint64 wanted = (std::max<qint64>(spanMs, 1) + intervals - 1) / intervals;
-    for (qint64 step : roundSteps) {
-        if (step >= wanted)
-            return step;
+    QList<qint64> out;
+    if (toMs <= fromMs || stepMs <= 0)
+        return out;
+    const qint64 offset = localOffsetMs(fromMs);
+    // The first multiple of the step, in local time, at or after the start.
+    const qint64 local = fromMs + offset;
+    qint64 first = (local / stepMs) * stepMs;
+    if (first < local)
+        first += stepMs;
+    for (qint64 t = first - offset; t <= toMs; t += stepMs)
+        out << t;
+    return out;
+}
+
+qint64 TrendTimeTicks::stepMs(qint64 fromMs, qint64 toMs, int maxTicks)
+{
+    // The smallest round step with no more labels than fit; at least one label (a step just
+    // over the range may hold none: the one before it then, with a label more than asked).
+    std::vector<qint64> steps(roundSteps.cbegin(), roundSteps.cend());
+    for (qint64 days = 7; steps.back() < toMs - fromMs; days *= 2)
+        steps.push_back(days * dayMs);
+    qint64 previous = 0;
+    for (qint64 step : steps) {
+        const qsizetype count = ticksOfStep(fromMs, toMs, step).size();
+        if (count <= std::max(1, maxTicks))
+            return count > 0 || previous == 0 ? step : previous;
+        previous = step;
     }
-    return (wanted + dayMs - 1) / dayMs * dayMs; // whole days
+    return steps.back();
 }
 
 QList<qint64> TrendTimeTicks::ticks(qint64 fromMs, qint64 toMs, int maxTicks)
 {
-    QList<qint64> out;
-    if (toMs <= fromMs)
-        return out;
-    const qint64 step = stepMs(toMs - fromMs, maxTicks);
-    const qint64 offset = localOffsetMs(fromMs);
-    // The first multiple of the step, in local time, at or after the start.
-    const qint64 local = fromMs + offset;
-    qint64 first = (local / step) * step;
-    if (first < local)
-        first += step;
-    for (qint64 t = first - offset; t <= toMs; t += step)
-        out << t;
-    return out;
+    return ticksOfStep(fromMs, toMs, stepMs(fromMs, toMs, maxTicks));
 }
 
 void TrendTimeTicks::setFormat(const QString &format)

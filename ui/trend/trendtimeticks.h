@@ -22,9 +22,12 @@ class TrendTimeTicks : public QObject
 public:
     TrendTimeTicks(QChart *chart, QDateTimeAxis *timeAxis, QObject *parent = nullptr);
 
-    // The step between labels for a range of `spanMs` with at most `maxTicks` labels.
-    static qint64 stepMs(qint64 spanMs, int maxTicks);
-    // The round moments within [fromMs, toMs], ascending, `stepMs(to - from, maxTicks)` apart.
+    // The round moments `stepMs` apart within [fromMs, toMs], ascending.
+    static QList<qint64> ticksOfStep(qint64 fromMs, qint64 toMs, qint64 stepMs);
+    // The smallest round step that gives [fromMs, toMs] at most `maxTicks` labels, and at least
+    // one (with one label more than asked when a longer step would give none).
+    static qint64 stepMs(qint64 fromMs, qint64 toMs, int maxTicks);
+    // The labels' moments: ticksOfStep() with stepMs().
     static QList<qint64> ticks(qint64 fromMs, qint64 toMs, int maxTicks);
 
     QCategoryAxis *axis() const { return m_axis; }

@@ -385,6 +385,9 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                 lines << (discrete ? tr("Click the box to toggle")
                                    : tr("Double-click or F2 to write"));
         } else if (index.column() == NameColumn) {
+            // The whole name: a narrow column elides it.
+            if (!spec.name.isEmpty())
+                lines << spec.name;
             if (spec.name.isEmpty() && !state.peerName.isEmpty())
                 lines << tr("The gateway's name for this item; type a name to use your own.");
             if (spec.history)
@@ -405,6 +408,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                 lines << tr("%n alarm(s) defined (Alarms… in the context menu, Ctrl+Shift+A)",
                             nullptr, static_cast<int>(spec.alarms.size()));
         }
+        if (index.column() == CommentColumn && !spec.comment.isEmpty())
+            lines << spec.comment; // whole, where the column elides it
         return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
     }
     case Qt::DecorationRole:
