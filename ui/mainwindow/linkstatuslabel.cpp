@@ -19,6 +19,7 @@ void LinkStatusLabel::showConnection(const Connection *c)
         return;
     }
     const StationStatistics &t = c->statistics().total;
+    QString whole; // the summary before its state gave way
     const LinkState state = c->linkState();
     if (state != LinkState::Connected) {
         // A link that is down has no rate or round trip worth showing: say why and how often.
@@ -32,16 +33,28 @@ void LinkStatusLabel::showConnection(const Connection *c)
         // The gateway polls; this program only reads the broker: no rate or round trip of its own.
         m_summary = tr("%1: %2 · through the MQTT gateway").arg(c->name(), c->stateText());
     } else {
-        m_summary
-            = tr("%1: %2 · %3 req/s · %4 errors · RTT %5")
-                  .arg(c->name(), c->stateText())
-                  .arg(c->requestsPerSecond(), 0, 'f', 1)
-                  .arg(c->errorCount())
-                  .arg(t.answers ? tr("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–"));
+        const auto summary = [&](const QString &stateWords) {
+            return tr("%1: %2 · %3 req/s · %4 errors · RTT %5")
+                .arg(c->name(), stateWords)
+                .arg(c->requestsPerSecond(), 0, 'f', 1)
+                .arg(c->errorCount())
+                .arg(t.answers ? tr("%1 ms").arg(t.rttMeanMs, 0, 'f', 1) : QStringLiteral("–"));
+        };
+        // Too long for its room: the state (its silent stations) gives way, the figures stay.
+        const QString words = c->stateText();
+        whole = summary(words);
+        const int over = fontMetrics().horizontalAdvance(whole) - m_room;
+        m_summary = over <= 0
+                        ? whole
+                        : summary(fontMetrics().elidedText(
+                            words, Qt::ElideRight, fontMetrics().horizontalAdvance(words) - over));
     }
-    showSummary(m_summary, c->linkReason().empty()
-                               ? c->linkText()
-                               : c->linkText() + QLatin1Char('\n') + translated(c->linkReason()));
+    QString tip = c->linkReason().empty()
+                      ? c->linkText()
+                      : c->linkText() + QLatin1Char('\n') + translated(c->linkReason());
+    if (!whole.isEmpty() && whole != m_summary)
+        tip = whole + QLatin1Char('\n') + tip;
+    showSummary(m_summary, tip);
 }
 
 void LinkStatusLabel::setRoom(int px)

@@ -162,7 +162,7 @@ void MainWindow::resizeEvent(QResizeEvent *event)
 {
     QMainWindow::resizeEvent(event);
     if (m_linkStatus)
-        m_linkStatus->setRoom(width() * 2 / 5);
+        m_linkStatus->setRoom(width() - 240); // a message keeps some room beside it
     // A dock shown or moved may have grown the window past the screen on its way (Qt grows a
     // window to its minimum, and never shrinks it back): once the layout has settled, fit it.
     if (isVisible())
@@ -545,9 +545,9 @@ void MainWindow::updateToolTargets()
 
 void MainWindow::showStatus(const QString &text)
 {
-    // Left of the link summary (at most 2/5 of the bar): a longer message is elided, whole in
-    // the tooltip (it was cut by the summary).
-    const int room = width() * 3 / 5 - 24;
+    // Left of the link summary: a longer message is elided, whole in the tooltip (the summary
+    // covered it).
+    const int room = statusBar()->width() - m_linkStatus->sizeHint().width() - 30;
     statusBar()->showMessage(
         isVisible() ? statusBar()->fontMetrics().elidedText(text, Qt::ElideRight, room) : text,
         10000);

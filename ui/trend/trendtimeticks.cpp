@@ -1,6 +1,7 @@
 #include "trendtimeticks.h"
 
 #include <QDateTime>
+#include <QtCharts/QAbstractSeries>
 #include <QtCharts/QCategoryAxis>
 #include <QtCharts/QChart>
 #include <QtCharts/QDateTimeAxis>
@@ -86,11 +87,20 @@ QList<qint64> TrendTimeTicks::ticks(qint64 fromMs, qint64 toMs, int maxTicks)
     return ticksOfStep(fromMs, toMs, stepMs(fromMs, toMs, maxTicks));
 }
 
+void TrendTimeTicks::attach(QChart *chart, QAbstractSeries *series)
+{
+    for (QAbstractAxis *axis : chart->axes(Qt::Horizontal)) {
+        if (axis->objectName() == QLatin1String("trendTimeLabels"))
+            series->attachAxis(axis);
+    }
+}
+
 void TrendTimeTicks::setFormat(const QString &format)
 {
     if (format == m_format)
         return;
     m_format = format;
+    m_rebuild = true;
     update();
 }
 
@@ -99,6 +109,7 @@ void TrendTimeTicks::setMaxTicks(int maxTicks)
     if (maxTicks == m_maxTicks)
         return;
     m_maxTicks = maxTicks;
+    m_rebuild = true;
     update();
 }
 
@@ -106,18 +117,36 @@ void TrendTimeTicks::update()
 {
     const qint64 fromMs = m_timeAxis->min().toMSecsSinceEpoch();
     const qint64 toMs = m_timeAxis->max().toMSecsSinceEpoch();
+    QList<qint64> wanted = ticks(fromMs, toMs, m_maxTicks);
+    wanted.removeIf([fromMs](qint64 t) { return t <= fromMs; }); // a category ends after its start
+    QList<qint64> shown;
     for (const QString &label : m_axis->categoriesLabels())
-        m_axis->remove(label);
-    m_axis->setRange(double(fromMs), double(toMs));
+        shown << qint64(m_axis->endValue(label));
+    // Following the present, the labels shown stay where they are: the ones that left go, the
+    // ones that came are appended (rebuilt at every redraw, they were missing from a picture
+    // taken between two layouts).
+    const bool continues = !m_rebuild && !shown.isEmpty() && !wanted.isEmpty()
+                           && shown.contains(wanted.first())
+                           && (wanted.size() < 2 || shown.size() < 2
+                               || wanted.at(1) - wanted.at(0) == shown.at(1) - shown.at(0));
+    m_rebuild = false;
+    const QStringList labels = m_axis->categoriesLabels();
+    for (qsizetype i = 0; i < labels.size(); ++i) {
+        if (!continues || shown.at(i) < wanted.first())
+            m_axis->remove(labels.at(i));
+    }
     m_axis->setStartValue(double(fromMs));
-    for (qint64 t : ticks(fromMs, toMs, m_maxTicks)) {
+    m_axis->setRange(double(fromMs), double(toMs));
+    const qint64 last = continues ? shown.constLast() : fromMs;
+    for (qint64 t : std::as_const(wanted)) {
+        if (t <= last)
+            continue;
         // A category's label is its key: the same text twice (a day's wrap in "HH:mm") gets an
         // invisible mark to stay a label of its own.
         QString label = QDateTime::fromMSecsSinceEpoch(t).toString(m_format);
         while (m_axis->categoriesLabels().contains(label))
             label += QChar(0x200B);
-        if (t > fromMs)
-            m_axis->append(label, double(t));
+        m_axis->append(label, double(t));
     }
 }
 

@@ -4,6 +4,7 @@
 #include <QObject>
 #include <QString>
 
+class QAbstractSeries;
 class QCategoryAxis;
 class QChart;
 class QDateTimeAxis;
@@ -30,6 +31,10 @@ public:
     // The labels' moments: ticksOfStep() with stepMs().
     static QList<qint64> ticks(qint64 fromMs, qint64 toMs, int maxTicks);
 
+    // Attaches `series` to the chart's time labels too (beside the date-time axis): QtCharts
+    // places an axis' labels by the range of its series, and draws none without one.
+    static void attach(QChart *chart, QAbstractSeries *series);
+
     QCategoryAxis *axis() const { return m_axis; }
     // The labels' format (QDateTime::toString) and how many fit.
     void setFormat(const QString &format);
@@ -44,6 +49,7 @@ private:
     QCategoryAxis *m_axis;
     QString m_format = QStringLiteral("HH:mm:ss");
     int m_maxTicks = 7;
+    bool m_rebuild = true; // the format or the number of labels changed: all labels anew
 };
 
 } // namespace Fatek
