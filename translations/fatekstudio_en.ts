@@ -84,8 +84,8 @@
             <translation>&amp;Host:</translation>
         </message>
         <message>
-            <source>P&amp;ort:</source>
-            <translation>P&amp;ort:</translation>
+            <source>Po&amp;rt:</source>
+            <translation>Po&amp;rt:</translation>
         </message>
         <message>
             <source>FACON (ASCII)</source>
@@ -128,8 +128,8 @@
             <translation>Pro&amp;tocol:</translation>
         </message>
         <message>
-            <source>S&amp;tation:</source>
-            <translation>S&amp;tation:</translation>
+            <source>St&amp;ation:</source>
+            <translation>St&amp;ation:</translation>
         </message>
         <message>
             <source>T&amp;imeout:</source>
@@ -208,8 +208,8 @@
             <translation>Browse…</translation>
         </message>
         <message>
-            <source>TLS C&amp;A file:</source>
-            <translation>TLS C&amp;A file:</translation>
+            <source>TLS CA &amp;file:</source>
+            <translation>TLS CA &amp;file:</translation>
         </message>
         <message>
             <source>CA Certificate</source>
@@ -2820,6 +2820,31 @@
             <source>(no port)</source>
             <translation>(no port)</translation>
         </message>
+        <message>
+            <source>OS %1</source>
+            <translation>OS %1</translation>
+        </message>
+        <message>
+            <source>program %1 words</source>
+            <translation>program %1 words</translation>
+        </message>
+        <message>
+            <source>%1 I/O points</source>
+            <translation>%1 I/O points</translation>
+        </message>
+        <message>
+            <source>main unit type %1</source>
+            <translation>main unit type %1</translation>
+        </message>
+        <message>
+            <source>M series</source>
+            <translation>M series</translation>
+        </message>
+        <message>
+            <source>, </source>
+            <comment>between the parts of a model text</comment>
+            <translation>, </translation>
+        </message>
     </context>
     <context>
         <name>Fatek::SavedConnection</name>
@@ -3423,8 +3448,8 @@
             </translation>
         </message>
         <message>
-            <source>&amp;Reconnect Now</source>
-            <translation>&amp;Reconnect Now</translation>
+            <source>Reconn&amp;ect Now</source>
+            <translation>Reconn&amp;ect Now</translation>
         </message>
         <message>
             <source>Reconnecting %1 now…</source>
@@ -3622,8 +3647,8 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
             <translation>&amp;Operator Mode (Read-Only)</translation>
         </message>
         <message>
-            <source>Operator Mode &amp;Password…</source>
-            <translation>Operator Mode &amp;Password…</translation>
+            <source>Operator Mode Pass&amp;word…</source>
+            <translation>Operator Mode Pass&amp;word…</translation>
         </message>
         <message>
             <source>Started with --read-only: operator mode stays on until the program is restarted without it.</source>
@@ -3851,6 +3876,18 @@ Commissioning and monitoring tool for FATEK PLCs.</translation>
         <message>
             <source>%1 words</source>
             <translation>%1 words</translation>
+        </message>
+        <message>
+            <source>The link is %1: RUN/STOP waits for it to connect.</source>
+            <translation>The link is %1: RUN/STOP waits for it to connect.</translation>
+        </message>
+        <message>
+            <source>M series (the unit does not report its type)</source>
+            <translation>M series (the unit does not report its type)</translation>
+        </message>
+        <message>
+            <source>not reported</source>
+            <translation>not reported</translation>
         </message>
     </context>
     <context>
@@ -4381,8 +4418,8 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Write every value of the current watch table to a CSV file with timestamps</translation>
         </message>
         <message>
-            <source>Sto&amp;p Data Logging</source>
-            <translation>Sto&amp;p Data Logging</translation>
+            <source>Stop Data Lo&amp;gging</source>
+            <translation>Stop Data Lo&amp;gging</translation>
         </message>
         <message>
             <source>Data logging stopped: %1</source>
@@ -4644,8 +4681,8 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>%1 — Operator mode (read-only)</translation>
         </message>
         <message>
-            <source>Import &amp;Names and Comments…</source>
-            <translation>Import &amp;Names and Comments…</translation>
+            <source>Import Names and Co&amp;mments…</source>
+            <translation>Import Names and Co&amp;mments…</translation>
         </message>
         <message>
             <source>Read the names and comments of addresses from the ladder project&apos;s comment/symbol list (CSV or tab-separated text)</source>
@@ -4810,21 +4847,29 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Recorded in the history (deadband %1, heartbeat %2 s)</source>
             <translation>Recorded in the history (deadband %1, heartbeat %2 s)</translation>
         </message>
+        <message>
+            <source>ON</source>
+            <translation>ON</translation>
+        </message>
+        <message>
+            <source>OFF</source>
+            <translation>OFF</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableEdits</name>
         <message numerus="yes">
             <source>Add %n item(s)</source>
             <translation>
-                <numerusform>Add %n item(s)</numerusform>
-                <numerusform>Add %n item(s)</numerusform>
+                <numerusform>Add %n item</numerusform>
+                <numerusform>Add %n items</numerusform>
             </translation>
         </message>
         <message numerus="yes">
             <source>Remove %n item(s)</source>
             <translation>
-                <numerusform>Remove %n item(s)</numerusform>
-                <numerusform>Remove %n item(s)</numerusform>
+                <numerusform>Remove %n item</numerusform>
+                <numerusform>Remove %n items</numerusform>
             </translation>
         </message>
         <message>
@@ -4838,8 +4883,8 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message numerus="yes">
             <source>Move %n item(s)</source>
             <translation>
-                <numerusform>Move %n item(s)</numerusform>
-                <numerusform>Move %n item(s)</numerusform>
+                <numerusform>Move %n item</numerusform>
+                <numerusform>Move %n items</numerusform>
             </translation>
         </message>
         <message>
@@ -4969,9 +5014,25 @@ The PLC's program is replaced; every page is read back and compared.</translatio
         <message numerus="yes">
             <source>Copied %n row(s).</source>
             <translation>
-                <numerusform>Copied %n row(s).</numerusform>
-                <numerusform>Copied %n row(s).</numerusform>
+                <numerusform>Copied %n row.</numerusform>
+                <numerusform>Copied %n rows.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>Resume</translation>
+        </message>
+        <message>
+            <source>Poll this table again</source>
+            <translation>Poll this table again</translation>
+        </message>
+        <message>
+            <source>Rows move only in own order: clear the filter, choose Own Order.</source>
+            <translation>Rows move only in own order: clear the filter, choose Own Order.</translation>
+        </message>
+        <message>
+            <source>Operator mode is off; %1 was not written.</source>
+            <translation>Operator mode is off; %1 was not written.</translation>
         </message>
     </context>
     <context>
@@ -5205,6 +5266,10 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>STOP</source>
             <translation>STOP</translation>
         </message>
+        <message>
+            <source>M series</source>
+            <translation>M series</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::StationScanDialog</name>
@@ -5418,9 +5483,12 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Exported %1 differences to %2.</source>
             <translation>Exported %1 differences to %2.</translation>
         </message>
-        <message>
-            <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
-            <translation>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</translation>
+        <message numerus="yes">
+            <source>Write %1 values of the snapshot to %2 in %n request(s), then read them back?</source>
+            <translation>
+                <numerusform>Write %1 values of the snapshot to %2 in %n request, then read them back?</numerusform>
+                <numerusform>Write %1 values of the snapshot to %2 in %n requests, then read them back?</numerusform>
+            </translation>
         </message>
         <message>
             <source>The snapshot is of another model than the PLC at %1.

@@ -84,8 +84,8 @@
             <translation>主機(&amp;H)：</translation>
         </message>
         <message>
-            <source>P&amp;ort:</source>
-            <translation>埠號(&amp;O)：</translation>
+            <source>Po&amp;rt:</source>
+            <translation>埠號(&amp;R)：</translation>
         </message>
         <message>
             <source>FACON (ASCII)</source>
@@ -128,8 +128,8 @@
             <translation>通訊協定(&amp;T)：</translation>
         </message>
         <message>
-            <source>S&amp;tation:</source>
-            <translation>站號(&amp;T)：</translation>
+            <source>St&amp;ation:</source>
+            <translation>站號(&amp;A)：</translation>
         </message>
         <message>
             <source>T&amp;imeout:</source>
@@ -208,8 +208,8 @@
             <translation>瀏覽…</translation>
         </message>
         <message>
-            <source>TLS C&amp;A file:</source>
-            <translation>TLS CA 檔案(&amp;A)：</translation>
+            <source>TLS CA &amp;file:</source>
+            <translation>TLS CA 檔案(&amp;F)：</translation>
         </message>
         <message>
             <source>CA Certificate</source>
@@ -2816,6 +2816,31 @@
             <source>(no port)</source>
             <translation>（無連接埠）</translation>
         </message>
+        <message>
+            <source>OS %1</source>
+            <translation>OS %1</translation>
+        </message>
+        <message>
+            <source>program %1 words</source>
+            <translation>程式 %1 字組</translation>
+        </message>
+        <message>
+            <source>%1 I/O points</source>
+            <translation>%1 個 I/O 點</translation>
+        </message>
+        <message>
+            <source>main unit type %1</source>
+            <translation>主機類型 %1</translation>
+        </message>
+        <message>
+            <source>M series</source>
+            <translation>M 系列</translation>
+        </message>
+        <message>
+            <source>, </source>
+            <comment>between the parts of a model text</comment>
+            <translation>，</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::SavedConnection</name>
@@ -3415,8 +3440,8 @@
             </translation>
         </message>
         <message>
-            <source>&amp;Reconnect Now</source>
-            <translation>立即重新連線(&amp;R)</translation>
+            <source>Reconn&amp;ect Now</source>
+            <translation>立即重新連線(&amp;E)</translation>
         </message>
         <message>
             <source>Reconnecting %1 now…</source>
@@ -3609,8 +3634,8 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
             <translation>操作員模式（唯讀）(&amp;O)</translation>
         </message>
         <message>
-            <source>Operator Mode &amp;Password…</source>
-            <translation>操作員模式密碼(&amp;P)…</translation>
+            <source>Operator Mode Pass&amp;word…</source>
+            <translation>操作員模式密碼(&amp;W)…</translation>
         </message>
         <message>
             <source>Started with --read-only: operator mode stays on until the program is restarted without it.</source>
@@ -3838,6 +3863,18 @@ Commissioning and monitoring tool for FATEK PLCs.</source>
         <message>
             <source>%1 words</source>
             <translation>%1 字組</translation>
+        </message>
+        <message>
+            <source>The link is %1: RUN/STOP waits for it to connect.</source>
+            <translation>連線%1：RUN/STOP 須待連線恢復。</translation>
+        </message>
+        <message>
+            <source>M series (the unit does not report its type)</source>
+            <translation>M 系列（主機未回報其類型）</translation>
+        </message>
+        <message>
+            <source>not reported</source>
+            <translation>未回報</translation>
         </message>
     </context>
     <context>
@@ -4367,8 +4404,8 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>將目前監看表的每個數值連同時間戳記寫入 CSV 檔</translation>
         </message>
         <message>
-            <source>Sto&amp;p Data Logging</source>
-            <translation>停止資料記錄(&amp;P)</translation>
+            <source>Stop Data Lo&amp;gging</source>
+            <translation>停止資料記錄(&amp;G)</translation>
         </message>
         <message>
             <source>Data logging stopped: %1</source>
@@ -4627,8 +4664,8 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>%1 — 操作員模式（唯讀）</translation>
         </message>
         <message>
-            <source>Import &amp;Names and Comments…</source>
-            <translation>匯入名稱與註解(&amp;N)…</translation>
+            <source>Import Names and Co&amp;mments…</source>
+            <translation>匯入名稱與註解(&amp;M)…</translation>
         </message>
         <message>
             <source>Read the names and comments of addresses from the ladder project&apos;s comment/symbol list (CSV or tab-separated text)</source>
@@ -4792,6 +4829,14 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Recorded in the history (deadband %1, heartbeat %2 s)</source>
             <translation>已記錄到歷史資料（不感帶 %1，心跳週期 %2 秒）</translation>
         </message>
+        <message>
+            <source>ON</source>
+            <translation>導通</translation>
+        </message>
+        <message>
+            <source>OFF</source>
+            <translation>斷開</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::WatchTableEdits</name>
@@ -4947,6 +4992,22 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>
                 <numerusform>已複製 %n 列。</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>繼續</translation>
+        </message>
+        <message>
+            <source>Poll this table again</source>
+            <translation>重新輪詢此表格</translation>
+        </message>
+        <message>
+            <source>Rows move only in own order: clear the filter, choose Own Order.</source>
+            <translation>列只能在自訂順序中移動：請清除篩選並選擇「自訂順序」。</translation>
+        </message>
+        <message>
+            <source>Operator mode is off; %1 was not written.</source>
+            <translation>操作員模式已關閉；%1 未寫入。</translation>
         </message>
     </context>
     <context>
@@ -5180,6 +5241,10 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>STOP</source>
             <translation>停止</translation>
         </message>
+        <message>
+            <source>M series</source>
+            <translation>M 系列</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::StationScanDialog</name>
@@ -5392,9 +5457,11 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Exported %1 differences to %2.</source>
             <translation>已將 %1 筆差異匯出至 %2。</translation>
         </message>
-        <message>
-            <source>Write %1 values of the snapshot to %2 in %3 requests, then read them back?</source>
-            <translation>要以 %3 次請求將快照中的 %1 個值寫入 %2，然後回讀確認嗎？</translation>
+        <message numerus="yes">
+            <source>Write %1 values of the snapshot to %2 in %n request(s), then read them back?</source>
+            <translation>
+                <numerusform>要以 %n 次請求將快照中的 %1 個值寫入 %2，然後回讀確認嗎？</numerusform>
+            </translation>
         </message>
         <message>
             <source>The snapshot is of another model than the PLC at %1.

@@ -27,6 +27,8 @@ private Q_SLOTS:
     void noConnection();
     void sessionDeleted();
     void operatorModeDisablesRunStop();
+    void linkDownDisablesRunStop();
+    void mSeriesDetailInWords();
 
 private:
     void clickAndConfirm(const char *button);
@@ -202,6 +204,41 @@ void TestToolsControl::operatorModeDisablesRunStop()
                              10000);
     m_rig.link->setReadOnly(false);
     QTRY_VERIFY_WITH_TIMEOUT(run->isEnabled(), 10000);
+}
+
+// Issue 54: while the link is down RUN/STOP cannot go out: the buttons are disabled and say why.
+void TestToolsControl::linkDownDisablesRunStop()
+{
+    auto *run = m_panel->findChild<QPushButton *>(QStringLiteral("runButton"));
+    auto *stop = m_panel->findChild<QPushButton *>(QStringLiteral("stopButton"));
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->status().has_value() && run->isEnabled(), 10000);
+    m_rig.server.reset(); // the PLC's end goes away
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.link->linkState() != LinkState::Connected, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!run->isEnabled() && !stop->isEnabled(), 10000);
+    QVERIFY2(run->toolTip().contains(QStringLiteral("link")), qPrintable(run->toolTip()));
+}
+
+// Issue 54: an M-series PLC reports no FBs unit type nor I/O code (255): the panel says what it
+// knows (the family) and that the rest is not reported, never "type 255" or "code 255".
+void TestToolsControl::mSeriesDetailInWords()
+{
+    m_panel->setTarget(PlcTarget());
+    m_rig.link.reset();
+    m_rig.server.reset();
+    m_rig.plc.reset();
+    QVERIFY(m_rig.start(LinkSettings::ProtocolChoice::Facon, 1000, 1, ModelProfile::mSeries()));
+    m_panel->setTarget(m_rig.target(1));
+    QTRY_VERIFY_WITH_TIMEOUT(m_panel->detailStatus().has_value(), 10000);
+    QStringList texts;
+    for (QLabel *label : m_panel->findChildren<QLabel *>()) {
+        if (label->objectName() != QLatin1String("rawDetail"))
+            texts << label->text();
+    }
+    const QString shown = texts.join(QLatin1Char('|'));
+    QVERIFY2(!shown.contains(QStringLiteral("255")) && !shown.contains(QStringLiteral("code")),
+             qPrintable(shown));
+    QVERIFY2(shown.contains(QStringLiteral("M series")), qPrintable(shown));
+    QVERIFY2(shown.contains(QStringLiteral("not reported")), qPrintable(shown));
 }
 
 QTEST_MAIN(TestToolsControl)

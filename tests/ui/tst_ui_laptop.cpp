@@ -9,12 +9,15 @@
 #include "ui/connection/connectiondialog.h"
 #include "ui/connection/connectionmanager.h"
 #include "ui/mainwindow/mainwindow.h"
+#include "ui/trend/trendview.h"
+#include "ui/watch/watchtablewidget.h"
 #include "uitestutil.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
 #include <QAbstractSpinBox>
 #include <QApplication>
+#include <QChart>
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -42,6 +45,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QValueAxis>
 
 using namespace Fatek;
 
@@ -378,6 +382,39 @@ private Q_SLOTS:
         QCOMPARE(dialog->size(), size);
         QVERIFY2(misplacedControls(dialog).isEmpty(),
                  qPrintable(report(misplacedControls(dialog))));
+    }
+
+    // Issue 54: the trend at a laptop's height keeps a useful plot (it was about 100 px, one
+    // label per value axis), whole axis titles, and the table keeps rows of its own.
+    void trendKeepsAUsefulPlot()
+    {
+        QVERIFY(openDemo());
+        auto *trend = qobject_cast<TrendView *>(m_window->openTool(QStringLiteral("trend")));
+        QVERIFY(trend);
+        QTRY_VERIFY_WITH_TIMEOUT(trend->itemCount() >= 2, longWait);
+        QTest::qWait(500); // laid out, grown
+        const double plot = trend->chart()->plotArea().height();
+        QVERIFY2(plot >= trend->usefulPlotHeight(),
+                 qPrintable(QStringLiteral("the plot is %1 px tall, %2 px wanted")
+                                .arg(plot)
+                                .arg(trend->usefulPlotHeight())));
+        for (QValueAxis *axis : trend->valueAxes()) {
+            QVERIFY2(TrendView::tickValues(axis).size() >= 3,
+                     qPrintable(QStringLiteral("%1: %2 labels")
+                                    .arg(axis->titleText())
+                                    .arg(TrendView::tickValues(axis).size())));
+            const int title = QFontMetrics(axis->titleFont()).horizontalAdvance(axis->titleText());
+            QVERIFY2(!axis->isTitleVisible() || title <= plot,
+                     qPrintable(QStringLiteral("title \"%1\" is %2 px on a %3 px plot")
+                                    .arg(axis->titleText())
+                                    .arg(title)
+                                    .arg(plot)));
+        }
+        auto *watch = m_window->currentWatchTable()->view();
+        QVERIFY2(
+            watch->viewport()->height() >= 5 * watch->verticalHeader()->defaultSectionSize(),
+            qPrintable(
+                QStringLiteral("the watch table shows %1 px").arg(watch->viewport()->height())));
     }
 
     // Snapshot dialog: a Close button that closes it.

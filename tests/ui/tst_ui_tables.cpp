@@ -848,6 +848,7 @@ private Q_SLOTS:
                 rows.insert(table->modelRow(view->model()->index(r, 0)));
             return rows;
         };
+        view->scrollToTop(); // the rows just added were scrolled into view
         std::set<int> top = repainted(4 * WatchTableModel::ageRefreshMs);
         QVERIFY(!top.empty());
         QCOMPARE(top, onScreenRows());

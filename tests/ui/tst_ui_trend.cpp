@@ -6,10 +6,12 @@
 #include "ui/connection/connectionmanager.h"
 #include "ui/mainwindow/mainwindow.h"
 #include "ui/trend/tablelogger.h"
+#include "ui/trend/trendtimeticks.h"
 #include "ui/trend/trendview.h"
 #include "ui/watch/watchtablemodel.h"
 
 #include <QAction>
+#include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
 #include <QDateTimeAxis>
@@ -131,6 +133,8 @@ private Q_SLOTS:
     void loggingTwoFormatsAndAnOutage();
     void bufferDecimationKeepsPeaks();
     void doubleWordsPlotAsTheTableShowsThem();
+    void timeTicksAreRound();
+    void zoomedTimeLabelsAreRound();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -612,6 +616,95 @@ void TestUiTrend::doubleWordsPlotAsTheTableShowsThem()
     ramp.format = DisplayFormat::Unsigned;
     ramp.swapWords = true;
     QCOMPARE(trendValue(ramp, 0x00010002), std::optional<double>(double(0x00020001)));
+}
+
+// Issue 54: the time labels fall on round moments of local time, evenly spaced, at every span
+// and label count (a zoom gave :38 :40 :43 :45 :47).
+void TestUiTrend::timeTicksAreRound()
+{
+    const QList<qint64> roundSteps
+        = {1000,   2000,   5000,    10000,   15000,   30000,    60000,    120000,   300000,
+           600000, 900000, 1800000, 3600000, 7200000, 10800000, 21600000, 43200000, 86400000};
+    const qint64 start = QDateTime(QDate(2026, 12, 2), QTime(14, 37, 23, 417)).toMSecsSinceEpoch();
+    const qint64 offset = qint64(QDateTime::fromMSecsSinceEpoch(start).offsetFromUtc()) * 1000;
+    for (qint64 span : {3300LL, 10000LL, 10517LL, 47000LL, 60000LL, 137000LL, 600000LL, 2345678LL,
+                        3600000LL, 8 * 3600000LL, 86400000LL}) {
+        for (int maxTicks = 2; maxTicks <= 7; ++maxTicks) {
+            const QList<qint64> ticks = TrendTimeTicks::ticks(start, start + span, maxTicks);
+            const qint64 step = TrendTimeTicks::stepMs(start, start + span, maxTicks);
+            const QString where = QStringLiteral("span %1 ms, %2 labels: step %3, ticks %4")
+                                      .arg(span)
+                                      .arg(maxTicks)
+                                      .arg(step)
+                                      .arg(ticks.size());
+            QVERIFY2(roundSteps.contains(step), qPrintable(where));
+            QVERIFY2(!ticks.isEmpty(), qPrintable(where));
+            // No more labels than fit, unless the next round step would leave none.
+            const qsizetype next = roundSteps.indexOf(step) + 1;
+            if (ticks.size() > maxTicks)
+                QVERIFY2(
+                    next < roundSteps.size()
+                        && TrendTimeTicks::ticksOfStep(start, start + span, roundSteps.at(next))
+                               .isEmpty(),
+                    qPrintable(where));
+            // No smaller round step would have done.
+            const qsizetype smaller = roundSteps.indexOf(step) - 1;
+            if (smaller >= 0 && ticks.size() <= maxTicks)
+                QVERIFY2(
+                    TrendTimeTicks::ticksOfStep(start, start + span, roundSteps.at(smaller)).size()
+                        > maxTicks,
+                    qPrintable(where));
+            for (qsizetype i = 0; i < ticks.size(); ++i) {
+                QVERIFY2(ticks.at(i) >= start && ticks.at(i) <= start + span, qPrintable(where));
+                QVERIFY2((ticks.at(i) + offset) % step == 0, qPrintable(where));
+                if (i > 0)
+                    QVERIFY2(ticks.at(i) - ticks.at(i - 1) == step, qPrintable(where));
+            }
+        }
+    }
+    // The issue's zoom (:38 :40 :43 :45 :47): 14:37:37.4 .. 14:37:47.9 with five labels.
+    const qint64 from = start + 14000; // 14:37:37.417
+    const QList<qint64> zoomed = TrendTimeTicks::ticks(from, from + 10500, 5);
+    QStringList labels;
+    for (qint64 t : zoomed)
+        labels << QDateTime::fromMSecsSinceEpoch(t).toString(QStringLiteral("HH:mm:ss"));
+    QCOMPARE(labels, QStringList({QStringLiteral("14:37:38"), QStringLiteral("14:37:40"),
+                                  QStringLiteral("14:37:42"), QStringLiteral("14:37:44"),
+                                  QStringLiteral("14:37:46")}));
+}
+
+// In the chart: after a zoom the labels under the plot are round moments, evenly spaced.
+void TestUiTrend::zoomedTimeLabelsAreRound()
+{
+    TrendView *trend = m_window->trendView();
+    QTRY_VERIFY_WITH_TIMEOUT(trend->spanMs() >= 2000, longWait);
+    trend->setWindowMs(60000);
+    trend->zoomBy(1.7);
+    trend->refresh();
+    QCategoryAxis *labels = nullptr;
+    for (QAbstractAxis *axis : trend->chart()->axes(Qt::Horizontal)) {
+        if (axis->isVisible())
+            labels = qobject_cast<QCategoryAxis *>(axis);
+    }
+    QVERIFY2(labels, "the time labels are no category axis on round moments");
+    const qint64 from = trend->timeAxis()->min().toMSecsSinceEpoch();
+    const qint64 to = trend->timeAxis()->max().toMSecsSinceEpoch();
+    QCOMPARE(qint64(labels->min()), from);
+    QCOMPARE(qint64(labels->max()), to);
+    const QStringList names = labels->categoriesLabels();
+    QVERIFY2(names.size() >= 2, qPrintable(names.join(QLatin1Char(' '))));
+    QList<qint64> at;
+    for (const QString &name : names)
+        at << qint64(labels->endValue(name));
+    const qint64 step = at.at(1) - at.at(0);
+    for (qsizetype i = 0; i < at.size(); ++i) {
+        QVERIFY2(at.at(i) % 1000 == 0 && (at.at(i) / 1000) % (step / 1000) == 0,
+                 qPrintable(names.join(QLatin1Char(' '))));
+        if (i > 0)
+            QCOMPARE(at.at(i) - at.at(i - 1), step);
+        QCOMPARE(names.at(i),
+                 QDateTime::fromMSecsSinceEpoch(at.at(i)).toString(QStringLiteral("HH:mm:ss")));
+    }
 }
 
 QTEST_MAIN(TestUiTrend)

@@ -1,6 +1,8 @@
 #include "toolconfirmation.h"
 
 #include <QCoreApplication>
+#include <QGridLayout>
+#include <QGuiApplication>
 #include <QMessageBox>
 
 namespace Fatek {
@@ -10,9 +12,21 @@ bool ToolConfirmation::ask(QWidget *parent, const QString &title, const QString 
 {
     if (override)
         return override(question);
-    return QMessageBox::question(parent, title, question, QMessageBox::Yes | QMessageBox::No,
-                                 QMessageBox::No)
-           == QMessageBox::Yes;
+    QMessageBox box(QMessageBox::Question, title, question, QMessageBox::Yes | QMessageBox::No,
+                    parent);
+    box.setDefaultButton(QMessageBox::No);
+    // A message box is as wide as its question: a short question cut its title ("Enable all
+    // f...ATEK Studio"). Room for the title beside the window's icon and buttons, as the window
+    // system writes it (with the application's name).
+    const QString shown
+        = QGuiApplication::applicationDisplayName().isEmpty()
+              ? title
+              : title + QStringLiteral(" — ") + QGuiApplication::applicationDisplayName();
+    if (auto *grid = qobject_cast<QGridLayout *>(box.layout()))
+        grid->addItem(new QSpacerItem(box.fontMetrics().horizontalAdvance(shown) + 150, 0,
+                                      QSizePolicy::Minimum, QSizePolicy::Minimum),
+                      grid->rowCount(), 0, 1, grid->columnCount());
+    return box.exec() == QMessageBox::Yes;
 }
 
 QString ToolConfirmation::target(quint8 station, const QString &connectionName)

@@ -2,6 +2,8 @@
 
 #include "core/qtbridge/messagetext.h"
 
+#include <QRegularExpression>
+
 namespace Fatek {
 
 QString translated(const Message &message)
@@ -9,6 +11,29 @@ QString translated(const Message &message)
     return translatedText(message, [](const char *templ) {
         return QCoreApplication::translate(messageContext, templ);
     });
+}
+
+QString UiText::modelText(const QString &english)
+{
+    // The parts DetailStatus::summary() and PlcModel::modelText() write, joined by ", ".
+    static const QRegularExpression os(QStringLiteral("^OS (V\\S+)$"));
+    static const QRegularExpression program(QStringLiteral("^program (\\d+) words$"));
+    static const QRegularExpression points(QStringLiteral("^(\\d+) I/O points$"));
+    static const QRegularExpression unitType(QStringLiteral("^main unit type (\\d+)$"));
+    QStringList parts = english.split(QStringLiteral(", "));
+    for (QString &part : parts) {
+        if (const auto m = os.match(part); m.hasMatch())
+            part = tr("OS %1").arg(m.captured(1));
+        else if (const auto p = program.match(part); p.hasMatch())
+            part = tr("program %1 words").arg(p.captured(1));
+        else if (const auto n = points.match(part); n.hasMatch())
+            part = tr("%1 I/O points").arg(n.captured(1));
+        else if (const auto t = unitType.match(part); t.hasMatch())
+            part = tr("main unit type %1").arg(t.captured(1));
+        else if (part == QLatin1String("M series"))
+            part = tr("M series");
+    }
+    return parts.join(tr(", ", "between the parts of a model text"));
 }
 
 QString UiText::linkState(LinkState state)

@@ -33,6 +33,9 @@ public:
     static QString protocolChoice(LinkSettings::ProtocolChoice choice);
     // LinkSettings::toString() with its words translated ("TCP 10.0.0.5:500, auto-detect").
     static QString settings(const LinkSettings &settings);
+    // A model text as core records it in snapshots and backups ("FBs-28MC, OS V3.1, program
+    // 13184 words", "M series, ...") with its words in the UI language; model names as they are.
+    static QString modelText(const QString &english);
     // Display format from a name typed in either language (the file names "unsigned" etc. too).
     static std::optional<DisplayFormat> formatFromName(const QString &name);
 };

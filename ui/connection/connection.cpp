@@ -1,5 +1,6 @@
 #include "connection.h"
 
+#include "core/protocol/plcmodel.h"
 #include "core/session/requesttracker.h"
 #include "core/session/session.h"
 #include "ui/common/uitext.h"
@@ -131,8 +132,12 @@ QString Connection::plcText() const
         return m_link->peerText(); // what the far end talks to
     QStringList parts;
     if (m_detail) {
+        // A PLC without a documented model name (the M series) is named by its family.
+        const std::optional<PlcModel> family = PlcModel::fromDetailStatus(*m_detail);
         if (const std::optional<std::string> model = m_detail->modelName())
             parts << QString::fromStdString(*model);
+        else if (family && family->family == PlcModel::Family::M)
+            parts << tr("M series");
     }
     if (m_plcStatus)
         parts << (m_plcStatus->running ? tr("RUN") : tr("STOP"));

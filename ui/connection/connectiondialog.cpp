@@ -114,7 +114,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     form->addRow(tr("&Host:"), m_host);
     m_port = new QSpinBox(this);
     m_port->setRange(1, 65535);
-    form->addRow(tr("P&ort:"), m_port);
+    form->addRow(tr("Po&rt:"), m_port);
 
     m_kindRows[networkRows].second = form->rowCount();
 
@@ -166,7 +166,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
               return edit;
           };
     const QString certificates = tr("Certificates (*.crt *.pem);;All files (*)");
-    m_caFile = addFileRow(tr("TLS C&A file:"), QStringLiteral("brokerCaEdit"),
+    m_caFile = addFileRow(tr("TLS CA &file:"), QStringLiteral("brokerCaEdit"),
                           tr("optional; mqtts:// only"), tr("CA Certificate"), certificates);
     // Brokers that ask for a client certificate (require_certificate in mosquitto).
     m_certFile = addFileRow(tr("Client c&ertificate:"), QStringLiteral("brokerCertEdit"),
@@ -191,7 +191,7 @@ ConnectionDialog::ConnectionDialog(const QList<SavedConnection> &recent, QWidget
     m_retries->setRange(0, 10);
 
     form->addRow(tr("Pro&tocol:"), m_protocol);
-    form->addRow(tr("S&tation:"), m_station);
+    form->addRow(tr("St&ation:"), m_station);
     form->addRow(tr("T&imeout:"), m_timeout);
     form->addRow(tr("R&etries:"), m_retries);
 

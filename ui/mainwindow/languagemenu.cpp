@@ -66,6 +66,9 @@ QLocale effectiveLocale(const QString &override)
 bool install(QCoreApplication *app, const QLocale &locale)
 {
     const QString code = normalise(locale.name());
+    // Dates and numbers in the UI's language too (a Chinese snapshot summary said "2 Dec 2026").
+    if (!code.isEmpty())
+        QLocale::setDefault(locale);
     if (code.isEmpty() || code == QLatin1String("en")) {
         // English is the source language; its file only carries the plural forms.
         auto *english = new QTranslator(app);

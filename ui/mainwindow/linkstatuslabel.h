@@ -18,6 +18,17 @@ public:
 
     // nullptr: no connection.
     void showConnection(const Connection *c);
+    // The width it may take (a share of the status bar, so that the message beside it is not
+    // covered); a longer summary is elided, whole in the tooltip.
+    void setRoom(int px);
+    QString summary() const { return m_summary; }
+
+private:
+    void showSummary(const QString &summary, const QString &tip);
+
+    QString m_summary;
+    QString m_tip;
+    int m_room = QWIDGETSIZE_MAX;
 };
 
 } // namespace Fatek

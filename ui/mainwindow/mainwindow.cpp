@@ -163,6 +163,8 @@ void MainWindow::fitIntoScreen()
 void MainWindow::resizeEvent(QResizeEvent *event)
 {
     QMainWindow::resizeEvent(event);
+    if (m_linkStatus)
+        m_linkStatus->setRoom(width() - 240); // a message keeps some room beside it
     // A dock shown or moved may have grown the window past the screen on its way (Qt grows a
     // window to its minimum, and never shrinks it back): once the layout has settled, fit it.
     if (isVisible())
@@ -217,7 +219,7 @@ void MainWindow::createActions()
         = file->addAction(QIcon(QStringLiteral(":/icons/disconnect.svg")), tr("&Close Connection"),
                           this, &MainWindow::closeCurrentConnection);
     disconnectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
-    m_reconnectAction = file->addAction(tr("&Reconnect Now"), this, [this] {
+    m_reconnectAction = file->addAction(tr("Reconn&ect Now"), this, [this] {
         if (Connection *c = currentConnection()) {
             showStatus(tr("Reconnecting %1 now…").arg(c->name()));
             c->reconnectNow();
@@ -562,7 +564,13 @@ void MainWindow::updateToolTargets()
 
 void MainWindow::showStatus(const QString &text)
 {
-    statusBar()->showMessage(text, 10000);
+    // Left of the link summary: a longer message is elided, whole in the tooltip (the summary
+    // covered it).
+    const int room = statusBar()->width() - m_linkStatus->sizeHint().width() - 30;
+    statusBar()->showMessage(
+        isVisible() ? statusBar()->fontMetrics().elidedText(text, Qt::ElideRight, room) : text,
+        10000);
+    statusBar()->setToolTip(text);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
@@ -582,6 +590,10 @@ void MainWindow::applyOperatorMode(bool active)
 {
     m_readOnly = active;
     m_manager->setReadOnly(active);
+    for (WatchTableWidget *table : watchTables()) {
+        if (!active)
+            table->operatorModeEnded();
+    }
     m_document->updateWindowTitle();
     if (m_tools)
         m_tools->setTarget(toolConnection(), true);

@@ -126,7 +126,7 @@ private:
     ConnectionsPanel *m_connectionsPanel;
     QDockWidget *m_connectionsDock;
     QTabWidget *m_tabs;
-    LinkStatusLabel *m_linkStatus;
+    LinkStatusLabel *m_linkStatus = nullptr;
     QMenu *m_recentMenu = nullptr;
     QAction *m_reconnectAction = nullptr;
     QMenu *m_viewMenu = nullptr;

@@ -32,7 +32,7 @@ OperatorMode::OperatorMode(bool locked, QWidget *window)
     , m_window(window)
     , m_locked(locked)
     , m_toggle(new QAction(tr("&Operator Mode (Read-Only)"), this))
-    , m_passwordAction(new QAction(tr("Operator Mode &Password…"), this))
+    , m_passwordAction(new QAction(tr("Operator Mode Pass&word…"), this))
 {
     setObjectName(QStringLiteral("operatorMode"));
     m_toggle->setObjectName(QStringLiteral("operatorModeAction"));

@@ -100,6 +100,21 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
     forcing->hide();
     window->tabifyDockWidget(tabWith, console);
     tabWith->raise();
+    // The menus tick the docks that are open. A dock hidden before the window is shown (above,
+    // or by a restored layout) sends no hide event, so its toggle action stays ticked: the ticks
+    // are read from the docks themselves whenever a menu opens (they showed PLC Control and
+    // Forcing ticked at the first start, neither on screen).
+    const auto tickOpenDocks = [window] {
+        for (QDockWidget *dock : window->findChildren<QDockWidget *>()) {
+            dock->toggleViewAction()->setChecked(!dock->isHidden()); // the trend's entry
+            if (auto *action
+                = window->findChild<QAction *>(dock->objectName() + QStringLiteral("Action")))
+                action->setChecked(!dock->isHidden());
+        }
+    };
+    tickOpenDocks();
+    connect(toolsMenu, &QMenu::aboutToShow, this, tickOpenDocks);
+    connect(viewMenu, &QMenu::aboutToShow, this, tickOpenDocks);
     toolsMenu->addSeparator();
     m_loopbackAction = toolsMenu->addAction(tr("&Loopback Test…"), this, [this] {
         openDialog(new LoopbackDialog(m_window), QStringLiteral("loopbackDialog"));

@@ -43,7 +43,7 @@ void WatchListDocument::addFileActions(QMenu *file)
     auto *importAction
         = file->addAction(tr("&Import CSV…"), this, &WatchListDocument::importCsvDialog);
     importAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
-    auto *importNames = file->addAction(tr("Import &Names and Comments…"), this,
+    auto *importNames = file->addAction(tr("Import Names and Co&mments…"), this,
                                         &WatchListDocument::importNamesDialog);
     importNames->setObjectName(QStringLiteral("importNamesAction"));
     importNames->setToolTip(tr("Read the names and comments of addresses from the ladder "

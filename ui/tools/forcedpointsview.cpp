@@ -47,15 +47,18 @@ ForcedPointsView::ForcedPointsView(QWidget *parent)
     layout->addWidget(m_list, 1);
 
     auto *bottom = new QHBoxLayout;
-    // Two lines reserved: the list and "Enable all" stay where they are whatever it says.
-    m_message = new MessageLine(2, this);
-    m_message->setObjectName(QStringLiteral("forcedMessage"));
-    bottom->addWidget(m_message, 1);
     m_enableAllButton = new QPushButton(tr("Enable all"), this);
     m_enableAllButton->setObjectName(QStringLiteral("enableAllButton"));
     m_enableAllButton->setToolTip(tr("Give every listed point back to the ladder"));
+    bottom->addStretch(1);
     bottom->addWidget(m_enableAllButton);
     layout->addLayout(bottom);
+    // The whole width and three lines reserved, under the button (beside it, in a narrow dock,
+    // the scan's outcome was cut to "enable it befo…"): the list and "Enable all" stay where
+    // they are whatever it says.
+    m_message = new MessageLine(3, this);
+    m_message->setObjectName(QStringLiteral("forcedMessage"));
+    layout->addWidget(m_message);
 
     connect(m_scanButton, &QPushButton::clicked, this, &ForcedPointsView::scan);
     connect(m_ranges, &QLineEdit::returnPressed, this, &ForcedPointsView::scan);

@@ -1,6 +1,8 @@
 #include "plccontrolpanel.h"
 
+#include "core/protocol/plcmodel.h"
 #include "core/session/requesttracker.h"
+#include "core/session/session.h"
 #include "statusindicator.h"
 #include "ui/common/toolpalette.h"
 #include "ui/common/uitext.h"
@@ -159,6 +161,10 @@ void PlcControlPanel::setTarget(const PlcTarget &target)
 {
     m_target = target;
     target.aim(m_requests);
+    disconnect(m_linkWatch);
+    if (Session *session = target.session())
+        m_linkWatch
+            = connect(session, &Session::linkStateChanged, this, [this] { updateEnabled(); });
     m_requests->forgetPending(); // answers meant for the previous target are ignored
     m_briefPending = m_detailPending = m_modePending = false;
     m_status.reset();
@@ -194,11 +200,15 @@ QString PlcControlPanel::outcomeText() const
 void PlcControlPanel::updateEnabled()
 {
     const bool connected = m_target.isDirect();
+    // A link that is down cannot carry RUN/STOP: the buttons wait for it and say why.
+    const LinkState link = connected ? m_target.session()->linkState() : LinkState::Closed;
     // Operator mode: the session would refuse RUN/STOP anyway; say so on the buttons.
-    const bool writable = connected && !m_target.isReadOnly();
-    const QString tip = connected && !writable
-                            ? tr("Read-only (operator) mode: RUN/STOP is disabled.")
-                            : QString();
+    const bool writable = connected && link == LinkState::Connected && !m_target.isReadOnly();
+    const QString tip
+        = !connected || writable ? QString()
+          : link != LinkState::Connected
+              ? tr("The link is %1: RUN/STOP waits for it to connect.").arg(UiText::linkState(link))
+              : tr("Read-only (operator) mode: RUN/STOP is disabled.");
     for (QPushButton *b : {m_runButton, m_stopButton}) {
         b->setEnabled(writable && !m_modePending);
         b->setToolTip(tip);
@@ -352,13 +362,18 @@ void PlcControlPanel::showDetail()
     if (const std::optional<std::string> model = d.modelName()) {
         m_model->setText(QString::fromStdString(*model)); // as printed on the unit
     } else if (d.mainUnitType) {
+        // A type documented for no FBs unit (an M-series PLC answers 255) is no number to show:
+        // the family the answer shows, or that the PLC does not say.
+        const std::optional<PlcModel> family = PlcModel::fromDetailStatus(d);
         m_model->setText(*d.mainUnitType == 0   ? tr("main unit MA/MU")
                          : *d.mainUnitType == 1 ? tr("main unit MC")
-                                                : tr("main unit type %1").arg(*d.mainUnitType));
+                         : family && family->family == PlcModel::Family::M
+                             ? tr("M series (the unit does not report its type)")
+                             : tr("not reported"));
     }
     if (d.ioPointsCode) {
         const std::optional<int> points = d.ioPoints();
-        m_io->setText(points ? QString::number(*points) : tr("code %1").arg(*d.ioPointsCode));
+        m_io->setText(points ? QString::number(*points) : tr("not reported"));
     }
     if (d.osVersion) {
         const std::optional<std::string> os = d.osVersionText();

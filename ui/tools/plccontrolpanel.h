@@ -63,6 +63,7 @@ private:
     bool m_briefPending = false;
     bool m_detailPending = false;
     bool m_modePending = false;
+    QMetaObject::Connection m_linkWatch; // the target's link state, for the RUN/STOP buttons
 
     std::optional<PlcStatus> m_status;
     std::optional<DetailStatus> m_detail;

@@ -237,7 +237,7 @@ void SnapshotDialog::updateControls()
                 .arg(m_snapshot->values.size())
                 .arg(QLocale().toString(i.taken.toLocalTime(), QLocale::ShortFormat))
                 .arg(i.station)
-                .arg(i.model.isEmpty() ? i.link : i.model));
+                .arg(i.model.isEmpty() ? i.link : UiText::modelText(i.model)));
     } else {
         m_snapshotLabel->setText(tr("No snapshot yet: take one or open a file."));
     }
@@ -397,10 +397,10 @@ void SnapshotDialog::restoreValues()
     }
     const auto frames = ValuesRestorer::writeRequests(m_frame->target().station(), values).size();
     const QString question
-        = tr("Write %1 values of the snapshot to %2 in %3 requests, then read them back?")
+        = tr("Write %1 values of the snapshot to %2 in %n request(s), then read them back?",
+             nullptr, static_cast<int>(frames))
               .arg(values.size())
-              .arg(m_frame->targetText())
-              .arg(frames);
+              .arg(m_frame->targetText());
     if (!m_frame->ask(tr("Restore Values"), question)) {
         showMessage(tr("Not restored: nothing was written."), false);
         return;

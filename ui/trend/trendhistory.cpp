@@ -1,5 +1,7 @@
 #include "trendhistory.h"
 
+#include "trendtimeticks.h"
+
 #include "core/history/historycsv.h"
 #include "core/history/historymessages.h"
 #include "core/history/historyreducer.h"
@@ -185,6 +187,7 @@ void TrendHistory::drawPieces(State &state, const TrendLine &line, const QString
         s->setPen(pen);
         m_chart->addSeries(s);
         s->attachAxis(m_timeAxis);
+        TrendTimeTicks::attach(m_chart, s);
         // The live line's legend entry names the item.
         for (QLegendMarker *m : m_chart->legend()->markers(s))
             m->setVisible(false);

@@ -1,5 +1,7 @@
 #include "trendline.h"
 
+#include "trendtimeticks.h"
+
 #include <QPen>
 #include <QtCharts/QChart>
 #include <QtCharts/QDateTimeAxis>
@@ -24,6 +26,7 @@ void TrendLine::draw(QChart *chart, QDateTimeAxis *timeAxis, const QString &name
         s->setPen(pen);
         chart->addSeries(s);
         s->attachAxis(timeAxis);
+        TrendTimeTicks::attach(chart, s); // the labels on round moments follow its range
         s->attachAxis(axis);
         // One legend entry per item, not per line piece.
         const auto markers = chart->legend()->markers(s);

@@ -19,6 +19,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
+#include <QtCharts/QChart>
 
 namespace Fatek {
 
@@ -43,6 +44,7 @@ TrendLogging::TrendLogging(QMainWindow *window, QDockWidget *tabWith, CurrentTab
     toolsMenu->addAction(toggle);
     viewMenu->addAction(toggle);
     connect(m_trendView, &TrendView::statusMessage, this, &TrendLogging::statusMessage);
+    connect(m_trendView->chart(), &QChart::plotAreaChanged, this, &TrendLogging::growPlot);
 
     m_tableLogger = new TableLogger(this);
     m_loggingLabel = new QLabel(window);
@@ -55,7 +57,7 @@ TrendLogging::TrendLogging(QMainWindow *window, QDockWidget *tabWith, CurrentTab
     m_startLoggingAction->setToolTip(tr("Write every value of the current watch table to a CSV "
                                         "file with timestamps"));
     m_stopLoggingAction
-        = toolsMenu->addAction(tr("Sto&p Data Logging"), this, &TrendLogging::stopLogging);
+        = toolsMenu->addAction(tr("Stop Data Lo&gging"), this, &TrendLogging::stopLogging);
     m_stopLoggingAction->setEnabled(false);
     toolsMenu->addSeparator();
     connect(m_tableLogger, &TableLogger::rowWritten, this, &TrendLogging::updateLoggingStatus);
@@ -107,8 +109,26 @@ QWidget *TrendLogging::showTrend()
         m_window->tabifyDockWidget(connectionsDock, m_trendDock);
         m_trendDock->raise();
         m_window->resizeDocks({m_trendDock}, {m_window->height() * 2 / 5}, Qt::Vertical);
+        // At a laptop's height 2/5 of the window left a plot of about 100 px (one value label
+        // per axis): while the dock settles, it grows until the plot has a useful height.
+        m_growPlot = true;
+        QMetaObject::invokeMethod(
+            this, [this] { growPlot(m_trendView->chart()->plotArea()); }, Qt::QueuedConnection);
+        QTimer::singleShot(1000, this, [this] { m_growPlot = false; });
     }
     return m_trendView;
+}
+
+void TrendLogging::growPlot(const QRectF &plot)
+{
+    if (!m_growPlot || !m_trendDock->isVisible() || plot.height() <= 0)
+        return;
+    const int missing = m_trendView->usefulPlotHeight() - static_cast<int>(plot.height());
+    // The tables keep the larger part of the window.
+    const int most = m_window->height() * 11 / 20;
+    if (missing > 0 && m_trendDock->height() < most)
+        m_window->resizeDocks({m_trendDock}, {std::min(most, m_trendDock->height() + missing)},
+                              Qt::Vertical);
 }
 
 void TrendLogging::addToTrend(WatchTableWidget *table, const QList<int> &rows)

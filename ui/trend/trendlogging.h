@@ -5,6 +5,7 @@
 #include <QList>
 #include <QObject>
 #include <QPointer>
+#include <QRectF>
 
 #include <functional>
 
@@ -53,6 +54,7 @@ Q_SIGNALS:
 
 private:
     void startLoggingDialog();
+    void growPlot(const QRectF &plot);
     void updateLoggingStatus();
 
     QMainWindow *m_window;
@@ -64,6 +66,7 @@ private:
     QLabel *m_loggingLabel;
     QAction *m_startLoggingAction;
     QAction *m_stopLoggingAction;
+    bool m_growPlot = false; // the dock was just arranged: grow it once for the plot
 };
 
 } // namespace Fatek

@@ -1,5 +1,7 @@
 #include "trendnavigation.h"
 
+#include "trendtimeticks.h"
+
 #include <QComboBox>
 #include <QDateTimeEdit>
 #include <QDialog>
@@ -10,6 +12,7 @@
 #include <QPushButton>
 #include <QScrollBar>
 #include <QVBoxLayout>
+#include <QtCharts/QCategoryAxis>
 #include <QtCharts/QChart>
 #include <QtCharts/QDateTimeAxis>
 
@@ -63,8 +66,9 @@ TrendNavigation::TrendNavigation(QChart *chart, QDateTimeAxis *timeAxis, QWidget
     });
 
     // The labels say it is time: the title's line goes to the scroll bar, so that the plot keeps
-    // its height (a short plot gets fewer value ticks).
+    // its height (a short plot gets fewer value ticks). They fall on round moments.
     timeAxis->setTitleVisible(false);
+    m_ticks = new TrendTimeTicks(chart, timeAxis, this);
     m_scrollBar = new QScrollBar(Qt::Horizontal, parent);
     m_scrollBar->setObjectName(QStringLiteral("trendScrollBar"));
     m_scrollBar->setToolTip(tr("Scroll back in time (Shift+wheel over the chart too); Reset Zoom "
@@ -96,8 +100,9 @@ void TrendNavigation::showRange(qint64 fromMs, qint64 toMs, qint64 nowMs)
     const QString format = span > 2 * dayMs    ? QStringLiteral("MM-dd HH:mm")
                            : span > 2 * hourMs ? QStringLiteral("HH:mm")
                                                : QStringLiteral("HH:mm:ss");
-    if (format != m_timeAxis->format()) {
+    if (format != m_ticks->format()) {
         m_timeAxis->setFormat(format);
+        m_ticks->setFormat(format);
         fitTicks();
     }
     m_baseMs = std::min(fromMs, nowMs - ScrollBackMs);
@@ -120,12 +125,10 @@ void TrendNavigation::fitTicks()
 {
     const QRectF area = m_chart->plotArea();
     const QString sample
-        = QDateTime(QDate(2000, 12, 28), QTime(20, 58, 58)).toString(m_timeAxis->format());
-    const int label = QFontMetrics(m_timeAxis->labelsFont()).horizontalAdvance(sample);
+        = QDateTime(QDate(2000, 12, 28), QTime(20, 58, 58)).toString(m_ticks->format());
+    const int label = QFontMetrics(m_ticks->axis()->labelsFont()).horizontalAdvance(sample);
     const int fit = static_cast<int>(area.width()) / (label + label / 2) + 1;
-    const int ticks = std::clamp(fit, 2, 7);
-    if (ticks != m_timeAxis->tickCount())
-        m_timeAxis->setTickCount(ticks);
+    m_ticks->setMaxTicks(std::clamp(fit, 2, 7));
 }
 
 QDialog *TrendNavigation::chooseCustomRange()

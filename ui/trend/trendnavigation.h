@@ -13,6 +13,8 @@ class QWidget;
 
 namespace Fatek {
 
+class TrendTimeTicks;
+
 // Where the trend looks in time: the window box (10 s .. 7 days, and "Custom…", a dialog with
 // the first and last moment), the scroll bar under the chart (back to 30 days, the history's
 // retention; an arrow click moves an eighth of the range shown, a page the whole range) and the
@@ -32,6 +34,7 @@ public:
 
     QComboBox *windowBox() const { return m_windowBox; }
     QScrollBar *scrollBar() const { return m_scrollBar; }
+    TrendTimeTicks *timeTicks() const { return m_ticks; }
 
     // The box shows this window (following the present).
     void showWindow(qint64 ms);
@@ -55,6 +58,7 @@ private:
     QDateTimeAxis *m_timeAxis;
     QComboBox *m_windowBox;
     QScrollBar *m_scrollBar;
+    TrendTimeTicks *m_ticks;
     QPointer<QDialog> m_custom;
     int m_windowIndex = 1; // the box's last window, chosen again when Custom… is cancelled
     qint64 m_fromMs = 0;

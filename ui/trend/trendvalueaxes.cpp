@@ -44,6 +44,8 @@ void TrendValueAxes::setPlotHeight(double height)
 {
     // QtCharts gives each label the height between two ticks (less its padding) and cuts a
     // label that is taller to "...": a short plot gets fewer, wider-spaced ticks.
+    m_plotHeight = height;
+    fitTitles();
     const int lineHeight = QFontMetrics(m_chart->font()).height();
     const int fit = static_cast<int>(height / (2.5 * lineHeight));
     const int target = std::clamp(fit, 1, 5);
@@ -66,6 +68,21 @@ constexpr double labelRoom = 4.0 + 2.0;
 constexpr double titleRoom = 2.0 * 2.0;
 
 } // namespace
+
+void TrendValueAxes::fitTitles()
+{
+    if (m_plotHeight <= 0)
+        return;
+    for (QValueAxis *axis : m_axes) {
+        const QString full = axis->property("fatekTitle").toString();
+        const QString brief = axis->property("fatekBriefTitle").toString();
+        const bool fits
+            = QFontMetricsF(axis->titleFont()).horizontalAdvance(full) + titleRoom <= m_plotHeight;
+        const QString title = fits || brief.isEmpty() ? full : brief;
+        if (title != axis->titleText())
+            axis->setTitleText(title);
+    }
+}
 
 double TrendValueAxes::axisWidth(const QValueAxis *axis, bool title)
 {
@@ -161,9 +178,12 @@ std::vector<QValueAxis *> TrendValueAxes::rebuild(const std::vector<Line> &lines
     m_bitAxis = nullptr;
     QValueAxis *shared = nullptr;
     int analogAxes = 0;
-    auto make = [this, &analogAxes](const QString &title, const QColor &color, bool bits) {
+    auto make = [this, &analogAxes](const QString &title, const QColor &color, bool bits,
+                                    const QString &brief = {}) {
         auto *axis = new QValueAxis;
         axis->setTitleText(title);
+        axis->setProperty("fatekTitle", title);
+        axis->setProperty("fatekBriefTitle", brief);
         axis->setMinorTickCount(0);
         // A number cut to "1..." is worse than none; the view keeps the chart wide enough for
         // whole labels (minimumChartWidth()).
@@ -198,7 +218,7 @@ std::vector<QValueAxis *> TrendValueAxes::rebuild(const std::vector<Line> &lines
             }
             lineAxes.push_back(m_bitAxis);
         } else if (separate) {
-            lineAxes.push_back(make(line.title, line.color, false));
+            lineAxes.push_back(make(line.title, line.color, false, line.briefTitle));
         } else {
             if (!shared)
                 shared = make(tr("Value"), QColor(), false);
@@ -207,6 +227,7 @@ std::vector<QValueAxis *> TrendValueAxes::rebuild(const std::vector<Line> &lines
     }
     if (m_axes.empty()) // an empty chart still has its value axis
         make(tr("Value"), QColor(), false)->setRange(0, 1);
+    fitTitles();
     for (QValueAxis *axis : m_axes) {
         if (axis == m_bitAxis)
             continue;

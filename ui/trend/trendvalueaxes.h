@@ -29,6 +29,8 @@ public:
         QString title;
         QColor color;
         bool discrete = false; // 0/1: the bit axis
+        // The title when `title` is longer than the plot is high ("R0" for "Scan counter (R0)").
+        QString briefTitle;
     };
     // The values a line shows in the visible time range (min > max: none).
     struct Span
@@ -46,7 +48,8 @@ public:
     // since the last fit, the others keep the user's range.
     void fit(std::map<QValueAxis *, Span> spans, bool zoomed);
     const std::vector<QValueAxis *> &axes() const { return m_axes; }
-    // The plot's height in pixels: as many ticks as leave every label room for its height.
+    // The plot's height in pixels: as many ticks as leave every label room for its height, and
+    // titles that fit it whole (QtCharts cut a longer one to "Scan count…": the brief one then).
     void setPlotHeight(double height);
     // The chart's width in pixels: in a narrow chart the axes show no titles (the legend and the
     // axes' colours name the lines), so that their labels keep the width they need.
@@ -63,6 +66,7 @@ public:
     static QList<double> tickValues(const QValueAxis *axis);
 
 private:
+    void fitTitles();
     // The width one value axis wants: its widest tick label, the label's padding and, with
     // `title`, the title's height (the title is turned on its side).
     static double axisWidth(const QValueAxis *axis, bool title);
@@ -76,6 +80,7 @@ private:
     int m_targetTicks = 5;
     bool m_titles = true;
     double m_chartWidth = 0;
+    double m_plotHeight = 0;
 };
 
 } // namespace Fatek

@@ -63,8 +63,15 @@ TrendView::TrendView(QWidget *parent)
     m_timeAxis->setTitleText(tr("Time"));
     m_timeAxis->setTickCount(7);
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
-    connect(m_chart, &QChart::plotAreaChanged, this,
-            [this](const QRectF &area) { m_valueAxes.setPlotHeight(area.height()); });
+    connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF &area) {
+        m_valueAxes.setPlotHeight(area.height());
+        QLegend *legend = m_chart->legend();
+        if (legend->isVisible() && area.height() < usefulPlotHeight())
+            legend->hide();
+        else if (!legend->isVisible()
+                 && area.height() > usefulPlotHeight() + 3 * fontMetrics().height())
+            legend->show();
+    });
     connect(m_chart, &QGraphicsWidget::geometryChanged, this,
             [this] { m_valueAxes.setChartWidth(m_chart->size().width()); });
 
@@ -519,7 +526,8 @@ void TrendView::rebuildAxes()
 {
     std::vector<TrendValueAxes::Line> lines;
     for (const auto &item : m_items)
-        lines.push_back({displayName(item->spec), item->color, item->discrete});
+        lines.push_back({displayName(item->spec), item->color, item->discrete,
+                         QString::fromStdString(item->spec.address.toString())});
     const std::vector<QValueAxis *> axes = m_valueAxes.rebuild(lines, m_separateAxes);
     for (std::size_t i = 0; i < m_items.size(); ++i) {
         m_items[i]->axis = axes[i];

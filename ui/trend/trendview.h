@@ -79,6 +79,10 @@ public:
     void resetZoom();
 
     QChart *chart() const { return m_chart; }
+    // The least plot height that shows four value labels an axis (TrendValueAxes): a shorter plot
+    // gives the legend's rows to it (the item list names the lines in their colours), and the
+    // trend dock grows to it when it first opens.
+    int usefulPlotHeight() const { return 10 * fontMetrics().height(); }
     QDateTimeAxis *timeAxis() const { return m_timeAxis; }
     // The value axis of an item (the first axis when there is no such item).
     QValueAxis *valueAxis(int index = 0) const;

@@ -52,6 +52,13 @@ WatchTableActions::WatchTableActions(QWidget *table, QTableView *view, QUndoStac
     moveDown = new QAction(tr("Move &Down"), view);
     moveDown->setObjectName(QStringLiteral("moveDownAction"));
     setTableShortcut(moveDown, QKeySequence(Qt::CTRL | Qt::Key_Down));
+    moveRefused = new QAction(table);
+    moveRefused->setObjectName(QStringLiteral("moveRefusedAction"));
+    moveRefused->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::Key_Up), QKeySequence(Qt::CTRL | Qt::Key_Down)});
+    moveRefused->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    moveRefused->setEnabled(false);
+    table->addAction(moveRefused); // not in the rows' context menu
     ownOrder = new QAction(tr("Own &Order"), view);
     ownOrder->setObjectName(QStringLiteral("ownOrderAction"));
     ownOrder->setToolTip(tr("Show the rows in the order you gave them, not sorted"));
@@ -66,6 +73,13 @@ WatchTableActions::WatchTableActions(QWidget *table, QTableView *view, QUndoStac
     view->setContextMenuPolicy(Qt::ActionsContextMenu);
     view->addActions({write, formatMenu->menuAction(), swapWords, separator, undo, redo, copy,
                       paste, remove, separator2, moveUp, moveDown, ownOrder, trend});
+}
+
+void WatchTableActions::setRowsMovable(bool movable)
+{
+    moveUp->setEnabled(movable);
+    moveDown->setEnabled(movable);
+    moveRefused->setEnabled(!movable);
 }
 
 } // namespace Fatek

@@ -33,6 +33,12 @@ public:
     QAction *moveDown;
     QAction *ownOrder;
     QAction *trend;
+    // Ctrl+Up/Down while the rows cannot move (sorted or filtered): enabled instead of the move
+    // actions, so that the keys say why instead of doing nothing.
+    QAction *moveRefused;
+
+    // The move actions while the rows can move, moveRefused while they cannot.
+    void setRowsMovable(bool movable);
 };
 
 } // namespace Fatek

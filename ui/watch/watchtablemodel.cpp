@@ -250,7 +250,9 @@ void WatchTableModel::applySpec(int row, const WatchItemSpec &spec)
     Row &r = m_rows[row];
     const bool stationChanged = r.spec().station != spec.station;
     const bool spanChanged = r.values.setItem(spec);
-    if (spanChanged)
+    // Another station is another PLC: the value read from the old one is not this row's (it
+    // showed as "good, 1.3 s" beside a station that never answered). Waiting, under a new key.
+    if (spanChanged || stationChanged)
         m_valueState.resetRow(row);
     Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
     if (spanChanged || stationChanged)
@@ -299,7 +301,18 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
         case NameColumn: return spec.name.isEmpty() ? state.peerName : spec.name;
         case AddressColumn: return QString::fromStdString(spec.address.toString());
         case StationColumn: return spec.station;
-        case ValueColumn: return have ? valueText(r) : QStringLiteral("…");
+        case ValueColumn: {
+            if (!have)
+                return QStringLiteral("…");
+            // ON/OFF in the UI language, as the forcing table says them; what is edited and
+            // copied stays in the PLC's words, which the parser reads.
+            const QString text = valueText(r);
+            if (spec.format == DisplayFormat::Bit && text == QLatin1String("ON"))
+                return tr("ON");
+            if (spec.format == DisplayFormat::Bit && text == QLatin1String("OFF"))
+                return tr("OFF");
+            return text;
+        }
         case FormatColumn:
             return spec.swapWords ? tr("%1, words swapped").arg(UiText::format(spec.format))
                                   : UiText::format(spec.format);
@@ -372,6 +385,9 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                 lines << (discrete ? tr("Click the box to toggle")
                                    : tr("Double-click or F2 to write"));
         } else if (index.column() == NameColumn) {
+            // The whole name: a narrow column elides it.
+            if (!spec.name.isEmpty())
+                lines << spec.name;
             if (spec.name.isEmpty() && !state.peerName.isEmpty())
                 lines << tr("The gateway's name for this item; type a name to use your own.");
             if (spec.history)
@@ -392,6 +408,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
                 lines << tr("%n alarm(s) defined (Alarms… in the context menu, Ctrl+Shift+A)",
                             nullptr, static_cast<int>(spec.alarms.size()));
         }
+        if (index.column() == CommentColumn && !spec.comment.isEmpty())
+            lines << spec.comment; // whole, where the column elides it
         return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
     }
     case Qt::DecorationRole:

@@ -38,9 +38,10 @@ void WatchTableView::setUpColumns()
     header->setSortIndicator(-1, Qt::AscendingOrder); // not sorted by the first column at start
     setSortingEnabled(true);
     const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    // Quality holds its age too ("good, 0.4 s"). The comment stretches into what is left: its own
-    // width is the least it keeps (a stretched last section never gets narrower than that).
-    const int widths[] = {14, 7, 5, 13, 9, 10, 9, 3};
+    // Quality holds its age too ("good, 0.4 s", "no answer, 1.3 s"). The comment stretches into
+    // what is left: its own width is the least it keeps (a stretched last section never gets
+    // narrower than that).
+    const int widths[] = {14, 7, 5, 13, 9, 12, 9, 3};
     for (int c = 0; c < WatchTableModel::ColumnCount; ++c)
         header->resizeSection(c, widths[c] * em);
     header->setMinimumSectionSize(3 * em);
@@ -77,6 +78,12 @@ void WatchTableView::fitColumns()
             excess -= give;
         }
     }
+}
+
+void WatchTableView::showInsertedRow(const QModelIndex &index)
+{
+    doItemsLayout();
+    scrollTo(index);
 }
 
 void WatchTableView::setRowsMovable(bool movable)

@@ -29,6 +29,9 @@ public:
 
     // While off (sorted or filtered rows), rows cannot be dragged.
     void setRowsMovable(bool movable);
+    // Scrolls a row just inserted into view (the scroll range is laid out first: it is updated
+    // later otherwise, and the scroll would stop at the old end).
+    void showInsertedRow(const QModelIndex &index);
     // What a drag of the selected rows carries (only this view takes it); nullptr: none selected.
     QMimeData *rowsMimeData() const;
     static constexpr const char *rowsMimeType = "application/x-fatek-watch-rows";

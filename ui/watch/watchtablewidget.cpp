@@ -22,7 +22,6 @@
 #include <QMenu>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QTableView>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -119,6 +118,8 @@ QLayout *WatchTableWidget::createEntryBar()
     connect(this, &WatchTableWidget::nameChanged, this, &WatchTableWidget::edited);
     connect(m_interval, &QSpinBox::valueChanged, this, &WatchTableWidget::pushPollList);
     connect(m_pause, &QToolButton::toggled, this, [this](bool paused) {
+        m_pause->setText(paused ? tr("Resume") : tr("Pause")); // what a click does
+        m_pause->setToolTip(paused ? tr("Poll this table again") : tr("Stop polling this table"));
         pushPollList();
         if (paused)
             m_model->markAllStale(tr("polling paused"));
@@ -130,8 +131,7 @@ QLayout *WatchTableWidget::createEntryBar()
 
 QLayout *WatchTableWidget::createMessageBar()
 {
-    // One line, always there: a message that comes and goes never shifts the rows under the
-    // pointer. The whole text is in the tooltip and in the status bar.
+    // One line, always there (a message never shifts the rows); whole in its tooltip and status.
     m_message = new MessageLine(1, this);
     m_message->setObjectName(QStringLiteral("messageLabel"));
 
@@ -193,11 +193,10 @@ void WatchTableWidget::setUpView()
     m_view->setItemDelegate(delegate);
     m_view->setUpColumns();
 
-    // Rows are moved in the model's order: not while the view shows another.
+    // Rows are moved in the model's order: not while the view shows another (Ctrl+Up says so).
     connect(m_proxy, &WatchTableProxy::rearrangedChanged, this, [this](bool rearranged) {
         m_view->setRowsMovable(!rearranged);
-        m_actions.moveUp->setEnabled(!rearranged);
-        m_actions.moveDown->setEnabled(!rearranged);
+        m_actions.setRowsMovable(!rearranged);
     });
     connect(m_view, &WatchTableView::rowsDropped, this,
             [this](const QList<int> &rows, int destination) {
@@ -219,6 +218,9 @@ void WatchTableWidget::connectActions()
     connect(m_actions.copy, &QAction::triggered, this, &WatchTableWidget::copySelected);
     connect(m_actions.moveUp, &QAction::triggered, this, [this] { moveSelected(-1); });
     connect(m_actions.moveDown, &QAction::triggered, this, [this] { moveSelected(1); });
+    connect(m_actions.moveRefused, &QAction::triggered, this, [this] {
+        showMessage(tr("Rows move only in own order: clear the filter, choose Own Order."), false);
+    });
     connect(m_actions.ownOrder, &QAction::triggered, this,
             [this] { m_view->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder); });
     connect(m_actions.formatMenu, &QMenu::aboutToShow, this, &WatchTableWidget::fillFormatMenu);
@@ -545,6 +547,7 @@ bool WatchTableWidget::addFromText(const QString &text)
         }
     }
     m_model->addItems(items);
+    m_view->showInsertedRow(m_proxy->mapFromSource(m_model->index(m_model->rowCount() - 1, 0)));
     m_addEdit->clear();
     const int typed = static_cast<int>(items.size()) - companions;
     showMessage(companions == 0
@@ -565,6 +568,7 @@ bool WatchTableWidget::addFromPaste(const QString &text)
     }
     // Rows only, as new rows: a paste never writes a value to the PLC.
     m_model->addItems(*items);
+    m_view->showInsertedRow(m_proxy->mapFromSource(m_model->index(m_model->rowCount() - 1, 0)));
     showMessage(tr("Pasted %n item(s).", nullptr, static_cast<int>(items->size())), false);
     return true;
 }

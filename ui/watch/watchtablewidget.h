@@ -80,6 +80,14 @@ public:
         m_writer->setConfirmHandler(std::move(handler));
     }
 
+    // Operator mode has ended: a write it refused ("Read-only mode") is no longer the state of
+    // things; the message says what it means now.
+    void operatorModeEnded()
+    {
+        if (!m_failedWrite.isEmpty())
+            showMessage(tr("Operator mode is off; %1 was not written.").arg(m_failedWrite), false);
+    }
+
     // Adds items from typed text (addresses, ranges); false with message() set on bad input.
     bool addFromText(const QString &text);
     // Adds items from pasted text (CSV rows or addresses).

@@ -261,6 +261,10 @@ void WatchValueState::markAllStale(const Message &reason)
     std::vector<int> touched;
     for (int r = 0; r < m_rows.size(); ++r) {
         RowValue &row = m_rows[r];
+        // A refusal (R5000 on a PLC without it) stays true while nothing is read: the row
+        // keeps its error and reason rather than turning "waiting".
+        if (row.quality == ValueQuality::Error)
+            continue;
         const bool changed = row.quality != ValueQuality::Stale || row.error != reason;
         row.quality = ValueQuality::Stale;
         row.error = reason;
