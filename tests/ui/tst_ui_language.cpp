@@ -2,6 +2,7 @@
 // "通訊協定(&T)") are unique in every menu, dock and dialog, in English and in Traditional
 // Chinese; the zh_TW leftovers (bit values, the snapshot's summary) read in Chinese; English
 // counts say "1 row", "4 rows". The main window runs the demo PLC at 1366x768.
+#include "demowindow.h"
 #include "testutil.h"
 #include "ui/mainwindow/languagemenu.h"
 #include "ui/mainwindow/mainwindow.h"
@@ -120,16 +121,7 @@ class TestUiLanguage : public QObject
     QTemporaryDir m_settingsDir;
     std::unique_ptr<MainWindow> m_window;
 
-    bool openDemo()
-    {
-        m_window = std::make_unique<MainWindow>();
-        m_window->setConfirmHandler([](QWidget *, const QString &) { return true; });
-        m_window->show();
-        if (!QTest::qWaitForWindowExposed(m_window.get()))
-            return false;
-        m_window->startDemo();
-        return QTest::qWaitFor([this] { return m_window->hasValues(); }, longWait);
-    }
+    bool openDemo() { return UiTestUtil::openDemoWindow(m_window, false, longWait); }
 
     // Each page of the New Connection dialog (serial, TCP, UDP, gateway), as the person sees it.
     QStringList connectionDialogClashes()

@@ -3,6 +3,7 @@
 // against the demo simulator (real, over loopback TCP). Every visible control must lie on the
 // screen's available area and inside its own window, with no sideways scrolling; vertical
 // scrolling of a tool dock is allowed.
+#include "demowindow.h"
 #include "testutil.h"
 #include "ui/common/messageline.h"
 #include "ui/connection/connection.h"
@@ -173,16 +174,7 @@ private:
     std::unique_ptr<MainWindow> m_window;
 
     // The window as on a first start, with the demo PLC connected and its table polling.
-    bool openDemo()
-    {
-        m_window = std::make_unique<MainWindow>();
-        m_window->setConfirmHandler([](QWidget *, const QString &) { return true; });
-        m_window->show();
-        if (!QTest::qWaitForWindowExposed(m_window.get()))
-            return false;
-        m_window->startDemo();
-        return QTest::qWaitFor([this] { return m_window->hasValues(); }, longWait);
-    }
+    bool openDemo() { return UiTestUtil::openDemoWindow(m_window, false, longWait); }
 
     static QString report(const QStringList &problems)
     {

@@ -5,9 +5,14 @@
 // against its rectangle (QFontMetrics::horizontalAdvance against contentsRect, word wrap and
 // elision accounted for): a text wider than its place fails, unless it is elided on purpose with
 // the whole text in its tooltip (a narrow table column).
+#include "core/sim/modelprofile.h"
+#include "core/sim/simserver.h"
+#include "core/sim/simulatedplc.h"
+#include "demowindow.h"
 #include "testutil.h"
 #include "ui/common/messageline.h"
 #include "ui/common/toolconfirmation.h"
+#include "ui/connection/connection.h"
 #include "ui/mainwindow/mainwindow.h"
 #include "ui/watch/watchtablemodel.h"
 #include "ui/watch/watchtablewidget.h"
@@ -224,16 +229,7 @@ class TestUiTextFit : public QObject
     QTemporaryDir m_settingsDir;
     std::unique_ptr<MainWindow> m_window;
 
-    bool openDemo()
-    {
-        m_window = std::make_unique<MainWindow>();
-        m_window->setConfirmHandler([](QWidget *, const QString &) { return true; });
-        m_window->showMaximized();
-        if (!QTest::qWaitForWindowExposed(m_window.get()))
-            return false;
-        m_window->startDemo();
-        return QTest::qWaitFor([this] { return m_window->hasValues(); }, longWait);
-    }
+    bool openDemo() { return UiTestUtil::openDemoWindow(m_window, true, longWait); }
 
     static QString report(const QStringList &problems)
     {
@@ -329,6 +325,52 @@ private Q_SLOTS:
     }
 
     // The connection dialog, each of its pages.
+    // An M-series PLC over TCP on a five-digit port, as the issue met it: the table's connection
+    // box names "127.0.0.1:NNNNN" whole, and PLC Control and Forcing (whose scan the M series
+    // answers its own way) fit with this PLC's words.
+    void mSeriesOverTcpFits()
+    {
+        SimulatedPlc plc(ModelProfile::mSeries());
+        plc.setRunning(true);
+        SimServer server(&plc);
+        QVERIFY(server.listenTcp(0));
+        m_window = std::make_unique<MainWindow>();
+        m_window->setConfirmHandler([](QWidget *, const QString &) { return true; });
+        m_window->showMaximized();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        SavedConnection saved;
+        saved.settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), server.tcpPort());
+        Connection *c = m_window->openConnection(saved, false);
+        QVERIFY(c);
+        QTRY_VERIFY_WITH_TIMEOUT(c->plcText().contains(QStringLiteral("RUN")), longWait);
+        m_window->currentWatchTable()->addFromText(QStringLiteral("R0, R1, Y0"));
+        QStringList problems = cutTexts(m_window.get());
+        for (const char *tool : {"control", "forcing"}) {
+            QWidget *opened = m_window->openTool(QString::fromLatin1(tool));
+            QVERIFY(opened);
+            QTest::qWait(1500); // first answers, messages
+            if (QLatin1String(tool) == QLatin1String("forcing")) {
+                auto *scan = opened->findChild<QAbstractButton *>(QStringLiteral("scanButton"));
+                QVERIFY(scan);
+                if (!scan->isVisible()) {
+                    auto *tabs = opened->findChild<QTabWidget *>();
+                    QVERIFY(tabs);
+                    tabs->setCurrentIndex(1);
+                }
+                QTRY_VERIFY(scan->isVisible());
+                scan->click();
+                auto *message = opened->findChild<MessageLine *>(QStringLiteral("forcedMessage"));
+                QVERIFY(message);
+                QTRY_VERIFY_WITH_TIMEOUT(!message->text().isEmpty(), longWait);
+                QTest::qWait(200);
+            }
+            problems << cutTexts(opened->window());
+        }
+        problems.removeDuplicates();
+        QVERIFY2(problems.isEmpty(), qPrintable(report(problems)));
+        m_window.reset();
+    }
+
     void connectionDialogFits()
     {
         QVERIFY(openDemo());

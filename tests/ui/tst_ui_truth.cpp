@@ -7,6 +7,7 @@
 // an M-series PLC is named by its family in the connections list.
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "demowindow.h"
 #include "testutil.h"
 #include "ui/common/messageline.h"
 #include "ui/connection/connection.h"
@@ -58,16 +59,7 @@ class TestUiTruth : public QObject
     QTemporaryDir m_settingsDir;
     std::unique_ptr<MainWindow> m_window;
 
-    bool openDemo()
-    {
-        m_window = std::make_unique<MainWindow>();
-        m_window->setConfirmHandler([](QWidget *, const QString &) { return true; });
-        m_window->show();
-        if (!QTest::qWaitForWindowExposed(m_window.get()))
-            return false;
-        m_window->startDemo();
-        return QTest::qWaitFor([this] { return m_window->hasValues(); }, longWait);
-    }
+    bool openDemo() { return UiTestUtil::openDemoWindow(m_window, false, longWait); }
 
     WatchTableWidget *table() const { return m_window->currentWatchTable(); }
     WatchTableModel *model() const { return table()->model(); }
