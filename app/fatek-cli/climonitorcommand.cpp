@@ -201,9 +201,11 @@ void CliMonitorCommand::onValues(const QList<WatchValue> &values)
     else
         out().streamRow(tableCells, json);
 
-    // Nothing read for three cycles in a row: the link is gone for practical purposes.
+    // Nothing read for three cycles in a row: the link is gone for practical purposes. A station
+    // the poller has put to rest left 3 requests in a row unanswered already, and its next
+    // values come only with its next probe: that is the end too.
     m_staleCycles = (!anyGood && !staleReason.isEmpty()) ? m_staleCycles + 1 : 0;
-    if (m_staleCycles >= 3) {
+    if (m_staleCycles >= 3 || (!anyGood && stationSilent)) {
         // The program ends here: the poller's "polled again at ..." would not happen.
         const QString why = stationSilent ? QStringLiteral("station %1 does not answer on %2.")
                                                 .arg(m_context.stationText(), m_context.linkName())

@@ -54,9 +54,10 @@ namespace {
 //   (F2, Ctrl, Shift, Enter), file patterns (*.csv), command-line options (--read-only)
 //   the product and protocol names (FATEK Studio, FACON, Windows, SQLite, PostgreSQL, Home
 //   Assistant), link and
-//   frame terms (TCP, UDP, IP, RTT, RS-232/485, RTS/CTS, XON/XOFF, STX, ETX, LRC, CRC, ASCII, BCD,
-//   CSV, JSON, PNG, PLC, ID, OS, HMI, ROM, IPv6), link URLs (tcp://, udp://, serial:///dev/ttyUSB0)
-//   and the broker's (MQTT, TLS, CA, URL, mqtt:// and mqtts:// addresses, JSON commands such as
+//   frame terms (TCP, UDP, IP, RTT, RS-232/485, RTS/CTS, XON/XOFF, STX, ETX, NUL, LRC, CRC, ASCII,
+//   BCD, CSV, JSON, PNG, PLC, ID, OS, HMI, ROM, IPv6), link URLs (tcp://, udp://,
+//   serial:///dev/ttyUSB0) and the broker's (MQTT, TLS, CA, URL, mqtt:// and mqtts:// addresses,
+//   JSON commands such as
 //   {"value":
 //   ...}) the PLC's own words as printed on the unit (RUN, STOP, ON, OFF, model names such as
 //   FBs-28MC, main unit types MA MU MC)
@@ -65,7 +66,7 @@ namespace {
 //   ($PGPASSWORD), a file in the home folder (~/.pgpass).
 // The language menu also names "English" in English (each language in its own words).
 const QRegularExpression allowed(QStringLiteral(
-    R"(\bFBs-\d+M[ACU](?:/MU)?\b|\bFATEK Studio\b|\bHome Assistant\b|\b(?:FATEK|FACON|Windows|SQLite|PostgreSQL|TCP|UDP|IP|RTT|RS|RTS|CTS|XON|XOFF|STX|ETX|LRC|CRC|)"
+    R"(\bFBs-\d+M[ACU](?:/MU)?\b|\bFATEK Studio\b|\bHome Assistant\b|\b(?:FATEK|FACON|Windows|SQLite|PostgreSQL|TCP|UDP|IP|RTT|RS|RTS|CTS|XON|XOFF|STX|ETX|NUL|LRC|CRC|)"
     R"(ASCII|BCD|CSV|JSON|PNG|PLC|ID|OS|HMI|ROM|MQTT|TLS|CA|URL|RUN|STOP|ON|OFF|MA|MU|MC|Ctrl|Shift|)"
     R"(Enter|ms|Hz|IPv6)\b|「[a-z][A-Za-z]*」|\$[A-Z_]+\b|~/\.\w+|\b(?:mqtts?|tcp|udp|serial)://[^\s，。）]*|\{"\w+":[^}]*\}|)"
     R"(\b(?:[XYMSTCRDF]|W[XYMSTC]|DW[XYMSTC]|RT|RC|DRT|DRC|DR|DD|DF)(?:\d+)?\b|)"
