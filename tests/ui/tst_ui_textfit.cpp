@@ -231,6 +231,30 @@ class TestUiTextFit : public QObject
 
     bool openDemo() { return UiTestUtil::openDemoWindow(m_window, true, longWait); }
 
+    // Forcing's forced-points scan, clicked as a person would (its tab chosen first when the
+    // dock shows tabs); true once its outcome is shown.
+    static bool scanForcedPoints(QWidget *forcing)
+    {
+        auto *scan = forcing->findChild<QAbstractButton *>(QStringLiteral("scanButton"));
+        if (!scan)
+            return false;
+        if (!scan->isVisible()) {
+            auto *tabs = forcing->findChild<QTabWidget *>();
+            if (!tabs)
+                return false;
+            tabs->setCurrentIndex(1);
+        }
+        if (!QTest::qWaitFor([scan] { return scan->isVisible(); }, 5000))
+            return false;
+        scan->click();
+        auto *message = forcing->findChild<MessageLine *>(QStringLiteral("forcedMessage"));
+        if (!message
+            || !QTest::qWaitFor([message] { return !message->text().isEmpty(); }, longWait))
+            return false;
+        QTest::qWait(200);
+        return true;
+    }
+
     static QString report(const QStringList &problems)
     {
         return QStringLiteral("\n  ") + problems.join(QStringLiteral("\n  "));
@@ -303,19 +327,7 @@ private Q_SLOTS:
         QStringList problems = cutTexts(top);
         if (tool == QLatin1String("forcing")) {
             // Its forced points: the scan's outcome and the list.
-            auto *scan = opened->findChild<QAbstractButton *>(QStringLiteral("scanButton"));
-            QVERIFY(scan);
-            if (!scan->isVisible()) {
-                auto *tabs = opened->findChild<QTabWidget *>();
-                QVERIFY(tabs);
-                tabs->setCurrentIndex(1);
-            }
-            QTRY_VERIFY(scan->isVisible());
-            scan->click();
-            auto *message = opened->findChild<MessageLine *>(QStringLiteral("forcedMessage"));
-            QVERIFY(message);
-            QTRY_VERIFY_WITH_TIMEOUT(!message->text().isEmpty(), longWait);
-            QTest::qWait(200);
+            QVERIFY(scanForcedPoints(opened));
             problems << cutTexts(top);
         }
         if (top != m_window.get())
@@ -349,21 +361,8 @@ private Q_SLOTS:
             QWidget *opened = m_window->openTool(QString::fromLatin1(tool));
             QVERIFY(opened);
             QTest::qWait(1500); // first answers, messages
-            if (QLatin1String(tool) == QLatin1String("forcing")) {
-                auto *scan = opened->findChild<QAbstractButton *>(QStringLiteral("scanButton"));
-                QVERIFY(scan);
-                if (!scan->isVisible()) {
-                    auto *tabs = opened->findChild<QTabWidget *>();
-                    QVERIFY(tabs);
-                    tabs->setCurrentIndex(1);
-                }
-                QTRY_VERIFY(scan->isVisible());
-                scan->click();
-                auto *message = opened->findChild<MessageLine *>(QStringLiteral("forcedMessage"));
-                QVERIFY(message);
-                QTRY_VERIFY_WITH_TIMEOUT(!message->text().isEmpty(), longWait);
-                QTest::qWait(200);
-            }
+            if (QLatin1String(tool) == QLatin1String("forcing"))
+                QVERIFY(scanForcedPoints(opened));
             problems << cutTexts(opened->window());
         }
         problems.removeDuplicates();
