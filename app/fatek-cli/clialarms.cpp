@@ -153,12 +153,7 @@ int readJournal(const AlarmsOptions &o)
             continue;
         const std::optional<qint64> ms = CliAlarms::parseTime(text, now);
         if (!ms)
-            return CliOutput::usageError(
-                QStringLiteral("--%1: \"%2\" is not a time (ISO 8601 such as "
-                               "2026-12-07 or 2026-12-07T08:00[:00][+08:00], "
-                               "now, or before now: -90s, -30m, -2h, -7d).")
-                    .arg(QLatin1String(name), text),
-                o.json);
+            return CliAlarms::badTime(name, text, o.json);
         *out = *ms;
     }
     Result<std::unique_ptr<AlarmJournal>> journal = AlarmJournal::openReadOnly(o.journal);
@@ -264,6 +259,15 @@ int watch(const AlarmsOptions &o)
 } // namespace
 
 namespace CliAlarms {
+
+int badTime(const char *name, const QString &text, bool json)
+{
+    return CliOutput::usageError(QStringLiteral("--%1: \"%2\" is not a time (ISO 8601 such as "
+                                                "2026-12-07 or 2026-12-07T08:00[:00][+08:00], "
+                                                "now, or before now: -90s, -30m, -2h, -7d).")
+                                     .arg(QLatin1String(name), text),
+                                 json);
+}
 
 std::optional<qint64> parseTime(const QString &text, qint64 nowMs)
 {

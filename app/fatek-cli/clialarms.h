@@ -26,6 +26,8 @@ namespace CliAlarms {
 // ...Z; local time without an offset), "now", or before now: -90s, -30m, -2h, -7d. Milliseconds
 // since the epoch, or nothing when the text is none of these.
 std::optional<qint64> parseTime(const QString &text, qint64 nowMs);
+// The usage error of a TIME option (`name` without its dashes) that parseTime refused.
+int badTime(const char *name, const QString &text, bool json);
 } // namespace CliAlarms
 
 } // namespace Fatek

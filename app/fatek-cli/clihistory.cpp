@@ -165,12 +165,7 @@ int run(const HistoryOptions &o)
          {std::tuple{o.from, "from", &from}, std::tuple{o.to, "to", &to}}) {
         const std::optional<qint64> ms = CliAlarms::parseTime(text, now);
         if (!ms)
-            return CliOutput::usageError(
-                QStringLiteral("--%1: \"%2\" is not a time (ISO 8601 such as "
-                               "2026-12-07 or 2026-12-07T08:00[:00][+08:00], "
-                               "now, or before now: -90s, -30m, -2h, -7d).")
-                    .arg(QLatin1String(name), text),
-                o.json);
+            return CliAlarms::badTime(name, text, o.json);
         *out = *ms;
     }
     if (to <= from)
