@@ -10,6 +10,7 @@
 // Screenshots of each place go to /tmp/tst_ui_nolostwork-*.png.
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "runningfbs.h"
 #include "testutil.h"
 #include "ui/connection/connection.h"
 #include "ui/mainwindow/mainwindow.h"
@@ -50,22 +51,7 @@ namespace {
 constexpr int longWait = 20000;
 const QSize laptop(1366, 768);
 
-struct Plc
-{
-    SimulatedPlc plc{ModelProfile::fbs()};
-    SimServer server{&plc};
-    quint16 port = 0;
-
-    Plc()
-    {
-        plc.setRunning(true);
-        QString error;
-        if (server.listenTcp(0, &error))
-            port = server.tcpPort();
-        else
-            qWarning("cannot listen: %s", qPrintable(error));
-    }
-};
+using Plc = RunningFbs;
 
 SavedConnection savedFor(quint16 port, const QString &name)
 {

@@ -4,6 +4,7 @@
 // failure once the link is back.
 #include "core/sim/simserver.h"
 #include "core/sim/simulatedplc.h"
+#include "runningfbs.h"
 #include "testutil.h"
 #include "ui/common/messageline.h"
 #include "ui/connection/connection.h"
@@ -30,20 +31,7 @@ namespace {
 constexpr int longWait = 20000;
 constexpr int keyDelayMs = 50;
 
-// A simulated FBs on a free loopback port.
-struct Plc
-{
-    SimulatedPlc plc{ModelProfile::fbs()};
-    SimServer server{&plc};
-    quint16 port = 0;
-
-    Plc()
-    {
-        plc.setRunning(true);
-        if (server.listenTcp(0))
-            port = server.tcpPort();
-    }
-};
+using Plc = RunningFbs;
 
 } // namespace
 
