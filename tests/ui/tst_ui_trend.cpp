@@ -81,7 +81,7 @@ bool niceTicks(const QList<double> &ticks, QString *why)
     const double power = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
     const double mantissa = step / power;
     if (std::abs(mantissa - 1) > 1e-6 && std::abs(mantissa - 2) > 1e-6
-        && std::abs(mantissa - 5) > 1e-6) {
+        && std::abs(mantissa - 2.5) > 1e-6 && std::abs(mantissa - 5) > 1e-6) {
         *why = QStringLiteral("step %1").arg(step);
         return false;
     }
@@ -135,6 +135,7 @@ private Q_SLOTS:
     void doubleWordsPlotAsTheTableShowsThem();
     void timeTicksAreRound();
     void zoomedTimeLabelsAreRound();
+    void valueStepsKeepThreeLabels();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -620,6 +621,38 @@ void TestUiTrend::doubleWordsPlotAsTheTableShowsThem()
 
 // Issue 54: the time labels fall on round moments of local time, evenly spaced, at every span
 // and label count (a zoom gave :38 :40 :43 :45 :47).
+// CI found a laptop's trend with two labels on the sine's axis: the step was rounded up from the
+// range alone, and where the ticks fell depended on the data. Every range, anywhere on the
+// number line, gets at least three ticks and not many more than the plot has room for.
+void TestUiTrend::valueStepsKeepThreeLabels()
+{
+    QValueAxis axis;
+    for (int target = 1; target <= 5; ++target) {
+        for (double span : {0.013, 0.9, 1.0, 7.3, 13.0, 21.7, 110.0, 1234.5, 2200.0, 99999.0}) {
+            for (int shift = -40; shift <= 40; ++shift) {
+                const double min = span * shift / 13.7;
+                const double max = min + span;
+                const double step = TrendView::niceStep(min, max, target);
+                axis.setRange(min, max);
+                axis.setTickType(QValueAxis::TicksDynamic);
+                axis.setTickAnchor(0.0);
+                axis.setTickInterval(step);
+                const QList<double> ticks = TrendView::tickValues(&axis);
+                const QString what = QStringLiteral("%1..%2 for %3 ticks: step %4, %5 ticks")
+                                         .arg(min)
+                                         .arg(max)
+                                         .arg(target)
+                                         .arg(step)
+                                         .arg(ticks.size());
+                QVERIFY2(ticks.size() >= std::min(target, 3), qPrintable(what));
+                QVERIFY2(ticks.size() <= target + 2, qPrintable(what));
+                QString why;
+                QVERIFY2(ticks.size() < 2 || niceTicks(ticks, &why), qPrintable(what + ": " + why));
+            }
+        }
+    }
+}
+
 void TestUiTrend::timeTicksAreRound()
 {
     const QList<qint64> roundSteps

@@ -15,19 +15,25 @@ namespace {
 constexpr double bitAxisMin = -0.25;
 constexpr double bitAxisMax = 1.25;
 
-// Digits after the point that a tick step needs (0.25 -> 2, 5 -> 0).
+// Digits after the point that a tick step needs (0.25 -> 2, 2.5 -> 1, 5 -> 0): the ticks are
+// multiples of the step.
 int decimalsFor(double step)
 {
-    if (!(step > 0) || step >= 1)
+    if (!(step > 0) || !std::isfinite(step))
         return 0;
-    return std::clamp(static_cast<int>(std::ceil(-std::log10(step) - 1e-9)), 0, 12);
+    for (int digits = 0; digits < 12; ++digits) {
+        const double scaled = step * std::pow(10.0, digits);
+        if (std::abs(scaled - std::round(scaled)) <= 1e-9 * scaled)
+            return digits;
+    }
+    return 12;
 }
 
 // Ticks on round numbers for the visible range of an analog axis; labels with the digits the
 // step needs.
 void applyNiceTicks(QValueAxis *axis, double min, double max, int targetTicks)
 {
-    const double step = TrendValueAxes::niceStep(max - min, targetTicks);
+    const double step = TrendValueAxes::niceStep(min, max, targetTicks);
     axis->setTickAnchor(0.0);
     axis->setTickInterval(step);
     axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimalsFor(step)));
@@ -135,15 +141,33 @@ void TrendValueAxes::setChartWidth(double width)
         axis->setTitleVisible(titles);
 }
 
-double TrendValueAxes::niceStep(double range, int targetTicks)
+double TrendValueAxes::niceStep(double min, double max, int targetTicks)
 {
+    const double range = max - min;
     if (!(range > 0) || !std::isfinite(range))
         return 1.0;
-    const double rough = range / std::max(1, targetTicks);
-    const double power = std::pow(10.0, std::floor(std::log10(rough)));
-    const double fraction = rough / power; // 1 <= fraction < 10
-    const double nice = fraction < 1.5 ? 1 : fraction < 3 ? 2 : fraction < 7 ? 5 : 10;
-    return nice * power;
+    // Of the round steps (1, 2, 2.5 and 5 times a power of ten) the one whose ticks inside
+    // min..max come closest to the target, and never fewer than three where three are wanted:
+    // rounding the step alone could leave two labels on a laptop's plot, depending on the data.
+    const int target = std::max(1, targetTicks);
+    const int wanted = std::min(target, 3);
+    const double power = std::pow(10.0, std::floor(std::log10(range)));
+    double best = 0;
+    int bestCount = 0;
+    for (int exponent = 1; exponent >= -3; --exponent) {
+        for (double mantissa : {5.0, 2.5, 2.0, 1.0}) {
+            const double step = mantissa * power * std::pow(10.0, exponent);
+            const auto count = static_cast<int>(std::floor(max / step + 1e-9)
+                                                - std::ceil(min / step - 1e-9) + 1);
+            if (count < wanted)
+                continue;
+            if (best == 0 || std::abs(count - target) < std::abs(bestCount - target)) {
+                best = step;
+                bestCount = count;
+            }
+        }
+    }
+    return best > 0 ? best : range;
 }
 
 QList<double> TrendValueAxes::tickValues(const QValueAxis *axis)

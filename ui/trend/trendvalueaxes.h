@@ -59,9 +59,9 @@ public:
     // labels of axes squeezed below their width to "...".
     int minimumChartWidth() const;
 
-    // The distance of the ticks on a value axis showing `range`: 1, 2 or 5 times a power of ten,
-    // about `targetTicks` ticks.
-    static double niceStep(double range, int targetTicks = 5);
+    // The distance of the ticks on a value axis showing min..max: 1, 2, 2.5 or 5 times a power
+    // of ten, about `targetTicks` ticks and at least min(targetTicks, 3).
+    static double niceStep(double min, double max, int targetTicks = 5);
     // The ticks a value axis shows (round numbers in its range).
     static QList<double> tickValues(const QValueAxis *axis);
 

@@ -91,9 +91,9 @@ public:
     bool hasSeparateAxes() const { return m_separateAxes; }
     void setSeparateAxes(bool separate);
     // Tick steps and ticks of the value axes (see TrendValueAxes).
-    static double niceStep(double range, int targetTicks = 5)
+    static double niceStep(double min, double max, int targetTicks = 5)
     {
-        return TrendValueAxes::niceStep(range, targetTicks);
+        return TrendValueAxes::niceStep(min, max, targetTicks);
     }
     static QList<double> tickValues(const QValueAxis *axis)
     {
