@@ -33,8 +33,10 @@ QColor resultColour(CheckoutResult r)
 {
     switch (r) {
     case CheckoutResult::Passed: return QColor(0x1b, 0x7f, 0x1b);
+    case CheckoutResult::PassedWithRemark: return QColor(0x1b, 0x6f, 0x5f);
     case CheckoutResult::Failed: return QColor(0xb0, 0x00, 0x20);
-    case CheckoutResult::Skipped: return QColor(0x8a, 0x6d, 0x00);
+    case CheckoutResult::Deferred: return QColor(0x8a, 0x6d, 0x00);
+    case CheckoutResult::NotApplicable: return QColor(0x44, 0x44, 0x88);
     case CheckoutResult::Untested: return QColor(0x55, 0x55, 0x55);
     }
     return Qt::black;
@@ -204,30 +206,27 @@ private:
     void addPunchList()
     {
         addHeading(msg<MsgId::ReportPunchList>(), false);
-        std::vector<const CheckoutReport::Row *> failed;
         QStringList untested;
         for (const CheckoutReport::Row &r : m_report.rows) {
-            if (r.result == CheckoutResult::Failed)
-                failed.push_back(&r);
-            else if (r.result == CheckoutResult::Untested)
+            if (r.result == CheckoutResult::Untested)
                 untested << r.address;
         }
-        if (failed.empty()) {
+        if (m_report.punch.empty()) {
             addParagraph(text(msg<MsgId::ReportNoFailed>()), m_body, mm(1));
         } else {
-            const std::vector<qreal> x = edges({6, 17, 18, 23, 16, 20});
-            const int header
-                = addTableHeader({msg<MsgId::ReportPoint>(), msg<MsgId::ReportName>(),
-                                  msg<MsgId::ReportMeasured>(), msg<MsgId::ReportComment>(),
-                                  msg<MsgId::ReportEngineer>(), msg<MsgId::ReportTested>()},
-                                 x);
-            for (const CheckoutReport::Row *r : failed)
-                addRow({{r->address, Qt::black, true},
-                        {r->name},
-                        {text(r->measured)},
-                        {r->comment},
-                        {r->engineer},
-                        {r->time}},
+            const std::vector<qreal> x = edges({7, 18, 11, 34, 14, 16});
+            std::vector<Message> titles = CheckoutReport::punchColumns();
+            const int header = addTableHeader(titles, x);
+            for (const CheckoutReport::PunchRow &r : m_report.punch)
+                addRow({{r.address, Qt::black, true},
+                        {r.name},
+                        {text(checkoutResultMessage(r.result)), resultColour(r.result), true},
+                        {r.remark},
+                        {r.owner},
+                        {text(r.state),
+                         r.closed ? resultColour(CheckoutResult::Passed)
+                                  : resultColour(CheckoutResult::Failed),
+                         !r.closed}},
                        x, header);
         }
         if (!untested.isEmpty()) {
@@ -241,7 +240,7 @@ private:
     void addResults()
     {
         addHeading(msg<MsgId::ReportResults>(), true);
-        const std::vector<qreal> x = edges({6, 13, 7, 6, 7, 16, 17, 18, 10});
+        const std::vector<qreal> x = edges({6, 13, 7, 6, 8, 19, 15, 17, 10, 5});
         const int header = addTableHeader(CheckoutReport::columns(), x);
         for (std::size_t i = 0; i < m_report.rows.size(); ++i) {
             const CheckoutReport::Row &r = m_report.rows[i];
@@ -254,7 +253,8 @@ private:
                     {text(r.measured)},
                     {r.comment},
                     {r.time},
-                    {r.engineer}},
+                    {r.engineer},
+                    {r.attempts > 1 ? QString::number(r.attempts) : QString()}},
                    x, header, i + 1 == m_report.rows.size());
         }
         addSignatures();
@@ -268,10 +268,21 @@ private:
                                        {text(msg<MsgId::ReportSignCompany>()), Qt::black, true},
                                        {text(msg<MsgId::ReportSignature>()), Qt::black, true},
                                        {text(msg<MsgId::ReportDate>()), Qt::black, true}};
-        const std::vector<std::vector<Cell>> rows{
-            {{text(msg<MsgId::ReportSignEngineer>())}, {m_report.engineer}, {}, {}, {}},
-            {{text(msg<MsgId::ReportSignWitness>())}, {}, {}, {}, {}},
-            {{text(msg<MsgId::ReportSignCustomer>())}, {}, {m_report.customer}, {}, {}}};
+        const std::vector<std::vector<Cell>> rows{{{text(msg<MsgId::ReportSignEngineer>())},
+                                                   {m_report.engineer},
+                                                   {m_report.info.engineerCompany},
+                                                   {},
+                                                   {}},
+                                                  {{text(msg<MsgId::ReportSignWitness>())},
+                                                   {m_report.info.witness},
+                                                   {m_report.info.witnessCompany},
+                                                   {},
+                                                   {}},
+                                                  {{text(msg<MsgId::ReportSignCustomer>())},
+                                                   {m_report.info.customerSignatory},
+                                                   {m_report.customer},
+                                                   {},
+                                                   {}}};
         const QString heading = text(msg<MsgId::ReportSignatures>());
         const qreal headingHeight = textHeight(heading, m_heading, m_page.width()) + mm(4);
         const qreal titleHeight = rowHeight(titles, x);
@@ -307,9 +318,16 @@ private:
             = text(msg<MsgId::ReportTitle>()) + QStringLiteral(" \u2014 ") + m_report.project;
         m_painter.drawText(top, Qt::AlignLeft | Qt::AlignBottom, left);
         m_painter.setFont(m_body);
-        m_painter.drawText(top, Qt::AlignRight | Qt::AlignBottom,
-                           text(msg<MsgId::ReportCustomer>()) + QStringLiteral(": ")
-                               + m_report.customer);
+        // The document's identity on every page: a loose page still says what it belongs to.
+        QString right
+            = text(msg<MsgId::ReportCustomer>()) + QStringLiteral(": ") + m_report.customer;
+        if (!m_report.documentId.isEmpty())
+            right += QStringLiteral("   ") + text(msg<MsgId::ReportDocument>())
+                     + QStringLiteral(": ") + m_report.documentId;
+        if (!m_report.revision.isEmpty())
+            right += QStringLiteral("   ") + text(msg<MsgId::ReportRevision>())
+                     + QStringLiteral(": ") + m_report.revision;
+        m_painter.drawText(top, Qt::AlignRight | Qt::AlignBottom, right);
         m_painter.setPen(QPen(Qt::black, 2));
         m_painter.drawLine(top.bottomLeft() + QPointF(0, mm(1)),
                            top.bottomRight() + QPointF(0, mm(1)));

@@ -291,38 +291,49 @@ void CliCheckoutCommand::nextAnalog()
     if (m_nextAnalog >= m_analogs.size() || !canAsk())
         return finishCheckout(ExitCode::Ok);
     const int index = m_analogs[m_nextAnalog++];
+    askAnalog(index, 0);
+}
+
+void CliCheckoutCommand::askAnalog(int index, int check)
+{
     const CheckoutPoint &pt = m_runner->plan().points[static_cast<std::size_t>(index)];
-    // The readings come back in order: the next point after this one's high end.
-    connect(
-        m_runner.get(), &CheckoutRunner::pointChanged, this,
-        [this, index](int changed) {
-            const CheckoutPoint &p = m_runner->plan().points[static_cast<std::size_t>(changed)];
-            if (changed == index && p.highValue) {
-                disconnect(m_runner.get(), &CheckoutRunner::pointChanged, this, nullptr);
-                out().note(QStringLiteral("%1: %2 (%3)")
-                               .arg(pointText(p), englishText(checkoutResultMessage(p.result)),
-                                    englishText(p.measured())));
+    if (!pt.analog.isDefined()) {
+        // No expected values: it cannot pass, and is left untested.
+        out().error(englishText(msg<MsgId::CheckoutAnalogNoScale>(pt.address.toString())),
+                    ExitCode::Differ);
+        return nextAnalog();
+    }
+    if (check >= static_cast<int>(pt.analog.checks.size())) {
+        out().note(QStringLiteral("%1: %2 (%3)")
+                       .arg(pointText(pt), englishText(checkoutResultMessage(pt.result)),
+                            englishText(pt.measured())));
+        return nextAnalog();
+    }
+    const double percent = pt.analog.checks[static_cast<std::size_t>(check)];
+    ask(
+        QStringLiteral("Set %1 to %2 % (%3), then Enter.")
+            .arg(pointText(pt), QString::number(percent, 'g', 4),
+                 QString::fromStdString(pt.analog.text(pt.analog.expected(percent)))),
+        [this, index, check](const QString &) {
+            // The next question once this reading is in the point, not before: one reading at
+            // a time, each on its own point and check.
+            auto *connection = new QMetaObject::Connection;
+            *connection = connect(m_runner.get(), &CheckoutRunner::analogRecorded, this,
+                                  [this, index, check, connection](int i, int c) {
+                                      if (i != index || c != check)
+                                          return;
+                                      disconnect(*connection);
+                                      delete connection;
+                                      askAnalog(index, check + 1);
+                                  });
+            if (const Status s = m_runner->recordAnalog(index, check); !s) {
+                disconnect(*connection);
+                delete connection;
+                out().error(englishText(s.error().message), ExitCode::Differ);
                 nextAnalog();
             }
         },
-        Qt::QueuedConnection);
-    const auto ended = [this] {
-        finishCheckout(ExitCode::Ok);
-    };
-    const QString high = QStringLiteral("Set %1 to its high end (%2), then Enter.")
-                             .arg(pointText(pt))
-                             .arg(pt.expectedHigh);
-    ask(
-        QStringLiteral("Set %1 to its low end (%2), then Enter.")
-            .arg(pointText(pt))
-            .arg(pt.expectedLow),
-        [this, index, high, ended](const QString &) {
-            m_runner->recordAnalog(index, false);
-            ask(
-                high, [this, index](const QString &) { m_runner->recordAnalog(index, true); },
-                ended);
-        },
-        ended);
+        [this] { finishCheckout(ExitCode::Ok); });
 }
 
 void CliCheckoutCommand::finishCheckout(int exitCode)

@@ -39,6 +39,8 @@ private:
     void inputsDone();
     void nextOutput();
     void nextAnalog();
+    // Asks for check `check` of an analog point, reads it, then the next check.
+    void askAnalog(int index, int check);
     // "Seen in the field?" for the output forced.
     void askSeen(int index);
     // Stops, releases what is forced, then writeReport() and the end.

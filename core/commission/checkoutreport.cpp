@@ -42,6 +42,9 @@ CheckoutReport CheckoutReport::of(const CheckoutPlan &plan, const QDateTime &dat
     };
     r.project = plan.info.project;
     r.customer = plan.info.customer;
+    r.documentId = plan.info.documentId;
+    r.revision = plan.info.revision;
+    r.info = plan.info;
     r.made = timeText(when);
     QDateTime first;
     QDateTime last;
@@ -79,6 +82,10 @@ CheckoutReport CheckoutReport::of(const CheckoutPlan &plan, const QDateTime &dat
     }
     r.fields.push_back({msg<MsgId::ReportProject>(), text(plan.info.project)});
     r.fields.push_back({msg<MsgId::ReportCustomer>(), text(plan.info.customer)});
+    if (!plan.info.documentId.isEmpty())
+        r.fields.push_back({msg<MsgId::ReportDocument>(), text(plan.info.documentId)});
+    if (!plan.info.revision.isEmpty())
+        r.fields.push_back({msg<MsgId::ReportRevision>(), text(plan.info.revision)});
     r.fields.push_back({msg<MsgId::ReportPlcModel>(), textOrNotReported(plan.info.plcModel)});
     r.fields.push_back({msg<MsgId::ReportOsVersion>(), textOrNotReported(plan.info.osVersion)});
     r.fields.push_back({msg<MsgId::ReportStation>(), text(QString::number(plan.info.station))});
@@ -103,11 +110,41 @@ CheckoutReport CheckoutReport::of(const CheckoutPlan &plan, const QDateTime &dat
         if (p.time.isValid())
             row.time = timeText(p.time);
         row.engineer = p.engineer;
+        row.attempts = p.attempts();
         r.rows.push_back(std::move(row));
     }
+    for (int index : plan.punchList()) {
+        const CheckoutPoint &p = plan.points[static_cast<std::size_t>(index)];
+        PunchRow row;
+        row.address = QString::fromStdString(p.address.toString());
+        row.name = p.name;
+        row.result = p.result;
+        // The remark of the latest failure or deferral: what is to be mended.
+        const auto punched = [](const CheckoutAttempt &a) {
+            return a.result == CheckoutResult::Failed || a.result == CheckoutResult::Deferred;
+        };
+        if (punched(p.attempt())) {
+            row.remark = p.comment;
+        } else {
+            for (auto it = p.earlier.rbegin(); it != p.earlier.rend(); ++it) {
+                if (punched(*it)) {
+                    row.remark = it->comment;
+                    break;
+                }
+            }
+        }
+        row.owner = p.punch.owner;
+        row.closed = p.punch.closed.isValid();
+        row.state = row.closed ? msg<MsgId::ReportPunchClosed>(
+                        timeText(p.punch.closed).toStdString(), p.punch.closedBy.toStdString())
+                               : msg<MsgId::ReportPunchOpen>();
+        r.punch.push_back(std::move(row));
+    }
     r.summary = msg<MsgId::ReportSummary>(
-        plan.points.size(), plan.count(CheckoutResult::Passed), plan.count(CheckoutResult::Failed),
-        plan.count(CheckoutResult::Skipped), plan.count(CheckoutResult::Untested));
+        plan.points.size(), plan.count(CheckoutResult::Passed),
+        plan.count(CheckoutResult::PassedWithRemark), plan.count(CheckoutResult::Failed),
+        plan.count(CheckoutResult::Deferred), plan.count(CheckoutResult::NotApplicable),
+        plan.count(CheckoutResult::Untested));
     return r;
 }
 
@@ -115,10 +152,36 @@ std::vector<Message> CheckoutReport::columns()
 {
     return {msg<MsgId::ReportPoint>(),   msg<MsgId::ReportName>(),   msg<MsgId::ReportGroup>(),
             msg<MsgId::ReportKind>(),    msg<MsgId::ReportResult>(), msg<MsgId::ReportMeasured>(),
-            msg<MsgId::ReportComment>(), msg<MsgId::ReportTested>(), msg<MsgId::ReportEngineer>()};
+            msg<MsgId::ReportComment>(), msg<MsgId::ReportTested>(), msg<MsgId::ReportEngineer>(),
+            msg<MsgId::ReportAttempts>()};
 }
 
-QByteArray CheckoutReport::toCsv(const TextFunction &textFunction) const
+std::vector<Message> CheckoutReport::punchColumns()
+{
+    return {msg<MsgId::ReportPoint>(),   msg<MsgId::ReportName>(),  msg<MsgId::ReportResult>(),
+            msg<MsgId::ReportComment>(), msg<MsgId::ReportOwner>(), msg<MsgId::ReportPunchState>()};
+}
+
+namespace {
+
+QString csvLine(const QStringList &cells)
+{
+    QStringList out;
+    for (const QString &c : cells)
+        out << CsvField::quoted(c);
+    return out.join(QLatin1Char(',')) + QLatin1Char('\n');
+}
+
+QByteArray csvBytes(QString text, CheckoutReport::LineEnds ends)
+{
+    if (ends == CheckoutReport::LineEnds::CrLf)
+        text.replace(QLatin1Char('\n'), QStringLiteral("\r\n"));
+    return QByteArray("\xEF\xBB\xBF") + text.toUtf8();
+}
+
+} // namespace
+
+QByteArray CheckoutReport::toCsv(const TextFunction &textFunction, LineEnds ends) const
 {
     const TextFunction text = textFunction ? textFunction : TextFunction(englishText);
     QString out;
@@ -127,25 +190,33 @@ QByteArray CheckoutReport::toCsv(const TextFunction &textFunction) const
         out += QStringLiteral("# %1: %2\n").arg(text(f.label), text(f.value));
     QStringList header;
     for (const Message &c : columns())
-        header << CsvField::quoted(text(c));
-    out += header.join(QLatin1Char(',')) + QLatin1Char('\n');
+        header << text(c);
+    out += csvLine(header);
     for (const Row &r : rows) {
-        const QStringList cells{r.address,
-                                r.name,
-                                r.group,
-                                text(checkoutKindMessage(r.kind)),
-                                text(checkoutResultMessage(r.result)),
-                                text(r.measured),
-                                r.comment,
-                                r.time,
-                                r.engineer};
-        QStringList fieldsOut;
-        for (const QString &c : cells)
-            fieldsOut << CsvField::quoted(c);
-        out += fieldsOut.join(QLatin1Char(',')) + QLatin1Char('\n');
+        out += csvLine({r.address, r.name, r.group, text(checkoutKindMessage(r.kind)),
+                        text(checkoutResultMessage(r.result)), text(r.measured), r.comment, r.time,
+                        r.engineer, QString::number(r.attempts)});
     }
     out += QStringLiteral("# %1: %2\n").arg(text(msg<MsgId::ReportSummaryTitle>()), text(summary));
-    return out.toUtf8();
+    return csvBytes(out, ends);
+}
+
+QByteArray CheckoutReport::punchCsv(const TextFunction &textFunction, LineEnds ends) const
+{
+    const TextFunction text = textFunction ? textFunction : TextFunction(englishText);
+    QString out;
+    out += QStringLiteral("# ") + text(msg<MsgId::ReportPunchList>()) + QLatin1Char('\n');
+    for (const Field &f : fields)
+        out += QStringLiteral("# %1: %2\n").arg(text(f.label), text(f.value));
+    QStringList header;
+    for (const Message &c : punchColumns())
+        header << text(c);
+    out += csvLine(header);
+    for (const PunchRow &p : punch) {
+        out += csvLine({p.address, p.name, text(checkoutResultMessage(p.result)), p.remark, p.owner,
+                        text(p.state)});
+    }
+    return csvBytes(out, ends);
 }
 
 } // namespace Fatek

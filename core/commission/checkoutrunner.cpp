@@ -87,6 +87,9 @@ void CheckoutRunner::start()
     }
     m_running = true;
     m_inputs.clear();
+    m_pollError.reset();
+    m_refused.clear();
+    m_refusal.reset();
     // The packed reads of the inputs: consecutive runs, at most 256 points each.
     std::vector<Address> inputs;
     for (const CheckoutPoint &p : m_plan.points) {
@@ -125,6 +128,73 @@ void CheckoutRunner::onStatus(const SessionResult &result)
     }
     if (hasForced())
         releaseAllForced(true);
+    probePoints();
+}
+
+void CheckoutRunner::probePoints()
+{
+    // One read of every run: X9999 on a small model is said now, by name, not as polls that fail
+    // for ever or a force the PLC refuses.
+    std::vector<Address> all;
+    for (const CheckoutPoint &p : m_plan.points)
+        all.push_back(p.address);
+    std::sort(all.begin(), all.end());
+    const std::uint8_t station = stationOf(m_plan);
+    const auto readOf = [station](const Address &start, std::uint32_t count) {
+        return isDiscrete(start.type) ? Request::readDiscretes(station, start, count)
+                                      : Request::readRegisters(station, start, count);
+    };
+    const auto submit = [this](const Request &request, auto onRefused) {
+        ++m_probesInFlight;
+        m_actions.submit(request, [this, onRefused](const SessionResult &r) {
+            if (!r.ok() && r.error().kind == ErrorKind::PlcError) {
+                if (!m_refusal)
+                    m_refusal = r.error().message;
+                onRefused();
+            } else if (!r.ok()) {
+                fail(r.error()); // a timeout: said, and the polls go on
+            }
+            probeDone();
+        });
+    };
+    for (const AddressRange &range : Snapshot::rangesOf(all)) {
+        const std::uint32_t chunk
+            = isDiscrete(range.start.type)
+                  ? Limits::maxDiscretes
+                  : Limits::maxRegisterWords
+                        / static_cast<std::uint32_t>(wordCount(range.start.type));
+        for (std::uint32_t done = 0; done < range.count; done += chunk) {
+            const Address start = range.start.advanced(done);
+            const std::uint32_t count = std::min(chunk, range.count - done);
+            // Refused as a whole: each point alone says which.
+            submit(readOf(start, count), [this, start, count, readOf, submit] {
+                if (count == 1)
+                    return m_refused.push_back(start);
+                for (std::uint32_t i = 0; i < count; ++i) {
+                    const Address one = start.advanced(i);
+                    submit(readOf(one, 1), [this, one] { m_refused.push_back(one); });
+                }
+            });
+        }
+    }
+    if (m_probesInFlight == 0)
+        probeDone();
+}
+
+void CheckoutRunner::probeDone()
+{
+    if (m_probesInFlight > 0 && --m_probesInFlight > 0)
+        return;
+    if (!m_running)
+        return;
+    if (!m_refused.empty()) {
+        m_running = false;
+        std::sort(m_refused.begin(), m_refused.end());
+        const std::string list = Snapshot::rangesText(m_refused, 20);
+        Q_EMIT refused(msg<MsgId::CheckoutPointsRefused>(list, m_refusal ? *m_refusal : Message(),
+                                                         static_cast<int>(m_refused.size())));
+        return;
+    }
     Q_EMIT started();
     pollCycle();
 }
@@ -170,15 +240,99 @@ void CheckoutRunner::markResult(CheckoutPoint &p, CheckoutResult result)
     p.engineer = m_engineer.isEmpty() ? m_plan.info.engineer : m_engineer;
 }
 
-void CheckoutRunner::record(int index, CheckoutResult result, const QString &comment)
+void CheckoutRunner::archiveAttempt(CheckoutPoint &p)
+{
+    if (p.result == CheckoutResult::Untested)
+        return;
+    p.earlier.push_back(p.attempt());
+    p.attempt() = CheckoutAttempt{};
+}
+
+CheckoutPoint *CheckoutRunner::pointAt(int index)
 {
     if (index < 0 || index >= static_cast<int>(m_plan.points.size()))
-        return;
-    CheckoutPoint &p = m_plan.points[static_cast<std::size_t>(index)];
-    markResult(p, result);
+        return nullptr;
+    return &m_plan.points[static_cast<std::size_t>(index)];
+}
+
+Status CheckoutRunner::record(int index, CheckoutResult result, const QString &comment)
+{
+    CheckoutPoint *p = pointAt(index);
+    if (!p)
+        return makeError(ErrorKind::InvalidRequest,
+                         msg<MsgId::CheckoutNoSuchPoint>(std::to_string(index)));
+    if (result == CheckoutResult::Untested) {
+        retest(index);
+        return Ok{};
+    }
+    const std::string name = p->address.toString();
+    const QString text = comment.isNull() ? p->comment : comment;
+    const auto refuse = [](Message why) {
+        return makeError(ErrorKind::InvalidRequest, std::move(why));
+    };
+    if (result == CheckoutResult::PassedWithRemark && text.trimmed().isEmpty())
+        return refuse(msg<MsgId::CheckoutNeedsRemark>(name));
+    if (result == CheckoutResult::Deferred && text.trimmed().isEmpty())
+        return refuse(msg<MsgId::CheckoutNeedsReason>(name));
+    if (p->kind == CheckoutKind::Analog
+        && (result == CheckoutResult::Passed || result == CheckoutResult::Failed))
+        return refuse(msg<MsgId::CheckoutMeasuredOnly>(name));
+    // The flag belongs to the attempt being recorded: a point that has a result is a new test.
+    const bool retest = p->result != CheckoutResult::Untested;
+    if (result == CheckoutResult::Passed && !retest && !p->changedWith.empty())
+        return refuse(
+            msg<MsgId::CheckoutCrossedCannotPass>(name, Snapshot::rangesText(p->changedWith)));
+    // An output under test is answered through answerOutput().
+    if (index == m_outputUnderTest)
+        m_outputUnderTest = -1;
+    // A new test keeps the old one; measurements of the untested attempt stay with it.
+    archiveAttempt(*p);
+    markResult(*p, result);
     if (!comment.isNull())
-        p.comment = comment;
+        p->comment = comment;
     changed(index);
+    return Ok{};
+}
+
+void CheckoutRunner::retest(int index)
+{
+    CheckoutPoint *p = pointAt(index);
+    if (!p || index == m_outputUnderTest)
+        return;
+    archiveAttempt(*p);
+    // An untested attempt with partial measurements starts clean too.
+    p->attempt() = CheckoutAttempt{};
+    changed(index);
+}
+
+Status CheckoutRunner::setPunchOwner(int index, const QString &owner)
+{
+    CheckoutPoint *p = pointAt(index);
+    if (!p || !p->onPunchList())
+        return makeError(
+            ErrorKind::InvalidRequest,
+            msg<MsgId::CheckoutNotOnPunchList>(p ? p->address.toString() : std::to_string(index)));
+    p->punch.owner = owner;
+    changed(index);
+    return Ok{};
+}
+
+Status CheckoutRunner::closePunch(int index, const QString &closedBy)
+{
+    CheckoutPoint *p = pointAt(index);
+    if (!p || !p->onPunchList())
+        return makeError(
+            ErrorKind::InvalidRequest,
+            msg<MsgId::CheckoutNotOnPunchList>(p ? p->address.toString() : std::to_string(index)));
+    if (p->result == CheckoutResult::Failed || p->result == CheckoutResult::Untested)
+        return makeError(ErrorKind::InvalidRequest,
+                         msg<MsgId::CheckoutPunchStillFailing>(p->address.toString()));
+    p->punch.closed = QDateTime::currentDateTimeUtc();
+    p->punch.closedBy = closedBy.isEmpty()
+                            ? (m_engineer.isEmpty() ? m_plan.info.engineer : m_engineer)
+                            : closedBy;
+    changed(index);
+    return Ok{};
 }
 
 void CheckoutRunner::setComment(int index, const QString &comment)
@@ -243,8 +397,25 @@ void CheckoutRunner::onInputs(const Request &request, const SessionResult &resul
         if (m_running)
             m_pollTimer.start(m_pollIntervalMs);
     }
-    if (!m_running || !result.ok())
+    if (!m_running)
         return;
+    if (!result.ok()) {
+        // Said once per failure, not once per poll; the values were not read, so no edge.
+        if (!m_pollError || !(*m_pollError == result.error().message)) {
+            m_pollError = result.error().message;
+            ProtocolError e = result.error();
+            e.message = msg<MsgId::CheckoutReadFailed>(
+                AddressRange{request.start, request.count}.toString(), e.message);
+            fail(std::move(e));
+        }
+        m_inputs.clear();
+        return;
+    }
+    if (m_pollError) {
+        m_pollError.reset();
+        Q_EMIT readAgain(
+            msg<MsgId::CheckoutReadAgain>(AddressRange{request.start, request.count}.toString()));
+    }
     const std::vector<std::uint32_t> &values = result.response().values;
     for (std::uint32_t i = 0; i < values.size() && i < request.count; ++i) {
         const Address a = request.start.advanced(i);
@@ -288,10 +459,11 @@ void CheckoutRunner::inputChanged(int index, bool on)
         return;
     CheckoutPoint &p = m_plan.points[static_cast<std::size_t>(target)];
     (on ? p.rose : p.fell) = QDateTime::currentDateTimeUtc();
+    // Both edges: passed, unless another input moved with it (crossed wiring).
     if (p.rose.isValid() && p.fell.isValid())
-        markResult(p, CheckoutResult::Passed);
+        markResult(p, p.changedWith.empty() ? CheckoutResult::Passed : CheckoutResult::Failed);
     changed(target);
-    if (p.result == CheckoutResult::Passed && m_autoAdvance && target == m_current) {
+    if (p.result != CheckoutResult::Untested && m_autoAdvance && target == m_current) {
         // The next untested input after this one.
         const int n = static_cast<int>(m_plan.points.size());
         for (int step = 1; step < n; ++step) {
@@ -334,6 +506,11 @@ void CheckoutRunner::forceOutput(int index)
                 m_plan.points[static_cast<std::size_t>(m_outputUnderTest)].address.toString())));
     setCurrentPoint(index);
     m_outputUnderTest = index;
+    // Forced again after a result: a new test, the old one kept.
+    if (m_plan.points[static_cast<std::size_t>(index)].result != CheckoutResult::Untested) {
+        archiveAttempt(m_plan.points[static_cast<std::size_t>(index)]);
+        changed(index);
+    }
     // RUN or STOP now, not at the start: someone may have switched it meanwhile.
     m_actions.submit(
         Request::briefStatus(stationOf(m_plan)), [this, index](const SessionResult &r) {
@@ -523,32 +700,89 @@ void CheckoutRunner::onLinkState(LinkState state)
 
 // Analog.
 
-void CheckoutRunner::recordAnalog(int index, bool highEnd)
+Status CheckoutRunner::recordAnalog(int index, int check, bool asLeft)
 {
-    if (index < 0 || index >= static_cast<int>(m_plan.points.size())
-        || m_plan.points[static_cast<std::size_t>(index)].kind != CheckoutKind::Analog)
+    CheckoutPoint *p = pointAt(index);
+    if (!p || p->kind != CheckoutKind::Analog)
+        return makeError(
+            ErrorKind::InvalidRequest,
+            msg<MsgId::CheckoutNotAnalog>(p ? p->address.toString() : std::to_string(index)));
+    const std::string name = p->address.toString();
+    if (!p->analog.isDefined())
+        return makeError(ErrorKind::InvalidRequest, msg<MsgId::CheckoutAnalogNoScale>(name));
+    if (check < 0 || check >= static_cast<int>(p->analog.checks.size()))
+        return makeError(ErrorKind::InvalidRequest,
+                         msg<MsgId::CheckoutNoCheck>(name, std::to_string(check)));
+    const double percent = p->analog.checks[static_cast<std::size_t>(check)];
+    if (asLeft) {
+        const auto it = std::find_if(
+            p->readings.begin(), p->readings.end(),
+            [percent](const AnalogReading &r) { return r.percent == percent && r.asFound; });
+        if (it == p->readings.end())
+            return makeError(ErrorKind::InvalidRequest,
+                             msg<MsgId::CheckoutNoAsFound>(
+                                 name, QString::number(percent, 'g', 4).toStdString()));
+    }
+    if (!session())
+        return makeError(ErrorKind::LinkError, msg<MsgId::CheckoutNoSession>());
+    const Address a = p->address;
+    m_actions.submit(Request::readRegisters(stationOf(m_plan), a, 1),
+                     [this, index, check, asLeft](const SessionResult &r) {
+                         analogRead(index, check, asLeft, r);
+                     });
+    return Ok{};
+}
+
+void CheckoutRunner::analogRead(int index, int check, bool asLeft, const SessionResult &r)
+{
+    CheckoutPoint *p = pointAt(index);
+    if (!p)
         return;
-    const Address a = m_plan.points[static_cast<std::size_t>(index)].address;
-    m_actions.submit(Request::readRegisters(stationOf(m_plan), a, 1), [this, index, highEnd,
-                                                                       a](const SessionResult &r) {
-        if (!r.ok() || r.response().values.empty()) {
-            ProtocolError e = r.ok()
-                                  ? makeError(ErrorKind::MalformedResponse, std::string("no value"))
-                                  : r.error();
-            e.message = msg<MsgId::CheckoutReadFailed>(a.toString(), e.message);
-            return fail(std::move(e));
-        }
-        CheckoutPoint &p = m_plan.points[static_cast<std::size_t>(index)];
-        const std::uint32_t v = r.response().values.front();
-        (highEnd ? p.highValue : p.lowValue) = v;
-        if (p.lowValue && p.highValue) {
-            const bool ok = p.withinTolerance(*p.lowValue, p.expectedLow)
-                            && p.withinTolerance(*p.highValue, p.expectedHigh);
-            markResult(p, ok ? CheckoutResult::Passed : CheckoutResult::Failed);
-        }
-        Q_EMIT liveValue(index, v);
-        changed(index);
+    if (!r.ok() || r.response().values.empty()) {
+        ProtocolError e
+            = r.ok() ? makeError(ErrorKind::MalformedResponse, std::string("no value")) : r.error();
+        e.message = msg<MsgId::CheckoutReadFailed>(p->address.toString(), e.message);
+        return fail(std::move(e));
+    }
+    const double percent = p->analog.checks[static_cast<std::size_t>(check)];
+    const std::int64_t value = p->rawValue(r.response().values.front());
+    // A reading as found on a point that has a result: a new test (as left adjusts this one).
+    if (!asLeft && p->result != CheckoutResult::Untested)
+        archiveAttempt(*p);
+    auto it = std::find_if(
+        p->readings.begin(), p->readings.end(),
+        [percent](const AnalogReading &reading) { return reading.percent == percent; });
+    if (it == p->readings.end()) {
+        p->readings.push_back(AnalogReading{percent, {}, {}});
+        it = std::prev(p->readings.end());
+    }
+    if (asLeft) {
+        it->asLeft = value;
+    } else {
+        it->asFound = value;
+        it->asLeft.reset();
+    }
+    decideAnalog(*p);
+    Q_EMIT liveValue(index, r.response().values.front());
+    changed(index);
+    Q_EMIT analogRecorded(index, check);
+}
+
+void CheckoutRunner::decideAnalog(CheckoutPoint &p)
+{
+    // Decided once every check is read; the latest value of each counts.
+    for (double percent : p.analog.checks) {
+        const auto it
+            = std::find_if(p.readings.begin(), p.readings.end(), [percent](const AnalogReading &r) {
+                  return r.percent == percent && r.last();
+              });
+        if (it == p.readings.end())
+            return;
+    }
+    const bool ok = std::all_of(p.readings.begin(), p.readings.end(), [&p](const AnalogReading &r) {
+        return !r.last() || p.analog.within(double(*r.last()), r.percent);
     });
+    markResult(p, ok ? CheckoutResult::Passed : CheckoutResult::Failed);
 }
 
 } // namespace Fatek

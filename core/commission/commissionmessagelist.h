@@ -229,13 +229,25 @@ FATEK_MSG(CheckoutPlanNoSymbols, 1,
 FATEK_MSG(CheckoutCsvLine, 2, QT_TRANSLATE_NOOP("Fatek::Message", "checkout plan line %1: %2"))
 // %1 the columns ("address,name,comment,group,low,high,tolerance").
 FATEK_MSG(CheckoutCsvColumns, 1, QT_TRANSLATE_NOOP("Fatek::Message", "expected the columns %1"))
-FATEK_MSG(CheckoutCsvNumber, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a whole number from 0 to 65535"))
+FATEK_MSG(CheckoutCsvNumber, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a number"))
 FATEK_MSG(CheckoutAnalogNeedsRange, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "%1: an analog point needs its expected low and high values"))
 
 // Checkout files (core/commission/checkoutfile.cpp): %1 the file, %2 why.
+FATEK_MSG(CheckoutFileVersion, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "checkout file version %1 is not supported (this program reads 1 to "
+                            "%2)"))
+FATEK_MSG(CheckoutPlaceInfo, 0, QT_TRANSLATE_NOOP("Fatek::Message", "info"))
+// %1 the point's number in the file, %2 its address when known.
+FATEK_MSG(CheckoutPlacePoint, 2, QT_TRANSLATE_NOOP("Fatek::Message", "point %1 (%2)"))
+FATEK_MSG(CheckoutPlaceEarlier, 1, QT_TRANSLATE_NOOP("Fatek::Message", "earlier attempt %1"))
+FATEK_MSG(CheckoutPlaceReading, 1, QT_TRANSLATE_NOOP("Fatek::Message", "reading %1"))
+FATEK_MSG(CheckoutPlaceScale, 0, QT_TRANSLATE_NOOP("Fatek::Message", "scale"))
+FATEK_MSG(CheckoutPlacePunch, 0, QT_TRANSLATE_NOOP("Fatek::Message", "punch"))
+// %1 the key, %2 its value as written.
+FATEK_MSG(CheckoutFileBadValue, 2, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" cannot be \"%2\""))
 FATEK_MSG(CheckoutFileCannotRead, 2,
           QT_TRANSLATE_NOOP("Fatek::Message", "Cannot open the checkout %1: %2"))
 FATEK_MSG(CheckoutFileCannotWrite, 2,
@@ -294,21 +306,66 @@ FATEK_MSG(CheckoutKindAnalog, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Analog"))
 FATEK_MSG(CheckoutUntested, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Untested"))
 FATEK_MSG(CheckoutPassed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Passed"))
 FATEK_MSG(CheckoutFailed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Failed"))
-FATEK_MSG(CheckoutSkipped, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Skipped"))
+FATEK_MSG(CheckoutPassedWithRemark, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Passed with remark"))
+FATEK_MSG(CheckoutDeferred, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Deferred"))
+FATEK_MSG(CheckoutNotApplicable, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Not applicable"))
 // What was measured: %1 and %2 the times 0->1 and 1->0 were seen ("-" when not).
 FATEK_MSG(CheckoutInputTimes, 2, QT_TRANSLATE_NOOP("Fatek::Message", "0->1 at %1, 1->0 at %2"))
 FATEK_MSG(CheckoutOutputSeen, 0, QT_TRANSLATE_NOOP("Fatek::Message", "seen in the field"))
 FATEK_MSG(CheckoutOutputNotSeen, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not seen in the field"))
 // %1 %2 the raw values read at the low and high end ("-" when not), %3 %4 expected, %5 the
 // tolerance.
-FATEK_MSG(CheckoutAnalogEnds, 5,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "low %1 (expected %2), high %3 (expected %4), tolerance %5"))
+// Analog readings: %1 the check (per cent of the span), %2 the value in engineering units with
+// its unit; %3 as left, or what was expected.
+FATEK_MSG(CheckoutAnalogFound, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 %: %2"))
+FATEK_MSG(CheckoutAnalogFoundLeft, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 %: found %2, left %3"))
+FATEK_MSG(CheckoutAnalogOff, 3, QT_TRANSLATE_NOOP("Fatek::Message", "%1 %: %2, expected %3"))
+// %1 the readings, %2 the tolerance with its unit.
+FATEK_MSG(CheckoutAnalogReadings, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 (tolerance %2)"))
 // Flagged on an input: %1 the inputs that changed while it was under test.
 FATEK_MSG(CheckoutChangedWith, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "also changed while it was tested: %1"))
 
-// The report (core/commission/checkoutcsv.cpp, report/checkoutpdf.cpp).
+// What the runner refuses to record (core/commission/checkoutrunner.cpp); %1 the point.
+FATEK_MSG(CheckoutAnalogNoScale, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 has no expected values: give its scale (raw and engineering low "
+                            "and high) in the plan before it can pass"))
+FATEK_MSG(CheckoutNoSuchPoint, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 is not a point of the checkout"))
+FATEK_MSG(CheckoutNotAnalog, 1, QT_TRANSLATE_NOOP("Fatek::Message", "%1 is not an analog point"))
+FATEK_MSG(CheckoutNeedsRemark, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1: \"passed with remark\" needs the remark"))
+FATEK_MSG(CheckoutNeedsReason, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1: \"deferred\" needs the reason"))
+FATEK_MSG(CheckoutCrossedCannotPass, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 cannot pass clean: %2 changed while it was tested (crossed "
+                            "wiring?). Re-test it, or pass it with a remark."))
+FATEK_MSG(CheckoutMeasuredOnly, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 passes or fails by what is read: read it at each check"))
+FATEK_MSG(CheckoutNoCheck, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 has no check at %2 %"))
+FATEK_MSG(CheckoutNoAsFound, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 at %2 %: read the value as found before the value as left"))
+FATEK_MSG(CheckoutPunchStillFailing, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "%1 still fails: re-test it before its punch item is closed out"))
+FATEK_MSG(CheckoutNotOnPunchList, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message", "%1 is not on the punch list"))
+// The plan against the PLC: %1 the points, %2 the PLC's answer, %3 how many.
+FATEK_MSG(CheckoutPointsRefused, 3,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The PLC refuses %1 (%2): take {3:it|them} out of the plan. Nothing "
+                            "was forced."))
+FATEK_MSG(CheckoutReadAgain, 1, QT_TRANSLATE_NOOP("Fatek::Message", "%1 are read again"))
+FATEK_MSG(CheckoutCsvChecks, 1,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "checks \"%1\": per cents from 0 to 100 separated by \"/\""))
+
+// The report (core/commission/checkoutreport.cpp, report/checkoutpdf.cpp).
 FATEK_MSG(ReportTitle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "I/O checkout report"))
 FATEK_MSG(ReportProject, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Project"))
 FATEK_MSG(ReportCustomer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Customer"))
@@ -327,9 +384,10 @@ FATEK_MSG(ReportMeasured, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Measured"))
 FATEK_MSG(ReportComment, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Comment"))
 FATEK_MSG(ReportTested, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Tested at"))
 // %1 points in all, %2 passed, %3 failed, %4 skipped, %5 untested.
-FATEK_MSG(ReportSummary, 5,
+FATEK_MSG(ReportSummary, 7,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "%1 {1:point|points}: %2 passed, %3 failed, %4 skipped, %5 untested."))
+                            "%1 {1:point|points}: %2 passed, %3 passed with remark, %4 failed, "
+                            "%5 deferred, %6 not applicable, %7 untested."))
 FATEK_MSG(ReportSummaryTitle, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Summary"))
 FATEK_MSG(ReportSignatures, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Signatures"))
 FATEK_MSG(ReportSignEngineer, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Commissioning engineer"))
@@ -350,8 +408,18 @@ FATEK_MSG(ReportUnnamed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "not named"))
 // %1 this page, %2 the report's pages.
 FATEK_MSG(ReportPageOf, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Page %1 of %2"))
 FATEK_MSG(ReportResults, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Results"))
-FATEK_MSG(ReportPunchList, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Failed points"))
-FATEK_MSG(ReportNoFailed, 0, QT_TRANSLATE_NOOP("Fatek::Message", "No point failed."))
+FATEK_MSG(ReportPunchList, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Punch list"))
+FATEK_MSG(ReportNoFailed, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message", "The punch list is empty: no point failed or was "
+                                              "deferred."))
+FATEK_MSG(ReportAttempts, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Attempts"))
+FATEK_MSG(ReportOwner, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Owner"))
+FATEK_MSG(ReportPunchState, 0, QT_TRANSLATE_NOOP("Fatek::Message", "State"))
+FATEK_MSG(ReportPunchOpen, 0, QT_TRANSLATE_NOOP("Fatek::Message", "open"))
+// %1 when, %2 who.
+FATEK_MSG(ReportPunchClosed, 2, QT_TRANSLATE_NOOP("Fatek::Message", "closed %1 by %2"))
+FATEK_MSG(ReportDocument, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Document"))
+FATEK_MSG(ReportRevision, 0, QT_TRANSLATE_NOOP("Fatek::Message", "Revision"))
 // %1 how many, %2 their addresses.
 FATEK_MSG(ReportUntestedList, 2, QT_TRANSLATE_NOOP("Fatek::Message", "Not tested (%1): %2"))
 FATEK_MSG(ReportCannotWrite, 2,

@@ -3,6 +3,7 @@
 #include "core/mqtt/gatewaytopics.h"
 #include "core/protocol/logtext.h"
 #include "core/watch/jsonkeys.h"
+#include "core/watch/watchmessages.h"
 #include "gatewayconfigreader.h"
 #include "gatewayhistoryconfig.h"
 #include "gatewaymessages.h"
@@ -176,8 +177,7 @@ Problem readWatchLists(Reader &r, const QString &baseDirectory, GatewayConnectio
     for (qsizetype i = 0; i < lists.size(); ++i) {
         const Message place = msg<MsgId::GatewayPlaceWatchList>(i + 1);
         if (!lists.at(i).isObject())
-            return at(place, msg<MsgId::GatewayConfigWrongType>("watchLists",
-                                                                msg<MsgId::GatewayTypeObject>()));
+            return at(place, msg<MsgId::JsonWrongType>("watchLists", msg<MsgId::JsonTypeObject>()));
         Reader lr(lists.at(i).toObject());
         GatewayConnectionConfig::WatchListFileRef ref;
         ref.file = lr.string(QStringLiteral("file"));
@@ -186,7 +186,7 @@ Problem readWatchLists(Reader &r, const QString &baseDirectory, GatewayConnectio
             ref.intervalMs = static_cast<int>(*interval);
         lr.rejectUnknown();
         if (!lr.problem && ref.file.isEmpty())
-            lr.problem = msg<MsgId::GatewayConfigMissing>("file");
+            lr.problem = msg<MsgId::JsonKeyMissing>("file");
         if (lr.problem)
             return at(place, *lr.problem);
         const Message filePlace = msg<MsgId::GatewayPlaceWatchList>(ref.file.toStdString());
@@ -236,7 +236,7 @@ Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
     Reader r(json);
     c->name = r.string(QStringLiteral("name"));
     if (!r.problem && !r.has(QStringLiteral("name")))
-        r.problem = msg<MsgId::GatewayConfigMissing>("name");
+        r.problem = msg<MsgId::JsonKeyMissing>("name");
     if (!r.problem && !GatewayTopics::isValidConnectionName(c->name))
         r.problem = msg<MsgId::GatewayConfigBadName>(c->name.toStdString());
     r.integerInto(QStringLiteral("statisticsIntervalMs"), GatewayConfig::MinStatisticsIntervalMs,
@@ -281,7 +281,7 @@ Problem readConnection(const QJsonObject &json, const QString &baseDirectory,
     for (const auto &entry : allow) {
         const QString text = entry.toString();
         if (!entry.isString())
-            return msg<MsgId::GatewayConfigWrongType>("allow", msg<MsgId::GatewayTypeString>());
+            return msg<MsgId::JsonWrongType>("allow", msg<MsgId::JsonTypeString>());
         const Result<AddressRange> range = AddressRange::parse(text.toStdString());
         if (!range)
             return at(msg<MsgId::GatewayPlaceAllow>(text.toStdString()), range.error().message);
@@ -407,7 +407,7 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
         return fail(msg<MsgId::GatewayConfigWrongFormat>("format", FormatMarker));
     const QJsonValue version = root.value(QStringLiteral("version"));
     if (version.isUndefined())
-        return fail(msg<MsgId::GatewayConfigMissing>("version"));
+        return fail(msg<MsgId::JsonKeyMissing>("version"));
     if (version.toInt(-1) != CurrentVersion)
         return fail(msg<MsgId::GatewayConfigWrongVersion>(QJsonDocument(QJsonArray{version})
                                                               .toJson(QJsonDocument::Compact)
@@ -453,8 +453,8 @@ Result<GatewayConfig> GatewayConfig::load(const QByteArray &json, const QString 
                                   ? msg<MsgId::GatewayPlaceConnectionNumber>(i + 1)
                                   : msg<MsgId::GatewayPlaceConnection>(i + 1, name.toStdString());
         if (!connections.at(i).isObject())
-            return fail(at(place, msg<MsgId::GatewayConfigWrongType>(
-                                      "connections", msg<MsgId::GatewayTypeObject>())));
+            return fail(
+                at(place, msg<MsgId::JsonWrongType>("connections", msg<MsgId::JsonTypeObject>())));
         GatewayConnectionConfig connection;
         if (Problem p = readConnection(object, baseDirectory, &connection))
             return fail(at(place, *p));

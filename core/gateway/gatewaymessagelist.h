@@ -15,23 +15,6 @@ FATEK_MSG(GatewayConfigWrongVersion, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "Configuration version %1 is not supported (this program reads "
                             "version %2)."))
-FATEK_MSG(GatewayConfigMissing, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is missing."))
-FATEK_MSG(GatewayConfigWrongType, 2, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2."))
-// A key no reader of that object knows (a misspelt setting must not be ignored): %1 the key as
-// written, %2 the known key of that object it most likely means.
-FATEK_MSG(GatewayConfigUnknownKey, 1,
-          QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a known setting."))
-FATEK_MSG(GatewayConfigUnknownKeyNear, 2,
-          QT_TRANSLATE_NOOP("Fatek::Message",
-                            "\"%1\" is not a known setting; did you mean \"%2\"?"))
-FATEK_MSG(GatewayTypeString, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a string"))
-FATEK_MSG(GatewayTypeNumber, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a whole number"))
-FATEK_MSG(GatewayTypeBool, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 or %2"))
-FATEK_MSG(GatewayTypeArray, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a list"))
-FATEK_MSG(GatewayTypeObject, 0, QT_TRANSLATE_NOOP("Fatek::Message", "an object"))
-// %1 the key, %2 the value, %3..%4 the range.
-FATEK_MSG(GatewayConfigOutOfRange, 4,
-          QT_TRANSLATE_NOOP("Fatek::Message", "%1 %2 is out of range (%3..%4)"))
 FATEK_MSG(GatewayConfigNoConnections, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "No connections: the configuration needs at least one."))

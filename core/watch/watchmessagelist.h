@@ -45,3 +45,18 @@ FATEK_MSG(ValueNotFinite, 2,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "%1 is not a finite number: NaN and infinities are written only to an "
                             "item whose \"%2\" option is on"))
+
+// Strict reading of JSON objects (core/watch/jsonobjectreader.cpp): %1 the key as written; a
+// key no reader of that object knows is refused, with the known key it most likely means.
+FATEK_MSG(JsonKeyMissing, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is missing."))
+FATEK_MSG(JsonOutOfRange, 4, QT_TRANSLATE_NOOP("Fatek::Message", "%1 %2 is out of range (%3..%4)"))
+FATEK_MSG(JsonUnknownKeyNear, 2,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "\"%1\" is not a known setting; did you mean \"%2\"?"))
+FATEK_MSG(JsonUnknownKey, 1, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" is not a known setting."))
+FATEK_MSG(JsonWrongType, 2, QT_TRANSLATE_NOOP("Fatek::Message", "\"%1\" must be %2."))
+FATEK_MSG(JsonTypeArray, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a list"))
+FATEK_MSG(JsonTypeBool, 2, QT_TRANSLATE_NOOP("Fatek::Message", "%1 or %2"))
+FATEK_MSG(JsonTypeNumber, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a whole number"))
+FATEK_MSG(JsonTypeObject, 0, QT_TRANSLATE_NOOP("Fatek::Message", "an object"))
+FATEK_MSG(JsonTypeString, 0, QT_TRANSLATE_NOOP("Fatek::Message", "a string"))

@@ -158,10 +158,10 @@ void TestCheckoutReport::englishReportHoldsTogether()
 
     // Page 1 is the summary: the failed points and those not tested, no result table.
     const QString first = PdfText::pageText(pages[0]);
-    QVERIFY2(first.contains(QLatin1String("96 points: 88 passed, 2 failed, 0 skipped, 6 "
-                                          "untested.")),
+    QVERIFY2(first.contains(QLatin1String("96 points: 88 passed, 0 passed with remark, 2 failed, 0 "
+                                          "deferred, 0 not applicable, 6 untested.")),
              qPrintable(first));
-    QVERIFY2(first.contains(QLatin1String("Failed points")), qPrintable(first));
+    QVERIFY2(first.contains(QLatin1String("Punch list")), qPrintable(first));
     QVERIFY2(first.contains(QLatin1String("Not tested (6): R110, R111, R112, R113, R114, R115")),
              qPrintable(first));
     QVERIFY2(pageOf(pages, QStringLiteral("Results")) >= 1, qPrintable(first));
@@ -278,13 +278,16 @@ void TestCheckoutReport::pluralsInEveryLanguagePath()
     // fatek-cli prints its English report through ReportTranslator, not the UI's translator.
     ReportTranslator english;
     QVERIFY(english.setLanguage(QStringLiteral("en")));
-    QCOMPARE(english.text(msg<MsgId::ReportSummary>(18, 13, 4, 0, 1)),
-             QStringLiteral("18 points: 13 passed, 4 failed, 0 skipped, 1 untested."));
-    QCOMPARE(english.text(msg<MsgId::ReportSummary>(1, 1, 0, 0, 0)),
-             QStringLiteral("1 point: 1 passed, 0 failed, 0 skipped, 0 untested."));
+    QCOMPARE(english.text(msg<MsgId::ReportSummary>(18, 12, 1, 4, 0, 0, 1)),
+             QStringLiteral("18 points: 12 passed, 1 passed with remark, 4 failed, 0 deferred, 0 "
+                            "not applicable, 1 untested."));
+    QCOMPARE(english.text(msg<MsgId::ReportSummary>(1, 1, 0, 0, 0, 0, 0)),
+             QStringLiteral("1 point: 1 passed, 0 passed with remark, 0 failed, 0 deferred, 0 not "
+                            "applicable, 0 untested."));
     ReportTranslator chinese;
     QVERIFY(chinese.setLanguage(QStringLiteral("zh_TW")));
-    QVERIFY(!chinese.text(msg<MsgId::ReportSummary>(18, 13, 4, 0, 1)).contains(QLatin1Char('{')));
+    QVERIFY(
+        !chinese.text(msg<MsgId::ReportSummary>(18, 12, 1, 4, 0, 0, 1)).contains(QLatin1Char('{')));
     QCOMPARE(english.text(msg<MsgId::ReportEngineerPoints>("Chen", 1)),
              QStringLiteral("Chen (1 point)"));
 }

@@ -46,8 +46,8 @@ CheckoutPlan fullPlan()
         csv += QStringLiteral("X%1,SW_%1,switch %1,cabinet A\n").arg(i);
     for (int i = 0; i < 8; ++i)
         csv += QStringLiteral("Y%1,LAMP_%1,\"lamp %1, red\",cabinet B\n").arg(i);
-    csv += QStringLiteral("R100,PT_1,pressure,analog,4000,20000,50\n");
-    csv += QStringLiteral("D200,TT_1,temperature,analog,0,32000,100\n");
+    csv += QStringLiteral("R100,PT_1,pressure,analog,4000,20000,50,,,,0/100\n");
+    csv += QStringLiteral("D200,TT_1,temperature,analog,0,32000,100,,,,0/100\n");
     auto plan = CheckoutPlan::fromCsv(csv);
     Q_ASSERT(plan.ok());
     CheckoutPlan p = plan.value();
@@ -182,8 +182,10 @@ void TestCheckout::planFromRangesNamesAndCsv()
     const CheckoutPlan full = fullPlan();
     QCOMPARE(full.points.size(), std::size_t(26));
     QCOMPARE(full.points[16].description, QStringLiteral("lamp 0, red"));
-    QCOMPARE(full.points[24].expectedHigh, 20000u);
-    QCOMPARE(full.points[24].tolerance, 50u);
+    QCOMPARE(full.points[24].analog.rawHigh, 20000.0);
+    QCOMPARE(full.points[24].analog.engHigh, 20000.0); // no engineering units: the raw values
+    QCOMPARE(full.points[24].analog.tolerance, 50.0);
+    QCOMPARE(full.points[24].analog.checks, (std::vector<double>{0, 100}));
     // An analog point without its range is refused, with the line.
     const auto noRange = CheckoutPlan::fromCsv(QStringLiteral("R5,level\n"));
     QVERIFY(!noRange.ok());
@@ -210,7 +212,11 @@ void TestCheckout::fileRoundTrip()
     plan.points[0].fell = plan.points[0].rose.addMSecs(700);
     plan.points[0].changedWith = {addr("X7")};
     plan.points[16].seen = false;
-    plan.points[24].lowValue = 4010;
+    plan.points[24].readings = {AnalogReading{0, 4010, {}}};
+    plan.points[24].earlier = {CheckoutAttempt{}};
+    plan.points[24].earlier[0].result = CheckoutResult::Failed;
+    plan.points[24].earlier[0].comment = QStringLiteral("transmitter dead");
+    plan.points[24].punch.owner = QStringLiteral("electrician");
     const QString path = freeFile("plan.checkout.json");
     QVERIFY(CheckoutFile::saveToFile(plan, path).ok());
     const auto loaded = CheckoutFile::loadFromFile(path);
@@ -262,16 +268,19 @@ void TestCheckout::fullCheckoutAndReports()
     // Analog: both ends; R100 within tolerance, D200's high end 300 off.
     const int r100 = runner.plan().indexOf(addr("R100"));
     const int d200 = runner.plan().indexOf(addr("D200"));
+    const auto readings = [&runner](int index) {
+        return runner.plan().points[static_cast<std::size_t>(index)].readings.size();
+    };
     m_plc->setValue(addr("R100"), 4020);
-    runner.recordAnalog(r100, false);
-    QTRY_VERIFY_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(r100)].lowValue, 30000);
+    QVERIFY(runner.recordAnalog(r100, 0).ok());
+    QTRY_COMPARE_WITH_TIMEOUT(readings(r100), std::size_t(1), 30000);
     m_plc->setValue(addr("R100"), 19990);
-    runner.recordAnalog(r100, true);
+    QVERIFY(runner.recordAnalog(r100, 1).ok());
     m_plc->setValue(addr("D200"), 40);
-    runner.recordAnalog(d200, false);
-    QTRY_VERIFY_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(d200)].lowValue, 30000);
+    QVERIFY(runner.recordAnalog(d200, 0).ok());
+    QTRY_COMPARE_WITH_TIMEOUT(readings(d200), std::size_t(1), 30000);
     m_plc->setValue(addr("D200"), 31700);
-    runner.recordAnalog(d200, true);
+    QVERIFY(runner.recordAnalog(d200, 1).ok());
     QTRY_COMPARE_WITH_TIMEOUT(runner.plan().points[static_cast<std::size_t>(d200)].result,
                               CheckoutResult::Failed, 30000);
     QCOMPARE(runner.plan().points[static_cast<std::size_t>(r100)].result, CheckoutResult::Passed);
@@ -291,7 +300,7 @@ void TestCheckout::fullCheckoutAndReports()
     QVERIFY2(lines.contains(QStringLiteral("# Project: Line 3 conveyor")), qPrintable(csv));
     QVERIFY2(lines.contains(QStringLiteral("# Customer: ACME Foods")), qPrintable(csv));
     QVERIFY2(lines.contains(QStringLiteral("Point,Name,Group,Kind,Result,Measured,Comment,"
-                                           "Tested at,Engineer")),
+                                           "Tested at,Engineer,Attempts")),
              qPrintable(csv));
     QVERIFY2(csv.contains(QStringLiteral("\nY3,\"LAMP_3 - lamp 3, red\",cabinet B,Output,Failed,"
                                          "not seen in the field,lamp broken,")),
@@ -299,13 +308,14 @@ void TestCheckout::fullCheckoutAndReports()
     QVERIFY2(csv.contains(QStringLiteral("\nX15,SW_15 - switch 15,cabinet A,Input,Passed,"
                                          "\"0->1 at ")),
              qPrintable(csv));
-    QVERIFY2(csv.contains(QStringLiteral("D200,TT_1 - temperature,analog,Analog,Failed,\"low 40 "
-                                         "(expected 0), high 31700 (expected 32000), tolerance "
-                                         "100\"")),
+    QVERIFY2(csv.contains(QStringLiteral("D200,TT_1 - temperature,analog,Analog,Failed,\"0 %: "
+                                         "40; 100 %: 31700, expected 32000 (tolerance "
+                                         "\u00B1100)\"")),
              qPrintable(csv));
     QVERIFY2(
         lines.last()
-            == QStringLiteral("# Summary: 26 points: 24 passed, 2 failed, 0 skipped, 0 untested."),
+            == QStringLiteral("# Summary: 26 points: 24 passed, 0 passed with remark, 2 failed, 0 "
+                              "deferred, 0 not applicable, 0 untested."),
         qPrintable(lines.last()));
     // Title, 8 fields, header, 26 points, summary.
     QCOMPARE(lines.size(), 1 + 8 + 1 + 26 + 1);
@@ -316,7 +326,7 @@ void TestCheckout::fullCheckoutAndReports()
     const QString text = pdfText(pdf);
     for (const char *expected :
          {"I/O checkout report", "Line 3 conveyor", "ACME Foods", "PLC model", "OS version", "X15",
-          "Y7", "lamp broken", "D200", "26 points: 24 passed, 2 failed, 0 skipped, 0 untested.",
+          "Y7", "lamp broken", "D200", "26 points: 24 passed, 0 passed with remark, 2 failed",
           "Commissioning engineer", "Customer representative"})
         QVERIFY2(text.contains(QLatin1String(expected)),
                  qPrintable(QLatin1String(expected) + QLatin1String(" not in:\n") + text));
@@ -501,7 +511,7 @@ void TestCheckout::reportKeepsSignaturesTogether()
         const QString text = pdfText(pdf);
         if (inputs == 1) // one point, not "1 points"
             QVERIFY2(
-                text.contains(QLatin1String("1 point: 0 passed, 0 failed, 0 skipped, 1 untested.")),
+                text.contains(QLatin1String("1 point: 0 passed, 0 passed with remark, 0 failed")),
                 qPrintable(text));
         const QStringList pages = text.split(QLatin1Char('\f'), Qt::SkipEmptyParts);
         pagesSeen = std::max(pagesSeen, int(pages.size()));
