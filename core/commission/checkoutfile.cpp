@@ -147,8 +147,9 @@ Problem readAddresses(JsonObjectReader &r, const QString &key, std::vector<Addre
     return std::nullopt;
 }
 
-// The attempt's keys of `r`; `version` 1 also knew "skipped".
-Problem readAttempt(JsonObjectReader &r, CheckoutAttempt *a, int version)
+// The attempt's keys of `r`; `version` 1 also knew "skipped". A missing result is told apart
+// (`missingResult`), for the caller to say once it has refused unknown keys.
+Problem readAttempt(JsonObjectReader &r, CheckoutAttempt *a, int version, bool *missingResult)
 {
     const QString result = r.string(QStringLiteral("result"));
     if (r.problem)
@@ -157,10 +158,11 @@ Problem readAttempt(JsonObjectReader &r, CheckoutAttempt *a, int version)
         a->result = CheckoutResult::Deferred;
     } else if (const auto parsed = parseCheckoutResult(result)) {
         a->result = *parsed;
+    } else if (!r.has(QStringLiteral("result"))) {
+        // Said after the unknown keys: a misspelt "reslt" is the better message.
+        *missingResult = true;
     } else {
-        return result.isEmpty() && !r.has(QStringLiteral("result"))
-                   ? msg<MsgId::JsonKeyMissing>("result")
-                   : badValue(QStringLiteral("result"), result);
+        return badValue(QStringLiteral("result"), result);
     }
     a->comment = r.string(QStringLiteral("comment"));
     a->engineer = r.string(QStringLiteral("engineer"));
@@ -293,7 +295,8 @@ Result<CheckoutPoint> readPoint(const QJsonValue &value, int index, int version)
     p.name = r.string(QStringLiteral("name"));
     p.description = r.string(QStringLiteral("description"));
     p.group = r.string(QStringLiteral("group"));
-    if (Problem problem = readAttempt(r, &p.attempt(), version))
+    bool missingResult = false;
+    if (Problem problem = readAttempt(r, &p.attempt(), version, &missingResult))
         return placed(*problem);
     if (p.kind == CheckoutKind::Analog) {
         if (Problem problem = version == 1 ? readVersion1Analog(r, &p) : readScale(r, &p.analog))
@@ -304,8 +307,11 @@ Result<CheckoutPoint> readPoint(const QJsonValue &value, int index, int version)
         for (qsizetype i = 0; i < earlier.size() && !r.problem; ++i) {
             JsonObjectReader er(earlier.at(i).toObject());
             CheckoutAttempt a;
-            Problem problem = readAttempt(er, &a, version);
+            bool missing = false;
+            Problem problem = readAttempt(er, &a, version, &missing);
             er.rejectUnknown();
+            if (!problem && !er.problem && missing)
+                problem = msg<MsgId::JsonKeyMissing>("result");
             if (problem || er.problem)
                 return placed(msg<MsgId::AtPlace>(msg<MsgId::CheckoutPlaceEarlier>(i + 1),
                                                   problem ? *problem : *er.problem));
@@ -317,6 +323,8 @@ Result<CheckoutPoint> readPoint(const QJsonValue &value, int index, int version)
     r.rejectUnknown();
     if (r.problem)
         return placed(*r.problem);
+    if (missingResult)
+        return placed(msg<MsgId::JsonKeyMissing>("result"));
     return p;
 }
 

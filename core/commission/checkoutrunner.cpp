@@ -490,6 +490,9 @@ void CheckoutRunner::forceOutput(int index)
     }
     if (!s)
         return fail(makeError(ErrorKind::LinkError, msg<MsgId::CheckoutNoSession>()));
+    // Not started, or stopped (the PLC refused points of the plan): nothing is forced.
+    if (!m_running)
+        return fail(makeError(ErrorKind::InvalidRequest, msg<MsgId::CheckoutNotRunning>()));
     // Core refuses the writes in operator mode anyway; said here first, before anything is
     // recorded as forced.
     if (s->isReadOnly())

@@ -332,6 +332,9 @@ FATEK_MSG(CheckoutAnalogNoScale, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "%1 has no expected values: give its scale (raw and engineering low "
                             "and high) in the plan before it can pass"))
+FATEK_MSG(CheckoutNotRunning, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "The checkout is not running: start it first. Nothing was forced."))
 FATEK_MSG(CheckoutNoSuchPoint, 1,
           QT_TRANSLATE_NOOP("Fatek::Message", "%1 is not a point of the checkout"))
 FATEK_MSG(CheckoutNotAnalog, 1, QT_TRANSLATE_NOOP("Fatek::Message", "%1 is not an analog point"))

@@ -3,6 +3,7 @@
 // outputs answered here, its CSV and PDF reports (read back with pdftotext); a link killed with an
 // output forced; a restart with a file that records a forced output; operator mode; crossed
 // wiring; a save on a full device. What is forced is checked in the simulator's own memory.
+#include "checkoutfixture.h"
 #include "core/commission/checkoutfile.h"
 #include "core/commission/checkoutplan.h"
 #include "core/commission/checkoutreport.h"
@@ -86,76 +87,30 @@ private Q_SLOTS:
     void reportKeepsSignaturesTogether();
 
 private:
-    void startRunner(CheckoutRunner &runner, const CheckoutPlan &plan, const QString &file = {});
-    void actuate(CheckoutRunner &runner, const char *input);
-    QString freeFile(const char *name) const { return m_dir->filePath(QLatin1String(name)); }
+    void startRunner(CheckoutRunner &runner, const CheckoutPlan &plan, const QString &file = {})
+    {
+        m_sim.startRunner(runner, plan, file);
+    }
+    void actuate(CheckoutRunner &runner, const char *input) { m_sim.actuate(runner, input); }
+    QString freeFile(const char *name) const { return m_sim.freeFile(name); }
 
-    std::unique_ptr<SimulatedPlc> m_plc;
-    std::unique_ptr<SimServer> m_server;
-    std::unique_ptr<Session> m_session;
-    std::unique_ptr<QTemporaryDir> m_dir;
-    quint16 m_port = 0;
+    CheckoutSim m_sim;
+    SimulatedPlc *m_plc = nullptr;
+    SimServer *m_server = nullptr;
+    Session *m_session = nullptr;
 };
 
 void TestCheckout::init()
 {
-    registerSessionMetaTypes();
-    // STOP and no demo ladder: only the test moves the inputs.
-    m_plc = std::make_unique<SimulatedPlc>(ModelProfile::fbs());
-    m_plc->setRunning(false);
-    m_server = std::make_unique<SimServer>(m_plc.get());
-    QVERIFY(m_server->listenTcp(0));
-    m_port = m_server->tcpPort();
-    LinkSettings settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_port,
-                                              LinkSettings::ProtocolChoice::Facon);
-    settings.timeoutMs = 2000;
-    settings.retries = 1;
-    settings.reconnectMinMs = 100;
-    settings.reconnectMaxMs = 500;
-    m_session = std::make_unique<Session>(settings);
-    m_session->open();
-    QTRY_VERIFY_WITH_TIMEOUT(m_session->linkState() == LinkState::Connected, 20000);
-    m_dir = std::make_unique<QTemporaryDir>();
+    m_sim.open();
+    m_plc = m_sim.plc.get();
+    m_server = m_sim.server.get();
+    m_session = m_sim.session.get();
 }
 
 void TestCheckout::cleanup()
 {
-    m_session.reset();
-    m_server.reset();
-    m_plc.reset();
-    m_dir.reset();
-}
-
-void TestCheckout::startRunner(CheckoutRunner &runner, const CheckoutPlan &plan,
-                               const QString &file)
-{
-    runner.setSession(m_session.get());
-    runner.setPlan(plan);
-    runner.setFilePath(file);
-    runner.setEngineer(QStringLiteral("Lin"));
-    // Every failure in the test's log: a wait that times out says why.
-    connect(&runner, &CheckoutRunner::failed, this,
-            [](const ProtocolError &e) { qInfo() << "runner failed:" << englishText(e.message); });
-    QSignalSpy started(&runner, &CheckoutRunner::started);
-    QSignalSpy live(&runner, &CheckoutRunner::liveValue);
-    runner.start();
-    QTRY_VERIFY_WITH_TIMEOUT(started.count() == 1, 30000);
-    // A first poll gives every input its baseline.
-    const int inputs = static_cast<int>(plan.indexesOf(CheckoutKind::Input).size());
-    if (inputs > 0)
-        QTRY_VERIFY_WITH_TIMEOUT(live.count() >= inputs, 30000);
-}
-
-// The technician presses the switch and lets it go, each state held until the runner saw it.
-void TestCheckout::actuate(CheckoutRunner &runner, const char *input)
-{
-    const int i = runner.plan().indexOf(addr(input));
-    QVERIFY(i >= 0);
-    const CheckoutPoint &p = runner.plan().points[static_cast<std::size_t>(i)];
-    m_plc->setValue(addr(input), 1);
-    QTRY_VERIFY_WITH_TIMEOUT(p.rose.isValid(), 30000);
-    m_plc->setValue(addr(input), 0);
-    QTRY_VERIFY_WITH_TIMEOUT(p.fell.isValid(), 30000);
+    m_sim.close();
 }
 
 void TestCheckout::planFromRangesNamesAndCsv()
@@ -388,7 +343,7 @@ void TestCheckout::linkKilledWithOutputForced()
     QCOMPARE(m_plc->isDisabled(addr("Y2")), std::optional<bool>(true)); // still, in the PLC
 
     // Back on the same port: released at once, counted in the simulator's own memory.
-    QVERIFY(m_server->listenTcp(m_port));
+    QVERIFY(m_server->listenTcp(m_sim.port));
     QTRY_VERIFY_WITH_TIMEOUT(m_session->linkState() == LinkState::Connected, 60000);
     QTRY_VERIFY_WITH_TIMEOUT(m_plc->isDisabled(addr("Y2")) == std::optional<bool>(false), 60000);
     QCOMPARE(m_plc->value(addr("Y2")), std::optional<std::uint32_t>(0));
