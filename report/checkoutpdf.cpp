@@ -240,7 +240,7 @@ private:
     void addResults()
     {
         addHeading(msg<MsgId::ReportResults>(), true);
-        const std::vector<qreal> x = edges({6, 13, 7, 6, 8, 19, 15, 17, 10, 5});
+        const std::vector<qreal> x = edges({6, 12, 7, 6, 8, 16, 17, 17, 9, 7});
         const int header = addTableHeader(CheckoutReport::columns(), x);
         for (std::size_t i = 0; i < m_report.rows.size(); ++i) {
             const CheckoutReport::Row &r = m_report.rows[i];

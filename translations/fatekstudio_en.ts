@@ -1696,10 +1696,6 @@
             <translation>expected the columns %1</translation>
         </message>
         <message>
-            <source>&quot;%1&quot; is not a whole number from 0 to 65535</source>
-            <translation>&quot;%1&quot; is not a whole number from 0 to 65535</translation>
-        </message>
-        <message>
             <source>%1: an analog point needs its expected low and high values</source>
             <translation>%1: an analog point needs its expected low and high values</translation>
         </message>
@@ -1796,10 +1792,6 @@
             <translation>Failed</translation>
         </message>
         <message>
-            <source>Skipped</source>
-            <translation>Skipped</translation>
-        </message>
-        <message>
             <source>0-&gt;1 at %1, 1-&gt;0 at %2</source>
             <translation>0-&gt;1 at %1, 1-&gt;0 at %2</translation>
         </message>
@@ -1810,10 +1802,6 @@
         <message>
             <source>not seen in the field</source>
             <translation>not seen in the field</translation>
-        </message>
-        <message>
-            <source>low %1 (expected %2), high %3 (expected %4), tolerance %5</source>
-            <translation>low %1 (expected %2), high %3 (expected %4), tolerance %5</translation>
         </message>
         <message>
             <source>also changed while it was tested: %1</source>
@@ -1888,10 +1876,6 @@
             <translation>Tested at</translation>
         </message>
         <message>
-            <source>%1 {1:point|points}: %2 passed, %3 failed, %4 skipped, %5 untested.</source>
-            <translation>%1 {1:point|points}: %2 passed, %3 failed, %4 skipped, %5 untested.</translation>
-        </message>
-        <message>
             <source>Summary</source>
             <translation>Summary</translation>
         </message>
@@ -1959,14 +1943,7 @@
             <source>Results</source>
             <translation>Results</translation>
         </message>
-        <message>
-            <source>Failed points</source>
-            <translation>Failed points</translation>
-        </message>
-        <message>
-            <source>No point failed.</source>
-            <translation>No point failed.</translation>
-        </message>
+        
         <message>
             <source>Not tested (%1): %2</source>
             <translation>Not tested (%1): %2</translation>
@@ -2574,6 +2551,166 @@
         <message>
             <source>reloaded</source>
             <translation>reloaded</translation>
+        </message>
+        <message>
+            <source>Passed with remark</source>
+            <translation>Passed with remark</translation>
+        </message>
+        <message>
+            <source>Deferred</source>
+            <translation>Deferred</translation>
+        </message>
+        <message>
+            <source>Not applicable</source>
+            <translation>Not applicable</translation>
+        </message>
+        <message>
+            <source>%1 %: %2</source>
+            <translation>%1 %: %2</translation>
+        </message>
+        <message>
+            <source>%1 %: found %2, left %3</source>
+            <translation>%1 %: found %2, left %3</translation>
+        </message>
+        <message>
+            <source>%1 %: %2, expected %3</source>
+            <translation>%1 %: %2, expected %3</translation>
+        </message>
+        <message>
+            <source>%1 (tolerance %2)</source>
+            <translation>%1 (tolerance %2)</translation>
+        </message>
+        <message>
+            <source>%1 has no expected values: give its scale (raw and engineering low and high) in the plan before it can pass</source>
+            <translation>%1 has no expected values: give its scale (raw and engineering low and high) in the plan before it can pass</translation>
+        </message>
+        <message>
+            <source>The checkout is not running: start it first. Nothing was forced.</source>
+            <translation>The checkout is not running: start it first. Nothing was forced.</translation>
+        </message>
+        <message>
+            <source>%1 is not a point of the checkout</source>
+            <translation>%1 is not a point of the checkout</translation>
+        </message>
+        <message>
+            <source>%1 is not an analog point</source>
+            <translation>%1 is not an analog point</translation>
+        </message>
+        <message>
+            <source>%1: &quot;passed with remark&quot; needs the remark</source>
+            <translation>%1: &quot;passed with remark&quot; needs the remark</translation>
+        </message>
+        <message>
+            <source>%1: &quot;deferred&quot; needs the reason</source>
+            <translation>%1: &quot;deferred&quot; needs the reason</translation>
+        </message>
+        <message>
+            <source>%1 cannot pass clean: %2 changed while it was tested (crossed wiring?). Re-test it, or pass it with a remark.</source>
+            <translation>%1 cannot pass clean: %2 changed while it was tested (crossed wiring?). Re-test it, or pass it with a remark.</translation>
+        </message>
+        <message>
+            <source>%1 passes or fails by what is read: read it at each check</source>
+            <translation>%1 passes or fails by what is read: read it at each check</translation>
+        </message>
+        <message>
+            <source>%1 has no check at %2 %</source>
+            <translation>%1 has no check at %2 %</translation>
+        </message>
+        <message>
+            <source>%1 at %2 %: read the value as found before the value as left</source>
+            <translation>%1 at %2 %: read the value as found before the value as left</translation>
+        </message>
+        <message>
+            <source>%1 still fails: re-test it before its punch item is closed out</source>
+            <translation>%1 still fails: re-test it before its punch item is closed out</translation>
+        </message>
+        <message>
+            <source>%1 is not on the punch list</source>
+            <translation>%1 is not on the punch list</translation>
+        </message>
+        <message>
+            <source>The PLC refuses %1 (%2): take {3:it|them} out of the plan. Nothing was forced.</source>
+            <translation>The PLC refuses %1 (%2): take {3:it|them} out of the plan. Nothing was forced.</translation>
+        </message>
+        <message>
+            <source>%1 are read again</source>
+            <translation>%1 are read again</translation>
+        </message>
+        <message>
+            <source>checks &quot;%1&quot;: per cents from 0 to 100 separated by &quot;/&quot;</source>
+            <translation>checks &quot;%1&quot;: per cents from 0 to 100 separated by &quot;/&quot;</translation>
+        </message>
+        <message>
+            <source>checkout file version %1 is not supported (this program reads 1 to %2)</source>
+            <translation>checkout file version %1 is not supported (this program reads 1 to %2)</translation>
+        </message>
+        <message>
+            <source>info</source>
+            <translation>info</translation>
+        </message>
+        <message>
+            <source>point %1 (%2)</source>
+            <translation>point %1 (%2)</translation>
+        </message>
+        <message>
+            <source>earlier attempt %1</source>
+            <translation>earlier attempt %1</translation>
+        </message>
+        <message>
+            <source>reading %1</source>
+            <translation>reading %1</translation>
+        </message>
+        <message>
+            <source>scale</source>
+            <translation>scale</translation>
+        </message>
+        <message>
+            <source>punch</source>
+            <translation>punch</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; cannot be &quot;%2&quot;</source>
+            <translation>&quot;%1&quot; cannot be &quot;%2&quot;</translation>
+        </message>
+        <message>
+            <source>%1 {1:point|points}: %2 passed, %3 passed with remark, %4 failed, %5 deferred, %6 not applicable, %7 untested.</source>
+            <translation>%1 {1:point|points}: %2 passed, %3 passed with remark, %4 failed, %5 deferred, %6 not applicable, %7 untested.</translation>
+        </message>
+        <message>
+            <source>Punch list</source>
+            <translation>Punch list</translation>
+        </message>
+        <message>
+            <source>The punch list is empty: no point failed or was deferred.</source>
+            <translation>The punch list is empty: no point failed or was deferred.</translation>
+        </message>
+        <message>
+            <source>Attempts</source>
+            <translation>Attempts</translation>
+        </message>
+        <message>
+            <source>Owner</source>
+            <translation>Owner</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>State</translation>
+        </message>
+        <message>
+            <source>open</source>
+            <translation>open</translation>
+        </message>
+        <message>
+            <source>closed %1 by %2</source>
+            <translation>closed %1 by %2</translation>
+        </message>
+        <message>
+            <source>Document</source>
+            <translation>Document</translation>
+        </message>
+        <message>
+            <source>Revision</source>
+            <translation>Revision</translation>
         </message>
     </context>
     <context>

@@ -1693,10 +1693,6 @@
             <translation>應有的欄位為 %1</translation>
         </message>
         <message>
-            <source>&quot;%1&quot; is not a whole number from 0 to 65535</source>
-            <translation>「%1」不是 0 到 65535 的整數</translation>
-        </message>
-        <message>
             <source>%1: an analog point needs its expected low and high values</source>
             <translation>%1：類比點需要預期的低端與高端值</translation>
         </message>
@@ -1793,10 +1789,6 @@
             <translation>不合格</translation>
         </message>
         <message>
-            <source>Skipped</source>
-            <translation>略過</translation>
-        </message>
-        <message>
             <source>0-&gt;1 at %1, 1-&gt;0 at %2</source>
             <translation>0-&gt;1 於 %1，1-&gt;0 於 %2</translation>
         </message>
@@ -1807,10 +1799,6 @@
         <message>
             <source>not seen in the field</source>
             <translation>現場未見動作</translation>
-        </message>
-        <message>
-            <source>low %1 (expected %2), high %3 (expected %4), tolerance %5</source>
-            <translation>低端 %1（預期 %2），高端 %3（預期 %4），容許誤差 %5</translation>
         </message>
         <message>
             <source>also changed while it was tested: %1</source>
@@ -1885,10 +1873,6 @@
             <translation>測試時間</translation>
         </message>
         <message>
-            <source>%1 {1:point|points}: %2 passed, %3 failed, %4 skipped, %5 untested.</source>
-            <translation>共 %1 點：%2 點合格，%3 點不合格，%4 點略過，%5 點未測試。</translation>
-        </message>
-        <message>
             <source>Summary</source>
             <translation>摘要</translation>
         </message>
@@ -1956,14 +1940,7 @@
             <source>Results</source>
             <translation>測試結果</translation>
         </message>
-        <message>
-            <source>Failed points</source>
-            <translation>不合格點</translation>
-        </message>
-        <message>
-            <source>No point failed.</source>
-            <translation>沒有不合格的點。</translation>
-        </message>
+        
         <message>
             <source>Not tested (%1): %2</source>
             <translation>未測試（%1 點）：%2</translation>
@@ -2571,6 +2548,166 @@
         <message>
             <source>reloaded</source>
             <translation>已重新載入</translation>
+        </message>
+        <message>
+            <source>Passed with remark</source>
+            <translation>合格（附註）</translation>
+        </message>
+        <message>
+            <source>Deferred</source>
+            <translation>延後</translation>
+        </message>
+        <message>
+            <source>Not applicable</source>
+            <translation>不適用</translation>
+        </message>
+        <message>
+            <source>%1 %: %2</source>
+            <translation>%1 %：%2</translation>
+        </message>
+        <message>
+            <source>%1 %: found %2, left %3</source>
+            <translation>%1 %：調整前 %2，調整後 %3</translation>
+        </message>
+        <message>
+            <source>%1 %: %2, expected %3</source>
+            <translation>%1 %：%2，預期 %3</translation>
+        </message>
+        <message>
+            <source>%1 (tolerance %2)</source>
+            <translation>%1（容許誤差 %2）</translation>
+        </message>
+        <message>
+            <source>%1 has no expected values: give its scale (raw and engineering low and high) in the plan before it can pass</source>
+            <translation>%1 沒有預期值：請先在計畫中設定其刻度（原始值與工程值的下限和上限），才能判定合格</translation>
+        </message>
+        <message>
+            <source>The checkout is not running: start it first. Nothing was forced.</source>
+            <translation>點檢尚未開始：請先開始。沒有強制任何輸出。</translation>
+        </message>
+        <message>
+            <source>%1 is not a point of the checkout</source>
+            <translation>%1 不是此次點檢的點</translation>
+        </message>
+        <message>
+            <source>%1 is not an analog point</source>
+            <translation>%1 不是類比點</translation>
+        </message>
+        <message>
+            <source>%1: &quot;passed with remark&quot; needs the remark</source>
+            <translation>%1：「合格（附註）」需要填寫附註</translation>
+        </message>
+        <message>
+            <source>%1: &quot;deferred&quot; needs the reason</source>
+            <translation>%1：「延後」需要填寫原因</translation>
+        </message>
+        <message>
+            <source>%1 cannot pass clean: %2 changed while it was tested (crossed wiring?). Re-test it, or pass it with a remark.</source>
+            <translation>%1 不能直接判定合格：測試時 %2 也變化了（配線交錯？）。請重新測試，或以附註判定合格。</translation>
+        </message>
+        <message>
+            <source>%1 passes or fails by what is read: read it at each check</source>
+            <translation>%1 依讀取值判定合格與否：請在每個檢查點讀取</translation>
+        </message>
+        <message>
+            <source>%1 has no check at %2 %</source>
+            <translation>%1 沒有 %2 % 的檢查點</translation>
+        </message>
+        <message>
+            <source>%1 at %2 %: read the value as found before the value as left</source>
+            <translation>%1 在 %2 %：請先讀取調整前的值，再讀取調整後的值</translation>
+        </message>
+        <message>
+            <source>%1 still fails: re-test it before its punch item is closed out</source>
+            <translation>%1 仍不合格：請先重新測試，再將其待辦事項結案</translation>
+        </message>
+        <message>
+            <source>%1 is not on the punch list</source>
+            <translation>%1 不在待辦清單上</translation>
+        </message>
+        <message>
+            <source>The PLC refuses %1 (%2): take {3:it|them} out of the plan. Nothing was forced.</source>
+            <translation>PLC 拒絕 %1（%2）：請將其自計畫中移除。沒有強制任何輸出。</translation>
+        </message>
+        <message>
+            <source>%1 are read again</source>
+            <translation>%1 已恢復讀取</translation>
+        </message>
+        <message>
+            <source>checks &quot;%1&quot;: per cents from 0 to 100 separated by &quot;/&quot;</source>
+            <translation>檢查點「%1」：應為 0 到 100 的百分比，以「/」分隔</translation>
+        </message>
+        <message>
+            <source>checkout file version %1 is not supported (this program reads 1 to %2)</source>
+            <translation>不支援點檢檔版本 %1（本程式可讀取 1 到 %2）</translation>
+        </message>
+        <message>
+            <source>info</source>
+            <translation>資訊</translation>
+        </message>
+        <message>
+            <source>point %1 (%2)</source>
+            <translation>第 %1 點（%2）</translation>
+        </message>
+        <message>
+            <source>earlier attempt %1</source>
+            <translation>第 %1 次先前測試</translation>
+        </message>
+        <message>
+            <source>reading %1</source>
+            <translation>第 %1 筆讀值</translation>
+        </message>
+        <message>
+            <source>scale</source>
+            <translation>刻度</translation>
+        </message>
+        <message>
+            <source>punch</source>
+            <translation>待辦</translation>
+        </message>
+        <message>
+            <source>&quot;%1&quot; cannot be &quot;%2&quot;</source>
+            <translation>「%1」不能是「%2」</translation>
+        </message>
+        <message>
+            <source>%1 {1:point|points}: %2 passed, %3 passed with remark, %4 failed, %5 deferred, %6 not applicable, %7 untested.</source>
+            <translation>共 %1 點：%2 點合格，%3 點合格（附註），%4 點不合格，%5 點延後，%6 點不適用，%7 點未測試。</translation>
+        </message>
+        <message>
+            <source>Punch list</source>
+            <translation>待辦清單</translation>
+        </message>
+        <message>
+            <source>The punch list is empty: no point failed or was deferred.</source>
+            <translation>待辦清單是空的：沒有不合格或延後的點。</translation>
+        </message>
+        <message>
+            <source>Attempts</source>
+            <translation>次數</translation>
+        </message>
+        <message>
+            <source>Owner</source>
+            <translation>負責人</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>狀態</translation>
+        </message>
+        <message>
+            <source>open</source>
+            <translation>未結案</translation>
+        </message>
+        <message>
+            <source>closed %1 by %2</source>
+            <translation>%1 由 %2 結案</translation>
+        </message>
+        <message>
+            <source>Document</source>
+            <translation>文件編號</translation>
+        </message>
+        <message>
+            <source>Revision</source>
+            <translation>版次</translation>
         </message>
     </context>
     <context>
