@@ -11,7 +11,9 @@ set(CPACK_PACKAGE_DESCRIPTION
     "FATEK Studio talks to FATEK PLCs (FBs and compatible) over RS-232/RS-485, TCP and UDP with the FACON ASCII and the FATEK binary protocol: watch tables, RUN/STOP control, forcing, loop-back link test and a raw frame console. It includes fatek-cli, a scriptable command-line client, fatek-gateway, an MQTT gateway, and fatek-sim, a simulated PLC with fault injection for testing without hardware.")
 set(CPACK_PACKAGE_INSTALL_DIRECTORY "FATEK Studio")
 set(CPACK_STRIP_FILES ON) # the release preset is RelWithDebInfo: ship without the debug info
-set(FATEK_PACKAGE_MAINTAINER "FATEK Studio maintainers <fatek-studio@localhost>"
+# The same contact as packaging/linux/copyright and changelog (a reserved .invalid domain until the
+# project has a public address; lintian accepts it as a host name).
+set(FATEK_PACKAGE_MAINTAINER "FATEK Studio developers <maintainers@fatek-studio.invalid>"
     CACHE STRING "Maintainer field of the .deb (Name <e-mail>)")
 set(CPACK_PACKAGE_CONTACT "${FATEK_PACKAGE_MAINTAINER}")
 

@@ -27,8 +27,8 @@ packages=(
     poppler-utils
     # tools/tidy.sh: clang-tidy with the checks in .clang-tidy
     clang-tidy-14
-    # packaging and its install test (tools/package-test.sh)
-    dpkg-dev file desktop-file-utils groff-base man-db gzip
+    # packaging and its install test (tools/package-test.sh), which runs lintian on the .deb
+    dpkg-dev file desktop-file-utils groff-base man-db gzip lintian
     # the watch-list MIME type: update-mime-database, xmllint, gio (content sniffing)
     shared-mime-info libxml2-utils libglib2.0-bin
     # the MQTT gateway: the client library, the broker its integration tests start, and

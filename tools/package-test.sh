@@ -65,6 +65,15 @@ for p in libc6 libstdc++6 libqt6core6 libqt6gui6 libqt6widgets6 libqt6network6 l
     grep -Fxq "$p" <<<"$depends_names" || fail "Depends lacks $p"
 done
 
+step "lintian"
+# Debian's own package checker: an error fails the test; warnings are shown.
+lintian --tag-display-limit 0 "$deb" >"$work/lintian.txt" 2>&1 || true
+cat "$work/lintian.txt"
+if grep -q "^E: " "$work/lintian.txt"; then
+    fail "lintian reports errors (above)"
+fi
+grep -q "^[EW]: " "$work/lintian.txt" || echo "lintian: no error, no warning"
+
 step "contents"
 dpkg-deb -c "$deb" | awk '{print $1, $6}' >"$work/contents.txt"
 expected=(
@@ -77,6 +86,7 @@ expected=(
     ./usr/share/man/man1/fatek-cli.1.gz ./usr/share/man/man1/fatek-sim.1.gz
     ./usr/share/man/man1/fatek-studio.1.gz ./usr/share/man/man1/fatek-gateway.1.gz
     ./usr/share/bash-completion/completions/fatek-cli ./usr/share/zsh/vendor-completions/_fatek-cli
+    ./usr/share/doc/fatek-studio/copyright ./usr/share/doc/fatek-studio/changelog.gz
 )
 for size in 16 22 24 32 48 64 128 256; do
     expected+=("./usr/share/icons/hicolor/${size}x${size}/apps/fatek-studio.png")
