@@ -2712,6 +2712,10 @@
             <source>Revision</source>
             <translation>Revision</translation>
         </message>
+        <message>
+            <source>Name the engineer who records the results: the report says who tested each point.</source>
+            <translation>Name the engineer who records the results: the report says who tested each point.</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrendHistory</name>

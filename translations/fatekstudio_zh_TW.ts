@@ -2709,6 +2709,10 @@
             <source>Revision</source>
             <translation>版次</translation>
         </message>
+        <message>
+            <source>Name the engineer who records the results: the report says who tested each point.</source>
+            <translation>請填寫記錄結果的工程師：報告會載明每一點由誰測試。</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::TrendHistory</name>

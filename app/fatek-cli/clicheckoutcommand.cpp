@@ -10,6 +10,7 @@
 #include "core/commission/checkoutrunner.h"
 #include "core/commission/commissionmessages.h"
 #include "core/qtbridge/qtmessage.h"
+#include "core/watch/osuser.h"
 #include "core/watch/safefile.h"
 #include "report/checkoutpdf.h"
 #include "report/reporttranslator.h"
@@ -140,6 +141,10 @@ void CliCheckoutCommand::run()
         p.info.customer = options().checkoutCustomer;
     if (!options().checkoutEngineer.isEmpty())
         p.info.engineer = options().checkoutEngineer;
+    // Every result names who recorded it: the login when no engineer is given (the core refuses
+    // a checkout signed by nobody).
+    if (p.info.engineer.trimmed().isEmpty())
+        p.info.engineer = OsUser::name();
     m_outputs = p.indexesOf(CheckoutKind::Output);
     m_analogs = p.indexesOf(CheckoutKind::Analog);
     // Only the untested ones: a resumed checkout goes on where it stopped.

@@ -5,6 +5,7 @@
 #include "alarmmessages.h"
 
 #include "core/plant/plantconnection.h"
+#include "core/watch/osuser.h"
 #include "core/watch/valueformat.h"
 
 #include <QDateTime>
@@ -14,9 +15,7 @@ namespace Fatek {
 namespace Alarms {
 QString currentUser()
 {
-    QString user = qEnvironmentVariable("USER");
-    if (user.isEmpty())
-        user = qEnvironmentVariable("USERNAME"); // Windows
+    const QString user = OsUser::name();
     return user.isEmpty() ? QStringLiteral("unknown") : user;
 }
 } // namespace Alarms

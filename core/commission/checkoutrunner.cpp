@@ -85,6 +85,11 @@ void CheckoutRunner::start()
         fail(makeError(ErrorKind::LinkError, msg<MsgId::CheckoutNoSession>()));
         return;
     }
+    // Every result names who recorded it: a record signed by nobody is refused.
+    if (m_engineer.trimmed().isEmpty() && m_plan.info.engineer.trimmed().isEmpty()) {
+        fail(makeError(ErrorKind::InvalidRequest, msg<MsgId::CheckoutNoEngineer>()));
+        return;
+    }
     m_running = true;
     m_inputs.clear();
     m_pollError.reset();

@@ -332,6 +332,10 @@ FATEK_MSG(CheckoutAnalogNoScale, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "%1 has no expected values: give its scale (raw and engineering low "
                             "and high) in the plan before it can pass"))
+FATEK_MSG(CheckoutNoEngineer, 0,
+          QT_TRANSLATE_NOOP("Fatek::Message",
+                            "Name the engineer who records the results: the report says who "
+                            "tested each point."))
 FATEK_MSG(CheckoutNotRunning, 0,
           QT_TRANSLATE_NOOP("Fatek::Message",
                             "The checkout is not running: start it first. Nothing was forced."))

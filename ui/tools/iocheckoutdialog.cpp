@@ -5,6 +5,7 @@
 #include "core/commission/checkoutreport.h"
 #include "core/commission/checkoutrunner.h"
 #include "core/commission/commissionmessages.h"
+#include "core/watch/osuser.h"
 #include "core/watch/safefile.h"
 #include "report/checkoutpdf.h"
 #include "ui/common/uitext.h"
@@ -51,6 +52,8 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     right->addRow(tr("Customer:"), m_customer);
     m_engineer = new QLineEdit(this);
     m_engineer->setObjectName(QStringLiteral("engineer"));
+    // Who records the results (the report names them): the login until someone types a name.
+    m_engineer->setText(OsUser::name());
     right->addRow(tr("Engineer:"), m_engineer);
     plan->addLayout(left, 3);
     plan->addLayout(right, 2);
@@ -295,7 +298,7 @@ bool IoCheckoutDialog::openCheckout(const QString &path)
     m_ranges->clear();
     m_project->setText(plan->info.project);
     m_customer->setText(plan->info.customer);
-    m_engineer->setText(plan->info.engineer);
+    m_engineer->setText(plan->info.engineer.isEmpty() ? OsUser::name() : plan->info.engineer);
     m_runner->setPlan(std::move(plan.value()));
     m_runner->setFilePath(path);
     m_model->planReset();

@@ -85,6 +85,7 @@ void TestCheckoutRelease::releaseRetriedAfterTimeout()
     runner.setSession(m_session.get());
     runner.setPlan(CheckoutPlan::fromRanges(QStringLiteral("Y0..Y3")).value());
     runner.setFilePath(file);
+    runner.setEngineer(QStringLiteral("Lin"));
     runner.setReleaseRetryMs(200);
     QSignalSpy started(&runner, &CheckoutRunner::started);
     QSignalSpy forced(&runner, &CheckoutRunner::outputForced);

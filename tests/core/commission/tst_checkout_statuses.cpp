@@ -38,6 +38,7 @@ private Q_SLOTS:
     void cleanup() { m_sim.close(); }
 
     void statusesNeedTheirText();
+    void blankEngineerIsRefused();
     void retestKeepsEarlierAttempts();
     void crossedWiringCannotPassClean();
     void punchListOwnerAndCloseOut();
@@ -81,6 +82,28 @@ void TestCheckoutStatuses::statusesNeedTheirText()
     QCOMPARE(plan.punchList(), (std::vector<int>{1, 3}));
     QVERIFY(isCheckoutDone(CheckoutResult::NotApplicable));
     QVERIFY(!isCheckoutDone(CheckoutResult::Deferred));
+}
+
+void TestCheckoutStatuses::blankEngineerIsRefused()
+{
+    CheckoutRunner runner;
+    runner.setSession(m_sim.session.get());
+    runner.setPlan(CheckoutPlan::fromRanges(QStringLiteral("X0")).value());
+    runner.setEngineer(QStringLiteral("  "));
+    QSignalSpy failed(&runner, &CheckoutRunner::failed);
+    runner.start();
+    QCOMPARE(failed.count(), 1);
+    QCOMPARE(englishText(failed.at(0).at(0).value<ProtocolError>().message),
+             QStringLiteral("Name the engineer who records the results: the report says who "
+                            "tested each point."));
+    QVERIFY(!runner.isRunning());
+    // The plan's engineer is enough.
+    CheckoutPlan plan = runner.plan();
+    plan.info.engineer = QStringLiteral("Lin");
+    runner.setPlan(plan);
+    QSignalSpy started(&runner, &CheckoutRunner::started);
+    runner.start();
+    QTRY_COMPARE_WITH_TIMEOUT(started.count(), 1, 30000);
 }
 
 void TestCheckoutStatuses::retestKeepsEarlierAttempts()
@@ -275,6 +298,7 @@ void TestCheckoutStatuses::pointsThePlcRefusesAreNamed()
     CheckoutRunner runner;
     runner.setSession(m_sim.session.get());
     runner.setPlan(CheckoutPlan::fromRanges(QStringLiteral("X0..X1, X9999, Y0")).value());
+    runner.setEngineer(QStringLiteral("Lin"));
     QSignalSpy refused(&runner, &CheckoutRunner::refused);
     QSignalSpy started(&runner, &CheckoutRunner::started);
     runner.start();
