@@ -1,6 +1,8 @@
 // fatek-cli checkout.
 #include "clicheckoutcommand.h"
 
+#include "clicheckoutanswer.h"
+#include "clicheckoutinputs.h"
 #include "clicommands.h"
 #include "clicontext.h"
 #include "clilinereader.h"
@@ -31,12 +33,6 @@
 namespace Fatek {
 
 namespace {
-
-QString pointText(const CheckoutPoint &p)
-{
-    const QString a = QString::fromStdString(p.address.toString());
-    return p.name.isEmpty() ? a : QStringLiteral("%1 (%2)").arg(a, p.name);
-}
 
 bool stdinIsTerminal()
 {
@@ -122,12 +118,14 @@ void CliCheckoutCommand::run()
         out().error(englishText(plan.error().message), ExitCode::Usage);
         return m_context.finish(ExitCode::Usage);
     }
-    // The report is written at the end: a place that cannot take it is said before anything is
-    // forced, not after the whole checkout.
-    if (const QString &report = options().checkoutReport; !report.isEmpty()) {
-        if (const QString reason = SafeFile::checkWritable(report); !reason.isEmpty()) {
+    // The report and the punch list are written at the end: a place that cannot take them is
+    // said before anything is forced, not after the whole checkout.
+    for (const QString &file : {options().checkoutReport, options().checkoutPunch}) {
+        if (file.isEmpty())
+            continue;
+        if (const QString reason = SafeFile::checkWritable(file); !reason.isEmpty()) {
             out().error(englishText(msg<MsgId::ReportCannotWrite>(
-                            report.toStdString(), Message::text(reason.toStdString())))
+                            file.toStdString(), Message::text(reason.toStdString())))
                             + QStringLiteral(" Nothing was forced."),
                         ExitCode::Internal);
             return m_context.finish(ExitCode::Internal);
@@ -135,12 +133,20 @@ void CliCheckoutCommand::run()
     }
     CheckoutPlan p = std::move(plan).value();
     p.info.station = m_context.station();
-    if (!options().checkoutProject.isEmpty())
-        p.info.project = options().checkoutProject;
-    if (!options().checkoutCustomer.isEmpty())
-        p.info.customer = options().checkoutCustomer;
-    if (!options().checkoutEngineer.isEmpty())
-        p.info.engineer = options().checkoutEngineer;
+    // What the options say replaces what the file says; what they do not say stays.
+    const auto given = [](QString &field, const QString &value) {
+        if (!value.isEmpty())
+            field = value;
+    };
+    given(p.info.project, options().checkoutProject);
+    given(p.info.customer, options().checkoutCustomer);
+    given(p.info.engineer, options().checkoutEngineer);
+    given(p.info.documentId, options().checkoutDocument);
+    given(p.info.revision, options().checkoutRevision);
+    given(p.info.engineerCompany, options().checkoutCompany);
+    given(p.info.witness, options().checkoutWitness);
+    given(p.info.witnessCompany, options().checkoutWitnessCompany);
+    given(p.info.customerSignatory, options().checkoutSignatory);
     // Every result names who recorded it: the login when no engineer is given (the core refuses
     // a checkout signed by nobody).
     if (p.info.engineer.trimmed().isEmpty())
@@ -185,18 +191,15 @@ void CliCheckoutCommand::run()
             QTextStream(stderr) << '\n';
         out().note(englishText(m));
     });
-    connect(r, &CheckoutRunner::pointChanged, this, [this, r](int index) {
-        const CheckoutPoint &pt = r->plan().points[static_cast<std::size_t>(index)];
-        if (pt.kind == CheckoutKind::Input && pt.result == CheckoutResult::Passed
-            && !m_inputsDone) {
-            out().note(QStringLiteral("%1: %2").arg(pointText(pt), englishText(pt.measured())));
-            const auto inputs = r->plan().indexesOf(CheckoutKind::Input);
-            if (std::all_of(inputs.begin(), inputs.end(), [r](int i) {
-                    return r->plan().points[static_cast<std::size_t>(i)].result
-                           != CheckoutResult::Untested;
-                }))
-                inputsDone();
-        }
+    connect(r, &CheckoutRunner::refused, this, [this](const Message &m) {
+        // Points the model does not have: nothing runs, nothing was forced.
+        out().error(englishText(m), ExitCode::Usage);
+        m_context.finish(ExitCode::Usage);
+    });
+    connect(r, &CheckoutRunner::readAgain, this, [this](const Message &m) {
+        if (lines().isWaiting()) // a question's line is open
+            QTextStream(stderr) << '\n';
+        out().note(englishText(m));
     });
     connect(r, &CheckoutRunner::runConfirmationNeeded, this,
             [this, r](int index, const Message &question) {
@@ -205,10 +208,10 @@ void CliCheckoutCommand::run()
                     r->forceOutput(index);
                 };
                 if (options().assumeYes) {
-                    out().note(
-                        QStringLiteral("The PLC is in RUN: %1 is forced on all the same "
-                                       "(--yes).")
-                            .arg(pointText(r->plan().points[static_cast<std::size_t>(index)])));
+                    out().note(QStringLiteral("The PLC is in RUN: %1 is forced on all the same "
+                                              "(--yes).")
+                                   .arg(CliText::checkoutPoint(
+                                       r->plan().points[static_cast<std::size_t>(index)])));
                     return yes();
                 }
                 ask(
@@ -231,30 +234,23 @@ void CliCheckoutCommand::run()
             = r->plan().points[static_cast<std::size_t>(m_outputs[m_nextOutput - 1])];
         if (pt.address != a) // a leftover or a retried release, not the output just answered
             return;
-        out().note(QStringLiteral("%1: %2, released")
-                       .arg(pointText(pt), englishText(checkoutResultMessage(pt.result))));
+        out().note(
+            QStringLiteral("%1: %2, released")
+                .arg(CliText::checkoutPoint(pt), englishText(checkoutResultMessage(pt.result))));
         nextOutput();
     });
-    connect(r, &CheckoutRunner::started, this, [this, r] {
-        const auto inputs = r->plan().indexesOf(CheckoutKind::Input);
-        const bool open = std::any_of(inputs.begin(), inputs.end(), [r](int i) {
-            return r->plan().points[static_cast<std::size_t>(i)].result == CheckoutResult::Untested;
-        });
-        if (open)
-            out().note(QStringLiteral("Actuate each input in the field (on, then off); any "
-                                      "order. Ctrl-C ends the checkout and writes the report."));
-        else
-            inputsDone();
-    });
+    m_inputs = std::make_unique<CliCheckoutInputs>(
+        *r, out(),
+        [this](const QString &question, std::function<void(const QString &)> answer,
+               std::function<void()> noAnswer) {
+            ask(question, std::move(answer), std::move(noAnswer));
+        },
+        canAsk());
+    connect(m_inputs.get(), &CliCheckoutInputs::done, this, &CliCheckoutCommand::nextOutput);
+    connect(m_inputs.get(), &CliCheckoutInputs::noAnswer, this,
+            [this] { finishCheckout(ExitCode::Ok); });
+    connect(r, &CheckoutRunner::started, m_inputs.get(), &CliCheckoutInputs::start);
     r->start();
-}
-
-void CliCheckoutCommand::inputsDone()
-{
-    if (m_inputsDone)
-        return;
-    m_inputsDone = true;
-    nextOutput();
 }
 
 void CliCheckoutCommand::nextOutput()
@@ -270,21 +266,36 @@ void CliCheckoutCommand::askSeen(int index)
 {
     const CheckoutPoint &pt = m_runner->plan().points[static_cast<std::size_t>(index)];
     ask(
-        QStringLiteral("%1 is ON now. Seen in the field? [y/n/comment]").arg(pointText(pt)),
-        [this, index](const QString &a) {
+        QStringLiteral("%1 is ON now. Seen in the field? y: yes, n [comment]: no, r REMARK: seen, "
+                       "with a remark, d REASON: deferred, na: not applicable")
+            .arg(CliText::checkoutPoint(pt)),
+        [this, index](const QString &line) {
+            const CliCheckoutAnswer answer = CliCheckoutAnswer::parse(line);
+            using Key = CliCheckoutAnswer::Key;
             // An empty line is no answer: asked again.
-            if (a.isEmpty())
+            if (answer.key == Key::Empty)
                 return askSeen(index);
-            const bool seen = isYes(a);
-            const bool plain = seen || a.compare(QLatin1String("n"), Qt::CaseInsensitive) == 0
-                               || a.compare(QLatin1String("no"), Qt::CaseInsensitive) == 0;
-            m_runner->answerOutput(seen, plain ? QString() : a);
+            const std::optional<CheckoutResult> result = answer.result();
+            if (!result) {
+                out().error(QStringLiteral("Not understood: \"%1\" (y, n [comment], r REMARK, "
+                                           "d REASON or na).")
+                                .arg(line),
+                            ExitCode::Usage);
+                return askSeen(index);
+            }
+            if (answer.key == Key::Yes || answer.key == Key::No || answer.key == Key::Failed)
+                return m_runner->answerOutput(answer.key == Key::Yes, answer.text);
+            // Recorded by hand: the runner releases the output as for a yes or a no.
+            if (const Status s = m_runner->record(index, *result, answer.text); !s) {
+                out().error(englishText(s.error().message), ExitCode::Usage);
+                askSeen(index);
+            }
         },
         [this, index] {
-            out().note(
-                QStringLiteral("No answer (end of input): %1 is released and stays "
-                               "untested.")
-                    .arg(pointText(m_runner->plan().points[static_cast<std::size_t>(index)])));
+            out().note(QStringLiteral("No answer (end of input): %1 is released and stays "
+                                      "untested.")
+                           .arg(CliText::checkoutPoint(
+                               m_runner->plan().points[static_cast<std::size_t>(index)])));
             finishCheckout(ExitCode::Ok);
         });
 }
@@ -309,34 +320,68 @@ void CliCheckoutCommand::askAnalog(int index, int check)
         return nextAnalog();
     }
     if (check >= static_cast<int>(pt.analog.checks.size())) {
-        out().note(QStringLiteral("%1: %2 (%3)")
-                       .arg(pointText(pt), englishText(checkoutResultMessage(pt.result)),
-                            englishText(pt.measured())));
+        out().note(CliText::checkoutResult(pt));
         return nextAnalog();
     }
     const double percent = pt.analog.checks[static_cast<std::size_t>(check)];
     ask(
         QStringLiteral("Set %1 to %2 % (%3), then Enter.")
-            .arg(pointText(pt), QString::number(percent, 'g', 4),
+            .arg(CliText::checkoutPoint(pt), QString::number(percent, 'g', 4),
                  QString::fromStdString(pt.analog.text(pt.analog.expected(percent)))),
-        [this, index, check](const QString &) {
-            // The next question once this reading is in the point, not before: one reading at
-            // a time, each on its own point and check.
-            auto *connection = new QMetaObject::Connection;
-            *connection = connect(m_runner.get(), &CheckoutRunner::analogRecorded, this,
-                                  [this, index, check, connection](int i, int c) {
-                                      if (i != index || c != check)
-                                          return;
-                                      disconnect(*connection);
-                                      delete connection;
-                                      askAnalog(index, check + 1);
-                                  });
-            if (const Status s = m_runner->recordAnalog(index, check); !s) {
-                disconnect(*connection);
-                delete connection;
-                out().error(englishText(s.error().message), ExitCode::Differ);
-                nextAnalog();
-            }
+        [this, index, check](const QString &) { readAnalog(index, check, false); },
+        [this] { finishCheckout(ExitCode::Ok); });
+}
+
+void CliCheckoutCommand::readAnalog(int index, int check, bool asLeft)
+{
+    // The next question once this reading is in the point, not before: one reading at a time,
+    // each on its own point and check.
+    auto *connection = new QMetaObject::Connection;
+    *connection = connect(m_runner.get(), &CheckoutRunner::analogRecorded, this,
+                          [this, index, check, connection](int i, int c) {
+                              if (i != index || c != check)
+                                  return;
+                              disconnect(*connection);
+                              delete connection;
+                              sayReading(index, check);
+                          });
+    if (const Status s = m_runner->recordAnalog(index, check, asLeft); !s) {
+        disconnect(*connection);
+        delete connection;
+        out().error(englishText(s.error().message), ExitCode::Differ);
+        nextAnalog();
+    }
+}
+
+void CliCheckoutCommand::sayReading(int index, int check)
+{
+    const CheckoutPoint &pt = m_runner->plan().points[static_cast<std::size_t>(index)];
+    const double percent = pt.analog.checks[static_cast<std::size_t>(check)];
+    const auto reading
+        = std::find_if(pt.readings.begin(), pt.readings.end(), [percent](const AnalogReading &r) {
+              return r.percent == percent && r.last();
+          });
+    if (reading == pt.readings.end())
+        return askAnalog(index, check + 1);
+    const double value = pt.analog.engineering(double(*reading->last()));
+    const bool within = pt.analog.within(double(*reading->last()), percent);
+    out().note(QStringLiteral("%1 at %2 %%3: %4 (expected %5 ± %6): %7")
+                   .arg(CliText::checkoutPoint(pt), QString::number(percent, 'g', 4),
+                        reading->asLeft ? QStringLiteral(", as left") : QString(),
+                        QString::fromStdString(pt.analog.text(value)),
+                        QString::fromStdString(pt.analog.text(pt.analog.expected(percent))),
+                        QString::fromStdString(pt.analog.text(pt.analog.toleranceUnits())),
+                        within ? QStringLiteral("within tolerance")
+                               : QStringLiteral("OUTSIDE tolerance")));
+    if (within)
+        return askAnalog(index, check + 1);
+    // Out of tolerance: the person may adjust the transmitter; the as-found value stays.
+    ask(
+        QStringLiteral("Adjust the transmitter and press Enter to read it as left, or s to go on."),
+        [this, index, check](const QString &line) {
+            if (CliCheckoutAnswer::parse(line).key == CliCheckoutAnswer::Key::Skip)
+                return askAnalog(index, check + 1);
+            readAnalog(index, check, true);
         },
         [this] { finishCheckout(ExitCode::Ok); });
 }
@@ -348,6 +393,8 @@ void CliCheckoutCommand::finishCheckout(int exitCode)
     m_finishing = true;
     m_exitCode = exitCode;
     lines().cancel(); // the open question gets no answer: nothing is recorded for it
+    if (m_inputs)
+        m_inputs->stop();
     m_runner->stop();
     if (!m_runner->hasForced())
         return writeReport();
@@ -425,13 +472,15 @@ void CliCheckoutCommand::writeReport()
     const auto text = [&translator](const Message &m) {
         return translator.text(m);
     };
+    const auto ends
+        = options().checkoutCrlf ? CheckoutReport::LineEnds::CrLf : CheckoutReport::LineEnds::Lf;
     const QString path = options().checkoutReport;
     if (!path.isEmpty()) {
         Status s = Ok{};
         if (path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) {
             s = CheckoutPdf::write(report, path, text);
         } else {
-            const QString reason = SafeFile::write(path, report.toCsv(text));
+            const QString reason = SafeFile::write(path, report.toCsv(text, ends));
             if (!reason.isEmpty())
                 s = makeError(ErrorKind::InvalidRequest,
                               msg<MsgId::ReportCannotWrite>(path.toStdString(),
@@ -446,12 +495,23 @@ void CliCheckoutCommand::writeReport()
             return m_context.finish(ExitCode::Internal);
         }
     }
+    if (const QString &punch = options().checkoutPunch; !punch.isEmpty()) {
+        if (const QString reason = SafeFile::write(punch, report.punchCsv(text, ends));
+            !reason.isEmpty()) {
+            out().error(englishText(msg<MsgId::ReportCannotWrite>(
+                            punch.toStdString(), Message::text(reason.toStdString()))),
+                        ExitCode::Internal);
+            out().note(QStringLiteral("The punch list follows on standard output instead."));
+            out().line(QString::fromUtf8(report.punchCsv(text)).trimmed());
+            return m_context.finish(ExitCode::Internal);
+        }
+    }
     out().note(englishText(report.summary));
     if (m_exitCode != ExitCode::Ok)
         return m_context.finish(m_exitCode);
-    const bool failed
-        = plan.count(CheckoutResult::Failed) > 0 || plan.count(CheckoutResult::Untested) > 0;
-    if (failed)
+    // Failed, deferred (on the punch list) or untested: not done. Not applicable is done.
+    if (std::any_of(plan.points.begin(), plan.points.end(),
+                    [](const CheckoutPoint &p) { return !isCheckoutDone(p.result); }))
         return m_context.finish(ExitCode::Differ);
     succeed();
 }

@@ -225,14 +225,18 @@ constexpr CommandSpec commands[] = {
      true,
      CliCheckoutCommand::parse,
      make<CliCheckoutCommand>,
-     {{"checkout PLAN [--report FILE] [--lang en|zh_TW] [--save FILE]",
-       "I/O checkout (--report FILE.pdf or FILE.csv; --project T, --customer T and --engineer T "
-       "name them in the report): PLAN is ranges (\"X0..X15, Y0..Y7\"), a plan CSV or a checkout "
-       "file "
-       "(.json, resumed and saved as it goes); inputs are watched until each went on and off, "
-       "outputs forced one at a time and the answer asked (a terminal, or --yes with the "
-       "answers on standard input), analog points read at both ends; exit 6 when a point "
-       "failed or stayed untested"}}},
+     {{"checkout PLAN [--report FILE] [--punch FILE] [--lang en|zh_TW] [--save FILE]",
+       "I/O checkout (--report FILE.pdf or FILE.csv, --punch FILE.csv the punch list, --crlf CSV "
+       "with Windows line ends; --project, --customer, --document, --revision, --engineer, "
+       "--company, --witness, --witness-company and --customer-signatory T name them in the "
+       "report): PLAN is ranges (\"X0..X15, Y0..Y7\"), a plan CSV or a checkout file (.json, "
+       "resumed and saved as it goes); inputs are named one at a time (Enter skips, f fails, d "
+       "REASON defers, r REMARK passes with a remark, na, t tests again; another input moving is "
+       "crossed wiring), outputs forced one at a time and the answer asked (y, n [comment], r "
+       "REMARK, d REASON, na; a terminal, or --yes with the answers on standard input), analog "
+       "points read at each check of their scale (as left after an adjustment); points the PLC "
+       "refuses: exit 2, nothing forced; exit 6 when a point failed, was deferred or stayed "
+       "untested"}}},
 };
 
 const CommandSpec *findCommand(const QString &name)

@@ -75,7 +75,7 @@ _fatek_cli() {
     --stop) COMPREPLY=($(compgen -W "1 2" -- "$cur")) ;;
     --completion) COMPREPLY=($(compgen -W "bash zsh" -- "$cur")) ;;
     --lang) COMPREPLY=($(compgen -W "en zh_TW" -- "$cur")) ;;
-    --output | --names | --report | --save | --journal)
+    --output | --names | --report | --punch | --save | --journal)
         COMPREPLY=($(compgen -f -- "$cur"))
         compopt -o filenames 2>/dev/null ;;
     %3) ;;
@@ -148,7 +148,7 @@ QString zsh()
             valued(name, QStringLiteral("(en zh_TW)"));
         else if (name == QLatin1String("output") || name == QLatin1String("names")
                  || name == QLatin1String("journal") || name == QLatin1String("report")
-                 || name == QLatin1String("save"))
+                 || name == QLatin1String("save") || name == QLatin1String("punch"))
             valued(name, QStringLiteral("_files"));
         else
             valued(name, QStringLiteral(" "));

@@ -77,14 +77,15 @@ QList<std::pair<int, QString>> exitCodeUsage()
                         "folder, a read-only medium, a full disk), the simulator could not "
                         "listen")},
         {ExitCode::Usage,
-         QStringLiteral("usage (also a damaged file, another model, a restore not confirmed)")},
+         QStringLiteral("usage (also a damaged file, another model, a restore not confirmed, "
+                        "checkout: points the PLC refuses)")},
         {ExitCode::Link, QStringLiteral("link failure (timeout, no connection)")},
         {ExitCode::Plc,
          QStringLiteral("PLC error (also RUN during restore, program verification failed)")},
         {ExitCode::ReadOnly, QStringLiteral("refused by --read-only")},
         {ExitCode::Differ,
          QStringLiteral("differences found (diff; restore-values read back other values; "
-                        "checkout: a point failed or untested)")},
+                        "checkout: a point failed, deferred or untested)")},
         {ExitCode::Unknown,
          QStringLiteral("a change sent and not answered, and reading it back could not tell "
                         "whether the PLC carried it out: check the PLC")},
@@ -152,12 +153,26 @@ QString usageText()
 QStringList valuedOptionNames()
 {
     return LinkArguments::names()
-           + QStringList{
-               QStringLiteral("count"),      QStringLiteral("interval"), QStringLiteral("cycles"),
-               QStringLiteral("output"),     QStringLiteral("format"),   QStringLiteral("names"),
-               QStringLiteral("completion"), QStringLiteral("report"),   QStringLiteral("lang"),
-               QStringLiteral("save"),       QStringLiteral("project"),  QStringLiteral("customer"),
-               QStringLiteral("engineer")};
+           + QStringList{QStringLiteral("count"),
+                         QStringLiteral("interval"),
+                         QStringLiteral("cycles"),
+                         QStringLiteral("output"),
+                         QStringLiteral("format"),
+                         QStringLiteral("names"),
+                         QStringLiteral("completion"),
+                         QStringLiteral("report"),
+                         QStringLiteral("lang"),
+                         QStringLiteral("save"),
+                         QStringLiteral("project"),
+                         QStringLiteral("customer"),
+                         QStringLiteral("engineer"),
+                         QStringLiteral("document"),
+                         QStringLiteral("revision"),
+                         QStringLiteral("company"),
+                         QStringLiteral("witness"),
+                         QStringLiteral("witness-company"),
+                         QStringLiteral("customer-signatory"),
+                         QStringLiteral("punch")};
 }
 
 QStringList flagOptionNames()
@@ -165,7 +180,8 @@ QStringList flagOptionNames()
     return {QStringLiteral("help"),  QStringLiteral("version"), QStringLiteral("sim"),
             QStringLiteral("json"),  QStringLiteral("csv"),     QStringLiteral("read-only"),
             QStringLiteral("yes"),   QStringLiteral("frame"),   QStringLiteral("hex"),
-            QStringLiteral("ascii"), QStringLiteral("then"),    QStringLiteral("other-model")};
+            QStringLiteral("ascii"), QStringLiteral("then"),    QStringLiteral("other-model"),
+            QStringLiteral("crlf")};
 }
 
 CliParseResult parseCommandLine(const QStringList &arguments)
@@ -230,6 +246,29 @@ CliParseResult parseCommandLine(const QStringList &arguments)
                     return fail(
                         QStringLiteral("--completion takes bash or zsh, not \"%1\".").arg(value));
                 o.completion = value;
+                continue;
+            }
+            if (name == QLatin1String("punch")) {
+                if (value.trimmed().isEmpty())
+                    return fail(QStringLiteral("--punch needs a file name."));
+                if (!value.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive) && !isDevice(value))
+                    return fail(QStringLiteral("--punch: the punch list is a CSV file: its name "
+                                               "ends in .csv, not \"%1\".")
+                                    .arg(value));
+                o.checkoutPunch = value;
+                checkoutGiven = true;
+                continue;
+            }
+            if (QString *field
+                = name == QLatin1String("document")             ? &o.checkoutDocument
+                  : name == QLatin1String("revision")           ? &o.checkoutRevision
+                  : name == QLatin1String("company")            ? &o.checkoutCompany
+                  : name == QLatin1String("witness")            ? &o.checkoutWitness
+                  : name == QLatin1String("witness-company")    ? &o.checkoutWitnessCompany
+                  : name == QLatin1String("customer-signatory") ? &o.checkoutSignatory
+                                                                : nullptr) {
+                *field = value.trimmed();
+                checkoutGiven = true;
                 continue;
             }
             if (name == QLatin1String("report") || name == QLatin1String("save")) {
@@ -309,7 +348,10 @@ CliParseResult parseCommandLine(const QStringList &arguments)
             o.assumeYes = true;
         else if (name == QLatin1String("other-model"))
             o.otherModel = true;
-        else if (name == QLatin1String("frame"))
+        else if (name == QLatin1String("crlf")) {
+            o.checkoutCrlf = true;
+            checkoutGiven = true;
+        } else if (name == QLatin1String("frame"))
             frameGiven = true;
         else if (name == QLatin1String("hex"))
             forceHex = true;
@@ -372,8 +414,10 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     if ((!o.outputPath.isEmpty() || o.valueFormat || !o.namesPath.isEmpty()) && !uses("monitor"))
         return fail(QStringLiteral("--output, --format and --names only apply to monitor."));
     if (checkoutGiven && !uses("checkout"))
-        return fail(QStringLiteral("--report, --lang, --save, --project, --customer and "
-                                   "--engineer only apply to checkout."));
+        return fail(QStringLiteral("--report, --punch, --crlf, --lang, --save, --project, "
+                                   "--customer, --engineer, --company, --document, --revision, "
+                                   "--witness, --witness-company and --customer-signatory only "
+                                   "apply to checkout."));
     if (o.otherModel && !uses("restore-values"))
         return fail(QStringLiteral("--other-model only applies to restore-values."));
     if ((frameGiven || forceHex || forceAscii) && !uses("raw"))

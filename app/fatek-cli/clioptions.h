@@ -125,6 +125,15 @@ struct CliOptions
     QString checkoutProject;
     QString checkoutCustomer;
     QString checkoutEngineer;
+    // The document's identity and the signatories (the report's every page and signature block)
+    QString checkoutDocument;
+    QString checkoutRevision;
+    QString checkoutCompany; // the engineer's
+    QString checkoutWitness;
+    QString checkoutWitnessCompany;
+    QString checkoutSignatory; // the customer's
+    QString checkoutPunch;     // the punch list as CSV
+    bool checkoutCrlf = false; // CSV files with CRLF line ends (Excel on Windows)
 };
 
 struct CliParseResult

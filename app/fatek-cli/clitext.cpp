@@ -1,6 +1,7 @@
 #include "clitext.h"
 
 #include "core/protocol/frametext.h"
+#include "core/qtbridge/qtmessage.h"
 #include "core/session/qtbytes.h"
 #include "core/watch/valueformat.h"
 
@@ -90,6 +91,23 @@ Confirmation confirm(const QString &question, bool assumeYes)
     const QString answer = QTextStream(stdin).readLine().trimmed().toLower();
     return answer == QLatin1String("y") || answer == QLatin1String("yes") ? Confirmation::Yes
                                                                           : Confirmation::No;
+}
+
+QString checkoutPoint(const CheckoutPoint &point)
+{
+    const QString a = QString::fromStdString(point.address.toString());
+    return point.name.isEmpty() ? a : QStringLiteral("%1 (%2)").arg(a, point.name);
+}
+
+QString checkoutResult(const CheckoutPoint &point)
+{
+    QString text = QStringLiteral("%1: %2").arg(checkoutPoint(point),
+                                                englishText(checkoutResultMessage(point.result)));
+    if (const QString measured = englishText(point.measured()); !measured.isEmpty())
+        text += QStringLiteral(" (%1)").arg(measured);
+    if (!point.comment.isEmpty())
+        text += QStringLiteral(": %1").arg(point.comment);
+    return text;
 }
 
 } // namespace Fatek::CliText

@@ -2,6 +2,7 @@
 
 // Text helpers shared by the fatek-cli commands.
 
+#include "core/commission/checkoutplan.h"
 #include "core/protocol/address.h"
 #include "core/protocol/protocolerror.h"
 #include "core/protocol/request.h"
@@ -28,6 +29,10 @@ QString ms(double v);
 QString error(const ProtocolError &e);
 // The display formats' names, comma-separated (for usage errors).
 QString formatNames();
+// A checkout's point as its lines name it: "X3 (StartButton)", and its result: "X3
+// (StartButton): Passed (on 09:00:01, off 09:00:02): a remark".
+QString checkoutPoint(const CheckoutPoint &point);
+QString checkoutResult(const CheckoutPoint &point);
 
 // The answer to a question asked before a dangerous command (restore): --yes answers it, a
 // terminal is asked on stderr and answers on stdin ("y"/"yes"); with neither, the command is

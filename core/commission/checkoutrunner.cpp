@@ -287,8 +287,10 @@ Status CheckoutRunner::record(int index, CheckoutResult result, const QString &c
     if (result == CheckoutResult::Passed && !retest && !p->changedWith.empty())
         return refuse(
             msg<MsgId::CheckoutCrossedCannotPass>(name, Snapshot::rangesText(p->changedWith)));
-    // An output under test is answered through answerOutput().
-    if (index == m_outputUnderTest)
+    // The output under test answered by hand (deferred, not applicable): released at once, as
+    // answerOutput() does.
+    const bool forced = index == m_outputUnderTest;
+    if (forced)
         m_outputUnderTest = -1;
     // A new test keeps the old one; measurements of the untested attempt stay with it.
     archiveAttempt(*p);
@@ -296,6 +298,8 @@ Status CheckoutRunner::record(int index, CheckoutResult result, const QString &c
     if (!comment.isNull())
         p->comment = comment;
     changed(index);
+    if (forced)
+        release(p->address, false);
     return Ok{};
 }
 

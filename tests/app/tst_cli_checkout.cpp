@@ -3,88 +3,16 @@
 // and the end of input, the simulator stopped (SIGSTOP) while an output is released, the PLC in
 // RUN. What is forced is read from the simulator with `fatek-cli forced` after every test, never
 // taken from what the checkout says.
+#include "checkoutcli.h"
 #include "simchild.h"
 #include "testutil.h"
 
-#include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
-#ifdef Q_OS_UNIX
-#include <csignal>
-#endif
-
-namespace {
-
-constexpr int longWait = 30000;
-
-// A fatek-cli checkout running, its standard error collected as it comes.
-struct CheckoutCli
-{
-    QProcess process;
-    QString err;
-
-    void start(const QStringList &arguments)
-    {
-        process.start(QStringLiteral(FATEK_CLI_PATH), arguments);
-    }
-    // Waits until standard error has said `text` `times` times (false when the program ended
-    // first or it took too long).
-    bool said(const QString &text, int times = 1)
-    {
-        return QTest::qWaitFor(
-                   [&] {
-                       err += QString::fromUtf8(process.readAllStandardError());
-                       return err.count(text) >= times || process.state() == QProcess::NotRunning;
-                   },
-                   longWait)
-               && err.count(text) >= times;
-    }
-    void answer(const char *line) { process.write(line); }
-    // The exit code, or -1 when it did not end in time.
-    int exitCode()
-    {
-        const bool ended
-            = QTest::qWaitFor([&] { return process.state() == QProcess::NotRunning; }, longWait);
-        err += QString::fromUtf8(process.readAllStandardError());
-        if (!ended || process.exitStatus() != QProcess::NormalExit)
-            return -1;
-        return process.exitCode();
-    }
-    void interrupt()
-    {
-#ifdef Q_OS_UNIX
-        ::kill(static_cast<pid_t>(process.processId()), SIGINT);
-#endif
-    }
-};
-
-// The checkout file's "forced" list and each point's result ("untested", "passed"...).
-struct SavedCheckout
-{
-    QStringList forced;
-    QStringList results;
-};
-
-SavedCheckout savedCheckout(const QString &path)
-{
-    QFile f(path);
-    SavedCheckout saved;
-    if (!f.open(QIODevice::ReadOnly))
-        return saved;
-    const QJsonObject o = QJsonDocument::fromJson(f.readAll()).object();
-    for (const QJsonValue &v : o.value(QStringLiteral("forced")).toArray())
-        saved.forced << v.toString();
-    for (const QJsonValue &v : o.value(QStringLiteral("points")).toArray())
-        saved.results << v.toObject().value(QStringLiteral("result")).toString();
-    return saved;
-}
-
-} // namespace
+using TestUtil::CheckoutCli;
+using TestUtil::SavedCheckout;
+using TestUtil::savedCheckout;
 
 class TestCliCheckout : public QObject
 {
@@ -152,7 +80,7 @@ void TestCliCheckout::interruptAtQuestionReleasesAtOnce()
 {
     CheckoutCli cli;
     startCheckout(cli, QStringLiteral("Y0..Y1"));
-    QVERIFY2(cli.said(QStringLiteral("Y0 is ON now. Seen in the field? [y/n/comment]")),
+    QVERIFY2(cli.said(QStringLiteral("Y0 is ON now. Seen in the field? y: yes, n [comment]: no")),
              qPrintable(cli.err));
     QCOMPARE(forcedInSim(), (std::vector<int>{1, 0, 0, 0}));
     cli.interrupt();

@@ -140,7 +140,7 @@ void TestCliMessages::checkoutCommentKeptAsTyped()
     const Run r = cli({QStringLiteral("--sim"), QStringLiteral("--yes"), QStringLiteral("checkout"),
                        QStringLiteral("Y3"), QStringLiteral("--save"), file,
                        QStringLiteral("--report"), report},
-                      "Wire loose on Y3\n");
+                      "n Wire loose on Y3\n");
     QCOMPARE(r.code, 6);
     const QJsonObject point
         = checkoutFile(file).value(QStringLiteral("points")).toArray().at(0).toObject();

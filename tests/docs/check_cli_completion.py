@@ -92,6 +92,8 @@ def main():
             ("fatek-cli --sim checkout res", "\t", ["checkout resume.checkout.json"], []),
             ("fatek-cli --sim checkout X0 --report pl", "\t", ["--report plan.csv"], []),
             ("fatek-cli --sim checkout X0 --save res", "\t", ["--save resume.checkout.json"], []),
+            ("fatek-cli --sim checkout X0 --punch pl", "\t", ["--punch plan.csv"], []),
+            ("fatek-cli --sim checkout X0 --witness-c", "\t", ["--witness-company"], []),
             ("fatek-cli --sim mon", "\t", ["--sim monitor"], []),
             ("fatek-cli --sim monitor R0 --format as", "\t", ["--format ascii"], []),
         ]
