@@ -7,6 +7,7 @@
 #include "tooldialogframe.h"
 #include "ui/common/uitext.h"
 
+#include <QApplication>
 #include <QKeyEvent>
 #include <QTableView>
 
@@ -50,7 +51,8 @@ QString CheckoutKeys::pointText(int index) const
 bool CheckoutKeys::handle(QKeyEvent *key)
 {
     // The comment's editor has the keys: typed text is never a test key.
-    if (m_table->state() == QAbstractItemView::EditingState)
+    const QWidget *focus = QApplication::focusWidget();
+    if (focus && focus != m_table && m_table->isAncestorOf(focus))
         return false;
     const Qt::KeyboardModifiers mods
         = key->modifiers() & ~Qt::KeyboardModifiers(Qt::KeypadModifier);

@@ -1,6 +1,5 @@
 #include "iocheckoutdialog.h"
 
-#include "checkoutdetailsdialog.h"
 #include "checkoutkeys.h"
 #include "checkoutpunchdialog.h"
 #include "checkouttablemodel.h"
@@ -13,9 +12,7 @@
 #include "ui/common/symbolnames.h"
 #include "ui/common/uitext.h"
 
-#include <QDateTime>
 #include <QDir>
-#include <QFile>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -40,7 +37,8 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     setWindowTitle(tr("I/O Checkout"));
     m_runner->setAutoAdvance(true);
     m_frame->setSettling([this] {
-        return m_runner->hasForced() && (m_runner->isRunning() || m_runner->isRetryingRelease());
+        return m_runner->hasForced()
+               && (m_runner->isRunning() || m_runner->isRetryingRelease() || m_closing);
     });
     QVBoxLayout *layout = m_frame->content();
 
@@ -79,9 +77,9 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     m_start->setObjectName(QStringLiteral("startButton"));
     m_stop = new QPushButton(tr("Stop"), this);
     m_stop->setObjectName(QStringLiteral("stopButton"));
-    m_details = new QPushButton(tr("Details…"), this);
-    m_details->setObjectName(QStringLiteral("detailsButton"));
-    m_details->setToolTip(tr("Document ID, revision and who signs the report"));
+    m_detailsButton = new QPushButton(tr("Details…"), this);
+    m_detailsButton->setObjectName(QStringLiteral("detailsButton"));
+    m_detailsButton->setToolTip(tr("Document ID, revision and who signs the report"));
     m_punch = new QPushButton(tr("Punch List…"), this);
     m_punch->setObjectName(QStringLiteral("punchButton"));
     m_punch->setToolTip(tr("The failed and deferred points: owner, close-out, CSV"));
@@ -89,7 +87,8 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     m_report->setObjectName(QStringLiteral("reportButton"));
     m_report->setToolTip(tr("Write the report as PDF or CSV"));
     m_report->setMenu(reportMenu());
-    for (QPushButton *b : {m_new, m_open, m_import, m_start, m_stop, m_details, m_punch, m_report})
+    for (QPushButton *b :
+         {m_new, m_open, m_import, m_start, m_stop, m_detailsButton, m_punch, m_report})
         buttons->addWidget(b);
     m_summary = new QLabel(this);
     m_summary->setObjectName(QStringLiteral("summary"));
@@ -133,7 +132,7 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
         if (!path.isEmpty())
             openCheckout(path);
     });
-    connect(m_details, &QPushButton::clicked, this, &IoCheckoutDialog::editDetails);
+    connect(m_detailsButton, &QPushButton::clicked, this, &IoCheckoutDialog::editDetails);
     connect(m_punch, &QPushButton::clicked, this, &IoCheckoutDialog::showPunchList);
 
     // The table follows the point under test, and choosing a row tests that point.
@@ -244,6 +243,8 @@ void IoCheckoutDialog::reject()
                                  tr("%1 is not confirmed released on %2. Close anyway? The "
                                     "checkout file keeps it listed: the next Open releases it.")
                                      .arg(forcedText(), m_frame->targetText()))) {
+            m_closing = false; // kept open: it no longer closes by itself
+            updateControls();
             return;
         }
     }
@@ -307,9 +308,7 @@ void IoCheckoutDialog::start()
             showMessage(translated(plan.error().message), true);
             return;
         }
-        CheckoutPlan p = plan.value();
-        p.info.created = QDateTime::currentDateTimeUtc();
-        loadPlan(std::move(p), QString());
+        loadPlan(plan.value(), QString(), false);
     }
     if (m_runner->filePath().isEmpty()) {
         const QString path
@@ -428,33 +427,12 @@ void IoCheckoutDialog::updateControls()
     m_open->setEnabled(mayReplace);
     m_import->setEnabled(mayReplace);
     // The plan's info is the runner's while it runs: Stop first.
-    m_details->setEnabled(!running && !m_closing);
+    m_detailsButton->setEnabled(!running && !m_closing);
     m_punch->setEnabled(m_loaded);
     m_report->setEnabled(m_loaded);
     const CheckoutPlan &plan = m_runner->plan();
     m_summary->setText(plan.points.empty() ? QString()
                                            : translated(CheckoutReport::of(plan).summary));
-}
-
-QMenu *IoCheckoutDialog::importMenu()
-{
-    auto *menu = new QMenu(this);
-    menu->setObjectName(QStringLiteral("importMenu"));
-    QAction *csv = menu->addAction(tr("Plan CSV…"), this, [this] {
-        const QString path = m_frame->chooseFile(
-            {false, tr("Import Checkout Plan"), tr("Checkout plans (*.csv)"), {}});
-        if (!path.isEmpty())
-            importPlan(path);
-    });
-    csv->setObjectName(QStringLiteral("importCsvAction"));
-    QAction *names = menu->addAction(tr("Imported Names…"), this, [this] {
-        const std::optional<QString> prefix = m_frame->askText(
-            tr("Import Checkout Plan"), tr("The names that start with (empty: every name):"));
-        if (prefix)
-            importNames(prefix->trimmed());
-    });
-    names->setObjectName(QStringLiteral("importNamesAction"));
-    return menu;
 }
 
 QMenu *IoCheckoutDialog::reportMenu()
@@ -477,108 +455,6 @@ QMenu *IoCheckoutDialog::reportMenu()
         CheckoutReport::LineEnds::CrLf);
     return menu;
 }
-
-bool IoCheckoutDialog::importPlan(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        showMessage(translated(msg<MsgId::CheckoutFileCannotRead>(
-                        QDir::toNativeSeparators(path).toStdString(),
-                        Message::text(file.errorString().toStdString()))),
-                    true);
-        return false;
-    }
-    auto plan = CheckoutPlan::fromCsv(QString::fromUtf8(file.readAll()));
-    if (!plan) {
-        showMessage(translated(plan.error().message), true);
-        return false;
-    }
-    const int count = static_cast<int>(plan->points.size());
-    loadPlan(std::move(plan.value()),
-             tr("Imported %1: %n point(s).", nullptr, count).arg(QDir::toNativeSeparators(path)));
-    return true;
-}
-
-bool IoCheckoutDialog::importNames(const QString &prefix)
-{
-    if (!m_symbols || m_symbols->table().isEmpty()) {
-        showMessage(tr("No names are imported: File > Import Names and Comments… in the main "
-                       "window first."),
-                    true);
-        return false;
-    }
-    auto plan = CheckoutPlan::fromSymbols(m_symbols->table(), prefix);
-    if (!plan) {
-        showMessage(translated(plan.error().message), true);
-        return false;
-    }
-    const int count = static_cast<int>(plan->points.size());
-    loadPlan(std::move(plan.value()),
-             tr("A plan of %n point(s) from the imported names.", nullptr, count));
-    return true;
-}
-
-void IoCheckoutDialog::loadPlan(CheckoutPlan plan, const QString &done)
-{
-    stop();
-    if (!plan.info.created.isValid())
-        plan.info.created = QDateTime::currentDateTimeUtc();
-    m_ranges->clear();
-    m_runner->setPlan(std::move(plan));
-    m_runner->setFilePath({}); // Start asks where it is saved
-    m_model->planReset();
-    m_loaded = true;
-    applyInfo();
-    if (!done.isEmpty())
-        showMessage(done, false);
-    updateControls();
-}
-
-CheckoutInfo IoCheckoutDialog::infoFromFields() const
-{
-    CheckoutInfo info = m_runner->plan().info;
-    info.project = m_project->text();
-    info.customer = m_customer->text();
-    info.engineer = m_engineer->text();
-    info.documentId = m_details.documentId;
-    info.revision = m_details.revision;
-    info.engineerCompany = m_details.engineerCompany;
-    info.witness = m_details.witness;
-    info.witnessCompany = m_details.witnessCompany;
-    info.customerSignatory = m_details.customerSignatory;
-    if (m_frame->target().isDirect())
-        info.station = m_frame->target().station();
-    return info;
-}
-
-void IoCheckoutDialog::applyInfo()
-{
-    if (!m_loaded || m_runner->isRunning())
-        return;
-    const CheckoutInfo info = infoFromFields();
-    if (info == m_runner->plan().info)
-        return;
-    CheckoutPlan plan = m_runner->plan();
-    plan.info = info;
-    const int current = m_runner->currentPoint();
-    m_runner->setPlan(std::move(plan));
-    m_runner->setCurrentPoint(current);
-    if (m_runner->filePath().isEmpty())
-        return;
-    if (const Status s = CheckoutFile::saveToFile(m_runner->plan(), m_runner->filePath()); !s)
-        showMessage(translated(s.error().message), true);
-}
-
-void IoCheckoutDialog::editDetails()
-{
-    CheckoutDetailsDialog details(m_loaded ? m_runner->plan().info : m_details, this);
-    if (details.exec() != QDialog::Accepted)
-        return;
-    m_details = details.info();
-    applyInfo();
-    showMessage(tr("The report's details are set."), false);
-}
-
 void IoCheckoutDialog::showPunchList()
 {
     if (!m_punchDialog)

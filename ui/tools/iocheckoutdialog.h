@@ -1,8 +1,10 @@
 #pragma once
 
+#include "checkoutpunchdialog.h"
 #include "core/commission/checkoutplan.h"
 #include "core/commission/checkoutreport.h"
 #include "tooldialogframe.h"
+#include "ui/common/symbolnames.h"
 
 #include <QDialog>
 #include <QPointer>
@@ -16,10 +18,8 @@ class QTableView;
 namespace Fatek {
 
 class CheckoutKeys;
-class CheckoutPunchDialog;
 class CheckoutRunner;
 class CheckoutTableModel;
-class SymbolNames;
 
 // Tools -> I/O Checkout (issues 36, 53): the plan (typed ranges, a plan CSV or the imported names;
 // project, customer, engineer and the report's details), the points in a table driven from the
@@ -82,7 +82,7 @@ protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
-    void loadPlan(CheckoutPlan plan, const QString &done);
+    void loadPlan(CheckoutPlan plan, const QString &done, bool imported = true);
     // The plan's info from the fields and the details; saved when it changed (not running).
     void applyInfo();
     CheckoutInfo infoFromFields() const;
@@ -116,7 +116,7 @@ private:
     QPushButton *m_import;
     QPushButton *m_start;
     QPushButton *m_stop;
-    QPushButton *m_details;
+    QPushButton *m_detailsButton;
     QPushButton *m_punch;
     QPushButton *m_report;
     QLabel *m_summary;
