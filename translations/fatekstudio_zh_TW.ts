@@ -5904,7 +5904,7 @@ PLC：%3
         </message>
         <message>
             <source>PDF…</source>
-            <translation>PDF…</translation>
+            <translation>可攜文件報告 (PDF)…</translation>
         </message>
         <message>
             <source>CSV…</source>

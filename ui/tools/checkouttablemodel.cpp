@@ -207,8 +207,11 @@ QVariant CheckoutTableModel::data(const QModelIndex &index, int role) const
                                       ToolPalette::passBackground(palette), 0.6);
         case CheckoutResult::Failed: return ToolPalette::errorBackground(palette);
         case CheckoutResult::Deferred:
+            // Amber, between failed and passed: still to do, not wrong.
             return ToolPalette::blend(palette.color(QPalette::Base),
-                                      ToolPalette::alarmIndicator(palette), 0.2);
+                                      ToolPalette::blend(ToolPalette::errorText(palette),
+                                                         ToolPalette::passText(palette), 0.5),
+                                      0.25);
         case CheckoutResult::NotApplicable:
             return ToolPalette::blend(palette.color(QPalette::Base),
                                       ToolPalette::inactiveIndicator(palette), 0.3);
@@ -224,6 +227,8 @@ QVariant CheckoutTableModel::data(const QModelIndex &index, int role) const
         case CheckoutResult::PassedWithRemark:
             return ToolPalette::passText(QApplication::palette());
         case CheckoutResult::Failed: return ToolPalette::errorText(QApplication::palette());
+        case CheckoutResult::NotApplicable:
+            return QApplication::palette().color(QPalette::Disabled, QPalette::Text);
         default: return {};
         }
     default: return {};
