@@ -340,6 +340,26 @@ private Q_SLOTS:
                                   QStringLiteral("FRAT wired"), longWait);
         QCOMPARE(state(dialog, 0), resultText(CheckoutResult::Untested));
         QVERIFY(m_asked.size() == 1); // only the prefix: no remark was asked
+
+        // Typed ranges stay, and take the names too.
+        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("newButton")),
+                          Qt::LeftButton);
+        QVERIFY(
+            m_bench.startPlan(dialog, QStringLiteral("X5"), QStringLiteral("x5.checkout.json")));
+        QTRY_COMPARE_WITH_TIMEOUT(dialog->points()->rowCount(), 1, longWait);
+        QCOMPARE(cell(dialog, 0, CheckoutTableModel::NameColumn), QStringLiteral("LS_Door"));
+    }
+
+    // A point the PLC refuses (X9999 on an FBs) is named at Start, and nothing runs.
+    void refusedPointsNamed()
+    {
+        IoCheckoutDialog *dialog = openTool();
+        QVERIFY(dialog);
+        QVERIFY(m_bench.startPlan(dialog, QStringLiteral("X0, X9999"),
+                                  QStringLiteral("refused.checkout.json")));
+        QTRY_VERIFY_WITH_TIMEOUT(dialog->messageText().contains(QLatin1String("X9999")), longWait);
+        QVERIFY(!dialog->runner()->isRunning());
+        QVERIFY(dialog->findChild<QPushButton *>(QStringLiteral("startButton"))->isEnabled());
     }
 
     // Closing the dialog with Y3 forced: released in the PLC, the file lists nothing forced, the
