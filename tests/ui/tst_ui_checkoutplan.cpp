@@ -6,6 +6,7 @@
 // so. The PLC is the simulated FBs of CheckoutBench; what was forced is read in its memory.
 #include "checkoutbench.h"
 #include "core/commission/checkoutfile.h"
+#include "core/sim/faultconfig.h"
 #include "testutil.h"
 #include "ui/tools/checkoutpunchdialog.h"
 #include "uitestutil.h"
@@ -394,6 +395,42 @@ private Q_SLOTS:
         });
         QVERIFY(again->openCheckout(file));
         QVERIFY2(questions.isEmpty(), qPrintable(questions.join(QLatin1Char('\n'))));
+    }
+
+    // Closing while the PLC's answers are lost: the release cannot be confirmed; closing again
+    // asks, and the file keeps Y3 listed for the next Open (item 7).
+    void closeUnconfirmedAsksAndKeepsTheFile()
+    {
+        IoCheckoutDialog *dialog = openTool();
+        QVERIFY(dialog);
+        QStringList questions;
+        dialog->setConfirmer([&questions](const QString &q) {
+            questions << q;
+            return true;
+        });
+        QVERIFY(
+            m_bench.startPlan(dialog, QStringLiteral("Y3"), QStringLiteral("lost.checkout.json")));
+        const QString file = m_bench.files.filePath(QStringLiteral("lost.checkout.json"));
+        QTRY_COMPARE_WITH_TIMEOUT(dialog->runner()->currentPoint(), 0, longWait);
+        key(dialog, Qt::Key_Space);
+        QTRY_VERIFY_WITH_TIMEOUT(m_bench.plc->isDisabled(addr("Y3")) == true, longWait);
+        FaultConfig lost;
+        lost.dropRate = 1.0;
+        m_bench.server->setFaults(lost);
+        auto *box = dialog->findChild<QDialogButtonBox *>();
+        QTest::mouseClick(box->button(QDialogButtonBox::Close), Qt::LeftButton);
+        QVERIFY(dialog->isVisible());
+        QVERIFY2(dialog->messageText().startsWith(QLatin1String("Releasing Y3")),
+                 qPrintable(dialog->messageText()));
+        QTRY_VERIFY_WITH_TIMEOUT(dialog->runner()->isRetryingRelease(), longWait);
+        questions.clear();
+        QPointer<IoCheckoutDialog> open(dialog);
+        QTest::mouseClick(box->button(QDialogButtonBox::Close), Qt::LeftButton);
+        QCOMPARE(questions.size(), 1);
+        QVERIFY2(questions.front().contains(QLatin1String("Y3")), qPrintable(questions.front()));
+        QTRY_VERIFY_WITH_TIMEOUT(!open || !open->isVisible(), longWait);
+        QCOMPARE(CheckoutFile::loadFromFile(file)->forced, std::vector<Address>{addr("Y3")});
+        m_bench.server->setFaults({});
     }
 
     // Closing the main window with Y3 forced: the checkout releases it first, the window closes
