@@ -80,6 +80,15 @@ inline bool pickFromMenu(QPushButton *button, const char *actionName)
     return QTest::qWaitFor([&picked] { return picked; }, longWait);
 }
 
+// Every question the dialog asks is answered yes and kept in `questions`.
+inline void answerYes(Fatek::IoCheckoutDialog *dialog, QStringList &questions)
+{
+    dialog->setConfirmer([&questions](const QString &question) {
+        questions << question;
+        return true;
+    });
+}
+
 struct Bench
 {
     QTemporaryDir files;

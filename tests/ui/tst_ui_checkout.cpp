@@ -237,10 +237,7 @@ private Q_SLOTS:
         IoCheckoutDialog *dialog = openFromToolsMenu();
         QVERIFY(dialog);
         QStringList questions;
-        dialog->setConfirmer([&questions](const QString &question) {
-            questions << question;
-            return true;
-        });
+        answerYes(dialog, questions);
         QVERIFY(dialog->openCheckout(file));
         QCOMPARE(questions.size(), 1);
         QVERIFY2(questions.front().contains(QLatin1String("Y0")), qPrintable(questions.front()));
@@ -259,10 +256,7 @@ private Q_SLOTS:
         IoCheckoutDialog *dialog = openFromToolsMenu();
         QVERIFY(dialog);
         QStringList questions;
-        dialog->setConfirmer([&questions](const QString &question) {
-            questions << question;
-            return true;
-        });
+        answerYes(dialog, questions);
         QVERIFY(
             startPlan(dialog, QStringLiteral("X0, Y0"), QStringLiteral("operator.checkout.json")));
         CheckoutRunner *runner = dialog->runner();

@@ -88,6 +88,20 @@ private:
             },
             longWait);
     }
+    // The plan "Y3" started and Y3 forced by Space (the force answered yes); its file's path, or
+    // empty when it did not come so far.
+    QString forceY3(IoCheckoutDialog *dialog, const QString &fileName)
+    {
+        const QString file = m_bench.files.filePath(fileName);
+        if (!m_bench.startPlan(dialog, QStringLiteral("Y3"), fileName)
+            || !QTest::qWaitFor([dialog] { return dialog->runner()->currentPoint() == 0; },
+                                longWait))
+            return {};
+        key(dialog, Qt::Key_Space);
+        const bool forced = QTest::qWaitFor(
+            [this] { return m_bench.plc->isDisabled(addr("Y3")) == true; }, longWait);
+        return forced ? file : QString();
+    }
     static QString cell(IoCheckoutDialog *dialog, int row, int column, int role = Qt::DisplayRole)
     {
         return dialog->points()->index(row, column).data(role).toString();
@@ -369,12 +383,8 @@ private Q_SLOTS:
     {
         IoCheckoutDialog *dialog = openTool();
         QVERIFY(dialog);
-        QVERIFY(
-            m_bench.startPlan(dialog, QStringLiteral("Y3"), QStringLiteral("y3.checkout.json")));
-        const QString file = m_bench.files.filePath(QStringLiteral("y3.checkout.json"));
-        QTRY_COMPARE_WITH_TIMEOUT(dialog->runner()->currentPoint(), 0, longWait);
-        key(dialog, Qt::Key_Space);
-        QTRY_VERIFY_WITH_TIMEOUT(m_bench.plc->isDisabled(addr("Y3")) == true, longWait);
+        const QString file = forceY3(dialog, QStringLiteral("y3.checkout.json"));
+        QVERIFY(!file.isEmpty());
         QCOMPARE(CheckoutFile::loadFromFile(file)->forced, std::vector<Address>{addr("Y3")});
         auto *box = dialog->findChild<QDialogButtonBox *>();
         QVERIFY(box && box->button(QDialogButtonBox::Close));
@@ -389,10 +399,7 @@ private Q_SLOTS:
         IoCheckoutDialog *again = m_bench.openFromToolsMenu();
         QVERIFY(again);
         QStringList questions;
-        again->setConfirmer([&questions](const QString &q) {
-            questions << q;
-            return true;
-        });
+        answerYes(again, questions);
         QVERIFY(again->openCheckout(file));
         QVERIFY2(questions.isEmpty(), qPrintable(questions.join(QLatin1Char('\n'))));
     }
@@ -404,16 +411,9 @@ private Q_SLOTS:
         IoCheckoutDialog *dialog = openTool();
         QVERIFY(dialog);
         QStringList questions;
-        dialog->setConfirmer([&questions](const QString &q) {
-            questions << q;
-            return true;
-        });
-        QVERIFY(
-            m_bench.startPlan(dialog, QStringLiteral("Y3"), QStringLiteral("lost.checkout.json")));
-        const QString file = m_bench.files.filePath(QStringLiteral("lost.checkout.json"));
-        QTRY_COMPARE_WITH_TIMEOUT(dialog->runner()->currentPoint(), 0, longWait);
-        key(dialog, Qt::Key_Space);
-        QTRY_VERIFY_WITH_TIMEOUT(m_bench.plc->isDisabled(addr("Y3")) == true, longWait);
+        answerYes(dialog, questions);
+        const QString file = forceY3(dialog, QStringLiteral("lost.checkout.json"));
+        QVERIFY(!file.isEmpty());
         FaultConfig lost;
         lost.dropRate = 1.0;
         m_bench.server->setFaults(lost);
@@ -439,12 +439,8 @@ private Q_SLOTS:
     {
         IoCheckoutDialog *dialog = openTool();
         QVERIFY(dialog);
-        QVERIFY(
-            m_bench.startPlan(dialog, QStringLiteral("Y3"), QStringLiteral("quit.checkout.json")));
-        const QString file = m_bench.files.filePath(QStringLiteral("quit.checkout.json"));
-        QTRY_COMPARE_WITH_TIMEOUT(dialog->runner()->currentPoint(), 0, longWait);
-        key(dialog, Qt::Key_Space);
-        QTRY_VERIFY_WITH_TIMEOUT(m_bench.plc->isDisabled(addr("Y3")) == true, longWait);
+        const QString file = forceY3(dialog, QStringLiteral("quit.checkout.json"));
+        QVERIFY(!file.isEmpty());
         QPointer<IoCheckoutDialog> open(dialog);
         m_bench.window->close();
         QTRY_VERIFY2_WITH_TIMEOUT(!m_bench.window->isVisible(),
