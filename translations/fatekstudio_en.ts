@@ -5715,6 +5715,187 @@ Write its values all the same? Elements the PLC does not have are refused before
             <source>Comment</source>
             <translation>Comment</translation>
         </message>
+        <message>
+            <source>%1 %: %2 expected</source>
+            <translation>%1 %: %2 expected</translation>
+        </message>
+        <message>
+            <source>Attempt %1: %2, %3 by %4</source>
+            <translation>Attempt %1: %2, %3 by %4</translation>
+        </message>
+        <message>
+            <source>(no name)</source>
+            <translation>(no name)</translation>
+        </message>
+        <message>
+            <source>%1 (attempt %2)</source>
+            <translation>%1 (attempt %2)</translation>
+        </message>
+        <message>
+            <source>no scale: import a plan CSV with it</source>
+            <translation>no scale: import a plan CSV with it</translation>
+        </message>
+        <message>
+            <source>%1; next %2</source>
+            <translation>%1; next %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutKeys</name>
+        <message>
+            <source>Space: passed (an output is forced first), F: failed, R: passed with remark, D: deferred, A: not applicable, T: test again, N: next point, V: read the next analog check, Shift+V: read it again as left, F2: comment</source>
+            <translation>Space: passed (an output is forced first), F: failed, R: passed with remark, D: deferred, A: not applicable, T: test again, N: next point, V: read the next analog check, Shift+V: read it again as left, F2: comment</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1 (%2)</translation>
+        </message>
+        <message>
+            <source>Answer for %1 first (Space: seen, F: not seen).</source>
+            <translation>Answer for %1 first (Space: seen, F: not seen).</translation>
+        </message>
+        <message>
+            <source>Deferred</source>
+            <translation>Deferred</translation>
+        </message>
+        <message>
+            <source>Passed with Remark</source>
+            <translation>Passed with Remark</translation>
+        </message>
+        <message>
+            <source>Why is %1 deferred (what is missing, until when)?</source>
+            <translation>Why is %1 deferred (what is missing, until when)?</translation>
+        </message>
+        <message>
+            <source>The remark on %1 (what was not as it should be):</source>
+            <translation>The remark on %1 (what was not as it should be):</translation>
+        </message>
+        <message>
+            <source>Nothing recorded on %1.</source>
+            <translation>Nothing recorded on %1.</translation>
+        </message>
+        <message>
+            <source>%1 is tested again: actuate it in the field.</source>
+            <translation>%1 is tested again: actuate it in the field.</translation>
+        </message>
+        <message>
+            <source>%1 is tested again: Space forces it.</source>
+            <translation>%1 is tested again: Space forces it.</translation>
+        </message>
+        <message>
+            <source>%1 is tested again: V reads its checks.</source>
+            <translation>%1 is tested again: V reads its checks.</translation>
+        </message>
+        <message>
+            <source>%1. Import a plan CSV that gives its scale (Import… &gt; Plan CSV…).</source>
+            <translation>%1. Import a plan CSV that gives its scale (Import… &gt; Plan CSV…).</translation>
+        </message>
+        <message>
+            <source>Reading %1…</source>
+            <translation>Reading %1…</translation>
+        </message>
+        <message>
+            <source>%1: %2.</source>
+            <translation>%1: %2.</translation>
+        </message>
+        <message>
+            <source>%1 read. Next: %2 (V); Shift+V reads the last check again as left.</source>
+            <translation>%1 read. Next: %2 (V); Shift+V reads the last check again as left.</translation>
+        </message>
+        <message>
+            <source>Start the checkout first: outputs are forced only while it runs.</source>
+            <translation>Start the checkout first: outputs are forced only while it runs.</translation>
+        </message>
+        <message>
+            <source>Operator mode: outputs are not forced.</source>
+            <translation>Operator mode: outputs are not forced.</translation>
+        </message>
+        <message>
+            <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
+            <translation>Force %1 on at %2? It stays on until you answer, then it is released.</translation>
+        </message>
+        <message>
+            <source>Force Output</source>
+            <translation>Force Output</translation>
+        </message>
+        <message>
+            <source>Not forced: nothing was written.</source>
+            <translation>Not forced: nothing was written.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutDetailsDialog</name>
+        <message>
+            <source>Checkout Details</source>
+            <translation>Checkout Details</translation>
+        </message>
+        <message>
+            <source>Document ID:</source>
+            <translation>Document ID:</translation>
+        </message>
+        <message>
+            <source>Revision:</source>
+            <translation>Revision:</translation>
+        </message>
+        <message>
+            <source>Engineer&apos;s company:</source>
+            <translation>Engineer&apos;s company:</translation>
+        </message>
+        <message>
+            <source>Witness:</source>
+            <translation>Witness:</translation>
+        </message>
+        <message>
+            <source>Witness&apos;s company:</source>
+            <translation>Witness&apos;s company:</translation>
+        </message>
+        <message>
+            <source>Signs for the customer:</source>
+            <translation>Signs for the customer:</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutPunchDialog</name>
+        <message>
+            <source>Punch List</source>
+            <translation>Punch List</translation>
+        </message>
+        <message>
+            <source>Close Out</source>
+            <translation>Close Out</translation>
+        </message>
+        <message>
+            <source>Close out the chosen item: its point passes now</source>
+            <translation>Close out the chosen item: its point passes now</translation>
+        </message>
+        <message>
+            <source>Export CSV…</source>
+            <translation>Export CSV…</translation>
+        </message>
+        <message>
+            <source>Close</source>
+            <translation>Close</translation>
+        </message>
+        <message>
+            <source>Choose the item to close out.</source>
+            <translation>Choose the item to close out.</translation>
+        </message>
+        <message>
+            <source>Export Punch List</source>
+            <translation>Export Punch List</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message>
+            <source>%1 is closed out.</source>
+            <translation>%1 is closed out.</translation>
+        </message>
+        <message>
+            <source>Punch list written: %1</source>
+            <translation>Punch list written: %1</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::IoCheckoutDialog</name>
@@ -5767,10 +5948,6 @@ Write its values all the same? Elements the PLC does not have are refused before
             <translation>Write the report as PDF or CSV</translation>
         </message>
         <message>
-            <source>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</source>
-            <translation>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</translation>
-        </message>
-        <message>
             <source>Open Checkout</source>
             <translation>Open Checkout</translation>
         </message>
@@ -5781,10 +5958,6 @@ Write its values all the same? Elements the PLC does not have are refused before
         <message>
             <source>Checkout Report</source>
             <translation>Checkout Report</translation>
-        </message>
-        <message>
-            <source>PDF reports (*.pdf);;CSV files (*.csv)</source>
-            <translation>PDF reports (*.pdf);;CSV files (*.csv)</translation>
         </message>
         <message>
             <source>Watching the inputs: actuate %1 in the field.</source>
@@ -5803,20 +5976,12 @@ Write its values all the same? Elements the PLC does not have are refused before
             <translation>Force Output</translation>
         </message>
         <message>
-            <source>Not forced: nothing was written.</source>
-            <translation>Not forced: nothing was written.</translation>
-        </message>
-        <message>
             <source>Stopped: the target changed.</source>
             <translation>Stopped: the target changed.</translation>
         </message>
         <message>
             <source>(operator mode: outputs are not forced)</source>
             <translation>(operator mode: outputs are not forced)</translation>
-        </message>
-        <message>
-            <source>%1 (%2)</source>
-            <translation>%1 (%2)</translation>
         </message>
         <message>
             <source>Save Checkout</source>
@@ -5847,20 +6012,106 @@ Write its values all the same? Elements the PLC does not have are refused before
             <translation>Report written: %1</translation>
         </message>
         <message>
-            <source>Answer for %1 first (Space: seen, F: not seen).</source>
-            <translation>Answer for %1 first (Space: seen, F: not seen).</translation>
-        </message>
-        <message>
-            <source>Operator mode: outputs are not forced.</source>
-            <translation>Operator mode: outputs are not forced.</translation>
-        </message>
-        <message>
-            <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
-            <translation>Force %1 on at %2? It stays on until you answer, then it is released.</translation>
-        </message>
-        <message>
             <source>The latest results of the checkout are not saved: %1</source>
             <translation>The latest results of the checkout are not saved: %1</translation>
+        </message>
+        <message>
+            <source>Import…</source>
+            <translation>Import…</translation>
+        </message>
+        <message>
+            <source>A plan from a CSV file, or from the names imported in the main window</source>
+            <translation>A plan from a CSV file, or from the names imported in the main window</translation>
+        </message>
+        <message>
+            <source>Details…</source>
+            <translation>Details…</translation>
+        </message>
+        <message>
+            <source>Document ID, revision and who signs the report</source>
+            <translation>Document ID, revision and who signs the report</translation>
+        </message>
+        <message>
+            <source>Punch List…</source>
+            <translation>Punch List…</translation>
+        </message>
+        <message>
+            <source>The failed and deferred points: owner, close-out, CSV</source>
+            <translation>The failed and deferred points: owner, close-out, CSV</translation>
+        </message>
+        <message>
+            <source>Releasing %1… the window closes once the PLC confirms it.</source>
+            <translation>Releasing %1… the window closes once the PLC confirms it.</translation>
+        </message>
+        <message>
+            <source>Close I/O Checkout</source>
+            <translation>Close I/O Checkout</translation>
+        </message>
+        <message>
+            <source>%1 is not confirmed released on %2. Close anyway? The checkout file keeps it listed: the next Open releases it.</source>
+            <translation>%1 is not confirmed released on %2. Close anyway? The checkout file keeps it listed: the next Open releases it.</translation>
+        </message>
+        <message>
+            <source>Plan CSV…</source>
+            <translation>Plan CSV…</translation>
+        </message>
+        <message>
+            <source>Import Checkout Plan</source>
+            <translation>Import Checkout Plan</translation>
+        </message>
+        <message>
+            <source>Checkout plans (*.csv)</source>
+            <translation>Checkout plans (*.csv)</translation>
+        </message>
+        <message>
+            <source>Imported Names…</source>
+            <translation>Imported Names…</translation>
+        </message>
+        <message>
+            <source>The names that start with (empty: every name):</source>
+            <translation>The names that start with (empty: every name):</translation>
+        </message>
+        <message>
+            <source>PDF…</source>
+            <translation>PDF…</translation>
+        </message>
+        <message>
+            <source>CSV…</source>
+            <translation>CSV…</translation>
+        </message>
+        <message>
+            <source>CSV with Windows Line Ends…</source>
+            <translation>CSV with Windows Line Ends…</translation>
+        </message>
+        <message>
+            <source>PDF reports (*.pdf)</source>
+            <translation>PDF reports (*.pdf)</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Imported %1: %n point(s).</source>
+            <translation>
+                <numerusform>Imported %1: %n point.</numerusform>
+                <numerusform>Imported %1: %n points.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No names are imported: File &gt; Import Names and Comments… in the main window first.</source>
+            <translation>No names are imported: File &gt; Import Names and Comments… in the main window first.</translation>
+        </message>
+        <message numerus="yes">
+            <source>A plan of %n point(s) from the imported names.</source>
+            <translation>
+                <numerusform>A plan of %n point from the imported names.</numerusform>
+                <numerusform>A plan of %n points from the imported names.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>The report&apos;s details are set.</source>
+            <translation>The report&apos;s details are set.</translation>
         </message>
     </context>
     <context>

@@ -5687,6 +5687,187 @@ PLC：%3
             <source>Comment</source>
             <translation>備註</translation>
         </message>
+        <message>
+            <source>%1 %: %2 expected</source>
+            <translation>%1 %：預期 %2</translation>
+        </message>
+        <message>
+            <source>Attempt %1: %2, %3 by %4</source>
+            <translation>第 %1 次：%2，%3，%4</translation>
+        </message>
+        <message>
+            <source>(no name)</source>
+            <translation>（未署名）</translation>
+        </message>
+        <message>
+            <source>%1 (attempt %2)</source>
+            <translation>%1（第 %2 次）</translation>
+        </message>
+        <message>
+            <source>no scale: import a plan CSV with it</source>
+            <translation>沒有刻度：請匯入含刻度的計畫 CSV</translation>
+        </message>
+        <message>
+            <source>%1; next %2</source>
+            <translation>%1；下一個 %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutKeys</name>
+        <message>
+            <source>Space: passed (an output is forced first), F: failed, R: passed with remark, D: deferred, A: not applicable, T: test again, N: next point, V: read the next analog check, Shift+V: read it again as left, F2: comment</source>
+            <translation>空白鍵：合格（輸出先強制），F：不合格，R：合格附註記，D：延後，A：不適用，T：重新測試，N：下一點，V：讀取下一個類比檢查點，Shift+V：調整後再讀一次，F2：備註</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1（%2）</translation>
+        </message>
+        <message>
+            <source>Answer for %1 first (Space: seen, F: not seen).</source>
+            <translation>請先回答 %1（空白鍵：看到，F：沒看到）。</translation>
+        </message>
+        <message>
+            <source>Deferred</source>
+            <translation>延後</translation>
+        </message>
+        <message>
+            <source>Passed with Remark</source>
+            <translation>合格附註記</translation>
+        </message>
+        <message>
+            <source>Why is %1 deferred (what is missing, until when)?</source>
+            <translation>%1 為何延後（缺什麼、到何時）？</translation>
+        </message>
+        <message>
+            <source>The remark on %1 (what was not as it should be):</source>
+            <translation>%1 的註記（哪裡不如預期）：</translation>
+        </message>
+        <message>
+            <source>Nothing recorded on %1.</source>
+            <translation>%1 未記錄任何結果。</translation>
+        </message>
+        <message>
+            <source>%1 is tested again: actuate it in the field.</source>
+            <translation>%1 重新測試：請在現場動作。</translation>
+        </message>
+        <message>
+            <source>%1 is tested again: Space forces it.</source>
+            <translation>%1 重新測試：按空白鍵強制。</translation>
+        </message>
+        <message>
+            <source>%1 is tested again: V reads its checks.</source>
+            <translation>%1 重新測試：按 V 讀取各檢查點。</translation>
+        </message>
+        <message>
+            <source>%1. Import a plan CSV that gives its scale (Import… &gt; Plan CSV…).</source>
+            <translation>%1。請匯入含其刻度的計畫 CSV（匯入… &gt; 計畫 CSV…）。</translation>
+        </message>
+        <message>
+            <source>Reading %1…</source>
+            <translation>正在讀取 %1…</translation>
+        </message>
+        <message>
+            <source>%1: %2.</source>
+            <translation>%1：%2。</translation>
+        </message>
+        <message>
+            <source>%1 read. Next: %2 (V); Shift+V reads the last check again as left.</source>
+            <translation>已讀取 %1。下一個：%2（V）；Shift+V 將最後的檢查點再讀一次作為調整後值。</translation>
+        </message>
+        <message>
+            <source>Start the checkout first: outputs are forced only while it runs.</source>
+            <translation>請先開始點檢：只有執行中才強制輸出。</translation>
+        </message>
+        <message>
+            <source>Operator mode: outputs are not forced.</source>
+            <translation>操作員模式：不強制輸出。</translation>
+        </message>
+        <message>
+            <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
+            <translation>在%2將 %1 強制為 ON？回答前保持 ON，回答後即解除。</translation>
+        </message>
+        <message>
+            <source>Force Output</source>
+            <translation>強制輸出</translation>
+        </message>
+        <message>
+            <source>Not forced: nothing was written.</source>
+            <translation>未強制：沒有寫入任何資料。</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutDetailsDialog</name>
+        <message>
+            <source>Checkout Details</source>
+            <translation>點檢詳細資料</translation>
+        </message>
+        <message>
+            <source>Document ID:</source>
+            <translation>文件編號：</translation>
+        </message>
+        <message>
+            <source>Revision:</source>
+            <translation>版次：</translation>
+        </message>
+        <message>
+            <source>Engineer&apos;s company:</source>
+            <translation>工程師公司：</translation>
+        </message>
+        <message>
+            <source>Witness:</source>
+            <translation>見證人：</translation>
+        </message>
+        <message>
+            <source>Witness&apos;s company:</source>
+            <translation>見證人公司：</translation>
+        </message>
+        <message>
+            <source>Signs for the customer:</source>
+            <translation>客戶簽署人：</translation>
+        </message>
+    </context>
+    <context>
+        <name>Fatek::CheckoutPunchDialog</name>
+        <message>
+            <source>Punch List</source>
+            <translation>待辦清單</translation>
+        </message>
+        <message>
+            <source>Close Out</source>
+            <translation>結案</translation>
+        </message>
+        <message>
+            <source>Close out the chosen item: its point passes now</source>
+            <translation>將選取的項目結案：該點位現已合格</translation>
+        </message>
+        <message>
+            <source>Export CSV…</source>
+            <translation>匯出 CSV…</translation>
+        </message>
+        <message>
+            <source>Close</source>
+            <translation>關閉</translation>
+        </message>
+        <message>
+            <source>Choose the item to close out.</source>
+            <translation>請選擇要結案的項目。</translation>
+        </message>
+        <message>
+            <source>Export Punch List</source>
+            <translation>匯出待辦清單</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 檔案 (*.csv)</translation>
+        </message>
+        <message>
+            <source>%1 is closed out.</source>
+            <translation>%1 已結案。</translation>
+        </message>
+        <message>
+            <source>Punch list written: %1</source>
+            <translation>待辦清單已寫出：%1</translation>
+        </message>
     </context>
     <context>
         <name>Fatek::IoCheckoutDialog</name>
@@ -5739,10 +5920,6 @@ PLC：%3
             <translation>寫出報告（可攜文件 *.pdf 或 CSV）</translation>
         </message>
         <message>
-            <source>Space: seen (an output is forced first), F: failed, N: next point, L / H: analog low / high end</source>
-            <translation>空白鍵：已確認（輸出先強制），F：不合格，N：下一點，L / H：類比低端 / 高端</translation>
-        </message>
-        <message>
             <source>Open Checkout</source>
             <translation>開啟點檢</translation>
         </message>
@@ -5753,10 +5930,6 @@ PLC：%3
         <message>
             <source>Checkout Report</source>
             <translation>點檢報告</translation>
-        </message>
-        <message>
-            <source>PDF reports (*.pdf);;CSV files (*.csv)</source>
-            <translation>可攜文件報告 (*.pdf);;CSV 檔案 (*.csv)</translation>
         </message>
         <message>
             <source>Watching the inputs: actuate %1 in the field.</source>
@@ -5775,20 +5948,12 @@ PLC：%3
             <translation>強制輸出</translation>
         </message>
         <message>
-            <source>Not forced: nothing was written.</source>
-            <translation>未強制：沒有寫入任何資料。</translation>
-        </message>
-        <message>
             <source>Stopped: the target changed.</source>
             <translation>已停止：目標已變更。</translation>
         </message>
         <message>
             <source>(operator mode: outputs are not forced)</source>
             <translation>（操作員模式：不強制輸出）</translation>
-        </message>
-        <message>
-            <source>%1 (%2)</source>
-            <translation>%1（%2）</translation>
         </message>
         <message>
             <source>Save Checkout</source>
@@ -5819,20 +5984,104 @@ PLC：%3
             <translation>報告已寫出：%1</translation>
         </message>
         <message>
-            <source>Answer for %1 first (Space: seen, F: not seen).</source>
-            <translation>請先回答 %1（空白鍵：看到，F：沒看到）。</translation>
-        </message>
-        <message>
-            <source>Operator mode: outputs are not forced.</source>
-            <translation>操作員模式：不強制輸出。</translation>
-        </message>
-        <message>
-            <source>Force %1 on at %2? It stays on until you answer, then it is released.</source>
-            <translation>在%2將 %1 強制為 ON？回答前保持 ON，回答後即解除。</translation>
-        </message>
-        <message>
             <source>The latest results of the checkout are not saved: %1</source>
             <translation>點檢最新的結果尚未儲存：%1</translation>
+        </message>
+        <message>
+            <source>Import…</source>
+            <translation>匯入…</translation>
+        </message>
+        <message>
+            <source>A plan from a CSV file, or from the names imported in the main window</source>
+            <translation>從 CSV 檔或主視窗匯入的名稱建立計畫</translation>
+        </message>
+        <message>
+            <source>Details…</source>
+            <translation>詳細資料…</translation>
+        </message>
+        <message>
+            <source>Document ID, revision and who signs the report</source>
+            <translation>文件編號、版次及報告簽署人</translation>
+        </message>
+        <message>
+            <source>Punch List…</source>
+            <translation>待辦清單…</translation>
+        </message>
+        <message>
+            <source>The failed and deferred points: owner, close-out, CSV</source>
+            <translation>不合格及延後的點位：負責人、結案、CSV</translation>
+        </message>
+        <message>
+            <source>Releasing %1… the window closes once the PLC confirms it.</source>
+            <translation>正在解除 %1 的強制…PLC 確認後視窗即關閉。</translation>
+        </message>
+        <message>
+            <source>Close I/O Checkout</source>
+            <translation>關閉 I/O 點檢</translation>
+        </message>
+        <message>
+            <source>%1 is not confirmed released on %2. Close anyway? The checkout file keeps it listed: the next Open releases it.</source>
+            <translation>%2的 %1 尚未確認解除強制。仍要關閉嗎？點檢檔會保留記錄：下次開啟時會解除。</translation>
+        </message>
+        <message>
+            <source>Plan CSV…</source>
+            <translation>計畫 CSV…</translation>
+        </message>
+        <message>
+            <source>Import Checkout Plan</source>
+            <translation>匯入點檢計畫</translation>
+        </message>
+        <message>
+            <source>Checkout plans (*.csv)</source>
+            <translation>點檢計畫 (*.csv)</translation>
+        </message>
+        <message>
+            <source>Imported Names…</source>
+            <translation>匯入的名稱…</translation>
+        </message>
+        <message>
+            <source>The names that start with (empty: every name):</source>
+            <translation>名稱開頭為（空白：全部名稱）：</translation>
+        </message>
+        <message>
+            <source>PDF…</source>
+            <translation>可攜文件報告 (PDF)…</translation>
+        </message>
+        <message>
+            <source>CSV…</source>
+            <translation>CSV…</translation>
+        </message>
+        <message>
+            <source>CSV with Windows Line Ends…</source>
+            <translation>CSV（Windows 換行）…</translation>
+        </message>
+        <message>
+            <source>PDF reports (*.pdf)</source>
+            <translation>可攜文件報告 (*.pdf)</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 檔案 (*.csv)</translation>
+        </message>
+        <message numerus="yes">
+            <source>Imported %1: %n point(s).</source>
+            <translation>
+                <numerusform>已匯入 %1：%n 個點位。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No names are imported: File &gt; Import Names and Comments… in the main window first.</source>
+            <translation>尚未匯入名稱：請先在主視窗使用「檔案 &gt; 匯入名稱與註解…」。</translation>
+        </message>
+        <message numerus="yes">
+            <source>A plan of %n point(s) from the imported names.</source>
+            <translation>
+                <numerusform>由匯入的名稱建立 %n 個點位的計畫。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>The report&apos;s details are set.</source>
+            <translation>報告的詳細資料已設定。</translation>
         </message>
     </context>
     <context>

@@ -4,60 +4,22 @@
 // menu, the plan typed, five points walked by keyboard. What was forced is checked in the
 // simulator's own memory. With FATEK_CHECKOUT_SHOTS set to a folder, the tool's picture and the
 // PDF report are written there (docs/images/tool-checkout.png, checkout-report.png).
+#include "checkoutbench.h"
 #include "core/commission/checkoutfile.h"
-#include "core/commission/checkoutrunner.h"
-#include "core/commission/commissionmessages.h"
 #include "core/sim/faultconfig.h"
-#include "core/sim/simserver.h"
-#include "core/sim/simulatedplc.h"
 #include "testutil.h"
-#include "ui/common/uitext.h"
-#include "ui/connection/connection.h"
-#include "ui/mainwindow/mainwindow.h"
-#include "ui/tools/checkouttablemodel.h"
-#include "ui/tools/iocheckoutdialog.h"
 #include "uitestutil.h"
 
 #include <QApplication>
 #include <QDir>
 #include <QFile>
-#include <QLineEdit>
-#include <QMenu>
-#include <QMenuBar>
-#include <QMessageBox>
-#include <QPushButton>
 #include <QScreen>
 #include <QTableView>
-#include <QTemporaryDir>
-#include <QTest>
 
 #include <functional>
 
 using namespace Fatek;
-
-namespace {
-
-constexpr QSize laptop(1366, 768);
-constexpr int longWait = 30000;
-constexpr int keyDelayMs = 20;
-
-Address addr(const char *text)
-{
-    return *Address::parse(text);
-}
-
-// Answers a force question with its Yes button, as a person would.
-void clickYes(QWidget *modal)
-{
-    auto *box = qobject_cast<QMessageBox *>(modal);
-    if (!box || !box->button(QMessageBox::Yes)) {
-        qWarning("not a yes/no question");
-        return;
-    }
-    QTest::mouseClick(box->button(QMessageBox::Yes), Qt::LeftButton);
-}
-
-} // namespace
+using namespace CheckoutBench;
 
 class TestUiCheckout : public QObject
 {
@@ -65,98 +27,22 @@ class TestUiCheckout : public QObject
 
 private:
     QTemporaryDir m_settingsDir;
-    QTemporaryDir m_files;
-    std::unique_ptr<SimulatedPlc> m_plc;
-    std::unique_ptr<SimServer> m_server;
-    std::unique_ptr<MainWindow> m_window;
+    Bench m_bench;
+    QTemporaryDir &m_files = m_bench.files;
+    SimulatedPlc *m_plc = nullptr;
+    SimServer *m_server = nullptr;
 
-    QString state(const IoCheckoutDialog *dialog, int row) const
-    {
-        return dialog->points()->index(row, CheckoutTableModel::StateColumn).data().toString();
-    }
-    static QString resultText(CheckoutResult result)
-    {
-        return translated(checkoutResultMessage(result));
-    }
-
-    // The technician presses the switch and lets it go, each state held until the tool showed it.
     void actuate(IoCheckoutDialog *dialog, const char *input)
     {
-        const int i = dialog->runner()->plan().indexOf(addr(input));
-        QVERIFY(i >= 0);
-        const CheckoutPoint &p = dialog->runner()->plan().points[static_cast<std::size_t>(i)];
-        // Its first poll shown: 0 is the baseline the change is seen against.
-        QTRY_COMPARE_WITH_TIMEOUT(
-            dialog->points()->index(i, CheckoutTableModel::MeasuredColumn).data().toString(),
-            CheckoutTableModel::tr("now %1").arg(0), longWait);
-        m_plc->setValue(addr(input), 1);
-        QTRY_VERIFY_WITH_TIMEOUT(p.rose.isValid(), longWait);
-        m_plc->setValue(addr(input), 0);
-        QTRY_COMPARE_WITH_TIMEOUT(state(dialog, i), resultText(CheckoutResult::Passed), longWait);
+        QVERIFY(m_bench.actuate(dialog, input));
+        QCOMPARE(state(dialog, dialog->runner()->plan().indexOf(addr(input))),
+                 resultText(CheckoutResult::Passed));
     }
-
-    // The main window at the laptop's size, connected to the simulator.
-    bool openWindow(bool operatorMode)
-    {
-        m_window = std::make_unique<MainWindow>(operatorMode);
-        m_window->resize(laptop - QSize(0, 70));
-        m_window->show();
-        if (!QTest::qWaitForWindowExposed(m_window.get()))
-            return false;
-        SavedConnection saved;
-        saved.name = QStringLiteral("Line 3");
-        saved.settings = LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_server->tcpPort());
-        saved.settings.protocol = LinkSettings::ProtocolChoice::Facon;
-        saved.settings.timeoutMs = 2000;
-        saved.settings.retries = 1;
-        Connection *c = m_window->openConnection(saved, false);
-        return c
-               && QTest::qWaitFor([c] { return c->linkState() == LinkState::Connected; }, longWait);
-    }
-
-    // Opens Tools -> I/O Checkout with the mouse.
-    IoCheckoutDialog *openFromToolsMenu()
-    {
-        QMenuBar *bar = m_window->menuBar();
-        QAction *entry = m_window->findChild<QAction *>(QStringLiteral("ioCheckoutAction"));
-        QAction *tools = nullptr;
-        for (QAction *a : bar->actions()) {
-            if (a->menu() && a->menu()->actions().contains(entry))
-                tools = a;
-        }
-        if (!tools)
-            return nullptr;
-        QTest::mouseClick(bar, Qt::LeftButton, {}, bar->actionGeometry(tools).center());
-        QMenu *menu = tools->menu();
-        if (!QTest::qWaitFor([menu] { return menu->isVisible(); }, longWait))
-            return nullptr;
-        QTest::qWait(200);
-        QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(entry).center());
-        IoCheckoutDialog *dialog = nullptr;
-        const bool shown = QTest::qWaitFor(
-            [&] {
-                dialog
-                    = m_window->findChild<IoCheckoutDialog *>(QStringLiteral("ioCheckoutDialog"));
-                return dialog && dialog->isVisible();
-            },
-            longWait);
-        return shown ? dialog : nullptr;
-    }
-
-    // The plan `ranges` typed and Start pressed, saved in `fileName`; false when the fields are
-    // not there.
+    bool openWindow(bool operatorMode) { return m_bench.openWindow(operatorMode); }
+    IoCheckoutDialog *openFromToolsMenu() { return m_bench.openFromToolsMenu(); }
     bool startPlan(IoCheckoutDialog *dialog, const QString &ranges, const QString &fileName)
     {
-        const QString file = m_files.filePath(fileName);
-        dialog->setFileChooser([file](const ToolDialogFrame::FileQuestion &) { return file; });
-        auto *edit = dialog->findChild<QLineEdit *>(QStringLiteral("ranges"));
-        auto *start = dialog->findChild<QPushButton *>(QStringLiteral("startButton"));
-        if (!edit || !start)
-            return false;
-        QTest::mouseClick(edit, Qt::LeftButton);
-        QTest::keyClicks(edit, ranges, {}, keyDelayMs);
-        QTest::mouseClick(start, Qt::LeftButton);
-        return true;
+        return m_bench.startPlan(dialog, ranges, fileName);
     }
 
 private Q_SLOTS:
@@ -171,19 +57,13 @@ private Q_SLOTS:
     void init()
     {
         // STOP, no demo ladder: the inputs move only when the test moves them.
-        m_plc = std::make_unique<SimulatedPlc>(ModelProfile::fbs());
-        m_plc->setRunning(false);
-        m_server = std::make_unique<SimServer>(m_plc.get());
         QString error;
-        QVERIFY2(m_server->listenTcp(0, &error), qPrintable(error));
+        QVERIFY2(m_bench.init(&error), qPrintable(error));
+        m_plc = m_bench.plc.get();
+        m_server = m_bench.server.get();
     }
 
-    void cleanup()
-    {
-        m_window.reset();
-        m_server.reset();
-        m_plc.reset();
-    }
+    void cleanup() { m_bench.cleanup(); }
 
     void walkFivePointsByKeyboard()
     {
@@ -318,13 +198,13 @@ private Q_SLOTS:
         QVERIFY(report && report->isEnabled());
         const QString pdf = m_files.filePath(QStringLiteral("line3.pdf"));
         chosen = pdf;
-        QTest::mouseClick(report, Qt::LeftButton);
+        QVERIFY(pickFromMenu(report, "reportPdfAction"));
         QFile pdfFile(pdf);
         QVERIFY(pdfFile.open(QIODevice::ReadOnly));
         QVERIFY(pdfFile.read(5).startsWith("%PDF"));
         const QString csv = m_files.filePath(QStringLiteral("line3.csv"));
         chosen = csv;
-        QTest::mouseClick(report, Qt::LeftButton);
+        QVERIFY(pickFromMenu(report, "reportCsvAction"));
         QFile csvFile(csv);
         QVERIFY(csvFile.open(QIODevice::ReadOnly));
         const QByteArray csvText = csvFile.readAll();
@@ -357,10 +237,7 @@ private Q_SLOTS:
         IoCheckoutDialog *dialog = openFromToolsMenu();
         QVERIFY(dialog);
         QStringList questions;
-        dialog->setConfirmer([&questions](const QString &question) {
-            questions << question;
-            return true;
-        });
+        answerYes(dialog, questions);
         QVERIFY(dialog->openCheckout(file));
         QCOMPARE(questions.size(), 1);
         QVERIFY2(questions.front().contains(QLatin1String("Y0")), qPrintable(questions.front()));
@@ -379,10 +256,7 @@ private Q_SLOTS:
         IoCheckoutDialog *dialog = openFromToolsMenu();
         QVERIFY(dialog);
         QStringList questions;
-        dialog->setConfirmer([&questions](const QString &question) {
-            questions << question;
-            return true;
-        });
+        answerYes(dialog, questions);
         QVERIFY(
             startPlan(dialog, QStringLiteral("X0, Y0"), QStringLiteral("operator.checkout.json")));
         CheckoutRunner *runner = dialog->runner();

@@ -14,6 +14,9 @@
 #include "ui/common/toolconfirmation.h"
 #include "ui/connection/connection.h"
 #include "ui/mainwindow/mainwindow.h"
+#include "ui/tools/checkoutdetailsdialog.h"
+#include "ui/tools/checkoutpunchdialog.h"
+#include "ui/tools/iocheckoutdialog.h"
 #include "ui/watch/watchtablemodel.h"
 #include "ui/watch/watchtablewidget.h"
 #include "uitestutil.h"
@@ -329,6 +332,17 @@ private Q_SLOTS:
             // Its forced points: the scan's outcome and the list.
             QVERIFY(scanForcedPoints(opened));
             problems << cutTexts(top);
+        }
+        if (auto *checkout = qobject_cast<IoCheckoutDialog *>(top)) {
+            // Its punch list and its report's details, each in its own window.
+            checkout->showPunchList();
+            QWidget *punch = checkout->punchDialog();
+            QVERIFY(punch && QTest::qWaitForWindowExposed(punch));
+            problems << cutTexts(punch);
+            CheckoutDetailsDialog details(CheckoutInfo{}, checkout);
+            details.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&details));
+            problems << cutTexts(&details);
         }
         if (top != m_window.get())
             problems << cutTexts(m_window.get());

@@ -57,6 +57,22 @@ bool QuitQuestions::settleToolDialogs()
         if (!frame->mayDiscard())
             return false;
     }
+    // A tool that holds the PLC (an output forced) undoes it first: its dialog closes once the
+    // PLC confirmed it, and the window closes after it.
+    for (ToolDialogFrame *frame : m_window->findChildren<ToolDialogFrame *>()) {
+        if (!frame->isSettling())
+            continue;
+        QDialog *dialog = frame->dialog();
+        dialog->show();
+        dialog->raise();
+        dialog->reject();
+        if (!dialog->isVisible())
+            continue;
+        if (frame->isSettling())
+            connect(dialog, &QDialog::finished, m_window, &MainWindow::close,
+                    Qt::ConnectionType(Qt::QueuedConnection | Qt::SingleShotConnection));
+        return false;
+    }
     return true;
 }
 

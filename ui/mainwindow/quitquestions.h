@@ -28,7 +28,8 @@ Q_SIGNALS:
 
 private:
     // Each open tool dialog that holds unsaved work (a memory snapshot) asks its own question,
-    // in front; false: Cancel, stay open.
+    // in front; false: Cancel, stay open. A dialog that holds the PLC (an I/O checkout's forced
+    // output) releases it first; false meanwhile, and the window closes once it is done.
     bool settleToolDialogs();
     // Asks before quitting with unsaved tables or a running data log; false: stay open.
     bool confirmQuit();

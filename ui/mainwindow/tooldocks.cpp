@@ -145,7 +145,10 @@ ToolDocks::ToolDocks(MainWindow *window, QDockWidget *tabWith, QMenu *toolsMenu,
             open->activateWindow();
             return;
         }
-        openDialog(new IoCheckoutDialog(m_window), QStringLiteral("ioCheckoutDialog"));
+        auto *dialog = new IoCheckoutDialog(m_window);
+        // Typed ranges get the project's names, and a plan is made from them.
+        dialog->setSymbols(m_window->symbolNames());
+        openDialog(dialog, QStringLiteral("ioCheckoutDialog"));
     });
     checkout->setObjectName(QStringLiteral("ioCheckoutAction"));
     checkout->setToolTip(

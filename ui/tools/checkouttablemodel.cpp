@@ -1,12 +1,17 @@
 #include "checkouttablemodel.h"
 
+#include "core/commission/checkoutreport.h"
 #include "core/commission/checkoutrunner.h"
+#include "core/commission/commissionmessages.h"
+#include "core/commission/memorysnapshot.h"
 #include "ui/common/toolpalette.h"
 #include "ui/common/uitext.h"
 
 #include <QApplication>
 #include <QFont>
 #include <QPalette>
+
+#include <algorithm>
 
 namespace Fatek {
 
@@ -72,6 +77,81 @@ int CheckoutTableModel::columnCount(const QModelIndex &parent) const
     return parent.isValid() ? 0 : ColumnCount;
 }
 
+int CheckoutTableModel::nextCheck(const CheckoutPoint &point)
+{
+    const std::vector<double> &checks = point.analog.checks;
+    for (std::size_t i = 0; i < checks.size(); ++i) {
+        const auto read = std::find_if(
+            point.readings.begin(), point.readings.end(),
+            [&](const AnalogReading &r) { return r.percent == checks[i] && r.asFound; });
+        if (read == point.readings.end())
+            return static_cast<int>(i);
+    }
+    return -1;
+}
+
+QString CheckoutTableModel::checkText(const CheckoutPoint &point, int check)
+{
+    const AnalogScale &scale = point.analog;
+    if (check < 0 || check >= static_cast<int>(scale.checks.size()))
+        return {};
+    const double percent = scale.checks[static_cast<std::size_t>(check)];
+    const QString value = QString::fromStdString(scale.text(scale.expected(percent)));
+    //: An analog check: %1 per cent of the span, %2 the value expected there ("8.00 mA").
+    return tr("%1 %: %2 expected").arg(QString::number(percent, 'g', 4), value);
+}
+
+QString CheckoutTableModel::history(const CheckoutPoint &point)
+{
+    QStringList lines;
+    int n = 0;
+    for (const CheckoutAttempt &a : point.earlier) {
+        ++n;
+        QString line = tr("Attempt %1: %2, %3 by %4")
+                           .arg(n)
+                           .arg(translated(checkoutResultMessage(a.result)),
+                                CheckoutReport::timeText(a.time),
+                                a.engineer.isEmpty() ? tr("(no name)") : a.engineer);
+        const Message measured = point.measured(a);
+        if (!measured.empty())
+            line += QStringLiteral("; ") + translated(measured);
+        if (!a.comment.isEmpty())
+            line += QStringLiteral("; ") + a.comment;
+        lines << line;
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+
+QString CheckoutTableModel::stateText(int row) const
+{
+    const CheckoutPoint &p = m_runner->plan().points[static_cast<std::size_t>(row)];
+    const QString state
+        = isForced(row) ? tr("forced: seen?") : translated(checkoutResultMessage(p.result));
+    if (p.earlier.empty())
+        return state;
+    //: The state of a point tested again: %1 its result, %2 the attempt (2 for the second).
+    return tr("%1 (attempt %2)").arg(state).arg(p.earlier.size() + 1);
+}
+
+QString CheckoutTableModel::measuredText(int row) const
+{
+    const CheckoutPoint &p = m_runner->plan().points[static_cast<std::size_t>(row)];
+    const Message measured = p.measured();
+    QString text = measured.empty() ? QString() : translated(measured);
+    if (p.kind == CheckoutKind::Analog && p.result == CheckoutResult::Untested) {
+        // What to read next, and what it should be: the person sets the signal and presses V.
+        const QString next = !p.analog.isDefined() ? tr("no scale: import a plan CSV with it")
+                                                   : checkText(p, nextCheck(p));
+        if (!next.isEmpty())
+            text = text.isEmpty() ? next : tr("%1; next %2").arg(text, next);
+    }
+    const auto live = m_live.find(row);
+    if (p.result == CheckoutResult::Untested && live != m_live.end())
+        text = text.isEmpty() ? tr("now %1").arg(live->second)
+                              : tr("%1; now %2").arg(text).arg(live->second);
+    return text;
+}
+
 QVariant CheckoutTableModel::data(const QModelIndex &index, int role) const
 {
     if (!index.isValid() || index.row() >= rowCount())
@@ -88,27 +168,26 @@ QVariant CheckoutTableModel::data(const QModelIndex &index, int role) const
         case PointColumn: return QString::fromStdString(p.address.toString());
         case NameColumn: return p.name;
         case KindColumn: return translated(checkoutKindMessage(p.kind));
-        case StateColumn:
-            if (isForced(index.row()))
-                return tr("forced: seen?");
-            return translated(checkoutResultMessage(p.result));
-        case MeasuredColumn: {
-            const Message measured = p.measured();
-            QString text = measured.empty() ? QString() : translated(measured);
-            const auto live = m_live.find(index.row());
-            if (p.result == CheckoutResult::Untested && live != m_live.end())
-                text = text.isEmpty() ? tr("now %1").arg(live->second)
-                                      : tr("%1; now %2").arg(text).arg(live->second);
-            return text;
-        }
+        case StateColumn: return stateText(index.row());
+        case MeasuredColumn: return measuredText(index.row());
         case CommentColumn: return p.comment;
         }
         return {};
     case Qt::EditRole: return index.column() == CommentColumn ? QVariant(p.comment) : QVariant();
-    case Qt::ToolTipRole:
-        if (index.column() == NameColumn || index.column() == PointColumn)
-            return p.description.isEmpty() ? QVariant() : QVariant(p.description);
-        return {};
+    case Qt::ToolTipRole: {
+        // The point's comment, what crossed it, and every earlier attempt.
+        QStringList tip;
+        if (!p.description.isEmpty())
+            tip << p.description;
+        if (!p.changedWith.empty()) {
+            std::vector<Address> crossed = p.changedWith;
+            std::sort(crossed.begin(), crossed.end());
+            tip << translated(msg<MsgId::CheckoutChangedWith>(Snapshot::rangesText(crossed)));
+        }
+        if (const QString h = history(p); !h.isEmpty())
+            tip << h;
+        return tip.isEmpty() ? QVariant() : QVariant(tip.join(QLatin1Char('\n')));
+    }
     case Qt::FontRole:
         if (index.row() == m_current || index.column() == StateColumn) {
             QFont font = QApplication::font();
@@ -118,23 +197,40 @@ QVariant CheckoutTableModel::data(const QModelIndex &index, int role) const
         return {};
     case Qt::BackgroundRole: {
         const QPalette palette = QApplication::palette();
-        if (p.result == CheckoutResult::Passed)
-            return ToolPalette::passBackground(palette);
-        if (p.result == CheckoutResult::Failed)
-            return ToolPalette::errorBackground(palette);
         if (isForced(index.row()))
             return ToolPalette::blend(palette.color(QPalette::Base),
                                       ToolPalette::activeIndicator(palette), 0.25);
+        switch (p.result) {
+        case CheckoutResult::Passed: return ToolPalette::passBackground(palette);
+        case CheckoutResult::PassedWithRemark:
+            return ToolPalette::blend(palette.color(QPalette::Base),
+                                      ToolPalette::passBackground(palette), 0.6);
+        case CheckoutResult::Failed: return ToolPalette::errorBackground(palette);
+        case CheckoutResult::Deferred:
+            // Amber, between failed and passed: still to do, not wrong.
+            return ToolPalette::blend(palette.color(QPalette::Base),
+                                      ToolPalette::blend(ToolPalette::errorText(palette),
+                                                         ToolPalette::passText(palette), 0.5),
+                                      0.25);
+        case CheckoutResult::NotApplicable:
+            return ToolPalette::blend(palette.color(QPalette::Base),
+                                      ToolPalette::inactiveIndicator(palette), 0.3);
+        case CheckoutResult::Untested: return {};
+        }
         return {};
     }
     case Qt::ForegroundRole:
         if (index.column() != StateColumn)
             return {};
-        if (p.result == CheckoutResult::Passed)
+        switch (p.result) {
+        case CheckoutResult::Passed:
+        case CheckoutResult::PassedWithRemark:
             return ToolPalette::passText(QApplication::palette());
-        if (p.result == CheckoutResult::Failed)
-            return ToolPalette::errorText(QApplication::palette());
-        return {};
+        case CheckoutResult::Failed: return ToolPalette::errorText(QApplication::palette());
+        case CheckoutResult::NotApplicable:
+            return QApplication::palette().color(QPalette::Disabled, QPalette::Text);
+        default: return {};
+        }
     default: return {};
     }
 }

@@ -1,5 +1,7 @@
 #include "iocheckoutdialog.h"
 
+#include "checkoutkeys.h"
+#include "checkoutpunchdialog.h"
 #include "checkouttablemodel.h"
 #include "core/commission/checkoutfile.h"
 #include "core/commission/checkoutreport.h"
@@ -8,9 +10,9 @@
 #include "core/watch/osuser.h"
 #include "core/watch/safefile.h"
 #include "report/checkoutpdf.h"
+#include "ui/common/symbolnames.h"
 #include "ui/common/uitext.h"
 
-#include <QDateTime>
 #include <QDir>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -18,6 +20,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QTableView>
 #include <QTimer>
@@ -34,6 +37,10 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
 {
     setWindowTitle(tr("I/O Checkout"));
     m_runner->setAutoAdvance(true);
+    m_frame->setSettling([this] {
+        return m_runner->hasForced()
+               && (m_runner->isRunning() || m_runner->isRetryingRelease() || m_closing);
+    });
     QVBoxLayout *layout = m_frame->content();
 
     // The plan: its ranges and who it is for, side by side (a laptop's height goes to the table).
@@ -64,14 +71,27 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     m_new->setObjectName(QStringLiteral("newButton"));
     m_open = new QPushButton(tr("Open…"), this);
     m_open->setObjectName(QStringLiteral("openButton"));
+    m_import = new QPushButton(tr("Import…"), this);
+    m_import->setObjectName(QStringLiteral("importButton"));
+    m_import->setToolTip(tr("A plan from a CSV file, or from the names imported in the main "
+                            "window"));
+    m_import->setMenu(importMenu());
     m_start = new QPushButton(tr("Start"), this);
     m_start->setObjectName(QStringLiteral("startButton"));
     m_stop = new QPushButton(tr("Stop"), this);
     m_stop->setObjectName(QStringLiteral("stopButton"));
+    m_detailsButton = new QPushButton(tr("Details…"), this);
+    m_detailsButton->setObjectName(QStringLiteral("detailsButton"));
+    m_detailsButton->setToolTip(tr("Document ID, revision and who signs the report"));
+    m_punch = new QPushButton(tr("Punch List…"), this);
+    m_punch->setObjectName(QStringLiteral("punchButton"));
+    m_punch->setToolTip(tr("The failed and deferred points: owner, close-out, CSV"));
     m_report = new QPushButton(tr("Report…"), this);
     m_report->setObjectName(QStringLiteral("reportButton"));
     m_report->setToolTip(tr("Write the report as PDF or CSV"));
-    for (QPushButton *b : {m_new, m_open, m_start, m_stop, m_report})
+    m_report->setMenu(reportMenu());
+    for (QPushButton *b :
+         {m_new, m_open, m_import, m_start, m_stop, m_detailsButton, m_punch, m_report})
         buttons->addWidget(b);
     m_summary = new QLabel(this);
     m_summary->setObjectName(QStringLiteral("summary"));
@@ -83,8 +103,8 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     m_table->setModel(m_model);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    // Only the comment is edited: double-click or F2 (Space, F and N test the points).
-    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    // Only the comment is edited: a double-click, or F2 anywhere on the row (CheckoutKeys).
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked);
     // What was measured takes the room: times and values read whole on one line.
     QHeaderView *header = m_table->horizontalHeader();
     header->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -97,9 +117,9 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     m_table->verticalHeader()->hide();
     // Compact rows: a laptop's screen shows a cabinet's points at once.
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 8);
-    m_table->setToolTip(tr("Space: seen (an output is forced first), F: failed, N: next point, "
-                           "L / H: analog low / high end"));
+    m_table->setToolTip(CheckoutKeys::hint());
     m_table->installEventFilter(this);
+    m_keys = new CheckoutKeys(m_runner, m_frame, m_table, this);
     layout->addWidget(m_table, 1);
     auto *keys = new QLabel(m_table->toolTip(), this);
     keys->setObjectName(QStringLiteral("keys"));
@@ -115,12 +135,8 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
         if (!path.isEmpty())
             openCheckout(path);
     });
-    connect(m_report, &QPushButton::clicked, this, [this] {
-        const QString path = m_frame->chooseFile(
-            {true, tr("Checkout Report"), tr("PDF reports (*.pdf);;CSV files (*.csv)"), {}});
-        if (!path.isEmpty())
-            writeReport(path);
-    });
+    connect(m_detailsButton, &QPushButton::clicked, this, &IoCheckoutDialog::editDetails);
+    connect(m_punch, &QPushButton::clicked, this, &IoCheckoutDialog::showPunchList);
 
     // The table follows the point under test, and choosing a row tests that point.
     connect(m_runner, &CheckoutRunner::currentPointChanged, this, &IoCheckoutDialog::showCurrent);
@@ -147,7 +163,19 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
     connect(m_runner, &CheckoutRunner::outputReleased, this, [this](const Address &address) {
         showMessage(tr("%1 is released.").arg(QString::fromStdString(address.toString())), false);
         updateControls();
+        // Closing: gone once the last release is confirmed (and saved), from the event loop.
+        if (m_closing && !m_runner->hasForced())
+            QTimer::singleShot(0, this, [this] {
+                if (m_closing && !m_runner->hasForced() && m_frame->mayDiscard())
+                    QDialog::reject();
+            });
     });
+    connect(m_runner, &CheckoutRunner::refused, this, [this](const Message &message) {
+        showMessage(translated(message), true);
+        updateControls();
+    });
+    connect(m_runner, &CheckoutRunner::readAgain, this,
+            [this](const Message &message) { showMessage(translated(message), false); });
     connect(m_runner, &CheckoutRunner::runConfirmationNeeded, this,
             [this](int index, const Message &question) {
                 // Asked from the event loop, not from inside the runner's answer; what the answer
@@ -202,8 +230,37 @@ IoCheckoutDialog::IoCheckoutDialog(QWidget *parent)
 
 void IoCheckoutDialog::reject()
 {
+    if (m_runner->hasForced()) {
+        // Released first: the file is cleared once the PLC confirmed it, so the next Open has
+        // nothing to ask (a runner destroyed now would never hear the answer).
+        if (!m_closing && (m_runner->isRunning() || m_runner->isRetryingRelease())) {
+            m_closing = true;
+            stop();
+            if (m_runner->hasForced()) {
+                showMessage(tr("Releasing %1… the window closes once the PLC confirms it.")
+                                .arg(forcedText()),
+                            false);
+                return;
+            }
+        } else if (!m_frame->ask(tr("Close I/O Checkout"),
+                                 tr("%1 is not confirmed released on %2. Close anyway? The "
+                                    "checkout file keeps it listed: the next Open releases it.")
+                                     .arg(forcedText(), m_frame->targetText()))) {
+            m_closing = false; // kept open: it no longer closes by itself
+            updateControls();
+            return;
+        }
+    }
     if (m_frame->mayDiscard())
         QDialog::reject();
+}
+
+QString IoCheckoutDialog::forcedText() const
+{
+    QStringList forced;
+    for (const Address &a : m_runner->plan().forced)
+        forced << QString::fromStdString(a.toString());
+    return forced.join(QStringLiteral(", "));
 }
 
 IoCheckoutDialog::~IoCheckoutDialog() = default;
@@ -227,13 +284,7 @@ QString IoCheckoutDialog::messageText() const
 
 QString IoCheckoutDialog::pointText(int index) const
 {
-    const auto &points = m_runner->plan().points;
-    if (index < 0 || index >= static_cast<int>(points.size()))
-        return {};
-    const CheckoutPoint &p = points[static_cast<std::size_t>(index)];
-    return p.name.isEmpty()
-               ? QString::fromStdString(p.address.toString())
-               : tr("%1 (%2)").arg(QString::fromStdString(p.address.toString()), p.name);
+    return CheckoutKeys::pointText(m_runner->plan(), index);
 }
 
 void IoCheckoutDialog::newCheckout()
@@ -243,6 +294,7 @@ void IoCheckoutDialog::newCheckout()
     m_runner->setFilePath({});
     m_model->planReset();
     m_loaded = false;
+    m_details = CheckoutInfo{};
     m_frame->clearMessage();
     updateControls();
     m_ranges->setFocus();
@@ -253,26 +305,22 @@ void IoCheckoutDialog::start()
     if (!m_frame->target().isDirect() || m_runner->isRunning())
         return;
     if (!m_loaded) {
-        const auto plan = CheckoutPlan::fromRanges(m_ranges->text());
+        const auto plan
+            = CheckoutPlan::fromRanges(m_ranges->text(), m_symbols ? &m_symbols->table() : nullptr);
         if (!plan) {
             showMessage(translated(plan.error().message), true);
             return;
         }
+        loadPlan(plan.value(), QString(), false);
+    }
+    if (m_runner->filePath().isEmpty()) {
         const QString path
             = m_frame->chooseFile({true, tr("Save Checkout"), tr("Checkouts (*.json)"), {}});
         if (path.isEmpty())
             return;
-        CheckoutPlan p = plan.value();
-        p.info.project = m_project->text();
-        p.info.customer = m_customer->text();
-        p.info.engineer = m_engineer->text();
-        p.info.station = m_frame->target().station();
-        p.info.created = QDateTime::currentDateTimeUtc();
-        m_runner->setPlan(std::move(p));
         m_runner->setFilePath(path);
-        m_model->planReset();
-        m_loaded = true;
     }
+    applyInfo();
     m_runner->setEngineer(m_engineer->text());
     showMessage(tr("Reading the PLC's status…"), false);
     m_runner->start();
@@ -299,6 +347,7 @@ bool IoCheckoutDialog::openCheckout(const QString &path)
     m_project->setText(plan->info.project);
     m_customer->setText(plan->info.customer);
     m_engineer->setText(plan->info.engineer.isEmpty() ? OsUser::name() : plan->info.engineer);
+    m_details = plan->info;
     m_runner->setPlan(std::move(plan.value()));
     m_runner->setFilePath(path);
     m_model->planReset();
@@ -306,22 +355,17 @@ bool IoCheckoutDialog::openCheckout(const QString &path)
     showMessage(tr("Opened %1.").arg(QDir::toNativeSeparators(path)), false);
     updateControls();
     if (m_runner->hasForced()) {
-        QStringList forced;
-        for (const Address &a : m_runner->plan().forced)
-            forced << QString::fromStdString(a.toString());
         const QString question = tr("The checkout left %1 forced on %2. Release them now?")
-                                     .arg(forced.join(QStringLiteral(", ")), m_frame->targetText());
+                                     .arg(forcedText(), m_frame->targetText());
         if (m_frame->target().isDirect() && m_frame->ask(tr("Release Outputs"), question))
             start(); // start() releases them first
         else
-            showMessage(tr("Still forced: %1 (Start releases them).")
-                            .arg(forced.join(QStringLiteral(", "))),
-                        true);
+            showMessage(tr("Still forced: %1 (Start releases them).").arg(forcedText()), true);
     }
     return true;
 }
 
-bool IoCheckoutDialog::writeReport(const QString &path)
+bool IoCheckoutDialog::writeReport(const QString &path, CheckoutReport::LineEnds ends)
 {
     const CheckoutReport report = CheckoutReport::of(m_runner->plan());
     const auto text = [](const Message &m) {
@@ -333,7 +377,7 @@ bool IoCheckoutDialog::writeReport(const QString &path)
         if (!s)
             reason = translated(s.error().message);
     } else {
-        reason = SafeFile::write(path, report.toCsv(text));
+        reason = SafeFile::write(path, report.toCsv(text, ends));
     }
     if (!reason.isEmpty()) {
         showMessage(reason, true);
@@ -345,77 +389,10 @@ bool IoCheckoutDialog::writeReport(const QString &path)
 
 bool IoCheckoutDialog::eventFilter(QObject *watched, QEvent *event)
 {
-    if (watched == m_table && event->type() == QEvent::KeyPress) {
-        auto *key = static_cast<QKeyEvent *>(event);
-        const int index = m_runner->currentPoint();
-        // Plain keys only: Ctrl+N and the like stay the window's.
-        if ((key->modifiers() & ~Qt::KeyboardModifiers(Qt::KeypadModifier)) != Qt::NoModifier)
-            return QDialog::eventFilter(watched, event);
-        switch (key->key()) {
-        case Qt::Key_Space: pressSeen(index); return true;
-        case Qt::Key_F: pressFailed(index); return true;
-        case Qt::Key_N: m_runner->nextPoint(); return true;
-        case Qt::Key_L:
-        case Qt::Key_H:
-            if (index >= 0
-                && m_runner->plan().points[static_cast<std::size_t>(index)].kind
-                       == CheckoutKind::Analog)
-                m_runner->recordAnalog(index, key->key() == Qt::Key_H);
-            return true;
-        default: break;
-        }
-    }
+    if (watched == m_table && event->type() == QEvent::KeyPress && m_loaded
+        && m_keys->handle(static_cast<QKeyEvent *>(event)))
+        return true;
     return QDialog::eventFilter(watched, event);
-}
-
-void IoCheckoutDialog::pressSeen(int index)
-{
-    if (index < 0 || !m_loaded)
-        return;
-    const CheckoutPoint &p = m_runner->plan().points[static_cast<std::size_t>(index)];
-    if (p.kind == CheckoutKind::Output) {
-        if (m_runner->outputUnderTest() == index)
-            m_runner->answerOutput(true);
-        else
-            force(index);
-        return;
-    }
-    if (p.kind == CheckoutKind::Input)
-        m_runner->record(index, CheckoutResult::Passed);
-}
-
-void IoCheckoutDialog::pressFailed(int index)
-{
-    if (index < 0 || !m_loaded)
-        return;
-    if (m_runner->outputUnderTest() == index)
-        m_runner->answerOutput(false);
-    else
-        m_runner->record(index, CheckoutResult::Failed);
-}
-
-void IoCheckoutDialog::force(int index)
-{
-    if (!m_frame->target().isDirect() || !m_runner->isRunning())
-        return;
-    if (m_runner->outputUnderTest() >= 0) {
-        showMessage(tr("Answer for %1 first (Space: seen, F: not seen).")
-                        .arg(pointText(m_runner->outputUnderTest())),
-                    true);
-        return;
-    }
-    if (m_frame->target().isReadOnly()) {
-        showMessage(tr("Operator mode: outputs are not forced."), true);
-        return;
-    }
-    const QString question
-        = tr("Force %1 on at %2? It stays on until you answer, then it is released.")
-              .arg(pointText(index), m_frame->targetText());
-    if (!m_frame->ask(tr("Force Output"), question)) {
-        showMessage(tr("Not forced: nothing was written."), false);
-        return;
-    }
-    m_runner->forceOutput(index);
 }
 
 void IoCheckoutDialog::showCurrent(int index)
@@ -443,17 +420,51 @@ void IoCheckoutDialog::updateControls()
 {
     const bool running = m_runner->isRunning();
     for (QLineEdit *edit : {m_ranges, m_project, m_customer, m_engineer})
-        edit->setEnabled(!running);
-    m_ranges->setEnabled(!running && !m_loaded);
-    m_start->setEnabled(m_frame->target().isDirect() && !running);
+        edit->setEnabled(!running && !m_closing);
+    m_ranges->setEnabled(!running && !m_loaded && !m_closing);
+    m_start->setEnabled(m_frame->target().isDirect() && !running && !m_closing);
     m_stop->setEnabled(running);
     // Another plan would forget an output whose release is still being tried.
-    m_new->setEnabled(!running && !m_runner->isRetryingRelease());
-    m_open->setEnabled(!running && !m_runner->isRetryingRelease());
+    const bool mayReplace = !running && !m_runner->isRetryingRelease() && !m_closing;
+    m_new->setEnabled(mayReplace);
+    m_open->setEnabled(mayReplace);
+    m_import->setEnabled(mayReplace);
+    // The plan's info is the runner's while it runs: Stop first.
+    m_detailsButton->setEnabled(!running && !m_closing);
+    m_punch->setEnabled(m_loaded);
     m_report->setEnabled(m_loaded);
     const CheckoutPlan &plan = m_runner->plan();
     m_summary->setText(plan.points.empty() ? QString()
                                            : translated(CheckoutReport::of(plan).summary));
+}
+
+QMenu *IoCheckoutDialog::reportMenu()
+{
+    auto *menu = new QMenu(this);
+    menu->setObjectName(QStringLiteral("reportMenu"));
+    const auto add = [this, menu](const QString &text, const char *name, const QString &filter,
+                                  CheckoutReport::LineEnds ends) {
+        QAction *action = menu->addAction(text, this, [this, filter, ends] {
+            const QString path = m_frame->chooseFile({true, tr("Checkout Report"), filter, {}});
+            if (!path.isEmpty())
+                writeReport(path, ends);
+        });
+        action->setObjectName(QLatin1String(name));
+    };
+    add(tr("PDF…"), "reportPdfAction", tr("PDF reports (*.pdf)"), CheckoutReport::LineEnds::Lf);
+    add(tr("CSV…"), "reportCsvAction", tr("CSV files (*.csv)"), CheckoutReport::LineEnds::Lf);
+    // Excel on Windows reads either; some programs there want CRLF.
+    add(tr("CSV with Windows Line Ends…"), "reportCsvCrlfAction", tr("CSV files (*.csv)"),
+        CheckoutReport::LineEnds::CrLf);
+    return menu;
+}
+void IoCheckoutDialog::showPunchList()
+{
+    if (!m_punchDialog)
+        m_punchDialog = new CheckoutPunchDialog(m_runner, m_frame, this);
+    m_punchDialog->show();
+    m_punchDialog->raise();
+    m_punchDialog->activateWindow();
 }
 
 } // namespace Fatek

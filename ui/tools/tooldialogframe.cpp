@@ -5,7 +5,9 @@
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QFileDialog>
+#include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -107,6 +109,19 @@ bool ToolDialogFrame::mayDiscard() const
     if (box.clickedButton() == save)
         return m_saveUnsaved && m_saveUnsaved();
     return false;
+}
+
+std::optional<QString> ToolDialogFrame::askText(const QString &title, const QString &question,
+                                                const QString &text) const
+{
+    if (m_textAsker)
+        return m_textAsker(question, text);
+    bool ok = false;
+    const QString answer
+        = QInputDialog::getText(m_dialog, title, question, QLineEdit::Normal, text, &ok);
+    if (!ok)
+        return std::nullopt;
+    return answer;
 }
 
 QString ToolDialogFrame::chooseFile(const FileQuestion &question) const

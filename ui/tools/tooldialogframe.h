@@ -7,6 +7,7 @@
 #include <QString>
 
 #include <functional>
+#include <optional>
 
 class QDialog;
 class QLabel;
@@ -39,6 +40,10 @@ public:
     };
     // Returns the chosen path; empty: the person cancelled.
     using FileChooser = std::function<QString(const FileQuestion &question)>;
+    // A line of text the dialog asks for (a remark, a reason, a prefix): the question and the
+    // text it starts with; nothing: the person cancelled.
+    using TextAsker
+        = std::function<std::optional<QString>(const QString &question, const QString &text)>;
 
     // Lays `dialog` out; `cancel` stops its job when it is closed. The message line keeps
     // `messageLines` lines and is named `messageName` (tests and the translation check find it).
@@ -75,6 +80,17 @@ public:
     // Whether the dialog holds something unsaved now.
     bool hasUnsaved() const { return m_describeUnsaved && !m_describeUnsaved().isEmpty(); }
 
+    void setTextAsker(TextAsker asker) { m_textAsker = std::move(asker); }
+    // An input dialog (or the asker's answer); nothing: cancelled.
+    std::optional<QString> askText(const QString &title, const QString &question,
+                                   const QString &text = {}) const;
+
+    // What the dialog must finish before it goes, as the main window asks before it quits: true
+    // while it holds something of the PLC's it is undoing (an output forced, being released). The
+    // dialog's reject() starts it and closes the dialog once it is done; the window closes after.
+    void setSettling(std::function<bool()> settling) { m_settling = std::move(settling); }
+    bool isSettling() const { return m_settling && m_settling(); }
+
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
     // The file dialog (or the chooser's answer); empty: cancelled.
     QString chooseFile(const FileQuestion &question) const;
@@ -87,6 +103,8 @@ private:
     PlcTarget m_target;
     Confirmer m_confirmer;
     FileChooser m_chooser;
+    TextAsker m_textAsker;
+    std::function<bool()> m_settling;
     std::function<QString()> m_describeUnsaved;
     std::function<bool()> m_saveUnsaved;
 };
