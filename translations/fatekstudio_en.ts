@@ -2629,8 +2629,8 @@
             <translation>%1 is not on the punch list</translation>
         </message>
         <message>
-            <source>The PLC refuses %1 (%2): take {3:it|them} out of the plan. Nothing was forced.</source>
-            <translation>The PLC refuses %1 (%2): take {3:it|them} out of the plan. Nothing was forced.</translation>
+            <source>The PLC refuses %1 (%2): %3 {3:point|points} to take out of the plan. Nothing was forced.</source>
+            <translation>The PLC refuses %1 (%2): %3 {3:point|points} to take out of the plan. Nothing was forced.</translation>
         </message>
         <message>
             <source>%1 are read again</source>

@@ -2626,8 +2626,8 @@
             <translation>%1 不在待辦清單上</translation>
         </message>
         <message>
-            <source>The PLC refuses %1 (%2): take {3:it|them} out of the plan. Nothing was forced.</source>
-            <translation>PLC 拒絕 %1（%2）：請將其自計畫中移除。沒有強制任何輸出。</translation>
+            <source>The PLC refuses %1 (%2): %3 {3:point|points} to take out of the plan. Nothing was forced.</source>
+            <translation>PLC 拒絕 %1（%2）：請將這 %3 個點自計畫中移除。沒有強制任何輸出。</translation>
         </message>
         <message>
             <source>%1 are read again</source>

@@ -365,8 +365,8 @@ FATEK_MSG(CheckoutNotOnPunchList, 1,
 // The plan against the PLC: %1 the points, %2 the PLC's answer, %3 how many.
 FATEK_MSG(CheckoutPointsRefused, 3,
           QT_TRANSLATE_NOOP("Fatek::Message",
-                            "The PLC refuses %1 (%2): take {3:it|them} out of the plan. Nothing "
-                            "was forced."))
+                            "The PLC refuses %1 (%2): %3 {3:point|points} to take out of the "
+                            "plan. Nothing was forced."))
 FATEK_MSG(CheckoutReadAgain, 1, QT_TRANSLATE_NOOP("Fatek::Message", "%1 are read again"))
 FATEK_MSG(CheckoutCsvChecks, 1,
           QT_TRANSLATE_NOOP("Fatek::Message",

@@ -67,7 +67,7 @@ namespace {
 // The language menu also names "English" in English (each language in its own words).
 const QRegularExpression allowed(QStringLiteral(
     R"(\bFBs-\d+M[ACU](?:/MU)?\b|\bFATEK Studio\b|\bHome Assistant\b|\b(?:FATEK|FACON|Windows|SQLite|PostgreSQL|TCP|UDP|IP|RTT|RS|RTS|CTS|XON|XOFF|STX|ETX|NUL|LRC|CRC|)"
-    R"(ASCII|BCD|CSV|JSON|PNG|PLC|ID|OS|HMI|ROM|MQTT|TLS|CA|URL|RUN|STOP|ON|OFF|MA|MU|MC|Ctrl|Shift|)"
+    R"(ASCII|BCD|CSV|JSON|PDF|PNG|PLC|ID|OS|HMI|ROM|MQTT|TLS|CA|URL|RUN|STOP|ON|OFF|MA|MU|MC|Ctrl|Shift|)"
     R"(Enter|ms|Hz|IPv6)\b|「[a-z][A-Za-z]*」|\$[A-Z_]+\b|~/\.\w+|\b(?:mqtts?|tcp|udp|serial)://[^\s，。）]*|\{"\w+":[^}]*\}|)"
     R"(\b(?:[XYMSTCRDF]|W[XYMSTC]|DW[XYMSTC]|RT|RC|DRT|DRC|DR|DD|DF)(?:\d+)?\b|)"
     R"(\*\.\w+|--[a-z-]+|\b0x[0-9A-Fa-f]+\b|\b[0-9A-F]+h\b|\b[A-Z]{1,3}\d+\b|\b(?=[0-9A-F]*\d)[0-9A-F]{2,}\b)"));
