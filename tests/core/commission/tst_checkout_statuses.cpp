@@ -305,8 +305,9 @@ void TestCheckoutStatuses::pointsThePlcRefusesAreNamed()
     QTRY_COMPARE_WITH_TIMEOUT(refused.count(), 1, 30000);
     const QString text = englishText(refused.at(0).at(0).value<Message>());
     QVERIFY2(text.startsWith(QLatin1String("The PLC refuses X9999 (")), qPrintable(text));
-    QVERIFY2(text.endsWith(QLatin1String("): 1 point to take out of the plan. Nothing was forced.")),
-             qPrintable(text));
+    QVERIFY2(
+        text.endsWith(QLatin1String("): 1 point to take out of the plan. Nothing was forced.")),
+        qPrintable(text));
     QVERIFY(!runner.isRunning());
     QTest::qWait(300);
     QCOMPARE(started.count(), 0);
