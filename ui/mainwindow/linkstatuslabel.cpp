@@ -3,6 +3,8 @@
 #include "ui/common/uitext.h"
 #include "ui/connection/connection.h"
 
+#include <algorithm>
+
 namespace Fatek {
 
 LinkStatusLabel::LinkStatusLabel(QWidget *parent)
@@ -43,7 +45,7 @@ void LinkStatusLabel::showConnection(const Connection *c)
         // Too long for its room: the state (its silent stations) gives way, the figures stay.
         const QString words = c->stateText();
         whole = summary(words);
-        const int over = fontMetrics().horizontalAdvance(whole) - m_room;
+        const int over = fontMetrics().horizontalAdvance(whole) - effectiveRoom();
         m_summary = over <= 0
                         ? whole
                         : summary(fontMetrics().elidedText(
@@ -54,7 +56,7 @@ void LinkStatusLabel::showConnection(const Connection *c)
                       : c->linkText() + QLatin1Char('\n') + translated(c->linkReason());
     if (!whole.isEmpty() && whole != m_summary)
         tip = whole + QLatin1Char('\n') + tip;
-    showSummary(m_summary, tip);
+    showSummary(m_summary, tip, whole);
 }
 
 void LinkStatusLabel::setRoom(int px)
@@ -62,18 +64,60 @@ void LinkStatusLabel::setRoom(int px)
     if (px == m_room)
         return;
     m_room = px;
-    showSummary(m_summary, m_tip);
+    showElided();
+    updateGeometry();
 }
 
-void LinkStatusLabel::showSummary(const QString &summary, const QString &tip)
+void LinkStatusLabel::showSummary(const QString &summary, const QString &tip, const QString &whole)
 {
     m_summary = summary;
     m_tip = tip;
-    const QString shown = fontMetrics().elidedText(summary, Qt::ElideRight, m_room);
-    setText(shown);
-    setToolTip(shown == summary ? tip
-               : tip.isEmpty()  ? summary
-                                : summary + QLatin1Char('\n') + tip);
+    // The label asks for the whole text (what it would show with room enough), not for what it
+    // shows now: asking for the shortened text would keep it short.
+    const QString wanted = whole.isEmpty() ? summary : whole;
+    const bool resize = wanted != m_wanted;
+    m_wanted = wanted;
+    showElided();
+    if (resize)
+        updateGeometry();
+}
+
+int LinkStatusLabel::effectiveRoom() const
+{
+    // Before the first layout the label has no width of its own yet: the room decides.
+    if (!isVisible())
+        return m_room;
+    return std::max(0, std::min(m_room, contentsRect().width()));
+}
+
+void LinkStatusLabel::showElided()
+{
+    const QString shown = fontMetrics().elidedText(m_summary, Qt::ElideRight, effectiveRoom());
+    if (shown != text())
+        setText(shown);
+    setToolTip(shown == m_summary ? m_tip
+               : m_tip.isEmpty()  ? m_summary
+                                  : m_summary + QLatin1Char('\n') + m_tip);
+}
+
+QSize LinkStatusLabel::sizeHint() const
+{
+    const int margins = contentsMargins().left() + contentsMargins().right();
+    const int wanted = fontMetrics().horizontalAdvance(m_wanted) + margins + 1;
+    return {std::max(0, std::min(wanted, m_room + margins)), QLabel::sizeHint().height()};
+}
+
+QSize LinkStatusLabel::minimumSizeHint() const
+{
+    // Room for a few words and the ellipsis; the rest goes to the message beside it.
+    return {std::min(sizeHint().width(), fontMetrics().horizontalAdvance(QLatin1Char('x')) * 12),
+            QLabel::minimumSizeHint().height()};
+}
+
+void LinkStatusLabel::resizeEvent(QResizeEvent *event)
+{
+    QLabel::resizeEvent(event);
+    showElided();
 }
 
 } // namespace Fatek
