@@ -219,7 +219,12 @@ class TestUiHistory : public QObject
                 if (t >= m_markedMs)
                     continue; // recorded by the studio itself, checked below
                 const auto stored = m_prefill.good.find(t);
-                if (stored == m_prefill.good.end()) {
+                // The point the line enters the range with (the value held from before the
+                // range's start) and its join to the live line are not stored samples, even when
+                // the range starts on a whole second where one is stored (CI under ASan).
+                const bool edge = i == 0 || i + 1 == points.size();
+                if (stored == m_prefill.good.end()
+                    || (edge && !qFuzzyCompare(points.at(i).y(), stored->second))) {
                     ++misses;
                     continue;
                 }

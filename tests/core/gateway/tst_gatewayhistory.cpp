@@ -281,6 +281,11 @@ void TestGatewayHistory::killedGatewayLosesAtMostTheLastSecond()
     gateway.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     gateway.start(QStringLiteral(FATEK_GATEWAY_PATH), {config.fileName()});
     QVERIFY(gateway.waitForStarted(5000));
+    // Polling and recording before the first value counts: a started process has not yet
+    // connected to the PLC or opened its store (under ASan that took longer than a poll, and
+    // the first value was never read, CI).
+    m_plc->setValue(addr("R100"), 999);
+    QTRY_VERIFY_WITH_TIMEOUT(!samplesOf(QStringLiteral("line1/1-R100")).empty(), 30000);
     // A new value every 100 ms (the poll interval) for 3 s; when each was set.
     QList<std::pair<qint64, int>> set;
     for (int i = 0; i < 30; ++i) {
