@@ -287,14 +287,17 @@ Status CheckoutRunner::record(int index, CheckoutResult result, const QString &c
     if (result == CheckoutResult::Passed && !retest && !p->changedWith.empty())
         return refuse(
             msg<MsgId::CheckoutCrossedCannotPass>(name, Snapshot::rangesText(p->changedWith)));
-    // The output under test answered by hand (deferred, not applicable): released at once, as
-    // answerOutput() does.
+    // The output under test answered by hand (passed with remark, deferred, not applicable):
+    // released at once, as answerOutput() does.
     const bool forced = index == m_outputUnderTest;
     if (forced)
         m_outputUnderTest = -1;
     // A new test keeps the old one; measurements of the untested attempt stay with it.
     archiveAttempt(*p);
     markResult(*p, result);
+    // Seen in the field with something to note: the answer is part of the record.
+    if (forced && (result == CheckoutResult::Passed || result == CheckoutResult::PassedWithRemark))
+        p->seen = true;
     if (!comment.isNull())
         p->comment = comment;
     changed(index);

@@ -73,10 +73,9 @@ bool CheckoutKeys::handle(QKeyEvent *key)
     case Qt::Key_R: pressWithText(index, false); return true;
     case Qt::Key_D: pressWithText(index, true); return true;
     case Qt::Key_A:
-        if (!refuseWhileForced(index)) {
-            if (const Status s = m_runner->record(index, CheckoutResult::NotApplicable); !s)
-                refused(translated(s.error().message));
-        }
+        // Also the forced output: the runner records it and releases it.
+        if (const Status s = m_runner->record(index, CheckoutResult::NotApplicable); !s)
+            refused(translated(s.error().message));
         return true;
     case Qt::Key_T: pressRetest(index); return true;
     case Qt::Key_V: readAnalog(index, mods == Qt::ShiftModifier); return true;
@@ -130,8 +129,7 @@ void CheckoutKeys::pressFailed(int index)
 
 void CheckoutKeys::pressWithText(int index, bool deferred)
 {
-    if (refuseWhileForced(index))
-        return;
+    // The forced output too ("seen, the lamp is dim"): recorded, then released by the runner.
     const CheckoutPoint &p = m_runner->plan().points[static_cast<std::size_t>(index)];
     const QString title = deferred ? tr("Deferred") : tr("Passed with Remark");
     const QString question

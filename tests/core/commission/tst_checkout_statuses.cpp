@@ -39,6 +39,7 @@ private Q_SLOTS:
 
     void statusesNeedTheirText();
     void blankEngineerIsRefused();
+    void forcedOutputPassedWithRemark();
     void retestKeepsEarlierAttempts();
     void crossedWiringCannotPassClean();
     void punchListOwnerAndCloseOut();
@@ -104,6 +105,27 @@ void TestCheckoutStatuses::blankEngineerIsRefused()
     QSignalSpy started(&runner, &CheckoutRunner::started);
     runner.start();
     QTRY_COMPARE_WITH_TIMEOUT(started.count(), 1, 30000);
+}
+
+void TestCheckoutStatuses::forcedOutputPassedWithRemark()
+{
+    // "Seen, but the lamp is dim": recorded on the forced output, which is released at once.
+    CheckoutRunner runner;
+    m_sim.startRunner(runner, CheckoutPlan::fromRanges(QStringLiteral("Y0..Y1")).value());
+    QSignalSpy forced(&runner, &CheckoutRunner::outputForced);
+    runner.forceOutput(0);
+    QTRY_COMPARE_WITH_TIMEOUT(forced.count(), 1, 30000);
+    QCOMPARE(m_sim.plc->isDisabled(addr("Y0")), std::optional<bool>(true));
+    QVERIFY(runner.record(0, CheckoutResult::PassedWithRemark, QStringLiteral("lamp dim")).ok());
+    QCOMPARE(runner.outputUnderTest(), -1);
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim.plc->isDisabled(addr("Y0")) == std::optional<bool>(false),
+                             30000);
+    QCOMPARE(m_sim.plc->value(addr("Y0")), std::optional<std::uint32_t>(0));
+    QTRY_VERIFY_WITH_TIMEOUT(!runner.hasForced(), 30000);
+    const CheckoutPoint &y0 = pointOf(runner, "Y0");
+    QCOMPARE(y0.result, CheckoutResult::PassedWithRemark);
+    QCOMPARE(y0.seen, std::optional<bool>(true));
+    QCOMPARE(y0.attempts(), 1);
 }
 
 void TestCheckoutStatuses::retestKeepsEarlierAttempts()
