@@ -184,6 +184,7 @@ private:
     int addTableHeader(const std::vector<Message> &titles, const std::vector<qreal> &x)
     {
         std::vector<Cell> cells;
+        cells.reserve(titles.size());
         for (const Message &t : titles)
             cells.push_back({text(t), Qt::black, true});
         return m_layout.addHeader(rowHeight(cells, x), rowPainter(cells, x, true));
@@ -290,6 +291,7 @@ private:
         const qreal signHeight = std::max(mm(13), rowHeight(rows[0], x));
         const PagedLayout::Paint titlePaint = rowPainter(titles, x, true);
         std::vector<PagedLayout::Paint> rowPaints;
+        rowPaints.reserve(rows.size());
         for (const std::vector<Cell> &row : rows)
             rowPaints.push_back(rowPainter(row, x, false));
         m_layout.add(

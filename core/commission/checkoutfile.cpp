@@ -138,7 +138,7 @@ Problem readAddresses(JsonObjectReader &r, const QString &key, std::vector<Addre
     const QJsonArray array = r.array(key);
     if (r.problem)
         return r.problem;
-    for (const QJsonValue &v : array) {
+    for (const auto &v : array) {
         const auto address = Address::parse(v.toString().toStdString());
         if (!v.isString() || !address)
             return badValue(key, v.toVariant().toString());
@@ -236,7 +236,8 @@ Problem readScale(JsonObjectReader &r, AnalogScale *a)
     a->tolerancePercent = s.boolean(QStringLiteral("tolerancePercent"), false);
     if (s.has(QStringLiteral("checks"))) {
         a->checks.clear();
-        for (const QJsonValue &v : s.array(QStringLiteral("checks"))) {
+        const QJsonArray checks = s.array(QStringLiteral("checks"));
+        for (const auto &v : checks) {
             if (!v.isDouble() || v.toDouble() < 0 || v.toDouble() > 100) {
                 s.problem = badValue(QStringLiteral("checks"), v.toVariant().toString());
                 break;
