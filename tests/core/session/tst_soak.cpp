@@ -259,7 +259,15 @@ void TestSoak::soak()
 
     qint64 rssWarm = 0;
     quint64 goodAtHalf = 0;
-    while (clock.elapsed() < seconds * 1000) {
+    // The soak's length, and on until every kind of fault has been injected at least once: the
+    // faults are random per answer, and a slow build (TSan: 54 answers in 5 s) may see no spike
+    // in that time. Bounded: a fault kind still missing after six times as long fails below.
+    const auto everyFaultSeen = [&server] {
+        const SimServer::Counters c = server.counters();
+        return c.faultyAnswers > 0 && c.spikes > 0 && c.garbageBytes > 0;
+    };
+    while (clock.elapsed() < seconds * 1000
+           || (!everyFaultSeen() && clock.elapsed() < seconds * 6000)) {
         QTest::qWait(100);
         if (rssWarm == 0 && clock.elapsed() > seconds * 250)
             rssWarm = residentKb();
