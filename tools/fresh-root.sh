@@ -7,8 +7,10 @@
 # Environment: FRESH_ROOT_MIRROR (Debian mirror; default: the host's own, see host_mirror),
 # FRESH_ROOT_CCACHE=DIR (a host directory bind-mounted as the root's ccache directory, and
 # FATEK_CCACHE=1: repeated runs reuse the compiler's work; CI's cold figure is without it),
-# FRESH_ROOT_WIN_PREFIX (default ~/.cache/fatek-studio/qt6-mingw: the cross-built Qt of
-# tools/windows/build-qt.sh, mounted read-only when it is there), FRESH_ROOT_KEEP=1, FRESH_ROOT_DIR.
+# FRESH_ROOT_WIN_PREFIX (the host's cross-built Qt of tools/windows/build-qt.sh, mounted read-only
+# when given and it holds the current recipe; by default none, as on a new machine: the Windows
+# part then unpacks ../shared/windows' packed prefix), FATEK_TIDY_COMMITS (passed on to
+# tools/tidy.sh --changed), FRESH_ROOT_KEEP=1, FRESH_ROOT_DIR.
 #
 # The untouched debootstrap output is cached as a tarball in ~/.cache/fatek-studio/ and made again
 # when older than 30 days; the root itself is unpacked anew every run and removed afterwards
@@ -39,16 +41,16 @@ if [ "${1:-}" = --inside ]; then
         win_prefix=$FRESH_ROOT_WIN_PREFIX
     fi
     exec chroot "$root" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-        HOME=/root LANG=C.UTF-8 TERM="${TERM:-dumb}" CI="${CI:-}" FATEK_CCACHE="$ccache" FATEK_WIN_PREFIX="${win_prefix:-/nonexistent}" \
+        HOME=/root LANG=C.UTF-8 TERM="${TERM:-dumb}" CI="${CI:-}" FATEK_TIDY_COMMITS="${FATEK_TIDY_COMMITS:-}" FATEK_CCACHE="$ccache" FATEK_WIN_PREFIX="${win_prefix:-/root/.cache/fatek-studio/qt6-mingw}" \
         /bin/bash -c 'cd "$0" && exec "$@"' "$dest" "$@"
 fi
 
 [ $# -gt 0 ] || set -- tools/test.sh
 if [ "$(id -u)" -ne 0 ]; then
-    exec sudo --preserve-env=CI,FRESH_ROOT_KEEP,FRESH_ROOT_DIR,FRESH_ROOT_MIRROR,FRESH_ROOT_CCACHE,FRESH_ROOT_WIN_PREFIX "$0" "$@"
+    exec sudo --preserve-env=CI,FATEK_TIDY_COMMITS,FRESH_ROOT_KEEP,FRESH_ROOT_DIR,FRESH_ROOT_MIRROR,FRESH_ROOT_CCACHE,FRESH_ROOT_WIN_PREFIX "$0" "$@"
 fi
 repo=$(cd "$(dirname "$0")/.." && pwd)
-export FRESH_ROOT_WIN_PREFIX=${FRESH_ROOT_WIN_PREFIX:-$HOME/.cache/fatek-studio/qt6-mingw}
+export FRESH_ROOT_WIN_PREFIX=${FRESH_ROOT_WIN_PREFIX:-}
 say() { echo "== fresh-root: $*"; }
 
 if ! command -v debootstrap >/dev/null; then
@@ -141,7 +143,8 @@ mkdir -p "$root$dest"
 git -C "$repo" ls-files -z --cached --others --exclude-standard |
     tar -C "$repo" --null --ignore-failed-read -T - -cf - 2>/dev/null | tar -C "$root$dest" -xf -
 if [ -d "$repo/../shared" ]; then
-    cp -a "$repo/../shared" "$root/work/shared"
+    # (-L: a ../shared that is a symbolic link, or holds some, is copied as what it points to.)
+    cp -aL "$repo/../shared" "$root/work/shared"
 fi
 installed=$(chroot "$root" dpkg-query -W -f='${Package}\n' | wc -l)
 say "$installed Debian packages installed; root ready after $((SECONDS / 60))m$((SECONDS % 60))s; running $* in $dest"

@@ -11,18 +11,15 @@
 #include <unistd.h>
 #endif
 #ifdef Q_OS_WIN
-#include <windows.h>
+#include "consolecontrol.h"
 #endif
 
 namespace Fatek {
 
+#ifdef Q_OS_UNIX
 namespace {
 std::function<void()> g_onQuit;
 QPointer<QObject> g_context;
-} // namespace
-
-#ifdef Q_OS_UNIX
-namespace {
 // Self-pipe: the handler only writes the signal's number (async-signal-safe), the event loop
 // reads it.
 int g_signalPipe[2] = {-1, -1};
@@ -68,33 +65,9 @@ void onReloadSignal(QObject *, std::function<void()> onReload)
     sigaction(SIGHUP, &action, nullptr);
 }
 #elif defined(Q_OS_WIN)
-namespace {
-BOOL WINAPI onConsoleControl(DWORD event)
-{
-    // Runs on a thread of its own: hand over to the context's thread.
-    if (g_context)
-        QMetaObject::invokeMethod(
-            g_context.data(),
-            [] {
-                if (g_onQuit)
-                    g_onQuit();
-            },
-            Qt::QueuedConnection);
-    // Closing the console window, logging off or shutting down ends the process as soon as the
-    // handler returns: wait here instead, so that the clean stop (the gateway's "offline") runs;
-    // the program's own exit ends this thread, and Windows kills a program that takes longer
-    // than about 5 s.
-    if (event == CTRL_CLOSE_EVENT || event == CTRL_LOGOFF_EVENT || event == CTRL_SHUTDOWN_EVENT)
-        Sleep(INFINITE);
-    return TRUE;
-}
-} // namespace
-
 void onQuitSignal(QObject *context, std::function<void()> onQuit)
 {
-    g_onQuit = std::move(onQuit);
-    g_context = context;
-    SetConsoleCtrlHandler(onConsoleControl, TRUE);
+    ConsoleControl::install(context, std::move(onQuit));
 }
 
 void onReloadSignal(QObject *, std::function<void()>) {}

@@ -4,9 +4,13 @@
 # MinGW OpenSSL) and SQLite 3.40.1 (the alarm journal), with MinGW-w64 (GCC 12, posix threads),
 # into one prefix:
 #   tools/windows/build-qt.sh            builds it, or reuses it when it is there and complete
+# The prefix is relocatable: it can be packed (tools/windows/pack-prefix.sh) and, when
+# ../shared/windows/ holds qt6-mingw-<recipe>.tar.zst for the recipe of prefix-recipe.sh, this
+# unpacks it instead of building (about 50 minutes on 2 cores).
 # Environment: FATEK_WIN_PREFIX (default ~/.cache/fatek-studio/qt6-mingw), FATEK_WIN_WORK (sources
 # and build folders, default ~/.cache/fatek-studio/win-work, removed at the end), FATEK_THIRD_PARTY
-# (the Qt module tarballs, default ../shared/third-party/qt-6.4.2 beside the clone).
+# (the Qt module tarballs, default ../shared/third-party/qt-6.4.2 beside the clone),
+# FATEK_WIN_SHARED (where packed prefixes are offered, default ../shared/windows).
 # Needs: g++-mingw-w64-x86-64-posix, cmake, ninja-build, perl, Debian's Qt 6.4.2 as the host Qt
 # (moc, rcc, uic: QT_HOST_PATH), tclsh and the host's gcc and make (SQLite's amalgamation is
 # generated on the host), and a deb-src entry for qtbase's, mosquitto's and sqlite3's sources
@@ -16,17 +20,23 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 source "$root/tools/stage.sh"
+source "$here/prefix-recipe.sh"
 prefix=${FATEK_WIN_PREFIX:-$HOME/.cache/fatek-studio/qt6-mingw}
 work=${FATEK_WIN_WORK:-$HOME/.cache/fatek-studio/win-work}
-third=${FATEK_THIRD_PARTY:-$root/../shared/third-party/qt-6.4.2}
-toolchain=$here/mingw-w64.cmake
+third=${FATEK_THIRD_PARTY:-$root/../shared/third-party/qt-$qt_version}
+shared=${FATEK_WIN_SHARED:-$root/../shared/windows}
 jobs=$(nproc 2>/dev/null || echo 2)
-# The prefix is complete when this file names the same recipe (this script's text);
-# a changed recipe builds again rather than mixing two.
-recipe=$(sha256sum <"$0" | cut -c1-16)
+# The prefix is complete when its stamp names the recipe of what would be built now
+# (prefix-recipe.sh); a changed recipe builds again rather than mixing two.
+recipe=$(recipe_id "$third")
 stamp=$prefix/fatek-prefix.txt
 if [ -f "$stamp" ] && grep -qx "recipe $recipe" "$stamp"; then
     echo "== Windows Qt, libmosquitto and SQLite already in $prefix (recipe $recipe)"
+    exit 0
+fi
+# A prefix packed elsewhere by pack-prefix.sh for this very recipe is unpacked, not built.
+if [ -f "$shared/qt6-mingw-$recipe.tar.zst" ]; then
+    stage "Windows: unpack the prefix" "$here/unpack-prefix.sh" "$shared/qt6-mingw-$recipe.tar.zst" "$prefix"
     exit 0
 fi
 
@@ -38,7 +48,15 @@ host_qt=$(/usr/lib/qt6/libexec/moc --version | awk '{print $2}')
 command -v tclsh >/dev/null || { echo "needs tclsh for SQLite's amalgamation (tools/windows/install-deps.sh)"; exit 2; }
 
 rm -rf "$work" "$prefix"
-mkdir -p "$work/src" "$prefix"
+mkdir -p "$work/src" "$prefix/lib/cmake"
+# Qt records its toolchain file in the prefix (qt.toolchain.cmake): a copy inside the prefix,
+# not this checkout's path, so the packed prefix names nothing of this machine.
+toolchain=$prefix/lib/cmake/fatek-mingw-w64.cmake
+cp "$here/mingw-w64.cmake" "$toolchain"
+cflags=$(reloc_cflags "$work" "$prefix")
+reloc_args=("-DCMAKE_C_FLAGS=$cflags" "-DCMAKE_CXX_FLAGS=$cflags" "-DCMAKE_SHARED_LINKER_FLAGS=$reloc_ldflags"
+    "-DCMAKE_EXE_LINKER_FLAGS=$reloc_ldflags" "-DCMAKE_MODULE_LINKER_FLAGS=$reloc_ldflags")
+export SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-1672531200}
 
 fetch_sources() {
     # Module tarballs: checked against the sums that came with them.
@@ -69,9 +87,20 @@ fetch_sources() {
     # entry is taken without a change here. Left out: the build-system patches (configure.ac,
     # Makefile.in: the library is compiled below from the amalgamation, not by Debian's
     # autoreconf'd build) and 02-use-packaged-lempar.c (lemon.c reading Debian's lemon package).
-    apply_debian_patches "$work/src/qtbase-everywhere-src-6.4.2" "$work"/src/qt6-base_*.debian.tar.xz '^cve-' || return 1
-    apply_debian_patches "$work/src/mosquitto-2.0.11" "$work"/src/mosquitto_*.debian.tar.xz . || return 1
-    apply_debian_patches "$work/src/sqlite3-3.40.1" "$work"/src/sqlite3_*.debian.tar.xz . '^(src|ext|test)/' || return 1
+    local sel pkg pattern files
+    for sel in "${patch_selection[@]}"; do
+        IFS='|' read -r pkg pattern files <<<"$sel"
+        apply_debian_patches "$(src_dir "$pkg")" "$work"/src/"${pkg}"_*.debian.tar.xz "$pattern" "$files" || return 1
+    done
+}
+
+# The source folder of a Debian source package's orig tarball.
+src_dir() {
+    case $1 in
+    qt6-base) echo "$work/src/qtbase-everywhere-src-$qt_version" ;;
+    mosquitto) echo "$work/src/mosquitto-$mosquitto_version" ;;
+    sqlite3) echo "$work/src/sqlite3-$sqlite_version" ;;
+    esac
 }
 
 # Applies the patches of a Debian source package's series that match $3 (a grep pattern), in
@@ -103,13 +132,13 @@ collect_licences() {
     mkdir -p "$dest/mosquitto" "$dest/sqlite3"
     for m in qtbase qtserialport qtsvg qtcharts; do
         mkdir -p "$dest/$m"
-        cp "$work/src/$m-everywhere-src-6.4.2"/LICENSES/*.txt "$dest/$m/"
+        cp "$work/src/$m-everywhere-src-$qt_version"/LICENSES/*.txt "$dest/$m/"
     done
-    (cd "$work/src/qtbase-everywhere-src-6.4.2/src/3rdparty" &&
+    (cd "$work/src/qtbase-everywhere-src-$qt_version/src/3rdparty" &&
         find . -maxdepth 2 -type f \( -iname 'licen[cs]e*' -o -iname 'copying*' -o -iname 'ftl.txt' \) |
         while read -r f; do d=$dest/qtbase/3rdparty/$(dirname "$f"); mkdir -p "$d"; cp "$f" "$d/"; done)
-    cp "$work"/src/mosquitto-2.0.11/{LICENSE.txt,epl-v20,edl-v10} "$dest/mosquitto/"
-    cp "$work"/src/sqlite3-3.40.1/LICENSE.md "$dest/sqlite3/"
+    cp "$work"/src/mosquitto-$mosquitto_version/{LICENSE.txt,epl-v20,edl-v10} "$dest/mosquitto/"
+    cp "$work"/src/sqlite3-$sqlite_version/LICENSE.md "$dest/sqlite3/"
 }
 
 # qtbase: only what the app uses. Off: SQL (Debian's dfsg source has no bundled SQLite; the
@@ -117,13 +146,10 @@ collect_licences() {
 # D-Bus (not on Windows), Concurrent, OpenSSL (TLS goes through Windows' Schannel instead),
 # examples and tests. zlib, libpng, libjpeg, freetype, harfbuzz, pcre2 are Qt's bundled copies.
 build_qtbase() {
-    cmake -S "$work"/src/qtbase-everywhere-src-6.4.2 -B "$work/build/qtbase" -G Ninja \
+    cmake -S "$work/src/qtbase-everywhere-src-$qt_version" -B "$work/build/qtbase" -G Ninja \
         -DCMAKE_TOOLCHAIN_FILE="$toolchain" \
         -DQT_HOST_PATH=/usr -DQT_HOST_PATH_CMAKE_DIR=/usr/lib/x86_64-linux-gnu/cmake \
-        -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=ON \
-        -DQT_BUILD_EXAMPLES=OFF -DQT_BUILD_TESTS=OFF \
-        -DFEATURE_sql=OFF -DFEATURE_tabletevent=OFF -DFEATURE_dbus=OFF -DFEATURE_concurrent=OFF \
-        -DFEATURE_printsupport=OFF -DFEATURE_system_zlib=OFF -DINPUT_openssl=no >"$work/qtbase-configure.log"
+        -DCMAKE_INSTALL_PREFIX="$prefix" "${qtbase_options[@]}" "${reloc_args[@]}" >"$work/qtbase-configure.log"
     cmake --build "$work/build/qtbase" -j "$jobs" >"$work/qtbase-build.log" ||
         { tail -40 "$work/qtbase-build.log"; return 1; }
     cmake --install "$work/build/qtbase" >/dev/null
@@ -131,8 +157,8 @@ build_qtbase() {
 
 build_module() {
     local m=$1
-    "$prefix/bin/qt-cmake" -S "$work/src/$m-everywhere-src-6.4.2" -B "$work/build/$m" -G Ninja \
-        -DQT_BUILD_EXAMPLES=OFF -DQT_BUILD_TESTS=OFF >"$work/$m-configure.log"
+    "$prefix/bin/qt-cmake" -S "$work/src/$m-everywhere-src-$qt_version" -B "$work/build/$m" -G Ninja \
+        "${module_options[@]}" "${reloc_args[@]}" >"$work/$m-configure.log"
     cmake --build "$work/build/$m" -j "$jobs" >"$work/$m-build.log" || { tail -40 "$work/$m-build.log"; return 1; }
     cmake --install "$work/build/$m" >/dev/null
 }
@@ -141,11 +167,9 @@ build_module() {
 # thread (its Windows build names a pthreads-win32 at C:\pthreads): MqttClient drives the loop
 # from Qt's event loop (mosquitto_loop_read/write/misc), never mosquitto_loop_start.
 build_mosquitto() {
-    cmake -S "$work"/src/mosquitto-2.0.11 -B "$work/build/mosquitto" -G Ninja \
-        -DCMAKE_TOOLCHAIN_FILE="$toolchain" -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release \
-        -DWITH_TLS=OFF -DWITH_TLS_PSK=OFF -DWITH_CJSON=OFF -DWITH_BROKER=OFF -DWITH_APPS=OFF \
-        -DWITH_CLIENTS=OFF -DWITH_PLUGINS=OFF -DDOCUMENTATION=OFF -DWITH_LIB_CPP=OFF \
-        -DWITH_THREADING=OFF -DWITH_STATIC_LIBRARIES=OFF >"$work/mosquitto-configure.log"
+    cmake -S "$work/src/mosquitto-$mosquitto_version" -B "$work/build/mosquitto" -G Ninja \
+        -DCMAKE_TOOLCHAIN_FILE="$toolchain" -DCMAKE_INSTALL_PREFIX="$prefix" \
+        "${mosquitto_options[@]}" "${reloc_args[@]}" >"$work/mosquitto-configure.log"
     cmake --build "$work/build/mosquitto" -j "$jobs" >"$work/mosquitto-build.log" ||
         { tail -40 "$work/mosquitto-build.log"; return 1; }
     cmake --install "$work/build/mosquitto" >/dev/null
@@ -158,33 +182,10 @@ build_mosquitto() {
 # through the toolchain's find roots (CMAKE_PREFIX_PATH is one). Debian's orig is SQLite's full
 # tree, not the amalgamation: sqlite3.c is generated on the host (its configure and `make
 # sqlite3.c`: lemon, mkkeywordhash and Tcl scripts, so tclsh and the host's gcc), then compiled
-# alone with MinGW-w64. The options are Debian's (debian/rules' CFLAGS), so that the journal's
-# SQLite is the same on Windows as the host's libsqlite3-0; threads through Win32 mutexes
-# (SQLITE_THREADSAFE=1 needs no pthreads on Windows). Only the API is exported (SQLITE_API).
-sqlite_options=(
-    -DSQLITE_SECURE_DELETE -DSQLITE_ENABLE_COLUMN_METADATA
-    -DSQLITE_ENABLE_FTS3 -DSQLITE_ENABLE_FTS3_PARENTHESIS
-    -DSQLITE_ENABLE_RTREE=1 -DSQLITE_SOUNDEX=1
-    -DSQLITE_ENABLE_UNLOCK_NOTIFY
-    -DSQLITE_OMIT_LOOKASIDE=1 -DSQLITE_ENABLE_DBSTAT_VTAB
-    -DSQLITE_ALLOW_ROWID_IN_VIEW
-    -DSQLITE_ENABLE_UPDATE_DELETE_LIMIT=1
-    -DSQLITE_ENABLE_LOAD_EXTENSION
-    -DSQLITE_ENABLE_JSON1
-    -DSQLITE_LIKE_DOESNT_MATCH_BLOBS
-    -DSQLITE_THREADSAFE=1
-    -DSQLITE_ENABLE_FTS3_TOKENIZER=1
-    -DSQLITE_USE_URI=1
-    -DSQLITE_MAX_SCHEMA_RETRY=25
-    -DSQLITE_ENABLE_PREUPDATE_HOOK
-    -DSQLITE_ENABLE_SESSION
-    -DSQLITE_ENABLE_STMTVTAB
-    -DSQLITE_MAX_VARIABLE_NUMBER=250000
-    # what Debian's configure adds: --enable-fts4, --enable-fts5, the math functions (its default)
-    -DSQLITE_ENABLE_FTS4 -DSQLITE_ENABLE_FTS5 -DSQLITE_ENABLE_MATH_FUNCTIONS
-)
+# alone with MinGW-w64 with Debian's options (prefix-recipe.sh). Only the API is exported
+# (SQLITE_API).
 build_sqlite() {
-    local src=$work/src/sqlite3-3.40.1 b=$work/build/sqlite3
+    local src=$work/src/sqlite3-$sqlite_version b=$work/build/sqlite3
     mkdir -p "$b" "$prefix/bin" "$prefix/lib" "$prefix/include"
     # (The host's configure only sets up the generators; --disable-tcl: no Tcl extension, so no
     # tcl-dev.)
@@ -192,7 +193,8 @@ build_sqlite() {
         make sqlite3.c >"$work/sqlite3-amalgamation.log" 2>&1) ||
         { tail -40 "$work/sqlite3-configure.log" "$work/sqlite3-amalgamation.log" 2>/dev/null; return 1; }
     # -static-libgcc: the DLL imports only Windows' own DLLs.
-    x86_64-w64-mingw32-gcc-posix -O2 -fno-strict-aliasing "${sqlite_options[@]}" \
+    # shellcheck disable=SC2086 # (the flags are words)
+    x86_64-w64-mingw32-gcc-posix "${sqlite_options[@]}" $cflags $reloc_ldflags \
         '-DSQLITE_API=__declspec(dllexport)' -shared -static-libgcc -o "$prefix/bin/libsqlite3-0.dll" \
         "$b/sqlite3.c" -Wl,--out-implib,"$prefix/lib/libsqlite3.dll.a" >"$work/sqlite3-build.log" 2>&1 ||
         { tail -40 "$work/sqlite3-build.log"; return 1; }
@@ -205,13 +207,15 @@ collect_licences
 stage "Windows: libmosquitto" build_mosquitto
 stage "Windows: SQLite" build_sqlite
 stage "Windows: qtbase" build_qtbase
-stage "Windows: qtserialport" build_module qtserialport
-stage "Windows: qtsvg" build_module qtsvg
-stage "Windows: qtcharts" build_module qtcharts
+for m in "${qt_modules[@]}"; do
+    stage "Windows: $m" build_module "$m"
+done
+# The stamp: the recipe id, then what it was computed from, then what the build found.
 {
     echo "recipe $recipe"
+    recipe_text "$third" | sed 's/^/  /'
     echo "built $(date -u +%Y-%m-%dT%H:%M:%SZ) with $(x86_64-w64-mingw32-g++-posix --version | head -1)"
-    echo "qt 6.4.2 (qtbase from Debian's 6.4.2+dfsg-10 source, modules from $third), mosquitto 2.0.11 without TLS"
+    echo "qt $qt_version (qtbase from Debian's $(basename "$work"/src/qt6-base_*.dsc .dsc) source, the modules' tarballs of ../shared/third-party), mosquitto $mosquitto_version without TLS"
     echo "sqlite $(sed -n 's/^#define SQLITE_VERSION  *"\(.*\)"/\1/p' "$prefix/include/sqlite3.h") ($(basename "$work"/src/sqlite3_*.dsc .dsc))"
     echo "Debian's patches applied: ${applied[*]}"
 } >"$stamp"

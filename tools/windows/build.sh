@@ -22,10 +22,6 @@ if [ ! -f "$prefix/fatek-prefix.txt" ]; then
     echo "No cross-built Qt in $prefix: make it once with tools/windows/build-qt.sh (about 50 minutes on 2 cores)."
     exit 2
 fi
-if [ ! -f "$prefix/include/sqlite3.h" ]; then
-    echo "The cross prefix $prefix has no SQLite (it predates the alarm journal, issue 50): run tools/windows/build-qt.sh again; its recipe changed, so it builds the prefix once more (about 50 minutes)."
-    exit 2
-fi
 tools/windows/install-deps.sh
 build=build/windows-cross
 jobs=$(nproc 2>/dev/null || echo 2)
