@@ -7,7 +7,7 @@
 #                                        (commit it: CI's --changed runs compare with it)
 #   tools/tidy.sh --changed [BUILD_DIR]  CI: only the sources whose compile command, text or
 #                                        included headers differ from .ci/tidy-baseline; every
-#                                        source when .clang-tidy, the presets, these scripts or a
+#                                        source when .clang-tidy, the presets, tidybatch.py or a
 #                                        compiler changed, or the record is 100 commits old
 #                                        (FATEK_TIDY_COMMITS, given by .ci/run; about ten
 #                                        landings) - tools/tidyscope.py
@@ -33,8 +33,11 @@ if [ $mode = changed ]; then
     if [[ ${scope[0]:-} == full:* ]]; then
         echo "tidy: every source: ${scope[0]#full: }"
     else
+        if [ ${#scope[@]} -eq 0 ]; then
+            echo "tidy: none of the ${#files[@]} sources differs from $baseline: nothing to check"
+            exit 0
+        fi
         echo "tidy: ${#scope[@]} of ${#files[@]} sources differ from $baseline: ${scope[*]:0:20}$([ ${#scope[@]} -le 20 ] || echo " ...")"
-        [ ${#scope[@]} -gt 0 ] || exit 0
         files=("${scope[@]}")
     fi
 fi

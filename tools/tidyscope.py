@@ -7,7 +7,7 @@ The record holds, for every translation unit checked, a hash of its compile comm
 file it read (the source, our headers, generated moc/uic output), with the checkout's and the
 build's folder names taken out, so it holds on any machine. A unit is checked again when any of
 these differs or is new. Everything is checked again when the configuration changed (.clang-tidy,
-the presets, tidy's own scripts, the compilers) or when the record is too old.
+the presets, the batching script, the compilers) or when the record is too old.
 
     tidyscope.py changed BUILD_DIR BASELINE MAX_COMMITS FILE...
         prints the FILEs to check, one per line; or "full: REASON" alone when all must be
@@ -22,7 +22,9 @@ import shlex
 import subprocess
 import sys
 
-CONFIG_FILES = [".clang-tidy", "CMakePresets.json", "tools/tidy.sh", "tools/tidybatch.py", "tools/tidyscope.py"]
+# What decides the findings besides the sources: the checks, the presets' flags, how batches are
+# joined, and the compilers (clang-tidy's own headers and GCC's, which the compile commands name).
+CONFIG_FILES = [".clang-tidy", "CMakePresets.json", "tools/tidybatch.py"]
 CONFIG_TOOLS = [["clang-tidy-14", "--version"], ["c++", "--version"]]
 
 
@@ -160,7 +162,7 @@ def changed(build, baseline, max_commits, files):
     except ValueError as e:
         return "full: " + str(e)
     if base.get("config") != config_hash():
-        return "full: the configuration changed (.clang-tidy, the presets, tidy's scripts or a compiler)"
+        return "full: the configuration changed (.clang-tidy, the presets, tools/tidybatch.py or a compiler)"
     commits = os.environ.get("FATEK_TIDY_COMMITS", "")
     if commits.isdigit() and int(commits) >= max_commits:
         return f"full: the record is {commits} commits old (a full run at least every {max_commits})"
