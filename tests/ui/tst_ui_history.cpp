@@ -10,6 +10,7 @@
 #include "core/history/historystore.h"
 #include "core/history/historywriter.h"
 #include "testutil.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/history/historycenter.h"
 #include "ui/history/historyui.h"
 #include "ui/mainwindow/mainwindow.h"
@@ -443,6 +444,9 @@ void TestUiHistory::scrollBackIntoRecordedValues()
                 = dialog ? dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit")) : nullptr;
             if (!edit)
                 return;
+            // The second file type: the same CSV with Windows line ends.
+            QVERIFY(dialog->nameFilters().contains(CsvFileFilter::windows()));
+            dialog->selectNameFilter(CsvFileFilter::windows());
             edit->setFocus();
             QTest::keyClicks(edit, csv);
             QTest::keyClick(edit, Qt::Key_Return);
@@ -452,9 +456,15 @@ void TestUiHistory::scrollBackIntoRecordedValues()
     QVERIFY(exported.wait(longWait) || !exported.isEmpty());
     QCOMPARE(exported.constFirst().at(2).toString(), QString());
     QFile file(csv);
-    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
-    const QStringList lines
-        = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QByteArray data = file.readAll();
+    // UTF-8 with the byte order mark and CRLF: as Excel on Windows opens it right.
+    QVERIFY2(data.startsWith("\xEF\xBB\xBFtime,series,value,raw,quality\r\n"),
+             data.left(60).constData());
+    QCOMPARE(data.count("\r\n"), data.count('\n'));
+    data.remove(0, 3);
+    data.replace("\r\n", "\n");
+    const QStringList lines = QString::fromUtf8(data).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     QCOMPARE(lines.constFirst(), QStringLiteral("time,series,value,raw,quality"));
     std::vector<HistorySample> expected;
     for (const HistorySample &s : m_prefill.samples) {
