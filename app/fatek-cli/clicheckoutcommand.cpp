@@ -50,15 +50,6 @@ CliLineReader &lines()
     return *CliLineReader::instance();
 }
 
-// A CSV file's text for standard output, which is no file: without the byte order mark.
-QString stdoutText(const QByteArray &csvFile)
-{
-    QString text = QString::fromUtf8(csvFile);
-    if (text.startsWith(QChar(0xFEFF)))
-        text.remove(0, 1);
-    return text.trimmed();
-}
-
 } // namespace
 
 CliCheckoutCommand::CliCheckoutCommand(CliContext &context)
@@ -499,7 +490,7 @@ void CliCheckoutCommand::writeReport()
             out().error(englishText(s.error().message), ExitCode::Internal);
             // A device that failed (a full disk behind a link): the results are not lost.
             out().note(QStringLiteral("The report follows on standard output instead."));
-            out().line(stdoutText(report.toCsv(text)));
+            out().line(QString::fromUtf8(report.toCsv(text)).trimmed());
             out().note(englishText(report.summary));
             return m_context.finish(ExitCode::Internal);
         }
@@ -511,7 +502,7 @@ void CliCheckoutCommand::writeReport()
                             punch.toStdString(), Message::text(reason.toStdString()))),
                         ExitCode::Internal);
             out().note(QStringLiteral("The punch list follows on standard output instead."));
-            out().line(stdoutText(report.punchCsv(text)));
+            out().line(QString::fromUtf8(report.punchCsv(text)).trimmed());
             return m_context.finish(ExitCode::Internal);
         }
     }

@@ -418,7 +418,8 @@ void TestCliCheckoutPoints::punchCheckedBeforeForcing()
 }
 
 // Issue 57: a punch list whose device fails at the end (a link to /dev/full) follows on standard
-// output, which is no file: without the byte order mark the file would have had.
+// output, which is no file: it stays without the byte order mark the file would have had (a guard:
+// QString::fromUtf8 already drops the mark there).
 void TestCliCheckoutPoints::punchOnAFailingDeviceFollowsOnStdout()
 {
     if (!QFileInfo::exists(QStringLiteral("/dev/full")))

@@ -246,8 +246,8 @@ void TestDataLogger::appendKeepsTheFilesLineEnds()
     // mark.
     const QList<WatchItemSpec> items{item("D5", DisplayFormat::Unsigned)};
     for (const auto &[name, first, later] :
-         {std::tuple{"crlf.csv", CsvFile::LineEnd::CrLf, CsvFile::LineEnd::Lf},
-          std::tuple{"lf.csv", CsvFile::LineEnd::Lf, CsvFile::LineEnd::CrLf}}) {
+         {std::tuple{"keep-crlf.csv", CsvFile::LineEnd::CrLf, CsvFile::LineEnd::Lf},
+          std::tuple{"keep-lf.csv", CsvFile::LineEnd::Lf, CsvFile::LineEnd::CrLf}}) {
         const QString path = m_dir.filePath(QLatin1String(name));
         for (int run = 0; run < 3; ++run) {
             DataLogger log;
