@@ -14,7 +14,9 @@
 #include "ui/history/historycenter.h"
 #include "ui/history/historyui.h"
 #include "ui/mainwindow/mainwindow.h"
+#include "ui/trend/tablelogger.h"
 #include "ui/trend/trendhistory.h"
+#include "ui/trend/trendlogging.h"
 #include "ui/trend/trendview.h"
 #include "ui/watch/watchtablemodel.h"
 #include "uitestutil.h"
@@ -493,6 +495,40 @@ void TestUiHistory::scrollBackIntoRecordedValues()
         }
     }
     QVERIFY(sawStale);
+
+    // Start Data Logging…: its file dialog offers the same second type; chosen, the new log has
+    // the byte order mark and CRLF from its header on.
+    QAction *startLogging = nullptr;
+    for (QAction *action : m_window->findChildren<QAction *>()) {
+        if (action->text() == TrendLogging::tr("Start &Data Logging…"))
+            startLogging = action;
+    }
+    QVERIFY(startLogging);
+    const QString log = QFileInfo(location()).absolutePath() + QStringLiteral("/log-crlf.csv");
+    bool logTyped = false;
+    UiTestUtil::answerModal(
+        [&] { startLogging->trigger(); },
+        [&](QWidget *modal) {
+            auto *dialog = qobject_cast<QFileDialog *>(modal);
+            auto *edit
+                = dialog ? dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit")) : nullptr;
+            if (!edit)
+                return;
+            dialog->selectNameFilter(CsvFileFilter::windows());
+            edit->setFocus();
+            QTest::keyClicks(edit, log);
+            QTest::keyClick(edit, Qt::Key_Return);
+            logTyped = true;
+        });
+    QVERIFY(logTyped);
+    QVERIFY(m_window->tableLogger()->isLogging());
+    m_window->stopLogging();
+    QFile logFile(log);
+    QVERIFY(logFile.open(QIODevice::ReadOnly));
+    const QByteArray logData = logFile.readAll();
+    QVERIFY2(logData.startsWith("\xEF\xBB\xBFtimestamp,") && logData.contains(",status\r\n")
+                 && logData.count('\n') == logData.count("\r\n"),
+             logData.constData());
 
     // Custom…: the last choice of the box; the dialog's range is shown.
     window->setFocus(Qt::TabFocusReason);
