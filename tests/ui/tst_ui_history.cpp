@@ -130,6 +130,26 @@ QString location()
     return qEnvironmentVariable("FATEK_HISTORY");
 }
 
+// In the save dialog `modal` (a QFileDialog): chooses the file type "CSV, Windows line ends" and
+// types `path`. Returns false for another modal, or when that type is not offered (the dialog is
+// cancelled then).
+bool saveAsWindowsCsv(QWidget *modal, const QString &path)
+{
+    auto *dialog = qobject_cast<QFileDialog *>(modal);
+    auto *edit = dialog ? dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit")) : nullptr;
+    if (!edit)
+        return false;
+    if (!dialog->nameFilters().contains(CsvFileFilter::windows())) {
+        dialog->reject();
+        return false;
+    }
+    dialog->selectNameFilter(CsvFileFilter::windows());
+    edit->setFocus();
+    QTest::keyClicks(edit, path);
+    QTest::keyClick(edit, Qt::Key_Return);
+    return true;
+}
+
 void clickCell(QTableView *view, const QModelIndex &index)
 {
     QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(index).center(),
@@ -440,20 +460,8 @@ void TestUiHistory::scrollBackIntoRecordedValues()
     bool typed = false;
     UiTestUtil::answerModal(
         [&] { QTest::mouseClick(exportButton, Qt::LeftButton, {}, QPoint(), mouseDelayMs); },
-        [&](QWidget *modal) {
-            auto *dialog = qobject_cast<QFileDialog *>(modal);
-            auto *edit
-                = dialog ? dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit")) : nullptr;
-            if (!edit)
-                return;
-            // The second file type: the same CSV with Windows line ends.
-            QVERIFY(dialog->nameFilters().contains(CsvFileFilter::windows()));
-            dialog->selectNameFilter(CsvFileFilter::windows());
-            edit->setFocus();
-            QTest::keyClicks(edit, csv);
-            QTest::keyClick(edit, Qt::Key_Return);
-            typed = true;
-        });
+        // The second file type: the same CSV with Windows line ends.
+        [&](QWidget *modal) { typed = typed || saveAsWindowsCsv(modal, csv); });
     QVERIFY(typed);
     QVERIFY(exported.wait(longWait) || !exported.isEmpty());
     QCOMPARE(exported.constFirst().at(2).toString(), QString());
@@ -508,18 +516,7 @@ void TestUiHistory::scrollBackIntoRecordedValues()
     bool logTyped = false;
     UiTestUtil::answerModal(
         [&] { startLogging->trigger(); },
-        [&](QWidget *modal) {
-            auto *dialog = qobject_cast<QFileDialog *>(modal);
-            auto *edit
-                = dialog ? dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit")) : nullptr;
-            if (!edit)
-                return;
-            dialog->selectNameFilter(CsvFileFilter::windows());
-            edit->setFocus();
-            QTest::keyClicks(edit, log);
-            QTest::keyClick(edit, Qt::Key_Return);
-            logTyped = true;
-        });
+        [&](QWidget *modal) { logTyped = logTyped || saveAsWindowsCsv(modal, log); });
     QVERIFY(logTyped);
     QVERIFY(m_window->tableLogger()->isLogging());
     m_window->stopLogging();
