@@ -2735,10 +2735,6 @@
             <translation>Export Range to CSV</translation>
         </message>
         <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV files (*.csv)</translation>
-        </message>
-        <message>
             <source>None of the trend&apos;s items is recorded in the history.</source>
             <translation>None of the trend&apos;s items is recorded in the history.</translation>
         </message>
@@ -4599,10 +4595,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <source>Log Watch Table to CSV</source>
             <translation>Log Watch Table to CSV</translation>
         </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV files (*.csv)</translation>
-        </message>
         <message numerus="yes">
             <source>Logging to %1 (%n row(s))</source>
             <translation>
@@ -5569,10 +5561,6 @@ The PLC's program is replaced; every page is read back and compared.</translatio
             <translation>Export Differences</translation>
         </message>
         <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV files (*.csv)</translation>
-        </message>
-        <message>
             <source>Snapshots (*.json *.csv)</source>
             <translation>Snapshots (*.json *.csv)</translation>
         </message>
@@ -5855,6 +5843,17 @@ Write its values all the same? Elements the PLC does not have are refused before
         </message>
     </context>
     <context>
+        <name>Fatek::CsvFileFilter</name>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message>
+            <source>CSV, Windows line ends (*.csv)</source>
+            <translation>CSV, Windows line ends (*.csv)</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::CheckoutPunchDialog</name>
         <message>
             <source>Punch List</source>
@@ -5883,10 +5882,6 @@ Write its values all the same? Elements the PLC does not have are refused before
         <message>
             <source>Export Punch List</source>
             <translation>Export Punch List</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV files (*.csv)</translation>
         </message>
         <message>
             <source>%1 is closed out.</source>
@@ -6361,8 +6356,8 @@ Write its values all the same? Elements the PLC does not have are refused before
             <translation>Export Alarm Journal</translation>
         </message>
         <message>
-            <source>CSV files (*.csv);;All files (*)</source>
-            <translation>CSV files (*.csv);;All files (*)</translation>
+            <source>All files (*)</source>
+            <translation>All files (*)</translation>
         </message>
         <message>
             <source>Not exported: %1</source>

@@ -2731,10 +2731,6 @@
             <translation>將範圍匯出為 CSV</translation>
         </message>
         <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV 檔案 (*.csv)</translation>
-        </message>
-        <message>
             <source>None of the trend&apos;s items is recorded in the history.</source>
             <translation>趨勢圖中沒有任何項目記錄在歷史資料中。</translation>
         </message>
@@ -4584,10 +4580,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <source>Log Watch Table to CSV</source>
             <translation>將監看表記錄到 CSV</translation>
         </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV 檔案 (*.csv)</translation>
-        </message>
         <message numerus="yes">
             <source>Logging to %1 (%n row(s))</source>
             <translation>
@@ -5543,10 +5535,6 @@ PLC 的程式將被取代；每一頁都會讀回並比對。</translation>
             <translation>匯出差異</translation>
         </message>
         <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV 檔案 (*.csv)</translation>
-        </message>
-        <message>
             <source>Snapshots (*.json *.csv)</source>
             <translation>快照 (*.json *.csv)</translation>
         </message>
@@ -5827,6 +5815,17 @@ PLC：%3
         </message>
     </context>
     <context>
+        <name>Fatek::CsvFileFilter</name>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 檔案 (*.csv)</translation>
+        </message>
+        <message>
+            <source>CSV, Windows line ends (*.csv)</source>
+            <translation>CSV（Windows 換行）(*.csv)</translation>
+        </message>
+    </context>
+    <context>
         <name>Fatek::CheckoutPunchDialog</name>
         <message>
             <source>Punch List</source>
@@ -5855,10 +5854,6 @@ PLC：%3
         <message>
             <source>Export Punch List</source>
             <translation>匯出待辦清單</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV 檔案 (*.csv)</translation>
         </message>
         <message>
             <source>%1 is closed out.</source>
@@ -6329,8 +6324,8 @@ PLC：%3
             <translation>匯出警報日誌</translation>
         </message>
         <message>
-            <source>CSV files (*.csv);;All files (*)</source>
-            <translation>CSV 檔案 (*.csv);;所有檔案 (*)</translation>
+            <source>All files (*)</source>
+            <translation>所有檔案 (*)</translation>
         </message>
         <message>
             <source>Not exported: %1</source>

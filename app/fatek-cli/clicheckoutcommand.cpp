@@ -473,7 +473,7 @@ void CliCheckoutCommand::writeReport()
         return translator.text(m);
     };
     const auto ends
-        = options().checkoutCrlf ? CheckoutReport::LineEnds::CrLf : CheckoutReport::LineEnds::Lf;
+        = options().crlf ? CheckoutReport::LineEnds::CrLf : CheckoutReport::LineEnds::Lf;
     const QString path = options().checkoutReport;
     if (!path.isEmpty()) {
         Status s = Ok{};

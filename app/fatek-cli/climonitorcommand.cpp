@@ -91,7 +91,10 @@ void CliMonitorCommand::run()
     if (!options().outputPath.isEmpty() && !m_logger.isOpen()) {
         // Every row reaches the disk at once: an interrupted monitor loses nothing.
         m_logger.setFlushIntervalMs(0);
-        if (const Status s = m_logger.open(options().outputPath, items); !s) {
+        if (const Status s
+            = m_logger.open(options().outputPath, items,
+                            options().crlf ? CsvFile::LineEnd::CrLf : CsvFile::LineEnd::Lf);
+            !s) {
             // A file that cannot be written (no such folder, a read-only medium, a full disk) is
             // exit 1, like every file not written; another log's columns is a usage error.
             const int code = m_logger.writeFailed() || m_logger.fileProblem() ? ExitCode::Internal

@@ -137,6 +137,9 @@ QString usageText()
                "                           elements must still exist on this PLC)\n"
                "  --json | --csv           output one JSON object per line / CSV instead of a "
                "table\n"
+               "  --crlf                   CSV files written (monitor --output, snapshot, "
+               "checkout)\n"
+               "                           with Windows line ends (CSV on stdout keeps LF)\n"
                "  --then                   run the next command on the same link (status --then "
                "read R0)\n"
                "  --completion bash|zsh    print the shell completion script (the .deb installs "
@@ -348,10 +351,9 @@ CliParseResult parseCommandLine(const QStringList &arguments)
             o.assumeYes = true;
         else if (name == QLatin1String("other-model"))
             o.otherModel = true;
-        else if (name == QLatin1String("crlf")) {
-            o.checkoutCrlf = true;
-            checkoutGiven = true;
-        } else if (name == QLatin1String("frame"))
+        else if (name == QLatin1String("crlf"))
+            o.crlf = true;
+        else if (name == QLatin1String("frame"))
             frameGiven = true;
         else if (name == QLatin1String("hex"))
             forceHex = true;
@@ -414,10 +416,13 @@ CliParseResult parseCommandLine(const QStringList &arguments)
     if ((!o.outputPath.isEmpty() || o.valueFormat || !o.namesPath.isEmpty()) && !uses("monitor"))
         return fail(QStringLiteral("--output, --format and --names only apply to monitor."));
     if (checkoutGiven && !uses("checkout"))
-        return fail(QStringLiteral("--report, --punch, --crlf, --lang, --save, --project, "
+        return fail(QStringLiteral("--report, --punch, --lang, --save, --project, "
                                    "--customer, --engineer, --company, --document, --revision, "
                                    "--witness, --witness-company and --customer-signatory only "
                                    "apply to checkout."));
+    if (o.crlf && !uses("monitor") && !uses("snapshot") && !uses("checkout"))
+        return fail(QStringLiteral("--crlf only applies to the CSV files that monitor --output, "
+                                   "snapshot and checkout write."));
     if (o.otherModel && !uses("restore-values"))
         return fail(QStringLiteral("--other-model only applies to restore-values."));
     if ((frameGiven || forceHex || forceAscii) && !uses("raw"))

@@ -133,7 +133,9 @@ struct CliOptions
     QString checkoutWitnessCompany;
     QString checkoutSignatory; // the customer's
     QString checkoutPunch;     // the punch list as CSV
-    bool checkoutCrlf = false; // CSV files with CRLF line ends (Excel on Windows)
+    // --crlf: every CSV file written (monitor --output, snapshot FILE.csv, checkout --report and
+    // --punch) with CRLF line ends (Excel on Windows); CSV on stdout keeps LF
+    bool crlf = false;
 };
 
 struct CliParseResult

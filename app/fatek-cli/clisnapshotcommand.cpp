@@ -12,7 +12,8 @@ void CliSnapshotCommand::run()
 {
     readSnapshot(step().ranges, [this](const SnapshotReader &reader) {
         const MemorySnapshot &s = reader.snapshot();
-        if (const auto problem = SnapshotFile::saveToFile(s, step().file)) {
+        if (const auto problem = SnapshotFile::saveToFile(
+                s, step().file, options().crlf ? CsvFile::LineEnd::CrLf : CsvFile::LineEnd::Lf)) {
             out().error(englishText(problem->message), ExitCode::Internal);
             return m_context.finish(ExitCode::Internal);
         }

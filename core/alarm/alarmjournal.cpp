@@ -3,6 +3,7 @@
 #include "alarmmessages.h"
 
 #include "core/watch/csvfield.h"
+#include "core/watch/csvfile.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -450,6 +451,16 @@ Result<QList<AlarmEvent>> AlarmJournal::events(qint64 fromMs, qint64 toMs,
 
 QByteArray AlarmJournal::toCsv(const QList<AlarmEvent> &events)
 {
+    return csvText(events).toUtf8();
+}
+
+QByteArray AlarmJournal::toCsvFile(const QList<AlarmEvent> &events, CsvFile::LineEnd lineEnd)
+{
+    return CsvFile::bytes(csvText(events), lineEnd);
+}
+
+QString AlarmJournal::csvText(const QList<AlarmEvent> &events)
+{
     QString out = QStringLiteral("time,connection,alarm,kind,event,state,priority,group,message,"
                                  "value,user,comment,shelved until\n");
     for (const AlarmEvent &e : events) {
@@ -477,7 +488,7 @@ QByteArray AlarmJournal::toCsv(const QList<AlarmEvent> &events)
         }
         out += QLatin1Char('\n');
     }
-    return out.toUtf8();
+    return out;
 }
 
 } // namespace Fatek

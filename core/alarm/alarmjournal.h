@@ -3,6 +3,7 @@
 #include "alarmtypes.h"
 
 #include "core/protocol/result.h"
+#include "core/watch/csvfile.h"
 
 #include <QList>
 #include <QString>
@@ -47,6 +48,8 @@ public:
     // connection, alarm, kind, event, state, priority, group, message, value, user, comment,
     // shelved until.
     static QByteArray toCsv(const QList<AlarmEvent> &events);
+    // The same as the bytes of a CSV file (CsvFile: the byte order mark, the line ends asked).
+    static QByteArray toCsvFile(const QList<AlarmEvent> &events, CsvFile::LineEnd lineEnd);
     // "2026-12-07T17:23:31.253+08:00": a time as it read where it happened (the CSV's, the CLI's).
     static QString localTime(qint64 ms, int utcOffsetS);
 
@@ -58,6 +61,7 @@ public:
 private:
     explicit AlarmJournal(const QString &path);
     static Result<std::unique_ptr<AlarmJournal>> openFile(const QString &path, bool readOnly);
+    static QString csvText(const QList<AlarmEvent> &events);
     Status checkAndCreate(bool readOnly);
     Status exec(const char *sql);
     Status prepareWrites();

@@ -172,13 +172,6 @@ QString csvLine(const QStringList &cells)
     return out.join(QLatin1Char(',')) + QLatin1Char('\n');
 }
 
-QByteArray csvBytes(QString text, CheckoutReport::LineEnds ends)
-{
-    if (ends == CheckoutReport::LineEnds::CrLf)
-        text.replace(QLatin1Char('\n'), QStringLiteral("\r\n"));
-    return QByteArray("\xEF\xBB\xBF") + text.toUtf8();
-}
-
 } // namespace
 
 QByteArray CheckoutReport::toCsv(const TextFunction &textFunction, LineEnds ends) const
@@ -198,7 +191,7 @@ QByteArray CheckoutReport::toCsv(const TextFunction &textFunction, LineEnds ends
                         r.engineer, QString::number(r.attempts)});
     }
     out += QStringLiteral("# %1: %2\n").arg(text(msg<MsgId::ReportSummaryTitle>()), text(summary));
-    return csvBytes(out, ends);
+    return CsvFile::bytes(out, ends);
 }
 
 QByteArray CheckoutReport::punchCsv(const TextFunction &textFunction, LineEnds ends) const
@@ -216,7 +209,7 @@ QByteArray CheckoutReport::punchCsv(const TextFunction &textFunction, LineEnds e
         out += csvLine({p.address, p.name, text(checkoutResultMessage(p.result)), p.remark, p.owner,
                         text(p.state)});
     }
-    return csvBytes(out, ends);
+    return CsvFile::bytes(out, ends);
 }
 
 } // namespace Fatek

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "checkoutplan.h"
+#include "core/watch/csvfile.h"
 
 #include <QByteArray>
 #include <QString>
@@ -47,8 +48,8 @@ struct CheckoutReport
         Message state; // open, or closed when and by whom
         bool closed = false;
     };
-    // CSV line ends: LF, or CRLF for programs on Windows that want them.
-    enum class LineEnds { Lf, CrLf };
+    // CSV line ends: LF, or CRLF for programs on Windows that want them (CsvFile writes both).
+    using LineEnds = CsvFile::LineEnd;
 
     // Project, customer, PLC model, OS version, station, the test dates, when the report was
     // made, and who recorded the results (with how many each).

@@ -122,27 +122,27 @@ QByteArray saveJson(const MemorySnapshot &s)
     return text;
 }
 
-QByteArray saveCsv(const MemorySnapshot &s)
+QByteArray saveCsv(const MemorySnapshot &s, CsvFile::LineEnd lineEnd)
 {
-    QByteArray out;
+    QString out;
     auto meta = [&out](const char *key, const QString &value) {
         QString clean = value;
         clean.replace(QLatin1Char('\n'), QLatin1Char(' '))
             .replace(QLatin1Char('\r'), QLatin1Char(' '));
-        out += "# " + QByteArray(key) + ": " + clean.toUtf8() + '\n';
+        out += QStringLiteral("# %1: %2\n").arg(QLatin1String(key), clean);
     };
-    out += "# " + QByteArray(FormatMarker) + ' ' + QByteArray::number(CurrentVersion) + '\n';
+    out += QStringLiteral("# %1 %2\n").arg(QLatin1String(FormatMarker)).arg(CurrentVersion);
     meta("taken", takenText(s.info.taken));
     meta("link", s.info.link);
     meta("station", QString::number(s.info.station));
     meta("protocol", s.info.protocol);
     meta("model", s.info.model);
-    out += "address,value,hex\n";
+    out += QStringLiteral("address,value,hex\n");
     for (const SnapshotValue &v : s.values) {
-        out += QByteArray::fromStdString(v.address.toString()) + ',' + QByteArray::number(v.value)
-               + ',' + hexText(v).toLatin1() + '\n';
+        out += QString::fromStdString(v.address.toString()) + QLatin1Char(',')
+               + QString::number(v.value) + QLatin1Char(',') + hexText(v) + QLatin1Char('\n');
     }
-    return out;
+    return CsvFile::bytes(out, lineEnd);
 }
 
 // Line and column (1-based) of a byte offset.
@@ -351,9 +351,9 @@ std::optional<Format> formatFor(const QString &path)
     return std::nullopt;
 }
 
-QByteArray save(const MemorySnapshot &snapshot, Format format)
+QByteArray save(const MemorySnapshot &snapshot, Format format, CsvFile::LineEnd lineEnd)
 {
-    return format == Format::Json ? saveJson(snapshot) : saveCsv(snapshot);
+    return format == Format::Json ? saveJson(snapshot) : saveCsv(snapshot, lineEnd);
 }
 
 Loaded load(const QByteArray &data, Format format)
@@ -361,12 +361,13 @@ Loaded load(const QByteArray &data, Format format)
     return format == Format::Json ? loadJson(data) : loadCsv(data);
 }
 
-std::optional<Error> saveToFile(const MemorySnapshot &snapshot, const QString &path)
+std::optional<Error> saveToFile(const MemorySnapshot &snapshot, const QString &path,
+                                CsvFile::LineEnd lineEnd)
 {
     const auto format = formatFor(path);
     if (!format)
         return Error{Kind::Io, 0, 0, msg<MsgId::SnapshotFileUnknownType>(path.toStdString())};
-    const QByteArray data = save(snapshot, *format);
+    const QByteArray data = save(snapshot, *format, lineEnd);
     if (const QString reason = SafeFile::write(path, data); !reason.isEmpty())
         return Error{Kind::Io, 0, 0,
                      msg<MsgId::SnapshotFileCannotWrite>(path.toStdString(),

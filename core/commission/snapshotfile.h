@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/message.h"
+#include "core/watch/csvfile.h"
 #include "memorysnapshot.h"
 
 #include <QByteArray>
@@ -64,11 +65,15 @@ struct Loaded
     bool ok() const { return snapshot.has_value(); }
 };
 
-QByteArray save(const MemorySnapshot &snapshot, Format format);
+// CSV as a file Excel on Windows opens right: UTF-8 with the byte order mark, the line ends asked
+// (CsvFile); JSON is plain UTF-8 with LF.
+QByteArray save(const MemorySnapshot &snapshot, Format format,
+                CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
 Loaded load(const QByteArray &data, Format format);
 
 // Through QSaveFile: on any error an existing file stays as it was.
-std::optional<Error> saveToFile(const MemorySnapshot &snapshot, const QString &path);
+std::optional<Error> saveToFile(const MemorySnapshot &snapshot, const QString &path,
+                                CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
 Loaded loadFromFile(const QString &path);
 
 } // namespace SnapshotFile

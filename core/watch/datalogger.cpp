@@ -1,6 +1,7 @@
 #include "datalogger.h"
 
 #include "csvfield.h"
+#include "csvfile.h"
 #include "safefile.h"
 
 #include <QDir>
@@ -39,11 +40,13 @@ qint64 lastRowEnd(QFile &file)
     return 0;
 }
 
-// The first line of an existing file, without its line end (and without a UTF-8 BOM).
-QString firstLine(QFile &file)
+// The first line of an existing file, without its line end (and without a UTF-8 BOM), and the
+// line end it has (the rows appended to it keep it).
+QString firstLine(QFile &file, CsvFile::LineEnd *lineEnd)
 {
     QByteArray line = file.readLine(64 * 1024);
-    if (line.startsWith("\xEF\xBB\xBF"))
+    *lineEnd = CsvFile::lineEndOf(line);
+    if (line.startsWith(CsvFile::Bom))
         line.remove(0, 3);
     while (line.endsWith('\n') || line.endsWith('\r'))
         line.chop(1);
@@ -192,7 +195,8 @@ QString DataLogger::rowLine(const QDateTime &time, const QList<WatchItemSpec> &i
     return out.join(QLatin1Char(','));
 }
 
-Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
+Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items,
+                        CsvFile::LineEnd lineEnd)
 {
     close();
     m_failure.reset();
@@ -237,7 +241,7 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
     const bool isNew = !regular || m_file.size() == 0;
     if (!isNew) {
         m_file.seek(0);
-        const QString existing = firstLine(m_file);
+        const QString existing = firstLine(m_file, &lineEnd);
         if (existing != header) {
             m_file.close();
             m_fileProblem = false; // what the file holds: another log
@@ -254,10 +258,14 @@ Status DataLogger::open(const QString &path, const QList<WatchItemSpec> &items)
     m_path = path;
     m_items = items;
     m_columns = columns;
+    m_lineEnd = lineEnd;
     // The header reaches the disk at once: an unwritable medium shows up at start, not later.
     if (isNew) {
-        if (const QString reason
-            = SafeFile::writeAll(m_file, (header + QLatin1Char('\n')).toUtf8());
+        // A new file starts with the byte order mark (Excel reads it as UTF-8 then); a device
+        // or a pipe is no file a spreadsheet opens.
+        const QString line = header + QLatin1Char('\n');
+        if (const QString reason = SafeFile::writeAll(
+                m_file, regular ? CsvFile::bytes(line, lineEnd) : CsvFile::lines(line, lineEnd));
             !reason.isEmpty()) {
             // No log is left behind that holds nothing, or half a header.
             if (regular) {
@@ -280,7 +288,8 @@ Status DataLogger::writeRow(const QDateTime &time, const QList<Cell> &cells)
         return *m_failure;
     if (!m_file.isOpen())
         return fileError(QStringLiteral("The data log is not open."));
-    const QByteArray line = (rowLine(time, m_items, cells) + QLatin1Char('\n')).toUtf8();
+    const QByteArray line
+        = CsvFile::lines(rowLine(time, m_items, cells) + QLatin1Char('\n'), m_lineEnd);
     // A row is written whole or not at all: what part of it fitted is taken back.
     const qint64 before = m_file.isSequential() ? -1 : m_file.size();
     if (const QString reason = SafeFile::writeAll(m_file, line); !reason.isEmpty()) {

@@ -2,6 +2,7 @@
 
 #include "core/protocol/result.h"
 #include "core/session/watchvalue.h"
+#include "csvfile.h"
 #include "watchlist.h"
 
 #include <QDateTime>
@@ -35,9 +36,11 @@ namespace Fatek {
 //   "stale R1, R2 (timeout); error R9 (PLC error A)", or "error all items (reason)" when no
 //   item is fresh for one cause (the link is down); "ok" when every cell is fresh.
 //
-// The file is opened for appending: an empty or new file gets the header; an existing log must
-// have the same header (else open() refuses rather than mixing columns). A device or a named pipe
-// is written only (no header check). Each row is written unbuffered and checked
+// The file is opened for appending: an empty or new file gets the byte order mark (UTF-8 for
+// Excel) and the header, its lines ended as open() is asked (LF or CRLF); an existing log must
+// have the same header (else open() refuses rather than mixing columns) and keeps its own line
+// ends (those of its first line), never a second mark. A device or a named pipe
+// is written only (no header check, no mark). Each row is written unbuffered and checked
 // (SafeFile::writeAll): a failed write (disk full, removed medium) is returned by that row's
 // writeRow with the system's reason, closes the log, and every later call returns that error.
 // A row is whole or absent: what part of a failed row reached a file is cut off again, an
@@ -60,7 +63,9 @@ public:
     DataLogger(const DataLogger &) = delete;
     DataLogger &operator=(const DataLogger &) = delete;
 
-    Status open(const QString &path, const QList<WatchItemSpec> &items);
+    // `lineEnd`: a new file's line ends (an existing log keeps its own).
+    Status open(const QString &path, const QList<WatchItemSpec> &items,
+                CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
     // One row; cells in the order of the items given to open(). Fewer cells count as Missing.
     Status writeRow(const QDateTime &time, const QList<Cell> &cells);
     Status flush();
@@ -76,6 +81,8 @@ public:
     QString path() const { return m_path; }
     qint64 rowCount() const { return m_rows; }
     QStringList columns() const { return m_columns; }
+    // The open log's line ends: as asked for a new file, as found in an existing one.
+    CsvFile::LineEnd lineEnd() const { return m_lineEnd; }
     // 0: flush after every row.
     void setFlushIntervalMs(int ms) { m_flushIntervalMs = ms; }
 
@@ -105,6 +112,7 @@ private:
     QString m_path;
     QList<WatchItemSpec> m_items;
     QStringList m_columns;
+    CsvFile::LineEnd m_lineEnd = CsvFile::LineEnd::Lf;
     qint64 m_rows = 0;
     int m_flushIntervalMs = 1000;
     QElapsedTimer m_sinceFlush;

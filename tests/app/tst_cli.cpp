@@ -155,6 +155,7 @@ private Q_SLOTS:
     void simRawFrame();
     void simJsonShape();
     void simCsvShape();
+    void simCsvFilesForExcel();
     void simMixedRead();
     void completions();
     void simReadSplitsAndFormats();
@@ -317,6 +318,10 @@ void TestCli::usageErrors_data()
     QTest::newRow("names for read") << sim({QStringLiteral("read"), QStringLiteral("R0"),
                                             QStringLiteral("--names"), QStringLiteral("names.csv")})
                                     << QStringLiteral("monitor");
+    // --crlf is for the CSV files a command writes: read writes none (its --csv is stdout).
+    QTest::newRow("crlf without a CSV file")
+        << sim({QStringLiteral("--crlf"), QStringLiteral("read"), QStringLiteral("R0")})
+        << QStringLiteral("--crlf only applies to");
 }
 
 void TestCli::usageErrors()
@@ -517,7 +522,9 @@ void TestCli::simMonitorStopsOnInterrupt()
     out += p.readAllStandardOutput();
     QFile f(path);
     QVERIFY(f.open(QIODevice::ReadOnly));
-    QCOMPARE(f.readAll(), out);
+    // The file starts with the byte order mark (Excel on Windows), stdout does not (a pipe).
+    QVERIFY(!out.startsWith("\xEF\xBB\xBF"));
+    QCOMPARE(f.readAll(), QByteArray("\xEF\xBB\xBF") + out);
 #else
     QSKIP("Unix signals");
 #endif
@@ -576,6 +583,55 @@ void TestCli::simJsonShape()
     QCOMPARE(o.value(QStringLiteral("code")).toInt(), 4);
     QVERIFY(o.value(QStringLiteral("error")).toString().startsWith(QLatin1String("PLC error A")));
     QCOMPARE(o.value(QStringLiteral("plcError")).toString(), QStringLiteral("A"));
+}
+
+// Issue 57: every CSV file written starts with the UTF-8 byte order mark (Excel on Windows reads
+// it as UTF-8 then), with CRLF under --crlf; CSV on stdout has neither (a pipe is not Excel); a
+// data log appended to keeps its own line ends and gets no second mark.
+void TestCli::simCsvFilesForExcel()
+{
+    QTemporaryDir dir;
+    const QString log = dir.filePath(QStringLiteral("log.csv"));
+    const QStringList monitor{
+        QStringLiteral("--csv"),      QStringLiteral("monitor"),  QStringLiteral("R20"),
+        QStringLiteral("--interval"), QStringLiteral("50"),       QStringLiteral("--cycles"),
+        QStringLiteral("2"),          QStringLiteral("--output"), log};
+    const Run m = runCli(sim(QStringList{QStringLiteral("--crlf")} + monitor));
+    RUN_OK(m);
+    QVERIFY2(m.out.startsWith(QLatin1String("timestamp,R20,status\n")), qPrintable(m.out));
+    QVERIFY(!m.out.contains(QChar(0xFEFF)));
+    QVERIFY(!m.out.contains(QLatin1Char('\r')));
+    QByteArray data = fileBytes(log);
+    QVERIFY2(data.startsWith("\xEF\xBB\xBFtimestamp,R20,status\r\n"), data.constData());
+    QCOMPARE(data.count('\n'), 3);
+    QCOMPARE(data.count("\r\n"), 3);
+    // Appended to without --crlf: the file's own CRLF, one mark.
+    const Run again = runCli(sim(monitor));
+    RUN_OK(again);
+    data = fileBytes(log);
+    QCOMPARE(data.count('\n'), 5);
+    QCOMPARE(data.count("\r\n"), 5);
+    QCOMPARE(data.count("\xEF\xBB\xBF"), 1);
+
+    // A snapshot as CSV: the mark, CRLF under --crlf, LF without.
+    const QString crlf = dir.filePath(QStringLiteral("crlf.csv"));
+    const Run crlfSnapshot = runCli(sim(
+        {QStringLiteral("--crlf"), QStringLiteral("snapshot"), crlf, QStringLiteral("R0..R3")}));
+    RUN_OK(crlfSnapshot);
+    data = fileBytes(crlf);
+    QVERIFY2(data.startsWith("\xEF\xBB\xBF# fatek-studio-snapshot 1\r\n"), data.constData());
+    QVERIFY(data.contains("address,value,hex\r\nR0,"));
+    QCOMPARE(data.count('\n'), data.count("\r\n"));
+    const QString lf = dir.filePath(QStringLiteral("lf.csv"));
+    const Run lfSnapshot = runCli(sim({QStringLiteral("snapshot"), lf, QStringLiteral("R0..R3")}));
+    RUN_OK(lfSnapshot);
+    data = fileBytes(lf);
+    QVERIFY2(data.startsWith("\xEF\xBB\xBF# fatek-studio-snapshot 1\n"), data.constData());
+    QVERIFY(!data.contains('\r'));
+    // Both read back: the two files compared offline agree on R2..R3 (the demo ladder may move R0
+    // and R1 between the two snapshots).
+    const Run d = runCli({QStringLiteral("diff"), crlf, lf, QStringLiteral("R2..R3")});
+    QVERIFY2(d.code == 0, qPrintable(d.err + d.out));
 }
 
 void TestCli::simCsvShape()
@@ -1227,7 +1283,7 @@ void TestCli::monitorLogFillsTheDisk()
     QStringList cycles = r.lines();
     cycles.removeIf([](const QString &l) { return !l.contains(QLatin1String("\"cycle\"")); });
     QCOMPARE(cycles.size(), 20);
-    QVERIFY(fileBytes(path).startsWith("timestamp,R0,R1,"));
+    QVERIFY(fileBytes(path).startsWith("\xEF\xBB\xBFtimestamp,R0,R1,"));
 }
 
 void TestCli::outputOnFullDevice_data()

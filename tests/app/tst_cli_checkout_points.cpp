@@ -9,6 +9,7 @@
 #include "simchild.h"
 #include "testutil.h"
 
+#include <QFileInfo>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
@@ -32,6 +33,7 @@ private Q_SLOTS:
     void refusedPointsNamed();
     void reportPeoplePunchListCrlf();
     void punchCheckedBeforeForcing();
+    void punchOnAFailingDeviceFollowsOnStdout();
     void notApplicableIsDone();
 
 private:
@@ -413,6 +415,30 @@ void TestCliCheckoutPoints::punchCheckedBeforeForcing()
     QVERIFY2(!cli.err.contains(QLatin1String("is ON now")), qPrintable(cli.err));
     QVERIFY(!QFile::exists(m_file)
             || savedCheckout(m_file).results.count(QStringLiteral("untested")) == 2);
+}
+
+// Issue 57: a punch list whose device fails at the end (a link to /dev/full) follows on standard
+// output, which is no file: it stays without the byte order mark the file would have had (a guard:
+// QString::fromUtf8 already drops the mark there).
+void TestCliCheckoutPoints::punchOnAFailingDeviceFollowsOnStdout()
+{
+    if (!QFileInfo::exists(QStringLiteral("/dev/full")))
+        QSKIP("no /dev/full");
+    const QString punch = m_dir.filePath(QStringLiteral("full-punch.csv"));
+    QVERIFY(QFile::link(QStringLiteral("/dev/full"), punch));
+    CheckoutCli cli;
+    startCheckout(cli, QStringLiteral("Y0..Y1"), {QStringLiteral("--punch"), punch});
+    QVERIFY2(cli.said(QStringLiteral("Y0 is ON now.")), qPrintable(cli.err));
+    cli.answer("n lamp holder broken\n");
+    QVERIFY2(cli.said(QStringLiteral("Y1 is ON now.")), qPrintable(cli.err));
+    cli.answer("y\n");
+    QCOMPARE(cli.exitCode(), 1);
+    QVERIFY2(cli.err.contains(QLatin1String("The punch list follows on standard output")),
+             qPrintable(cli.err));
+    const QByteArray out = cli.process.readAllStandardOutput();
+    QVERIFY2(out.startsWith("# Punch list\n"), out.constData());
+    QVERIFY(out.contains("lamp holder broken"));
+    QVERIFY(!out.contains("\xEF\xBB\xBF"));
 }
 
 // Item 6: not applicable is done (exit 0); deferred is not (exit 6, as failed and untested).

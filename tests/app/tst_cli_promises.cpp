@@ -298,7 +298,7 @@ void TestCliPromises::monitorLogOnFullDiskWholeRows()
     QCOMPARE(r.code, 1);
     QVERIFY2(r.err.contains(QLatin1String("No space left on device")), qPrintable(r.err));
     const QByteArray bytes = bytesOf(path);
-    QVERIFY(bytes.startsWith("timestamp,R0,R1,"));
+    QVERIFY(bytes.startsWith("\xEF\xBB\xBFtimestamp,R0,R1,"));
     QVERIFY2(bytes.endsWith('\n'), bytes.right(80).constData());
     const QList<QByteArray> rows = bytes.trimmed().split('\n');
     QVERIFY(rows.size() >= 2);

@@ -4,6 +4,7 @@
 #include "core/commission/snapshotfile.h"
 #include "tst_tools_boxes.h"
 #include "tst_tools_fixture.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/tools/snapshotdialog.h"
 #include "ui/tools/snapshotdiffmodel.h"
 
@@ -140,7 +141,15 @@ void TestToolsSnapshot::compareFilesAndExport()
     QFile f(csv);
     QVERIFY(f.open(QIODevice::ReadOnly));
     QCOMPARE(f.readAll(),
-             QByteArray("address,before,after,beforeHex,afterHex\nD2,0,7,0x0000,0x0007\n"));
+             QByteArray("\xEF\xBB\xBF"
+                        "address,before,after,beforeHex,afterHex\nD2,0,7,0x0000,0x0007\n"));
+    f.close();
+    // The file type "CSV, Windows line ends": CRLF.
+    QVERIFY(m_dialog->exportDifferences(csv, CsvFile::LineEnd::CrLf));
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(),
+             QByteArray("\xEF\xBB\xBF"
+                        "address,before,after,beforeHex,afterHex\r\nD2,0,7,0x0000,0x0007\r\n"));
     // A device that takes nothing: refused with the system's reason in the message line.
     if (QFileInfo(QStringLiteral("/dev/full")).exists()) {
         QVERIFY(!m_dialog->exportDifferences(QStringLiteral("/dev/full")));
@@ -251,7 +260,10 @@ void TestToolsSnapshot::filePickersAndClose()
     QCOMPARE(asked.size(), 1);
     QVERIFY(asked.last().save);
     QCOMPARE(asked.last().title, SnapshotDialog::tr("Save Snapshot"));
-    QCOMPARE(asked.last().filter, SnapshotDialog::tr("Snapshots (*.json *.csv)"));
+    // Saving offers a second type: a .csv snapshot with Windows line ends.
+    QCOMPARE(asked.last().filter, SnapshotDialog::tr("Snapshots (*.json *.csv)")
+                                      + QStringLiteral(";;") + CsvFileFilter::windows());
+    QVERIFY(asked.last().selectedFilter);
     QCOMPARE(QDir(m_dir.path()).entryList(QDir::Files), files); // nothing written
 
     answer = m_dir.filePath(QStringLiteral("picked.json"));
@@ -262,6 +274,23 @@ void TestToolsSnapshot::filePickersAndClose()
     QCOMPARE(asked.size(), 3);
     QVERIFY(!asked.last().save);
     QCOMPARE(asked.last().title, SnapshotDialog::tr("Open Snapshot"));
+    QCOMPARE(asked.last().filter, SnapshotDialog::tr("Snapshots (*.json *.csv)"));
+    QCOMPARE(m_dialog->messageText(), SnapshotDialog::tr("Opened %1.").arg(answer));
+
+    // The Windows type chosen: the .csv snapshot has the byte order mark and CRLF, and opens.
+    answer = m_dir.filePath(QStringLiteral("windows.csv"));
+    m_dialog->setFileChooser([&answer](const ToolDialogFrame::FileQuestion &question) {
+        if (question.selectedFilter)
+            *question.selectedFilter = CsvFileFilter::windows();
+        return answer;
+    });
+    save->click();
+    QFile csv(answer);
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QByteArray data = csv.readAll();
+    QVERIFY2(data.startsWith("\xEF\xBB\xBF# fatek-studio-snapshot 1\r\n"), data.constData());
+    QCOMPARE(data.count('\n'), data.count("\r\n"));
+    open->click();
     QCOMPARE(m_dialog->messageText(), SnapshotDialog::tr("Opened %1.").arg(answer));
 
     QSignalSpy finished(m_dialog.get(), &SnapshotDialog::actionFinished);

@@ -293,6 +293,16 @@ private Q_SLOTS:
         const QString text = QString::fromUtf8(file.readAll());
         QVERIFY(text.contains(QLatin1String("pump checked")));
         QVERIFY(text.contains(QLatin1String("1-R1-high")));
+        // A file for Excel on Windows: the byte order mark, and CRLF when that type is chosen.
+        file.seek(0);
+        QVERIFY(file.readAll().startsWith("\xEF\xBB\xBFtime,connection,alarm,"));
+        file.close();
+        QCOMPARE(journal->exportCsv(csv, CsvFile::LineEnd::CrLf), QString());
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray crlf = file.readAll();
+        QVERIFY2(crlf.startsWith("\xEF\xBB\xBFtime,connection,alarm,") && crlf.contains("\r\n")
+                     && crlf.count('\n') == crlf.count("\r\n"),
+                 crlf.constData());
     }
 
     // The dialog names a wrong definition in words and stays; the change is one undoable step;

@@ -8,6 +8,7 @@
 #include "core/commission/checkoutfile.h"
 #include "core/sim/faultconfig.h"
 #include "testutil.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/tools/checkoutpunchdialog.h"
 #include "uitestutil.h"
 
@@ -530,8 +531,23 @@ private Q_SLOTS:
                           Qt::LeftButton);
         const QByteArray punchCsv = readFile(chosen);
         QVERIFY2(punchCsv.startsWith("\xEF\xBB\xBF") && punchCsv.contains("Electrician Lee")
-                     && punchCsv.contains("panel not powered"),
+                     && punchCsv.contains("panel not powered") && !punchCsv.contains('\r'),
                  punchCsv.constData());
+        // The second file type, "CSV, Windows line ends": the same list with CRLF.
+        chosen = m_bench.files.filePath(QStringLiteral("punch-crlf.csv"));
+        dialog->setFileChooser([&chosen](const ToolDialogFrame::FileQuestion &q) {
+            if (q.selectedFilter
+                && q.filter.split(QStringLiteral(";;")).contains(CsvFileFilter::windows()))
+                *q.selectedFilter = CsvFileFilter::windows();
+            return chosen;
+        });
+        QTest::mouseClick(punch->findChild<QPushButton *>(QStringLiteral("exportPunchButton")),
+                          Qt::LeftButton);
+        const QByteArray punchCrlf = readFile(chosen);
+        QVERIFY2(punchCrlf.startsWith("\xEF\xBB\xBF") && punchCrlf.contains("Electrician Lee")
+                     && punchCrlf.count('\n') == punchCrlf.count("\r\n")
+                     && punchCrlf.contains("\r\n"),
+                 punchCrlf.constData());
         punch->close();
 
         // The report as CSV with Windows line ends, and the details in it.

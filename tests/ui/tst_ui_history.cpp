@@ -10,10 +10,13 @@
 #include "core/history/historystore.h"
 #include "core/history/historywriter.h"
 #include "testutil.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/history/historycenter.h"
 #include "ui/history/historyui.h"
 #include "ui/mainwindow/mainwindow.h"
+#include "ui/trend/tablelogger.h"
 #include "ui/trend/trendhistory.h"
+#include "ui/trend/trendlogging.h"
 #include "ui/trend/trendview.h"
 #include "ui/watch/watchtablemodel.h"
 #include "uitestutil.h"
@@ -125,6 +128,26 @@ QString prefill(const QString &location, Prefill *out)
 QString location()
 {
     return qEnvironmentVariable("FATEK_HISTORY");
+}
+
+// In the save dialog `modal` (a QFileDialog): chooses the file type "CSV, Windows line ends" and
+// types `path`. Returns false for another modal, or when that type is not offered (the dialog is
+// cancelled then).
+bool saveAsWindowsCsv(QWidget *modal, const QString &path)
+{
+    auto *dialog = qobject_cast<QFileDialog *>(modal);
+    auto *edit = dialog ? dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit")) : nullptr;
+    if (!edit)
+        return false;
+    if (!dialog->nameFilters().contains(CsvFileFilter::windows())) {
+        dialog->reject();
+        return false;
+    }
+    dialog->selectNameFilter(CsvFileFilter::windows());
+    edit->setFocus();
+    QTest::keyClicks(edit, path);
+    QTest::keyClick(edit, Qt::Key_Return);
+    return true;
 }
 
 void clickCell(QTableView *view, const QModelIndex &index)
@@ -437,24 +460,21 @@ void TestUiHistory::scrollBackIntoRecordedValues()
     bool typed = false;
     UiTestUtil::answerModal(
         [&] { QTest::mouseClick(exportButton, Qt::LeftButton, {}, QPoint(), mouseDelayMs); },
-        [&](QWidget *modal) {
-            auto *dialog = qobject_cast<QFileDialog *>(modal);
-            auto *edit
-                = dialog ? dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit")) : nullptr;
-            if (!edit)
-                return;
-            edit->setFocus();
-            QTest::keyClicks(edit, csv);
-            QTest::keyClick(edit, Qt::Key_Return);
-            typed = true;
-        });
+        // The second file type: the same CSV with Windows line ends.
+        [&](QWidget *modal) { typed = typed || saveAsWindowsCsv(modal, csv); });
     QVERIFY(typed);
     QVERIFY(exported.wait(longWait) || !exported.isEmpty());
     QCOMPARE(exported.constFirst().at(2).toString(), QString());
     QFile file(csv);
-    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
-    const QStringList lines
-        = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QByteArray data = file.readAll();
+    // UTF-8 with the byte order mark and CRLF: as Excel on Windows opens it right.
+    QVERIFY2(data.startsWith("\xEF\xBB\xBFtime,series,value,raw,quality\r\n"),
+             data.left(60).constData());
+    QCOMPARE(data.count("\r\n"), data.count('\n'));
+    data.remove(0, 3);
+    data.replace("\r\n", "\n");
+    const QStringList lines = QString::fromUtf8(data).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     QCOMPARE(lines.constFirst(), QStringLiteral("time,series,value,raw,quality"));
     std::vector<HistorySample> expected;
     for (const HistorySample &s : m_prefill.samples) {
@@ -483,6 +503,29 @@ void TestUiHistory::scrollBackIntoRecordedValues()
         }
     }
     QVERIFY(sawStale);
+
+    // Start Data Logging…: its file dialog offers the same second type; chosen, the new log has
+    // the byte order mark and CRLF from its header on.
+    QAction *startLogging = nullptr;
+    for (QAction *action : m_window->findChildren<QAction *>()) {
+        if (action->text() == TrendLogging::tr("Start &Data Logging…"))
+            startLogging = action;
+    }
+    QVERIFY(startLogging);
+    const QString log = QFileInfo(location()).absolutePath() + QStringLiteral("/log-crlf.csv");
+    bool logTyped = false;
+    UiTestUtil::answerModal(
+        [&] { startLogging->trigger(); },
+        [&](QWidget *modal) { logTyped = logTyped || saveAsWindowsCsv(modal, log); });
+    QVERIFY(logTyped);
+    QVERIFY(m_window->tableLogger()->isLogging());
+    m_window->stopLogging();
+    QFile logFile(log);
+    QVERIFY(logFile.open(QIODevice::ReadOnly));
+    const QByteArray logData = logFile.readAll();
+    QVERIFY2(logData.startsWith("\xEF\xBB\xBFtimestamp,") && logData.contains(",status\r\n")
+                 && logData.count('\n') == logData.count("\r\n"),
+             logData.constData());
 
     // Custom…: the last choice of the box; the dialog's range is shown.
     window->setFocus(Qt::TabFocusReason);

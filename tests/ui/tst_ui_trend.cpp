@@ -485,8 +485,10 @@ void TestUiTrend::loggingWritesRows()
 
     QFile f(path);
     QVERIFY(f.open(QIODevice::ReadOnly));
-    const QStringList lines
-        = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QByteArray data = f.readAll();
+    QVERIFY(data.startsWith("\xEF\xBB\xBF")); // UTF-8 for Excel on Windows
+    data.remove(0, 3);
+    const QStringList lines = QString::fromUtf8(data).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     QCOMPARE(lines.size() - 1, expectedSine.size());
     const QStringList header = lines.at(0).split(QLatin1Char(','));
     QCOMPARE(header.first(), QStringLiteral("timestamp"));
@@ -560,8 +562,10 @@ void TestUiTrend::loggingTwoFormatsAndAnOutage()
 
     QFile f(path);
     QVERIFY(f.open(QIODevice::ReadOnly));
-    const QStringList lines
-        = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QByteArray data = f.readAll();
+    QVERIFY(data.startsWith("\xEF\xBB\xBF")); // UTF-8 for Excel on Windows
+    data.remove(0, 3);
+    const QStringList lines = QString::fromUtf8(data).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     QCOMPARE(lines.at(0), QStringLiteral("timestamp,R0 [signed],R0 [hex],R1,status"));
     QCOMPARE(lines.at(1).section(QLatin1Char(','), 1), QStringLiteral("-2,0xFFFE,7,ok"));
     int outageRows = 0;

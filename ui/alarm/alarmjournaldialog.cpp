@@ -4,6 +4,7 @@
 #include "core/alarm/alarmjournal.h"
 #include "core/alarm/alarmjournalwriter.h"
 #include "core/watch/safefile.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/common/lastdirectory.h"
 #include "ui/common/messageline.h"
 #include "ui/common/uitext.h"
@@ -196,20 +197,21 @@ void AlarmJournalDialog::query()
     });
 }
 
-QString AlarmJournalDialog::exportCsv(const QString &path) const
+QString AlarmJournalDialog::exportCsv(const QString &path, CsvFile::LineEnd lineEnd) const
 {
-    return SafeFile::write(path, AlarmJournal::toCsv(m_model->events()));
+    return SafeFile::write(path, AlarmJournal::toCsvFile(m_model->events(), lineEnd));
 }
 
 void AlarmJournalDialog::exportDialog()
 {
+    QString filter;
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Export Alarm Journal"), lastDirectory() + QStringLiteral("/alarms.csv"),
-        tr("CSV files (*.csv);;All files (*)"));
+        CsvFileFilter::both() + QStringLiteral(";;") + tr("All files (*)"), &filter);
     if (path.isEmpty())
         return;
     setLastDirectory(path);
-    if (const QString reason = exportCsv(path); !reason.isEmpty())
+    if (const QString reason = exportCsv(path, CsvFileFilter::lineEnd(filter)); !reason.isEmpty())
         m_message->setMessage(tr("Not exported: %1").arg(reason), true);
     else
         m_message->setMessage(

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/alarm/alarmtypes.h"
+#include "core/watch/csvfile.h"
 
 #include <QAbstractTableModel>
 #include <QDialog>
@@ -54,7 +55,8 @@ public:
     // Asks the journal for the range; finished() when the events are shown.
     void query();
     // Writes the events shown to `path` as CSV; the reason when it could not.
-    QString exportCsv(const QString &path) const;
+    // The events as a CSV file (the byte order mark, `lineEnd`); the reason when not written.
+    QString exportCsv(const QString &path, CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf) const;
 
 Q_SIGNALS:
     void queried();

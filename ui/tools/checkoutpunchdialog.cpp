@@ -4,6 +4,7 @@
 #include "core/commission/checkoutrunner.h"
 #include "core/watch/safefile.h"
 #include "tooldialogframe.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/common/toolpalette.h"
 #include "ui/common/uitext.h"
 
@@ -68,10 +69,11 @@ CheckoutPunchDialog::CheckoutPunchDialog(CheckoutRunner *runner, ToolDialogFrame
         closeOut(row);
     });
     connect(m_export, &QPushButton::clicked, this, [this] {
-        const QString path
-            = m_frame->chooseFile({true, tr("Export Punch List"), tr("CSV files (*.csv)"), {}});
+        QString filter;
+        const QString path = m_frame->chooseFile(
+            {true, tr("Export Punch List"), CsvFileFilter::both(), {}, &filter});
         if (!path.isEmpty())
-            exportCsv(path);
+            exportCsv(path, CsvFileFilter::lineEnd(filter));
     });
     connect(m_table, &QTableWidget::itemChanged, this, [this](QTableWidgetItem *item) {
         if (m_filling || item->column() != OwnerColumn)
@@ -136,11 +138,11 @@ void CheckoutPunchDialog::closeOut(int row)
     showMessage(tr("%1 is closed out.").arg(point), false);
 }
 
-bool CheckoutPunchDialog::exportCsv(const QString &path)
+bool CheckoutPunchDialog::exportCsv(const QString &path, CsvFile::LineEnd lineEnd)
 {
     const CheckoutReport report = CheckoutReport::of(m_runner->plan());
-    const QString reason
-        = SafeFile::write(path, report.punchCsv([](const Message &m) { return translated(m); }));
+    const QString reason = SafeFile::write(
+        path, report.punchCsv([](const Message &m) { return translated(m); }, lineEnd));
     if (!reason.isEmpty()) {
         showMessage(reason, true);
         return false;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/watch/csvfile.h"
+
 #include <QDialog>
 
 #include <vector>
@@ -33,7 +35,7 @@ public:
     QString messageText() const;
 
     void closeOut(int row);
-    bool exportCsv(const QString &path);
+    bool exportCsv(const QString &path, CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
 
 private:
     void fill();

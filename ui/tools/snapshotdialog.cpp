@@ -6,6 +6,7 @@
 #include "core/commission/valuesrestorer.h"
 #include "core/watch/safefile.h"
 #include "snapshotdiffmodel.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/common/uitext.h"
 
 #include <QFormLayout>
@@ -112,20 +113,23 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
     connect(m_cancel, &QPushButton::clicked, this, &SnapshotDialog::cancel);
     connect(m_comparePlc, &QPushButton::clicked, this, &SnapshotDialog::compareWithPlc);
     connect(m_restore, &QPushButton::clicked, this, &SnapshotDialog::restoreValues);
-    connect(m_save, &QPushButton::clicked, this,
-            [this] { pickSnapshotFile(true, tr("Save Snapshot"), &SnapshotDialog::saveSnapshot); });
+    connect(m_save, &QPushButton::clicked, this, [this] { askSaveSnapshot(); });
     connect(m_open, &QPushButton::clicked, this, [this] {
-        if (m_frame->mayDiscard())
-            pickSnapshotFile(false, tr("Open Snapshot"), &SnapshotDialog::openSnapshot);
+        if (!m_frame->mayDiscard())
+            return;
+        if (const QString path = pickSnapshotFile(false, tr("Open Snapshot")); !path.isEmpty())
+            openSnapshot(path);
     });
     connect(m_compareFile, &QPushButton::clicked, this, [this] {
-        pickSnapshotFile(false, tr("Compare With File"), &SnapshotDialog::compareWithFile);
+        if (const QString path = pickSnapshotFile(false, tr("Compare With File")); !path.isEmpty())
+            compareWithFile(path);
     });
     connect(m_export, &QPushButton::clicked, this, [this] {
-        const QString path
-            = m_frame->chooseFile({true, tr("Export Differences"), tr("CSV files (*.csv)"), {}});
+        QString filter;
+        const QString path = m_frame->chooseFile(
+            {true, tr("Export Differences"), CsvFileFilter::both(), {}, &filter});
         if (!path.isEmpty())
-            exportDifferences(path);
+            exportDifferences(path, CsvFileFilter::lineEnd(filter));
     });
     connect(m_filter, &QLineEdit::textChanged, m_proxy,
             &QSortFilterProxyModel::setFilterFixedString);
@@ -153,19 +157,34 @@ SnapshotDialog::SnapshotDialog(QWidget *parent)
                 .arg(m_snapshot->info.station);
         },
         [this] {
-            pickSnapshotFile(true, tr("Save Snapshot"), &SnapshotDialog::saveSnapshot);
+            askSaveSnapshot();
             return !hasUnsavedSnapshot();
         });
     setTarget(PlcTarget());
     resize(640, 560);
 }
 
-void SnapshotDialog::pickSnapshotFile(bool save, const QString &title,
-                                      bool (SnapshotDialog::*use)(const QString &))
+QString SnapshotDialog::pickSnapshotFile(bool save, const QString &title, CsvFile::LineEnd *lineEnd)
 {
-    const QString path = m_frame->chooseFile({save, title, tr("Snapshots (*.json *.csv)"), {}});
-    if (!path.isEmpty())
-        (this->*use)(path);
+    // Saving: a second type for a .csv snapshot with Windows line ends.
+    QString filter;
+    const QString snapshots = tr("Snapshots (*.json *.csv)");
+    const QString path = m_frame->chooseFile(
+        {save,
+         title,
+         save ? snapshots + QStringLiteral(";;") + CsvFileFilter::windows() : snapshots,
+         {},
+         &filter});
+    if (lineEnd)
+        *lineEnd = CsvFileFilter::lineEnd(filter);
+    return path;
+}
+
+void SnapshotDialog::askSaveSnapshot()
+{
+    CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf;
+    if (const QString path = pickSnapshotFile(true, tr("Save Snapshot"), &lineEnd); !path.isEmpty())
+        saveSnapshot(path, lineEnd);
 }
 
 void SnapshotDialog::setTarget(const PlcTarget &target)
@@ -316,11 +335,11 @@ void SnapshotDialog::onCompared()
     Q_EMIT actionFinished();
 }
 
-bool SnapshotDialog::saveSnapshot(const QString &path)
+bool SnapshotDialog::saveSnapshot(const QString &path, CsvFile::LineEnd lineEnd)
 {
     if (!m_snapshot)
         return false;
-    if (const auto problem = SnapshotFile::saveToFile(*m_snapshot, path)) {
+    if (const auto problem = SnapshotFile::saveToFile(*m_snapshot, path, lineEnd)) {
         showMessage(translated(problem->message), true);
         return false;
     }
@@ -362,9 +381,9 @@ bool SnapshotDialog::compareWithFile(const QString &path)
     return true;
 }
 
-bool SnapshotDialog::exportDifferences(const QString &path)
+bool SnapshotDialog::exportDifferences(const QString &path, CsvFile::LineEnd lineEnd)
 {
-    if (const QString reason = SafeFile::write(path, m_model->toCsv()); !reason.isEmpty()) {
+    if (const QString reason = SafeFile::write(path, m_model->toCsv(lineEnd)); !reason.isEmpty()) {
         showMessage(translated(msg<MsgId::SnapshotFileCannotWrite>(
                         path.toStdString(), Message::text(reason.toStdString()))),
                     true);

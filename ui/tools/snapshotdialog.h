@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/commission/memorysnapshot.h"
+#include "core/watch/csvfile.h"
 #include "tooldialogframe.h"
 
 #include <QDialog>
@@ -62,10 +63,11 @@ public Q_SLOTS:
     void compareWithPlc();
     void restoreValues();
     // The file actions, without their file dialogs (the buttons ask for the name first).
-    bool saveSnapshot(const QString &path);
+    // A .csv snapshot or difference list: the byte order mark, `lineEnd` (CsvFile).
+    bool saveSnapshot(const QString &path, CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
     bool openSnapshot(const QString &path);
     bool compareWithFile(const QString &path);
-    bool exportDifferences(const QString &path);
+    bool exportDifferences(const QString &path, CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
 
 Q_SIGNALS:
     // Taken, compared or restored: the outcome is in the message line.
@@ -80,9 +82,10 @@ private:
     void onRestored();
     void showMessage(const QString &text, bool error);
     void updateControls();
-    // Asks for a snapshot file (JSON or CSV) and hands its path to `use`.
-    void pickSnapshotFile(bool save, const QString &title,
-                          bool (SnapshotDialog::*use)(const QString &));
+    // Asks for a snapshot file (JSON or CSV); empty: cancelled. Saving: `lineEnd` gets the line
+    // ends of the file type chosen.
+    QString pickSnapshotFile(bool save, const QString &title, CsvFile::LineEnd *lineEnd = nullptr);
+    void askSaveSnapshot();
 
     SnapshotReader *m_reader;
     ValuesRestorer *m_restorer;

@@ -64,18 +64,19 @@ QVariant SnapshotDiffModel::headerData(int section, Qt::Orientation orientation,
     }
 }
 
-QByteArray SnapshotDiffModel::toCsv() const
+QByteArray SnapshotDiffModel::toCsv(CsvFile::LineEnd lineEnd) const
 {
-    QByteArray out = "address,before,after,beforeHex,afterHex\n";
+    QString out = QStringLiteral("address,before,after,beforeHex,afterHex\n");
     auto raw = [](const std::optional<std::uint32_t> &v) {
-        return v ? QByteArray::number(*v) : QByteArray();
+        return v ? QString::number(*v) : QString();
     };
     for (const SnapshotDifference &d : m_differences) {
-        out += QByteArray::fromStdString(d.address.toString()) + ',' + raw(d.before) + ','
-               + raw(d.after) + ',' + SnapshotDiff::hexText(d.address, d.before).toLatin1() + ','
-               + SnapshotDiff::hexText(d.address, d.after).toLatin1() + '\n';
+        out += QString::fromStdString(d.address.toString()) + QLatin1Char(',') + raw(d.before)
+               + QLatin1Char(',') + raw(d.after) + QLatin1Char(',')
+               + SnapshotDiff::hexText(d.address, d.before) + QLatin1Char(',')
+               + SnapshotDiff::hexText(d.address, d.after) + QLatin1Char('\n');
     }
-    return out;
+    return CsvFile::bytes(out, lineEnd);
 }
 
 } // namespace Fatek

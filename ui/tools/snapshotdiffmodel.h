@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/commission/snapshotdiff.h"
+#include "core/watch/csvfile.h"
 
 #include <QAbstractTableModel>
 
@@ -31,7 +32,8 @@ public:
                         int role = Qt::DisplayRole) const override;
 
     // address,before,after,beforeHex,afterHex: the raw values (empty when absent), one row each.
-    QByteArray toCsv() const;
+    // The differences as a CSV file's bytes (CsvFile: the byte order mark, the line ends asked).
+    QByteArray toCsv(CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf) const;
 
 private:
     std::vector<SnapshotDifference> m_differences;

@@ -128,10 +128,11 @@ QString ToolDialogFrame::chooseFile(const FileQuestion &question) const
 {
     if (m_chooser)
         return m_chooser(question);
-    return question.save ? QFileDialog::getSaveFileName(m_dialog, question.title,
-                                                        question.suggested, question.filter)
-                         : QFileDialog::getOpenFileName(m_dialog, question.title,
-                                                        question.suggested, question.filter);
+    return question.save
+               ? QFileDialog::getSaveFileName(m_dialog, question.title, question.suggested,
+                                              question.filter, question.selectedFilter)
+               : QFileDialog::getOpenFileName(m_dialog, question.title, question.suggested,
+                                              question.filter, question.selectedFilter);
 }
 
 } // namespace Fatek

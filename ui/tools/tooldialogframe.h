@@ -37,6 +37,8 @@ public:
         QString title;
         QString filter;
         QString suggested;
+        // Where the filter the person chose is put (a save as CSV: which line ends); may be null.
+        QString *selectedFilter = nullptr;
     };
     // Returns the chosen path; empty: the person cancelled.
     using FileChooser = std::function<QString(const FileQuestion &question)>;

@@ -21,14 +21,14 @@ TableLogger::~TableLogger()
     m_logger.close();
 }
 
-Status TableLogger::start(WatchTableModel *model, const QString &path)
+Status TableLogger::start(WatchTableModel *model, const QString &path, CsvFile::LineEnd lineEnd)
 {
     if (isLogging())
         stop();
     if (!model)
         return makeError(ErrorKind::InvalidRequest, tr("No watch table to log.").toStdString());
     const QList<WatchItemSpec> items = model->items();
-    if (const Status s = m_logger.open(path, items); !s)
+    if (const Status s = m_logger.open(path, items, lineEnd); !s)
         return s;
     m_model = model;
     m_specs = items;

@@ -23,7 +23,8 @@ public:
     explicit TableLogger(QObject *parent = nullptr);
     ~TableLogger() override;
 
-    Status start(WatchTableModel *model, const QString &path);
+    Status start(WatchTableModel *model, const QString &path,
+                 CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
     // Flushes and closes; stopped() follows.
     void stop();
     bool isLogging() const { return m_logger.isOpen(); }

@@ -9,6 +9,7 @@
 #include "core/watch/safefile.h"
 #include "core/watch/valueformat.h"
 #include "trendline.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/common/lastdirectory.h"
 #include "ui/common/uitext.h"
 #include "ui/history/historycenter.h"
@@ -307,7 +308,7 @@ void TrendHistory::answered(const TrendLine *line, quint64 generation,
 }
 
 void TrendHistory::exportRange(const std::vector<std::unique_ptr<TrendLine>> &lines, qint64 fromMs,
-                               qint64 toMs, const QString &path)
+                               qint64 toMs, const QString &path, CsvFile::LineEnd lineEnd)
 {
     QList<HistorySeries> series;
     QStringList keys;
@@ -322,13 +323,15 @@ void TrendHistory::exportRange(const std::vector<std::unique_ptr<TrendLine>> &li
         s.format = ValueFormat::name(line->spec.format);
         series.append(s);
     }
-    exportRange(series, fromMs, toMs, path);
+    exportRange(series, fromMs, toMs, path, lineEnd);
 }
 
-QString TrendHistory::askExportPath(QWidget *parent)
+QString TrendHistory::askExportPath(QWidget *parent, CsvFile::LineEnd *lineEnd)
 {
+    QString filter;
     QString path = QFileDialog::getSaveFileName(parent, tr("Export Range to CSV"), lastDirectory(),
-                                                tr("CSV files (*.csv)"));
+                                                CsvFileFilter::both(), &filter);
+    *lineEnd = CsvFileFilter::lineEnd(filter);
     if (path.isEmpty())
         return path;
     if (QFileInfo(path).suffix().isEmpty())
@@ -338,7 +341,7 @@ QString TrendHistory::askExportPath(QWidget *parent)
 }
 
 void TrendHistory::exportRange(const QList<HistorySeries> &series, qint64 fromMs, qint64 toMs,
-                               const QString &path)
+                               const QString &path, CsvFile::LineEnd lineEnd)
 {
     HistoryWriter *writer = m_center ? m_center->readableWriter() : nullptr;
     if (series.isEmpty() || !writer) {
@@ -358,7 +361,7 @@ void TrendHistory::exportRange(const QList<HistorySeries> &series, qint64 fromMs
     job->samples.resize(static_cast<std::size_t>(series.size()));
     job->found.resize(static_cast<std::size_t>(series.size()), false);
     job->waiting = series.size();
-    const auto finish = [this, job, path, fromMs, toMs] {
+    const auto finish = [this, job, path, fromMs, toMs, lineEnd] {
         if (job->error.isEmpty()
             && std::none_of(job->found.cbegin(), job->found.cend(), [](bool f) { return f; }))
             job->error = tr("None of the trend's items is recorded in the history.");
@@ -389,7 +392,8 @@ void TrendHistory::exportRange(const QList<HistorySeries> &series, qint64 fromMs
             text += HistoryCsv::rows(job->series.at(static_cast<qsizetype>(row.series)),
                                      {*row.sample});
         }
-        const QString error = SafeFile::write(path, text);
+        const QString error
+            = SafeFile::write(path, CsvFile::bytes(QString::fromUtf8(text), lineEnd));
         Q_EMIT exportFinished(
             path, error.isEmpty() ? static_cast<int>(rows.size()) : 0,
             error.isEmpty() ? QString()

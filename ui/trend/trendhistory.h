@@ -2,6 +2,7 @@
 
 #include "core/history/historytypes.h"
 #include "core/protocol/result.h"
+#include "core/watch/csvfile.h"
 #include "trendvalueaxes.h"
 
 #include <QList>
@@ -68,13 +69,16 @@ public:
     // fromMs <= time < toMs to `path` in time order (HistoryCsv: time in local ISO 8601 with its
     // offset, series, value, raw in hex, quality), atomically; exportFinished says how it went.
     // Series the store does not have are left out.
+    // The file starts with the byte order mark, its lines end as `lineEnd` (CsvFile).
     void exportRange(const QList<HistorySeries> &series, qint64 fromMs, qint64 toMs,
-                     const QString &path);
+                     const QString &path, CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
     // The same for the series of `lines` (those with a connection), each once.
     void exportRange(const std::vector<std::unique_ptr<TrendLine>> &lines, qint64 fromMs,
-                     qint64 toMs, const QString &path);
-    // Asks where to export (a file dialog); empty when cancelled.
-    static QString askExportPath(QWidget *parent);
+                     qint64 toMs, const QString &path,
+                     CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
+    // Asks where to export (a file dialog); empty when cancelled. `lineEnd` gets the line ends of
+    // the file type chosen (CSV, or CSV with Windows line ends).
+    static QString askExportPath(QWidget *parent, CsvFile::LineEnd *lineEnd);
 
 Q_SIGNALS:
     // Points arrived from the store: draw again.

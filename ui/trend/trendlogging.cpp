@@ -2,6 +2,7 @@
 
 #include "tablelogger.h"
 #include "trendview.h"
+#include "ui/common/csvfilefilter.h"
 #include "ui/common/lastdirectory.h"
 #include "ui/common/uitext.h"
 #include "ui/watch/watchtablemodel.h"
@@ -140,12 +141,12 @@ void TrendLogging::addToTrend(WatchTableWidget *table, const QList<int> &rows)
     showTrend();
 }
 
-Status TrendLogging::startLogging(const QString &path)
+Status TrendLogging::startLogging(const QString &path, CsvFile::LineEnd lineEnd)
 {
     WatchTableWidget *table = m_currentTable();
     if (!table)
         return makeError(ErrorKind::InvalidRequest, tr("No watch table to log.").toStdString());
-    if (const Status s = m_tableLogger->start(table->model(), path); !s)
+    if (const Status s = m_tableLogger->start(table->model(), path, lineEnd); !s)
         return s;
     updateLoggingStatus();
     Q_EMIT statusMessage(
@@ -173,15 +174,16 @@ void TrendLogging::startLoggingDialog()
                                     "the current table."));
         return;
     }
+    QString filter;
     QString path = QFileDialog::getSaveFileName(
-        m_window, tr("Log Watch Table to CSV"), lastDirectory(), tr("CSV files (*.csv)"), nullptr,
+        m_window, tr("Log Watch Table to CSV"), lastDirectory(), CsvFileFilter::both(), &filter,
         QFileDialog::DontConfirmOverwrite); // an existing log is appended to, not replaced
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())
         path += QStringLiteral(".csv");
     setLastDirectory(path);
-    if (const Status s = startLogging(path); !s)
+    if (const Status s = startLogging(path, CsvFileFilter::lineEnd(filter)); !s)
         QMessageBox::warning(m_window, tr("Data Logging"), translated(s.error().message));
 }
 

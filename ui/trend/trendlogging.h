@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocol/result.h"
+#include "core/watch/csvfile.h"
 
 #include <QList>
 #include <QObject>
@@ -44,7 +45,8 @@ public:
     // Adds rows of a watch table to the trend and shows the trend.
     void addToTrend(WatchTableWidget *table, const QList<int> &rows);
     // Logs the current watch table to `path` (CSV, appended); a log already running stops first.
-    Status startLogging(const QString &path);
+    // A new log's lines end as `lineEnd`; an existing one keeps its own (DataLogger).
+    Status startLogging(const QString &path, CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
     void stopLogging();
     // The demo's sine (R1, +-1000) and ramp (DR10, 0..99999) of the current table into the trend.
     void showDemo();

@@ -175,8 +175,9 @@ TrendView::TrendView(QWidget *parent)
     connect(m_history, &TrendHistory::pointsArrived, this, &TrendView::refresh);
     connect(m_history, &TrendHistory::statusMessage, this, &TrendView::statusMessage);
     connect(m_exportButton, &QToolButton::clicked, this, [this] {
-        if (const QString path = TrendHistory::askExportPath(this); !path.isEmpty())
-            exportRange(path);
+        CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf;
+        if (const QString path = TrendHistory::askExportPath(this, &lineEnd); !path.isEmpty())
+            exportRange(path, lineEnd);
     });
     connect(m_resetZoomButton, &QToolButton::clicked, this, &TrendView::resetZoom);
     connect(m_axesButton, &QToolButton::toggled, this, &TrendView::setSeparateAxes);
@@ -586,10 +587,10 @@ void TrendView::refresh()
     m_chartView->updateReadout(); // the time under the mouse moved with the axis
 }
 
-void TrendView::exportRange(const QString &path)
+void TrendView::exportRange(const QString &path, CsvFile::LineEnd lineEnd)
 {
     m_history->exportRange(m_items, m_timeAxis->min().toMSecsSinceEpoch(),
-                           m_timeAxis->max().toMSecsSinceEpoch(), path);
+                           m_timeAxis->max().toMSecsSinceEpoch(), path, lineEnd);
 }
 
 } // namespace Fatek

@@ -124,7 +124,7 @@ public:
     QComboBox *windowBox() const { return m_navigation->windowBox(); }
     // The recorded samples of every item in the visible range to `path` (CSV, not blocking:
     // TrendHistory::exportFinished).
-    void exportRange(const QString &path);
+    void exportRange(const QString &path, CsvFile::LineEnd lineEnd = CsvFile::LineEnd::Lf);
 
 Q_SIGNALS:
     void statusMessage(const QString &text);

@@ -228,6 +228,14 @@ private Q_SLOTS:
               "2026-12-07T09:23:31.253+00:00,line1,1-R100-high,high,raised,activeUnacked,high,"
               "Tanks,\"two\nlines\",812,,,\n";
         QCOMPARE(AlarmJournal::toCsv({raised, shelved, utc}), expected);
+        // As a file: the byte order mark (Excel on Windows reads UTF-8 then), CRLF when asked,
+        // the line end inside the quoted message too, never "\r\r\n".
+        QCOMPARE(AlarmJournal::toCsvFile({raised, shelved, utc}, CsvFile::LineEnd::Lf),
+                 QByteArray("\xEF\xBB\xBF") + expected);
+        QByteArray crlf = expected;
+        crlf.replace("\n", "\r\n");
+        QCOMPARE(AlarmJournal::toCsvFile({raised, shelved, utc}, CsvFile::LineEnd::CrLf),
+                 QByteArray("\xEF\xBB\xBF") + crlf);
         QCOMPARE(AlarmJournal::toCsv({}),
                  QByteArray("time,connection,alarm,kind,event,state,priority,group,message,value,"
                             "user,comment,shelved until\n"));

@@ -268,7 +268,7 @@ private Q_SLOTS:
         // The rows written before the disk was full are kept.
         const QList<QByteArray> lines = readAll(path).split('\n');
         QVERIFY(lines.size() > 100);
-        QCOMPARE(lines.first(), QByteArray("timestamp,R0,status"));
+        QCOMPARE(lines.first(), QByteArray("\xEF\xBB\xBFtimestamp,R0,status"));
     }
 };
 

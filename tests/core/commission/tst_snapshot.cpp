@@ -211,13 +211,17 @@ void TestSnapshot::chosenRanges()
 void TestSnapshot::filesRoundTrip_data()
 {
     QTest::addColumn<QString>("name");
-    QTest::newRow("json") << QStringLiteral("s.json");
-    QTest::newRow("csv") << QStringLiteral("s.csv");
+    QTest::addColumn<CsvFile::LineEnd>("lineEnd");
+    QTest::newRow("json") << QStringLiteral("s.json") << CsvFile::LineEnd::Lf;
+    QTest::newRow("csv") << QStringLiteral("s.csv") << CsvFile::LineEnd::Lf;
+    // As Excel on Windows wants it: the byte order mark and CRLF, read back the same.
+    QTest::newRow("csv crlf") << QStringLiteral("crlf.csv") << CsvFile::LineEnd::CrLf;
 }
 
 void TestSnapshot::filesRoundTrip()
 {
     QFETCH(QString, name);
+    QFETCH(CsvFile::LineEnd, lineEnd);
     m_plc->setValue(addr("R1"), 65535);
     m_plc->setValue(addr("Y3"), 1);
     MemorySnapshot s = take(ranges("R0..R3 Y0..Y7 DR10"));
@@ -225,7 +229,17 @@ void TestSnapshot::filesRoundTrip()
     s.info.taken = QDateTime(QDate(2026, 11, 25), QTime(19, 55, 0), Qt::UTC);
     s.info.model = QStringLiteral("FBs-28MC, with \"quotes\", and commas");
     const QString path = m_dir->filePath(name);
-    QVERIFY(!SnapshotFile::saveToFile(s, path));
+    QVERIFY(!SnapshotFile::saveToFile(s, path, lineEnd));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray data = file.readAll();
+    if (name.endsWith(QLatin1String(".csv"))) {
+        QVERIFY2(data.startsWith("\xEF\xBB\xBF# fatek-studio-snapshot 1"),
+                 data.left(40).constData());
+        QCOMPARE(data.count("\r\n"), lineEnd == CsvFile::LineEnd::CrLf ? data.count('\n') : 0);
+    } else {
+        QVERIFY(data.startsWith('{')); // JSON has no mark
+    }
     const SnapshotFile::Loaded back = SnapshotFile::loadFromFile(path);
     QVERIFY2(back.ok(), qPrintable(englishText(back.error.message)));
     QCOMPARE(*back.snapshot, s);

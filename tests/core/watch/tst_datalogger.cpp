@@ -8,6 +8,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <tuple>
+
 using namespace Fatek;
 
 namespace {
@@ -33,7 +35,16 @@ QStringList readLines(const QString &path)
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
         return {};
-    return QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QByteArray data = f.readAll();
+    if (data.startsWith("\xEF\xBB\xBF")) // the byte order mark a new log starts with
+        data.remove(0, 3);
+    return QString::fromUtf8(data).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 } // namespace
@@ -50,6 +61,9 @@ private Q_SLOTS:
     void outageRowNamesTheReasonOnce();
     void appendKeepsHeaderOnce();
     void appendRefusesOtherColumns();
+    void newLogStartsWithTheMark();
+    void appendKeepsTheFilesLineEnds();
+    void appendToALogWithoutTheMark();
     void quotesCellsWithSeparators();
     void unwritablePaths();
     void diskFull();
@@ -198,6 +212,82 @@ void TestDataLogger::appendRefusesOtherColumns()
              s.error().text().c_str());
     QVERIFY(!log.isOpen());
     QCOMPARE(readLines(path).size(), 1);
+}
+
+void TestDataLogger::newLogStartsWithTheMark()
+{
+    // Excel on Windows reads the file as UTF-8 only with the mark; CRLF when asked.
+    const QString path = m_dir.filePath(QStringLiteral("windows.csv"));
+    const QList<WatchItemSpec> items{item("R0", DisplayFormat::Signed, QString::fromUtf8("液位"))};
+    DataLogger log;
+    QVERIFY(log.open(path, items, CsvFile::LineEnd::CrLf));
+    QCOMPARE(log.lineEnd(), CsvFile::LineEnd::CrLf);
+    QVERIFY(log.writeRow(QDateTime::currentDateTime(), {good(7)}));
+    QVERIFY(log.close());
+    const QByteArray data = readAll(path);
+    QVERIFY2(data.startsWith("\xEF\xBB\xBF"
+                             "timestamp,\xE6\xB6\xB2\xE4\xBD\x8D (R0),status\r\n"),
+             data.constData());
+    QVERIFY2(data.endsWith(",7,ok\r\n"), data.constData());
+    QCOMPARE(data.count('\n'), 2);
+    QCOMPARE(data.count("\r\n"), 2);
+
+    const QString lf = m_dir.filePath(QStringLiteral("lf.csv"));
+    QVERIFY(log.open(lf, items));
+    QVERIFY(log.close());
+    QCOMPARE(readAll(lf), QByteArray("\xEF\xBB\xBF"
+                                     "timestamp,\xE6\xB6\xB2\xE4\xBD\x8D (R0),status\n"));
+}
+
+void TestDataLogger::appendKeepsTheFilesLineEnds()
+{
+    // An existing log is appended to with its own line ends whatever is asked now, its header
+    // (after the mark, before "\r\n") is read as the same columns, and it never gets a second
+    // mark.
+    const QList<WatchItemSpec> items{item("D5", DisplayFormat::Unsigned)};
+    for (const auto &[name, first, later] :
+         {std::tuple{"keep-crlf.csv", CsvFile::LineEnd::CrLf, CsvFile::LineEnd::Lf},
+          std::tuple{"keep-lf.csv", CsvFile::LineEnd::Lf, CsvFile::LineEnd::CrLf}}) {
+        const QString path = m_dir.filePath(QLatin1String(name));
+        for (int run = 0; run < 3; ++run) {
+            DataLogger log;
+            const Status s = log.open(path, items, run == 0 ? first : later);
+            QVERIFY2(s, s ? "" : s.error().text().c_str());
+            QCOMPARE(log.lineEnd(), first);
+            QVERIFY(log.writeRow(QDateTime::currentDateTime(),
+                                 {good(static_cast<std::uint64_t>(run))}));
+        }
+        const QByteArray data = readAll(path);
+        QCOMPARE(data.count("\xEF\xBB\xBF"), 1);
+        QVERIFY(data.startsWith("\xEF\xBB\xBF"));
+        QCOMPARE(data.count('\n'), 4);
+        QCOMPARE(data.count("\r\n"), first == CsvFile::LineEnd::CrLf ? 4 : 0);
+        const QStringList lines = readLines(path);
+        QCOMPARE(lines.size(), 4);
+        QVERIFY2(lines.at(3).endsWith(first == CsvFile::LineEnd::CrLf ? QLatin1String(",2,ok\r")
+                                                                      : QLatin1String(",2,ok")),
+                 qPrintable(lines.at(3)));
+    }
+}
+
+void TestDataLogger::appendToALogWithoutTheMark()
+{
+    // A log an earlier version wrote (no mark) is appended to as it is: no mark in the middle.
+    const QString path = m_dir.filePath(QStringLiteral("old.csv"));
+    {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QVERIFY(f.write("timestamp,R0,status\n2026-11-23T10:35:31.458+01:00,1,ok\n") > 0);
+    }
+    DataLogger log;
+    QVERIFY(log.open(path, {item("R0", DisplayFormat::Signed)}, CsvFile::LineEnd::CrLf));
+    QVERIFY(log.writeRow(QDateTime::currentDateTime(), {good(2)}));
+    QVERIFY(log.close());
+    const QByteArray data = readAll(path);
+    QVERIFY(data.startsWith("timestamp,R0,status\n"));
+    QVERIFY(!data.contains("\xEF\xBB\xBF"));
+    QVERIFY(!data.contains('\r'));
+    QVERIFY(data.endsWith(",2,ok\n"));
 }
 
 void TestDataLogger::quotesCellsWithSeparators()
