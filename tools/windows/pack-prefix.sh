@@ -17,6 +17,9 @@ work=${FATEK_WIN_WORK:-$HOME/.cache/fatek-studio/win-work}
 out=${1:-$root/build/windows-pack}
 stamp=$prefix/fatek-prefix.txt
 placeholder=@FATEK_WIN_PREFIX@
+# Where qmake's .prl files and QT_SOURCE_TREE name the build folder, which no user of the prefix
+# reads (they serve building Qt itself): a fixed name that is nobody's machine.
+gone=/nonexistent/fatek-win-work
 [ -f "$stamp" ] || { echo "no cross-built prefix in $prefix: make it with tools/windows/build-qt.sh" >&2; exit 2; }
 recipe=$(sed -n 's/^recipe //p' "$stamp")
 [ -n "$recipe" ] || { echo "$stamp names no recipe: make the prefix again with tools/windows/build-qt.sh" >&2; exit 2; }
@@ -32,8 +35,11 @@ for f in "${texts[@]}"; do
     sed -i "s|$prefix|$placeholder|g" "$f"
 done
 printf '%s\n' "${texts[@]}" >fatek-relocate.txt
-# Nothing may name this machine any more (binaries included: grep -a).
-leaks=$(grep -rlaF -e "$prefix" -e "$work" -e "$root" -e "$HOME/" . || true)
+grep -rlIF -- "$work" . | while read -r f; do sed -i "s|$work|$gone|g" "$f"; done
+# Nothing may name this machine any more (binaries included: grep -a). (The home folder as the
+# start of a path: "$$[QT_SYSROOT]/root/modules" in a device's qmake.conf is not /root.)
+leaks=$(grep -rlaF -e "$prefix" -e "$work" -e "$root/" . || true)
+leaks+=$(grep -rlaE "(^|[^A-Za-z0-9_.\$)\]-])$HOME/" . || true)
 if [ -n "$leaks" ]; then
     echo "!! these files still name a path of this machine ($prefix, $work, $root or $HOME):" >&2
     echo "$leaks" | head -20 >&2
