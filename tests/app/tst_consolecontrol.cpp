@@ -91,7 +91,8 @@ private slots:
         }).detach();
         QTRY_COMPARE(quits, 1);
         QTest::qWait(300);
-        QVERIFY2(!returned, "the handler returned: Windows would end the program before its clean stop");
+        QVERIFY2(!returned,
+                 "the handler returned: Windows would end the program before its clean stop");
     }
 
     void systemHandlerLeavesOtherEventsAlone()
