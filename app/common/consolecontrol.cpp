@@ -36,12 +36,10 @@ ConsoleControl::Then ConsoleControl::handle(Event event)
             Qt::QueuedConnection);
     switch (event) {
     case Event::Interrupt:
-    case Event::Break:
-        return Then::Return;
+    case Event::Break: return Then::Return;
     case Event::Close:
     case Event::Logoff:
-    case Event::Shutdown:
-        break;
+    case Event::Shutdown: break;
     }
     return Then::HoldUntilExit;
 }
@@ -51,23 +49,12 @@ int __stdcall ConsoleControl::systemHandler(unsigned long event)
 {
     Event e = Event::Interrupt;
     switch (event) {
-    case CTRL_C_EVENT:
-        e = Event::Interrupt;
-        break;
-    case CTRL_BREAK_EVENT:
-        e = Event::Break;
-        break;
-    case CTRL_CLOSE_EVENT:
-        e = Event::Close;
-        break;
-    case CTRL_LOGOFF_EVENT:
-        e = Event::Logoff;
-        break;
-    case CTRL_SHUTDOWN_EVENT:
-        e = Event::Shutdown;
-        break;
-    default:
-        return FALSE; // not ours: the next handler, or the system's default
+    case CTRL_C_EVENT: e = Event::Interrupt; break;
+    case CTRL_BREAK_EVENT: e = Event::Break; break;
+    case CTRL_CLOSE_EVENT: e = Event::Close; break;
+    case CTRL_LOGOFF_EVENT: e = Event::Logoff; break;
+    case CTRL_SHUTDOWN_EVENT: e = Event::Shutdown; break;
+    default: return FALSE; // not ours: the next handler, or the system's default
     }
     // (The program's own exit ends this thread.)
     if (handle(e) == Then::HoldUntilExit)
