@@ -91,6 +91,7 @@ void CheckoutRunner::start()
         return;
     }
     m_running = true;
+    m_starting = true;
     m_inputs.clear();
     m_pollError.reset();
     m_refused.clear();
@@ -192,6 +193,7 @@ void CheckoutRunner::probeDone()
         return;
     if (!m_running)
         return;
+    m_starting = false;
     if (!m_refused.empty()) {
         m_running = false;
         std::sort(m_refused.begin(), m_refused.end());
@@ -502,8 +504,9 @@ void CheckoutRunner::forceOutput(int index)
     }
     if (!s)
         return fail(makeError(ErrorKind::LinkError, msg<MsgId::CheckoutNoSession>()));
-    // Not started, or stopped (the PLC refused points of the plan): nothing is forced.
-    if (!m_running)
+    // Not started, still reading every point once (the PLC may yet refuse some, and then
+    // nothing may have been forced), or stopped: nothing is forced.
+    if (!isStarted())
         return fail(makeError(ErrorKind::InvalidRequest, msg<MsgId::CheckoutNotRunning>()));
     // Core refuses the writes in operator mode anyway; said here first, before anything is
     // recorded as forced.

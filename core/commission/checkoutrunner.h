@@ -76,6 +76,8 @@ public:
     // untested). The releases go on (retried) after it.
     void stop();
     bool isRunning() const { return m_running; }
+    // Running and every point read once (started() emitted): only then is anything forced.
+    bool isStarted() const { return m_running && !m_starting; }
     // The PLC was in RUN at the last status read.
     bool isPlcRunning() const { return m_plcRunning; }
 
@@ -190,6 +192,7 @@ private:
     std::vector<Address> m_refused;
     std::optional<Message> m_refusal;
     bool m_running = false;
+    bool m_starting = false; // start()'s status and probe reads still on the wire
     bool m_plcRunning = false;
     bool m_allowInRun = false;
     bool m_linkLost = false;

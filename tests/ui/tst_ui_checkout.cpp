@@ -98,7 +98,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(runner->isRunning(), longWait);
         QCOMPARE(dialog->points()->rowCount(), 13);
         QTableView *table = dialog->table();
-        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isStarted() && runner->currentPoint() == 0, longWait);
         QTRY_COMPARE_WITH_TIMEOUT(table->currentIndex().row(), 0, longWait);
         // The first poll shows each input's value: the baseline.
         QTRY_VERIFY_WITH_TIMEOUT(dialog->points()
@@ -261,7 +261,7 @@ private Q_SLOTS:
             startPlan(dialog, QStringLiteral("X0, Y0"), QStringLiteral("operator.checkout.json")));
         CheckoutRunner *runner = dialog->runner();
         QTRY_VERIFY_WITH_TIMEOUT(runner->isRunning(), longWait);
-        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isStarted() && runner->currentPoint() == 0, longWait);
         actuate(dialog, "X0");
         if (QTest::currentTestFailed())
             return;
@@ -289,7 +289,7 @@ private Q_SLOTS:
         QVERIFY(startPlan(dialog, QStringLiteral("Y0..Y1"), QStringLiteral("retry.checkout.json")));
         const QString file = m_files.filePath(QStringLiteral("retry.checkout.json"));
         CheckoutRunner *runner = dialog->runner();
-        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isStarted() && runner->currentPoint() == 0, longWait);
         QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
         QTRY_COMPARE_WITH_TIMEOUT(state(dialog, 0), CheckoutTableModel::tr("forced: seen?"),
                                   longWait);
@@ -333,7 +333,10 @@ private Q_SLOTS:
         if (!startPlan(dialog, QStringLiteral("Y0"), QStringLiteral("run.checkout.json")))
             return nullptr;
         CheckoutRunner *runner = dialog->runner();
-        if (!QTest::qWaitFor([runner] { return runner->currentPoint() == 0; }, longWait))
+        // Every point read once (the tool says "Watching the inputs"): a force before that is
+        // refused.
+        if (!QTest::qWaitFor(
+                [runner] { return runner->isStarted() && runner->currentPoint() == 0; }, longWait))
             return nullptr;
         QTest::keyClick(dialog->table(), Qt::Key_Space, {}, keyDelayMs);
         return dialog;

@@ -95,8 +95,11 @@ private:
     {
         const QString file = m_bench.files.filePath(fileName);
         if (!m_bench.startPlan(dialog, QStringLiteral("Y3"), fileName)
-            || !QTest::qWaitFor([dialog] { return dialog->runner()->currentPoint() == 0; },
-                                longWait))
+            || !QTest::qWaitFor(
+                [dialog] {
+                    return dialog->runner()->isStarted() && dialog->runner()->currentPoint() == 0;
+                },
+                longWait))
             return {};
         key(dialog, Qt::Key_Space);
         const bool forced = QTest::qWaitFor(
@@ -222,7 +225,7 @@ private Q_SLOTS:
         QVERIFY(m_bench.startPlan(dialog, QStringLiteral("X0, X3"),
                                   QStringLiteral("crossed.checkout.json")));
         CheckoutRunner *runner = dialog->runner();
-        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isStarted() && runner->currentPoint() == 0, longWait);
         QTRY_VERIFY_WITH_TIMEOUT(cell(dialog, 1, CheckoutTableModel::MeasuredColumn)
                                      .endsWith(CheckoutTableModel::tr("now %1").arg(0)),
                                  longWait);
@@ -240,7 +243,7 @@ private Q_SLOTS:
         QVERIFY(m_bench.actuate(dialog, "X0"));
         QCOMPARE(state(dialog, 0), resultText(CheckoutResult::Failed));
         goTo(dialog, 0);
-        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isStarted() && runner->currentPoint() == 0, longWait);
         key(dialog, Qt::Key_Space);
         QCOMPARE(dialog->messageText(), refusal);
         QCOMPARE(state(dialog, 0), resultText(CheckoutResult::Failed));
@@ -272,7 +275,7 @@ private Q_SLOTS:
         QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("startButton")),
                           Qt::LeftButton);
         CheckoutRunner *runner = dialog->runner();
-        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isStarted() && runner->currentPoint() == 0, longWait);
         const auto measured = [dialog] {
             return cell(dialog, 0, CheckoutTableModel::MeasuredColumn);
         };
@@ -462,7 +465,7 @@ private Q_SLOTS:
                                   QStringLiteral("punch.checkout.json")));
         CheckoutRunner *runner = dialog->runner();
         QVERIFY(watching(dialog));
-        QTRY_COMPARE_WITH_TIMEOUT(runner->currentPoint(), 0, longWait);
+        QTRY_VERIFY_WITH_TIMEOUT(runner->isStarted() && runner->currentPoint() == 0, longWait);
         key(dialog, Qt::Key_F);
         goTo(dialog, 1);
         m_answers = {QStringLiteral("panel not powered")};

@@ -323,7 +323,14 @@ void TestCheckoutStatuses::pointsThePlcRefusesAreNamed()
     runner.setEngineer(QStringLiteral("Lin"));
     QSignalSpy refused(&runner, &CheckoutRunner::refused);
     QSignalSpy started(&runner, &CheckoutRunner::started);
+    QSignalSpy early(&runner, &CheckoutRunner::failed);
     runner.start();
+    // Space pressed while every point is still being read: refused, or Y0 would be forced
+    // before the PLC refuses X9999 ("Nothing was forced").
+    runner.forceOutput(runner.plan().indexOf(addr("Y0")));
+    QCOMPARE(early.count(), 1);
+    QCOMPARE(early.at(0).at(0).value<ProtocolError>().message.id,
+             MessageId(MsgId::CheckoutNotRunning));
     QTRY_COMPARE_WITH_TIMEOUT(refused.count(), 1, 30000);
     const QString text = englishText(refused.at(0).at(0).value<Message>());
     QVERIFY2(text.startsWith(QLatin1String("The PLC refuses X9999 (")), qPrintable(text));
