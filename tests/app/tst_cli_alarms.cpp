@@ -4,6 +4,7 @@
 // codes.
 
 #include "simchild.h"
+#include "testutil.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -76,7 +77,11 @@ private:
         QVERIFY(cli.waitForStarted());
         // The sine crosses 500 once per 10 s and stays above for about 3.3 s.
         QTRY_VERIFY_WITH_TIMEOUT((*out += cli.readAllStandardOutput()).contains("returned"), 30000);
-        ::kill(static_cast<pid_t>(cli.processId()), SIGINT);
+#ifdef Q_OS_UNIX
+        ::kill(static_cast<pid_t>(cli.processId()), SIGINT); // Ctrl-C
+#else
+        TestUtil::stopConsoleProgram(&cli); // Ctrl-Break
+#endif
         QVERIFY(cli.waitForFinished(10000));
         *out += cli.readAllStandardOutput();
         QCOMPARE(cli.exitStatus(), QProcess::NormalExit);
@@ -84,7 +89,10 @@ private:
     }
 
 private Q_SLOTS:
-    void initTestCase() { QVERIFY(m_dir.isValid()); }
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+    }
 
     void watchesPrintsAndJournals()
     {
